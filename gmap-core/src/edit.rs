@@ -1,0 +1,399 @@
+//! [`GMap`]: the editable map, with stable dart handles.
+//!
+//! Darts live in a [`slotmap::SlotMap`]: a [`DartId`] stays valid while other darts are
+//! created and removed, and a removed dart's handle is detected as stale rather than
+//! silently reused. Each dart stores its `n + 1` involution images inline (a `SmallVec`,
+//! no heap allocation up to dimension 4). Editing goes through `link`/`unlink` (low
+//! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
+//! [`GMap::to_dense`] freezes the map into a [`DenseMap`] for analysis in one linear
+//! pass; [`GMap::from_dense`] thaws one back.
+
+use slotmap::{new_key_type, Key, SlotMap};
+use smallvec::SmallVec;
+use std::collections::HashMap;
+use thiserror::Error;
+
+use crate::alpha::{AlphaSet, MAX_DIM};
+use crate::dense::{Dart, DenseMap, Point};
+use crate::marks::{MarkId, Marks};
+
+new_key_type! {
+    /// A stable handle to a dart of a [`GMap`].
+    pub struct DartId;
+}
+
+/// Per-dart storage: the involution images and an optional point.
+#[derive(Clone, Debug)]
+struct DartData {
+    alpha: SmallVec<[DartId; 5]>,
+    point: Option<Point>,
+}
+
+/// Why two darts cannot be i-sewn.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum SewError {
+    /// `i` is larger than the dimension.
+    #[error("alpha_{alpha} does not exist in a map of dimension {dim}")]
+    BadIndex {
+        /// the index asked for
+        alpha: usize,
+        /// the map's dimension
+        dim: usize,
+    },
+    /// A handle does not name a live dart.
+    #[error("dart {0:?} does not exist (removed or from another map)")]
+    NoSuchDart(DartId),
+    /// A dart of the sewn orbits is not i-free.
+    #[error("dart {dart:?} is not {alpha}-free")]
+    NotFree {
+        /// the dart already linked
+        dart: DartId,
+        /// the involution
+        alpha: usize,
+    },
+    /// The two orbits are not isomorphic, or the pairing is not one-to-one.
+    #[error("the orbits of {first:?} and {second:?} cannot be paired one-to-one by alpha_{alpha}-sewing (conflict at {at:?})")]
+    NotIsomorphic {
+        /// first dart given
+        first: DartId,
+        /// second dart given
+        second: DartId,
+        /// the involution
+        alpha: usize,
+        /// a dart where the pairing fails
+        at: DartId,
+    },
+}
+
+/// An editable n-dimensional generalized map (BO Def. 1) with stable dart handles.
+///
+/// ```
+/// use gmap_core::GMap;
+/// // A triangle as a 1-map: 6 darts, alpha_0 pairs the darts of an edge,
+/// // alpha_1 the darts of a vertex.
+/// let mut m = GMap::new(1);
+/// let d: Vec<_> = (0..6).map(|_| m.create_dart()).collect();
+/// for k in 0..3 {
+///     m.sew(d[2 * k], d[2 * k + 1], 0);
+///     m.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
+/// }
+/// let dense = m.to_dense().0;
+/// assert_eq!(dense.cell_counts(), vec![3, 3]);
+/// ```
+#[derive(Clone, Debug)]
+pub struct GMap {
+    dim: usize,
+    darts: SlotMap<DartId, DartData>,
+    marks: Marks,
+}
+
+impl GMap {
+    /// An empty map of dimension `dim`. Panics if `dim > MAX_DIM`.
+    pub fn new(dim: usize) -> Self {
+        assert!(dim <= MAX_DIM, "dimension {dim} exceeds MAX_DIM");
+        GMap { dim, darts: SlotMap::with_key(), marks: Marks::new(0) }
+    }
+
+    /// The dimension n.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// Number of live darts.
+    pub fn dart_count(&self) -> usize {
+        self.darts.len()
+    }
+
+    /// Whether the handle names a live dart.
+    pub fn contains(&self, d: DartId) -> bool {
+        self.darts.contains_key(d)
+    }
+
+    /// The live darts, in storage order.
+    pub fn darts(&self) -> impl Iterator<Item = DartId> + '_ {
+        self.darts.keys()
+    }
+
+    /// A dense index for a live dart, stable while the dart lives, below [`GMap::index_bound`].
+    /// Marks are stored by this index.
+    pub fn dart_index(&self, d: DartId) -> usize {
+        (d.data().as_ffi() & 0xffff_ffff) as usize
+    }
+
+    /// An upper bound on [`GMap::dart_index`] of every live dart.
+    pub fn index_bound(&self) -> usize {
+        self.darts.capacity()
+    }
+
+    /// Creates a dart free for every involution.
+    pub fn create_dart(&mut self) -> DartId {
+        let dim = self.dim;
+        let d = self.darts.insert_with_key(|k| DartData { alpha: SmallVec::from_elem(k, dim + 1), point: None });
+        let bound = self.dart_index(d) + 1;
+        if self.marks.len() < bound {
+            self.marks.resize(bound.max(self.marks.len() * 2));
+        }
+        d
+    }
+
+    /// Removes a dart, first making its partners free. Other handles stay valid.
+    /// May leave the map invalid (a hole in an orbit); callers re-sew or remove whole cells.
+    pub fn remove_dart(&mut self, d: DartId) {
+        for i in 0..=self.dim {
+            self.unlink(d, i);
+        }
+        let idx = self.dart_index(d);
+        self.darts.remove(d);
+        // marks are stored by slot index: clear them so a reused slot starts unmarked
+        self.marks.clear_index(idx);
+    }
+
+    /// `alpha_i(d)`. Panics on a stale handle or `i > n`.
+    #[inline]
+    pub fn alpha(&self, d: DartId, i: usize) -> DartId {
+        self.darts[d].alpha[i]
+    }
+
+    /// Whether `d` is i-free.
+    pub fn is_free(&self, d: DartId, i: usize) -> bool {
+        self.alpha(d, i) == d
+    }
+
+    /// Low-level: `alpha_i(d) = e`, `alpha_i(e) = d`, freeing former partners. Keeps
+    /// `alpha_i` an involution but may break the other conditions of BO Def. 1.
+    pub fn link(&mut self, d: DartId, e: DartId, i: usize) {
+        self.unlink(d, i);
+        self.unlink(e, i);
+        self.darts[d].alpha[i] = e;
+        self.darts[e].alpha[i] = d;
+    }
+
+    /// Low-level: makes `d` and its `alpha_i` partner i-free. May break validity.
+    pub fn unlink(&mut self, d: DartId, i: usize) {
+        let e = self.darts[d].alpha[i];
+        self.darts[d].alpha[i] = d;
+        if let Some(x) = self.darts.get_mut(e) {
+            x.alpha[i] = e;
+        }
+    }
+
+    /// The point attached to `d`.
+    pub fn point(&self, d: DartId) -> Option<Point> {
+        self.darts[d].point
+    }
+
+    /// Attaches a point to `d`.
+    pub fn set_point(&mut self, d: DartId, p: Option<Point>) {
+        self.darts[d].point = p;
+    }
+
+    /// The orbit `<set>(d)` in breadth-first order from `d`. O(orbit size).
+    pub fn orbit(&self, d: DartId, set: AlphaSet) -> Vec<DartId> {
+        let idx: SmallVec<[usize; 8]> = set.iter().filter(|&i| i <= self.dim).collect();
+        let mut seen: HashMap<DartId, ()> = HashMap::new();
+        let mut out = vec![d];
+        seen.insert(d, ());
+        let mut k = 0;
+        while k < out.len() {
+            let x = out[k];
+            k += 1;
+            for &i in &idx {
+                let y = self.alpha(x, i);
+                if seen.insert(y, ()).is_none() {
+                    out.push(y);
+                }
+            }
+        }
+        out
+    }
+
+    /// The darts of the i-cell of `d` (BO Def. 2).
+    pub fn cell(&self, d: DartId, i: usize) -> Vec<DartId> {
+        self.orbit(d, AlphaSet::cell(i, self.dim))
+    }
+
+    /// The involutions whose orbits are paired by an i-sew:
+    /// `<alpha_0..alpha_{i-2}, alpha_{i+2}..alpha_n>`.
+    pub fn sew_set(&self, i: usize) -> AlphaSet {
+        let mut s = AlphaSet::all(self.dim).without(i);
+        if i >= 1 {
+            s = s.without(i - 1);
+        }
+        s.without(i + 1)
+    }
+
+    /// Pairs the sew orbits of `d` and `e` by parallel traversal, checking that both
+    /// are i-free throughout and that the pairing is one-to-one.
+    fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Vec<(DartId, DartId)>, SewError> {
+        if i > self.dim {
+            return Err(SewError::BadIndex { alpha: i, dim: self.dim });
+        }
+        for x in [d, e] {
+            if !self.contains(x) {
+                return Err(SewError::NoSuchDart(x));
+            }
+        }
+        let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
+        let mut fwd: HashMap<DartId, DartId> = HashMap::new();
+        let mut bwd: HashMap<DartId, DartId> = HashMap::new();
+        let conflict = |at| SewError::NotIsomorphic { first: d, second: e, alpha: i, at };
+        let mut pairs = vec![(d, e)];
+        fwd.insert(d, e);
+        bwd.insert(e, d);
+        let mut k = 0;
+        while k < pairs.len() {
+            let (a, b) = pairs[k];
+            k += 1;
+            if a == b {
+                return Err(conflict(a));
+            }
+            for x in [a, b] {
+                if !self.is_free(x, i) {
+                    return Err(SewError::NotFree { dart: x, alpha: i });
+                }
+            }
+            for &j in &idx {
+                let (a2, b2) = (self.alpha(a, j), self.alpha(b, j));
+                if (a2 == a) != (b2 == b) {
+                    return Err(conflict(a));
+                }
+                match (fwd.get(&a2), bwd.get(&b2)) {
+                    (Some(&x), _) if x != b2 => return Err(conflict(a2)),
+                    (_, Some(&y)) if y != a2 => return Err(conflict(b2)),
+                    (Some(_), Some(_)) => {}
+                    (None, None) => {
+                        fwd.insert(a2, b2);
+                        bwd.insert(b2, a2);
+                        pairs.push((a2, b2));
+                    }
+                    _ => return Err(conflict(a2)),
+                }
+            }
+        }
+        // a dart may appear on both sides (sewing an orbit to itself): then the pairing
+        // must be symmetric, or alpha_i would not be an involution
+        for (&a, &b) in &fwd {
+            if let Some(&c) = fwd.get(&b) {
+                if c != a {
+                    return Err(conflict(b));
+                }
+            }
+        }
+        Ok(pairs)
+    }
+
+    /// Whether `d` and `e` can be i-sewn: both sew orbits (see [`GMap::sew_set`]) are
+    /// i-free and pair one-to-one by a parallel traversal. Equivalent to
+    /// `try_sew` succeeding.
+    pub fn is_sewable(&self, d: DartId, e: DartId, i: usize) -> bool {
+        self.sew_pairs(d, e, i).is_ok()
+    }
+
+    /// i-sews `d` and `e` (CGAL's semantics): the sew orbits of `d` and `e` are paired
+    /// one-to-one and each pair is linked by `alpha_i`. Keeps a valid map valid.
+    /// O(orbit size · n).
+    pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
+        let pairs = self.sew_pairs(d, e, i)?;
+        for (a, b) in pairs {
+            self.darts[a].alpha[i] = b;
+            self.darts[b].alpha[i] = a;
+        }
+        Ok(())
+    }
+
+    /// Like [`GMap::try_sew`], panicking if the darts are not sewable.
+    pub fn sew(&mut self, d: DartId, e: DartId, i: usize) {
+        if let Err(err) = self.try_sew(d, e, i) {
+            panic!("sew failed: {err}");
+        }
+    }
+
+    /// i-unsews `d`: every dart of its sew orbit becomes i-free. Keeps a valid map valid.
+    /// A no-op when `d` is already i-free.
+    pub fn unsew(&mut self, d: DartId, i: usize) {
+        if self.is_free(d, i) {
+            return;
+        }
+        for x in self.orbit(d, self.sew_set(i)) {
+            self.unlink(x, i);
+        }
+    }
+
+    /// Freezes the map: darts renumbered `0..N` in storage order. Returns the dense map and
+    /// the handle of each dense dart. O(N n).
+    pub fn to_dense(&self) -> (DenseMap, Vec<DartId>) {
+        let ids: Vec<DartId> = self.darts.keys().collect();
+        let mut index: slotmap::SecondaryMap<DartId, u32> = slotmap::SecondaryMap::with_capacity(ids.len());
+        for (k, &d) in ids.iter().enumerate() {
+            index.insert(d, k as u32);
+        }
+        let w = self.dim + 1;
+        let mut flat = Vec::with_capacity(ids.len() * w);
+        for &d in &ids {
+            for i in 0..w {
+                flat.push(index[self.darts[d].alpha[i]]);
+            }
+        }
+        let mut dense = DenseMap::from_flat_unchecked(self.dim, flat).expect("sizes checked on creation");
+        for (k, &d) in ids.iter().enumerate() {
+            if let Some(p) = self.darts[d].point {
+                dense.set_point(Dart(k as u32), Some(p));
+            }
+        }
+        (dense, ids)
+    }
+
+    /// Thaws a dense map: the handle of dense dart `k` is `ids[k]`. O(N n).
+    pub fn from_dense(m: &DenseMap) -> (GMap, Vec<DartId>) {
+        let mut g = GMap::new(m.dim());
+        let ids: Vec<DartId> = (0..m.dart_count()).map(|_| g.create_dart()).collect();
+        for d in m.darts() {
+            let row = m.row(d);
+            let data = &mut g.darts[ids[d.index()]];
+            for (i, &e) in row.iter().enumerate() {
+                data.alpha[i] = ids[e as usize];
+            }
+            data.point = m.point(d);
+        }
+        (g, ids)
+    }
+
+    /// Reserves a mark (no fixed cap). See [`Marks`].
+    pub fn reserve_mark(&mut self) -> MarkId {
+        self.marks.reserve()
+    }
+
+    /// Frees a mark.
+    pub fn free_mark(&mut self, m: MarkId) {
+        self.marks.free(m)
+    }
+
+    /// Marks dart `d`; returns whether it was marked already.
+    pub fn mark(&mut self, m: MarkId, d: DartId) -> bool {
+        let k = self.dart_index(d);
+        self.marks.mark(m, k)
+    }
+
+    /// Unmarks dart `d`.
+    pub fn unmark(&mut self, m: MarkId, d: DartId) {
+        let k = self.dart_index(d);
+        self.marks.unmark(m, k)
+    }
+
+    /// Whether dart `d` is marked.
+    pub fn is_marked(&self, m: MarkId, d: DartId) -> bool {
+        self.marks.is_marked(m, self.dart_index(d))
+    }
+
+    /// Unmarks every dart, in bulk.
+    pub fn clear_mark(&mut self, m: MarkId) {
+        self.marks.clear(m)
+    }
+
+    /// Marks every dart of the orbit `<set>(d)`.
+    pub fn mark_orbit(&mut self, m: MarkId, d: DartId, set: AlphaSet) {
+        for x in self.orbit(d, set) {
+            self.mark(m, x);
+        }
+    }
+}

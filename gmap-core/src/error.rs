@@ -1,0 +1,112 @@
+//! Typed errors of the kernel. Each carries the offending darts and indices.
+
+use thiserror::Error;
+
+/// A violation of BO Def. 1 (the G-map axioms), as found by `validate`.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum ValidityError {
+    /// `alpha_i(d)` names a dart that does not exist.
+    #[error("dart {dart}: alpha_{alpha} = {target} is out of range (the map has {darts} darts)")]
+    OutOfRange {
+        /// the dart whose link is wrong
+        dart: u32,
+        /// the involution index
+        alpha: usize,
+        /// the value found
+        target: u32,
+        /// the number of darts
+        darts: usize,
+    },
+    /// `alpha_i(alpha_i(d)) != d`.
+    #[error("alpha_{alpha} is not an involution: alpha_{alpha}({dart}) = {image} but alpha_{alpha}({image}) = {back}")]
+    NotInvolution {
+        /// the dart
+        dart: u32,
+        /// the involution index
+        alpha: usize,
+        /// `alpha_i(dart)`
+        image: u32,
+        /// `alpha_i(image)`, which should be `dart`
+        back: u32,
+    },
+    /// `alpha_i alpha_j` is not an involution for some `j >= i + 2`.
+    #[error("alpha_{i} alpha_{j} is not an involution at dart {dart}: (alpha_{i} alpha_{j})^2({dart}) = {image}")]
+    NotCommuting {
+        /// the dart
+        dart: u32,
+        /// the lower index
+        i: usize,
+        /// the higher index (`j >= i + 2`)
+        j: usize,
+        /// where the square of the composition sends `dart`
+        image: u32,
+    },
+    /// A dimension larger than [`crate::MAX_DIM`].
+    #[error("dimension {0} is larger than the supported maximum {max}", max = crate::MAX_DIM)]
+    DimensionTooLarge(usize),
+    /// More darts than a `u32` index can name.
+    #[error("{0} darts is more than the supported maximum of 2^32 - 1")]
+    TooManyDarts(usize),
+}
+
+/// Why a map does not have cells with complete boundaries (BO Def. 6).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum BoundaryDefect {
+    /// `alpha_i` has a fixed point for some `i < n`.
+    #[error("dart {dart} is {alpha}-free (a fixed point of alpha_{alpha}, and {alpha} < n)")]
+    Free {
+        /// the free dart
+        dart: u32,
+        /// the involution
+        alpha: usize,
+    },
+    /// `<alpha_{i+1..n}>(d)` and `<alpha_{0..i-1}>(d)` share a dart other than `d`.
+    #[error("self-bending at dart {dart}: its <alpha_{}..alpha_n> and <alpha_0..alpha_{}> orbits share dart {other}", .i + 1, .i - 1)]
+    SelfBending {
+        /// the dart
+        dart: u32,
+        /// the dimension `i` at which the orbits meet
+        i: usize,
+        /// another dart in both orbits
+        other: u32,
+    },
+}
+
+/// Why a map is not orientable as a whole (BO Def. 7).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[error("not orientable: dart {dart} and alpha_{alpha}({dart}) = {other} fall in the same class")]
+pub struct OrientationConflict {
+    /// a dart where the 2-colouring fails
+    pub dart: u32,
+    /// the involution along which it fails
+    pub alpha: usize,
+    /// the neighbour with the same colour
+    pub other: u32,
+}
+
+/// Why a cell is not orientable as a compacted cell (condition C1 of DESIGN.md).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum CellDefect {
+    /// A dart of the i-cell is k-free for some `k < i`: the cell's boundary is incomplete.
+    #[error("the {dim}-cell of dart {dart} has an incomplete boundary: dart {dart} is {alpha}-free")]
+    IncompleteBoundary {
+        /// dimension of the cell
+        dim: usize,
+        /// representative dart
+        dart: u32,
+        /// the involution that has a fixed point
+        alpha: usize,
+    },
+    /// The 2-colouring of the compacted cell fails: the cell is non-orientable or folded.
+    #[error("the {dim}-cell of dart {dart} is not orientable as a compacted cell (conflict along alpha_{alpha} at dart {at})")]
+    NotOrientable {
+        /// dimension of the cell
+        dim: usize,
+        /// representative dart of the cell
+        dart: u32,
+        /// the involution along which the colouring fails
+        alpha: usize,
+        /// the dart where it fails
+        at: u32,
+    },
+}

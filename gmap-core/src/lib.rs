@@ -1,0 +1,64 @@
+//! # gmap-core: the generalized-map kernel
+//!
+//! A *generalized map* of dimension n (an nG-map, BO Def. 1) is a finite set of
+//! **darts** with n+1 involutions `alpha_0, …, alpha_n` such that `alpha_i alpha_j` is an
+//! involution whenever `j >= i + 2`. A dart is a flag: one vertex, one edge, …, one
+//! n-cell, mutually incident; `alpha_i` swaps the i-cell of the flag and keeps the
+//! others. A dart fixed by `alpha_i` is **i-free**: the object has a boundary there.
+//! Cells are not stored: the **i-cell** of a dart is its orbit under every involution
+//! but `alpha_i` (BO Def. 2), and every topological query is an orbit traversal.
+//!
+//! ## Two representations
+//!
+//! * [`GMap`] is the editable map. Darts live in a slotmap, so a [`DartId`] survives the
+//!   removal of other darts; [`GMap::sew`]/[`GMap::unsew`] follow CGAL's semantics and keep
+//!   the map valid, [`GMap::link`]/[`GMap::unlink`] are the low-level operations that may
+//!   not. Marks are reserved without a cap ([`Marks`]).
+//! * [`DenseMap`] is the read-only snapshot for analysis: darts `0..N`, involutions in one
+//!   flat `Vec<u32>`. Readers produce it directly (a file of millions of darts loads in one
+//!   pass), and whole-map algorithms run on it: [`DenseMap::validate`], orbit partitions
+//!   ([`DenseMap::partition`]), cell counts, components, orientation (BO Def. 7, 8),
+//!   complete boundaries (BO Def. 6), orientability of every compacted cell (condition C1),
+//!   compacted cells and face operators ([`CompactedCells`], [`FaceOperator`], BO Def. 3, 4)
+//!   and the dual.
+//!
+//! The split follows the measurement that drove it: orbit traversals over a flat `u32`
+//! array touch one cache line per dart, while a slotmap lookup adds a version check and
+//! an indirection. [`GMap::to_dense`] and [`GMap::from_dense`] convert in one linear pass.
+//!
+//! ## Example
+//!
+//! A square as a 2-map: one face with 8 darts, each edge 2 darts, each vertex 2 darts.
+//!
+//! ```
+//! use gmap_core::{DenseMap, Dart};
+//! let mut m = DenseMap::new(2, 8);
+//! for k in 0..4u32 {
+//!     m.link(Dart(2 * k), Dart(2 * k + 1), 0);            // the two darts of an edge side
+//!     m.link(Dart(2 * k + 1), Dart((2 * k + 2) % 8), 1);  // the two darts of a corner
+//! }
+//! m.validate().unwrap();
+//! assert_eq!(m.cell_counts(), vec![4, 4, 1]);
+//! assert_eq!(m.euler_characteristic(), 1);      // a disc
+//! assert!(m.is_orientable());
+//! // its darts are free for alpha_2 only (2 = n): the boundaries are complete
+//! assert!(m.has_complete_boundaries());
+//! // the dual swaps vertices and faces
+//! assert_eq!(m.dual().cell_counts(), vec![1, 4, 4]);
+//! ```
+
+#![warn(missing_docs)]
+
+pub mod alpha;
+pub mod compacted;
+pub mod dense;
+pub mod edit;
+pub mod error;
+pub mod marks;
+
+pub use alpha::{AlphaSet, MAX_DIM};
+pub use compacted::{CompactedCells, FaceOperator};
+pub use dense::{Dart, DenseMap, Partition, Point};
+pub use edit::{DartId, GMap, SewError};
+pub use error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityError};
+pub use marks::{MarkId, Marks};

@@ -1,0 +1,1 @@
+//! # gmap-homology: homology on the cells of a generalized map

@@ -1,0 +1,1 @@
+//! # gmap-ops: making and changing generalized maps

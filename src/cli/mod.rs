@@ -1,0 +1,113 @@
+//! Command-line parsing and dispatch. Exit codes: 0 success, 1 bad input (one line
+//! `error: …` on stderr), 2 bad usage (clap's own exit code).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+mod convert;
+mod demo;
+mod homology;
+mod info;
+pub mod load;
+
+/// Generalized maps: build, inspect, convert, and compute homology on the cells.
+#[derive(Parser, Debug)]
+#[command(name = "gmap", version, about)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Which chain complex `gmap homology` reduces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Method {
+    /// the cellular border operator (BO Def. 10), on the cells themselves
+    Cellular,
+    /// the simplicial counterpart (BO §6): one n-simplex per dart
+    Simplicial,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Build the classic objects and print one table row each.
+    Demo,
+    /// Read a file, validate it and print its characteristics.
+    Info {
+        /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json)
+        file: PathBuf,
+        /// print one JSON object
+        #[arg(long)]
+        json: bool,
+        /// refuse inputs whose G-map would have more darts than this
+        #[arg(long)]
+        max_darts: Option<u64>,
+    },
+    /// Homology over Z, or over Z/P with --field P.
+    Homology {
+        /// the input file
+        file: PathBuf,
+        /// cellular (default) or simplicial
+        #[arg(long, value_enum, default_value_t = Method::Cellular)]
+        method: Method,
+        /// a prime P: compute over Z/P
+        #[arg(long)]
+        field: Option<u64>,
+        /// print one JSON object
+        #[arg(long)]
+        json: bool,
+        /// print a representative cycle for each summand
+        #[arg(long)]
+        generators: bool,
+        /// reduce the map by homology-preserving removals and contractions first
+        #[arg(long)]
+        simplify: bool,
+        /// for an architectural complex: apply Algorithm 8.16 first (topological Betti numbers)
+        #[arg(long)]
+        topological: bool,
+        /// refuse inputs whose G-map would have more darts than this
+        #[arg(long)]
+        max_darts: Option<u64>,
+    },
+    /// Convert between formats, chosen by file extension.
+    Convert {
+        /// input file
+        input: PathBuf,
+        /// output file
+        output: PathBuf,
+        /// refuse inputs whose G-map would have more darts than this
+        #[arg(long)]
+        max_darts: Option<u64>,
+    },
+}
+
+/// Runs the command line; returns the process exit code.
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Demo => demo::run(),
+        Command::Info { file, json, max_darts } => info::run(&file, json, max_darts),
+        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts } => {
+            homology::run(&homology::Options {
+                file,
+                method,
+                field,
+                json,
+                generators,
+                simplify,
+                topological,
+                max_darts,
+            })
+        }
+        Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            let msg = format!("{e:#}").replace('\n', " ");
+            eprintln!("error: {msg}");
+            ExitCode::from(1)
+        }
+    }
+}
