@@ -54,6 +54,7 @@ pub mod compacted;
 pub mod dense;
 pub mod edit;
 pub mod error;
+pub mod examples;
 pub mod marks;
 
 pub use alpha::{AlphaSet, MAX_DIM};
