@@ -123,7 +123,7 @@ impl DenseMap {
             return Err(ValidityError::DimensionTooLarge(dim));
         }
         let w = dim + 1;
-        assert!(alpha.len() % w == 0, "flat array length must be a multiple of dim + 1");
+        assert!(alpha.len().is_multiple_of(w), "flat array length must be a multiple of dim + 1");
         let darts = alpha.len() / w;
         if darts >= u32::MAX as usize {
             return Err(ValidityError::TooManyDarts(darts));
