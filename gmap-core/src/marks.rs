@@ -114,6 +114,17 @@ impl Marks {
     }
 }
 
+impl Marks {
+    /// Clears every mark's bit at index `d` (used when a dart slot is freed).
+    pub fn clear_index(&mut self, d: usize) {
+        for b in self.bits.iter_mut().flatten() {
+            if d < b.len() {
+                b.set(d, false);
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -134,16 +145,5 @@ mod tests {
         assert_eq!(p.count(again), 10);
         p.clear(again);
         assert_eq!(p.count(again), 0);
-    }
-}
-
-impl Marks {
-    /// Clears every mark's bit at index `d` (used when a dart slot is freed).
-    pub fn clear_index(&mut self, d: usize) {
-        for b in self.bits.iter_mut().flatten() {
-            if d < b.len() {
-                b.set(d, false);
-            }
-        }
     }
 }
