@@ -78,11 +78,22 @@ impl Partition {
 /// [`DenseMap::try_from_flat`]; turn it into an editable [`crate::GMap`] with
 /// [`crate::GMap::from_dense`]. Operations that may break the axioms (`link`,
 /// `unlink`, `from_flat_unchecked`) say so; [`DenseMap::validate`] checks them.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct DenseMap {
     dim: usize,
     alpha: Vec<u32>,
     points: Vec<Option<Point>>,
+}
+
+/// Two maps are equal when they have the same dimension, the same involutions dart by dart
+/// and the same point on every dart (a map without points equals one whose points are all
+/// `None`).
+impl PartialEq for DenseMap {
+    fn eq(&self, other: &Self) -> bool {
+        self.dim == other.dim
+            && self.alpha == other.alpha
+            && (0..self.dart_count()).all(|d| self.point(Dart(d as u32)) == other.point(Dart(d as u32)))
+    }
 }
 
 impl DenseMap {
@@ -543,6 +554,23 @@ impl DenseMap {
             alpha.extend(row.iter().rev());
         }
         DenseMap { dim: self.dim, alpha, points: Vec::new() }
+    }
+
+    /// The same map seen in dimension `dim >= self.dim()`: every new involution
+    /// `alpha_k`, `k > self.dim()`, is the identity (all darts k-free), which keeps BO Def. 1.
+    /// Points are kept. `None` if `dim` is smaller than the map's dimension or above
+    /// [`MAX_DIM`]. O(N dim).
+    pub fn embedded(&self, dim: usize) -> Option<DenseMap> {
+        if dim < self.dim || dim > MAX_DIM {
+            return None;
+        }
+        let w = self.dim + 1;
+        let mut alpha = Vec::with_capacity(self.dart_count() * (dim + 1));
+        for (d, row) in self.alpha.chunks_exact(w).enumerate() {
+            alpha.extend_from_slice(row);
+            alpha.extend(std::iter::repeat_n(d as u32, dim - self.dim));
+        }
+        Some(DenseMap { dim, alpha, points: self.points.clone() })
     }
 
     /// Renumbers the darts: dart `d` becomes `perm[d]`. `perm` must be a permutation of `0..N`.

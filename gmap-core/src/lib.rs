@@ -55,6 +55,7 @@ pub mod dense;
 pub mod edit;
 pub mod error;
 pub mod examples;
+pub mod io;
 pub mod marks;
 
 pub use alpha::{AlphaSet, MAX_DIM};

@@ -1,0 +1,489 @@
+//! Reading and writing G-maps: the native `.gmap` text format and Moka's ascii `.moka`.
+//!
+//! Both readers work on the raw bytes in one pass, without a `String` per line, and never
+//! panic on bad input: every failure is a [`ReadError`] whose `Display` is
+//! `FILE:LINE: message`, where the line is the physical line of the file (from 1) that
+//! holds the fault. In both formats dart `k` (from 0) is the `k`-th data line, so a
+//! violation of BO Def. 1 found after parsing is reported on the line of the first
+//! offending dart, with the involution indices.
+//!
+//! Allocation is bounded by the input: a header announcing more darts than the file could
+//! hold reserves only what the file's size allows, a dimension above [`crate::MAX_DIM`] is
+//! refused before anything is allocated, and sizes are multiplied with overflow checks.
+//!
+//! Writers go through a temporary file in the destination's directory, renamed over the
+//! destination once complete, so a failure never leaves a partial file.
+//!
+//! | format | reader | writer | byte parser (fuzzing, tests) |
+//! | --- | --- | --- | --- |
+//! | native `.gmap` | [`read_gmap`] | [`write_gmap`] | [`parse_gmap`] |
+//! | Moka `.moka` | [`read_moka`] | [`write_moka`] | [`parse_moka`] |
+//!
+//! ```
+//! use gmap_core::{examples, io};
+//! let m = examples::cylinder();
+//! let text = io::format_gmap(&m);
+//! assert!(text.starts_with(b"gmap 2 8\n1 7 5\n"));
+//! assert_eq!(io::parse_gmap(&text, "cyl.gmap").unwrap(), m);
+//! let bad = b"gmap 1 2\n1 0\n0 0\n";
+//! let err = io::parse_gmap(bad, "bad.gmap").unwrap_err();
+//! assert_eq!(err.to_string(), "bad.gmap:3: not a G-map (BO Def. 1): \
+//!     alpha_1 is not an involution: alpha_1(1) = 0 but alpha_1(0) = 0");
+//! ```
+
+use std::fmt;
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use crate::error::ValidityError;
+
+mod moka;
+mod native;
+
+pub use moka::{format_moka, parse_moka, parse_moka_with, read_moka, write_moka, write_moka_to, MOKA_HEADER};
+pub use native::{format_gmap, parse_gmap, parse_gmap_with, read_gmap, write_gmap, write_gmap_to};
+
+/// Options of the readers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// refuse a map with more darts than this (checked on the header for `.gmap`, as the
+    /// darts are read for `.moka`)
+    pub max_darts: Option<u64>,
+}
+
+/// A failure to read a file: where, and why.
+///
+/// `Display` gives `FILE:LINE: message`, or `FILE: message` when no line applies (the
+/// file could not be opened).
+#[derive(Clone, Debug, PartialEq, Error)]
+pub struct ReadError {
+    /// the file name as given by the caller
+    pub file: String,
+    /// the physical line (from 1) holding the fault, when one applies
+    pub line: Option<usize>,
+    /// what is wrong
+    pub kind: ReadErrorKind,
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.kind),
+            None => write!(f, "{}: {}", self.file, self.kind),
+        }
+    }
+}
+
+/// What is wrong with an input file.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum ReadErrorKind {
+    /// The file could not be read.
+    #[error("cannot read the file: {0}")]
+    Io(String),
+    /// The file has no header (it is empty, or holds only comments and blank lines).
+    #[error("the file is empty: expected the header `{expected}`")]
+    Empty {
+        /// the header the format requires
+        expected: &'static str,
+    },
+    /// The bytes are not UTF-8 text.
+    #[error("not UTF-8 text: invalid byte at offset {offset}")]
+    NotUtf8 {
+        /// offset of the first invalid byte in the file
+        offset: usize,
+    },
+    /// The header line is not what the format requires.
+    #[error("bad header: expected `{expected}`, found `{found}`")]
+    BadHeader {
+        /// the header the format requires
+        expected: &'static str,
+        /// the line found (shortened to 60 characters)
+        found: String,
+    },
+    /// The dimension in the header is above [`crate::MAX_DIM`].
+    #[error("dimension {found} is larger than the supported maximum {max}", max = crate::MAX_DIM)]
+    DimensionTooLarge {
+        /// the dimension as written
+        found: String,
+    },
+    /// The dart count cannot be held: it does not fit a `u32` dart index, or the involution
+    /// array would not fit in memory.
+    #[error("{found} darts is more than a map can hold (at most {max} darts)", max = u32::MAX - 1)]
+    TooManyDarts {
+        /// the count as written
+        found: String,
+    },
+    /// The map has more darts than the caller allows ([`ReadOptions::max_darts`]).
+    #[error("the map has more than {limit} darts (the limit set by the caller): {found}")]
+    DartLimit {
+        /// the caller's limit
+        limit: u64,
+        /// the count found or announced
+        found: u64,
+    },
+    /// A token is not a non-negative decimal integer.
+    #[error("{what}: `{token}` is not a non-negative integer")]
+    NotANumber {
+        /// which value (e.g. `dart 3, alpha_1`)
+        what: String,
+        /// the token (shortened to 40 characters)
+        token: String,
+    },
+    /// A token is a negative integer.
+    #[error("{what}: `{token}` is negative")]
+    Negative {
+        /// which value
+        what: String,
+        /// the token
+        token: String,
+    },
+    /// A coordinate is not a finite decimal number.
+    #[error("{what}: `{token}` is not a finite number")]
+    BadCoordinate {
+        /// which value
+        what: String,
+        /// the token
+        token: String,
+    },
+    /// A Moka embedding flag other than `0` or `1`.
+    #[error("dart {dart}: embedding flag `{token}` is neither 0 nor 1")]
+    BadFlag {
+        /// the dart
+        dart: u64,
+        /// the token
+        token: String,
+    },
+    /// A line has the wrong number of values.
+    #[error("{what}: expected {expected} values, found {found}")]
+    WrongValueCount {
+        /// which line (e.g. `dart 3`)
+        what: String,
+        /// how many values the line must have
+        expected: String,
+        /// how many it has
+        found: usize,
+    },
+    /// The file ends before the announced number of darts.
+    #[error("truncated: the header announces {expected} darts but the file ends after {found}")]
+    Truncated {
+        /// darts announced
+        expected: u64,
+        /// darts found
+        found: u64,
+    },
+    /// The file holds more dart lines than announced.
+    #[error("more dart lines than the {expected} darts the header announces")]
+    ExtraLines {
+        /// darts announced
+        expected: u64,
+    },
+    /// The darts do not form a G-map (BO Def. 1).
+    #[error("not a G-map (BO Def. 1): {0}")]
+    Invalid(ValidityError),
+}
+
+impl ReadError {
+    fn new(file: &str, line: Option<usize>, kind: ReadErrorKind) -> Self {
+        ReadError { file: file.to_string(), line, kind }
+    }
+}
+
+/// A failure to write a file.
+#[derive(Debug, Error)]
+pub enum WriteError {
+    /// Creating, writing or renaming the file failed.
+    #[error("{path}: cannot write the file: {source}")]
+    Io {
+        /// the destination
+        path: PathBuf,
+        /// the system error
+        source: std::io::Error,
+    },
+    /// The format cannot hold a map of this dimension (Moka holds dimensions up to 3).
+    #[error("{path}: the {format} format holds maps of dimension at most {max}, this one has dimension {dim}")]
+    DimensionTooLarge {
+        /// the destination
+        path: PathBuf,
+        /// the format's name
+        format: &'static str,
+        /// the largest dimension the format holds
+        max: usize,
+        /// the map's dimension
+        dim: usize,
+    },
+}
+
+/// Reads a whole file, mapping failure to a [`ReadError`] without a line.
+fn read_bytes(path: &Path) -> Result<Vec<u8>, ReadError> {
+    fs::read(path).map_err(|e| ReadError::new(&path.display().to_string(), None, ReadErrorKind::Io(e.to_string())))
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same directory and a rename.
+fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    let io_err = |source| WriteError::Io { path: path.to_path_buf(), source };
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io_err)?;
+    tmp.write_all(bytes).map_err(io_err)?;
+    tmp.as_file().sync_all().map_err(io_err)?;
+    tmp.persist(path).map_err(|e| io_err(e.error))?;
+    Ok(())
+}
+
+/// Shortens a token for an error message (keeps whole characters).
+fn shorten(bytes: &[u8], max: usize) -> String {
+    let s = String::from_utf8_lossy(bytes);
+    if s.chars().count() <= max {
+        s.into_owned()
+    } else {
+        let mut t: String = s.chars().take(max).collect();
+        t.push('…');
+        t
+    }
+}
+
+/// Appends the decimal digits of `v` to `out`.
+#[inline]
+fn push_u32(out: &mut Vec<u8>, mut v: u32) {
+    let mut buf = [0u8; 10];
+    let mut k = buf.len();
+    loop {
+        k -= 1;
+        buf[k] = b'0' + (v % 10) as u8;
+        v /= 10;
+        if v == 0 {
+            break;
+        }
+    }
+    out.extend_from_slice(&buf[k..]);
+}
+
+/// Checks that the bytes are UTF-8; on failure, names the line of the first bad byte.
+fn check_utf8(bytes: &[u8], file: &str) -> Result<(), ReadError> {
+    if let Err(e) = std::str::from_utf8(bytes) {
+        let offset = e.valid_up_to();
+        let line = 1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count();
+        return Err(ReadError::new(file, Some(line), ReadErrorKind::NotUtf8 { offset }));
+    }
+    Ok(())
+}
+
+/// A cursor over the bytes of a text file that tracks the physical line number.
+struct Scanner<'a> {
+    b: &'a [u8],
+    pos: usize,
+    /// physical line of `pos`, from 1
+    line: usize,
+}
+
+/// The outcome of reading one unsigned integer token.
+enum Num<'a> {
+    /// a value (saturated at `u64::MAX` if it overflows)
+    Value(u64),
+    /// the end of the line: no token
+    Eol,
+    /// a token that is not an unsigned integer (negative or not a number)
+    Bad(&'a [u8]),
+}
+
+impl<'a> Scanner<'a> {
+    fn new(b: &'a [u8]) -> Self {
+        Scanner { b, pos: 0, line: 1 }
+    }
+
+    fn at_end(&self) -> bool {
+        self.pos >= self.b.len()
+    }
+
+    /// Skips spaces, tabs and carriage returns (not newlines).
+    #[inline]
+    fn skip_blank(&mut self) {
+        while let Some(&c) = self.b.get(self.pos) {
+            if c == b' ' || c == b'\t' || c == b'\r' {
+                self.pos += 1;
+            } else {
+                break;
+            }
+        }
+    }
+
+    /// Whether the cursor is at the end of a line (after blanks are skipped by the caller).
+    #[inline]
+    fn at_eol(&self) -> bool {
+        self.pos >= self.b.len() || self.b[self.pos] == b'\n'
+    }
+
+    /// Moves past the end of the current line.
+    fn next_line(&mut self) {
+        while self.pos < self.b.len() {
+            let c = self.b[self.pos];
+            self.pos += 1;
+            if c == b'\n' {
+                self.line += 1;
+                return;
+            }
+        }
+    }
+
+    /// Skips blank lines and lines whose first non-blank byte is `#`; stops at the start of
+    /// the next line with content, or at the end.
+    fn skip_empty_lines(&mut self) {
+        loop {
+            let start = self.pos;
+            self.skip_blank();
+            if self.at_end() {
+                return;
+            }
+            let c = self.b[self.pos];
+            if c == b'\n' || c == b'#' {
+                self.next_line();
+            } else {
+                self.pos = start;
+                return;
+            }
+        }
+    }
+
+    /// The next whitespace-delimited token on this line, if any.
+    fn token(&mut self) -> Option<&'a [u8]> {
+        self.skip_blank();
+        if self.at_eol() {
+            return None;
+        }
+        let start = self.pos;
+        while self.pos < self.b.len() && !matches!(self.b[self.pos], b' ' | b'\t' | b'\r' | b'\n') {
+            self.pos += 1;
+        }
+        Some(&self.b[start..self.pos])
+    }
+
+    /// The rest of the current line, without its end.
+    fn rest_of_line(&self) -> &'a [u8] {
+        let end = self.b[self.pos..].iter().position(|&c| c == b'\n').map_or(self.b.len(), |k| self.pos + k);
+        &self.b[self.pos..end]
+    }
+
+    /// Counts the tokens left on this line (moves the cursor to its end).
+    fn count_tokens(&mut self) -> usize {
+        let mut k = 0;
+        while self.token().is_some() {
+            k += 1;
+        }
+        k
+    }
+
+    /// Reads an unsigned decimal integer token: the hot loop of both readers.
+    #[inline]
+    fn number(&mut self) -> Num<'a> {
+        self.skip_blank();
+        let start = self.pos;
+        let mut v: u64 = 0;
+        while let Some(&c) = self.b.get(self.pos) {
+            let digit = c.wrapping_sub(b'0');
+            if digit > 9 {
+                break;
+            }
+            v = v.saturating_mul(10).saturating_add(digit as u64);
+            self.pos += 1;
+        }
+        if self.pos == start {
+            if self.at_eol() {
+                return Num::Eol;
+            }
+        } else if self.at_eol() || matches!(self.b[self.pos], b' ' | b'\t' | b'\r') {
+            return Num::Value(v);
+        }
+        self.pos = start;
+        let tok = self.token().unwrap_or(&[]);
+        Num::Bad(tok)
+    }
+}
+
+/// The error for a bad integer token.
+fn bad_number(what: String, tok: &[u8]) -> ReadErrorKind {
+    let negative = tok.len() > 1 && tok[0] == b'-' && tok[1..].iter().all(u8::is_ascii_digit);
+    let token = shorten(tok, 40);
+    if negative {
+        ReadErrorKind::Negative { what, token }
+    } else {
+        ReadErrorKind::NotANumber { what, token }
+    }
+}
+
+/// The physical line (from 1) of the `k`-th data line (from 0) counted from byte offset
+/// `start` (on line `start_line`), skipping blank and comment lines. Used on error paths.
+fn line_of_data(bytes: &[u8], start: usize, start_line: usize, k: usize) -> usize {
+    let mut s = Scanner { b: bytes, pos: start, line: start_line };
+    let mut seen = 0;
+    loop {
+        s.skip_empty_lines();
+        if s.at_end() || seen == k {
+            return s.line;
+        }
+        seen += 1;
+        s.next_line();
+    }
+}
+
+/// Converts a [`ValidityError`] of a freshly read map into a [`ReadError`] on the line of
+/// the offending dart.
+fn validity_to_read_error(
+    e: ValidityError,
+    file: &str,
+    bytes: &[u8],
+    data_start: usize,
+    data_line: usize,
+) -> ReadError {
+    let dart = match &e {
+        ValidityError::OutOfRange { dart, .. }
+        | ValidityError::NotInvolution { dart, .. }
+        | ValidityError::NotCommuting { dart, .. } => Some(*dart as usize),
+        ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) => None,
+    };
+    let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));
+    ReadError::new(file, line, ReadErrorKind::Invalid(e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scanner_numbers() {
+        let mut s = Scanner::new(b"12 -3 x9 4x 18446744073709551616\n7");
+        assert!(matches!(s.number(), Num::Value(12)));
+        assert!(matches!(s.number(), Num::Bad(b"-3")));
+        assert!(matches!(s.number(), Num::Bad(b"x9")));
+        assert!(matches!(s.number(), Num::Bad(b"4x")));
+        assert!(matches!(s.number(), Num::Value(u64::MAX)));
+        assert!(matches!(s.number(), Num::Eol));
+        s.next_line();
+        assert_eq!(s.line, 2);
+        assert!(matches!(s.number(), Num::Value(7)));
+        assert!(matches!(s.number(), Num::Eol));
+    }
+
+    #[test]
+    fn data_lines_skip_comments() {
+        let b = b"h\n1\n\n# c\n2\n3\n";
+        assert_eq!(line_of_data(b, 2, 2, 0), 2);
+        assert_eq!(line_of_data(b, 2, 2, 1), 5);
+        assert_eq!(line_of_data(b, 2, 2, 2), 6);
+        assert_eq!(line_of_data(b, 2, 2, 3), 7);
+    }
+
+    #[test]
+    fn shorten_and_push() {
+        assert_eq!(shorten("é".repeat(50).as_bytes(), 3), "ééé…");
+        let mut v = Vec::new();
+        push_u32(&mut v, 0);
+        v.push(b' ');
+        push_u32(&mut v, u32::MAX);
+        assert_eq!(v, b"0 4294967295");
+    }
+}
