@@ -1,1 +1,37 @@
 //! # gmap-ops: making and changing generalized maps
+//!
+//! The construction side of the workspace. Every function here returns a
+//! [`gmap_core::DenseMap`] that passes [`gmap_core::DenseMap::validate`]:
+//!
+//! * [`build`]: the classic objects — n-simplex, n-cube, k-gon, the product with an edge
+//!   (extrusion), cube grids in any dimension with any axes periodic (d-tori), surfaces
+//!   from polygonal schema words, the solid torus, lens spaces L(p, q);
+//! * [`import`]: pure simplicial complexes (`.facets`, `.lex`; one dart per flag of each
+//!   facet), polygon meshes (`.off`) and face posets of regular cell complexes (the flag
+//!   construction), each refusing what is not a G-map with an error that says where;
+//! * [`export`]: `.off` polygon meshes and the `.facets` of the barycentric subdivision,
+//!   written through a temporary file and a rename;
+//! * [`iso`]: isomorphism of maps (canonical breadth-first codes), for round-trip tests.
+//!
+//! ```
+//! use gmap_ops::{build, import::SimplicialComplex, iso};
+//! // the boundary of a tetrahedron, imported from its facets: a sphere
+//! let sc = SimplicialComplex::parse_facets("1 2 3\n1 2 4\n1 3 4\n2 3 4\n").unwrap();
+//! let sphere = sc.to_gmap(1_000).unwrap();
+//! assert_eq!(sphere.dart_count(), 4 * 6);
+//! assert_eq!(sphere.cell_counts(), vec![4, 6, 4]);
+//! assert_eq!(sphere.euler_characteristic(), 2);
+//! // the same surface as two triangles glued along their boundary has other cells
+//! let pillow = build::schema("a b c, C B A").unwrap();
+//! assert_eq!(pillow.euler_characteristic(), 2);
+//! assert!(!iso::are_isomorphic(&sphere, &pillow));
+//! ```
+
+#![warn(missing_docs)]
+
+pub mod build;
+pub mod euler;
+pub mod export;
+pub mod import;
+pub mod iso;
+mod perm;

@@ -1,0 +1,152 @@
+//! Importers: simplicial complexes (`.facets`, `.lex`), polygon meshes (`.off`) and face
+//! posets of regular cell complexes (the flag construction).
+//!
+//! Every reader returns a [`FileError`] that names the file, and inside it an
+//! [`ImportError`] that names the line, the facet, the ridge or the edge at fault. Readers
+//! never panic on user input. The simplicial importer computes the number of darts first,
+//! with checked arithmetic, and refuses an input over the limit before allocating the map
+//! (see [`default_max_darts`]).
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+pub mod off;
+pub mod poset;
+pub mod simplicial;
+
+pub use off::{read_off, PolygonMesh};
+pub use poset::{FacePoset, PosetError};
+pub use simplicial::{read_facets, read_lex, SimplicialComplex};
+
+/// Why an input could not be made into a G-map. Line numbers are 1-based.
+#[derive(Debug, Error)]
+pub enum ImportError {
+    /// The file could not be read.
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+    /// A token or line that does not fit the format.
+    #[error("line {line}: {message}")]
+    Syntax {
+        /// the offending line
+        line: usize,
+        /// what was expected
+        message: String,
+    },
+    /// The input holds no facet or no polygon.
+    #[error("no facet or polygon found")]
+    Empty,
+    /// A facet whose vertex count differs from the first facet's (the complex is not pure).
+    #[error("facet on line {line} has {found} vertices, but the first facet has {expected}: mixed dimensions")]
+    MixedDimension {
+        /// line of the facet
+        line: usize,
+        /// vertices of the first facet
+        expected: usize,
+        /// vertices of this facet
+        found: usize,
+    },
+    /// A facet listing a vertex twice.
+    #[error("facet on line {line} repeats vertex {vertex}")]
+    RepeatedVertex {
+        /// line of the facet
+        line: usize,
+        /// the repeated label
+        vertex: u64,
+    },
+    /// A ridge (a facet minus one vertex) shared by three or more facets.
+    #[error("ridge {} lies in {} facets (lines {}): not a pseudo-manifold", fmt_list(ridge), lines.len(), fmt_list(lines))]
+    RidgeInManyFacets {
+        /// the vertices of the ridge
+        ridge: Vec<u64>,
+        /// lines of the facets that contain it
+        lines: Vec<usize>,
+    },
+    /// The G-map would have more darts than allowed.
+    #[error("{facets} facets of dimension {dim} make {} darts, over the limit of {limit} (see --max-darts)",
+        darts.map_or_else(|| "more than 2^64".to_string(), |d| d.to_string()))]
+    TooManyDarts {
+        /// the number of facets (or polygons, or flags found so far)
+        facets: usize,
+        /// the dimension
+        dim: usize,
+        /// the number of darts, `None` past `u64`
+        darts: Option<u64>,
+        /// the limit in force
+        limit: u64,
+    },
+    /// An edge shared by three or more polygons of a mesh.
+    #[error("edge {u}-{v} lies in {} polygons (lines {}): not a surface", lines.len(), fmt_list(lines))]
+    EdgeInManyPolygons {
+        /// one end (the smaller vertex index)
+        u: u32,
+        /// the other end
+        v: u32,
+        /// lines of the polygons
+        lines: Vec<usize>,
+    },
+    /// A polygon with an edge from a vertex to itself, or with fewer than three vertices.
+    #[error("polygon on line {line} is degenerate: {reason}")]
+    DegeneratePolygon {
+        /// line of the polygon
+        line: usize,
+        /// what is wrong
+        reason: String,
+    },
+    /// A `.lex` file without a complex of the requested name.
+    #[error("no complex named '{0}' in the file")]
+    NoSuchName(String),
+}
+
+/// An [`ImportError`] with the file it came from. Displays as `FILE: message`.
+#[derive(Debug, Error)]
+pub struct FileError {
+    /// the file read
+    pub path: PathBuf,
+    /// what went wrong
+    #[source]
+    pub error: ImportError,
+}
+
+impl fmt::Display for FileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.path.display(), self.error)
+    }
+}
+
+impl FileError {
+    /// Attaches a path to an error.
+    pub fn new(path: &Path, error: ImportError) -> Self {
+        FileError { path: path.to_path_buf(), error }
+    }
+}
+
+fn fmt_list<T: fmt::Display>(xs: &[T]) -> String {
+    let parts: Vec<String> = xs.iter().map(|x| x.to_string()).collect();
+    format!("[{}]", parts.join(", "))
+}
+
+/// The default dart limit for a map of dimension `dim`: what fits in the memory available
+/// now (`MemAvailable` of `/proc/meminfo`) at `bytes_per_dart(dim)` bytes each, capped at
+/// `u32::MAX - 1` (the largest dart index). Where `/proc/meminfo` cannot be read, the cap.
+pub fn default_max_darts(dim: usize) -> u64 {
+    let cap = u32::MAX as u64 - 1;
+    let avail = std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
+        s.lines()
+            .find(|l| l.starts_with("MemAvailable:"))
+            .and_then(|l| l.split_whitespace().nth(1))
+            .and_then(|kb| kb.parse::<u64>().ok())
+            .map(|kb| kb.saturating_mul(1024))
+    });
+    match avail {
+        Some(bytes) => (bytes / bytes_per_dart(dim)).min(cap),
+        None => cap,
+    }
+}
+
+/// Bytes needed per dart while importing an n-dimensional complex: the involution row
+/// (`4 (n + 1)`) plus the scratch of the importer and of a first analysis pass (the same again).
+pub fn bytes_per_dart(dim: usize) -> u64 {
+    8 * (dim as u64 + 1)
+}

@@ -1,0 +1,415 @@
+//! Pure simplicial complexes as G-maps: one dart per flag of each facet.
+//!
+//! A facet of dimension n with sorted vertices `v_0 < … < v_n` has `(n + 1)!` darts, one per
+//! ordering of its vertices (a flag: the first vertex, the edge of the first two, the
+//! triangle of the first three, …). For `i < n`, `alpha_i` swaps the vertices at positions
+//! `i` and `i + 1` of the ordering; `alpha_n` crosses the ridge spanned by the first `n`
+//! vertices into the other facet on that ridge, keeping the order of the ridge's vertices
+//! and putting the other facet's remaining vertex last. A ridge on one facet only leaves
+//! `alpha_n` free there (the boundary); a ridge on three or more facets cannot be a G-map
+//! and is refused (BO §6 uses the same flags for the simplicial counterpart).
+
+use std::path::Path;
+
+use gmap_core::DenseMap;
+
+use super::{default_max_darts, FileError, ImportError};
+use crate::perm::{factorial, rank, PermTable};
+
+/// A pure simplicial complex: facets of equal size, each with its vertices sorted, and the
+/// line of the input each facet came from (for error messages).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SimplicialComplex {
+    dim: usize,
+    /// `vertices[f * (dim + 1) ..][.. dim + 1]`: the sorted vertices of facet `f`
+    vertices: Vec<u64>,
+    lines: Vec<usize>,
+}
+
+impl SimplicialComplex {
+    /// A complex from facets given with their line numbers. Checks that all facets have the
+    /// same number of vertices and that no facet repeats a vertex. O(F n log n).
+    pub fn from_facets_with_lines<I>(facets: I) -> Result<Self, ImportError>
+    where
+        I: IntoIterator<Item = (usize, Vec<u64>)>,
+    {
+        let mut width = None;
+        let mut vertices = Vec::new();
+        let mut lines = Vec::new();
+        for (line, mut f) in facets {
+            let m = *width.get_or_insert(f.len());
+            if f.len() != m {
+                return Err(ImportError::MixedDimension { line, expected: m, found: f.len() });
+            }
+            f.sort_unstable();
+            if let Some(w) = f.windows(2).find(|w| w[0] == w[1]) {
+                return Err(ImportError::RepeatedVertex { line, vertex: w[0] });
+            }
+            vertices.extend_from_slice(&f);
+            lines.push(line);
+        }
+        match width {
+            None | Some(0) => Err(ImportError::Empty),
+            Some(m) => Ok(SimplicialComplex { dim: m - 1, vertices, lines }),
+        }
+    }
+
+    /// A complex from facets, numbered 1, 2, … as if each were on its own line.
+    pub fn from_facets<I: IntoIterator<Item = Vec<u64>>>(facets: I) -> Result<Self, ImportError> {
+        Self::from_facets_with_lines(facets.into_iter().enumerate().map(|(k, f)| (k + 1, f)))
+    }
+
+    /// Parses the `.facets` format (CONTRACT §2): one facet per line, vertex labels as
+    /// non-negative integers separated by white space or commas, `#` starts a comment,
+    /// blank lines skipped. O(size of the text).
+    pub fn parse_facets(text: &str) -> Result<Self, ImportError> {
+        let mut facets = Vec::new();
+        for (k, raw) in text.lines().enumerate() {
+            let line = k + 1;
+            let body = raw.split('#').next().unwrap_or("");
+            let mut f = Vec::new();
+            for tok in body.split(|c: char| c.is_whitespace() || c == ',').filter(|t| !t.is_empty()) {
+                let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
+                    line,
+                    message: format!("'{tok}' is not a vertex label (a non-negative integer)"),
+                })?;
+                f.push(v);
+            }
+            if !f.is_empty() {
+                facets.push((line, f));
+            }
+        }
+        Self::from_facets_with_lines(facets)
+    }
+
+    /// Parses Lutz's `.lex` format: `name=[[1,2,3],[1,2,4],...]`, possibly over several lines
+    /// and several complexes per file. Picks the complex called `name`, or the first one.
+    /// The line of a facet is the line where its `[` stands.
+    pub fn parse_lex(text: &str, name: Option<&str>) -> Result<Self, ImportError> {
+        let mut p = LexParser { bytes: text.as_bytes(), pos: 0, line: 1 };
+        let mut first_name = None;
+        loop {
+            p.skip_ws();
+            if p.pos >= p.bytes.len() {
+                break;
+            }
+            let start_line = p.line;
+            let start = p.pos;
+            while p.pos < p.bytes.len() && p.bytes[p.pos] != b'=' {
+                if p.bytes[p.pos] == b'\n' {
+                    p.line += 1;
+                }
+                p.pos += 1;
+            }
+            if p.pos >= p.bytes.len() {
+                return Err(ImportError::Syntax { line: start_line, message: "expected 'name=[[...]]'".into() });
+            }
+            let this = String::from_utf8_lossy(&p.bytes[start..p.pos]).trim().to_string();
+            p.pos += 1;
+            let facets = p.list()?;
+            let wanted = match name {
+                Some(n) => n == this,
+                None => first_name.is_none(),
+            };
+            if first_name.is_none() {
+                first_name = Some(this);
+            }
+            if wanted {
+                return Self::from_facets_with_lines(facets);
+            }
+            p.skip_ws();
+            if p.pos < p.bytes.len() && p.bytes[p.pos] == b',' {
+                p.pos += 1;
+            }
+        }
+        match name {
+            Some(n) => Err(ImportError::NoSuchName(n.to_string())),
+            None => Err(ImportError::Empty),
+        }
+    }
+
+    /// The dimension n of the facets.
+    pub fn dim(&self) -> usize {
+        self.dim
+    }
+
+    /// The number of facets.
+    pub fn facet_count(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// The sorted vertices of facet `f`.
+    pub fn facet(&self, f: usize) -> &[u64] {
+        let m = self.dim + 1;
+        &self.vertices[f * m..(f + 1) * m]
+    }
+
+    /// The input line of facet `f`.
+    pub fn line(&self, f: usize) -> usize {
+        self.lines[f]
+    }
+
+    /// The number of darts of the G-map, `facets × (n + 1)!`, or `None` past `u64`. O(n).
+    pub fn dart_count(&self) -> Option<u64> {
+        factorial(self.dim + 1).and_then(|p| p.checked_mul(self.facet_count() as u64))
+    }
+
+    /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
+    /// allocating it. Errors: [`ImportError::TooManyDarts`], and
+    /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order.
+    /// O(F n log F) for the ridges and O(F (n+1)! n^2) for the darts.
+    pub fn to_gmap(&self, max_darts: u64) -> Result<DenseMap, ImportError> {
+        let n = self.dim;
+        let m = n + 1;
+        let nf = self.facet_count();
+        let darts = self.dart_count();
+        let limit = max_darts.min(u32::MAX as u64 - 1);
+        match darts {
+            Some(d) if d <= limit => {}
+            _ => return Err(ImportError::TooManyDarts { facets: nf, dim: n, darts, limit }),
+        }
+        let darts = darts.unwrap_or(0) as usize;
+        let partner = self.ridge_partners()?;
+        let table = PermTable::new(m);
+        let pc = table.len();
+        let w = n + 1;
+        let mut alpha = vec![0u32; darts * w];
+        let mut q = vec![0u8; m];
+        for f in 0..nf {
+            let base = f * pc;
+            for p in 0..pc {
+                let d = base + p;
+                let row = &mut alpha[d * w..(d + 1) * w];
+                for (i, slot) in row.iter_mut().enumerate().take(n) {
+                    *slot = (base + table.swap(p, i) as usize) as u32;
+                }
+                let perm = table.perm(p);
+                let j = perm[n] as usize;
+                let other = partner[f * m + j];
+                row[n] = if other == NONE {
+                    d as u32
+                } else {
+                    let g = other as usize / m;
+                    let jg = other as usize % m;
+                    for k in 0..n {
+                        let a = perm[k] as usize;
+                        let r = if a > j { a - 1 } else { a };
+                        q[k] = if r >= jg { r + 1 } else { r } as u8;
+                    }
+                    q[n] = jg as u8;
+                    (g * pc + rank(&q) as usize) as u32
+                };
+            }
+        }
+        let map = DenseMap::from_flat_unchecked(n, alpha)
+            .map_err(|e| ImportError::Syntax { line: 0, message: e.to_string() })?;
+        Ok(map)
+    }
+
+    /// For each (facet, omitted local vertex), the (facet, local vertex) across that ridge,
+    /// encoded as `g * m + j'`, or `NONE` on the boundary.
+    fn ridge_partners(&self) -> Result<Vec<u32>, ImportError> {
+        let n = self.dim;
+        let m = n + 1;
+        let nf = self.facet_count();
+        let total = nf * m;
+        let mut partner = vec![NONE; total];
+        if n == 0 {
+            // the ridge of a vertex is empty: every vertex shares it
+            if nf > 2 {
+                return Err(ImportError::RidgeInManyFacets { ridge: vec![], lines: self.lines.clone() });
+            }
+            if nf == 2 {
+                partner[0] = 1;
+                partner[1] = 0;
+            }
+            return Ok(partner);
+        }
+        let mut keys = Vec::with_capacity(total * n);
+        for f in 0..nf {
+            let fv = self.facet(f);
+            for j in 0..m {
+                keys.extend(fv.iter().enumerate().filter(|&(k, _)| k != j).map(|(_, &v)| v));
+            }
+        }
+        let key = |r: u32| &keys[r as usize * n..(r as usize + 1) * n];
+        let mut order: Vec<u32> = (0..total as u32).collect();
+        order.sort_unstable_by(|&a, &b| key(a).cmp(key(b)));
+        let mut s = 0;
+        while s < total {
+            let mut e = s + 1;
+            while e < total && key(order[e]) == key(order[s]) {
+                e += 1;
+            }
+            match e - s {
+                1 => {}
+                2 => {
+                    partner[order[s] as usize] = order[s + 1];
+                    partner[order[s + 1] as usize] = order[s];
+                }
+                _ => {
+                    let mut lines: Vec<usize> = order[s..e].iter().map(|&r| self.lines[r as usize / m]).collect();
+                    lines.sort_unstable();
+                    return Err(ImportError::RidgeInManyFacets { ridge: key(order[s]).to_vec(), lines });
+                }
+            }
+            s = e;
+        }
+        Ok(partner)
+    }
+}
+
+const NONE: u32 = u32::MAX;
+
+struct LexParser<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    line: usize,
+}
+
+impl LexParser<'_> {
+    fn skip_ws(&mut self) {
+        while self.pos < self.bytes.len() && self.bytes[self.pos].is_ascii_whitespace() {
+            if self.bytes[self.pos] == b'\n' {
+                self.line += 1;
+            }
+            self.pos += 1;
+        }
+    }
+
+    fn expect(&mut self, c: u8) -> Result<(), ImportError> {
+        self.skip_ws();
+        if self.pos < self.bytes.len() && self.bytes[self.pos] == c {
+            self.pos += 1;
+            Ok(())
+        } else {
+            let found = self.bytes.get(self.pos).map_or("end of file".to_string(), |&b| format!("'{}'", b as char));
+            Err(ImportError::Syntax { line: self.line, message: format!("expected '{}', found {found}", c as char) })
+        }
+    }
+
+    fn peek(&mut self) -> Option<u8> {
+        self.skip_ws();
+        self.bytes.get(self.pos).copied()
+    }
+
+    /// `[[1,2,3],[1,2,4]]` → facets with the line of their opening bracket.
+    fn list(&mut self) -> Result<Vec<(usize, Vec<u64>)>, ImportError> {
+        self.expect(b'[')?;
+        let mut out = Vec::new();
+        if self.peek() == Some(b']') {
+            self.pos += 1;
+            return Ok(out);
+        }
+        loop {
+            self.expect(b'[')?;
+            let line = self.line;
+            let mut f = Vec::new();
+            loop {
+                self.skip_ws();
+                let start = self.pos;
+                while self.pos < self.bytes.len() && self.bytes[self.pos].is_ascii_digit() {
+                    self.pos += 1;
+                }
+                if start == self.pos {
+                    return Err(ImportError::Syntax { line: self.line, message: "expected a vertex label".into() });
+                }
+                let tok = std::str::from_utf8(&self.bytes[start..self.pos]).unwrap_or("");
+                let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
+                    line: self.line,
+                    message: format!("vertex label '{tok}' is too large"),
+                })?;
+                f.push(v);
+                match self.peek() {
+                    Some(b',') => self.pos += 1,
+                    Some(b']') => {
+                        self.pos += 1;
+                        break;
+                    }
+                    _ => return Err(ImportError::Syntax { line: self.line, message: "expected ',' or ']'".into() }),
+                }
+            }
+            out.push((line, f));
+            match self.peek() {
+                Some(b',') => self.pos += 1,
+                Some(b']') => {
+                    self.pos += 1;
+                    return Ok(out);
+                }
+                _ => return Err(ImportError::Syntax { line: self.line, message: "expected ',' or ']'".into() }),
+            }
+        }
+    }
+}
+
+/// Reads a `.facets` file into a G-map, refusing more than `max_darts` darts (default:
+/// [`default_max_darts`]) before allocating.
+pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
+    let text = std::fs::read_to_string(path).map_err(|e| FileError::new(path, e.into()))?;
+    let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
+    let limit = max_darts.unwrap_or_else(|| default_max_darts(sc.dim()));
+    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+}
+
+/// Reads a `.lex` file (the complex `name`, or the first one) into a G-map; see
+/// [`read_facets`] for the limit.
+pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
+    let text = std::fs::read_to_string(path).map_err(|e| FileError::new(path, e.into()))?;
+    let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
+    let limit = max_darts.unwrap_or_else(|| default_max_darts(sc.dim()));
+    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn triangle_boundary_and_tetrahedron_surface() {
+        let tri = SimplicialComplex::from_facets(vec![vec![0, 1, 2]]).unwrap();
+        let m = tri.to_gmap(1000).unwrap();
+        m.validate().unwrap();
+        assert_eq!(m.cell_counts(), vec![3, 3, 1]);
+        let s2 = SimplicialComplex::parse_facets("1 2 3\n1,2,4\n# c\n1 3 4\n2 3 4 # end\n").unwrap();
+        let m = s2.to_gmap(1000).unwrap();
+        m.validate().unwrap();
+        assert_eq!(m.dart_count(), 24);
+        assert_eq!(m.cell_counts(), vec![4, 6, 4]);
+        assert!(m.has_complete_boundaries());
+        assert!(m.is_orientable());
+    }
+
+    #[test]
+    fn errors_name_line_and_ridge() {
+        let e = SimplicialComplex::parse_facets("1 2 3\n1 2\n").unwrap_err();
+        assert!(matches!(e, ImportError::MixedDimension { line: 2, expected: 3, found: 2 }));
+        let e = SimplicialComplex::parse_facets("1 2 3\n\n4 4 5\n").unwrap_err();
+        assert!(matches!(e, ImportError::RepeatedVertex { line: 3, vertex: 4 }));
+        let e = SimplicialComplex::parse_facets("1 2 x\n").unwrap_err();
+        assert!(matches!(e, ImportError::Syntax { line: 1, .. }));
+        let sc = SimplicialComplex::parse_facets("1 2 3\n1 2 4\n1 2 5\n").unwrap();
+        match sc.to_gmap(1000).unwrap_err() {
+            ImportError::RidgeInManyFacets { ridge, lines } => {
+                assert_eq!(ridge, vec![1, 2]);
+                assert_eq!(lines, vec![1, 2, 3]);
+            }
+            e => panic!("{e}"),
+        }
+        let e = sc.to_gmap(17).unwrap_err();
+        assert!(matches!(e, ImportError::TooManyDarts { darts: Some(18), limit: 17, .. }));
+        assert!(matches!(SimplicialComplex::parse_facets("# nothing\n"), Err(ImportError::Empty)));
+    }
+
+    #[test]
+    fn lex_picks_by_name() {
+        let text = "first=[[1,2],[2,3],\n[3,1]]\nsecond=[[1,2,3],\n[1,2,4],[1,3,4],[2,3,4]]\n";
+        let a = SimplicialComplex::parse_lex(text, None).unwrap();
+        assert_eq!((a.dim(), a.facet_count()), (1, 3));
+        let b = SimplicialComplex::parse_lex(text, Some("second")).unwrap();
+        assert_eq!((b.dim(), b.facet_count(), b.line(1)), (2, 4, 4));
+        assert!(matches!(SimplicialComplex::parse_lex(text, Some("x")), Err(ImportError::NoSuchName(_))));
+        assert!(matches!(SimplicialComplex::parse_lex("a=[[1,2],", None), Err(ImportError::Syntax { .. })));
+        let c = a.to_gmap(100).unwrap();
+        assert_eq!(c.cell_counts(), vec![3, 3]);
+    }
+}
