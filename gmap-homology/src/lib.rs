@@ -1,3 +1,55 @@
 //! # gmap-homology: homology on the cells of a generalized map
+//!
+//! The cells of a G-map (BO Def. 2) carry a chain complex of their own: the signed
+//! incidence number between an i-cell and an (i-1)-cell (BO Def. 9) counts, with
+//! orientation signs, the elements of the face-operator preimage that lie in the cell, and
+//! the border operator (BO Def. 10) collects them into sparse integer matrices. Its
+//! homology is the homology of the object whenever every cell is orientable as a compacted
+//! cell (condition C1) and bounded by a homology sphere (C2); the crate checks both and
+//! refuses otherwise, naming the cell. The simplicial counterpart (BO §6: one n-simplex per
+//! dart) is always right and serves as the oracle.
+//!
+//! ## Model
+//!
+//! * [`SparseMatrix`]: CSC integer matrices with validated invariants.
+//! * [`ChainComplex`]: cell counts per dimension and `∂_k : C_k → C_{k-1}`, `∂∂ = 0` checked.
+//! * [`homology_z`] / [`homology_zp`]: [`Homology`] (Betti numbers and torsion invariant
+//!   factors) by unit-pivot sparse elimination (coreductions and collapses first), then
+//!   Smith normal form of the small remainder, with checked `i64` and a big-integer
+//!   fall-back.
+//!
+//! ## Example
+//!
+//! A triangle's boundary (a circle) by hand: three vertices, three edges.
+//!
+//! ```
+//! use gmap_homology::{homology_z, ChainComplex, SparseMatrix};
+//! let d1 = SparseMatrix::try_from_triplets(3, 3, &[
+//!     (0, 0, -1), (1, 0, 1),   // edge 0: v0 -> v1
+//!     (1, 1, -1), (2, 1, 1),   // edge 1: v1 -> v2
+//!     (2, 2, -1), (0, 2, 1),   // edge 2: v2 -> v0
+//! ]).unwrap();
+//! let c = ChainComplex::try_new(vec![3, 3], vec![d1]).unwrap();
+//! let h = homology_z(&c).unwrap();
+//! assert_eq!(h.betti, vec![1, 1]);
+//! assert_eq!(h.to_string(), "(Z, Z)");
+//! ```
 
+#![warn(missing_docs)]
+
+pub mod arch;
+pub mod chain;
+pub mod dot;
 pub mod ep;
+pub mod homology;
+pub mod json;
+pub mod lar;
+pub(crate) mod reduce;
+pub(crate) mod ring;
+pub(crate) mod snf;
+pub mod sparse;
+pub mod tm;
+
+pub use chain::{ChainComplex, ChainError};
+pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
+pub use sparse::{SparseError, SparseMatrix};
