@@ -37,18 +37,12 @@
 
 #![warn(missing_docs)]
 
-pub mod arch;
 pub mod chain;
-pub mod dot;
-pub mod ep;
 pub mod homology;
-pub mod json;
-pub mod lar;
 pub(crate) mod reduce;
 pub(crate) mod ring;
 pub(crate) mod snf;
 pub mod sparse;
-pub mod tm;
 
 pub use chain::{ChainComplex, ChainError};
 pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
