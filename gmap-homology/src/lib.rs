@@ -37,13 +37,22 @@
 
 #![warn(missing_docs)]
 
+pub mod border;
 pub mod chain;
+pub mod ep;
 pub mod homology;
+pub mod incidence;
+pub mod precond;
 pub(crate) mod reduce;
 pub(crate) mod ring;
+pub mod simplicial;
 pub(crate) mod snf;
 pub mod sparse;
 
+pub use border::{cellular_complex, CellularComplex};
 pub use chain::{ChainComplex, ChainError};
 pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
+pub use incidence::Incidence;
+pub use precond::{check_preconditions, oriented_cells, OrientedCells, PreconditionError};
+pub use simplicial::{simplicial_complex, simplicial_complex_with_simplices, Simplex, SimplicialComplex};
 pub use sparse::{SparseError, SparseMatrix};
