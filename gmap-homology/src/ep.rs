@@ -196,12 +196,7 @@ impl EpVector {
 
     /// `Σ (-1)^i (x_i - y_i)`, exact (i128 cannot overflow for `n <= 2^60`).
     pub fn euler_defect(&self) -> i128 {
-        self.x
-            .iter()
-            .zip(&self.y)
-            .enumerate()
-            .map(|(i, (&a, &b))| sign(i) as i128 * (a as i128 - b as i128))
-            .sum()
+        self.x.iter().zip(&self.y).enumerate().map(|(i, (&a, &b))| sign(i) as i128 * (a as i128 - b as i128)).sum()
     }
 
     /// Whether the vector lies on the Euler–Poincaré hyperplane (AC Def. 4.1): an operator.

@@ -37,17 +37,22 @@
 
 #![warn(missing_docs)]
 
+pub mod arch;
 pub mod border;
 pub mod chain;
+pub mod dot;
 pub mod ep;
 pub mod homology;
 pub mod incidence;
+pub mod json;
+pub mod lar;
 pub mod precond;
 pub(crate) mod reduce;
 pub(crate) mod ring;
 pub mod simplicial;
 pub(crate) mod snf;
 pub mod sparse;
+pub mod tm;
 
 pub use border::{cellular_complex, CellularComplex};
 pub use chain::{ChainComplex, ChainError};
