@@ -21,8 +21,7 @@ fn main() {
     };
     println!("load (parse + validate): {:.3} s, {} darts", t.elapsed().as_secs_f64(), map.dart_count());
     let t = Instant::now();
-    let counts = map.cell_counts();
-    let comps = map.component_count();
+    let (counts, comps) = map.cell_counts_and_components();
     println!("cells {:?} components {} : {:.3} s", counts, comps, t.elapsed().as_secs_f64());
     let t = Instant::now();
     let o = map.is_orientable();

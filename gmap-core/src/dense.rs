@@ -257,9 +257,14 @@ impl DenseMap {
 
     /// Checks all of BO Def. 1: every link in range, every `alpha_i` an involution, and
     /// `alpha_i alpha_j` an involution for `j >= i + 2`. Reports the first violation in
-    /// dart order. O(N n^2).
+    /// dart order. O(N n^2), on two threads for big maps.
     pub fn validate(&self) -> Result<(), ValidityError> {
         let w = self.dim + 1;
+        // the fused check (one pass, two threads on big maps) decides; the detailed pass
+        // below only runs to name the first violation
+        if crate::kernels::is_valid(&self.alpha, w) {
+            return Ok(());
+        }
         let n = self.dart_count();
         let a = &self.alpha;
         for d in 0..n {
@@ -368,39 +373,26 @@ impl DenseMap {
         self.count_orbits(AlphaSet::cell(i, self.dim))
     }
 
-    /// Number of `<set>`-orbits, without keeping the partition.
+    /// Number of `<set>`-orbits, without keeping the partition. O(N |set|) time, N bits
+    /// of scratch.
     pub fn count_orbits(&self, set: AlphaSet) -> usize {
-        let idx: Vec<usize> = set.iter().filter(|&i| i <= self.dim).collect();
-        let w = self.dim + 1;
-        let n = self.dart_count();
-        let a = &self.alpha;
-        let mut seen: BitVec = BitVec::repeat(false, n);
-        let mut stack: Vec<u32> = Vec::new();
-        let mut count = 0;
-        for d in 0..n {
-            if seen[d] {
-                continue;
-            }
-            count += 1;
-            seen.set(d, true);
-            stack.push(d as u32);
-            while let Some(x) = stack.pop() {
-                let row = &a[x as usize * w..x as usize * w + w];
-                for &i in &idx {
-                    let y = row[i] as usize;
-                    if !seen[y] {
-                        seen.set(y, true);
-                        stack.push(y as u32);
-                    }
-                }
-            }
-        }
-        count
+        crate::kernels::count_orbits(&self.alpha, self.dim + 1, set.bits() & AlphaSet::all(self.dim).bits())
     }
 
-    /// Numbers of cells of every dimension `0..=n`.
+    /// Numbers of cells of every dimension `0..=n`. O(N n^2), on two threads for big maps.
     pub fn cell_counts(&self) -> Vec<usize> {
-        (0..=self.dim).map(|i| self.cell_count(i)).collect()
+        let masks: Vec<u32> = (0..=self.dim).map(|i| AlphaSet::cell(i, self.dim).bits()).collect();
+        crate::kernels::count_orbits_many(&self.alpha, self.dim + 1, &masks)
+    }
+
+    /// The numbers of cells of every dimension and the number of connected components,
+    /// computed together (on two threads for big maps). O(N n^2).
+    pub fn cell_counts_and_components(&self) -> (Vec<usize>, usize) {
+        let mut masks: Vec<u32> = (0..=self.dim).map(|i| AlphaSet::cell(i, self.dim).bits()).collect();
+        masks.push(AlphaSet::all(self.dim).bits());
+        let mut counts = crate::kernels::count_orbits_many(&self.alpha, self.dim + 1, &masks);
+        let components = counts.pop().unwrap_or(0);
+        (counts, components)
     }
 
     /// Euler characteristic: the alternating sum of the cell counts.
@@ -422,43 +414,14 @@ impl DenseMap {
     /// where the smallest dart of each component is positive and `alpha_i` changes the
     /// class of every dart it does not fix. Fails with the first conflict found.
     pub fn orientation(&self) -> Result<BitVec, OrientationConflict> {
-        let w = self.dim + 1;
-        let n = self.dart_count();
-        let a = &self.alpha;
-        let mut seen: BitVec = BitVec::repeat(false, n);
-        let mut pos: BitVec = BitVec::repeat(false, n);
-        let mut stack: Vec<u32> = Vec::new();
-        for d in 0..n {
-            if seen[d] {
-                continue;
-            }
-            seen.set(d, true);
-            pos.set(d, true);
-            stack.push(d as u32);
-            while let Some(x) = stack.pop() {
-                let x = x as usize;
-                let c = pos[x];
-                for i in 0..w {
-                    let y = a[x * w + i] as usize;
-                    if y == x {
-                        continue;
-                    }
-                    if !seen[y] {
-                        seen.set(y, true);
-                        pos.set(y, !c);
-                        stack.push(y as u32);
-                    } else if pos[y] == c {
-                        return Err(OrientationConflict { dart: x as u32, alpha: i, other: y as u32 });
-                    }
-                }
-            }
-        }
-        Ok(pos)
+        let col = crate::kernels::orientation(&self.alpha, self.dim + 1)
+            .map_err(|(dart, alpha, other)| OrientationConflict { dart, alpha, other })?;
+        Ok(col.iter().map(|&c| c == 1).collect())
     }
 
-    /// Whether the map is orientable (BO Def. 7).
+    /// Whether the map is orientable (BO Def. 7). O(N n).
     pub fn is_orientable(&self) -> bool {
-        self.orientation().is_ok()
+        crate::kernels::orientation(&self.alpha, self.dim + 1).is_ok()
     }
 
     /// Checks BO Def. 6 (cells with complete boundary): no fixed point of `alpha_i` for

@@ -56,6 +56,7 @@ pub mod edit;
 pub mod error;
 pub mod examples;
 pub mod io;
+mod kernels;
 pub mod marks;
 
 pub use alpha::{AlphaSet, MAX_DIM};

@@ -43,8 +43,10 @@ use crate::error::ValidityError;
 mod moka;
 mod native;
 
-pub use moka::{format_moka, parse_moka, parse_moka_with, read_moka, write_moka, write_moka_to, MOKA_HEADER};
-pub use native::{format_gmap, parse_gmap, parse_gmap_with, read_gmap, write_gmap, write_gmap_to};
+pub use moka::{
+    format_moka, parse_moka, parse_moka_with, read_moka, read_moka_with, write_moka, write_moka_to, MOKA_HEADER,
+};
+pub use native::{format_gmap, parse_gmap, parse_gmap_with, read_gmap, read_gmap_with, write_gmap, write_gmap_to};
 
 /// Options of the readers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -39,9 +39,14 @@ const MOKA_DIM: usize = 3;
 
 /// Reads a `.moka` file as a map of dimension 3 and validates it (BO Def. 1).
 pub fn read_moka(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
+    read_moka_with(path, &ReadOptions::default())
+}
+
+/// [`read_moka`] with options (a cap on the number of darts).
+pub fn read_moka_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
     let path = path.as_ref();
     let bytes = read_bytes(path)?;
-    parse_moka_with(&bytes, &path.display().to_string(), &ReadOptions::default())
+    parse_moka_with(&bytes, &path.display().to_string(), opts)
 }
 
 /// Parses the bytes of a `.moka` file; `name` is the file name used in errors.

@@ -1,0 +1,385 @@
+//! Tight loops behind the whole-map queries of [`crate::DenseMap`].
+//!
+//! The involution array is viewed as rows `[u32; W]` with `W = n + 1` fixed at compile
+//! time (dimensions 0 to 7 are specialised; larger ones take a generic path), so one row
+//! read fetches every `alpha_i` of a dart and the inner loops unroll. Visited sets are
+//! plain `u64` bit sets (N/8 bytes, small enough to stay in cache on maps of millions of
+//! darts). Whole-map counts run on up to two threads, one orbit family per task, and the
+//! validity check splits the darts in two halves.
+//!
+//! Every kernel expects a map whose links are in range (a validated map); on an invalid map
+//! they may panic on an index, never read out of bounds.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A fixed-size bit set over `0..len`.
+pub(crate) struct Bits(Vec<u64>);
+
+impl Bits {
+    pub(crate) fn new(len: usize) -> Self {
+        Bits(vec![0; len.div_ceil(64)])
+    }
+
+    #[inline]
+    pub(crate) fn get(&self, i: usize) -> bool {
+        (self.0[i >> 6] >> (i & 63)) & 1 != 0
+    }
+
+    #[inline]
+    pub(crate) fn set(&mut self, i: usize) {
+        self.0[i >> 6] |= 1 << (i & 63);
+    }
+
+    /// Sets bit `i`; returns its previous value.
+    #[inline]
+    pub(crate) fn test_and_set(&mut self, i: usize) -> bool {
+        let w = &mut self.0[i >> 6];
+        let b = 1u64 << (i & 63);
+        let old = *w & b != 0;
+        *w |= b;
+        old
+    }
+
+    /// The first clear bit at or after `from`, below `len`.
+    #[inline]
+    pub(crate) fn next_clear(&self, from: usize, len: usize) -> Option<usize> {
+        let mut k = from >> 6;
+        if k >= self.0.len() {
+            return None;
+        }
+        let mut word = !self.0[k] & (!0u64 << (from & 63));
+        loop {
+            if word != 0 {
+                let i = (k << 6) + word.trailing_zeros() as usize;
+                return (i < len).then_some(i);
+            }
+            k += 1;
+            if k >= self.0.len() {
+                return None;
+            }
+            word = !self.0[k];
+        }
+    }
+}
+
+/// Calls `$body` with `$rows` bound to the flat array viewed as `[[u32; W]]` for the
+/// map's `W`, or with the generic fallback `$generic` for larger widths.
+macro_rules! with_width {
+    ($a:expr, $w:expr, |$rows:ident| $body:expr, $generic:expr) => {
+        match $w {
+            1 => {
+                let $rows: &[[u32; 1]] = $a.as_chunks::<1>().0;
+                $body
+            }
+            2 => {
+                let $rows: &[[u32; 2]] = $a.as_chunks::<2>().0;
+                $body
+            }
+            3 => {
+                let $rows: &[[u32; 3]] = $a.as_chunks::<3>().0;
+                $body
+            }
+            4 => {
+                let $rows: &[[u32; 4]] = $a.as_chunks::<4>().0;
+                $body
+            }
+            5 => {
+                let $rows: &[[u32; 5]] = $a.as_chunks::<5>().0;
+                $body
+            }
+            6 => {
+                let $rows: &[[u32; 6]] = $a.as_chunks::<6>().0;
+                $body
+            }
+            7 => {
+                let $rows: &[[u32; 7]] = $a.as_chunks::<7>().0;
+                $body
+            }
+            8 => {
+                let $rows: &[[u32; 8]] = $a.as_chunks::<8>().0;
+                $body
+            }
+            _ => $generic,
+        }
+    };
+}
+
+/// A view of rows of any width, for the generic paths.
+#[derive(Clone, Copy)]
+struct Dyn<'a> {
+    a: &'a [u32],
+    w: usize,
+}
+
+impl Dyn<'_> {
+    #[inline]
+    fn row(&self, x: usize) -> &[u32] {
+        &self.a[x * self.w..(x + 1) * self.w]
+    }
+}
+
+/// Number of orbits of the involutions whose bits are set in `mask`.
+fn count_rows<const W: usize>(rows: &[[u32; W]], mask: u32) -> usize {
+    let n = rows.len();
+    let mut seen = Bits::new(n);
+    let mut stack: Vec<u32> = Vec::with_capacity(1024);
+    let mut count = 0;
+    let mut d = 0;
+    while let Some(s) = seen.next_clear(d, n) {
+        d = s + 1;
+        count += 1;
+        seen.set(s);
+        stack.push(s as u32);
+        while let Some(x) = stack.pop() {
+            let row = &rows[x as usize];
+            for (i, &y) in row.iter().enumerate() {
+                if mask & (1 << i) != 0 && !seen.test_and_set(y as usize) {
+                    stack.push(y);
+                }
+            }
+        }
+    }
+    count
+}
+
+fn count_dyn(m: Dyn<'_>, mask: u32) -> usize {
+    let n = m.a.len() / m.w;
+    let mut seen = Bits::new(n);
+    let mut stack: Vec<u32> = Vec::new();
+    let mut count = 0;
+    for d in 0..n {
+        if seen.get(d) {
+            continue;
+        }
+        count += 1;
+        seen.set(d);
+        stack.push(d as u32);
+        while let Some(x) = stack.pop() {
+            for (i, &y) in m.row(x as usize).iter().enumerate() {
+                if mask & (1 << i) != 0 && !seen.test_and_set(y as usize) {
+                    stack.push(y);
+                }
+            }
+        }
+    }
+    count
+}
+
+/// Number of orbits of the involution set `mask` (bits of indices `< w`).
+pub(crate) fn count_orbits(a: &[u32], w: usize, mask: u32) -> usize {
+    with_width!(a, w, |rows| count_rows(rows, mask), count_dyn(Dyn { a, w }, mask))
+}
+
+/// Darts from which the work is worth a second thread.
+const PARALLEL_FROM: usize = 1 << 16;
+
+fn threads_for(darts: usize, tasks: usize) -> usize {
+    if darts < PARALLEL_FROM || tasks < 2 {
+        return 1;
+    }
+    let hw = std::thread::available_parallelism().map_or(1, |p| p.get());
+    hw.min(tasks).min(2)
+}
+
+/// Orbit counts for several involution sets, on up to two threads.
+pub(crate) fn count_orbits_many(a: &[u32], w: usize, masks: &[u32]) -> Vec<usize> {
+    let darts = a.len() / w.max(1);
+    let threads = threads_for(darts, masks.len());
+    if threads == 1 {
+        return masks.iter().map(|&m| count_orbits(a, w, m)).collect();
+    }
+    let next = AtomicUsize::new(0);
+    let mut out = vec![0usize; masks.len()];
+    let results: Vec<Vec<(usize, usize)>> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let k = next.fetch_add(1, Ordering::Relaxed);
+                        if k >= masks.len() {
+                            break mine;
+                        }
+                        mine.push((k, count_orbits(a, w, masks[k])));
+                    }
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().expect("orbit counting thread")).collect()
+    });
+    for (k, c) in results.into_iter().flatten() {
+        out[k] = c;
+    }
+    out
+}
+
+/// Whether every link is in range, every `alpha_i` an involution, and `alpha_i alpha_j =
+/// alpha_j alpha_i` for `j >= i + 2` (equivalent to BO Def. 1 once the `alpha_i` are
+/// involutions), on darts `lo..hi`.
+// index loops over the small fixed width read more plainly than iterator chains here
+#[allow(clippy::needless_range_loop)]
+fn valid_rows<const W: usize>(rows: &[[u32; W]], lo: usize, hi: usize) -> bool {
+    let n = rows.len();
+    for (d, row) in rows[lo..hi].iter().enumerate() {
+        let d = d + lo;
+        let mut nb = [[0u32; W]; W];
+        for i in 0..W {
+            let e = row[i] as usize;
+            if e >= n {
+                return false;
+            }
+            nb[i] = rows[e];
+            if nb[i][i] as usize != d {
+                return false;
+            }
+        }
+        for i in 0..W {
+            for j in i + 2..W {
+                if nb[i][j] != nb[j][i] {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+fn valid_dyn(m: Dyn<'_>, lo: usize, hi: usize) -> bool {
+    let n = m.a.len() / m.w;
+    for d in lo..hi {
+        let row = m.row(d);
+        for (i, &e) in row.iter().enumerate() {
+            if e as usize >= n || m.row(e as usize)[i] as usize != d {
+                return false;
+            }
+        }
+        for i in 0..m.w {
+            for j in i + 2..m.w {
+                if m.row(row[i] as usize)[j] != m.row(row[j] as usize)[i] {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// The fast all-or-nothing validity check (BO Def. 1), on up to two threads.
+pub(crate) fn is_valid(a: &[u32], w: usize) -> bool {
+    let n = a.len() / w;
+    let check =
+        |lo: usize, hi: usize| with_width!(a, w, |rows| valid_rows(rows, lo, hi), valid_dyn(Dyn { a, w }, lo, hi));
+    if threads_for(n, 2) == 1 {
+        return check(0, n);
+    }
+    let mid = n / 2;
+    std::thread::scope(|s| {
+        let h = s.spawn(|| check(mid, n));
+        let first = check(0, mid);
+        let second = h.join().expect("validation thread");
+        first && second
+    })
+}
+
+/// Orientation colours (BO Def. 7, 8): 1 for the positive class, 2 for the negative, the
+/// smallest dart of each component positive; or the first conflict `(dart, alpha, other)`
+/// in traversal order.
+fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, (u32, usize, u32)> {
+    let n = rows.len();
+    let mut col = vec![0u8; n];
+    let mut stack: Vec<u32> = Vec::with_capacity(1024);
+    for d in 0..n {
+        if col[d] != 0 {
+            continue;
+        }
+        col[d] = 1;
+        stack.push(d as u32);
+        while let Some(x) = stack.pop() {
+            let c = col[x as usize];
+            let other = 3 - c;
+            for (i, &y) in rows[x as usize].iter().enumerate() {
+                if y == x {
+                    continue;
+                }
+                let cy = col[y as usize];
+                if cy == 0 {
+                    col[y as usize] = other;
+                    stack.push(y);
+                } else if cy == c {
+                    return Err((x, i, y));
+                }
+            }
+        }
+    }
+    Ok(col)
+}
+
+fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
+    let n = m.a.len() / m.w;
+    let mut col = vec![0u8; n];
+    let mut stack: Vec<u32> = Vec::new();
+    for d in 0..n {
+        if col[d] != 0 {
+            continue;
+        }
+        col[d] = 1;
+        stack.push(d as u32);
+        while let Some(x) = stack.pop() {
+            let c = col[x as usize];
+            for (i, &y) in m.row(x as usize).iter().enumerate() {
+                if y == x {
+                    continue;
+                }
+                let cy = col[y as usize];
+                if cy == 0 {
+                    col[y as usize] = 3 - c;
+                    stack.push(y);
+                } else if cy == c {
+                    return Err((x, i, y));
+                }
+            }
+        }
+    }
+    Ok(col)
+}
+
+/// See [`orient_rows`].
+pub(crate) fn orientation(a: &[u32], w: usize) -> Result<Vec<u8>, (u32, usize, u32)> {
+    with_width!(a, w, |rows| orient_rows(rows), orient_dyn(Dyn { a, w }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bits() {
+        let mut b = Bits::new(130);
+        assert_eq!(b.next_clear(0, 130), Some(0));
+        for i in 0..129 {
+            b.set(i);
+        }
+        assert_eq!(b.next_clear(0, 130), Some(129));
+        assert!(!b.test_and_set(129));
+        assert!(b.test_and_set(129));
+        assert_eq!(b.next_clear(0, 130), None);
+        assert!(b.get(64));
+    }
+
+    #[test]
+    fn generic_and_specialised_paths_agree() {
+        // a 9-map (width 10, generic path) made of two darts swapped by every involution
+        let a: Vec<u32> = [vec![1u32; 10], vec![0u32; 10]].concat();
+        assert_eq!(count_orbits(&a, 10, 0b1), 1);
+        assert_eq!(count_orbits(&a, 10, 0), 2);
+        assert!(is_valid(&a, 10));
+        assert_eq!(orientation(&a, 10), Ok(vec![1, 2]));
+        let b: Vec<u32> = [vec![1u32; 4], vec![0u32; 4]].concat();
+        assert_eq!(count_orbits(&b, 4, 0b1), 1);
+        assert!(is_valid(&b, 4));
+        assert_eq!(orientation(&b, 4), Ok(vec![1, 2]));
+        // out of range and a non-involution are caught on both paths
+        assert!(!is_valid(&[1, 2], 1));
+        assert!(!is_valid(&[1; 20], 10));
+    }
+}
