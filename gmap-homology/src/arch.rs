@@ -399,7 +399,7 @@ impl ArchComplex {
 
     /// `Σ (-1)^i v_i`, the left side of the Euler–Poincaré formula (AC Cor. 3.11).
     pub fn euler_characteristic(&self) -> i64 {
-        self.per_dim.iter().enumerate().map(|(i, v)| if i % 2 == 0 { v.len() as i64 } else { -(v.len() as i64) }).sum()
+        self.per_dim.iter().enumerate().map(|(i, v)| if i.is_multiple_of(2) { v.len() as i64 } else { -(v.len() as i64) }).sum()
     }
 
     /// The non-zero entries of `∂_k : C_k → C_{k-1}` of the completion by zero (AC Def. 3.8)

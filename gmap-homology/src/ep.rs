@@ -110,7 +110,7 @@ fn sub(a: i64, b: i64) -> Result<i64, EpError> {
 }
 
 fn sign(i: usize) -> i64 {
-    if i % 2 == 0 {
+    if i.is_multiple_of(2) {
         1
     } else {
         -1
@@ -459,7 +459,7 @@ impl Poly {
                 return Err(EpError::DegreeTooHigh { degree: d, n, max: 2 * n + 1 });
             }
         }
-        if n % 2 == 0 {
+        if n.is_multiple_of(2) {
             Ok(self.div_by_x_plus_one()?.1 == 0)
         } else {
             let mut s = 0i64;

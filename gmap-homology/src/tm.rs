@@ -341,57 +341,64 @@ impl TmModel {
     }
 
     /// The topological edit check (TM §XI): for every cell c of dimension k, `B(c)` is a
-    /// (k-1)-circuit (k >= 1) and `G(c)` a (k+1)-cocircuit (k < n). Returns the first cell
-    /// that fails, in index order, with the place where it fails. O(Σ |B²(c)| + |G²(c)|).
+    /// (k-1)-circuit (k >= 1) and `G(c)` a (k+1)-cocircuit (k < n). Boundaries are checked
+    /// first, then coboundaries; returns the first cell that fails, in index order, with the
+    /// place where it fails. For k = n - 1 the cocircuit condition asks the n-cells on each
+    /// (n-1)-cell to pair up with opposite orientations: free faces (a boundary) and
+    /// twisted gluings (non-orientable objects) fail it. O(Σ |B²(c)| + |G²(c)|).
     pub fn edit_check(&self) -> Result<(), TmDefect> {
         for c in 0..self.len() {
             let k = self.dims[c];
-            let one = SignedSet::cell(c);
-            if k >= 1 {
-                let b = self.boundary(&one);
-                if k == 1 {
-                    let (p, m) = Self::zero_sum(&b);
-                    if p != m {
-                        return Err(TmDefect::BoundaryNotCircuit {
-                            cell: self.ids[c],
-                            dim: k,
-                            at: self.ids[c],
-                            plus: p,
-                            minus: m,
-                        });
-                    }
-                } else if let Some((at, p, m)) = self.boundary(&b).iter().find(|&(_, p, m)| p != m) {
+            if k == 0 {
+                continue;
+            }
+            let b = self.boundary(&SignedSet::cell(c));
+            if k == 1 {
+                let (p, m) = Self::zero_sum(&b);
+                if p != m {
                     return Err(TmDefect::BoundaryNotCircuit {
                         cell: self.ids[c],
                         dim: k,
-                        at: self.ids[at],
+                        at: self.ids[c],
                         plus: p,
                         minus: m,
                     });
                 }
+            } else if let Some((at, p, m)) = self.boundary(&b).iter().find(|&(_, p, m)| p != m) {
+                return Err(TmDefect::BoundaryNotCircuit {
+                    cell: self.ids[c],
+                    dim: k,
+                    at: self.ids[at],
+                    plus: p,
+                    minus: m,
+                });
             }
-            if k < self.dim {
-                let g = self.coboundary(&one);
-                if k + 1 == self.dim {
-                    let (p, m) = Self::zero_sum(&g);
-                    if p != m {
-                        return Err(TmDefect::CoboundaryNotCocircuit {
-                            cell: self.ids[c],
-                            dim: k,
-                            at: self.ids[c],
-                            plus: p,
-                            minus: m,
-                        });
-                    }
-                } else if let Some((at, p, m)) = self.coboundary(&g).iter().find(|&(_, p, m)| p != m) {
+        }
+        for c in 0..self.len() {
+            let k = self.dims[c];
+            if k >= self.dim {
+                continue;
+            }
+            let g = self.coboundary(&SignedSet::cell(c));
+            if k + 1 == self.dim {
+                let (p, m) = Self::zero_sum(&g);
+                if p != m {
                     return Err(TmDefect::CoboundaryNotCocircuit {
                         cell: self.ids[c],
                         dim: k,
-                        at: self.ids[at],
+                        at: self.ids[c],
                         plus: p,
                         minus: m,
                     });
                 }
+            } else if let Some((at, p, m)) = self.coboundary(&g).iter().find(|&(_, p, m)| p != m) {
+                return Err(TmDefect::CoboundaryNotCocircuit {
+                    cell: self.ids[c],
+                    dim: k,
+                    at: self.ids[at],
+                    plus: p,
+                    minus: m,
+                });
             }
         }
         Ok(())
