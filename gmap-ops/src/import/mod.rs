@@ -37,12 +37,12 @@ pub enum ImportError {
     /// The input holds no facet or no polygon.
     #[error("no facet or polygon found")]
     Empty,
-    /// A facet whose vertex count differs from the first facet's (the complex is not pure).
-    #[error("facet on line {line} has {found} vertices, but the first facet has {expected}: mixed dimensions")]
+    /// A facet with fewer vertices than the largest facets (the complex is not pure).
+    #[error("facet on line {line} has {found} vertices, but the largest facets have {expected}: mixed dimensions")]
     MixedDimension {
         /// line of the facet
         line: usize,
-        /// vertices of the first facet
+        /// vertices of the largest facets
         expected: usize,
         /// vertices of this facet
         found: usize,
@@ -104,8 +104,7 @@ pub enum ImportError {
 pub struct FileError {
     /// the file read
     pub path: PathBuf,
-    /// what went wrong
-    #[source]
+    /// what went wrong (its message is part of this error's, so it is not a `source`)
     pub error: ImportError,
 }
 

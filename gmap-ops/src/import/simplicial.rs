@@ -16,42 +16,58 @@ use gmap_core::DenseMap;
 use super::{default_max_darts, FileError, ImportError};
 use crate::perm::{factorial, rank, PermTable};
 
-/// A pure simplicial complex: facets of equal size, each with its vertices sorted, and the
-/// line of the input each facet came from (for error messages).
+/// A simplicial complex given by its facets, each with its vertices sorted, and the line of
+/// the input each facet came from (for error messages). Its dimension n is that of its
+/// largest facets; only a pure complex (all facets of dimension n) becomes a G-map, but a
+/// mixed one is kept so that [`SimplicialComplex::to_gmap`] can report, in this order, a
+/// dart count over the limit, a ridge in three or more n-facets, or the first smaller facet.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SimplicialComplex {
     dim: usize,
-    /// `vertices[f * (dim + 1) ..][.. dim + 1]`: the sorted vertices of facet `f`
+    /// `vertices[f * (dim + 1) ..][.. dim + 1]`: the sorted vertices of n-facet `f`
     vertices: Vec<u64>,
     lines: Vec<usize>,
+    /// number of facets of every dimension
+    total: usize,
+    /// the first facet smaller than the largest: (line, number of vertices)
+    smaller: Option<(usize, usize)>,
 }
 
 impl SimplicialComplex {
-    /// A complex from facets given with their line numbers. Checks that all facets have the
-    /// same number of vertices and that no facet repeats a vertex. O(F n log n).
+    /// A complex from facets given with their line numbers. Checks that no facet repeats a
+    /// vertex; facets smaller than the largest are counted and the first one is remembered
+    /// (see the type's docs). O(F n log n).
     pub fn from_facets_with_lines<I>(facets: I) -> Result<Self, ImportError>
     where
         I: IntoIterator<Item = (usize, Vec<u64>)>,
     {
-        let mut width = None;
-        let mut vertices = Vec::new();
-        let mut lines = Vec::new();
+        let mut all = Vec::new();
         for (line, mut f) in facets {
-            let m = *width.get_or_insert(f.len());
-            if f.len() != m {
-                return Err(ImportError::MixedDimension { line, expected: m, found: f.len() });
-            }
             f.sort_unstable();
             if let Some(w) = f.windows(2).find(|w| w[0] == w[1]) {
                 return Err(ImportError::RepeatedVertex { line, vertex: w[0] });
             }
-            vertices.extend_from_slice(&f);
-            lines.push(line);
+            all.push((line, f));
         }
-        match width {
-            None | Some(0) => Err(ImportError::Empty),
-            Some(m) => Ok(SimplicialComplex { dim: m - 1, vertices, lines }),
+        let m = all.iter().map(|(_, f)| f.len()).max().unwrap_or(0);
+        if m == 0 {
+            return Err(ImportError::Empty);
         }
+        let smaller = all.iter().find(|(_, f)| f.len() < m).map(|(l, f)| (*l, f.len()));
+        let mut vertices = Vec::new();
+        let mut lines = Vec::new();
+        for (line, f) in &all {
+            if f.len() == m {
+                vertices.extend_from_slice(f);
+                lines.push(*line);
+            }
+        }
+        Ok(SimplicialComplex { dim: m - 1, vertices, lines, total: all.len(), smaller })
+    }
+
+    /// Whether every facet has dimension n (only then is there a G-map).
+    pub fn is_pure(&self) -> bool {
+        self.smaller.is_none()
     }
 
     /// A complex from facets, numbered 1, 2, … as if each were on its own line.
@@ -133,30 +149,37 @@ impl SimplicialComplex {
         self.dim
     }
 
-    /// The number of facets.
+    /// The number of n-facets (all facets when the complex is pure).
     pub fn facet_count(&self) -> usize {
         self.lines.len()
     }
 
-    /// The sorted vertices of facet `f`.
+    /// The number of facets of every dimension.
+    pub fn total_facet_count(&self) -> usize {
+        self.total
+    }
+
+    /// The sorted vertices of n-facet `f`.
     pub fn facet(&self, f: usize) -> &[u64] {
         let m = self.dim + 1;
         &self.vertices[f * m..(f + 1) * m]
     }
 
-    /// The input line of facet `f`.
+    /// The input line of n-facet `f`.
     pub fn line(&self, f: usize) -> usize {
         self.lines[f]
     }
 
-    /// The number of darts of the G-map, `facets × (n + 1)!`, or `None` past `u64`. O(n).
+    /// The number of darts of the G-map, `facets × (n + 1)!` (all facets counted, as if
+    /// the complex were pure), or `None` past `u64`. O(n).
     pub fn dart_count(&self) -> Option<u64> {
-        factorial(self.dim + 1).and_then(|p| p.checked_mul(self.facet_count() as u64))
+        factorial(self.dim + 1).and_then(|p| p.checked_mul(self.total as u64))
     }
 
     /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
-    /// allocating it. Errors: [`ImportError::TooManyDarts`], and
-    /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order.
+    /// allocating it. Errors, in this order: [`ImportError::TooManyDarts`],
+    /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order (among the
+    /// n-facets), [`ImportError::MixedDimension`] for the first facet smaller than n.
     /// O(F n log F) for the ridges and O(F (n+1)! n^2) for the darts.
     pub fn to_gmap(&self, max_darts: u64) -> Result<DenseMap, ImportError> {
         let n = self.dim;
@@ -166,10 +189,13 @@ impl SimplicialComplex {
         let limit = max_darts.min(u32::MAX as u64 - 1);
         match darts {
             Some(d) if d <= limit => {}
-            _ => return Err(ImportError::TooManyDarts { facets: nf, dim: n, darts, limit }),
+            _ => return Err(ImportError::TooManyDarts { facets: self.total, dim: n, darts, limit }),
         }
         let darts = darts.unwrap_or(0) as usize;
         let partner = self.ridge_partners()?;
+        if let Some((line, found)) = self.smaller {
+            return Err(ImportError::MixedDimension { line, expected: m, found });
+        }
         let table = PermTable::new(m);
         let pc = table.len();
         let w = n + 1;
@@ -381,8 +407,11 @@ mod tests {
 
     #[test]
     fn errors_name_line_and_ridge() {
-        let e = SimplicialComplex::parse_facets("1 2 3\n1 2\n").unwrap_err();
-        assert!(matches!(e, ImportError::MixedDimension { line: 2, expected: 3, found: 2 }));
+        let sc = SimplicialComplex::parse_facets("1 2\n1 2 3\n1 2\n").unwrap();
+        assert!(!sc.is_pure());
+        assert_eq!((sc.facet_count(), sc.total_facet_count(), sc.dart_count()), (1, 3, Some(18)));
+        let e = sc.to_gmap(100).unwrap_err();
+        assert!(matches!(e, ImportError::MixedDimension { line: 1, expected: 3, found: 2 }));
         let e = SimplicialComplex::parse_facets("1 2 3\n\n4 4 5\n").unwrap_err();
         assert!(matches!(e, ImportError::RepeatedVertex { line: 3, vertex: 4 }));
         let e = SimplicialComplex::parse_facets("1 2 x\n").unwrap_err();
