@@ -1,0 +1,41 @@
+//! Euler operators, Euler–Poincaré bookkeeping, simplification and boundary-incomplete
+//! objects.
+//!
+//! * [`vector`]: Euler–Poincaré vectors and their names in the basis of AC Prop. 5.2.
+//! * [`ops`]: cell operators on the editable [`gmap_core::GMap`] in any dimension —
+//!   split a cell (`mve`, `mef`, `mfs`, …), dangling edges, removal and contraction of
+//!   cells of degree 2, closing a boundary — each with a predicate, a `try_` form with a
+//!   typed error and its Euler–Poincaré vector.
+//! * [`simplify`]: homology-preserving reduction of a [`gmap_core::DenseMap`] by removals
+//!   and contractions.
+//! * [`strata`]: the stratified objects with incomplete boundaries of EO and the Euler
+//!   characteristic of its Theorems 1–2.
+//!
+//! ```
+//! use gmap_core::GMap;
+//! use gmap_ops::euler::ops::{try_insert_vertex, try_remove_cell};
+//! // a 1-map: a triangle (three edges, three vertices)
+//! let mut g = GMap::new(1);
+//! let d: Vec<_> = (0..6).map(|_| g.create_dart()).collect();
+//! for k in 0..3 {
+//!     g.sew(d[2 * k], d[2 * k + 1], 0);
+//!     g.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
+//! }
+//! let op = try_insert_vertex(&mut g, d[0]).unwrap();
+//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("mve", vec![1, 1]));
+//! assert_eq!(op.basis_name(), "B0 + A1");
+//! assert_eq!(g.to_dense().0.cell_counts(), vec![4, 4]);
+//! // removing a vertex of degree 2 merges its two edges back
+//! let op = try_remove_cell(&mut g, d[1], 0).unwrap();
+//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("kve", vec![-1, -1]));
+//! assert_eq!(g.to_dense().0.cell_counts(), vec![3, 3]);
+//! ```
+
+pub mod ops;
+pub mod simplify;
+pub mod strata;
+pub mod vector;
+
+pub use ops::{CloseReport, EulerError};
+pub use simplify::{simplify, SimplifyReport};
+pub use vector::{EpBasis, EpVector, EulerOp};

@@ -1,0 +1,1 @@
+//! Boundary-incomplete stratified objects (EO).
