@@ -118,6 +118,19 @@ pub enum HomologyError {
         /// alternating sum of the Betti numbers
         betti: i64,
     },
+    /// `--generators` on a complex with too many cells in one dimension.
+    #[error("generators are computed for at most {limit} cells per dimension; dimension {dim} has {cells}")]
+    GeneratorsTooLarge {
+        /// the dimension
+        dim: usize,
+        /// its number of cells
+        cells: usize,
+        /// the limit
+        limit: usize,
+    },
+    /// The generator computation overflowed `i64`.
+    #[error("a generator's coefficients overflow i64")]
+    GeneratorOverflow,
     /// An internal consistency check failed (a bug, reported rather than a wrong group).
     #[error("internal error in the reduction: {0}")]
     Internal(&'static str),
@@ -177,7 +190,7 @@ pub(crate) fn survivors<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors
             }
             cols.push(col);
         }
-        let res = eliminate(ring, m.rows(), cols, Mode::Freeze, false)?;
+        let res = eliminate(ring, m.rows(), cols, Mode::Freeze)?;
         for &(a, b) in &res.pivots {
             elim_row[k - 1][a as usize] = true;
             elim_col[k][b as usize] = true;
@@ -236,7 +249,7 @@ fn ranks<R: Ring>(
     let mut diag: Vec<Vec<R::E>> = vec![Vec::new(); n1];
     for (k, cols) in s.d.into_iter().enumerate().skip(1) {
         let rows = s.cells[k - 1].len();
-        let res = eliminate(ring, rows, cols, Mode::General, false)?;
+        let res = eliminate(ring, rows, cols, Mode::General)?;
         let mut row_ids: Vec<u32> = res.remaining.iter().flat_map(|(_, c)| c.iter().map(|(r, _)| *r)).collect();
         row_ids.sort_unstable();
         row_ids.dedup();

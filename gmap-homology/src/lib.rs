@@ -42,6 +42,7 @@ pub mod border;
 pub mod chain;
 pub mod dot;
 pub mod ep;
+pub mod generators;
 pub mod homology;
 pub mod incidence;
 pub mod json;

@@ -60,11 +60,6 @@ pub(crate) struct Eliminated<E> {
     pub pivots: Vec<(u32, u32)>,
     /// the columns that were not pivots, with their reduced entries (only in non-pivot rows)
     pub remaining: Vec<(u32, Col<E>)>,
-    /// for each pivot, the pivot column as it was when taken (only when history is kept)
-    pub pivot_cols: Vec<Col<E>>,
-    /// for each remaining column (same order), the multiples of pivot columns subtracted:
-    /// `(pivot index, λ)` meaning `c ← c - λ·pivot_col` (only when history is kept)
-    pub history: Vec<Vec<(u32, E)>>,
 }
 
 /// An elimination in progress.
@@ -80,21 +75,12 @@ struct Engine<'r, R: Ring> {
     row_q: Vec<u32>,
     heap: BinaryHeap<Reverse<(u32, u32)>>,
     pivots: Vec<(u32, u32)>,
-    keep_history: bool,
-    pivot_cols: Vec<Col<R::E>>,
-    history: Vec<Vec<(u32, R::E)>>,
 }
 
 /// Eliminates unit pivots from a `rows × cols.len()` matrix given by sorted columns.
 /// Rows listed in `frozen` start frozen. Returns `None` on arithmetic overflow.
 /// O(nnz + fill) heap and queue operations, each O(log cols).
-pub(crate) fn eliminate<R: Ring>(
-    ring: &R,
-    rows: usize,
-    cols: Vec<Col<R::E>>,
-    mode: Mode,
-    keep_history: bool,
-) -> Option<Eliminated<R::E>> {
+pub(crate) fn eliminate<R: Ring>(ring: &R, rows: usize, cols: Vec<Col<R::E>>, mode: Mode) -> Option<Eliminated<R::E>> {
     let ncols = cols.len();
     let mut e = Engine {
         ring,
@@ -107,9 +93,6 @@ pub(crate) fn eliminate<R: Ring>(
         row_q: Vec::new(),
         heap: BinaryHeap::with_capacity(ncols),
         pivots: Vec::new(),
-        keep_history,
-        pivot_cols: Vec::new(),
-        history: if keep_history { vec![Vec::new(); ncols] } else { Vec::new() },
         cols,
     };
     for (c, col) in e.cols.iter().enumerate() {
@@ -133,19 +116,9 @@ pub(crate) fn eliminate<R: Ring>(
         }
     }
     e.run(mode)?;
-    let Engine { cols, alive, pivots, pivot_cols, history, .. } = e;
-    let mut remaining = Vec::new();
-    let mut hist_out = Vec::new();
-    let mut history = history;
-    for (c, col) in cols.into_iter().enumerate() {
-        if alive[c] {
-            remaining.push((c as u32, col));
-            if keep_history {
-                hist_out.push(std::mem::take(&mut history[c]));
-            }
-        }
-    }
-    Some(Eliminated { pivots, remaining, pivot_cols, history: hist_out })
+    let Engine { cols, alive, pivots, .. } = e;
+    let remaining = cols.into_iter().enumerate().filter(|(c, _)| alive[*c]).map(|(c, col)| (c as u32, col)).collect();
+    Some(Eliminated { pivots, remaining })
 }
 
 impl<R: Ring> Engine<'_, R> {
@@ -285,7 +258,6 @@ impl<R: Ring> Engine<'_, R> {
         let u = bcol[p].1.clone();
         self.alive[b] = false;
         self.state[y] = RowState::Eliminated;
-        let pivot_index = self.pivots.len() as u32;
         self.pivots.push((y as u32, b as u32));
         for &(r, _) in &bcol {
             let r = r as usize;
@@ -354,9 +326,6 @@ impl<R: Ring> Engine<'_, R> {
                 }
             }
             self.cols[cu] = std::mem::replace(&mut merged, old);
-            if self.keep_history {
-                self.history[cu].push((pivot_index, lambda));
-            }
             self.col_nf[cu] = nf;
             if nf == 1 {
                 self.col_q.push(c);
@@ -364,9 +333,6 @@ impl<R: Ring> Engine<'_, R> {
             if nf >= 1 {
                 self.heap.push(Reverse((nf, c)));
             }
-        }
-        if self.keep_history {
-            self.pivot_cols.push(bcol);
         }
         Some(())
     }
@@ -385,7 +351,7 @@ mod tests {
     fn triangle_boundary_has_rank_two() {
         // d1 of a triangle: edges (0,1), (1,2), (0,2)
         let cols = vec![col(&[(0, -1), (1, 1)]), col(&[(1, -1), (2, 1)]), col(&[(0, -1), (2, 1)])];
-        let r = eliminate(&Zi64, 3, cols, Mode::Freeze, false).unwrap();
+        let r = eliminate(&Zi64, 3, cols, Mode::Freeze).unwrap();
         assert_eq!(r.pivots.len(), 2);
         assert_eq!(r.remaining.len(), 1);
         assert!(r.remaining[0].1.iter().all(|(_, v)| *v == 0) || r.remaining[0].1.is_empty());
@@ -394,11 +360,11 @@ mod tests {
     #[test]
     fn non_unit_entry_is_left() {
         let cols = vec![col(&[(0, 2)])];
-        let r = eliminate(&Zi64, 1, cols.clone(), Mode::General, false).unwrap();
+        let r = eliminate(&Zi64, 1, cols.clone(), Mode::General).unwrap();
         assert!(r.pivots.is_empty());
         assert_eq!(r.remaining, vec![(0, vec![(0, 2)])]);
         let f = Zp { p: 3 };
-        let r = eliminate(&f, 1, vec![vec![(0, 2u64)]], Mode::General, false).unwrap();
+        let r = eliminate(&f, 1, vec![vec![(0, 2u64)]], Mode::General).unwrap();
         assert_eq!(r.pivots, vec![(0, 0)]);
     }
 }

@@ -36,6 +36,8 @@ pub(crate) trait Euclid: Ring {
     fn add(&self, a: &Self::E, b: &Self::E) -> Option<Self::E>;
     /// `|a|` as a `u64`, if it fits.
     fn abs_u64(&self, a: &Self::E) -> Option<u64>;
+    /// `a` as an `i64` (over `Z/p`: its representative in `0..p`), if it fits.
+    fn to_i64(&self, a: &Self::E) -> Option<i64>;
 }
 
 /// `Z` with checked `i64` arithmetic.
@@ -74,6 +76,9 @@ impl Euclid for Zi64 {
     fn abs_u64(&self, a: &i64) -> Option<u64> {
         Some(a.unsigned_abs())
     }
+    fn to_i64(&self, a: &i64) -> Option<i64> {
+        Some(*a)
+    }
 }
 
 /// `Z` with arbitrary-precision integers.
@@ -111,6 +116,9 @@ impl Euclid for ZBig {
     }
     fn abs_u64(&self, a: &BigInt) -> Option<u64> {
         a.abs().to_u64()
+    }
+    fn to_i64(&self, a: &BigInt) -> Option<i64> {
+        a.to_i64()
     }
 }
 
@@ -157,6 +165,25 @@ impl Ring for Zp {
     fn sub_mul(&self, a: &u64, l: &u64, b: &u64) -> Option<u64> {
         let lb = self.mul(*l, *b);
         Some((*a + self.p - lb) % self.p)
+    }
+}
+
+/// Over a field, division is exact: every non-zero element is a unit of the same "size".
+impl Euclid for Zp {
+    fn div_rem(&self, a: &u64, b: &u64) -> Option<(u64, u64)> {
+        Some((self.mul(*a, self.inv(*b)), 0))
+    }
+    fn abs_cmp(&self, a: &u64, b: &u64) -> Ordering {
+        (*a != 0).cmp(&(*b != 0))
+    }
+    fn add(&self, a: &u64, b: &u64) -> Option<u64> {
+        Some((*a + *b) % self.p)
+    }
+    fn abs_u64(&self, a: &u64) -> Option<u64> {
+        Some(*a)
+    }
+    fn to_i64(&self, a: &u64) -> Option<i64> {
+        i64::try_from(*a).ok()
     }
 }
 

@@ -7,8 +7,32 @@ use crate::ring::Euclid;
 
 /// The non-zero diagonal of the Smith normal form of a dense `rows × cols` matrix (given
 /// row by row): entries `d_1 | d_2 | … | d_r` up to sign, r the rank. `None` on overflow.
-pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, mut a: Vec<Vec<R::E>>, cols: usize) -> Option<Vec<R::E>> {
+pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, a: Vec<Vec<R::E>>, cols: usize) -> Option<Vec<R::E>> {
+    smith_tracked(ring, a, cols, None)
+}
+
+/// Column `j` of `p` minus `q` times column `i` (`p` stored by columns).
+fn col_sub<R: Euclid>(ring: &R, p: &mut [Vec<R::E>], j: usize, q: &R::E, i: usize) -> Option<()> {
+    for r in 0..p[j].len() {
+        let v = ring.sub_mul(&p[j][r], q, &p[i][r])?;
+        p[j][r] = v;
+    }
+    Some(())
+}
+
+/// [`smith_diagonal`], also applying to `left` (a square matrix stored by columns, the
+/// basis of the row space) the column operations that undo the row operations: on return,
+/// if the input was `A` and `left` was `P`, then `A = P' D V` for some unimodular `V`, with
+/// `P'` the returned `left` and `D` the diagonal. So the first `rank` columns of `P'` span,
+/// multiplied by the diagonal entries, the column space of `A`.
+pub(crate) fn smith_tracked<R: Euclid>(
+    ring: &R,
+    mut a: Vec<Vec<R::E>>,
+    cols: usize,
+    mut left: Option<&mut Vec<Vec<R::E>>>,
+) -> Option<Vec<R::E>> {
     let rows = a.len();
+    let one = ring.from_i64(1);
     let mut diag = Vec::new();
     let mut t = 0;
     while t < rows && t < cols {
@@ -23,6 +47,9 @@ pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, mut a: Vec<Vec<R::E>>, cols: u
         }
         let Some((bi, bj)) = best else { break };
         a.swap(t, bi);
+        if let Some(p) = left.as_deref_mut() {
+            p.swap(t, bi);
+        }
         for row in a.iter_mut() {
             row.swap(t, bj);
         }
@@ -41,6 +68,9 @@ pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, mut a: Vec<Vec<R::E>>, cols: u
             }
             if small.0 != t {
                 a.swap(t, small.0);
+                if let Some(p) = left.as_deref_mut() {
+                    p.swap(t, small.0);
+                }
             } else if small.1 != t {
                 for row in a.iter_mut() {
                     row.swap(t, small.1);
@@ -56,6 +86,12 @@ pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, mut a: Vec<Vec<R::E>>, cols: u
                 for j in t..cols {
                     let v = ring.sub_mul(&a[i][j], &q, &a[t][j])?;
                     a[i][j] = v;
+                }
+                if let Some(l) = left.as_deref_mut() {
+                    // row_i -= q row_t  <=>  col_t += q col_i
+                    let zero = ring.from_i64(0);
+                    let mq = ring.sub_mul(&zero, &q, &one)?;
+                    col_sub(ring, l, t, &mq, i)?;
                 }
                 if !ring.is_zero(&a[i][t]) {
                     clean = false;
@@ -93,6 +129,10 @@ pub(crate) fn smith_diagonal<R: Euclid>(ring: &R, mut a: Vec<Vec<R::E>>, cols: u
                     for j in t..cols {
                         let v = ring.add(&a[t][j], &a[i][j])?;
                         a[t][j] = v;
+                    }
+                    if let Some(l) = left.as_deref_mut() {
+                        // row_t += row_i  <=>  col_i -= col_t
+                        col_sub(ring, l, i, &one, t)?;
                     }
                 }
             }

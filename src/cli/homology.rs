@@ -1,14 +1,19 @@
-//! `gmap homology FILE [--method] [--field P] [--json]`.
+//! `gmap homology FILE [--method cellular|simplicial] [--field P] [--json] [--generators]`.
 
+use std::io::IsTerminal;
 use std::path::PathBuf;
 
-use anyhow::Result;
+use anyhow::{bail, Context, Result};
+use gmap_core::DenseMap;
+use gmap_homology::{
+    cellular_complex, homology_z, homology_zp, is_prime, simplicial_complex_with_simplices, ChainComplex, Homology,
+};
+use serde_json::json;
 
-use super::load::load;
+use super::load::{load, Loaded};
 use super::Method;
 
 /// Options of `gmap homology`.
-#[allow(dead_code)]
 pub struct Options {
     pub file: PathBuf,
     pub method: Method,
@@ -20,7 +25,129 @@ pub struct Options {
     pub max_darts: Option<u64>,
 }
 
+/// Prints a stage message on stderr when it is a terminal (CONTRACT §1: progress only there).
+fn progress(msg: &str) {
+    if std::io::stderr().is_terminal() {
+        eprintln!("gmap homology: {msg}");
+    }
+}
+
+/// A chain complex with a printable name for each generator (for `--generators`).
+struct Named {
+    chain: ChainComplex,
+    names: Vec<Vec<String>>,
+}
+
+fn cellular(map: &DenseMap, file: &str) -> Result<Named> {
+    progress("checking C1 and C2 and building the border operator");
+    let c = cellular_complex(map)
+        .with_context(|| format!("{file}: the cellular method does not apply (use --method simplicial)"))?;
+    let names = c.reps.iter().map(|r| r.iter().map(|d| format!("cell of dart {d}")).collect()).collect();
+    Ok(Named { chain: c.chain, names })
+}
+
+fn simplicial(map: &DenseMap) -> Named {
+    progress("building the simplicial counterpart");
+    let s = simplicial_complex_with_simplices(map);
+    let names = s
+        .simplices
+        .iter()
+        .map(|v| {
+            v.iter()
+                .map(|x| {
+                    let labels: Vec<String> =
+                        (0..32).filter(|i| x.labels & (1 << i) != 0).map(|i| i.to_string()).collect();
+                    format!("simplex {{{}}} of dart {}", labels.join(","), x.dart)
+                })
+                .collect()
+        })
+        .collect();
+    Named { chain: s.chain, names }
+}
+
+fn compute(c: &ChainComplex, field: Option<u64>) -> Result<Homology> {
+    progress("reducing");
+    Ok(match field {
+        Some(p) => homology_zp(c, p)?,
+        None => homology_z(c)?,
+    })
+}
+
 pub fn run(o: &Options) -> Result<()> {
-    let _ = load(&o.file, o.max_darts)?;
-    anyhow::bail!("homology: in progress")
+    if let Some(p) = o.field {
+        if !is_prime(p) || p >= 1 << 31 {
+            bail!("--field {p}: the field must be Z/P for a prime P below 2^31");
+        }
+    }
+    if o.simplify {
+        bail!("--simplify is not available yet (it needs the Euler-operator simplification of gmap-ops)");
+    }
+    let file = o.file.display().to_string();
+    let loaded = load(&o.file, o.max_darts)?;
+    let map = match loaded {
+        Loaded::Map(m) => m,
+    };
+    if o.topological {
+        bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
+    }
+    let named = match o.method {
+        Method::Cellular => cellular(&map, &file)?,
+        Method::Simplicial => simplicial(&map),
+    };
+    let h = compute(&named.chain, o.field).with_context(|| file.clone())?;
+    let method = match o.method {
+        Method::Cellular => "cellular",
+        Method::Simplicial => "simplicial",
+    };
+    let gens = if o.generators {
+        Some(gmap_homology::generators::generators(&named.chain, o.field).with_context(|| file.clone())?)
+    } else {
+        None
+    };
+    if o.json {
+        let mut v = json!({
+            "dimension": map.dim(),
+            "method": method,
+            "coefficients": h.coefficients.to_string(),
+            "betti": h.betti,
+            "torsion": h.torsion,
+            "euler_characteristic": h.euler_characteristic(),
+        });
+        if let Some(g) = &gens {
+            let list: Vec<_> = g
+                .iter()
+                .map(|x| {
+                    json!({
+                        "dimension": x.dim,
+                        "order": x.order,
+                        "chain": x.chain.iter().map(|&(cell, coef)| json!({
+                            "cell": named.names[x.dim][cell as usize],
+                            "index": cell,
+                            "coefficient": coef,
+                        })).collect::<Vec<_>>(),
+                    })
+                })
+                .collect();
+            v["generators"] = json!(list);
+        }
+        println!("{v}");
+    } else {
+        println!("dimension {}, method {method}, coefficients {}", map.dim(), h.coefficients);
+        for k in 0..h.betti.len() {
+            println!("H_{k} = {}", h.group_string(k));
+        }
+        println!("euler characteristic {}", h.euler_characteristic());
+        if let Some(g) = &gens {
+            for x in g {
+                let order = if x.order == 0 { "Z".to_string() } else { format!("Z/{}", x.order) };
+                let terms: Vec<String> = x
+                    .chain
+                    .iter()
+                    .map(|&(cell, coef)| format!("{coef:+} [{}]", named.names[x.dim][cell as usize]))
+                    .collect();
+                println!("generator of H_{} ({order}): {}", x.dim, terms.join(" "));
+            }
+        }
+    }
+    Ok(())
 }

@@ -1,0 +1,232 @@
+//! Representative cycles: one chain of cells for each cyclic summand of each `H_k`.
+//!
+//! For each k, Smith normal form of `∂_{k+1}` with the row operations tracked gives a
+//! basis `P` of `C_k` in which the boundaries are `d_i P_i` (i < rank). Then
+//!
+//! * each `P_i` with `|d_i| > 1` is a cycle (a multiple of it is a boundary, and `C_k` is
+//!   torsion-free) generating a summand `Z/d_i`;
+//! * the cycles inside the span of the remaining columns, found as the integer kernel of
+//!   `∂_k P_{≥ rank}` by column reduction, generate the free part.
+//!
+//! Every generator is checked to be a cycle before it is returned. The computation is
+//! dense — O(m^3) for m cells of a dimension — so it is limited to
+//! [`GENERATOR_CELL_LIMIT`] cells per dimension: cellular complexes of G-maps are small,
+//! which is where generators are worth reading.
+
+use crate::chain::ChainComplex;
+use crate::homology::{is_prime, HomologyError};
+use crate::ring::{Euclid, Zi64, Zp};
+use crate::snf::smith_tracked;
+
+/// Largest number of cells in one dimension for which generators are computed.
+pub const GENERATOR_CELL_LIMIT: usize = 2000;
+
+/// A representative cycle of one cyclic summand of `H_dim`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Generator {
+    /// the dimension k of the homology group
+    pub dim: usize,
+    /// the order of the summand: 0 for `Z` (or the field), `t > 1` for `Z/t`
+    pub order: u64,
+    /// the cycle: `(k-cell index, coefficient)`, non-zero coefficients, increasing cells
+    pub chain: Vec<(u32, i64)>,
+}
+
+/// Representative cycles of all summands of `H_0..H_n`, over `Z` (`field = None`) or over
+/// `Z/p`: `betti[k]` free ones and one per torsion coefficient, in that order per dimension.
+///
+/// ```
+/// use gmap_homology::{cellular_complex, generators::generators};
+/// let c = cellular_complex(&gmap_core::examples::klein_bottle()).unwrap();
+/// let g = generators(&c.chain, None).unwrap();
+/// let orders: Vec<(usize, u64)> = g.iter().map(|x| (x.dim, x.order)).collect();
+/// assert_eq!(orders, vec![(0, 0), (1, 0), (1, 2)]);
+/// ```
+pub fn generators(c: &ChainComplex, field: Option<u64>) -> Result<Vec<Generator>, HomologyError> {
+    for k in 0..c.counts().len() {
+        if c.count(k) > GENERATOR_CELL_LIMIT {
+            return Err(HomologyError::GeneratorsTooLarge { dim: k, cells: c.count(k), limit: GENERATOR_CELL_LIMIT });
+        }
+    }
+    match field {
+        None => compute(&Zi64, c).unwrap_or(Err(HomologyError::GeneratorOverflow)),
+        Some(p) => {
+            if !is_prime(p) || p >= 1 << 31 {
+                return Err(HomologyError::NotPrime(p));
+            }
+            compute(&Zp { p }, c).unwrap_or(Err(HomologyError::GeneratorOverflow))
+        }
+    }
+}
+
+fn dense<R: Euclid>(ring: &R, c: &ChainComplex, k: usize) -> Vec<Vec<R::E>> {
+    let m = c.boundary(k);
+    let mut a = vec![vec![ring.from_i64(0); m.cols()]; m.rows()];
+    for (i, j, v) in m.iter() {
+        a[i][j] = ring.from_i64(v);
+    }
+    a
+}
+
+fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator>, HomologyError>> {
+    let n1 = c.counts().len();
+    let zero = ring.from_i64(0);
+    let mut out = Vec::new();
+    for k in 0..n1 {
+        let m = c.count(k);
+        // basis P of C_k (by columns) adapted to the image of ∂_{k+1}
+        let mut p: Vec<Vec<R::E>> =
+            (0..m).map(|j| (0..m).map(|i| ring.from_i64(i64::from(i == j))).collect()).collect();
+        let diag = if k + 1 < n1 {
+            let a = dense(ring, c, k + 1);
+            let cols = c.count(k + 1);
+            smith_tracked(ring, a, cols, Some(&mut p))?
+        } else {
+            Vec::new()
+        };
+        let r = diag.len();
+        // free part: kernel of ∂_k restricted to span(P_r..P_m)
+        let rest = m - r;
+        let mut t: Vec<Vec<R::E>> =
+            (0..rest).map(|j| (0..rest).map(|i| ring.from_i64(i64::from(i == j))).collect()).collect();
+        let mut mcols: Vec<Vec<R::E>> = Vec::with_capacity(rest);
+        if k >= 1 {
+            let b = c.boundary(k);
+            for col in &p[r..] {
+                let mut v = vec![zero.clone(); b.rows()];
+                for (i, j, x) in b.iter() {
+                    if !ring.is_zero(&col[j]) {
+                        let xe = ring.from_i64(x);
+                        let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &xe, &ring.from_i64(1))?, &col[j])?;
+                        v[i] = nx;
+                    }
+                }
+                mcols.push(v);
+            }
+        } else {
+            mcols = vec![Vec::new(); rest];
+        }
+        let rows = if k >= 1 { c.count(k - 1) } else { 0 };
+        // column reduction of mcols (rest columns of length rows), tracking t
+        let mut piv = 0;
+        for row in 0..rows {
+            loop {
+                // smallest non-zero entry in this row among columns piv..
+                let mut best: Option<usize> = None;
+                for j in piv..rest {
+                    if !ring.is_zero(&mcols[j][row])
+                        && best.is_none_or(|b| ring.abs_cmp(&mcols[j][row], &mcols[b][row]).is_lt())
+                    {
+                        best = Some(j);
+                    }
+                }
+                let Some(bj) = best else { break };
+                mcols.swap(piv, bj);
+                t.swap(piv, bj);
+                let mut done = true;
+                for j in piv + 1..rest {
+                    if ring.is_zero(&mcols[j][row]) {
+                        continue;
+                    }
+                    let (q, _) = ring.div_rem(&mcols[j][row], &mcols[piv][row])?;
+                    for i in 0..rows {
+                        let v = ring.sub_mul(&mcols[j][i], &q, &mcols[piv][i])?;
+                        mcols[j][i] = v;
+                    }
+                    for i in 0..rest {
+                        let v = ring.sub_mul(&t[j][i], &q, &t[piv][i])?;
+                        t[j][i] = v;
+                    }
+                    if !ring.is_zero(&mcols[j][row]) {
+                        done = false;
+                    }
+                }
+                if done {
+                    piv += 1;
+                    break;
+                }
+            }
+            if piv == rest {
+                break;
+            }
+        }
+        for tj in &t[piv..] {
+            // z = P[:, r..] · t_j
+            let mut z = vec![zero.clone(); m];
+            for (s, coef) in tj.iter().enumerate() {
+                if ring.is_zero(coef) {
+                    continue;
+                }
+                for i in 0..m {
+                    let v = ring.sub_mul(&z[i], &ring.sub_mul(&zero, coef, &ring.from_i64(1))?, &p[r + s][i])?;
+                    z[i] = v;
+                }
+            }
+            out.push((k, 0u64, z));
+        }
+        for (i, d) in diag.iter().enumerate() {
+            if !ring.is_unit(d) {
+                out.push((k, ring.abs_u64(d)?, p[i].clone()));
+            }
+        }
+    }
+    // order: per dimension free generators first, then torsion (already so); check cycles
+    let mut res = Vec::with_capacity(out.len());
+    for (k, order, z) in out {
+        if k >= 1 {
+            let b = c.boundary(k);
+            let mut v = vec![zero.clone(); b.rows()];
+            for (i, j, x) in b.iter() {
+                let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &ring.from_i64(x), &ring.from_i64(1))?, &z[j])?;
+                v[i] = nx;
+            }
+            if v.iter().any(|x| !ring.is_zero(x)) {
+                return Some(Err(HomologyError::Internal("a generator is not a cycle")));
+            }
+        }
+        let mut chain = Vec::new();
+        for (i, x) in z.iter().enumerate() {
+            if !ring.is_zero(x) {
+                chain.push((i as u32, ring.to_i64(x)?));
+            }
+        }
+        res.push(Generator { dim: k, order, chain });
+    }
+    Some(Ok(res))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::border::cellular_complex;
+    use crate::homology::homology_z;
+    use gmap_core::examples;
+
+    #[test]
+    fn counts_match_the_groups() {
+        for m in [examples::torus(), examples::cylinder(), examples::klein_bottle(), examples::fig1_curve()] {
+            let c = cellular_complex(&m).unwrap().chain;
+            let h = homology_z(&c).unwrap();
+            let g = generators(&c, None).unwrap();
+            for k in 0..h.betti.len() {
+                let free = g.iter().filter(|x| x.dim == k && x.order == 0).count();
+                let tors: Vec<u64> = g.iter().filter(|x| x.dim == k && x.order > 0).map(|x| x.order).collect();
+                assert_eq!(free, h.betti[k]);
+                assert_eq!(tors, h.torsion[k]);
+            }
+        }
+    }
+
+    #[test]
+    fn klein_bottle_torsion_generator_is_a_loop() {
+        let c = cellular_complex(&examples::klein_bottle()).unwrap().chain;
+        let g = generators(&c, None).unwrap();
+        let t = g.iter().find(|x| x.order == 2).unwrap();
+        assert_eq!(t.dim, 1);
+        assert_eq!(t.chain.len(), 1);
+        assert_eq!(t.chain[0].1.abs(), 1);
+        // over Z/2 the Klein bottle has H_1 of dimension 2 and no torsion
+        let g2 = generators(&c, Some(2)).unwrap();
+        assert_eq!(g2.iter().filter(|x| x.dim == 1).count(), 2);
+    }
+}
