@@ -75,7 +75,7 @@ impl EpVector {
 
     /// `Σ (-1)^i (dx_i - dy_i)`: zero exactly on the Euler–Poincaré hyperplane.
     pub fn defect(&self) -> i64 {
-        let s = |v: &[i64]| v.iter().enumerate().map(|(i, &x)| if i % 2 == 0 { x } else { -x }).sum::<i64>();
+        let s = |v: &[i64]| v.iter().enumerate().map(|(i, &x)| if i.is_multiple_of(2) { x } else { -x }).sum::<i64>();
         s(&self.dx) - s(&self.dy)
     }
 
@@ -86,7 +86,7 @@ impl EpVector {
 
     /// The change of the Euler characteristic, `Σ (-1)^i dx_i`.
     pub fn euler_change(&self) -> i64 {
-        self.dx.iter().enumerate().map(|(i, &x)| if i % 2 == 0 { x } else { -x }).sum()
+        self.dx.iter().enumerate().map(|(i, &x)| if i.is_multiple_of(2) { x } else { -x }).sum()
     }
 
     /// The sum of two changes (operators compose by addition, AC §5).

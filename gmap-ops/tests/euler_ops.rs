@@ -1,0 +1,288 @@
+//! Euler operators on classic objects with exact counts, and property tests on random maps
+//! and random operator sequences: validity kept, every Euler–Poincaré vector on the AC §4
+//! hyperplane and equal to the recomputed change of cells.
+
+mod euler_common;
+
+use euler_common::{counts, cube_grid, cycle, polygon, sphere_simplicial, thaw};
+use gmap_core::{DartId, GMap};
+use gmap_ops::euler::ops::*;
+use gmap_ops::euler::{EpVector, EulerError};
+use proptest::prelude::*;
+
+fn first_where(g: &GMap, f: impl Fn(&GMap, DartId) -> bool) -> DartId {
+    g.darts().find(|&d| f(g, d)).expect("a dart with the property")
+}
+
+#[test]
+fn one_dimensional_cycle() {
+    let mut g = cycle(3);
+    let d = g.darts().next().unwrap();
+    let op = try_insert_vertex(&mut g, d).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("mve", &[1, 1][..]));
+    assert_eq!(counts(&g), vec![4, 4]);
+    // remove a vertex (kve) and contract an edge (kev)
+    let v = first_where(&g, |g, d| is_removable(g, d, 0));
+    assert_eq!(try_remove_cell(&mut g, v, 0).unwrap().vector.dx, vec![-1, -1]);
+    assert_eq!(counts(&g), vec![3, 3]);
+    let e = first_where(&g, |g, d| is_contractible(g, d, 1));
+    let op = try_contract_cell(&mut g, e, 1).unwrap();
+    assert_eq!((op.name.as_str(), op.basis_name()), ("kev", "-B0 - A1".to_string()));
+    assert_eq!(counts(&g), vec![2, 2]);
+    let e = first_where(&g, |g, d| is_contractible(g, d, 1));
+    try_contract_cell(&mut g, e, 1).unwrap();
+    assert_eq!(counts(&g), vec![1, 1]);
+    // the last loop has the same vertex at both ends: contracting it would kill the circle
+    let d = g.darts().next().unwrap();
+    assert!(matches!(try_contract_cell(&mut g, d, 1), Err(EulerError::WouldChangeTopology { dim: 1, .. })));
+}
+
+#[test]
+fn square_face() {
+    let mut g = polygon(4);
+    let ds: Vec<DartId> = g.darts().collect();
+    // darts 2k, 2k+1 are the two darts of edge k; corner between 2k+1 and 2k+2
+    let op = try_insert_edge(&mut g, ds[1], ds[5]).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("mef", &[0, 1, 1][..]));
+    assert_eq!(op.basis_name(), "B1 + A2");
+    assert_eq!(counts(&g), vec![4, 5, 2]);
+    // the new edge separates the two faces: remove it again (kef)
+    let new_edge = g.alpha(ds[1], 1);
+    let op = try_remove_cell(&mut g, new_edge, 1).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("kef", &[0, -1, -1][..]));
+    assert_eq!(counts(&g), vec![4, 4, 1]);
+    // a dangling edge, then its removal (kev)
+    let op = try_insert_dangling_edge(&mut g, ds[3]).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("mev", &[1, 1, 0][..]));
+    assert_eq!(counts(&g), vec![5, 5, 1]);
+    let hang = g.alpha(ds[3], 1);
+    let op = try_remove_cell(&mut g, hang, 1).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("kev", &[-1, -1, 0][..]));
+    assert_eq!(counts(&g), vec![4, 4, 1]);
+    // a boundary edge of the square is not removable (it is 2-free)
+    assert!(!is_removable(&g, ds[0], 1));
+    // same corner twice is refused
+    assert!(matches!(try_insert_edge(&mut g, ds[1], ds[2]), Err(EulerError::Misplaced { .. })));
+    // close(2) caps the square: one more face, a sphere
+    let rep = try_close(&mut g, 2).unwrap();
+    assert_eq!((rep.new_darts, rep.dx), (8, vec![0, 0, 1]));
+    assert_eq!(counts(&g), vec![4, 4, 2]);
+    assert!(g.darts().all(|d| !g.is_free(d, 2)));
+}
+
+#[test]
+fn solid_cube_cells() {
+    let (mut g, _) = thaw(&cube_grid(3, 1, false));
+    assert_eq!(counts(&g), vec![8, 12, 6, 1]);
+    // faces are on the boundary: not removable; vertices have degree 3
+    let d = g.darts().next().unwrap();
+    assert!(matches!(try_remove_cell(&mut g, d, 2), Err(EulerError::WouldChangeTopology { dim: 2, .. })));
+    assert!(matches!(try_remove_cell(&mut g, d, 0), Err(EulerError::DegreeAboveTwo { dim: 0, .. })));
+    // an edge between two boundary faces goes (kef)
+    let op = try_remove_cell(&mut g, d, 1).unwrap();
+    assert_eq!(op.vector.dx, vec![0, -1, -1, 0]);
+    assert_eq!(counts(&g), vec![8, 11, 5, 1]);
+    // contraction would pinch boundary vertices together
+    let e = g.darts().next().unwrap();
+    assert!(!is_contractible(&g, e, 1));
+}
+
+#[test]
+fn split_volume_by_a_face() {
+    // a solid cube: cut it by a square through the middle of four parallel edges
+    let (mut g, _) = thaw(&cube_grid(3, 1, false));
+    let d = g.darts().next().unwrap();
+    // split the four edges of one direction: the edge of d and its three parallels
+    let parallels: Vec<DartId> = {
+        let mut out = vec![d];
+        let mut x = d;
+        for _ in 0..3 {
+            // across the face: alpha_0 alpha_1 alpha_0 alpha_1 alpha_2 …: walk to the opposite edge
+            x = g.alpha(g.alpha(g.alpha(x, 1), 0), 1);
+            x = g.alpha(x, 2);
+            out.push(x);
+        }
+        out
+    };
+    let mut cut = Vec::new();
+    for &e in &parallels {
+        let before = counts(&g);
+        try_insert_vertex(&mut g, e).unwrap();
+        assert_eq!(counts(&g)[0], before[0] + 1);
+        cut.push(e);
+    }
+    assert_eq!(counts(&g), vec![12, 16, 6, 1]);
+    // cut the four side faces by edges between the new vertices
+    for k in 0..4 {
+        let a = g.alpha(cut[k], 0);
+        let target =
+            first_where(&g, |g, x| can_insert_edge(g, a, x) && g.cell(x, 0).contains(&g.alpha(cut[(k + 1) % 4], 0)));
+        try_insert_edge(&mut g, a, target).unwrap();
+    }
+    assert_eq!(counts(&g), vec![12, 20, 10, 1]);
+    // the four new edges form a closed path around the cube: split the volume (mfs)
+    let seeds = find_cut(&g);
+    let op = try_split_cell(&mut g, &seeds, 3).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("mfs", &[0, 0, 1, 1][..]));
+    assert_eq!(op.basis_name(), "B2 + A3");
+    assert_eq!(counts(&g), vec![12, 20, 11, 2]);
+    // and the new face separates two volumes: remove it (kfs)
+    let f = g.alpha(seeds[0], 2);
+    let op = try_remove_cell(&mut g, f, 2).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("kfs", &[0, 0, -1, -1][..]));
+    assert_eq!(counts(&g), vec![12, 20, 10, 1]);
+}
+
+/// A set of seeds that `can_split_cell` accepts for i = 3: four darts, one per edge of a
+/// closed path, each reached from the previous one by turning into the next face of the
+/// same side; the first such path found from any dart.
+fn find_cut(g: &GMap) -> Vec<DartId> {
+    let ds: Vec<DartId> = g.darts().collect();
+    for &s in &ds {
+        // follow a cycle of edges through vertices of degree 4 in the boundary (inserted ones)
+        let mut seeds = vec![s];
+        let mut x = s;
+        for _ in 0..3 {
+            // go to the other end, turn into the next face of the same side
+            let y = g.alpha(x, 0);
+            let z = g.alpha(g.alpha(y, 1), 2);
+            x = g.alpha(z, 1);
+            seeds.push(x);
+        }
+        if can_split_cell(g, &seeds, 3) {
+            return seeds;
+        }
+    }
+    panic!("no closed cut found");
+}
+
+#[test]
+fn three_torus_cells() {
+    let (mut g, _) = thaw(&cube_grid(3, 2, true));
+    assert_eq!(counts(&g), vec![8, 24, 24, 8]);
+    let d = g.darts().next().unwrap();
+    let op = try_remove_cell(&mut g, d, 2).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("kfs", &[0, 0, -1, -1][..]));
+    assert_eq!(counts(&g), vec![8, 24, 23, 7]);
+    let e = first_where(&g, |g, x| is_contractible(g, x, 1));
+    let op = try_contract_cell(&mut g, e, 1).unwrap();
+    assert_eq!(op.vector.dx, vec![-1, -1, 0, 0]);
+    assert_eq!(counts(&g), vec![7, 23, 23, 7]);
+    // squares are not 2-gons: no face contraction; edges have degree 4: no removal
+    let f = g.darts().next().unwrap();
+    assert!(matches!(try_contract_cell(&mut g, f, 2), Err(EulerError::DegreeAboveTwo { dim: 2, .. })));
+}
+
+#[test]
+fn four_torus_cells() {
+    let (mut g, _) = thaw(&cube_grid(4, 2, true));
+    assert_eq!(counts(&g), vec![16, 64, 96, 64, 16]);
+    let d = g.darts().next().unwrap();
+    let op = try_remove_cell(&mut g, d, 3).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("ksc4", &[0, 0, 0, -1, -1][..]));
+    assert_eq!(counts(&g), vec![16, 64, 96, 63, 15]);
+    let e = first_where(&g, |g, x| is_contractible(g, x, 1));
+    let op = try_contract_cell(&mut g, e, 1).unwrap();
+    assert_eq!(op.vector.dx, vec![-1, -1, 0, 0, 0]);
+    assert_eq!(counts(&g), vec![15, 63, 96, 63, 15]);
+}
+
+#[test]
+fn tetrahedron_surface_contractions() {
+    let (mut g, _) = thaw(&sphere_simplicial(2));
+    assert_eq!(counts(&g), vec![4, 6, 4]);
+    let d = g.darts().next().unwrap();
+    try_contract_cell(&mut g, d, 1).unwrap();
+    assert_eq!(counts(&g), vec![3, 5, 4]);
+    // two triangles became 2-gons: contract one onto an edge (kef)
+    let f = first_where(&g, |g, x| is_contractible(g, x, 2));
+    let op = try_contract_cell(&mut g, f, 2).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("kef", &[0, -1, -1][..]));
+    assert_eq!(counts(&g), vec![3, 4, 3]);
+    // remove an edge between two distinct faces
+    let e = first_where(&g, |g, x| is_removable(g, x, 1));
+    try_remove_cell(&mut g, e, 1).unwrap();
+    assert_eq!(counts(&g), vec![3, 3, 2]);
+}
+
+#[test]
+fn errors_name_the_dart() {
+    let mut g = polygon(3);
+    let d = g.darts().next().unwrap();
+    let gone = g.create_dart();
+    g.remove_dart(gone);
+    assert_eq!(try_insert_vertex(&mut g, gone), Err(EulerError::NoSuchDart(gone)));
+    assert!(matches!(try_remove_cell(&mut g, d, 2), Err(EulerError::BadDimension { got: 2, .. })));
+    assert!(matches!(try_contract_cell(&mut g, d, 0), Err(EulerError::BadDimension { got: 0, .. })));
+    let mut line = GMap::new(1);
+    let a = line.create_dart();
+    assert!(matches!(try_insert_vertex(&mut line, a), Err(EulerError::Free { alpha: 0, .. })));
+}
+
+// ---------- property tests ----------
+
+fn base(kind: u8, size: usize) -> GMap {
+    match kind % 7 {
+        0 => cycle(size + 2),
+        1 => polygon(size + 2),
+        2 => thaw(&cube_grid(2, size, true)).0,
+        3 => thaw(&cube_grid(2, size, false)).0,
+        4 => thaw(&sphere_simplicial(2)).0,
+        5 => thaw(&cube_grid(3, 2, true)).0,
+        _ => thaw(&sphere_simplicial(3)).0,
+    }
+}
+
+fn apply(g: &mut GMap, op: u8, pick: usize, pick2: usize, dim: usize) -> Option<EpVector> {
+    let ds: Vec<DartId> = g.darts().collect();
+    if ds.is_empty() {
+        return None;
+    }
+    let d = ds[pick % ds.len()];
+    let e = ds[pick2 % ds.len()];
+    let n = g.dim();
+    let i = dim % (n + 1);
+    let r = match op % 6 {
+        0 => {
+            assert_eq!(can_insert_vertex(g, d), try_insert_vertex(&mut g.clone(), d).is_ok());
+            try_insert_vertex(g, d).ok().map(|o| o.vector)
+        }
+        1 => {
+            assert_eq!(can_insert_edge(g, d, e), try_insert_edge(&mut g.clone(), d, e).is_ok());
+            try_insert_edge(g, d, e).ok().map(|o| o.vector)
+        }
+        2 => try_insert_dangling_edge(g, d).ok().map(|o| o.vector),
+        3 => {
+            assert_eq!(is_removable(g, d, i), try_remove_cell(&mut g.clone(), d, i).is_ok());
+            try_remove_cell(g, d, i).ok().map(|o| o.vector)
+        }
+        4 => {
+            assert_eq!(is_contractible(g, d, i), try_contract_cell(&mut g.clone(), d, i).is_ok());
+            try_contract_cell(g, d, i).ok().map(|o| o.vector)
+        }
+        _ => try_split_cell(g, &[d, e], i).ok().map(|o| o.vector),
+    };
+    r
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+
+    #[test]
+    fn random_operator_sequences(kind in 0u8..7, size in 1usize..4,
+                                 ops in prop::collection::vec((0u8..6, 0usize..10_000, 0usize..10_000, 0usize..5), 1..12)) {
+        let mut g = base(kind, size);
+        for (op, p1, p2, dim) in ops {
+            let before = counts(&g);
+            if let Some(v) = apply(&mut g, op, p1, p2, dim) {
+                let (dense, _) = g.to_dense();
+                prop_assert!(dense.validate().is_ok());
+                let after = dense.cell_counts();
+                let recount: Vec<i64> = after.iter().zip(&before).map(|(&a, &b)| a as i64 - b as i64).collect();
+                prop_assert_eq!(&v.dx, &recount);
+                prop_assert!(v.is_on_hyperplane(), "vector {} off the hyperplane", v);
+                prop_assert!(v.basis().is_some());
+            }
+        }
+    }
+}
