@@ -1,12 +1,125 @@
-//! `gmap info FILE [--json]`.
+//! `gmap info FILE [--json]` (CONTRACT §1): reads FILE, validates it, prints its
+//! characteristics. Each kind of [`Loaded`] input has its own arm in [`run`] that builds
+//! the lines to print; the JSON object of a G-map is [`MapInfo`].
 
+use std::io::IsTerminal;
 use std::path::Path;
+use std::time::Instant;
 
 use anyhow::Result;
+use gmap_core::DenseMap;
+use serde::Serialize;
 
-use super::load::load;
+use super::load::{load, Loaded};
 
-pub fn run(file: &Path, _json: bool, max_darts: Option<u64>) -> Result<()> {
-    let _ = load(file, max_darts)?;
-    anyhow::bail!("info: in progress")
+/// The characteristics of a G-map, in the key order of CONTRACT §1.
+#[derive(Debug, Serialize)]
+pub struct MapInfo {
+    /// n
+    pub dimension: usize,
+    /// number of darts
+    pub darts: usize,
+    /// `cells[i]`: number of i-cells (BO Def. 2)
+    pub cells: Vec<usize>,
+    /// number of connected components
+    pub components: usize,
+    /// BO Def. 1 holds (readers refuse invalid maps, so this is true for any loaded map)
+    pub valid: bool,
+    /// BO Def. 6 holds
+    pub complete_boundaries: bool,
+    /// BO Def. 7 holds
+    pub orientable: bool,
+    /// the alternating sum of `cells`
+    pub euler_characteristic: i64,
+    /// why the boundaries are not complete (human output only)
+    #[serde(skip)]
+    pub boundary_defect: Option<String>,
+}
+
+/// Progress messages on stderr, shown only when stderr is a terminal and the work is big.
+struct Progress {
+    on: bool,
+    start: Instant,
+}
+
+impl Progress {
+    fn new(file: &Path) -> Self {
+        let big = std::fs::metadata(file).map(|m| m.len() > 8 << 20).unwrap_or(false);
+        Progress { on: big && std::io::stderr().is_terminal(), start: Instant::now() }
+    }
+
+    fn step(&self, what: &str) {
+        if self.on {
+            eprintln!("[{:6.2} s] {what}…", self.start.elapsed().as_secs_f64());
+        }
+    }
+}
+
+/// Computes the characteristics of a valid map. O(N n) for the counts and orientation,
+/// O(N n log N) for the self-bending test of BO Def. 6.
+pub fn map_info(map: &DenseMap) -> MapInfo {
+    let (cells, components) = map.cell_counts_and_components();
+    let euler_characteristic =
+        cells.iter().enumerate().map(|(i, &c)| if i % 2 == 0 { c as i64 } else { -(c as i64) }).sum();
+    let boundary = map.check_complete_boundaries();
+    MapInfo {
+        dimension: map.dim(),
+        darts: map.dart_count(),
+        cells,
+        components,
+        valid: map.is_valid(),
+        complete_boundaries: boundary.is_ok(),
+        orientable: map.is_orientable(),
+        euler_characteristic,
+        boundary_defect: boundary.err().map(|e| e.to_string()),
+    }
+}
+
+/// Runs `gmap info`.
+pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
+    let progress = Progress::new(file);
+    progress.step("reading");
+    let loaded = load(file, max_darts)?;
+    progress.step("computing");
+    match loaded {
+        Loaded::Map(map) => {
+            let info = map_info(&map);
+            progress.step("done");
+            if json {
+                println!("{}", serde_json::to_string(&info)?);
+            } else {
+                print_lines(&map_lines(file, &info));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The human-readable lines of a map's characteristics.
+fn map_lines(file: &Path, info: &MapInfo) -> Vec<(&'static str, String)> {
+    let yes = |b: bool| if b { "yes".to_string() } else { "no".to_string() };
+    let cells = info.cells.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ");
+    let complete = match &info.boundary_defect {
+        None => yes(true),
+        Some(why) => format!("no ({why})"),
+    };
+    vec![
+        ("file", file.display().to_string()),
+        ("dimension", info.dimension.to_string()),
+        ("darts", info.darts.to_string()),
+        ("cells (0..n)", cells),
+        ("components", info.components.to_string()),
+        ("valid", yes(info.valid)),
+        ("complete boundaries", complete),
+        ("orientable", yes(info.orientable)),
+        ("euler characteristic", info.euler_characteristic.to_string()),
+    ]
+}
+
+/// Prints `key  value` lines with the values aligned.
+fn print_lines(lines: &[(&str, String)]) {
+    let width = lines.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
+    for (k, v) in lines {
+        println!("{k:<width$}  {v}");
+    }
 }

@@ -1,0 +1,198 @@
+//! `gmap info` end to end (CONTRACT §1): exact JSON on good `.gmap` and `.moka` files, and
+//! for every kind of bad input exit code 1 with one line `error: FILE:LINE: …` on stderr.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::json;
+
+fn gmap(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
+}
+
+fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p
+}
+
+fn info_json(path: &Path) -> serde_json::Value {
+    let out = gmap(&["info", path.to_str().unwrap(), "--json"]);
+    assert_eq!(out.status.code(), Some(0), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.stderr.is_empty());
+    serde_json::from_slice(&out.stdout).expect("one JSON object on stdout")
+}
+
+/// Runs `gmap info` on a file holding `bytes`; checks exit code 1 and a single stderr line
+/// `error: PATH:LINE: …`; returns the message after the line number.
+fn bad(name: &str, bytes: &[u8], line: usize) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), name, bytes);
+    let out = gmap(&["info", p.to_str().unwrap(), "--json"]);
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(1), "stderr: {err}");
+    assert!(out.stdout.is_empty(), "nothing on stdout on error");
+    assert_eq!(err.lines().count(), 1, "one line: {err}");
+    let prefix = format!("error: {}:{line}: ", p.display());
+    assert!(err.starts_with(&prefix), "expected prefix {prefix:?}, got {err:?}");
+    err[prefix.len()..].trim_end().to_string()
+}
+
+#[test]
+fn good_gmap_exact_json() {
+    let dir = tempfile::tempdir().unwrap();
+    // BO Fig. 2, the cylinder: darts 1..8 of the paper are 0..7 here
+    let text = "# the cylinder of BO Fig. 2\ngmap 2 8\n1 7 5\n0 2 4\n3 1 2\n2 4 3\n5 3 1\n4 6 0\n7 5 6\n6 0 7\n";
+    let p = write(dir.path(), "cylinder.gmap", text.as_bytes());
+    assert_eq!(
+        info_json(&p),
+        json!({"dimension": 2, "darts": 8, "cells": [2, 3, 1], "components": 1, "valid": true,
+               "complete_boundaries": true, "orientable": true, "euler_characteristic": 0})
+    );
+    // a segment: one edge, two vertices
+    let p = write(dir.path(), "segment.gmap", b"gmap 1 2\n1 0\n0 1\n");
+    assert_eq!(
+        info_json(&p),
+        json!({"dimension": 1, "darts": 2, "cells": [2, 1], "components": 1, "valid": true,
+               "complete_boundaries": true, "orientable": true, "euler_characteristic": 1})
+    );
+    // one 0-free dart: an edge with an incomplete boundary (BO Def. 6 fails)
+    let p = write(dir.path(), "half.gmap", b"gmap 1 1\n0 0\n");
+    assert_eq!(
+        info_json(&p),
+        json!({"dimension": 1, "darts": 1, "cells": [1, 1], "components": 1, "valid": true,
+               "complete_boundaries": false, "orientable": true, "euler_characteristic": 0})
+    );
+}
+
+#[test]
+fn good_moka_exact_json() {
+    let dir = tempfile::tempdir().unwrap();
+    // the Klein bottle of BO Fig. 4(b), embedded in dimension 3 (alpha_3 the identity)
+    let text = "Moka file [ascii]\n0 0 0 0 0 0 0 0\n\
+        1 7 5 0 0 0 0 0 1 0 0 0\n0 2 4 1 0 0 0 0 1 1 0 0\n3 1 6 2 0 0 0 0 0\n2 4 7 3 0 0 0 0 0\n\
+        5 3 1 4 0 0 0 0 0\n4 6 0 5 0 0 0 0 0\n7 5 2 6 0 0 0 0 0\n6 0 3 7 0 0 0 0 0\n";
+    let p = write(dir.path(), "klein.moka", text.as_bytes());
+    assert_eq!(
+        info_json(&p),
+        json!({"dimension": 3, "darts": 8, "cells": [1, 2, 1, 1], "components": 1, "valid": true,
+               "complete_boundaries": true, "orientable": false, "euler_characteristic": -1})
+    );
+}
+
+#[test]
+fn human_output_is_aligned_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "c.gmap", b"gmap 1 2\n1 1\n0 0\n");
+    let out = gmap(&["info", p.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 9);
+    assert_eq!(lines[1], "dimension             1");
+    assert_eq!(lines[2], "darts                 2");
+    assert_eq!(lines[3], "cells (0..n)          1 1");
+    assert_eq!(lines[6], "complete boundaries   yes");
+    assert_eq!(lines[8], "euler characteristic  0");
+}
+
+#[test]
+fn wrong_header() {
+    assert_eq!(bad("h.gmap", b"gmap2 3\n", 1), "bad header: expected `gmap <n> <number of darts>`, found `gmap2 3`");
+    assert_eq!(bad("h.moka", b"Moka file\n", 1), "bad header: expected `Moka file [ascii]`, found `Moka file`");
+}
+
+#[test]
+fn dart_count_mismatch() {
+    assert_eq!(
+        bad("few.gmap", b"gmap 1 3\n0 0\n1 1\n", 4),
+        "truncated: the header announces 3 darts but the file ends after 2"
+    );
+    assert_eq!(bad("many.gmap", b"gmap 1 1\n0 0\n0 0\n", 3), "more dart lines than the 1 darts the header announces");
+}
+
+#[test]
+fn index_out_of_range() {
+    assert_eq!(
+        bad("r.gmap", b"gmap 1 2\n0 0\n1 7\n", 3),
+        "not a G-map (BO Def. 1): dart 1: alpha_1 = 7 is out of range (the map has 2 darts)"
+    );
+    assert_eq!(
+        bad("r.moka", b"Moka file [ascii]\n0 0 0 0 0 0 0 0\n0 0 0 9 0 0 0 0 0\n", 3),
+        "not a G-map (BO Def. 1): dart 0: alpha_3 = 9 is out of range (the map has 1 darts)"
+    );
+}
+
+#[test]
+fn not_an_involution() {
+    assert_eq!(
+        bad("i.gmap", b"gmap 0 3\n1\n2\n0\n", 2),
+        "not a G-map (BO Def. 1): alpha_0 is not an involution: alpha_0(0) = 1 but alpha_0(1) = 2"
+    );
+}
+
+#[test]
+fn alpha_i_alpha_j_not_an_involution() {
+    assert_eq!(
+        bad("c.gmap", b"gmap 2 4\n1 0 0\n0 1 2\n3 2 1\n2 3 3\n", 2),
+        "not a G-map (BO Def. 1): alpha_0 alpha_2 is not an involution at dart 0: (alpha_0 alpha_2)^2(0) = 3"
+    );
+}
+
+#[test]
+fn huge_dimension() {
+    assert_eq!(
+        bad("d.gmap", b"gmap 4000000000 1\n0\n", 1),
+        "dimension 4000000000 is larger than the supported maximum 30"
+    );
+    assert_eq!(
+        bad("n.gmap", b"gmap 30 18446744073709551615\n", 1),
+        "18446744073709551615 darts is more than a map can hold (at most 4294967294 darts)"
+    );
+}
+
+#[test]
+fn truncated() {
+    assert_eq!(bad("t.gmap", b"gmap 2 2\n1 0 0\n0 1", 3), "dart 1: expected 3 values, found 2");
+    assert_eq!(
+        bad("t.moka", b"Moka file [ascii]\n0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 1 0.5 1", 3),
+        "dart 0: expected 9 or 12 values, found 11"
+    );
+}
+
+#[test]
+fn empty() {
+    assert_eq!(bad("e.gmap", b"", 1), "the file is empty: expected the header `gmap <n> <number of darts>`");
+    assert_eq!(bad("e.moka", b"\n\n", 3), "the file is empty: expected the header `Moka file [ascii]`");
+}
+
+#[test]
+fn not_utf8() {
+    assert_eq!(bad("u.gmap", b"gmap 0 1\n\xfe\n", 2), "not UTF-8 text: invalid byte at offset 9");
+}
+
+#[test]
+fn negative_or_non_numeric_tokens() {
+    assert_eq!(bad("m.gmap", b"gmap 1 2\n-1 0\n", 2), "dart 0, alpha_0: `-1` is negative");
+    assert_eq!(bad("x.gmap", b"gmap 1 2\n1 0\n0 one\n", 3), "dart 1, alpha_1: `one` is not a non-negative integer");
+    assert_eq!(bad("h.gmap", b"gmap two 2\n", 1), "header dimension: `two` is not a non-negative integer");
+}
+
+#[test]
+fn missing_file_and_dart_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("none.gmap");
+    let out = gmap(&["info", p.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with(&format!("error: {}: cannot read the file", p.display())), "{err}");
+    let p = write(dir.path(), "two.gmap", b"gmap 0 2\n1\n0\n");
+    let out = gmap(&["info", p.to_str().unwrap(), "--max-darts", "1"]);
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn bad_usage_exits_2() {
+    assert_eq!(gmap(&["info"]).status.code(), Some(2));
+    assert_eq!(gmap(&["info", "x.gmap", "--no-such-flag"]).status.code(), Some(2));
+}
