@@ -111,10 +111,10 @@ proptest! {
     fn cells_partition_the_darts(m in map_strategy(1..=4)) {
         let (counts, components) = m.cell_counts_and_components();
         prop_assert_eq!(components, m.components().len());
-        for i in 0..=m.dim() {
+        for (i, &count) in counts.iter().enumerate() {
             let set = AlphaSet::cell(i, m.dim());
             let p = m.cells(i);
-            prop_assert_eq!(p.len(), counts[i]);
+            prop_assert_eq!(p.len(), count);
             prop_assert_eq!(p.of.len(), m.dart_count());
             let (off, darts) = p.members();
             for k in 0..p.len() {
