@@ -399,7 +399,11 @@ impl ArchComplex {
 
     /// `Σ (-1)^i v_i`, the left side of the Euler–Poincaré formula (AC Cor. 3.11).
     pub fn euler_characteristic(&self) -> i64 {
-        self.per_dim.iter().enumerate().map(|(i, v)| if i.is_multiple_of(2) { v.len() as i64 } else { -(v.len() as i64) }).sum()
+        self.per_dim
+            .iter()
+            .enumerate()
+            .map(|(i, v)| if i.is_multiple_of(2) { v.len() as i64 } else { -(v.len() as i64) })
+            .sum()
     }
 
     /// The non-zero entries of `∂_k : C_k → C_{k-1}` of the completion by zero (AC Def. 3.8)
@@ -572,6 +576,13 @@ impl ArchComplex {
             comps.push(comp);
         }
         comps
+    }
+
+    /// Number of connected components of the incidence graph (directions ignored).
+    /// O(R + E).
+    pub fn component_count(&self) -> usize {
+        let all: Vec<usize> = (0..self.regions.len()).collect();
+        self.components_of(&all).len()
     }
 
     /// `Γ_b` of AC Example 8.19: the closure of `b` without `b` (its topological boundary

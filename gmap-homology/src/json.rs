@@ -26,6 +26,8 @@
 //! Both directions are O(R + E) (plus the validation of Def. 3.1).
 
 use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 use thiserror::Error;
@@ -53,6 +55,9 @@ pub enum JsonError {
         /// what is wrong
         problem: String,
     },
+    /// The file could not be read.
+    #[error("cannot read: {0}")]
+    Io(String),
     /// The data violates AC Def. 3.1.
     #[error(transparent)]
     Arch(#[from] ArchError),
@@ -116,6 +121,44 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
         entries.push((from, to, weight));
     }
     Ok(ArchComplex::try_new(dim, regions, entries)?)
+}
+
+/// Reads and validates a `.json` file; errors name the file (and the line for syntax).
+pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
+    read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
+}
+
+/// A [`JsonError`] with the file it comes from.
+#[derive(Debug, Error)]
+#[error("{}: {error}", path.display())]
+pub struct JsonFileError {
+    /// the file
+    pub path: PathBuf,
+    /// what is wrong
+    pub error: JsonError,
+}
+
+/// Writes `text` to `path` through a temporary file in the same directory and a rename,
+/// so that a failure never leaves a partial file.
+pub fn write_text_atomically(path: &Path, text: &str) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let name = path.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }
 
 /// Writes the complex in the `.json` format, one region or entry per line.

@@ -104,6 +104,9 @@ fn stars_closures_and_t0() {
         }
     }
     assert_eq!(b.boundary_regions(idx(4)).len(), 4);
+    assert_eq!(b.component_count(), 1);
+    assert_eq!(figure_4().0.component_count(), 1);
+    assert_eq!(ring().component_count(), 1);
     assert_eq!(b.components_of(&b.boundary_regions(idx(4))).len(), 2);
 }
 

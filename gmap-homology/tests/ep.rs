@@ -132,11 +132,7 @@ fn on_hyperplane(n: usize, raw: Vec<i64>) -> EpVector {
     // adjust X_0 so that the alternating sum vanishes
     let mut x = raw[..=n].to_vec();
     let y = raw[n + 1..].to_vec();
-    let mut s: i64 = 0;
-    for i in 0..=n {
-        let sg = if i.is_multiple_of(2) { 1 } else { -1 };
-        s += sg * (x[i] - y[i]);
-    }
+    let s: i64 = x.iter().zip(&y).enumerate().map(|(i, (a, b))| if i.is_multiple_of(2) { a - b } else { b - a }).sum();
     x[0] -= s;
     v(&x, &y)
 }
