@@ -20,24 +20,24 @@ const PQR_ABC: [(u64, usize); 6] = [(0, 0), (1, 0), (2, 0), (3, 1), (4, 1), (5, 
 
 #[test]
 fn table_1_two_graphs_one_chain_complex() {
-    // δ: the loop c adheres to Q; δ': the loop c goes from Q to R... with weights 1 and 0
-    let delta =
-        ArchComplex::try_new(1, regions(&PQR_ABC), vec![(3, 0, -1), (3, 1, 1), (4, 1, -1), (4, 2, 1), (5, 1, 0)])
-            .unwrap();
-    let delta2 = ArchComplex::try_new(
-        1,
-        regions(&PQR_ABC),
-        vec![(3, 0, -1), (3, 1, 1), (4, 1, -1), (4, 2, 1), (5, 1, 1), (5, 2, 0)],
-    );
-    // δ' of Table 1 has column c = (·, 1, 0): it is not a boundary (δ² is vacuous in
-    // dimension 1), so it is an architectural complex
-    let delta2 = delta2.unwrap();
-    // the full matrix ∂ of Table 1 is the completion by zero of δ
-    let d = delta.chain_complex();
-    let dense = d.boundary(1).to_dense();
-    assert_eq!(dense, vec![vec![-1, 0, 0], vec![1, -1, 0], vec![0, 1, 0]]);
+    // δ: the loop c hangs at Q (left graph of Figure 2); δ': at R (right graph). Our copy of
+    // Table 1 shows a stray "1" in column c of δ'; the text says each partial matrix keeps
+    // exactly one zero and both complete to the same ∂, which fixes δ'(R, c) = 0 alone.
+    let common = [(3, 0, -1), (3, 1, 1), (4, 1, -1), (4, 2, 1)];
+    let mut e1 = common.to_vec();
+    e1.push((5, 1, 0));
+    let mut e2 = common.to_vec();
+    e2.push((5, 2, 0));
+    let delta = ArchComplex::try_new(1, regions(&PQR_ABC), e1).unwrap();
+    let delta2 = ArchComplex::try_new(1, regions(&PQR_ABC), e2).unwrap();
+    assert_ne!(delta, delta2);
+    // one chain complex: both complete by zero to the full matrix ∂ of Table 1
+    let full = vec![vec![-1, 0, 0], vec![1, -1, 0], vec![0, 1, 0]];
+    assert_eq!(delta.chain_complex().boundary(1).to_dense(), full);
+    assert_eq!(delta2.chain_complex().boundary(1).to_dense(), full);
     assert_eq!(betti(&delta), vec![1, 1]);
-    // the two partial matrices keep one zero each, in different places
+    assert_eq!(betti(&delta2), vec![1, 1]);
+    // the partial matrices keep one zero each, in different places
     let zeros = |x: &ArchComplex| {
         x.entries()
             .iter()
@@ -47,11 +47,15 @@ fn table_1_two_graphs_one_chain_complex() {
     };
     assert_eq!(zeros(&delta), vec![(5, 1)]);
     assert_eq!(zeros(&delta2), vec![(5, 2)]);
+    // 5 defined entries of 9: the other zeros are dropped
+    assert_eq!(delta.entries().len(), 5);
     // the topology tells the graphs apart: c's closure holds Q in δ, and R in δ'
-    let c = delta.index_of(5).unwrap();
-    assert_eq!(delta.closure(c).iter().map(|&r| delta.region(r).id).collect::<Vec<_>>(), vec![1, 5]);
-    let c2 = delta2.index_of(5).unwrap();
-    assert_eq!(delta2.closure(c2).iter().map(|&r| delta2.region(r).id).collect::<Vec<_>>(), vec![1, 2, 5]);
+    let ids = |x: &ArchComplex, v: Vec<usize>| v.iter().map(|&r| x.region(r).id).collect::<Vec<_>>();
+    assert_eq!(ids(&delta, delta.closure(delta.index_of(5).unwrap())), vec![1, 5]);
+    assert_eq!(ids(&delta2, delta2.closure(delta2.index_of(5).unwrap())), vec![2, 5]);
+    // and so does the star of Q: in δ it holds the three edges, in δ' two
+    assert_eq!(ids(&delta, delta.star(delta.index_of(1).unwrap())), vec![1, 3, 4, 5]);
+    assert_eq!(ids(&delta2, delta2.star(delta2.index_of(1).unwrap())), vec![1, 3, 4]);
 }
 
 /// AC Figure 4 as described in Example 3.4 / 3.13.
