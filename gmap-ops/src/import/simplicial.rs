@@ -198,9 +198,27 @@ impl SimplicialComplex {
         }
         let table = PermTable::new(m);
         let pc = table.len();
+        // cross[jg * pc + p]: the ordering reached from ordering p of a facet when crossing the
+        // ridge of its first n positions into a facet whose extra vertex is its local vertex jg.
+        // The ridge's vertices keep their order, and local numbers shift around the omitted
+        // vertex: it depends on p and jg only, not on the facets.
+        let mut cross = vec![0u32; m * pc];
+        let mut q = vec![0u8; m];
+        for jg in 0..m {
+            for p in 0..pc {
+                let perm = table.perm(p);
+                let j = perm[n] as usize;
+                for k in 0..n {
+                    let a = perm[k] as usize;
+                    let r = if a > j { a - 1 } else { a };
+                    q[k] = if r >= jg { r + 1 } else { r } as u8;
+                }
+                q[n] = jg as u8;
+                cross[jg * pc + p] = rank(&q) as u32;
+            }
+        }
         let w = n + 1;
         let mut alpha = vec![0u32; darts * w];
-        let mut q = vec![0u8; m];
         for f in 0..nf {
             let base = f * pc;
             for p in 0..pc {
@@ -209,21 +227,14 @@ impl SimplicialComplex {
                 for (i, slot) in row.iter_mut().enumerate().take(n) {
                     *slot = (base + table.swap(p, i) as usize) as u32;
                 }
-                let perm = table.perm(p);
-                let j = perm[n] as usize;
+                let j = table.perm(p)[n] as usize;
                 let other = partner[f * m + j];
                 row[n] = if other == NONE {
                     d as u32
                 } else {
                     let g = other as usize / m;
                     let jg = other as usize % m;
-                    for k in 0..n {
-                        let a = perm[k] as usize;
-                        let r = if a > j { a - 1 } else { a };
-                        q[k] = if r >= jg { r + 1 } else { r } as u8;
-                    }
-                    q[n] = jg as u8;
-                    (g * pc + rank(&q) as usize) as u32
+                    (g * pc + cross[jg * pc + p] as usize) as u32
                 };
             }
         }
@@ -248,6 +259,55 @@ impl SimplicialComplex {
             if nf == 2 {
                 partner[0] = 1;
                 partner[1] = 0;
+            }
+            return Ok(partner);
+        }
+        // fast path: the ridge's labels packed into one u128, sorted with the ridge number
+        let max_label = self.vertices.iter().copied().max().unwrap_or(0);
+        let bits = 64 - max_label.leading_zeros() as usize;
+        if bits.max(1) * n <= 128 {
+            let bits = bits.max(1);
+            let mut packed: Vec<(u128, u32)> = Vec::with_capacity(total);
+            for f in 0..nf {
+                let fv = self.facet(f);
+                for j in 0..m {
+                    let key = fv
+                        .iter()
+                        .enumerate()
+                        .filter(|&(k, _)| k != j)
+                        .fold(0u128, |acc, (_, &v)| (acc << bits) | v as u128);
+                    packed.push((key, (f * m + j) as u32));
+                }
+            }
+            packed.sort_unstable();
+            let mut s = 0;
+            while s < total {
+                let mut e = s + 1;
+                while e < total && packed[e].0 == packed[s].0 {
+                    e += 1;
+                }
+                match e - s {
+                    1 => {}
+                    2 => {
+                        partner[packed[s].1 as usize] = packed[s + 1].1;
+                        partner[packed[s + 1].1 as usize] = packed[s].1;
+                    }
+                    _ => {
+                        let r = packed[s].1 as usize;
+                        let ridge = self
+                            .facet(r / m)
+                            .iter()
+                            .enumerate()
+                            .filter(|&(k, _)| k != r % m)
+                            .map(|(_, &v)| v)
+                            .collect();
+                        let mut lines: Vec<usize> =
+                            packed[s..e].iter().map(|&(_, r)| self.lines[r as usize / m]).collect();
+                        lines.sort_unstable();
+                        return Err(ImportError::RidgeInManyFacets { ridge, lines });
+                    }
+                }
+                s = e;
             }
             return Ok(partner);
         }
@@ -427,6 +487,32 @@ mod tests {
         let e = sc.to_gmap(17).unwrap_err();
         assert!(matches!(e, ImportError::TooManyDarts { darts: Some(18), limit: 17, .. }));
         assert!(matches!(SimplicialComplex::parse_facets("# nothing\n"), Err(ImportError::Empty)));
+    }
+
+    #[test]
+    fn large_labels_take_the_general_path() {
+        // 3 labels of 62 bits do not pack into 128 bits: ridges are compared as slices
+        let big = 1u64 << 61;
+        let f = |a: u64, b: u64, c: u64, d: u64| vec![big + a, big + b, big + c, big + d];
+        let s3 = SimplicialComplex::from_facets(vec![
+            f(1, 2, 3, 4),
+            f(1, 2, 3, 5),
+            f(1, 2, 4, 5),
+            f(1, 3, 4, 5),
+            f(2, 3, 4, 5),
+        ])
+        .unwrap();
+        let m = s3.to_gmap(10_000).unwrap();
+        m.validate().unwrap();
+        assert_eq!(m.cell_counts(), vec![5, 10, 10, 5]);
+        let bad = SimplicialComplex::from_facets(vec![f(1, 2, 3, 4), f(1, 2, 3, 5), f(1, 2, 3, 6)]).unwrap();
+        match bad.to_gmap(10_000).unwrap_err() {
+            ImportError::RidgeInManyFacets { ridge, lines } => {
+                assert_eq!(ridge, vec![big + 1, big + 2, big + 3]);
+                assert_eq!(lines, vec![1, 2, 3]);
+            }
+            e => panic!("{e}"),
+        }
     }
 
     #[test]
