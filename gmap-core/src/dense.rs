@@ -421,7 +421,7 @@ impl DenseMap {
 
     /// Whether the map is orientable (BO Def. 7). O(N n).
     pub fn is_orientable(&self) -> bool {
-        crate::kernels::orientation(&self.alpha, self.dim + 1).is_ok()
+        crate::kernels::is_orientable(&self.alpha, self.dim + 1)
     }
 
     /// Checks BO Def. 6 (cells with complete boundary): no fixed point of `alpha_i` for

@@ -41,7 +41,7 @@ impl Bits {
     }
 
     /// The first clear bit at or after `from`, below `len`.
-    #[inline]
+    #[cfg(test)]
     pub(crate) fn next_clear(&self, from: usize, len: usize) -> Option<usize> {
         let mut k = from >> 6;
         if k >= self.0.len() {
@@ -118,7 +118,9 @@ impl Dyn<'_> {
     }
 }
 
-/// Number of orbits of the involutions whose bits are set in `mask`.
+/// Number of orbits of the involutions whose bits are set in `mask`, by traversal (the
+/// reference the union-find counter is tested against).
+#[cfg(test)]
 fn count_rows<const W: usize>(rows: &[[u32; W]], mask: u32) -> usize {
     let n = rows.len();
     let mut seen = Bits::new(n);
@@ -165,9 +167,47 @@ fn count_dyn(m: Dyn<'_>, mask: u32) -> usize {
     count
 }
 
+/// Finds the root of `x`, halving the path on the way.
+#[inline]
+fn uf_find(parent: &mut [u32], mut x: u32) -> u32 {
+    loop {
+        let p = parent[x as usize];
+        if p == x {
+            return x;
+        }
+        let g = parent[p as usize];
+        parent[x as usize] = g;
+        x = g;
+    }
+}
+
+/// Number of orbits by union-find over one sequential scan of the rows: each link
+/// `d -> alpha_i(d)` with `alpha_i(d) > d` merges two classes, the smaller root becoming the
+/// root. Reading rows in order and, for most maps, their partners in runs, it touches
+/// memory far more predictably than a traversal.
+fn count_rows_uf<const W: usize>(rows: &[[u32; W]], mask: u32) -> usize {
+    let n = rows.len();
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut roots = n;
+    for (d, row) in rows.iter().enumerate() {
+        for (i, &e) in row.iter().enumerate() {
+            if mask & (1 << i) != 0 && e as usize > d {
+                let a = uf_find(&mut parent, d as u32);
+                let b = uf_find(&mut parent, e);
+                if a != b {
+                    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
+                    parent[hi as usize] = lo;
+                    roots -= 1;
+                }
+            }
+        }
+    }
+    roots
+}
+
 /// Number of orbits of the involution set `mask` (bits of indices `< w`).
 pub(crate) fn count_orbits(a: &[u32], w: usize, mask: u32) -> usize {
-    with_width!(a, w, |rows| count_rows(rows, mask), count_dyn(Dyn { a, w }, mask))
+    with_width!(a, w, |rows| count_rows_uf(rows, mask), count_dyn(Dyn { a, w }, mask))
 }
 
 /// Darts from which the work is worth a second thread.
@@ -181,7 +221,8 @@ fn threads_for(darts: usize, tasks: usize) -> usize {
     hw.min(tasks).min(2)
 }
 
-/// Orbit counts for several involution sets, on up to two threads.
+/// Orbit counts for several involution sets, on up to two threads taking the sets from a
+/// shared queue (one union-find scan per set).
 pub(crate) fn count_orbits_many(a: &[u32], w: usize, masks: &[u32]) -> Vec<usize> {
     let darts = a.len() / w.max(1);
     let threads = threads_for(darts, masks.len());
@@ -343,6 +384,65 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
     Ok(col)
 }
 
+/// Finds the root of `x` and the parity of `x` relative to it, compressing the path.
+#[inline]
+fn uf_find_parity(parent: &mut [u32], parity: &mut [u8], x: u32) -> (u32, u8) {
+    let mut r = x;
+    let mut acc = 0u8;
+    while parent[r as usize] != r {
+        acc ^= parity[r as usize];
+        r = parent[r as usize];
+    }
+    let mut y = x;
+    let mut a = acc;
+    while parent[y as usize] != y {
+        let next = parent[y as usize];
+        let py = parity[y as usize];
+        parent[y as usize] = r;
+        parity[y as usize] = a;
+        a ^= py;
+        y = next;
+    }
+    (r, acc)
+}
+
+/// Whether the map is orientable (BO Def. 7): a union-find with parities over one
+/// sequential scan, each non-fixed link `d -> alpha_i(d)` demanding opposite classes.
+fn orientable_rows<const W: usize>(rows: &[[u32; W]]) -> bool {
+    let n = rows.len();
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut parity = vec![0u8; n];
+    for (d, row) in rows.iter().enumerate() {
+        let (mut ra, mut pa) = uf_find_parity(&mut parent, &mut parity, d as u32);
+        for &e in row.iter() {
+            if e as usize <= d {
+                continue;
+            }
+            let (rb, pb) = uf_find_parity(&mut parent, &mut parity, e);
+            if ra == rb {
+                if pa == pb {
+                    return false;
+                }
+            } else {
+                // d and e must differ: the parity between the roots is pa ^ pb ^ 1
+                let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+                parent[hi as usize] = lo;
+                parity[hi as usize] = pa ^ pb ^ 1;
+                if hi == ra {
+                    pa ^= parity[hi as usize];
+                    ra = lo;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// Whether the map is orientable, by [`orientable_rows`] (or a traversal for large widths).
+pub(crate) fn is_orientable(a: &[u32], w: usize) -> bool {
+    with_width!(a, w, |rows| orientable_rows(rows), orient_dyn(Dyn { a, w }).is_ok())
+}
+
 /// See [`orient_rows`].
 pub(crate) fn orientation(a: &[u32], w: usize) -> Result<Vec<u8>, (u32, usize, u32)> {
     with_width!(a, w, |rows| orient_rows(rows), orient_dyn(Dyn { a, w }))
@@ -364,6 +464,19 @@ mod tests {
         assert!(b.test_and_set(129));
         assert_eq!(b.next_clear(0, 130), None);
         assert!(b.get(64));
+    }
+
+    #[test]
+    fn union_find_and_traversal_agree() {
+        for m in [crate::examples::fig1_surface(), crate::examples::klein_bottle(), crate::examples::cylinder()] {
+            let rows: &[[u32; 3]] = m.flat().as_chunks::<3>().0;
+            for mask in 0..8u32 {
+                assert_eq!(count_rows_uf(rows, mask), count_rows(rows, mask), "mask {mask:b}");
+            }
+            assert_eq!(orientable_rows(rows), orient_rows(rows).is_ok());
+        }
+        let k = crate::examples::klein_bottle();
+        assert!(!orientable_rows(k.flat().as_chunks::<3>().0));
     }
 
     #[test]

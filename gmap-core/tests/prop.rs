@@ -142,6 +142,7 @@ proptest! {
 
     #[test]
     fn orientation_is_a_proper_two_colouring(m in map_strategy(1..=4)) {
+        prop_assert_eq!(m.is_orientable(), m.orientation().is_ok());
         if let Ok(pos) = m.orientation() {
             for d in m.darts() {
                 for i in 0..=m.dim() {
