@@ -190,13 +190,18 @@ fn count_rows_uf<const W: usize>(rows: &[[u32; W]], mask: u32) -> usize {
     let mut parent: Vec<u32> = (0..n as u32).collect();
     let mut roots = n;
     for (d, row) in rows.iter().enumerate() {
+        // the root of d, found at its first link to a later dart and kept up to date
+        let mut a = u32::MAX;
         for (i, &e) in row.iter().enumerate() {
             if mask & (1 << i) != 0 && e as usize > d {
-                let a = uf_find(&mut parent, d as u32);
+                if a == u32::MAX {
+                    a = uf_find(&mut parent, d as u32);
+                }
                 let b = uf_find(&mut parent, e);
                 if a != b {
                     let (lo, hi) = if a < b { (a, b) } else { (b, a) };
                     parent[hi as usize] = lo;
+                    a = lo;
                     roots -= 1;
                 }
             }
