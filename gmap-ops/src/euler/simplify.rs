@@ -336,7 +336,13 @@ impl Work {
 /// again homology balls, so the cellular method applies to it. Points are dropped.
 ///
 /// Precondition: `map` is valid (BO Def. 1). Cells on a boundary (free darts) are left in
-/// place. O(R · N n) for R rounds (a handful in practice), O(N) extra memory.
+/// place. O(R · N n²) for R rounds (two to four in practice), O(N n) extra memory.
+///
+/// The greedy reduction stops at a local minimum where every remaining cell has degree
+/// above 2 or would cut a neighbour: hexahedral grids go below 2 % of their darts (the
+/// 40³ 3-torus to 27,664 of 3,072,000 darts, the 40³ ball to 52,704), but triangulated
+/// 3-manifolds stop at a one-vertex, one-volume map whose edges mostly have degree 3
+/// (9 % of the darts for the 600-cell, 25 % for `Hom_n9_655_compl_K4`).
 ///
 /// ```
 /// use gmap_core::GMap;
