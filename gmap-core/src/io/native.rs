@@ -100,6 +100,12 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     // every value takes at least two bytes: never reserve more than the file can fill
     let mut alpha: Vec<u32> = Vec::with_capacity(total.min(bytes.len() / 2 + w));
     for d in 0..darts {
+        // fast path: a line of exactly `w` in-range values separated by single spaces
+        if let Some(end) = fast_line(bytes, s.pos, w, darts, &mut alpha) {
+            s.pos = end;
+            s.line += 1;
+            continue;
+        }
         s.skip_empty_lines();
         if s.at_end() {
             return Err(err(s.line, ReadErrorKind::Truncated { expected: darts, found: d }));
@@ -142,6 +148,40 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
         .map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
     map.validate().map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
     Ok(map)
+}
+
+/// Parses a plain data line at `pos`: `w` decimal values below `darts` (at most 10 digits
+/// each) separated by single spaces and ended by `\n`. Pushes the values and returns the
+/// offset after the line, or returns `None` having pushed nothing, for the general path to
+/// handle the line (and report any error). This is the loop that loads big files.
+#[inline]
+fn fast_line(b: &[u8], pos: usize, w: usize, darts: u64, out: &mut Vec<u32>) -> Option<usize> {
+    let mark = out.len();
+    let mut p = pos;
+    for i in 0..w {
+        let start = p;
+        let mut v: u64 = 0;
+        while let Some(&c) = b.get(p) {
+            let digit = c.wrapping_sub(b'0');
+            if digit > 9 {
+                break;
+            }
+            v = v * 10 + digit as u64;
+            p += 1;
+            if p - start > 10 {
+                out.truncate(mark);
+                return None;
+            }
+        }
+        let sep = if i + 1 < w { b' ' } else { b'\n' };
+        if p == start || v >= darts || b.get(p) != Some(&sep) {
+            out.truncate(mark);
+            return None;
+        }
+        out.push(v as u32);
+        p += 1;
+    }
+    Some(p)
 }
 
 /// The `.gmap` text of a map (no comment line; points are not written). O(N n).
