@@ -26,6 +26,19 @@
 //! array touch one cache line per dart, while a slotmap lookup adds a version check and
 //! an indirection. [`GMap::to_dense`] and [`GMap::from_dense`] convert in one linear pass.
 //!
+//! Whole-map counts and checks avoid traversals where a sequential scan does: orbit counts
+//! ([`DenseMap::cell_counts_and_components`]) and orientability use union-find over the
+//! rows in order, validation checks `alpha_i alpha_j = alpha_j alpha_i` from the rows of a
+//! dart's neighbours in one fused pass, and maps of more than 65,536 darts use two threads.
+//! On the 40³ hexahedral grid (3,072,000 darts) this loads, counts and checks faster than
+//! CGAL's `Generalized_map` (see `benches/cells.rs` of the workspace).
+//!
+//! ## Files and fixtures
+//!
+//! [`io`] reads and writes the native `.gmap` format and Moka's `.moka`, with errors naming
+//! the file and line; [`examples`] rebuilds the small maps drawn in the border-operator
+//! paper (BO Fig. 1, 2, 4(b)) for tests and documentation.
+//!
 //! ## Example
 //!
 //! A square as a 2-map: one face with 8 darts, each edge 2 darts, each vertex 2 darts.
