@@ -389,58 +389,94 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
     Ok(col)
 }
 
-/// Finds the root of `x` and the parity of `x` relative to it, compressing the path.
+/// Joins darts `x` and `y` (absolute numbers, both `>= base`) of one union-find with
+/// parities stored from `base` on, demanding opposite classes; `false` on a conflict.
 #[inline]
-fn uf_find_parity(parent: &mut [u32], parity: &mut [u8], x: u32) -> (u32, u8) {
+fn uf_join_opposite(parent: &mut [u32], parity: &mut [u8], base: u32, x: u32, y: u32) -> bool {
+    let (ra, pa) = uf_find_parity_at(parent, parity, base, x);
+    let (rb, pb) = uf_find_parity_at(parent, parity, base, y);
+    if ra == rb {
+        return pa != pb;
+    }
+    let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+    parent[(hi - base) as usize] = lo;
+    parity[(hi - base) as usize] = pa ^ pb ^ 1;
+    true
+}
+
+/// Finds the root of `x` and the parity of `x` relative to it, compressing the path, in
+/// arrays holding darts `base..`.
+#[inline]
+fn uf_find_parity_at(parent: &mut [u32], parity: &mut [u8], base: u32, x: u32) -> (u32, u8) {
     let mut r = x;
     let mut acc = 0u8;
-    while parent[r as usize] != r {
-        acc ^= parity[r as usize];
-        r = parent[r as usize];
+    while parent[(r - base) as usize] != r {
+        acc ^= parity[(r - base) as usize];
+        r = parent[(r - base) as usize];
     }
     let mut y = x;
     let mut a = acc;
-    while parent[y as usize] != y {
-        let next = parent[y as usize];
-        let py = parity[y as usize];
-        parent[y as usize] = r;
-        parity[y as usize] = a;
+    while parent[(y - base) as usize] != y {
+        let k = (y - base) as usize;
+        let next = parent[k];
+        let py = parity[k];
+        parent[k] = r;
+        parity[k] = a;
         a ^= py;
         y = next;
     }
     (r, acc)
 }
 
-/// Whether the map is orientable (BO Def. 7): a union-find with parities over one
-/// sequential scan, each non-fixed link `d -> alpha_i(d)` demanding opposite classes.
+/// One half of the orientability scan: the links `d -> e`, `e > d`, of darts `lo..hi`,
+/// with the union-find of darts `lo..hi` in `parent`/`parity`. Links leaving the range
+/// (`e >= hi`) are returned for the merge. `None` on a conflict.
+fn orient_range<const W: usize>(
+    rows: &[[u32; W]],
+    lo: usize,
+    hi: usize,
+    parent: &mut [u32],
+    parity: &mut [u8],
+) -> Option<Vec<(u32, u32)>> {
+    let base = lo as u32;
+    let mut cross = Vec::new();
+    for (k, row) in rows[lo..hi].iter().enumerate() {
+        let d = (lo + k) as u32;
+        for &e in row.iter() {
+            if e <= d {
+                continue;
+            }
+            if e as usize >= hi {
+                cross.push((d, e));
+            } else if !uf_join_opposite(parent, parity, base, d, e) {
+                return None;
+            }
+        }
+    }
+    Some(cross)
+}
+
+/// Whether the map is orientable (BO Def. 7): a union-find with parities over sequential
+/// scans, each non-fixed link `d -> alpha_i(d)` demanding opposite classes. Big maps are
+/// split in two halves scanned on two threads, then the links between the halves are
+/// merged.
 fn orientable_rows<const W: usize>(rows: &[[u32; W]]) -> bool {
     let n = rows.len();
     let mut parent: Vec<u32> = (0..n as u32).collect();
     let mut parity = vec![0u8; n];
-    for (d, row) in rows.iter().enumerate() {
-        let (mut ra, mut pa) = uf_find_parity(&mut parent, &mut parity, d as u32);
-        for &e in row.iter() {
-            if e as usize <= d {
-                continue;
-            }
-            let (rb, pb) = uf_find_parity(&mut parent, &mut parity, e);
-            if ra == rb {
-                if pa == pb {
-                    return false;
-                }
-            } else {
-                // d and e must differ: the parity between the roots is pa ^ pb ^ 1
-                let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-                parent[hi as usize] = lo;
-                parity[hi as usize] = pa ^ pb ^ 1;
-                if hi == ra {
-                    pa ^= parity[hi as usize];
-                    ra = lo;
-                }
-            }
-        }
+    let mid = if threads_for(n, 2) == 2 { n / 2 } else { n };
+    let (pa, pb) = parent.split_at_mut(mid);
+    let (qa, qb) = parity.split_at_mut(mid);
+    let (first, second) = std::thread::scope(|s| {
+        let h = (mid < n).then(|| s.spawn(|| orient_range(rows, mid, n, pb, qb)));
+        let first = orient_range(rows, 0, mid, pa, qa);
+        (first, h.map(|h| h.join().expect("orientation thread")))
+    });
+    let Some(cross) = first else { return false };
+    if let Some(None) = second {
+        return false;
     }
-    true
+    cross.into_iter().all(|(d, e)| uf_join_opposite(&mut parent, &mut parity, 0, d, e))
 }
 
 /// Whether the map is orientable, by [`orientable_rows`] (or a traversal for large widths).
@@ -482,6 +518,51 @@ mod tests {
         }
         let k = crate::examples::klein_bottle();
         assert!(!orientable_rows(k.flat().as_chunks::<3>().0));
+    }
+
+    /// A ring of `n` squares (8 darts each) glued side to side, the last to the first with or
+    /// without a half twist: an annulus or a Möbius band.
+    fn ring_of_squares(n: u32, twist: bool) -> crate::DenseMap {
+        use crate::Dart;
+        let mut m = crate::DenseMap::new(2, 8 * n as usize);
+        for k in 0..n {
+            let b = 8 * k;
+            for j in 0..4 {
+                m.link(Dart(b + 2 * j), Dart(b + 2 * j + 1), 0);
+                m.link(Dart(b + 2 * j + 1), Dart(b + (2 * j + 2) % 8), 1);
+            }
+            let c = 8 * ((k + 1) % n);
+            let flip = twist && k + 1 == n;
+            let (x, y) = if flip { (c + 6, c + 7) } else { (c + 7, c + 6) };
+            m.link(Dart(b + 2), Dart(x), 2);
+            m.link(Dart(b + 3), Dart(y), 2);
+        }
+        m
+    }
+
+    #[test]
+    fn big_maps_take_the_two_thread_paths() {
+        for twist in [false, true] {
+            let m = ring_of_squares(10_000, twist);
+            assert!(m.dart_count() >= PARALLEL_FROM);
+            m.validate().unwrap();
+            assert_eq!(m.cell_counts_and_components(), (vec![20_000, 30_000, 10_000], 1));
+            assert_eq!(m.is_orientable(), !twist);
+            assert_eq!(m.orientation().is_ok(), !twist);
+        }
+        // a conflict inside the second half only
+        let mut m = ring_of_squares(10_000, false);
+        let base = m.dart_count() as u32;
+        let k = crate::examples::klein_bottle();
+        m.add_darts(8);
+        for d in 0..8u32 {
+            for i in 0..3 {
+                m.link(crate::Dart(base + d), crate::Dart(base + k.row(crate::Dart(d))[i]), i);
+            }
+        }
+        m.validate().unwrap();
+        assert!(!m.is_orientable());
+        assert_eq!(m.cell_counts_and_components(), (vec![20_001, 30_002, 10_001], 2));
     }
 
     #[test]
