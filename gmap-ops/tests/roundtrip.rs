@@ -114,7 +114,7 @@ fn off_roundtrip_is_isomorphic() {
 #[test]
 fn gmap_and_moka_roundtrips_are_isomorphic() {
     let dir = tempfile::tempdir().unwrap();
-    let objects = vec![
+    let objects = [
         build::schema("a b a B").unwrap(),
         build::cube(3).unwrap(),
         build::lens_space(5, 2).unwrap(),

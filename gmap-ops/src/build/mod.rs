@@ -247,8 +247,8 @@ pub fn grid(sizes: &[usize], periodic: &[bool]) -> Result<DenseMap, BuildError> 
                 let me = base + p * nc + eps;
                 let row = &mut alpha[me * w..(me + 1) * w];
                 row[0] = (base + p * nc + (eps ^ (1 << first))) as u32;
-                for i in 1..d {
-                    row[i] = (base + table.swap(p, i - 1) as usize * nc + eps) as u32;
+                for (i, slot) in row.iter_mut().enumerate().take(d).skip(1) {
+                    *slot = (base + table.swap(p, i - 1) as usize * nc + eps) as u32;
                 }
                 let side = if eps & (1 << ax) != 0 { hi } else { lo };
                 row[d] = match side {

@@ -144,8 +144,9 @@ pub fn default_max_darts(dim: usize) -> u64 {
     }
 }
 
-/// Bytes needed per dart while importing an n-dimensional complex: the involution row
-/// (`4 (n + 1)`) plus the scratch of the importer and of a first analysis pass (the same again).
+/// Bytes counted per dart when importing an n-dimensional complex: the involution row
+/// (`4 (n + 1)`) plus half as much again for the importer's tables (at most `9 (n + 1)`
+/// bytes per ordering of a facet, shared by all facets) and a first analysis pass.
 pub fn bytes_per_dart(dim: usize) -> u64 {
-    8 * (dim as u64 + 1)
+    6 * (dim as u64 + 1)
 }
