@@ -654,35 +654,65 @@ impl CellIncidence {
 /// O(N (n + log N)).
 pub fn cell_incidences(map: &DenseMap, i: usize) -> Result<Vec<CellIncidence>, CellDefect> {
     assert!(i >= 1 && i <= map.dim(), "incidences need 1 <= i <= n");
-    let n = map.dim();
-    let pos_hi = map.cell_orientation(i)?;
-    let pos_lo = map.cell_orientation(i - 1)?;
-    let cells_hi = map.cells(i);
-    let cells_lo = map.cells(i - 1);
-    let b_hi = map.partition(AlphaSet::above(i, n));
-    let b_lo = map.partition(AlphaSet::above(i - 1, n));
+    Ok(incidences_between(&DimData::new(map, i)?, &DimData::new(map, i - 1)?))
+}
+
+/// [`cell_incidences`] for every `i = 1..=n` (`result[i - 1]`), computing the cells, the
+/// elements of `B_i` and the orientation of each dimension once. O(N n (n + log N)).
+pub fn all_cell_incidences(map: &DenseMap) -> Result<Vec<Vec<CellIncidence>>, CellDefect> {
+    let mut out = Vec::with_capacity(map.dim());
+    let mut lo = DimData::new(map, 0)?;
+    for i in 1..=map.dim() {
+        let hi = DimData::new(map, i)?;
+        out.push(incidences_between(&hi, &lo));
+        lo = hi;
+    }
+    Ok(out)
+}
+
+/// What the incidences need of one dimension k: the k-cells, the elements of `B_k`
+/// (`<alpha_{k+1..n}>`-orbits) and the orientation of every k-cell (C1).
+struct DimData {
+    pos: bitvec::vec::BitVec,
+    cells: gmap_core::Partition,
+    b: gmap_core::Partition,
+}
+
+impl DimData {
+    fn new(map: &DenseMap, k: usize) -> Result<DimData, CellDefect> {
+        Ok(DimData {
+            pos: map.cell_orientation(k)?,
+            cells: map.cells(k),
+            b: map.partition(AlphaSet::above(k, map.dim())),
+        })
+    }
+}
+
+fn incidences_between(hi: &DimData, lo: &DimData) -> Vec<CellIncidence> {
     // the fixed element of B_{i-1} of each (i-1)-cell: the one holding its smallest dart
-    let chosen: Vec<u32> = cells_lo.reps.iter().map(|&r| b_lo.of[r as usize]).collect();
-    let mut pairs: Vec<(u32, u32)> = map.darts().map(|d| (cells_hi.of[d.index()], cells_lo.of[d.index()])).collect();
+    let chosen: Vec<u32> = lo.cells.reps.iter().map(|&r| lo.b.of[r as usize]).collect();
+    // both cells are unions of B_i elements, so one dart per element gives every pair
+    let mut pairs: Vec<(u32, u32)> =
+        hi.b.reps.iter().map(|&r| (hi.cells.of[r as usize], lo.cells.of[r as usize])).collect();
     pairs.sort_unstable();
     pairs.dedup();
     let mut out: Vec<CellIncidence> =
         pairs.iter().map(|&(upper, lower)| CellIncidence { upper, lower, plus: 0, minus: 0 }).collect();
-    for &r in &b_hi.reps {
+    for &r in &hi.b.reps {
         let d = r as usize;
-        let f = cells_lo.of[d];
-        if b_lo.of[d] != chosen[f as usize] {
+        let f = lo.cells.of[d];
+        if lo.b.of[d] != chosen[f as usize] {
             continue;
         }
-        let c = cells_hi.of[d];
+        let c = hi.cells.of[d];
         let k = pairs.binary_search(&(c, f)).expect("a dart's own pair is adherent");
-        if pos_hi[d] == pos_lo[d] {
+        if hi.pos[d] == lo.pos[d] {
             out[k].plus += 1;
         } else {
             out[k].minus += 1;
         }
     }
-    Ok(out)
+    out
 }
 
 impl ArchComplex {
@@ -703,8 +733,9 @@ impl ArchComplex {
             regions.extend((0..c as u64).map(|j| Region { id: offset[k] + j, dim: k }));
         }
         let mut entries = Vec::new();
-        for i in 1..=n {
-            for ci in cell_incidences(map, i)? {
+        for (k, list) in all_cell_incidences(map)?.into_iter().enumerate() {
+            let i = k + 1;
+            for ci in list {
                 entries.push((offset[i] + ci.upper as u64, offset[i - 1] + ci.lower as u64, ci.signed()));
             }
         }

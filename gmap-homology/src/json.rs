@@ -29,6 +29,7 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
+use serde::Deserialize;
 use serde_json::Value;
 use thiserror::Error;
 
@@ -67,58 +68,116 @@ fn schema(path: impl Into<String>, problem: impl Into<String>) -> JsonError {
     JsonError::Schema { path: path.into(), problem: problem.into() }
 }
 
-fn field<'a>(obj: &'a Value, path: &str, key: &str) -> Result<&'a Value, JsonError> {
-    let o = obj.as_object().ok_or_else(|| schema(path, "expected an object"))?;
-    o.get(key).ok_or_else(|| schema(format!("{path}.{key}"), "missing"))
+/// Where a value sits, formatted only when an error is reported.
+#[derive(Clone, Copy)]
+struct At<'a> {
+    list: &'a str,
+    index: usize,
 }
 
-fn as_u64(v: &Value, path: &str) -> Result<u64, JsonError> {
-    v.as_u64().ok_or_else(|| schema(path, format!("expected a non-negative integer, found {v}")))
+impl At<'_> {
+    fn path(self, key: &str) -> String {
+        format!("{}[{}].{key}", self.list, self.index)
+    }
 }
 
-fn as_i64(v: &Value, path: &str) -> Result<i64, JsonError> {
-    v.as_i64().ok_or_else(|| schema(path, format!("expected an integer in the range of i64, found {v}")))
+fn field<'a>(obj: &'a Value, at: At<'_>, key: &str) -> Result<&'a Value, JsonError> {
+    let o = obj.as_object().ok_or_else(|| schema(format!("{}[{}]", at.list, at.index), "expected an object"))?;
+    o.get(key).ok_or_else(|| schema(at.path(key), "missing"))
 }
 
-fn as_dim(v: &Value, path: &str) -> Result<usize, JsonError> {
-    let d = as_u64(v, path)?;
-    usize::try_from(d).ok().filter(|&d| d <= 1 << 20).ok_or_else(|| schema(path, format!("dimension {d} is too large")))
+fn get_u64(obj: &Value, at: At<'_>, key: &str) -> Result<u64, JsonError> {
+    let v = field(obj, at, key)?;
+    v.as_u64().ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer, found {v}")))
+}
+
+fn get_i64(obj: &Value, at: At<'_>, key: &str) -> Result<i64, JsonError> {
+    let v = field(obj, at, key)?;
+    v.as_i64().ok_or_else(|| schema(at.path(key), format!("expected an integer in the range of i64, found {v}")))
+}
+
+fn check_dim(d: u64, path: impl FnOnce() -> String) -> Result<usize, JsonError> {
+    usize::try_from(d)
+        .ok()
+        .filter(|&d| d <= 1 << 20)
+        .ok_or_else(|| schema(path(), format!("dimension {d} is too large")))
+}
+
+#[derive(Deserialize)]
+struct RawRegion {
+    id: u64,
+    dim: u64,
+}
+
+#[derive(Deserialize)]
+struct RawEntry {
+    from: u64,
+    to: u64,
+    weight: i64,
+}
+
+#[derive(Deserialize)]
+struct Raw {
+    dimension: Option<u64>,
+    regions: Vec<RawRegion>,
+    incidence: Vec<RawEntry>,
 }
 
 /// Parses and validates a `.json` architectural complex. See the module docs.
+///
+/// Well-formed input is deserialised straight into typed records (no intermediate tree);
+/// anything else is parsed again as a JSON tree to say exactly which field is wrong.
 pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
+    let raw: Raw = match serde_json::from_str(text) {
+        Ok(raw) => raw,
+        Err(_) => return read_json_slow(text),
+    };
+    let mut regions = Vec::with_capacity(raw.regions.len());
+    for (index, r) in raw.regions.iter().enumerate() {
+        let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
+        regions.push(Region { id: r.id, dim });
+    }
+    let dim = match raw.dimension {
+        Some(d) => check_dim(d, || "dimension".to_string())?,
+        None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
+    };
+    let entries = raw.incidence.iter().map(|e| (e.from, e.to, e.weight)).collect();
+    Ok(ArchComplex::try_new(dim, regions, entries)?)
+}
+
+/// The tree-based reader, for its precise messages on malformed input.
+fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
     let root: Value = serde_json::from_str(text).map_err(|e| JsonError::Syntax {
         line: e.line(),
         column: e.column(),
         message: e.to_string(),
     })?;
-    if !root.is_object() {
+    let Some(obj) = root.as_object() else {
         return Err(schema("top level", "expected an object with \"regions\" and \"incidence\""));
-    }
-    let regs =
-        field(&root, "top level", "regions")?.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
+    };
+    let regs = obj.get("regions").ok_or_else(|| schema("regions", "missing"))?;
+    let regs = regs.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
     let mut regions = Vec::with_capacity(regs.len());
-    for (k, r) in regs.iter().enumerate() {
-        let p = format!("regions[{k}]");
-        let id = as_u64(field(r, &p, "id")?, &format!("{p}.id"))?;
-        let dim = as_dim(field(r, &p, "dim")?, &format!("{p}.dim"))?;
+    for (index, r) in regs.iter().enumerate() {
+        let at = At { list: "regions", index };
+        let id = get_u64(r, at, "id")?;
+        let dim = check_dim(get_u64(r, at, "dim")?, || at.path("dim"))?;
         regions.push(Region { id, dim });
     }
-    let dim = match root.get("dimension") {
-        Some(v) => as_dim(v, "dimension")?,
+    let dim = match obj.get("dimension") {
+        Some(v) => {
+            let d =
+                v.as_u64().ok_or_else(|| schema("dimension", format!("expected a non-negative integer, found {v}")))?;
+            check_dim(d, || "dimension".to_string())?
+        }
         None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
     };
-    let inc = match root.get("incidence") {
-        Some(v) => v.as_array().ok_or_else(|| schema("incidence", "expected an array"))?.as_slice(),
-        None => return Err(schema("incidence", "missing")),
-    };
+    let inc = obj.get("incidence").ok_or_else(|| schema("incidence", "missing"))?;
+    let inc = inc.as_array().ok_or_else(|| schema("incidence", "expected an array"))?;
     let mut entries = Vec::with_capacity(inc.len());
-    for (k, e) in inc.iter().enumerate() {
-        let p = format!("incidence[{k}]");
-        let from = as_u64(field(e, &p, "from")?, &format!("{p}.from"))?;
-        let to = as_u64(field(e, &p, "to")?, &format!("{p}.to"))?;
-        let weight = as_i64(field(e, &p, "weight")?, &format!("{p}.weight"))?;
-        entries.push((from, to, weight));
+    for (index, e) in inc.iter().enumerate() {
+        let at = At { list: "incidence", index };
+        entries.push((get_u64(e, at, "from")?, get_u64(e, at, "to")?, get_i64(e, at, "weight")?));
     }
     Ok(ArchComplex::try_new(dim, regions, entries)?)
 }

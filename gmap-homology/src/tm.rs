@@ -42,7 +42,7 @@ use std::collections::BTreeMap;
 use gmap_core::DenseMap;
 use thiserror::Error;
 
-use crate::arch::{cell_incidences, ArchComplex, FromMapError};
+use crate::arch::{all_cell_incidences, ArchComplex, FromMapError};
 
 /// A set of cells with signed multiplicities: for each cell, the number of positive and of
 /// negative occurrences, kept apart (TM §IV). Cells are region indices of a [`TmModel`].
@@ -192,7 +192,7 @@ impl TmModel {
 
     /// The model of the cells of a G-map (cells indexed and identified as in
     /// [`ArchComplex::from_map`]: 0-cells first). Occurrences are the face-operator preimage
-    /// elements counted by sign ([`cell_incidences`]); needs condition C1.
+    /// elements counted by sign ([`crate::arch::cell_incidences`]); needs condition C1.
     pub fn from_map(map: &DenseMap) -> Result<TmModel, FromMapError> {
         let n = map.dim();
         let counts = map.cell_counts();
@@ -205,8 +205,9 @@ impl TmModel {
             cells.extend((0..c).map(|j| ((offset[k] + j) as u64, k)));
         }
         let mut inc = Vec::new();
-        for i in 1..=n {
-            for c in cell_incidences(map, i)? {
+        for (k, list) in all_cell_incidences(map)?.into_iter().enumerate() {
+            let i = k + 1;
+            for c in list {
                 inc.push((
                     offset[i] + c.upper as usize,
                     offset[i - 1] + c.lower as usize,
