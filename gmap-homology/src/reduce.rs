@@ -163,6 +163,7 @@ impl<R: Ring> Engine<'_, R> {
                 }
             };
             match mode {
+                Mode::Freeze if self.col_nf[c] == 2 && self.contract(c)? => {}
                 Mode::Freeze => {
                     // freeze a non-unit row if any, else the active row in most columns
                     let mut best: Option<(bool, u32, u32)> = None;
@@ -204,6 +205,32 @@ impl<R: Ring> Engine<'_, R> {
                     }
                 }
             }
+        }
+    }
+
+    /// A column with two active entries, both units: pivots on the one whose row is in the
+    /// fewest columns (an edge contraction: other columns keep their number of active
+    /// entries). Returns `Some(false)` when an entry is not a unit.
+    fn contract(&mut self, c: usize) -> Option<bool> {
+        let mut best: Option<(u32, u32)> = None;
+        for (r, v) in &self.cols[c] {
+            if self.state[*r as usize] != RowState::Active {
+                continue;
+            }
+            if !self.ring.is_unit(v) {
+                return Some(false);
+            }
+            let key = (self.row_count[*r as usize], *r);
+            if best.is_none_or(|b| key < b) {
+                best = Some(key);
+            }
+        }
+        match best {
+            Some((_, r)) => {
+                self.pivot(r as usize, c)?;
+                Some(true)
+            }
+            None => Some(false),
         }
     }
 

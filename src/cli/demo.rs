@@ -26,6 +26,8 @@ pub fn columns() -> Vec<Column> {
         },
         Column { header: "chi", cell: |m| m.euler_characteristic().to_string() },
         Column { header: "orientable", cell: |m| if m.is_orientable() { "yes" } else { "no" }.to_string() },
+        Column { header: "homology", cell: super::homology::demo_homology },
+        Column { header: "cellular = simplicial", cell: super::homology::demo_agreement },
     ]
 }
 

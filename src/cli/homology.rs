@@ -151,3 +151,31 @@ pub fn run(o: &Options) -> Result<()> {
     }
     Ok(())
 }
+
+/// The `homology` column of `gmap demo`: integer homology written as `(Z, Z + Z/2, 0)`, by
+/// the cellular method where C1 and C2 hold, else by the simplicial one (marked `*`).
+pub fn demo_homology(m: &DenseMap) -> String {
+    let cell = cellular_complex(m).ok().map(|c| homology_z(&c.chain));
+    match cell {
+        Some(Ok(h)) => h.to_string(),
+        Some(Err(e)) => format!("error: {e}"),
+        None => match homology_z(&gmap_homology::simplicial_complex(m)) {
+            Ok(h) => format!("{h}*"),
+            Err(e) => format!("error: {e}"),
+        },
+    }
+}
+
+/// The `cellular = simplicial` column of `gmap demo`: `yes`, `NO`, or `n/a` with the
+/// condition that keeps the cellular method from applying.
+pub fn demo_agreement(m: &DenseMap) -> String {
+    let s = homology_z(&gmap_homology::simplicial_complex(m));
+    match cellular_complex(m) {
+        Err(gmap_homology::PreconditionError::C1(_)) => "n/a (C1)".to_string(),
+        Err(gmap_homology::PreconditionError::C2 { .. }) => "n/a (C2)".to_string(),
+        Ok(c) => match (homology_z(&c.chain), s) {
+            (Ok(a), Ok(b)) if a == b => "yes".to_string(),
+            _ => "NO".to_string(),
+        },
+    }
+}

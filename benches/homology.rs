@@ -1,0 +1,97 @@
+//! Homology speed, side by side in one run:
+//!
+//! * integer homology of the periodic 40³ cube grid (the 3-torus: 512,000 cells,
+//!   3,072,000 darts) from the loaded map, by the cellular method (C1/C2 checks, border
+//!   operator, reduction) — to compare with GUDHI's Z/2 homology of the Freudenthal
+//!   triangulation of the same grid (`python3 ../shared/anchors/gudhi_grid.py 3 40 --periodic`);
+//! * the same map by the simplicial counterpart (BO §6), for the ratio simplicial / cellular;
+//! * `Hom_n9_655_compl_K4` (456,192 darts) by both methods.
+//!
+//! Inputs: `$GMAP_GRID_PERIODIC` (default `/work/grid40p.gmap`, made with
+//! `python3 ../shared/anchors/gmapgen.py cubegrid 3 40 --periodic` when missing) and
+//! `../shared/data/lutz/Hom_n9_655_compl_K4.facets`. A missing input is reported and skipped.
+//!
+//! `cargo bench --bench homology`
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use gmap_core::DenseMap;
+use gmap_homology::{cellular_complex, homology_z, homology_zp, simplicial_complex};
+
+fn grid_path() -> Option<PathBuf> {
+    let path = PathBuf::from(std::env::var("GMAP_GRID_PERIODIC").unwrap_or_else(|_| "/work/grid40p.gmap".into()));
+    if path.exists() {
+        return Some(path);
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/gmapgen.py");
+    let out = Command::new("python3").arg(&script).args(["cubegrid", "3", "40", "--periodic"]).output().ok()?;
+    if !out.status.success() {
+        eprintln!("homology bench: generator failed: {}", String::from_utf8_lossy(&out.stderr));
+        return None;
+    }
+    std::fs::write(&path, out.stdout).ok()?;
+    Some(path)
+}
+
+/// One timed run of each stage, printed before criterion's statistics.
+fn stages(name: &str, map: &DenseMap) {
+    let t = Instant::now();
+    let c = cellular_complex(map).expect("cellular method applies");
+    let t_build = t.elapsed();
+    let t = Instant::now();
+    let h = homology_z(&c.chain).expect("homology");
+    let t_red = t.elapsed();
+    let t = Instant::now();
+    let s = simplicial_complex(map);
+    let t_sbuild = t.elapsed();
+    let t = Instant::now();
+    let hs = homology_z(&s).expect("homology");
+    let t_sred = t.elapsed();
+    assert_eq!(h, hs, "cellular = simplicial");
+    let cell = t_build + t_red;
+    let simp = t_sbuild + t_sred;
+    eprintln!(
+        "homology bench {name}: {h}; cells {:?}: build {t_build:.2?} + reduce {t_red:.2?} = {cell:.2?}; \
+         simplices {:?}: build {t_sbuild:.2?} + reduce {t_sred:.2?} = {simp:.2?}; ratio {:.1}x",
+        c.chain.counts(),
+        s.counts(),
+        simp.as_secs_f64() / cell.as_secs_f64()
+    );
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("homology");
+    g.sample_size(10);
+    match grid_path().map(|p| gmap_core::io::read_gmap(&p)) {
+        Some(Ok(map)) => {
+            stages("grid40p", &map);
+            g.bench_function("grid40p_cellular_z", |b| {
+                b.iter(|| homology_z(&cellular_complex(&map).unwrap().chain).unwrap())
+            });
+            g.bench_function("grid40p_cellular_z2", |b| {
+                b.iter(|| homology_zp(&cellular_complex(&map).unwrap().chain, 2).unwrap())
+            });
+            g.bench_function("grid40p_simplicial_z", |b| b.iter(|| homology_z(&simplicial_complex(&map)).unwrap()));
+        }
+        Some(Err(e)) => eprintln!("homology bench: cannot read the grid: {e}"),
+        None => eprintln!("homology bench: no grid file, grid not measured"),
+    }
+    let hom = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/lutz/Hom_n9_655_compl_K4.facets");
+    match gmap_ops::import::read_facets(&hom, None) {
+        Ok(map) => {
+            stages("Hom_n9_655_compl_K4", &map);
+            g.bench_function("hom_n9_cellular_z", |b| {
+                b.iter(|| homology_z(&cellular_complex(&map).unwrap().chain).unwrap())
+            });
+            g.bench_function("hom_n9_simplicial_z", |b| b.iter(|| homology_z(&simplicial_complex(&map)).unwrap()));
+        }
+        Err(e) => eprintln!("homology bench: {}: {e}", hom.display()),
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
