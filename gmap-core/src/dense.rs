@@ -388,11 +388,7 @@ impl DenseMap {
     /// The numbers of cells of every dimension and the number of connected components,
     /// computed together (on two threads for big maps). O(N n^2).
     pub fn cell_counts_and_components(&self) -> (Vec<usize>, usize) {
-        let mut masks: Vec<u32> = (0..=self.dim).map(|i| AlphaSet::cell(i, self.dim).bits()).collect();
-        masks.push(AlphaSet::all(self.dim).bits());
-        let mut counts = crate::kernels::count_orbits_many(&self.alpha, self.dim + 1, &masks);
-        let components = counts.pop().unwrap_or(0);
-        (counts, components)
+        crate::kernels::counts_and_components(&self.alpha, self.dim + 1)
     }
 
     /// Euler characteristic: the alternating sum of the cell counts.
