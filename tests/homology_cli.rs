@@ -97,8 +97,11 @@ fn lutz_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/lutz")
 }
 
+/// A library entry: file, darts, Betti numbers, torsion (prime powers).
+type LutzCase = (String, u64, Vec<usize>, Vec<Vec<u64>>);
+
 /// The pseudo-manifolds of the library with their darts and stated homology.
-fn lutz_cases() -> Vec<(String, u64, Vec<usize>, Vec<Vec<u64>>)> {
+fn lutz_cases() -> Vec<LutzCase> {
     let readme = std::fs::read_to_string(lutz_dir().join("README.md")).expect("README of the Lutz library");
     let mut out = Vec::new();
     for line in readme.lines() {

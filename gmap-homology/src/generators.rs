@@ -13,6 +13,8 @@
 //! [`GENERATOR_CELL_LIMIT`] cells per dimension: cellular complexes of G-maps are small,
 //! which is where generators are worth reading.
 
+#![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
+
 use crate::chain::ChainComplex;
 use crate::homology::{is_prime, HomologyError};
 use crate::ring::{Euclid, Zi64, Zp};
@@ -61,22 +63,21 @@ pub fn generators(c: &ChainComplex, field: Option<u64>) -> Result<Vec<Generator>
 
 fn dense<R: Euclid>(ring: &R, c: &ChainComplex, k: usize) -> Vec<Vec<R::E>> {
     let m = c.boundary(k);
-    let mut a = vec![vec![ring.from_i64(0); m.cols()]; m.rows()];
+    let mut a = vec![vec![ring.of_i64(0); m.cols()]; m.rows()];
     for (i, j, v) in m.iter() {
-        a[i][j] = ring.from_i64(v);
+        a[i][j] = ring.of_i64(v);
     }
     a
 }
 
 fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator>, HomologyError>> {
     let n1 = c.counts().len();
-    let zero = ring.from_i64(0);
+    let zero = ring.of_i64(0);
     let mut out = Vec::new();
     for k in 0..n1 {
         let m = c.count(k);
         // basis P of C_k (by columns) adapted to the image of ∂_{k+1}
-        let mut p: Vec<Vec<R::E>> =
-            (0..m).map(|j| (0..m).map(|i| ring.from_i64(i64::from(i == j))).collect()).collect();
+        let mut p: Vec<Vec<R::E>> = (0..m).map(|j| (0..m).map(|i| ring.of_i64(i64::from(i == j))).collect()).collect();
         let diag = if k + 1 < n1 {
             let a = dense(ring, c, k + 1);
             let cols = c.count(k + 1);
@@ -88,7 +89,7 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
         // free part: kernel of ∂_k restricted to span(P_r..P_m)
         let rest = m - r;
         let mut t: Vec<Vec<R::E>> =
-            (0..rest).map(|j| (0..rest).map(|i| ring.from_i64(i64::from(i == j))).collect()).collect();
+            (0..rest).map(|j| (0..rest).map(|i| ring.of_i64(i64::from(i == j))).collect()).collect();
         let mut mcols: Vec<Vec<R::E>> = Vec::with_capacity(rest);
         if k >= 1 {
             let b = c.boundary(k);
@@ -96,8 +97,8 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
                 let mut v = vec![zero.clone(); b.rows()];
                 for (i, j, x) in b.iter() {
                     if !ring.is_zero(&col[j]) {
-                        let xe = ring.from_i64(x);
-                        let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &xe, &ring.from_i64(1))?, &col[j])?;
+                        let xe = ring.of_i64(x);
+                        let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &xe, &ring.of_i64(1))?, &col[j])?;
                         v[i] = nx;
                     }
                 }
@@ -158,7 +159,7 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
                     continue;
                 }
                 for i in 0..m {
-                    let v = ring.sub_mul(&z[i], &ring.sub_mul(&zero, coef, &ring.from_i64(1))?, &p[r + s][i])?;
+                    let v = ring.sub_mul(&z[i], &ring.sub_mul(&zero, coef, &ring.of_i64(1))?, &p[r + s][i])?;
                     z[i] = v;
                 }
             }
@@ -177,7 +178,7 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
             let b = c.boundary(k);
             let mut v = vec![zero.clone(); b.rows()];
             for (i, j, x) in b.iter() {
-                let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &ring.from_i64(x), &ring.from_i64(1))?, &z[j])?;
+                let nx = ring.sub_mul(&v[i], &ring.sub_mul(&zero, &ring.of_i64(x), &ring.of_i64(1))?, &z[j])?;
                 v[i] = nx;
             }
             if v.iter().any(|x| !ring.is_zero(x)) {

@@ -143,7 +143,7 @@ pub fn is_prime(p: u64) -> bool {
     }
     let mut d = 2u64;
     while d.saturating_mul(d) <= p {
-        if p % d == 0 {
+        if p.is_multiple_of(d) {
             return false;
         }
         d += 1;
@@ -183,7 +183,7 @@ pub(crate) fn survivors<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors
                 if elim_col[k - 1][r as usize] {
                     continue;
                 }
-                let x = ring.from_i64(v);
+                let x = ring.of_i64(v);
                 if !ring.is_zero(&x) {
                     col.push((r, x));
                 }
@@ -254,7 +254,7 @@ fn ranks<R: Ring>(
         row_ids.sort_unstable();
         row_ids.dedup();
         let dense_cols: Vec<&Col<R::E>> = res.remaining.iter().map(|(_, c)| c).filter(|c| !c.is_empty()).collect();
-        let mut block = vec![vec![ring.from_i64(0); dense_cols.len()]; row_ids.len()];
+        let mut block = vec![vec![ring.of_i64(0); dense_cols.len()]; row_ids.len()];
         for (j, c) in dense_cols.iter().enumerate() {
             for (r, v) in c.iter() {
                 let i = row_ids.binary_search(r).ok()?;
@@ -292,6 +292,7 @@ fn assemble(
     Ok(h)
 }
 
+#[allow(clippy::needless_range_loop)]
 fn integer_homology<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Homology, HomologyError>> {
     let s = survivors(ring, c)?;
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();

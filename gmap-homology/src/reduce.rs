@@ -323,7 +323,7 @@ impl<R: Ring> Engine<'_, R> {
                     i += 1;
                 } else if take_b {
                     let (r, ref x) = bcol[j];
-                    let zero = self.ring.from_i64(0);
+                    let zero = self.ring.of_i64(0);
                     let nv = self.ring.sub_mul(&zero, &lambda, x)?;
                     let ru = r as usize;
                     self.row_count[ru] += 1;

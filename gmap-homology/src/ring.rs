@@ -15,7 +15,7 @@ pub(crate) trait Ring {
     /// An element.
     type E: Clone + PartialEq + Debug;
     /// The image of an integer.
-    fn from_i64(&self, v: i64) -> Self::E;
+    fn of_i64(&self, v: i64) -> Self::E;
     /// Whether `a` is zero.
     fn is_zero(&self, a: &Self::E) -> bool;
     /// Whether `a` is invertible.
@@ -46,7 +46,7 @@ pub(crate) struct Zi64;
 
 impl Ring for Zi64 {
     type E = i64;
-    fn from_i64(&self, v: i64) -> i64 {
+    fn of_i64(&self, v: i64) -> i64 {
         v
     }
     fn is_zero(&self, a: &i64) -> bool {
@@ -87,7 +87,7 @@ pub(crate) struct ZBig;
 
 impl Ring for ZBig {
     type E = BigInt;
-    fn from_i64(&self, v: i64) -> BigInt {
+    fn of_i64(&self, v: i64) -> BigInt {
         BigInt::from(v)
     }
     fn is_zero(&self, a: &BigInt) -> bool {
@@ -150,7 +150,7 @@ impl Zp {
 
 impl Ring for Zp {
     type E = u64;
-    fn from_i64(&self, v: i64) -> u64 {
+    fn of_i64(&self, v: i64) -> u64 {
         v.rem_euclid(self.p as i64) as u64
     }
     fn is_zero(&self, a: &u64) -> bool {
@@ -197,7 +197,7 @@ mod tests {
         for a in 1..7 {
             assert_eq!(f.mul(a, f.inv(a)), 1);
         }
-        assert_eq!(f.from_i64(-1), 6);
+        assert_eq!(f.of_i64(-1), 6);
         assert_eq!(f.sub_mul(&1, &2, &4), Some(0));
     }
 

@@ -3,6 +3,8 @@
 //! Generic over the ring so one routine serves checked `i64` (returns `None` on overflow)
 //! and big integers (the fall-back). O(r · rows · cols · log(max entry)) for rank r.
 
+#![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
+
 use crate::ring::Euclid;
 
 /// The non-zero diagonal of the Smith normal form of a dense `rows × cols` matrix (given
@@ -32,7 +34,7 @@ pub(crate) fn smith_tracked<R: Euclid>(
     mut left: Option<&mut Vec<Vec<R::E>>>,
 ) -> Option<Vec<R::E>> {
     let rows = a.len();
-    let one = ring.from_i64(1);
+    let one = ring.of_i64(1);
     let mut diag = Vec::new();
     let mut t = 0;
     while t < rows && t < cols {
@@ -89,7 +91,7 @@ pub(crate) fn smith_tracked<R: Euclid>(
                 }
                 if let Some(l) = left.as_deref_mut() {
                     // row_i -= q row_t  <=>  col_t += q col_i
-                    let zero = ring.from_i64(0);
+                    let zero = ring.of_i64(0);
                     let mq = ring.sub_mul(&zero, &q, &one)?;
                     col_sub(ring, l, t, &mq, i)?;
                 }
