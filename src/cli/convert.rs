@@ -6,8 +6,13 @@
 
 use std::path::Path;
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
 use gmap_core::DenseMap;
+use gmap_homology::arch::ArchComplex;
+use gmap_homology::dot::write_dot;
+use gmap_homology::json::{write_json, write_text_atomically};
+use gmap_homology::lar::Lar;
+use gmap_ops::import::{FacePoset, PosetError};
 
 use super::load::{extension, load, Loaded};
 
@@ -15,6 +20,7 @@ use super::load::{extension, load, Loaded};
 pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),
+        Loaded::Complex(x) => write_complex(&x, output, max_darts),
     }
 }
 
@@ -25,7 +31,54 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
         "moka" => gmap_core::io::write_moka(m, output)?,
         "off" => gmap_ops::export::write_off(m, output)?,
         "facets" => gmap_ops::export::write_barycentric_facets(m, output)?,
+        "json" if is_lar(output) => write_text(output, &Lar::from_map(m).to_json()?)?,
+        "json" => write_text(output, &write_json(&complex_of(m, output)?))?,
+        "dot" => write_text(output, &write_dot(&complex_of(m, output)?))?,
         other => bail!("{}: unsupported output format '.{other}'", output.display()),
     }
     Ok(())
+}
+
+/// Whether the output is a LAR file (`.lar.json`) rather than an incidence graph.
+fn is_lar(p: &Path) -> bool {
+    p.to_string_lossy().to_lowercase().ends_with(".lar.json")
+}
+
+/// The architectural complex of a map's cells (AC Remark 3.3), or why it has none.
+fn complex_of(m: &DenseMap, output: &Path) -> Result<ArchComplex> {
+    ArchComplex::from_map(m).with_context(|| format!("{}: cannot write the incidence graph", output.display()))
+}
+
+fn write_text(path: &Path, text: &str) -> Result<()> {
+    write_text_atomically(path, text).with_context(|| format!("{}: cannot write", path.display()))
+}
+
+/// Writes an architectural complex: `.json` and `.dot` directly; any other format through
+/// its G-map (the flag construction of a regular complex's face poset, gmap-ops).
+pub fn write_complex(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Result<()> {
+    match extension(output).as_str() {
+        "json" if !is_lar(output) => write_text(output, &write_json(x)),
+        "dot" => write_text(output, &write_dot(x)),
+        _ => {
+            let m = complex_to_map(x, max_darts).with_context(|| {
+                format!("{}: the complex is not the face poset of a regular cell complex", output.display())
+            })?;
+            write_map(&m, output)
+        }
+    }
+}
+
+/// The G-map of an architectural complex whose entries between consecutive dimensions are
+/// the covering pairs of a regular cell complex's face poset.
+fn complex_to_map(x: &ArchComplex, max_darts: Option<u64>) -> Result<DenseMap, PosetError> {
+    let mut p = FacePoset::new();
+    for r in x.regions() {
+        p.add_cell(r.dim);
+    }
+    for e in x.entries() {
+        if x.region(e.from).dim == x.region(e.to).dim + 1 {
+            p.add_cover(e.from, e.to);
+        }
+    }
+    p.to_gmap(max_darts.unwrap_or_else(|| gmap_ops::import::default_max_darts(x.dim())))
 }

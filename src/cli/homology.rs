@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 use gmap_core::DenseMap;
+use gmap_homology::arch::{ArchComplex, ZeroWeightRule};
 use gmap_homology::{
     cellular_complex, homology_z, homology_zp, is_prime, simplicial_complex_with_simplices, ChainComplex, Homology,
 };
@@ -65,6 +66,27 @@ fn simplicial(map: &DenseMap) -> Named {
     Named { chain: s.chain, names }
 }
 
+/// The chain complex of an architectural complex (`.json`): the completion by zero of its
+/// partial boundary matrix (AC Def. 3.9), after Algorithm 8.16 with `--topological`.
+fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named> {
+    if o.method == Method::Simplicial {
+        bail!("{file}: an architectural complex has no simplicial counterpart; use --method cellular");
+    }
+    let x = if o.topological {
+        let t = x.topological(ZeroWeightRule::Closed).with_context(|| format!("{file}: Algorithm 8.16"))?;
+        for op in &t.operators {
+            progress(&format!("Algorithm 8.16: {op}"));
+        }
+        t.complex
+    } else {
+        x
+    };
+    let names = (0..=x.dim())
+        .map(|k| x.regions_of_dim(k).iter().map(|&r| format!("region {}", x.region(r as usize).id)).collect())
+        .collect();
+    Ok(Named { chain: x.chain_complex(), names })
+}
+
 fn compute(c: &ChainComplex, field: Option<u64>) -> Result<Homology> {
     progress("reducing");
     Ok(match field {
@@ -84,15 +106,18 @@ pub fn run(o: &Options) -> Result<()> {
     }
     let file = o.file.display().to_string();
     let loaded = load(&o.file, o.max_darts)?;
-    let map = match loaded {
-        Loaded::Map(m) => m,
-    };
-    if o.topological {
-        bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
-    }
-    let named = match o.method {
-        Method::Cellular => cellular(&map, &file)?,
-        Method::Simplicial => simplicial(&map),
+    let (dim, named) = match loaded {
+        Loaded::Map(map) => {
+            if o.topological {
+                bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
+            }
+            let named = match o.method {
+                Method::Cellular => cellular(&map, &file)?,
+                Method::Simplicial => simplicial(&map),
+            };
+            (map.dim(), named)
+        }
+        Loaded::Complex(x) => (x.dim(), complex(x, o, &file)?),
     };
     let h = compute(&named.chain, o.field).with_context(|| file.clone())?;
     let method = match o.method {
@@ -106,7 +131,7 @@ pub fn run(o: &Options) -> Result<()> {
     };
     if o.json {
         let mut v = json!({
-            "dimension": map.dim(),
+            "dimension": dim,
             "method": method,
             "coefficients": h.coefficients.to_string(),
             "betti": h.betti,
@@ -132,7 +157,7 @@ pub fn run(o: &Options) -> Result<()> {
         }
         println!("{v}");
     } else {
-        println!("dimension {}, method {method}, coefficients {}", map.dim(), h.coefficients);
+        println!("dimension {dim}, method {method}, coefficients {}", h.coefficients);
         for k in 0..h.betti.len() {
             println!("H_{k} = {}", h.group_string(k));
         }

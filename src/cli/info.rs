@@ -8,6 +8,7 @@ use std::time::Instant;
 
 use anyhow::Result;
 use gmap_core::DenseMap;
+use gmap_homology::arch::ArchComplex;
 use serde::Serialize;
 
 use super::load::{load, Loaded};
@@ -91,6 +92,15 @@ pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
                 print_lines(&map_lines(file, &info));
             }
         }
+        Loaded::Complex(x) => {
+            let info = complex_info(&x);
+            progress.step("done");
+            if json {
+                println!("{}", serde_json::to_string(&info)?);
+            } else {
+                print_lines(&complex_lines(file, &info));
+            }
+        }
     }
     Ok(())
 }
@@ -122,4 +132,69 @@ fn print_lines(lines: &[(&str, String)]) {
     for (k, v) in lines {
         println!("{k:<width$}  {v}");
     }
+}
+
+/// The characteristics of an architectural complex (`.json`): the keys of a map's
+/// (CONTRACT §1) with regions for cells, no darts, orientability undefined (`null`), then
+/// its own counts.
+#[derive(Debug, Serialize)]
+pub struct ComplexInfo {
+    /// n
+    pub dimension: usize,
+    /// always 0: a complex has regions, not darts
+    pub darts: usize,
+    /// `cells[i]`: number of i-regions
+    pub cells: Vec<usize>,
+    /// connected components of the incidence graph
+    pub components: usize,
+    /// AC Def. 3.1 holds (the reader refuses anything else)
+    pub valid: bool,
+    /// every region of dimension k >= 1 has a defined entry to a (k-1)-region
+    pub complete_boundaries: bool,
+    /// not defined for an architectural complex
+    pub orientable: Option<bool>,
+    /// the alternating sum of `cells` (AC Cor. 3.11)
+    pub euler_characteristic: i64,
+    /// `"architectural complex"`
+    pub kind: &'static str,
+    /// number of regions
+    pub regions: usize,
+    /// number of defined entries of the partial boundary matrix
+    pub incidences: usize,
+}
+
+/// Computes the characteristics of an architectural complex. O(R + E).
+pub fn complex_info(x: &ArchComplex) -> ComplexInfo {
+    let complete = (0..x.regions().len())
+        .all(|r| x.region(r).dim == 0 || x.down(r).iter().any(|e| x.region(e.to).dim + 1 == x.region(r).dim));
+    ComplexInfo {
+        dimension: x.dim(),
+        darts: 0,
+        cells: x.region_counts(),
+        components: x.component_count(),
+        valid: true,
+        complete_boundaries: complete,
+        orientable: None,
+        euler_characteristic: x.euler_characteristic(),
+        kind: "architectural complex",
+        regions: x.regions().len(),
+        incidences: x.entries().len(),
+    }
+}
+
+/// The human-readable lines of a complex's characteristics.
+fn complex_lines(file: &Path, info: &ComplexInfo) -> Vec<(&'static str, String)> {
+    let yes = |b: bool| if b { "yes".to_string() } else { "no".to_string() };
+    let cells = info.cells.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ");
+    vec![
+        ("file", file.display().to_string()),
+        ("kind", info.kind.to_string()),
+        ("dimension", info.dimension.to_string()),
+        ("regions (0..n)", cells),
+        ("incidences", info.incidences.to_string()),
+        ("components", info.components.to_string()),
+        ("valid", yes(info.valid)),
+        ("complete boundaries", yes(info.complete_boundaries)),
+        ("euler characteristic", info.euler_characteristic.to_string()),
+    ]
 }

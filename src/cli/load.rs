@@ -9,6 +9,8 @@ use gmap_core::DenseMap;
 pub enum Loaded {
     /// a generalized map
     Map(DenseMap),
+    /// an architectural complex / incidence graph (`.json`, CONTRACT §2)
+    Complex(gmap_homology::arch::ArchComplex),
 }
 
 /// The lower-cased extension of a path, after stripping a `#name` suffix (for `.lex`).
@@ -30,16 +32,21 @@ pub fn load(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
             Ok(Loaded::Map(gmap_ops::import::read_lex(&file, name.as_deref(), max_darts)?))
         }
         "off" => Ok(Loaded::Map(gmap_ops::import::read_off(path)?)),
+        "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
         other => bail!("{}: unsupported input format '.{other}'", path.display()),
     }
 }
 
-/// Splits `FILE.lex#name` into the file and the complex name (none without `#`).
+/// Splits `FILE.lex#name` into the file and the complex name (none without `#`). The split
+/// is at the first `#` after `.lex`, so names that hold `#` themselves (Lutz's
+/// `manifold_lex_d3_n5_#1`) stay whole.
 pub fn split_lex_name(path: &Path) -> (std::path::PathBuf, Option<String>) {
     let s = path.to_string_lossy();
-    match s.rsplit_once('#') {
-        Some((file, name)) if !name.is_empty() => (std::path::PathBuf::from(file), Some(name.to_string())),
-        Some((file, _)) => (std::path::PathBuf::from(file), None),
+    match s.to_ascii_lowercase().find(".lex#") {
+        Some(k) => {
+            let name = &s[k + 5..];
+            (std::path::PathBuf::from(&s[..k + 4]), (!name.is_empty()).then(|| name.to_string()))
+        }
         None => (path.to_path_buf(), None),
     }
 }
