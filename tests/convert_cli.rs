@@ -90,9 +90,9 @@ fn off_roundtrip_through_the_binary() {
 fn lex_by_name() {
     let dir = tempfile::tempdir().unwrap();
     let src = dir.path().join("two.lex");
-    std::fs::write(&src, "circle=[[1,2],[2,3],[1,3]]\nsphere=[[1,2,3],[1,2,4],\n[1,3,4],[2,3,4]]\n").unwrap();
+    std::fs::write(&src, "circle=[[1,2],[2,3],[1,3]]\nmanifold_2_4_#1=[[1,2,3],[1,2,4],\n[1,3,4],[2,3,4]]\n").unwrap();
     let out = dir.path().join("s.gmap");
-    let arg = format!("{}#sphere", p(&src));
+    let arg = format!("{}#manifold_2_4_#1", p(&src));
     let o = gmap(&["convert", &arg, p(&out)]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(gmap_core::io::read_gmap(&out).unwrap().cell_counts(), vec![4, 6, 4]);
