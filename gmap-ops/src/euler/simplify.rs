@@ -156,13 +156,10 @@ impl Work {
         // corners: for each k-cell that the collapse could cut, the pieces of the
         // neighbouring cells around it, orbits of every involution but alpha_nb and alpha_k
         let ks: Vec<usize> = (0..=n).filter(|&k| k != i && k != nb).collect();
-        let mut corners: Vec<(usize, Vec<u32>, UnionFind)> = ks
-            .iter()
-            .map(|&k| {
-                let (of, off, _) = self.partition(AlphaSet::all(n).without(nb).without(k));
-                (k, of, UnionFind::new(off.len() - 1))
-            })
-            .collect();
+        // computed on the first candidate only: a pass where no cell passes the cheap tests
+        // (the last round, typically) costs two partitions instead of n + 1
+        let mut corners: Vec<(usize, Vec<u32>, UnionFind)> = Vec::new();
+        let mut corners_ready = false;
         let mut stamp = vec![0u32; self.alive.len()];
         let mut seen = vec![0u64; self.alive.len()];
         let mut epoch = 0u64;
@@ -213,6 +210,16 @@ impl Work {
                 stamp[x as usize] = tag;
             }
             joins.clear();
+            if !corners_ready {
+                corners = ks
+                    .iter()
+                    .map(|&k| {
+                        let (of, off, _) = self.partition(AlphaSet::all(n).without(nb).without(k));
+                        (k, of, UnionFind::new(off.len() - 1))
+                    })
+                    .collect();
+                corners_ready = true;
+            }
             'ks: for (ci, (k, of, cuf)) in corners.iter_mut().enumerate() {
                 let k = *k;
                 let set: Vec<usize> = (0..=n).filter(|&j| j != i && j != k).collect();
