@@ -101,9 +101,6 @@ pub fn run(o: &Options) -> Result<()> {
             bail!("--field {p}: the field must be Z/P for a prime P below 2^31");
         }
     }
-    if o.simplify {
-        bail!("--simplify is not available yet (it needs the Euler-operator simplification of gmap-ops)");
-    }
     let file = o.file.display().to_string();
     let loaded = load(&o.file, o.max_darts)?;
     let (dim, named) = match loaded {
@@ -111,13 +108,25 @@ pub fn run(o: &Options) -> Result<()> {
             if o.topological {
                 bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
             }
+            // removals and contractions keep the homology and the cells' ball property
+            let map = if o.simplify {
+                progress("simplifying by removals and contractions of cells");
+                gmap_ops::euler::simplify(&map).0
+            } else {
+                map
+            };
             let named = match o.method {
                 Method::Cellular => cellular(&map, &file)?,
                 Method::Simplicial => simplicial(&map),
             };
             (map.dim(), named)
         }
-        Loaded::Complex(x) => (x.dim(), complex(x, o, &file)?),
+        Loaded::Complex(x) => {
+            if o.simplify {
+                bail!("{file}: --simplify applies to G-maps, not to architectural complexes (.json)");
+            }
+            (x.dim(), complex(x, o, &file)?)
+        }
     };
     let h = compute(&named.chain, o.field).with_context(|| file.clone())?;
     let method = match o.method {

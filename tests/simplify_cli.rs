@@ -1,0 +1,19 @@
+//! `gmap homology --simplify`: same groups as without, on a file with torsion.
+
+use std::process::Command;
+
+fn homology(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_gmap")).arg("homology").args(args).output().expect("run gmap");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+#[test]
+fn simplify_keeps_the_groups() {
+    let file = "/work/shared/data/lutz/Hom_C5_K4.facets";
+    let direct = homology(&[file, "--json"]);
+    let reduced = homology(&[file, "--json", "--simplify"]);
+    assert_eq!(direct, reduced);
+    assert!(reduced.contains("\"torsion\":[[],[2],[],[]]"), "{reduced}");
+    assert!(reduced.contains("\"betti\":[1,0,0,1]"), "{reduced}");
+}
