@@ -1,11 +1,17 @@
 //! Tight loops behind the whole-map queries of [`crate::DenseMap`].
 //!
 //! The involution array is viewed as rows `[u32; W]` with `W = n + 1` fixed at compile
-//! time (dimensions 0 to 7 are specialised; larger ones take a generic path), so one row
-//! read fetches every `alpha_i` of a dart and the inner loops unroll. Visited sets are
-//! plain `u64` bit sets (N/8 bytes, small enough to stay in cache on maps of millions of
-//! darts). Whole-map counts run on up to two threads, one orbit family per task, and the
-//! validity check splits the darts in two halves.
+//! time (dimensions 0 to 7 are specialised; larger ones take a generic traversal path), so
+//! one row read fetches every `alpha_i` of a dart and the inner loops unroll.
+//! - Orbit counts: union-find over one sequential scan of the rows per involution set
+//!   (the smaller root wins, paths are halved); the components continue the n-cells'
+//!   union-find with the links of `alpha_n`. O(N n α(N)) per set.
+//! - Orientability: union-find with parities; big maps are cut in two halves scanned on two
+//!   threads, then the links between the halves are merged.
+//! - Validity: one fused pass reading each dart's row and its neighbours' rows, checking
+//!   ranges, involutions and `alpha_i alpha_j = alpha_j alpha_i` (j >= i + 2); two halves
+//!   on two threads.
+//! Maps of at least 65,536 darts use two threads when the machine has them.
 //!
 //! Every kernel expects a map whose links are in range (a validated map); on an invalid map
 //! they may panic on an index, never read out of bounds.
