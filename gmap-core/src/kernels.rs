@@ -11,6 +11,7 @@
 //! - Validity: one fused pass reading each dart's row and its neighbours' rows, checking
 //!   ranges, involutions and `alpha_i alpha_j = alpha_j alpha_i` (j >= i + 2); two halves
 //!   on two threads.
+//!
 //! Maps of at least 65,536 darts use two threads when the machine has them.
 //!
 //! Every kernel expects a map whose links are in range (a validated map); on an invalid map
