@@ -2,7 +2,7 @@
 //! target < 2 s) and the Freudenthal triangulation of the 40³ grid (384,000 tetrahedra,
 //! 9,216,000 darts; target < 3 s), each from its file to a [`gmap_core::DenseMap`].
 //!
-//! `GMAP_LUTZ` names the folder of the Lutz files (default `/work/shared/data/lutz`); the
+//! `GMAP_LUTZ` names the folder of the Lutz files (default `../shared/data/lutz` beside the checkout); the
 //! grid's facets are written by this bench into a temporary folder (the same facets as
 //! `anchors/gudhi_grid.py 3 40 --facets`). A missing Lutz folder skips that benchmark.
 
@@ -42,7 +42,10 @@ fn freudenthal_facets(k: usize) -> String {
 fn bench_import(c: &mut Criterion) {
     let mut g = c.benchmark_group("import");
     g.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(15));
-    let lutz = PathBuf::from(std::env::var("GMAP_LUTZ").unwrap_or_else(|_| "/work/shared/data/lutz".into()));
+    let lutz = PathBuf::from(
+        std::env::var("GMAP_LUTZ")
+            .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz").into()),
+    );
     let s2p = lutz.join("S2xpoincare.facets");
     if s2p.exists() {
         g.bench_function("S2xpoincare", |b| {

@@ -38,7 +38,7 @@ fn bench(c: &mut Criterion) {
     g.bench_function(format!("torus{k}/direct_cellular"), |b| b.iter(|| direct(&torus)));
     g.bench_function(format!("torus{k}/simplify_then_cellular"), |b| b.iter(|| reduced(&torus)));
     g.bench_function(format!("torus{k}/simplify_only"), |b| b.iter(|| simplify(&torus)));
-    let lutz = std::path::Path::new("/work/shared/data/lutz/S_3_100_4850.facets");
+    let lutz = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz/S_3_100_4850.facets"));
     if let Ok(m) = read_facets(lutz, None) {
         g.bench_function("S_3_100_4850/direct_cellular", |b| b.iter(|| direct(&m)));
         g.bench_function("S_3_100_4850/simplify_then_cellular", |b| b.iter(|| reduced(&m)));

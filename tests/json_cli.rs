@@ -9,7 +9,7 @@ use gmap_homology::arch::ArchComplex;
 use gmap_homology::json::{read_json, write_json};
 use gmap_homology::{cellular_complex, homology_z, Homology};
 
-const LUTZ: &str = "/work/shared/data/lutz";
+const LUTZ: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz");
 
 fn round_trip(name: &str, m: &DenseMap) -> Option<Homology> {
     let cellular = cellular_complex(m);

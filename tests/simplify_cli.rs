@@ -10,7 +10,7 @@ fn homology(args: &[&str]) -> String {
 
 #[test]
 fn simplify_keeps_the_groups() {
-    let file = "/work/shared/data/lutz/Hom_C5_K4.facets";
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz/Hom_C5_K4.facets");
     let direct = homology(&[file, "--json"]);
     let reduced = homology(&[file, "--json", "--simplify"]);
     assert_eq!(direct, reduced);

@@ -242,7 +242,7 @@ fn apply(g: &mut GMap, op: u8, pick: usize, pick2: usize, dim: usize) -> Option<
     let e = ds[pick2 % ds.len()];
     let n = g.dim();
     let i = dim % (n + 1);
-    let r = match op % 6 {
+    match op % 6 {
         0 => {
             assert_eq!(can_insert_vertex(g, d), try_insert_vertex(&mut g.clone(), d).is_ok());
             try_insert_vertex(g, d).ok().map(|o| o.vector)
@@ -261,8 +261,7 @@ fn apply(g: &mut GMap, op: u8, pick: usize, pick2: usize, dim: usize) -> Option<
             try_contract_cell(g, d, i).ok().map(|o| o.vector)
         }
         _ => try_split_cell(g, &[d, e], i).ok().map(|o| o.vector),
-    };
-    r
+    }
 }
 
 proptest! {

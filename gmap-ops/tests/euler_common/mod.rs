@@ -38,10 +38,10 @@ pub fn cube_grid(d: usize, k: usize, periodic: bool) -> DenseMap {
                 let me = dart(c, eps, pi) as usize;
                 let row = &mut flat[me * (d + 1)..(me + 1) * (d + 1)];
                 row[0] = dart(c, eps ^ (1 << p[0]), pi);
-                for i in 1..d {
+                for (i, slot) in row.iter_mut().enumerate().take(d).skip(1) {
                     let mut q = p.clone();
                     q.swap(i - 1, i);
-                    row[i] = dart(c, eps, pidx[&q]);
+                    *slot = dart(c, eps, pidx[&q]);
                 }
                 let ax = p[d - 1];
                 let up = eps >> ax & 1 == 1;
