@@ -457,18 +457,28 @@ impl DenseMap {
     /// Fails, naming the cell, where a dart is k-free for some `k < i` or the colouring
     /// conflicts (a non-orientable or folded cell).
     pub fn cell_orientation(&self, i: usize) -> Result<BitVec, CellDefect> {
-        assert!(i <= self.dim);
+        self.oriented_cells(i).map(|(_, positive)| positive)
+    }
+
+    /// The i-cells and their orientation as compacted cells, from one traversal: the
+    /// partition numbers the cells as [`DenseMap::cells`] does, and the bits are those of
+    /// [`DenseMap::cell_orientation`]. Fails like `cell_orientation`. O(N n).
+    pub fn oriented_cells(&self, i: usize) -> Result<(Partition, BitVec), CellDefect> {
+        assert!(i <= self.dim, "cell dimension {i} > map dimension {}", self.dim);
         let w = self.dim + 1;
         let n = self.dart_count();
         let a = &self.alpha;
-        let mut seen: BitVec = BitVec::repeat(false, n);
+        let mut of = vec![UNSET; n];
+        let mut reps = Vec::new();
         let mut pos: BitVec = BitVec::repeat(false, n);
         let mut stack: Vec<u32> = Vec::new();
         for d in 0..n {
-            if seen[d] {
+            if of[d] != UNSET {
                 continue;
             }
-            seen.set(d, true);
+            let id = reps.len() as u32;
+            reps.push(d as u32);
+            of[d] = id;
             pos.set(d, true);
             stack.push(d as u32);
             while let Some(x) = stack.pop() {
@@ -479,12 +489,12 @@ impl DenseMap {
                         continue;
                     }
                     let y = a[x * w + k] as usize;
-                    let want = if k < i { !c } else { c };
                     if k < i && y == x {
                         return Err(CellDefect::IncompleteBoundary { dim: i, dart: d as u32, alpha: k });
                     }
-                    if !seen[y] {
-                        seen.set(y, true);
+                    let want = if k < i { !c } else { c };
+                    if of[y] == UNSET {
+                        of[y] = id;
                         pos.set(y, want);
                         stack.push(y as u32);
                     } else if pos[y] != want {
@@ -493,7 +503,7 @@ impl DenseMap {
                 }
             }
         }
-        Ok(pos)
+        Ok((Partition { of, reps }, pos))
     }
 
     /// Checks C1 for every dimension; returns the first failing cell.

@@ -65,47 +65,8 @@ impl OrientedCells {
 /// Numbering and signs agree with `DenseMap::cells(i)` and `DenseMap::cell_orientation(i)`.
 /// O(N n).
 pub fn oriented_cells(map: &DenseMap, i: usize) -> Result<OrientedCells, CellDefect> {
-    let n = map.dim();
-    assert!(i <= n, "cell dimension {i} > map dimension {n}");
-    let w = n + 1;
-    let a = map.flat();
-    let count = map.dart_count();
-    let mut of = vec![u32::MAX; count];
-    let mut reps = Vec::new();
-    let mut positive: BitVec = BitVec::repeat(false, count);
-    let mut stack: Vec<u32> = Vec::new();
-    for d in 0..count {
-        if of[d] != u32::MAX {
-            continue;
-        }
-        let id = reps.len() as u32;
-        reps.push(d as u32);
-        of[d] = id;
-        positive.set(d, true);
-        stack.push(d as u32);
-        while let Some(x) = stack.pop() {
-            let x = x as usize;
-            let c = positive[x];
-            for k in 0..w {
-                if k == i {
-                    continue;
-                }
-                let y = a[x * w + k] as usize;
-                if k < i && y == x {
-                    return Err(CellDefect::IncompleteBoundary { dim: i, dart: d as u32, alpha: k });
-                }
-                let want = if k < i { !c } else { c };
-                if of[y] == u32::MAX {
-                    of[y] = id;
-                    positive.set(y, want);
-                    stack.push(y as u32);
-                } else if positive[y] != want {
-                    return Err(CellDefect::NotOrientable { dim: i, dart: d as u32, alpha: k, at: x as u32 });
-                }
-            }
-        }
-    }
-    Ok(OrientedCells { dim: i, cells: Partition { of, reps }, positive })
+    let (cells, positive) = map.oriented_cells(i)?;
+    Ok(OrientedCells { dim: i, cells, positive })
 }
 
 /// Checks C2 for the i-cells of `map` (C1 assumed, as checked by [`oriented_cells`]).
