@@ -468,6 +468,19 @@ impl DenseMap {
         let w = self.dim + 1;
         let n = self.dart_count();
         let a = &self.alpha;
+        if n < (1 << 31) {
+            if let Some(r) = crate::kernels::oriented_cells(a, w, i) {
+                return match r {
+                    Ok((of, reps, words)) => {
+                        let mut pos: BitVec = BitVec::from_vec(words);
+                        pos.truncate(n);
+                        Ok((Partition { of, reps }, pos))
+                    }
+                    Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
+                    Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
+                };
+            }
+        }
         let mut of = vec![UNSET; n];
         let mut reps = Vec::new();
         let mut pos: BitVec = BitVec::repeat(false, n);

@@ -461,6 +461,74 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
     Ok(col)
 }
 
+/// Bit 31 of a packed cell number: the dart is in the negative class of its cell.
+const NEG: u32 = 1 << 31;
+
+/// i-cells oriented as compacted cells (condition C1): `(of, reps, positive words)`, cells
+/// numbered by smallest dart, that dart positive; or the first defect in traversal order as
+/// `(start dart, alpha, at, free)` — `free` when `alpha_k(at) = at` for `k < i`.
+/// One depth-first traversal; the cell number and the sign share one `u32` per dart so a
+/// visit touches one word.
+#[allow(clippy::type_complexity)]
+fn oriented_rows<const W: usize>(
+    rows: &[[u32; W]],
+    i: usize,
+) -> Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)> {
+    let n = rows.len();
+    let mut of = vec![u32::MAX; n];
+    let mut reps: Vec<u32> = Vec::new();
+    let mut stack: Vec<u32> = Vec::with_capacity(1024);
+    for d in 0..n {
+        if of[d] != u32::MAX {
+            continue;
+        }
+        let id = reps.len() as u32;
+        reps.push(d as u32);
+        of[d] = id;
+        stack.push(d as u32);
+        while let Some(x) = stack.pop() {
+            let cx = of[x as usize];
+            let row = &rows[x as usize];
+            for (k, &y) in row.iter().enumerate() {
+                if k == i {
+                    continue;
+                }
+                if k < i && y == x {
+                    return Err((d as u32, k, x, true));
+                }
+                let want = if k < i { cx ^ NEG } else { cx };
+                let cy = of[y as usize];
+                if cy == u32::MAX {
+                    of[y as usize] = want;
+                    stack.push(y);
+                } else if cy != want {
+                    return Err((d as u32, k, x, false));
+                }
+            }
+        }
+    }
+    let bits = usize::BITS as usize;
+    let mut words = vec![0usize; n.div_ceil(bits)];
+    for (d, c) in of.iter_mut().enumerate() {
+        if *c & NEG == 0 {
+            words[d / bits] |= 1 << (d % bits);
+        } else {
+            *c &= !NEG;
+        }
+    }
+    Ok((of, reps, words))
+}
+
+/// [`oriented_rows`] for any width: `None` when the width has no specialised path.
+#[allow(clippy::type_complexity)]
+pub(crate) fn oriented_cells(
+    a: &[u32],
+    w: usize,
+    i: usize,
+) -> Option<Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)>> {
+    with_width!(a, w, |rows| Some(oriented_rows(rows, i)), None)
+}
+
 /// Joins darts `x` and `y` (absolute numbers, both `>= base`) of one union-find with
 /// parities stored from `base` on, demanding opposite classes; `false` on a conflict.
 #[inline]

@@ -47,6 +47,7 @@ pub mod homology;
 pub mod incidence;
 pub mod json;
 pub mod lar;
+mod morse;
 pub mod precond;
 pub(crate) mod reduce;
 pub(crate) mod ring;

@@ -181,6 +181,73 @@ impl SparseMatrix {
         Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
     }
 
+    /// Like [`SparseMatrix::try_from_triplets`] for `(row, col, value)` entries with `u32`
+    /// indices, by two stable counting sorts (rows, then columns) instead of a comparison
+    /// sort: O(nnz + rows + cols). Duplicates are summed (overflow checked), zeros dropped.
+    pub fn try_from_entries(rows: usize, cols: usize, entries: &[(u32, u32, i64)]) -> Result<Self, SparseError> {
+        let mut by_row = vec![0usize; rows + 1];
+        let mut by_col = vec![0usize; cols + 1];
+        for &(r, c, _) in entries {
+            if c as usize >= cols {
+                return Err(SparseError::ColOutOfRange { row: r as usize, col: c as usize, cols });
+            }
+            if r as usize >= rows {
+                return Err(SparseError::RowOutOfRange { col: c as usize, row: r as usize, rows });
+            }
+            by_row[r as usize + 1] += 1;
+            by_col[c as usize + 1] += 1;
+        }
+        for i in 0..rows {
+            by_row[i + 1] += by_row[i];
+        }
+        for j in 0..cols {
+            by_col[j + 1] += by_col[j];
+        }
+        // stable by row
+        let mut tmp: Vec<(u32, u32, i64)> = vec![(0, 0, 0); entries.len()];
+        for &e in entries {
+            let p = &mut by_row[e.0 as usize];
+            tmp[*p] = e;
+            *p += 1;
+        }
+        // stable by column: rows ascend within each column
+        let mut row_idx = vec![0u32; entries.len()];
+        let mut vals = vec![0i64; entries.len()];
+        let mut fill = by_col.clone();
+        for &(r, c, v) in &tmp {
+            let p = &mut fill[c as usize];
+            row_idx[*p] = r;
+            vals[*p] = v;
+            *p += 1;
+        }
+        drop(tmp);
+        // merge duplicates and drop zeros, compacting in place
+        let mut col_ptr = vec![0usize; cols + 1];
+        let mut out = 0usize;
+        for j in 0..cols {
+            let mut k = by_col[j];
+            let end = by_col[j + 1];
+            while k < end {
+                let r = row_idx[k];
+                let mut v = vals[k];
+                k += 1;
+                while k < end && row_idx[k] == r {
+                    v = v.checked_add(vals[k]).ok_or(SparseError::Overflow { row: r as usize, col: j })?;
+                    k += 1;
+                }
+                if v != 0 {
+                    row_idx[out] = r;
+                    vals[out] = v;
+                    out += 1;
+                }
+            }
+            col_ptr[j + 1] = out;
+        }
+        row_idx.truncate(out);
+        vals.truncate(out);
+        Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
+    }
+
     /// A matrix from sorted columns, each a list of `(row, value)` with strictly increasing
     /// rows and non-zero values (checked). O(rows + nnz).
     pub fn try_from_columns(rows: usize, columns: &[Vec<(u32, i64)>]) -> Result<Self, SparseError> {

@@ -1,0 +1,306 @@
+//! Fill-free reductions: collapses and coreductions over the whole complex at once.
+//!
+//! ## Why they cost nothing
+//!
+//! Eliminating a pair `(a, b)` — `a` a (k-1)-cell, `b` a k-cell, `∂_k[a, b]` a unit — leaves
+//! a complex with the same homology whose matrix `∂_k` changes by `c ↦ c - (∂[a, c] / ∂[a, b]) ∂b`
+//! on the other k-cells `c` (see [`crate::reduce`]). Two kinds of pairs make that update
+//! vanish on the surviving cells:
+//!
+//! * a **collapse**: `b` is the only surviving coface of `a`, so `∂[a, c] = 0` for every other
+//!   `c` (an elementary collapse through the free face `a`);
+//! * a **coreduction**: `a` is the only surviving face of `b`, so `∂b` restricted to the
+//!   survivors is `±a`, and `c - λ ∂b` only loses its entry in row `a`.
+//!
+//! Hence after any sequence of such pairs the reduced complex is simply the **restriction of
+//! the original matrices to the surviving cells**: no arithmetic, no fill, only counters. The
+//! pass keeps, per cell, the number of surviving faces and cofaces with a non-zero entry,
+//! and a work queue of cells where either count is 1; it is O(entries) in all.
+//!
+//! ## How a closed complex starts
+//!
+//! A closed manifold has no free face and no cell with a single face. The pass therefore
+//! first sets aside one vertex per connected component of the 1-skeleton: with `∂_1` made of
+//! columns `v - w` (or empty), `H(X) = H(X, {v_1..v_c}) ⊕ Z^c` in degree 0, and the relative
+//! complex is the restriction to the other cells. The set-aside vertices stay in the output
+//! as isolated cells (each gives its `Z` in `H_0`). From there the edges at those vertices
+//! become coreducible, and coreductions sweep the complex like a breadth-first spanning tree
+//! in each dimension in turn — Mrozek and Batko's coreduction algorithm. On manifolds,
+//! cube grids and the simplicial counterparts of G-maps what survives is a handful of cells.
+
+use std::collections::VecDeque;
+
+use crate::chain::ChainComplex;
+use crate::ring::Ring;
+use crate::sparse::SparseMatrix;
+
+const ALIVE: u8 = 0;
+const PAIRED: u8 = 1;
+/// a vertex set aside for `H_0`: survives, but takes part in no entry
+const SET_ASIDE: u8 = 2;
+/// bit 31 of an entry: its value is a unit
+const UNIT: u32 = 1 << 31;
+/// cells and entries are numbered in 31 bits
+const LIMIT: usize = 1 << 31;
+
+/// The complex left by [`prereduce`]: the restriction of the input to the surviving cells.
+#[derive(Debug)]
+pub(crate) struct Restricted {
+    /// the restricted complex (renumbered cells)
+    pub chain: ChainComplex,
+    /// `ids[k][j]`: the input's number of surviving k-cell `j`
+    pub ids: Vec<Vec<u32>>,
+}
+
+/// Collapses and coreductions to exhaustion (entries judged over `ring`: an entry that is zero
+/// in the ring is no entry; only unit entries are paired). O(total entries + cells).
+pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
+    let counts = c.counts();
+    let n1 = counts.len();
+    let total: usize = counts.iter().sum();
+    let nnz: usize = (1..n1).map(|k| c.boundary(k).nnz()).sum();
+    if total >= LIMIT || nnz >= LIMIT {
+        // beyond u32 indices: hand the complex on as it is
+        let ids = counts.iter().map(|&m| (0..m as u32).collect()).collect();
+        return Restricted { chain: c.clone(), ids };
+    }
+    let mut off = Vec::with_capacity(n1 + 1);
+    let mut acc = 0u32;
+    for &m in counts {
+        off.push(acc);
+        acc += m as u32;
+    }
+    off.push(acc);
+    // faces of every cell (global ids, bit 31 set for a unit entry), ring-nonzero entries only
+    let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
+    let mut faces: Vec<u32> = Vec::with_capacity(nnz);
+    fptr.extend(std::iter::repeat_n(0, counts.first().copied().unwrap_or(0) + 1));
+    for k in 1..n1 {
+        let m = c.boundary(k);
+        let base = off[k - 1];
+        for j in 0..m.cols() {
+            let (ri, rv) = m.col(j);
+            for (&r, &v) in ri.iter().zip(rv) {
+                let x = ring.of_i64(v);
+                if !ring.is_zero(&x) {
+                    faces.push((base + r) | if ring.is_unit(&x) { UNIT } else { 0 });
+                }
+            }
+            fptr.push(faces.len() as u32);
+        }
+    }
+    // cofaces: the transpose
+    let mut cptr = vec![0u32; total + 1];
+    for &r in &faces {
+        cptr[(r & !UNIT) as usize + 1] += 1;
+    }
+    for i in 0..total {
+        cptr[i + 1] += cptr[i];
+    }
+    let mut cofaces = vec![0u32; faces.len()];
+    {
+        let mut fill = cptr.clone();
+        for col in 0..total {
+            for &r in &faces[fptr[col] as usize..fptr[col + 1] as usize] {
+                let slot = &mut fill[(r & !UNIT) as usize];
+                cofaces[*slot as usize] = col as u32 | (r & UNIT);
+                *slot += 1;
+            }
+        }
+    }
+    let mut nb: Vec<u32> = fptr.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut nc: Vec<u32> = cptr.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut state = vec![ALIVE; total];
+
+    // set aside one vertex per component of the 1-skeleton when ∂_1 is made of `v - w` columns
+    if n1 >= 2 && edges_are_differences(c.boundary(1)) {
+        let nv = counts[0];
+        let mut parent: Vec<u32> = (0..nv as u32).collect();
+        let m = c.boundary(1);
+        for j in 0..m.cols() {
+            let (ri, _) = m.col(j);
+            if ri.len() == 2 {
+                let (x, y) = (find(&mut parent, ri[0]), find(&mut parent, ri[1]));
+                if x != y {
+                    parent[x.max(y) as usize] = x.min(y);
+                }
+            }
+        }
+        for v in 0..nv as u32 {
+            if find(&mut parent, v) == v {
+                state[v as usize] = SET_ASIDE;
+                for &e in &cofaces[cptr[v as usize] as usize..cptr[v as usize + 1] as usize] {
+                    nb[(e & !UNIT) as usize] -= 1;
+                }
+            }
+        }
+    }
+
+    // first in, first out: the sweep grows like a breadth-first search (a stack gets stuck
+    // far earlier on closed manifolds)
+    let mut work: VecDeque<u32> = (0..total as u32)
+        .filter(|&x| state[x as usize] == ALIVE && (nb[x as usize] == 1 || nc[x as usize] == 1))
+        .collect();
+    while let Some(x) = work.pop_front() {
+        let x = x as usize;
+        if state[x] != ALIVE {
+            continue;
+        }
+        let mut pair = None;
+        if nb[x] == 1 {
+            // coreduction: the only surviving face of x
+            let f =
+                faces[fptr[x] as usize..fptr[x + 1] as usize].iter().find(|&&e| state[(e & !UNIT) as usize] == ALIVE);
+            if let Some(&e) = f {
+                if e & UNIT != 0 {
+                    pair = Some(((e & !UNIT) as usize, x));
+                }
+            }
+        }
+        if pair.is_none() && nc[x] == 1 {
+            // collapse: the only surviving coface of x
+            let f =
+                cofaces[cptr[x] as usize..cptr[x + 1] as usize].iter().find(|&&e| state[(e & !UNIT) as usize] == ALIVE);
+            if let Some(&e) = f {
+                if e & UNIT != 0 {
+                    pair = Some((x, (e & !UNIT) as usize));
+                }
+            }
+        }
+        let Some((a, b)) = pair else { continue };
+        state[a] = PAIRED;
+        state[b] = PAIRED;
+        for z in [a, b] {
+            for &e in &cofaces[cptr[z] as usize..cptr[z + 1] as usize] {
+                let y = (e & !UNIT) as usize;
+                if state[y] == ALIVE {
+                    nb[y] -= 1;
+                    if nb[y] == 1 {
+                        work.push_back(y as u32);
+                    }
+                }
+            }
+            for &e in &faces[fptr[z] as usize..fptr[z + 1] as usize] {
+                let y = (e & !UNIT) as usize;
+                if state[y] == ALIVE {
+                    nc[y] -= 1;
+                    if nc[y] == 1 {
+                        work.push_back(y as u32);
+                    }
+                }
+            }
+        }
+    }
+
+    // the restriction to the survivors
+    let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
+    let mut local = vec![u32::MAX; total];
+    for k in 0..n1 {
+        let mut v = Vec::new();
+        for j in 0..counts[k] {
+            let g = off[k] as usize + j;
+            if state[g] != PAIRED {
+                local[g] = v.len() as u32;
+                v.push(j as u32);
+            }
+        }
+        ids.push(v);
+    }
+    let mut mats = Vec::with_capacity(n1.saturating_sub(1));
+    for k in 1..n1 {
+        let m = c.boundary(k);
+        let mut col_ptr = Vec::with_capacity(ids[k].len() + 1);
+        col_ptr.push(0usize);
+        let mut rows = Vec::new();
+        let mut vals = Vec::new();
+        for &j in &ids[k] {
+            let (ri, rv) = m.col(j as usize);
+            for (&r, &v) in ri.iter().zip(rv) {
+                let g = (off[k - 1] + r) as usize;
+                if state[g] == ALIVE && !ring.is_zero(&ring.of_i64(v)) {
+                    rows.push(local[g]);
+                    vals.push(v);
+                }
+            }
+            col_ptr.push(rows.len());
+        }
+        let sm = SparseMatrix::try_from_csc(ids[k - 1].len(), ids[k].len(), col_ptr, rows, vals)
+            .expect("a restriction keeps rows sorted and in range");
+        mats.push(sm);
+    }
+    let new_counts = ids.iter().map(Vec::len).collect();
+    let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
+    Restricted { chain, ids }
+}
+
+/// Whether every column of `∂_1` is empty or `v - w` (entries `1` and `-1`).
+fn edges_are_differences(m: &SparseMatrix) -> bool {
+    (0..m.cols()).all(|j| {
+        let (_, v) = m.col(j);
+        v.is_empty() || (v.len() == 2 && v[0] + v[1] == 0 && v[0].abs() == 1)
+    })
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let p = parent[parent[x as usize] as usize];
+        parent[x as usize] = p;
+        x = p;
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::homology::homology_z;
+    use crate::ring::{Zi64, Zp};
+
+    fn complex(counts: Vec<usize>, mats: Vec<Vec<(usize, usize, i64)>>) -> ChainComplex {
+        let b = mats
+            .iter()
+            .enumerate()
+            .map(|(i, t)| SparseMatrix::try_from_triplets(counts[i], counts[i + 1], t).unwrap())
+            .collect();
+        ChainComplex::try_new(counts, b).unwrap()
+    }
+
+    #[test]
+    fn a_filled_triangle_reduces_to_one_vertex() {
+        // vertices 0 1 2, edges 01 12 02, one face 01 + 12 - 02
+        let c = complex(
+            vec![3, 3, 1],
+            vec![
+                vec![(0, 0, -1), (1, 0, 1), (1, 1, -1), (2, 1, 1), (0, 2, -1), (2, 2, 1)],
+                vec![(0, 0, 1), (1, 0, 1), (2, 0, -1)],
+            ],
+        );
+        let r = prereduce(&Zi64, &c);
+        assert_eq!(r.chain.counts(), &[1, 0, 0]);
+        assert_eq!(r.ids[0], vec![0]);
+    }
+
+    #[test]
+    fn a_circle_keeps_one_edge() {
+        let c = complex(vec![3, 3], vec![vec![(0, 0, -1), (1, 0, 1), (1, 1, -1), (2, 1, 1), (0, 2, 1), (2, 2, -1)]]);
+        let r = prereduce(&Zi64, &c);
+        assert_eq!(r.chain.counts(), &[1, 1]);
+        assert!(r.chain.boundary(1).is_zero());
+    }
+
+    #[test]
+    fn non_unit_entries_are_not_paired() {
+        // the projective plane: one vertex, one edge (a loop), one face with ∂ = 2a
+        let c = complex(vec![1, 1, 1], vec![vec![], vec![(0, 0, 2)]]);
+        let r = prereduce(&Zi64, &c);
+        assert_eq!(r.chain.counts(), &[1, 1, 1]);
+        assert_eq!(homology_z(&r.chain).unwrap().torsion[1], vec![2]);
+        // over Z/3 the entry 2 is a unit: the edge and the face go
+        let r = prereduce(&Zp { p: 3 }, &c);
+        assert_eq!(r.chain.counts(), &[1, 0, 0]);
+        // over Z/2 it is zero: nothing to pair
+        let r = prereduce(&Zp { p: 2 }, &c);
+        assert_eq!(r.chain.counts(), &[1, 1, 1]);
+        assert!(r.chain.boundary(2).is_zero());
+    }
+}
