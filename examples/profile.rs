@@ -47,7 +47,7 @@ fn main() {
     let oriented2 = gmap_homology::check_preconditions(&map).unwrap();
     eprintln!("check_preconditions (parallel) {:.3?}", t.elapsed());
     drop(oriented2);
-    let t = Instant::now();
+    let t = WallInstant::now();
     let c = border_from_oriented(&map, &oriented);
     eprintln!("border {:.3?}; build total {:.3?}", t.elapsed(), t0.elapsed());
     let t = Instant::now();
@@ -56,6 +56,13 @@ fn main() {
     let t = Instant::now();
     let h = homology_zp(&c.chain, 2).unwrap();
     eprintln!("homology_z2 {:.3?}: {h}", t.elapsed());
+    for _ in 0..3 {
+        let t = WallInstant::now();
+        let c = gmap_homology::cellular_complex(&map).unwrap();
+        let t1 = t.elapsed();
+        let h = homology_z(&c.chain).unwrap();
+        eprintln!("pipeline wall: cells+border {t1:.3?}, total {:.3?}: {h}", t.elapsed());
+    }
     if args.get(2).is_some_and(|a| a == "simplicial") {
         let t = Instant::now();
         let s = simplicial_complex(&map);

@@ -65,8 +65,7 @@ pub fn cellular_complex(map: &DenseMap) -> Result<CellularComplex, PreconditionE
 pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> CellularComplex {
     let n = map.dim();
     let counts: Vec<usize> = oriented.iter().map(|c| c.cells.len()).collect();
-    let mut mats = Vec::with_capacity(n);
-    for i in 1..=n {
+    let matrix = |i: usize| {
         let entries = if i == 1 {
             ends(map, &oriented[1], &oriented[0])
         } else if i == n {
@@ -76,10 +75,22 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
         } else {
             walks(map, i, &oriented[i], &oriented[i - 1])
         };
-        let m = SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
-            .expect("indices come from partitions of the same map; entries are small");
-        mats.push(m);
-    }
+        SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
+            .expect("indices come from partitions of the same map; entries are small")
+    };
+    // big maps: the even dimensions on a second thread (∂_2, the largest in 3D, alone there)
+    let two = n >= 2 && map.dart_count() >= 1 << 16 && std::thread::available_parallelism().is_ok_and(|p| p.get() >= 2);
+    let mats: Vec<SparseMatrix> = if two {
+        let (odd, even) = std::thread::scope(|s| {
+            let h = s.spawn(|| (2..=n).step_by(2).map(matrix).collect::<Vec<_>>());
+            let odd: Vec<SparseMatrix> = (1..=n).step_by(2).map(matrix).collect();
+            (odd, h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+        });
+        let (mut odd, mut even) = (odd.into_iter(), even.into_iter());
+        (1..=n).map(|i| if i % 2 == 1 { odd.next() } else { even.next() }.expect("one matrix per dimension")).collect()
+    } else {
+        (1..=n).map(matrix).collect()
+    };
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
     debug_assert_eq!(chain.check_dd(), Ok::<(), ChainError>(()), "∂∂ = 0 under C1");
     let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
