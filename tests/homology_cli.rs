@@ -232,3 +232,26 @@ fn cli_generators() {
     assert_eq!(g[1]["order"], 2);
     assert!(!g[1]["chain"].as_array().unwrap().is_empty());
 }
+
+#[test]
+fn output_cut_short_by_the_reader_is_not_a_crash() {
+    // generators of a 16^3 torus grid print about 120 kB, more than a pipe holds; the reader stops early
+    use std::io::Read;
+    use std::process::Stdio;
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("grid.gmap");
+    gmap_core::io::write_gmap(&build::grid(&[16, 16, 16], &[true; 3]).unwrap(), &path).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gmap"))
+        .args(["homology", path.to_str().unwrap(), "--generators"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut head = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut head).unwrap();
+    // dropping the pipe's read end closes it
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(&head, b"dimension 3, met");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && !err.contains("panicked"), "{:?} {err}", out.status);
+}

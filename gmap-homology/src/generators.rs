@@ -1,26 +1,33 @@
 //! Representative cycles: one chain of cells for each cyclic summand of each `H_k`.
 //!
-//! For each k, Smith normal form of `∂_{k+1}` with the row operations tracked gives a
-//! basis `P` of `C_k` in which the boundaries are `d_i P_i` (i < rank). Then
+//! Two stages:
 //!
-//! * each `P_i` with `|d_i| > 1` is a cycle (a multiple of it is a boundary, and `C_k` is
-//!   torsion-free) generating a summand `Z/d_i`;
-//! * the cycles inside the span of the remaining columns, found as the integer kernel of
-//!   `∂_k P_{≥ rank}` by column reduction, generate the free part.
+//! 1. the fill-free reduction of [`crate::morse`] (collapses, coreductions, critical cells)
+//!    shrinks the complex — on manifolds and cube grids to as many cells as the Betti
+//!    numbers — and records the pairs it eliminated;
+//! 2. on the small complex left, Smith normal form of `∂_{k+1}` with the row operations
+//!    tracked gives a basis `P` of `C_k` in which the boundaries are `d_i P_i` (i < rank).
+//!    Each `P_i` with `|d_i| > 1` is a cycle generating a summand `Z/d_i`; the cycles in the
+//!    span of the remaining columns, found as the integer kernel of `∂_k P_{≥ rank}` by column
+//!    reduction, generate the free part.
 //!
-//! Every generator is checked to be a cycle before it is returned. The computation is
-//! dense — O(m^3) for m cells of a dimension — so it is limited to
-//! [`GENERATOR_CELL_LIMIT`] cells per dimension: cellular complexes of G-maps are small,
-//! which is where generators are worth reading.
+//! Each cycle found is then lifted back through the eliminated pairs (the chain map of each
+//! reduction, [`crate::morse`]) to a chain of the input's cells in the same class, and checked
+//! to be a cycle of the input before it is returned. Stage 2 is dense — O(m^3) for m cells of
+//! a dimension — so it is limited to [`GENERATOR_CELL_LIMIT`] cells per dimension *after*
+//! stage 1; stage 1 and the lifting are near-linear, so generators of complexes with millions
+//! of cells are within reach.
 
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
 use crate::chain::ChainComplex;
 use crate::homology::{is_prime, HomologyError};
+use crate::morse::{lift, prereduce};
 use crate::ring::{Euclid, Zi64, Zp};
 use crate::snf::smith_tracked;
 
-/// Largest number of cells in one dimension for which generators are computed.
+/// Largest number of cells in one dimension of the reduced complex for which generators are
+/// computed.
 pub const GENERATOR_CELL_LIMIT: usize = 2000;
 
 /// A representative cycle of one cyclic summand of `H_dim`.
@@ -36,6 +43,7 @@ pub struct Generator {
 
 /// Representative cycles of all summands of `H_0..H_n`, over `Z` (`field = None`) or over
 /// `Z/p`: `betti[k]` free ones and one per torsion coefficient, in that order per dimension.
+/// Over `Z/p` the coefficients are given in `0..p`.
 ///
 /// ```
 /// use gmap_homology::{cellular_complex, generators::generators};
@@ -45,20 +53,60 @@ pub struct Generator {
 /// assert_eq!(orders, vec![(0, 0), (1, 0), (1, 2)]);
 /// ```
 pub fn generators(c: &ChainComplex, field: Option<u64>) -> Result<Vec<Generator>, HomologyError> {
-    for k in 0..c.counts().len() {
-        if c.count(k) > GENERATOR_CELL_LIMIT {
-            return Err(HomologyError::GeneratorsTooLarge { dim: k, cells: c.count(k), limit: GENERATOR_CELL_LIMIT });
-        }
-    }
     match field {
-        None => compute(&Zi64, c).unwrap_or(Err(HomologyError::GeneratorOverflow)),
+        None => reduced_then_lifted(&Zi64, c),
         Some(p) => {
             if !is_prime(p) || p >= 1 << 31 {
                 return Err(HomologyError::NotPrime(p));
             }
-            compute(&Zp { p }, c).unwrap_or(Err(HomologyError::GeneratorOverflow))
+            reduced_then_lifted(&Zp { p }, c)
         }
     }
+}
+
+/// Stage 1, stage 2 on what is left, and the lifting with its cycle check.
+fn reduced_then_lifted<R: Euclid>(ring: &R, c: &ChainComplex) -> Result<Vec<Generator>, HomologyError> {
+    let pre = prereduce(ring, c, true).or_else(|| prereduce(ring, c, false)).ok_or(HomologyError::GeneratorOverflow)?;
+    for k in 0..pre.chain.counts().len() {
+        if pre.chain.count(k) > GENERATOR_CELL_LIMIT {
+            return Err(HomologyError::GeneratorsTooLarge {
+                dim: k,
+                cells: pre.chain.count(k),
+                limit: GENERATOR_CELL_LIMIT,
+            });
+        }
+    }
+    let small = compute(ring, &pre.chain).unwrap_or(Err(HomologyError::GeneratorOverflow))?;
+    let mut out = Vec::with_capacity(small.len());
+    for g in small {
+        let chain: Vec<(u32, R::E)> = g.chain.iter().map(|&(j, v)| (j, ring.of_i64(v))).collect();
+        let lifted = lift(ring, c, &pre, g.dim, &chain).ok_or(HomologyError::GeneratorOverflow)?;
+        if !is_cycle(ring, c, g.dim, &lifted).ok_or(HomologyError::GeneratorOverflow)? {
+            return Err(HomologyError::Internal("a lifted generator is not a cycle"));
+        }
+        let mut ints = Vec::with_capacity(lifted.len());
+        for (j, v) in lifted {
+            ints.push((j, ring.to_i64(&v).ok_or(HomologyError::GeneratorOverflow)?));
+        }
+        out.push(Generator { dim: g.dim, order: g.order, chain: ints });
+    }
+    Ok(out)
+}
+
+/// Whether a k-chain of `c` has zero boundary over the ring. `None` on overflow.
+fn is_cycle<R: Euclid>(ring: &R, c: &ChainComplex, k: usize, chain: &[(u32, R::E)]) -> Option<bool> {
+    if k == 0 {
+        return Some(true);
+    }
+    let m = c.boundary(k);
+    let mut bd = vec![ring.of_i64(0); m.rows()];
+    for (j, v) in chain {
+        let (ri, rv) = m.col(*j as usize);
+        for (&r, &x) in ri.iter().zip(rv) {
+            bd[r as usize] = ring.sub_mul(&bd[r as usize], &ring.of_i64(-x), v)?;
+        }
+    }
+    Some(bd.iter().all(|x| ring.is_zero(x)))
 }
 
 fn dense<R: Euclid>(ring: &R, c: &ChainComplex, k: usize) -> Vec<Vec<R::E>> {

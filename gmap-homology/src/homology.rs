@@ -118,8 +118,8 @@ pub enum HomologyError {
         /// alternating sum of the Betti numbers
         betti: i64,
     },
-    /// `--generators` on a complex with too many cells in one dimension.
-    #[error("generators are computed for at most {limit} cells per dimension; dimension {dim} has {cells}")]
+    /// `--generators` on a complex whose reduction keeps too many cells in one dimension.
+    #[error("generators are computed when the reduced complex keeps at most {limit} cells per dimension; dimension {dim} keeps {cells}")]
     GeneratorsTooLarge {
         /// the dimension
         dim: usize,
@@ -168,8 +168,12 @@ pub(crate) struct Survivors<E> {
 }
 
 /// Stage 1 over any ring: unit-pivot elimination dimension by dimension.
-pub(crate) fn survivors<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> {
-    let pre = crate::morse::prereduce(ring, c);
+pub(crate) fn survivors<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> {
+    let pre = match crate::morse::prereduce(ring, c, true) {
+        Some(p) => p,
+        // the fill of the critical rows overflowed: the pass without critical cells has none
+        None => crate::morse::prereduce(ring, c, false)?,
+    };
     let mut s = survivors_of(ring, &pre.chain)?;
     for (k, cells) in s.cells.iter_mut().enumerate() {
         for x in cells.iter_mut() {

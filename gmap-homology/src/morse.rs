@@ -28,33 +28,50 @@
 //! in each dimension in turn — Mrozek and Batko's coreduction algorithm. On manifolds,
 //! cube grids and the simplicial counterparts of G-maps what survives is a handful of cells.
 
-use std::collections::VecDeque;
+use std::collections::{HashMap, VecDeque};
 
 use crate::chain::ChainComplex;
-use crate::ring::Ring;
+use crate::ring::{Euclid, Ring};
 use crate::sparse::SparseMatrix;
 
 const ALIVE: u8 = 0;
 const PAIRED: u8 = 1;
 /// a vertex set aside for `H_0`: survives, but takes part in no entry
 const SET_ASIDE: u8 = 2;
+/// a critical cell: survives, with the fill of later coreductions in its row
+const CRITICAL: u8 = 3;
 /// bit 31 of an entry: its value is a unit
 const UNIT: u32 = 1 << 31;
 /// cells and entries are numbered in 31 bits
 const LIMIT: usize = 1 << 31;
 
-/// The complex left by [`prereduce`]: the restriction of the input to the surviving cells.
+/// The complex left by [`prereduce`]: the surviving cells and the boundary between them.
 #[derive(Debug)]
 pub(crate) struct Restricted {
-    /// the restricted complex (renumbered cells)
+    /// the reduced complex (renumbered cells)
     pub chain: ChainComplex,
     /// `ids[k][j]`: the input's number of surviving k-cell `j`
     pub ids: Vec<Vec<u32>>,
+    /// the pairs `(a, b)` eliminated, in order, as global cell numbers (`off[k] + j`)
+    pub log: Vec<(u32, u32)>,
+    /// `off[k]`: global number of the first k-cell; `off[n + 1]` the number of cells
+    pub off: Vec<u32>,
+}
+
+impl Restricted {
+    /// The dimension of global cell `x`.
+    fn dim_of(&self, x: u32) -> usize {
+        self.off.partition_point(|&o| o <= x) - 1
+    }
 }
 
 /// Collapses and coreductions to exhaustion (entries judged over `ring`: an entry that is zero
-/// in the ring is no entry; only unit entries are paired). O(total entries + cells).
-pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
+/// in the ring is no entry; only unit entries are paired). With `freeze`, a stuck pass makes
+/// a cell of the lowest dimension left **critical** and goes on: the cell stays in the output
+/// and the later coreductions add fill in its row only (the frozen rows of
+/// [`crate::reduce`]), so the output is the restriction of the input plus those rows.
+/// `None` when the fill overflows. O(entries + cells + fill in the critical rows).
+pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
     let n1 = counts.len();
     let total: usize = counts.iter().sum();
@@ -62,7 +79,7 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
     if total >= LIMIT || nnz >= LIMIT {
         // beyond u32 indices: hand the complex on as it is
         let ids = counts.iter().map(|&m| (0..m as u32).collect()).collect();
-        return Restricted { chain: c.clone(), ids };
+        return Some(Restricted { chain: c.clone(), ids, log: Vec::new(), off: Vec::new() });
     }
     let mut off = Vec::with_capacity(n1 + 1);
     let mut acc = 0u32;
@@ -71,6 +88,14 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         acc += m as u32;
     }
     off.push(acc);
+    let dim_of = |x: usize| off.partition_point(|&o| o as usize <= x) - 1;
+    // ⟨∂x, y⟩ from the input, for a k-cell x and a (k-1)-cell y (global numbers)
+    let value = |x: usize, y: usize| -> R::E {
+        let k = dim_of(x);
+        let (ri, rv) = c.boundary(k).col(x - off[k] as usize);
+        let r = (y - off[k - 1] as usize) as u32;
+        ring.of_i64(ri.binary_search(&r).map(|p| rv[p]).unwrap_or(0))
+    };
     // faces of every cell (global ids, bit 31 set for a unit entry), ring-nonzero entries only
     let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
     let mut faces: Vec<u32> = Vec::with_capacity(nnz);
@@ -136,17 +161,56 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         }
     }
 
+    // entries of alive or critical cells in critical rows: (row, value), rows increasing
+    let mut extra: HashMap<u32, Vec<(u32, R::E)>> = HashMap::new();
+    let mut log: Vec<(u32, u32)> = Vec::with_capacity(total / 2);
     // first in, first out: the sweep grows like a breadth-first search (a stack gets stuck
     // far earlier on closed manifolds)
     let mut work: VecDeque<u32> = (0..total as u32)
         .filter(|&x| state[x as usize] == ALIVE && (nb[x as usize] == 1 || nc[x as usize] == 1))
         .collect();
-    while let Some(x) = work.pop_front() {
+    // per dimension, the first cell that may still be alive (critical cells are taken in order)
+    let mut cursor: Vec<usize> = off[..n1].iter().map(|&o| o as usize).collect();
+    loop {
+        let Some(x) = work.pop_front() else {
+            if !freeze {
+                break;
+            }
+            // stuck: the first alive cell of the lowest dimension becomes critical; it has no
+            // alive face, so only its cofaces change
+            let mut pick = None;
+            for k in 0..n1 {
+                while cursor[k] < off[k + 1] as usize && state[cursor[k]] != ALIVE {
+                    cursor[k] += 1;
+                }
+                if cursor[k] < off[k + 1] as usize {
+                    pick = Some(cursor[k]);
+                    break;
+                }
+            }
+            let Some(x) = pick else { break };
+            state[x] = CRITICAL;
+            for &e in &cofaces[cptr[x] as usize..cptr[x + 1] as usize] {
+                let y = (e & !UNIT) as usize;
+                if state[y] == ALIVE {
+                    let v = value(y, x);
+                    let list = extra.entry(y as u32).or_default();
+                    let pos = list.partition_point(|(r, _)| (*r as usize) < x);
+                    list.insert(pos, (x as u32, v));
+                    nb[y] -= 1;
+                    if nb[y] == 1 {
+                        work.push_back(y as u32);
+                    }
+                }
+            }
+            continue;
+        };
         let x = x as usize;
         if state[x] != ALIVE {
             continue;
         }
         let mut pair = None;
+        let mut coreduction = false;
         if nb[x] == 1 {
             // coreduction: the only surviving face of x
             let f =
@@ -154,6 +218,7 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
             if let Some(&e) = f {
                 if e & UNIT != 0 {
                     pair = Some(((e & !UNIT) as usize, x));
+                    coreduction = true;
                 }
             }
         }
@@ -170,6 +235,27 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         let Some((a, b)) = pair else { continue };
         state[a] = PAIRED;
         state[b] = PAIRED;
+        log.push((a as u32, b as u32));
+        extra.remove(&(a as u32));
+        // a collapse changes no other column; a coreduction of a column with entries in
+        // critical rows adds them to the other columns meeting row a
+        if let Some(fill) = extra.remove(&(b as u32)) {
+            if coreduction {
+                let eps = value(b, a);
+                for &e in &cofaces[cptr[a] as usize..cptr[a + 1] as usize] {
+                    let y = (e & !UNIT) as usize;
+                    if state[y] != ALIVE {
+                        continue;
+                    }
+                    let lambda = ring.div_unit(&value(y, a), &eps)?;
+                    let list = extra.entry(y as u32).or_default();
+                    *list = axpy(ring, list, &lambda, &fill)?;
+                    if list.is_empty() {
+                        extra.remove(&(y as u32));
+                    }
+                }
+            }
+        }
         for z in [a, b] {
             for &e in &cofaces[cptr[z] as usize..cptr[z + 1] as usize] {
                 let y = (e & !UNIT) as usize;
@@ -192,7 +278,7 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         }
     }
 
-    // the restriction to the survivors
+    // the survivors: restricted entries in alive rows, tracked entries in critical rows
     let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
     let mut local = vec![u32::MAX; total];
     for k in 0..n1 {
@@ -207,6 +293,7 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         ids.push(v);
     }
     let mut mats = Vec::with_capacity(n1.saturating_sub(1));
+    let mut col: Vec<(u32, i64)> = Vec::new();
     for k in 1..n1 {
         let m = c.boundary(k);
         let mut col_ptr = Vec::with_capacity(ids[k].len() + 1);
@@ -214,23 +301,111 @@ pub(crate) fn prereduce<R: Ring>(ring: &R, c: &ChainComplex) -> Restricted {
         let mut rows = Vec::new();
         let mut vals = Vec::new();
         for &j in &ids[k] {
+            col.clear();
             let (ri, rv) = m.col(j as usize);
             for (&r, &v) in ri.iter().zip(rv) {
                 let g = (off[k - 1] + r) as usize;
                 if state[g] == ALIVE && !ring.is_zero(&ring.of_i64(v)) {
-                    rows.push(local[g]);
-                    vals.push(v);
+                    col.push((local[g], v));
                 }
+            }
+            if let Some(list) = extra.get(&(off[k] + j)) {
+                for (r, v) in list {
+                    col.push((local[*r as usize], ring.to_i64(v)?));
+                }
+                col.sort_unstable_by_key(|e| e.0);
+            }
+            for &(r, v) in &col {
+                rows.push(r);
+                vals.push(v);
             }
             col_ptr.push(rows.len());
         }
         let sm = SparseMatrix::try_from_csc(ids[k - 1].len(), ids[k].len(), col_ptr, rows, vals)
-            .expect("a restriction keeps rows sorted and in range");
+            .expect("survivors keep rows sorted and in range");
         mats.push(sm);
     }
     let new_counts = ids.iter().map(Vec::len).collect();
     let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
-    Restricted { chain, ids }
+    Some(Restricted { chain, ids, log, off })
+}
+
+/// `list - lambda * fill` for sorted sparse rows; zeros dropped.
+fn axpy<R: Ring>(ring: &R, list: &[(u32, R::E)], lambda: &R::E, fill: &[(u32, R::E)]) -> Option<Vec<(u32, R::E)>> {
+    let zero = ring.of_i64(0);
+    let mut out = Vec::with_capacity(list.len() + fill.len());
+    let (mut i, mut j) = (0, 0);
+    while i < list.len() || j < fill.len() {
+        if j == fill.len() || (i < list.len() && list[i].0 < fill[j].0) {
+            out.push(list[i].clone());
+            i += 1;
+        } else if i == list.len() || fill[j].0 < list[i].0 {
+            let v = ring.sub_mul(&zero, lambda, &fill[j].1)?;
+            if !ring.is_zero(&v) {
+                out.push((fill[j].0, v));
+            }
+            j += 1;
+        } else {
+            let v = ring.sub_mul(&list[i].1, lambda, &fill[j].1)?;
+            if !ring.is_zero(&v) {
+                out.push((list[i].0, v));
+            }
+            i += 1;
+            j += 1;
+        }
+    }
+    Some(out)
+}
+
+/// Lifts a k-chain of the reduced complex (numbered as in `pre.chain`) to a k-chain of the
+/// input `c` through the eliminated pairs, last first: each pair `(a, b)` with `b` a k-cell
+/// subtracts `(⟨∂z, a⟩ / ⟨∂b, a⟩) b`, which is the chain map of the reduction. A cycle lifts
+/// to a cycle in the same homology class. `None` on overflow.
+/// O(log length + entries of the k-cells met).
+pub(crate) fn lift<R: Ring>(
+    ring: &R,
+    c: &ChainComplex,
+    pre: &Restricted,
+    k: usize,
+    chain: &[(u32, R::E)],
+) -> Option<Vec<(u32, R::E)>> {
+    let zero = ring.of_i64(0);
+    let mut z: Vec<R::E> = vec![zero.clone(); c.count(k)];
+    for (j, v) in chain {
+        z[pre.ids[k][*j as usize] as usize] = v.clone();
+    }
+    if k == 0 || pre.log.is_empty() {
+        return Some(z.into_iter().enumerate().filter(|(_, v)| !ring.is_zero(v)).map(|(i, v)| (i as u32, v)).collect());
+    }
+    let m = c.boundary(k);
+    let mut bd: Vec<R::E> = vec![zero.clone(); c.count(k - 1)];
+    for (j, v) in z.iter().enumerate() {
+        if ring.is_zero(v) {
+            continue;
+        }
+        let (ri, rv) = m.col(j);
+        for (&r, &x) in ri.iter().zip(rv) {
+            bd[r as usize] = ring.sub_mul(&bd[r as usize], &ring.of_i64(-x), v)?;
+        }
+    }
+    let (ok, lo) = (pre.off[k], pre.off[k - 1]);
+    for &(a, b) in pre.log.iter().rev() {
+        if pre.dim_of(b) != k {
+            continue;
+        }
+        let (a, b) = ((a - lo) as usize, (b - ok) as usize);
+        if ring.is_zero(&bd[a]) {
+            continue;
+        }
+        let (ri, rv) = m.col(b);
+        let eps = ring.of_i64(ri.binary_search(&(a as u32)).map(|p| rv[p]).ok()?);
+        let lambda = ring.div_unit(&bd[a], &eps)?;
+        z[b] = ring.sub_mul(&z[b], &lambda, &ring.of_i64(1))?;
+        for (&r, &x) in ri.iter().zip(rv) {
+            bd[r as usize] = ring.sub_mul(&bd[r as usize], &lambda, &ring.of_i64(x))?;
+        }
+    }
+    Some(z.into_iter().enumerate().filter(|(_, v)| !ring.is_zero(v)).map(|(i, v)| (i as u32, v)).collect())
 }
 
 /// Whether every column of `∂_1` is empty or `v - w` (entries `1` and `-1`).
@@ -275,7 +450,7 @@ mod tests {
                 vec![(0, 0, 1), (1, 0, 1), (2, 0, -1)],
             ],
         );
-        let r = prereduce(&Zi64, &c);
+        let r = prereduce(&Zi64, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 0, 0]);
         assert_eq!(r.ids[0], vec![0]);
     }
@@ -283,7 +458,7 @@ mod tests {
     #[test]
     fn a_circle_keeps_one_edge() {
         let c = complex(vec![3, 3], vec![vec![(0, 0, -1), (1, 0, 1), (1, 1, -1), (2, 1, 1), (0, 2, 1), (2, 2, -1)]]);
-        let r = prereduce(&Zi64, &c);
+        let r = prereduce(&Zi64, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 1]);
         assert!(r.chain.boundary(1).is_zero());
     }
@@ -292,14 +467,14 @@ mod tests {
     fn non_unit_entries_are_not_paired() {
         // the projective plane: one vertex, one edge (a loop), one face with ∂ = 2a
         let c = complex(vec![1, 1, 1], vec![vec![], vec![(0, 0, 2)]]);
-        let r = prereduce(&Zi64, &c);
+        let r = prereduce(&Zi64, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 1, 1]);
         assert_eq!(homology_z(&r.chain).unwrap().torsion[1], vec![2]);
         // over Z/3 the entry 2 is a unit: the edge and the face go
-        let r = prereduce(&Zp { p: 3 }, &c);
+        let r = prereduce(&Zp { p: 3 }, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 0, 0]);
         // over Z/2 it is zero: nothing to pair
-        let r = prereduce(&Zp { p: 2 }, &c);
+        let r = prereduce(&Zp { p: 2 }, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 1, 1]);
         assert!(r.chain.boundary(2).is_zero());
     }

@@ -69,6 +69,6 @@ pub fn run() -> Result<()> {
             row
         })
         .collect();
-    print!("{}", format_table(&header, &rows));
+    out!("{}", format_table(&header, &rows))?;
     Ok(())
 }

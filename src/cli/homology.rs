@@ -164,13 +164,13 @@ pub fn run(o: &Options) -> Result<()> {
                 .collect();
             v["generators"] = json!(list);
         }
-        println!("{v}");
+        outln!("{v}")?;
     } else {
-        println!("dimension {dim}, method {method}, coefficients {}", h.coefficients);
+        outln!("dimension {dim}, method {method}, coefficients {}", h.coefficients)?;
         for k in 0..h.betti.len() {
-            println!("H_{k} = {}", h.group_string(k));
+            outln!("H_{k} = {}", h.group_string(k))?;
         }
-        println!("euler characteristic {}", h.euler_characteristic());
+        outln!("euler characteristic {}", h.euler_characteristic())?;
         if let Some(g) = &gens {
             for x in g {
                 let order = if x.order == 0 { "Z".to_string() } else { format!("Z/{}", x.order) };
@@ -179,7 +179,7 @@ pub fn run(o: &Options) -> Result<()> {
                     .iter()
                     .map(|&(cell, coef)| format!("{coef:+} [{}]", named.names[x.dim][cell as usize]))
                     .collect();
-                println!("generator of H_{} ({order}): {}", x.dim, terms.join(" "));
+                outln!("generator of H_{} ({order}): {}", x.dim, terms.join(" "))?;
             }
         }
     }

@@ -87,18 +87,18 @@ pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
             let info = map_info(&map);
             progress.step("done");
             if json {
-                println!("{}", serde_json::to_string(&info)?);
+                outln!("{}", serde_json::to_string(&info)?)?;
             } else {
-                print_lines(&map_lines(file, &info));
+                print_lines(&map_lines(file, &info))?;
             }
         }
         Loaded::Complex(x) => {
             let info = complex_info(&x);
             progress.step("done");
             if json {
-                println!("{}", serde_json::to_string(&info)?);
+                outln!("{}", serde_json::to_string(&info)?)?;
             } else {
-                print_lines(&complex_lines(file, &info));
+                print_lines(&complex_lines(file, &info))?;
             }
         }
     }
@@ -127,11 +127,12 @@ fn map_lines(file: &Path, info: &MapInfo) -> Vec<(&'static str, String)> {
 }
 
 /// Prints `key  value` lines with the values aligned.
-fn print_lines(lines: &[(&str, String)]) {
+fn print_lines(lines: &[(&str, String)]) -> std::io::Result<()> {
     let width = lines.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
     for (k, v) in lines {
-        println!("{k:<width$}  {v}");
+        outln!("{k:<width$}  {v}")?;
     }
+    Ok(())
 }
 
 /// The characteristics of an architectural complex (`.json`): the keys of a map's
