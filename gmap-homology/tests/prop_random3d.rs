@@ -1,0 +1,843 @@
+//! Property tests on random 3- and 4-dimensional G-maps (issue #4).
+//!
+//! The theorem under test (DESIGN.md, "Homology: when the cellular method is right"): where
+//! every cell is orientable as a compacted cell (C1) and bounded by a homology sphere (C2),
+//! the cellular border operator (BO Def. 10) has the homology of the simplicial counterpart
+//! (BO §6) — over Z, Z/2 and Z/3. Where C1 or C2 fails, the cellular method refuses and names
+//! a cell that really fails (checked here by an independent 2-colouring or an independent
+//! computation of the compacted cell, BO Def. 3), while the simplicial method still answers,
+//! with the right groups wherever they are known.
+//!
+//! Families (each run by a proptest runner that also tallies what it saw, so that no
+//! property can pass vacuously):
+//!
+//! * voxel sets: random subsets of the cubes of a `k_1 × k_2 × k_3` grid (`k ≤ 5`, any axes
+//!   periodic), shared faces sewn — holes, cavities and tunnels included; 4-cube grids too;
+//! * random gluings: tetrahedra and cubes (and 4-simplices) with random facet pairings and
+//!   random rotations and reflections of the pairings; accepted ones must agree, refused
+//!   ones must name a folded or open cell;
+//! * random Euler operators (gmap_ops::euler::ops) on the solid torus, the 3-torus, lens
+//!   spaces and the 4-torus: both methods must give the known groups;
+//! * violations: a volume bounded by a closed surface of genus ≥ 1 (C2) or a non-orientable
+//!   one (C1) beside a good voxel set, dart numbers shuffled; 4-cells bounded by lens spaces
+//!   and by the 3-torus (C2 in dimension 4); a boundary face folded onto itself by a
+//!   reflection (C1); darts made k-free inside a cell (C1, incomplete boundary).
+
+use std::cell::RefCell;
+use std::collections::{BTreeMap, HashMap};
+
+use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap, GMap};
+use gmap_homology::{
+    cellular_complex, homology_z, homology_zp, simplicial_complex, ChainComplex, Homology, PreconditionError,
+};
+use gmap_ops::build;
+use gmap_ops::euler::ops;
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestCaseError, TestRunner};
+
+// ---------------------------------------------------------------------------------------
+// small tools
+
+/// splitmix64: the choices inside one generated case, driven by a proptest seed.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        assert!(n > 0);
+        (self.next() % n as u64) as usize
+    }
+
+    fn shuffle<T>(&mut self, v: &mut [T]) {
+        for k in (1..v.len()).rev() {
+            let j = self.below(k + 1);
+            v.swap(k, j);
+        }
+    }
+}
+
+/// Counters of what a family generated, shared by the cases of one runner.
+#[derive(Default)]
+struct Tally(RefCell<BTreeMap<&'static str, usize>>);
+
+impl Tally {
+    fn add(&self, key: &'static str) {
+        *self.0.borrow_mut().entry(key).or_default() += 1;
+    }
+
+    fn get(&self, key: &str) -> usize {
+        self.0.borrow().get(key).copied().unwrap_or(0)
+    }
+
+    fn report(&self, family: &str) {
+        eprintln!("{family}: {:?}", self.0.borrow());
+    }
+}
+
+/// Runs `test` on `cases` values of `strategy`; panics with proptest's (shrunk) failure.
+fn run<S: Strategy>(cases: u32, strategy: S, test: impl Fn(S::Value) -> Result<(), TestCaseError>) {
+    let mut runner = TestRunner::new(Config { cases, failure_persistence: None, ..Config::default() });
+    if let Err(e) = runner.run(&strategy, test) {
+        panic!("{e}");
+    }
+}
+
+fn fail(e: impl std::fmt::Display) -> TestCaseError {
+    TestCaseError::fail(e.to_string())
+}
+
+/// The darts with `keep[d]`, renumbered in order; links to dropped darts become free.
+fn restrict(m: &DenseMap, keep: &[bool]) -> DenseMap {
+    let n = m.dim();
+    let mut new = vec![u32::MAX; m.dart_count()];
+    let mut count = 0u32;
+    for d in 0..m.dart_count() {
+        if keep[d] {
+            new[d] = count;
+            count += 1;
+        }
+    }
+    let mut flat = Vec::with_capacity(count as usize * (n + 1));
+    for d in m.darts() {
+        if !keep[d.index()] {
+            continue;
+        }
+        for i in 0..=n {
+            let y = m.alpha(d, i);
+            flat.push(if keep[y.index()] { new[y.index()] } else { new[d.index()] });
+        }
+    }
+    DenseMap::try_from_flat(n, flat).expect("dropping whole n-cells keeps a G-map")
+}
+
+/// The disjoint union of two maps of one dimension: the darts of `b` follow those of `a`.
+fn union(a: &DenseMap, b: &DenseMap) -> DenseMap {
+    assert_eq!(a.dim(), b.dim());
+    let off = a.dart_count() as u32;
+    let mut flat = a.flat().to_vec();
+    flat.extend(b.flat().iter().map(|&x| x + off));
+    DenseMap::try_from_flat(a.dim(), flat).expect("a union of G-maps is a G-map")
+}
+
+/// A random renumbering of the darts.
+fn shuffled(m: &DenseMap, rng: &mut Rng) -> (DenseMap, Vec<u32>) {
+    let mut perm: Vec<u32> = (0..m.dart_count() as u32).collect();
+    rng.shuffle(&mut perm);
+    (m.permuted(&perm), perm)
+}
+
+/// The isomorphism of the `set`-orbit of `d0` onto that of `e0` sending `d0` to `e0`
+/// (pairs `(x, image)`), if the two orbits are isomorphic that way.
+fn orbit_iso(m: &DenseMap, d0: Dart, e0: Dart, set: &[usize]) -> Option<Vec<(u32, u32)>> {
+    let mut img: HashMap<u32, u32> = HashMap::new();
+    img.insert(d0.0, e0.0);
+    let mut stack = vec![d0.0];
+    while let Some(x) = stack.pop() {
+        let fx = img[&x];
+        for &k in set {
+            let y = m.alpha(Dart(x), k).0;
+            let z = m.alpha(Dart(fx), k).0;
+            match img.get(&y) {
+                Some(&w) if w != z => return None,
+                Some(_) => {}
+                None => {
+                    img.insert(y, z);
+                    stack.push(y);
+                }
+            }
+        }
+    }
+    let mut pairs: Vec<(u32, u32)> = img.into_iter().collect();
+    pairs.sort_unstable();
+    let mut images: Vec<u32> = pairs.iter().map(|p| p.1).collect();
+    images.sort_unstable();
+    images.dedup();
+    (images.len() == pairs.len()).then_some(pairs)
+}
+
+// ---------------------------------------------------------------------------------------
+// independent checks of a refusal
+
+/// C1 for the i-cell of `dart`, by a breadth-first 2-colouring written here (not the
+/// kernel's): `Err("free")` for a dart k-free with k < i, `Err("conflict")` for a colouring
+/// conflict.
+fn own_c1(m: &DenseMap, i: usize, dart: u32) -> Result<(), &'static str> {
+    let n = m.dim();
+    let mut colour: HashMap<u32, bool> = HashMap::new();
+    colour.insert(dart, true);
+    let mut queue = std::collections::VecDeque::from([dart]);
+    while let Some(x) = queue.pop_front() {
+        let c = colour[&x];
+        for k in (0..=n).filter(|&k| k != i) {
+            let y = m.alpha(Dart(x), k).0;
+            if k < i && y == x {
+                return Err("free");
+            }
+            let want = if k < i { !c } else { c };
+            match colour.get(&y) {
+                Some(&got) if got != want => return Err("conflict"),
+                Some(_) => {}
+                None => {
+                    colour.insert(y, want);
+                    queue.push_back(y);
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The compacted i-cell of `dart` (BO Def. 3), built here: its elements are the
+/// `<alpha_{i+1}..alpha_n>`-orbits inside the cell, `alpha_k` (k < i) acting on them.
+fn own_compacted(m: &DenseMap, i: usize, dart: u32) -> DenseMap {
+    let n = m.dim();
+    let cell = m.orbit(Dart(dart), AlphaSet::cell(i, n));
+    let b = m.partition(AlphaSet::above(i, n));
+    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut reps = Vec::new();
+    for d in &cell {
+        let e = b.of[d.index()];
+        if !local.contains_key(&e) {
+            local.insert(e, reps.len() as u32);
+            reps.push(*d);
+        }
+    }
+    let mut flat = Vec::with_capacity(reps.len() * i);
+    for &r in &reps {
+        for k in 0..i {
+            flat.push(local[&b.of[m.alpha(r, k).index()]]);
+        }
+    }
+    DenseMap::try_from_flat(i - 1, flat).expect("alpha_k, k < i, is well defined on the orbits")
+}
+
+/// `(Z, 0, …, 0, Z)`: the integer homology of the m-sphere, as printed.
+fn sphere_string(m: usize) -> String {
+    let mut parts = vec!["Z".to_string()];
+    parts.extend((1..m).map(|_| "0".to_string()));
+    parts.push("Z".to_string());
+    format!("({})", parts.join(", "))
+}
+
+/// Checks that the cell a refusal names really fails the condition it is refused for.
+/// Returns the dimension and smallest dart of the cell named.
+fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), TestCaseError> {
+    match e {
+        PreconditionError::C1(CellDefect::IncompleteBoundary { dim, dart, alpha }) => {
+            prop_assert!(alpha < dim, "{e}");
+            let cell = m.orbit(Dart(*dart), AlphaSet::cell(*dim, m.dim()));
+            prop_assert!(cell.iter().any(|&x| m.is_free(x, *alpha)), "no {alpha}-free dart in the cell named: {e}");
+            prop_assert_eq!(own_c1(m, *dim, *dart), Err("free"));
+            Ok((*dim, *dart))
+        }
+        PreconditionError::C1(CellDefect::NotOrientable { dim, dart, .. }) => {
+            prop_assert_eq!(own_c1(m, *dim, *dart), Err("conflict"), "{}", e);
+            Ok((*dim, *dart))
+        }
+        PreconditionError::C2 { dim, dart, .. } => {
+            prop_assert!(*dim >= 3, "{e}");
+            prop_assert_eq!(own_c1(m, *dim, *dart), Ok(()), "C2 is checked after C1: {}", e);
+            let b = own_compacted(m, *dim, *dart);
+            let h = homology_z(&simplicial_complex(&b)).map_err(fail)?;
+            prop_assert_ne!(h.to_string(), sphere_string(dim - 1), "the cell named is bounded by a sphere: {}", e);
+            Ok((*dim, *dart))
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// the theorem
+
+/// Homology of one complex over Z, Z/2 and Z/3, checked against Euler–Poincaré and the
+/// universal coefficient theorem (dim H_k(Z/p) = b_k + #p-torsion of H_k and of H_{k-1}).
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Groups {
+    z: Homology,
+    z2: Homology,
+    z3: Homology,
+}
+
+fn groups(c: &ChainComplex) -> Result<Groups, TestCaseError> {
+    let z = homology_z(c).map_err(fail)?;
+    let z2 = homology_zp(c, 2).map_err(fail)?;
+    let z3 = homology_zp(c, 3).map_err(fail)?;
+    prop_assert_eq!(z.euler_characteristic(), c.euler_characteristic(), "Euler–Poincaré over Z");
+    for (p, h) in [(2u64, &z2), (3, &z3)] {
+        prop_assert_eq!(h.euler_characteristic(), c.euler_characteristic(), "Euler–Poincaré over Z/{}", p);
+        let tors = |k: usize| z.torsion[k].iter().filter(|&&t| t % p == 0).count();
+        for k in 0..z.betti.len() {
+            let want = z.betti[k] + tors(k) + if k > 0 { tors(k - 1) } else { 0 };
+            prop_assert_eq!(h.betti[k], want, "universal coefficients, H_{} over Z/{}: Z gives {}", k, p, z);
+        }
+    }
+    Ok(Groups { z, z2, z3 })
+}
+
+/// The groups with one more component (a contractible one).
+fn plus_point(g: &Groups) -> Groups {
+    let mut g = g.clone();
+    for h in [&mut g.z, &mut g.z2, &mut g.z3] {
+        h.betti[0] += 1;
+    }
+    g
+}
+
+/// What the cellular method said about a map, and the simplicial groups.
+enum Verdict {
+    Accepted(Groups),
+    Refused { error: PreconditionError, dim: usize, dart: u32, simplicial: Groups },
+}
+
+/// The simplicial groups (∂∂ = 0, H_0 = components); if the cellular method accepts, ∂∂ = 0,
+/// its χ is the map's and its groups are the simplicial ones over Z, Z/2, Z/3; if it
+/// refuses, the cell it names really fails.
+fn judge(m: &DenseMap) -> Result<Verdict, TestCaseError> {
+    prop_assert_eq!(m.validate(), Ok(()));
+    let s = simplicial_complex(m);
+    prop_assert_eq!(s.check_dd(), Ok(()));
+    let hs = groups(&s)?;
+    prop_assert_eq!(hs.z.betti[0], m.component_count());
+    match cellular_complex(m) {
+        Ok(c) => {
+            prop_assert_eq!(c.chain.check_dd(), Ok(()));
+            prop_assert_eq!(c.chain.euler_characteristic(), m.euler_characteristic());
+            let hc = groups(&c.chain)?;
+            prop_assert_eq!(&hc, &hs, "cellular (left) and simplicial (right) differ");
+            Ok(Verdict::Accepted(hs))
+        }
+        Err(error) => {
+            let (dim, dart) = check_refusal(m, &error)?;
+            Ok(Verdict::Refused { error, dim, dart, simplicial: hs })
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// family (a): voxel sets
+
+/// The cubes of a grid with `keep[c]` (cube `c` numbered as [`build::grid`] does, axis 0
+/// fastest), shared facets sewn.
+fn voxels(sizes: &[usize], periodic: &[bool], keep: &[bool]) -> DenseMap {
+    let g = build::grid(sizes, periodic).expect("small grid");
+    let cubes: usize = sizes.iter().product();
+    let per = g.dart_count() / cubes;
+    let keep_dart: Vec<bool> = (0..g.dart_count()).map(|d| keep[d / per]).collect();
+    restrict(&g, &keep_dart)
+}
+
+/// Grid sizes in `1..=max`, periodicity flags and a mask of cubes of density 0.5, 0.8 or
+/// 0.95 (so that cavities and tunnels show up), never empty.
+fn voxel_params(dim: usize, max: usize) -> impl Strategy<Value = (Vec<usize>, Vec<bool>, Vec<bool>)> {
+    (prop::collection::vec(1..=max, dim), prop::collection::vec(any::<bool>(), dim), 0usize..3).prop_flat_map(
+        |(sizes, periodic, density)| {
+            let cubes: usize = sizes.iter().product();
+            let p = [0.5, 0.8, 0.95][density];
+            (Just(sizes), Just(periodic), prop::collection::vec(prop::bool::weighted(p), cubes)).prop_map(
+                |(s, per, mut keep)| {
+                    if !keep.contains(&true) {
+                        keep[0] = true;
+                    }
+                    (s, per, keep)
+                },
+            )
+        },
+    )
+}
+
+#[test]
+fn voxel_sets_3d_cellular_equals_simplicial() {
+    let tally = Tally::default();
+    run(48, voxel_params(3, 5), |(sizes, periodic, keep)| {
+        let m = voxels(&sizes, &periodic, &keep);
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                tally.add("accepted");
+                if h.z.betti[1] > 0 {
+                    tally.add("H1 != 0");
+                }
+                if h.z.betti[2] > 0 {
+                    tally.add("H2 != 0");
+                }
+                if h.z.betti[0] > 1 {
+                    tally.add("H0 > Z");
+                }
+            }
+            Verdict::Refused { error, .. } => return Err(fail(format!("a voxel set meets C1 and C2: {error}"))),
+        }
+        Ok(())
+    });
+    tally.report("voxels 3D");
+    assert_eq!(tally.get("accepted"), 48);
+    assert!(tally.get("H1 != 0") >= 8, "too few tunnels");
+    assert!(tally.get("H2 != 0") >= 4, "too few cavities");
+}
+
+#[test]
+fn voxel_sets_4d_cellular_equals_simplicial() {
+    let tally = Tally::default();
+    run(8, voxel_params(4, 2), |(sizes, periodic, keep)| {
+        let m = voxels(&sizes, &periodic, &keep);
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                tally.add("accepted");
+                if h.z.betti.iter().skip(1).any(|&b| b > 0) {
+                    tally.add("H_k != 0 for some k > 0");
+                }
+            }
+            Verdict::Refused { error, .. } => return Err(fail(format!("a voxel set meets C1 and C2: {error}"))),
+        }
+        Ok(())
+    });
+    tally.report("voxels 4D");
+    assert_eq!(tally.get("accepted"), 8);
+}
+
+// ---------------------------------------------------------------------------------------
+// family (b): random gluings
+
+/// Pieces (`true`: an n-cube, `false`: an n-simplex) whose facets are paired at random
+/// (pieces of one facet shape only) by a random isomorphism of the facets (rotations and
+/// reflections), sewn with `alpha_n`; about one facet in `free_one_in` stays free.
+fn glued(n: usize, cubes: &[bool], free_one_in: usize, seed: u64) -> DenseMap {
+    let mut rng = Rng(seed);
+    let mut m = DenseMap::new(n, 0);
+    for &c in cubes {
+        let piece = if c { build::cube(n) } else { build::simplex(n) }.expect("small piece");
+        m = union(&m, &piece);
+    }
+    let p = m.partition(AlphaSet::below(n - 1));
+    let mut darts_of: Vec<Vec<u32>> = vec![Vec::new(); p.len()];
+    for d in 0..m.dart_count() {
+        darts_of[p.of[d] as usize].push(d as u32);
+    }
+    let mut order: Vec<usize> = (0..p.len()).collect();
+    rng.shuffle(&mut order);
+    let mut used = vec![false; p.len()];
+    let facet_alphas: Vec<usize> = (0..n - 1).collect();
+    for a in 0..order.len() {
+        let f = order[a];
+        if used[f] || rng.below(free_one_in) == 0 {
+            continue;
+        }
+        let Some(&g) = order[a + 1..].iter().find(|&&g| !used[g] && darts_of[g].len() == darts_of[f].len()) else {
+            continue;
+        };
+        let e0 = darts_of[g][rng.below(darts_of[g].len())];
+        let Some(pairs) = orbit_iso(&m, Dart(darts_of[f][0]), Dart(e0), &facet_alphas) else {
+            continue; // a square onto a triangle's flags cannot happen (same size), but stay safe
+        };
+        for (x, y) in pairs {
+            m.link(Dart(x), Dart(y), n);
+        }
+        used[f] = true;
+        used[g] = true;
+    }
+    m
+}
+
+fn gluing_family(
+    n: usize,
+    cases: u32,
+    pieces: std::ops::RangeInclusive<usize>,
+    cube_weight: f64,
+    free_one_in: std::ops::Range<usize>,
+) -> Tally {
+    let tally = Tally::default();
+    let strategy = (prop::collection::vec(prop::bool::weighted(cube_weight), pieces), free_one_in, any::<u64>());
+    run(cases, strategy, |(cubes, free_one_in, seed)| {
+        let m = glued(n, &cubes, free_one_in, seed);
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                tally.add("accepted");
+                if h.z.torsion.iter().any(|t| !t.is_empty()) {
+                    tally.add("torsion");
+                }
+                if h.z.betti.iter().skip(1).any(|&b| b > 0) {
+                    tally.add("H_k != 0 for some k > 0");
+                }
+            }
+            Verdict::Refused { error, dim, .. } => {
+                // the pieces' own cells are balls: only folded or open lower cells can fail
+                prop_assert!(matches!(error, PreconditionError::C1(_)), "{}", error);
+                prop_assert!(dim < n, "{}", error);
+                tally.add(if dim == 1 { "refused: folded edge" } else { "refused: folded face" });
+            }
+        }
+        Ok(())
+    });
+    tally
+}
+
+#[test]
+fn random_gluings_of_tetrahedra_and_cubes() {
+    let tally = gluing_family(3, 64, 1..=6, 0.4, 3..10);
+    tally.report("gluings 3D");
+    let acc = tally.get("accepted");
+    assert!(acc >= 12, "too few accepted gluings: {acc} of 64");
+    assert!(acc <= 60, "too few refused gluings: {} of 64", 64 - acc);
+}
+
+#[test]
+fn random_gluings_of_4_simplices() {
+    let tally = gluing_family(4, 24, 1..=3, 0.3, 2..3);
+    tally.report("gluings 4D");
+    assert!(tally.get("accepted") >= 2, "too few accepted gluings");
+}
+
+// ---------------------------------------------------------------------------------------
+// family (c): Euler operators on classic objects
+
+/// Random Euler operators (split an edge, split a face, a dangling edge, remove or
+/// contract a cell) tried at random darts; each applied only when its predicate allows.
+/// Returns the number applied.
+fn random_euler_ops(g: &mut GMap, steps: usize, rng: &mut Rng) -> usize {
+    let n = g.dim();
+    let mut applied = 0;
+    for _ in 0..steps {
+        let darts: Vec<_> = g.darts().collect();
+        let d = darts[rng.below(darts.len())];
+        let ok = match rng.below(6) {
+            0 => ops::can_insert_vertex(g, d) && ops::try_insert_vertex(g, d).is_ok(),
+            1 => {
+                let face = g.orbit(d, AlphaSet::of(&[0, 1]));
+                let d2 = face[rng.below(face.len())];
+                ops::can_insert_edge(g, d, d2) && ops::try_insert_edge(g, d, d2).is_ok()
+            }
+            2 => ops::can_insert_dangling_edge(g, d) && ops::try_insert_dangling_edge(g, d).is_ok(),
+            3 | 4 => {
+                let i = rng.below(n);
+                ops::is_removable(g, d, i) && ops::try_remove_cell(g, d, i).is_ok()
+            }
+            _ => {
+                let i = 1 + rng.below(n);
+                ops::is_contractible(g, d, i) && ops::try_contract_cell(g, d, i).is_ok()
+            }
+        };
+        applied += usize::from(ok);
+    }
+    applied
+}
+
+/// A classic closed or bounded object and its integer homology.
+fn classic(kind: usize, a: usize, b: usize, c: usize) -> (DenseMap, String, &'static str) {
+    match kind {
+        0 => (build::solid_torus(a).unwrap(), "(Z, Z, 0, 0)".into(), "solid torus"),
+        1 => (build::grid(&[a, b, c], &[true; 3]).unwrap(), "(Z, Z^3, Z^3, Z)".into(), "3-torus"),
+        2 => {
+            let p = a + b + c; // 3..=6
+            let q = (1..p).filter(|q| gcd(*q, p) == 1).nth(c % 2).unwrap_or(1);
+            (build::lens_space(p, q).unwrap(), format!("(Z, Z/{p}, 0, Z)"), "lens space")
+        }
+        // not L(1, 0) nor L(2, 1): see `removing_the_loop_edge_of_l1_and_l2_keeps_the_space`
+        3 => (build::grid(&[a, b, c], &[true, true, false]).unwrap(), "(Z, Z^2, Z, 0)".into(), "torus × I"),
+        _ => {
+            let sizes = [1, 1, a.min(2), b.min(2)];
+            (build::grid(&sizes, &[true; 4]).unwrap(), "(Z, Z^4, Z^6, Z^4, Z)".into(), "4-torus")
+        }
+    }
+}
+
+fn gcd(a: usize, b: usize) -> usize {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
+    }
+}
+
+#[test]
+fn euler_operators_on_classic_objects_keep_the_groups() {
+    let tally = Tally::default();
+    let strategy = ((0usize..5), 1usize..=2, 1usize..=2, 1usize..=2, 0usize..24, any::<u64>());
+    run(40, strategy, |(kind, a, b, c, steps, seed)| {
+        let (base, want, name) = classic(kind, a, b, c);
+        match judge(&base)? {
+            Verdict::Accepted(h) => prop_assert_eq!(h.z.to_string(), want.clone(), "{}", name),
+            Verdict::Refused { error, .. } => return Err(fail(format!("{name}: base object refused: {error}"))),
+        }
+        let (mut g, _) = GMap::from_dense(&base);
+        let mut rng = Rng(seed);
+        let applied = random_euler_ops(&mut g, steps, &mut rng);
+        let (m, _) = g.to_dense();
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                prop_assert_eq!(h.z.to_string(), want.clone(), "{} after {} operators", name, applied);
+                tally.add("accepted");
+            }
+            Verdict::Refused { error, simplicial, .. } => {
+                prop_assert_eq!(simplicial.z.to_string(), want.clone(), "{} after {} operators", name, applied);
+                eprintln!("{name} after {applied} operators: refused: {error}");
+                tally.add("refused");
+            }
+        }
+        if applied > 0 {
+            tally.add("changed");
+        }
+        if m.cell_counts() != base.cell_counts() {
+            tally.add("cells changed");
+        }
+        Ok(())
+    });
+    tally.report("Euler operators");
+    assert!(tally.get("changed") >= 20, "too few operators applied");
+    assert!(tally.get("accepted") >= 30, "Euler operators should keep C1 and C2");
+}
+
+// ---------------------------------------------------------------------------------------
+// violations
+
+/// A closed surface from a schema word (orientable of genus `g`, or the connected sum of
+/// `g` projective planes), subdivided by random edge and face splits, as a 3-map with
+/// `alpha_3` the identity: one volume bounded by the surface — the cone on it, contractible.
+fn coned_surface(orientable: bool, g: usize, steps: usize, rng: &mut Rng) -> DenseMap {
+    let word = if orientable { build::orientable_surface_word(g) } else { build::nonorientable_surface_word(g) };
+    let s = build::schema(&word).unwrap();
+    let (mut gm, _) = GMap::from_dense(&s);
+    for _ in 0..steps {
+        let darts: Vec<_> = gm.darts().collect();
+        let d = darts[rng.below(darts.len())];
+        if rng.below(2) == 0 {
+            if ops::can_insert_vertex(&gm, d) {
+                ops::try_insert_vertex(&mut gm, d).unwrap();
+            }
+        } else {
+            let face = gm.orbit(d, AlphaSet::of(&[0, 1]));
+            let d2 = face[rng.below(face.len())];
+            if ops::can_insert_edge(&gm, d, d2) {
+                ops::try_insert_edge(&mut gm, d, d2).unwrap();
+            }
+        }
+    }
+    gm.to_dense().0.embedded(3).unwrap()
+}
+
+#[test]
+fn volumes_bounded_by_surfaces_of_genus_at_least_one_are_refused() {
+    let tally = Tally::default();
+    let strategy = (any::<bool>(), 0usize..=3, 0usize..8, voxel_params(3, 3), any::<u64>());
+    run(40, strategy, |(orientable, g, steps, (sizes, periodic, keep), seed)| {
+        let mut rng = Rng(seed);
+        let good = voxels(&sizes, &periodic, &keep);
+        let hgood = groups(&simplicial_complex(&good))?;
+        let cone = coned_surface(orientable, g, steps, &mut rng);
+        let cone_first = rng.below(2) == 0;
+        let joined = if cone_first { union(&cone, &good) } else { union(&good, &cone) };
+        let cone_start = if cone_first { 0 } else { good.dart_count() };
+        let (m, perm) = shuffled(&joined, &mut rng);
+        let cone_darts: Vec<u32> = (cone_start..cone_start + cone.dart_count()).map(|d| perm[d]).collect();
+        let cone_min = *cone_darts.iter().min().unwrap();
+        let want = plus_point(&hgood);
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                prop_assert_eq!(g, 0, "a volume bounded by a surface of genus {} was accepted", g);
+                prop_assert_eq!(&h, &want);
+                tally.add("accepted: ball");
+            }
+            Verdict::Refused { error, dim, dart, simplicial } => {
+                prop_assert!(g > 0, "a ball was refused: {}", error);
+                prop_assert_eq!(dim, 3);
+                prop_assert_eq!(dart, cone_min, "the cell named is not the cone: {}", error);
+                if orientable {
+                    let chi = 2 - 2 * g as i64;
+                    match &error {
+                        PreconditionError::C2 { found, .. } => {
+                            prop_assert!(found.contains(&chi.to_string()), "χ = {} not in {}", chi, found)
+                        }
+                        other => return Err(fail(format!("expected C2, got {other}"))),
+                    }
+                    tally.add("refused: C2");
+                } else {
+                    prop_assert!(matches!(error, PreconditionError::C1(CellDefect::NotOrientable { .. })), "{}", error);
+                    tally.add("refused: C1 non-orientable");
+                }
+                prop_assert_eq!(&simplicial, &want, "the cone is contractible");
+            }
+        }
+        Ok(())
+    });
+    tally.report("coned surfaces");
+    assert!(tally.get("refused: C2") >= 4);
+    assert!(tally.get("refused: C1 non-orientable") >= 4);
+    assert!(tally.get("accepted: ball") >= 2);
+}
+
+#[test]
+fn four_cells_bounded_by_lens_spaces_and_3_tori_are_refused() {
+    let tally = Tally::default();
+    let strategy = (1usize..=5, 1usize..5, any::<bool>(), 1usize..=2, any::<u64>());
+    run(16, strategy, |(p, q, torus, a, seed)| {
+        let mut rng = Rng(seed);
+        let (boundary, is_sphere) = if torus {
+            (build::grid(&[a, 1, 1], &[true; 3]).unwrap(), false)
+        } else {
+            let q = if gcd(q % p, p) == 1 { q % p } else { 1 };
+            (build::lens_space(p, q).unwrap(), p == 1)
+        };
+        let (m, _) = shuffled(&boundary.embedded(4).unwrap(), &mut rng);
+        let ball = "(Z, 0, 0, 0, 0)";
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                prop_assert!(is_sphere, "a 4-cell with a non-sphere boundary was accepted");
+                prop_assert_eq!(h.z.to_string(), ball);
+                tally.add("accepted: bounded by S^3");
+            }
+            Verdict::Refused { error, dim, dart, simplicial } => {
+                prop_assert!(!is_sphere, "{}", error);
+                prop_assert!(matches!(error, PreconditionError::C2 { dim: 4, .. }), "{}", error);
+                prop_assert_eq!((dim, dart), (4, 0));
+                prop_assert_eq!(simplicial.z.to_string(), ball);
+                tally.add("refused: C2 in dimension 4");
+            }
+        }
+        Ok(())
+    });
+    tally.report("4-cells");
+    assert!(tally.get("refused: C2 in dimension 4") >= 6);
+}
+
+/// Whether the closed face of the darts `face` is embedded: its corners are distinct
+/// vertices and its sides distinct edges.
+fn face_embedded(m: &DenseMap, face: &[Dart]) -> bool {
+    let (v, e) = (m.cells(0), m.cells(1));
+    let mut vs: Vec<u32> = face.iter().map(|d| v.of[d.index()]).collect();
+    let mut es: Vec<u32> = face.iter().map(|d| e.of[d.index()]).collect();
+    vs.sort_unstable();
+    vs.dedup();
+    es.sort_unstable();
+    es.dedup();
+    vs.len() * 2 == face.len() && es.len() * 2 == face.len()
+}
+
+#[test]
+fn boundary_faces_folded_onto_themselves() {
+    let tally = Tally::default();
+    let strategy = (voxel_params(3, 4), 0usize..8, any::<u64>());
+    run(40, strategy, |((sizes, mut periodic, keep), turn, seed)| {
+        periodic[0] = false; // a boundary face always exists
+        let mut rng = Rng(seed);
+        let good = voxels(&sizes, &periodic, &keep);
+        let hgood = groups(&simplicial_complex(&good))?;
+        let free: Vec<Dart> = good.darts().filter(|&d| good.is_free(d, 3)).collect();
+        prop_assert!(!free.is_empty());
+        let d = free[rng.below(free.len())];
+        let face = good.orbit(d, AlphaSet::of(&[0, 1]));
+        prop_assert_eq!(face.len(), 8);
+        let embedded = face_embedded(&good, &face);
+        // the square's flags: rotations are even, reflections odd
+        let rot = |x: Dart| good.alpha(good.alpha(x, 0), 1);
+        let reflect = turn < 6;
+        let mut e0 = if reflect { good.alpha(d, 0) } else { rot(rot(d)) };
+        for _ in 0..turn % 4 {
+            if reflect {
+                e0 = rot(e0);
+            }
+        }
+        let pairs = orbit_iso(&good, d, e0, &[0, 1]).expect("a symmetry of the square");
+        let phi: HashMap<u32, u32> = pairs.iter().copied().collect();
+        for (&x, &y) in &phi {
+            prop_assert!(x != y && phi[&y] == x, "the symmetry must be a fixed-point-free involution");
+        }
+        let mut m = good.clone();
+        for (&x, &y) in &phi {
+            m.link(Dart(x), Dart(y), 3);
+        }
+        let face_set: Vec<u32> = face.iter().map(|x| x.0).collect();
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                prop_assert!(!reflect, "a face folded by a reflection was accepted");
+                if embedded {
+                    prop_assert_eq!(&h, &hgood, "folding an embedded square by a half-turn keeps the groups");
+                }
+                tally.add("half-turn: accepted");
+            }
+            Verdict::Refused { error, dim, dart, simplicial } => {
+                prop_assert!(matches!(error, PreconditionError::C1(_)), "{}", error);
+                prop_assert!(dim == 1 || dim == 2, "{}", error);
+                let cell = m.orbit(Dart(dart), AlphaSet::cell(dim, 3));
+                prop_assert!(cell.iter().any(|x| face_set.contains(&x.0)), "the cell named misses the fold: {}", error);
+                if embedded {
+                    prop_assert_eq!(&simplicial, &hgood, "folding an embedded square keeps the groups");
+                    tally.add("known groups");
+                }
+                tally.add(if reflect { "reflection: refused" } else { "half-turn: refused (folded edge)" });
+            }
+        }
+        Ok(())
+    });
+    tally.report("folded faces");
+    assert!(tally.get("reflection: refused") >= 15);
+    assert!(tally.get("half-turn: accepted") >= 1);
+    assert!(tally.get("known groups") >= 10);
+}
+
+#[test]
+fn cells_opened_inside_are_refused() {
+    let tally = Tally::default();
+    let strategy = (prop_oneof![4 => Just(3usize), 1 => Just(4usize)], any::<u64>(), any::<u64>());
+    run(40, strategy, |(n, pick, seed)| {
+        let mut rng = Rng(seed);
+        let sizes: Vec<usize> = (0..n).map(|_| 1 + rng.below(if n == 3 { 3 } else { 2 })).collect();
+        let periodic: Vec<bool> = (0..n).map(|_| rng.below(2) == 0).collect();
+        let cubes: usize = sizes.iter().product();
+        let keep: Vec<bool> = (0..cubes).map(|c| c == 0 || rng.below(4) != 0).collect();
+        let good = voxels(&sizes, &periodic, &keep);
+        let d = Dart((pick % good.dart_count() as u64) as u32);
+        let k = rng.below(n);
+        let far: Vec<usize> = (0..=n).filter(|&j| j + 2 <= k || j >= k + 2).collect();
+        let opened = good.orbit(d, AlphaSet::of(&far));
+        let mut m = good.clone();
+        let mut freed: Vec<u32> = Vec::new();
+        for &x in &opened {
+            let y = m.alpha(x, k);
+            if y != x {
+                freed.extend([x.0, y.0]);
+                m.unlink(x, k);
+            }
+        }
+        prop_assert!(!freed.is_empty(), "only alpha_n is free in a voxel set");
+        match judge(&m)? {
+            Verdict::Accepted(_) => return Err(fail(format!("darts {freed:?} are {k}-free and it was accepted"))),
+            Verdict::Refused { error, dim, dart, .. } => {
+                match &error {
+                    PreconditionError::C1(CellDefect::IncompleteBoundary { alpha, .. }) => prop_assert_eq!(*alpha, k),
+                    other => return Err(fail(format!("expected an incomplete boundary, got {other}"))),
+                }
+                prop_assert_eq!(dim, k + 1, "{}", error);
+                let cell = m.orbit(Dart(dart), AlphaSet::cell(dim, n));
+                prop_assert!(cell.iter().any(|x| freed.contains(&x.0)), "the cell named misses the cut: {}", error);
+                tally.add(if n == 3 { "refused 3D" } else { "refused 4D" });
+            }
+        }
+        Ok(())
+    });
+    tally.report("opened cells");
+    assert_eq!(tally.get("refused 3D") + tally.get("refused 4D"), 40);
+}
+
+/// L(1, 0) (the 3-sphere) and L(2, 1) (projective 3-space) have one edge, a loop whose
+/// vertex is made of its own darts only, with `alpha_2 alpha_3` an involution on it.
+/// `is_removable` takes it for a dangling edge and `try_remove_cell` then deletes every
+/// dart: the space becomes the empty map. Ignored until gmap-ops tells a loop from a
+/// dangling edge (`check_collapse`, the `remove && i == 1` branch).
+#[test]
+#[ignore = "gmap-ops bug: the loop edge of L(1, 0) and L(2, 1) is removed as a dangling edge, emptying the map"]
+fn removing_the_loop_edge_of_l1_and_l2_keeps_the_space() {
+    for (p, q, want) in [(1, 0, "(Z, 0, 0, Z)"), (2, 1, "(Z, Z/2, 0, Z)")] {
+        let base = build::lens_space(p, q).unwrap();
+        assert_eq!(base.cell_counts(), vec![1, 1, 1, 1]);
+        let (mut g, ids) = GMap::from_dense(&base);
+        if ops::is_removable(&g, ids[0], 1) {
+            ops::try_remove_cell(&mut g, ids[0], 1).unwrap();
+        }
+        let (m, _) = g.to_dense();
+        let h = homology_z(&simplicial_complex(&m)).unwrap();
+        assert_eq!(h.to_string(), want, "L({p}, {q})");
+    }
+}
