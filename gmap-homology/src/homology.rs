@@ -1,6 +1,11 @@
 //! Homology groups of a [`ChainComplex`] over `Z` and over `Z/p`.
 //!
-//! Three stages:
+//! Four stages:
+//! 0. [`crate::morse`] pairs cells by collapses and coreductions over the whole complex at
+//!    once — fill-free, so the reduced complex is a restriction of the input — and makes a
+//!    cell critical where the sweep gets stuck (fill only in critical rows); on manifolds,
+//!    cube grids and simplicial counterparts what is left has as many cells as the Betti
+//!    numbers;
 //! 1. [`crate::reduce`] eliminates unit pivots dimension by dimension (coreductions and
 //!    collapses first, frozen rows when stuck), leaving a small complex on surviving cells;
 //! 2. each matrix of that small complex is reduced again with general unit pivots;

@@ -14,9 +14,15 @@
 //! * [`SparseMatrix`]: CSC integer matrices with validated invariants.
 //! * [`ChainComplex`]: cell counts per dimension and `∂_k : C_k → C_{k-1}`, `∂∂ = 0` checked.
 //! * [`homology_z`] / [`homology_zp`]: [`Homology`] (Betti numbers and torsion invariant
-//!   factors) by unit-pivot sparse elimination (coreductions and collapses first), then
-//!   Smith normal form of the small remainder, with checked `i64` and a big-integer
-//!   fall-back.
+//!   factors) in three stages: a fill-free pass of collapses and coreductions over the whole
+//!   complex, making a cell critical where it gets stuck (`morse`, private: on manifolds and
+//!   cube grids it leaves as many cells as the Betti numbers, in time linear in the
+//!   entries); unit-pivot elimination of what is left (`reduce`, private too);
+//!   Smith normal form of the non-unit remainder. Checked `i64`, big-integer fall-back.
+//! * [`border::cellular_complex`]: the border operator of a map, after checking C1/C2 on two
+//!   threads; `∂_1`, `∂_n` and `∂_2` of 3-maps by local formulas, the rest by orbit walks.
+//! * [`generators::generators`]: a representative cycle per summand, found on the reduced
+//!   complex and lifted back through the eliminated pairs.
 //!
 //! ## Example
 //!

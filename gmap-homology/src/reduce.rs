@@ -1,4 +1,4 @@
-//! Sparse elimination with unit pivots: the near-linear first stage of the homology
+//! Sparse elimination with unit pivots: the general stage of the homology
 //! computation.
 //!
 //! ## The reduction step

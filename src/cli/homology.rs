@@ -26,10 +26,15 @@ pub struct Options {
     pub max_darts: Option<u64>,
 }
 
-/// Prints a stage message on stderr when it is a terminal (CONTRACT §1: progress only there).
+/// When the command started (for the elapsed times of the progress lines).
+static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+
+/// Prints a stage message on stderr when it is a terminal (CONTRACT §1: progress only
+/// there), with the time elapsed since the start: `gmap homology: [  0.41 s] reducing…`.
 fn progress(msg: &str) {
     if std::io::stderr().is_terminal() {
-        eprintln!("gmap homology: {msg}");
+        let t = START.get_or_init(std::time::Instant::now).elapsed().as_secs_f64();
+        eprintln!("gmap homology: [{t:7.2} s] {msg}…");
     }
 }
 
@@ -88,7 +93,11 @@ fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named> {
 }
 
 fn compute(c: &ChainComplex, field: Option<u64>) -> Result<Homology> {
-    progress("reducing");
+    progress(&format!(
+        "reducing {} cells ({} matrix entries): collapses, coreductions, then elimination",
+        c.counts().iter().sum::<usize>(),
+        (1..c.counts().len()).map(|k| c.boundary(k).nnz()).sum::<usize>()
+    ));
     Ok(match field {
         Some(p) => homology_zp(c, p)?,
         None => homology_z(c)?,
@@ -101,7 +110,9 @@ pub fn run(o: &Options) -> Result<()> {
             bail!("--field {p}: the field must be Z/P for a prime P below 2^31");
         }
     }
+    START.get_or_init(std::time::Instant::now);
     let file = o.file.display().to_string();
+    progress(&format!("reading {file}"));
     let loaded = load(&o.file, o.max_darts)?;
     let (dim, named) = match loaded {
         Loaded::Map(map) => {
@@ -134,6 +145,7 @@ pub fn run(o: &Options) -> Result<()> {
         Method::Simplicial => "simplicial",
     };
     let gens = if o.generators {
+        progress("computing generators and lifting them to the input's cells");
         Some(gmap_homology::generators::generators(&named.chain, o.field).with_context(|| file.clone())?)
     } else {
         None
