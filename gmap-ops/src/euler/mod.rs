@@ -37,5 +37,5 @@ pub mod strata;
 pub mod vector;
 
 pub use ops::{CloseReport, EulerError};
-pub use simplify::{simplify, SimplifyReport};
+pub use simplify::{simplify, simplify_with, SimplifyOptions, SimplifyReport};
 pub use vector::{EpBasis, EpVector, EulerOp};

@@ -6,27 +6,41 @@
 //! (i+1)-cell — a ball glued to a ball along a ball — and leaves the space untouched;
 //! contracting an i-cell of dual degree 2 between two distinct (i-1)-cells is the dual
 //! move, a homotopy equivalence. Both therefore keep the homology and keep the cells balls,
-//! while the number of darts drops. [`simplify`] applies them greedily, dimension by
-//! dimension, until none applies:
+//! while the number of darts drops.
 //!
-//! 1. contractions for `i = 1, …, n`: vertices merge along a spanning forest of the
-//!    1-skeleton, then 2-gons collapse onto an edge, …;
-//! 2. removals for `i = n-1, …, 0`: n-cells merge along a spanning forest of the dual
-//!    graph, then faces merge across edges of degree 2, …;
+//! Two more conditions keep every step a homotopy equivalence that the G-map can represent:
+//! the cell's appearances in each k-cell it touches must join distinct *corners* (pieces of
+//! the neighbouring cells around that k-cell) without closing a cycle — otherwise the
+//! k-cell would fall apart, as a volume does when an edge it meets twice is contracted — and
+//! a contraction never merges two cells that carry free darts (two boundary vertices joined
+//! by an interior edge would pinch the space).
 //!
-//! and repeats while something changed. Two more conditions keep every step a homotopy
-//! equivalence that the G-map can represent: the cell's appearances in each k-cell it
-//! touches must join distinct *corners* (pieces of the neighbouring cells around that
-//! k-cell) without closing a cycle — otherwise the k-cell would fall apart, as a volume
-//! does when an edge it meets twice is contracted — and a contraction never merges two
-//! cells that carry free darts (two boundary vertices joined by an interior edge would
-//! pinch the space). Each pass is linear: the (i±1)-cells are tracked by
-//! a union–find structure, since removing i-cells only merges (i+1)-cells and leaves the
-//! other i-cells and the involutions the degree test reads untouched.
+//! # Order of the moves
+//!
+//! [`simplify`] scans the cells dimension by dimension (removals of (n-1)-cells, which merge
+//! the n-cells along a spanning tree of the dual graph, then of (n-2)-cells, …, then the
+//! contractions of 1-cells, which merge the vertices along a spanning tree, 2-cells, …) and
+//! repeats until nothing applies. The order matters: after a removal of an i-cell, the
+//! (i-1)-cells on its border have lost a neighbour and are re-examined *at once*, before the
+//! scan goes on (a work stack; dually after a contraction for the (i+1)-cells). In a
+//! 3-manifold an edge whose degree falls to 2 is thus removed while its two faces still
+//! separate two distinct volumes, and the merged face is removed later in the scan: this
+//! is the collapse of a free edge of discrete Morse theory. Removing all the faces of the
+//! spanning tree first instead leaves such an edge with one face on both sides of the
+//! single volume, where no removal or contraction applies any more.
+//!
+//! # Cost
+//!
+//! Every dart carries, per dimension k, the number of its k-cell in the input; cells only
+//! merge under the moves (the corner test forbids splits), so a union–find structure per
+//! dimension names the current cells, and no partition is recomputed. A move costs
+//! O(|c| n²) for the darts of the cell c it removes, plus the corners it has to compare
+//! when c meets one k-cell twice; a scan costs O(N α(N)) on top of the moves, and a scan
+//! changing nothing ends the reduction. Memory: O(N n) words.
 
-use gmap_core::{AlphaSet, DenseMap};
+use gmap_core::DenseMap;
 
-const DEAD: u32 = u32::MAX;
+const NONE: u32 = u32::MAX;
 
 /// What [`simplify`] did.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -43,7 +57,7 @@ pub struct SimplifyReport {
     pub removed: Vec<usize>,
     /// number of i-cells contracted, per i
     pub contracted: Vec<usize>,
-    /// rounds of (removals, contractions) run, the last one changing nothing
+    /// rounds of scans run, the last one changing nothing
     pub rounds: usize,
 }
 
@@ -58,266 +72,483 @@ impl SimplifyReport {
     }
 }
 
+#[derive(Clone)]
+struct UnionFind(Vec<u32>);
+
+impl UnionFind {
+    #[inline]
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.0[x as usize] != x {
+            let p = self.0[self.0[x as usize] as usize];
+            self.0[x as usize] = p;
+            x = p;
+        }
+        x
+    }
+}
+
+/// Cell numbers of every dart for the cells of dimension `k` (orbits of all involutions
+/// but `alpha_k`), and how many there are.
+fn labels(a: &[u32], n: usize, k: usize) -> (Vec<u32>, usize) {
+    let w = n + 1;
+    let nd = a.len() / w;
+    let idx: Vec<usize> = (0..=n).filter(|&j| j != k).collect();
+    let mut lab = vec![NONE; nd];
+    let mut count = 0u32;
+    let mut stack: Vec<u32> = Vec::new();
+    for d in 0..nd {
+        if lab[d] != NONE {
+            continue;
+        }
+        lab[d] = count;
+        stack.push(d as u32);
+        while let Some(x) = stack.pop() {
+            let row = &a[x as usize * w..x as usize * w + w];
+            for &j in &idx {
+                let y = row[j];
+                if lab[y as usize] == NONE {
+                    lab[y as usize] = count;
+                    stack.push(y);
+                }
+            }
+        }
+        count += 1;
+    }
+    (lab, count as usize)
+}
+
+#[derive(Clone)]
 struct Work {
     n: usize,
     w: usize,
     a: Vec<u32>,
     alive: Vec<bool>,
+    /// `label[k][d]`: the input k-cell of dart d; `uf[k]` merges them.
+    label: Vec<Vec<u32>>,
+    uf: Vec<UnionFind>,
+    /// `free[k][r]`: the k-cell of root r holds a free dart.
+    free: Vec<Vec<bool>>,
+    /// `exam[k][r]`: last scan that examined the k-cell of root r; `queued` likewise for
+    /// the work stack.
+    exam: Vec<Vec<u32>>,
+    queued: Vec<Vec<u32>>,
+    // scratch: membership of the current cell, appearances, corners
+    stamp: Vec<u32>,
+    tag: u32,
+    seen: Vec<u32>,
+    seen_tag: u32,
+    cstamp: Vec<u32>,
+    cid: Vec<u32>,
+    ctag: u32,
+    cell: Vec<u32>,
+    stack: Vec<u32>,
+    links: Vec<(u32, u32)>,
+    apps: Vec<(u32, u32)>,
+    work: Vec<(u8, bool, u32)>,
+    moves: u32,
+    /// also re-examine the merged neighbour cell after a move
+    up: bool,
+    removed: Vec<usize>,
+    contracted: Vec<usize>,
 }
 
-struct UnionFind(Vec<u32>);
-
-impl UnionFind {
-    fn new(k: usize) -> Self {
-        UnionFind((0..k as u32).collect())
+/// Bumps a stamp counter, clearing the stamps when it would wrap.
+fn bump(tag: &mut u32, stamps: &mut [u32]) -> u32 {
+    if *tag == u32::MAX - 1 {
+        stamps.iter_mut().for_each(|s| *s = 0);
+        *tag = 0;
     }
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let p = self.0[x as usize];
-            self.0[x as usize] = self.0[p as usize];
-            x = p;
-        }
-        x
-    }
-    fn union(&mut self, x: u32, y: u32) {
-        let (rx, ry) = (self.find(x), self.find(y));
-        if rx != ry {
-            self.0[rx as usize] = ry;
-        }
-    }
+    *tag += 1;
+    *tag
 }
 
 impl Work {
+    fn new(map: &DenseMap) -> (Self, Vec<usize>) {
+        let n = map.dim();
+        let a = map.flat().to_vec();
+        let nd = map.dart_count();
+        // the n + 1 partitions, shared between two threads
+        let mut parts: Vec<(Vec<u32>, usize)> = if nd >= 1 << 16 {
+            std::thread::scope(|s| {
+                let a = &a;
+                let odd = s.spawn(move || (1..=n).step_by(2).map(|k| labels(a, n, k)).collect::<Vec<_>>());
+                let even: Vec<_> = (0..=n).step_by(2).map(|k| labels(a, n, k)).collect();
+                let odd = odd.join().expect("labelling thread");
+                let mut all = Vec::with_capacity(n + 1);
+                let (mut e, mut o) = (even.into_iter(), odd.into_iter());
+                for k in 0..=n {
+                    all.push(if k % 2 == 0 { e.next() } else { o.next() }.expect("one partition per k"));
+                }
+                all
+            })
+        } else {
+            (0..=n).map(|k| labels(&a, n, k)).collect()
+        };
+        let counts: Vec<usize> = parts.iter().map(|p| p.1).collect();
+        let label: Vec<Vec<u32>> = parts.drain(..).map(|p| p.0).collect();
+        let mut free: Vec<Vec<bool>> = counts.iter().map(|&c| vec![false; c]).collect();
+        let w = n + 1;
+        for d in 0..nd {
+            if a[d * w..d * w + w].iter().any(|&y| y as usize == d) {
+                for k in 0..=n {
+                    free[k][label[k][d] as usize] = true;
+                }
+            }
+        }
+        let work = Work {
+            n,
+            w,
+            a,
+            alive: vec![true; nd],
+            label,
+            uf: counts.iter().map(|&c| UnionFind((0..c as u32).collect())).collect(),
+            free,
+            exam: counts.iter().map(|&c| vec![0; c]).collect(),
+            queued: counts.iter().map(|&c| vec![0; c]).collect(),
+            stamp: vec![0; nd],
+            tag: 0,
+            seen: vec![0; nd],
+            seen_tag: 0,
+            cstamp: Vec::new(),
+            cid: Vec::new(),
+            ctag: 0,
+            cell: Vec::new(),
+            stack: Vec::new(),
+            links: Vec::new(),
+            apps: Vec::new(),
+            work: Vec::new(),
+            moves: 0,
+            up: false,
+            removed: vec![0; n + 1],
+            contracted: vec![0; n + 1],
+        };
+        (work, counts)
+    }
+
     #[inline]
     fn al(&self, d: u32, i: usize) -> u32 {
         self.a[d as usize * self.w + i]
     }
+
     #[inline]
-    fn set(&mut self, d: u32, i: usize, e: u32) {
-        self.a[d as usize * self.w + i] = e;
+    fn root(&mut self, k: usize, d: u32) -> u32 {
+        let l = self.label[k][d as usize];
+        self.uf[k].find(l)
     }
 
-    /// Orbit partition of the live darts: `of[d]` (DEAD for dead darts) and the CSR members.
-    fn partition(&self, set: AlphaSet) -> (Vec<u32>, Vec<usize>, Vec<u32>) {
-        let idx: Vec<usize> = set.iter().filter(|&i| i <= self.n).collect();
-        let nd = self.alive.len();
-        let mut of = vec![DEAD; nd];
-        let mut offsets = vec![0usize];
-        let mut members: Vec<u32> = Vec::with_capacity(nd);
-        let mut count = 0u32;
-        for d in 0..nd {
-            if !self.alive[d] || of[d] != DEAD {
-                continue;
-            }
-            let start = members.len();
-            of[d] = count;
-            members.push(d as u32);
-            let mut k = start;
-            while k < members.len() {
-                let x = members[k];
-                k += 1;
-                for &i in &idx {
-                    let y = self.al(x, i);
-                    if of[y as usize] == DEAD {
-                        of[y as usize] = count;
-                        members.push(y);
-                    }
-                }
-            }
-            offsets.push(members.len());
-            count += 1;
-        }
-        (of, offsets, members)
-    }
-
-    /// One pass over the i-cells: collapse each one whose neighbours through `nb`
-    /// (i+1 for removal, i-1 for contraction) are two distinct cells, whose degree test
-    /// (with `nb2`) passes, and whose appearances in every k-cell that could be cut
-    /// (k < i for removal, k > i for contraction) join distinct corners without a cycle.
-    /// Returns the number of cells collapsed.
-    fn pass(&mut self, i: usize, remove: bool) -> usize {
+    /// Collects the i-cell of `x0` into `self.cell` (stamped with the returned tag) while
+    /// testing the cheap conditions of the move; `None` when one fails. On success the two
+    /// neighbour cells (roots in dimension `nb`) are returned.
+    fn gather(&mut self, i: usize, remove: bool, x0: u32) -> Option<(u32, [u32; 2])> {
         let n = self.n;
         let nb = if remove { i + 1 } else { i - 1 };
         let nb2 = if remove { (i + 2 <= n).then_some(i + 2) } else { i.checked_sub(2) };
-        let (_, offsets, members) = self.partition(AlphaSet::cell(i, n));
-        let (nb_of, nb_off, _) = self.partition(AlphaSet::cell(nb, n));
-        let mut uf = UnionFind::new(nb_off.len() - 1);
-        // contraction merges the two end cells: both must be interior (a free dart in either
-        // means a boundary cell, and merging two boundary cells along an interior cell
-        // pinches the space, which a G-map cannot represent)
-        let mut has_free = vec![false; nb_off.len() - 1];
-        if !remove {
-            for d in 0..self.alive.len() {
-                if self.alive[d] && (0..=n).any(|j| self.al(d as u32, j) == d as u32) {
-                    has_free[nb_of[d] as usize] = true;
-                }
-            }
+        let tag = bump(&mut self.tag, &mut self.stamp);
+        self.cell.clear();
+        self.stack.clear();
+        self.stamp[x0 as usize] = tag;
+        self.stack.push(x0);
+        // with the degree condition, alpha_nb is the only involution of the cell that leaves
+        // an nb-cell: the darts of the cell lie in the nb-cell of x0 and in that of its image
+        let roots = [self.root(nb, x0), self.root(nb, self.al(x0, nb))];
+        if roots[0] == roots[1] {
+            return None;
         }
-        // corners: for each k-cell that the collapse could cut, the pieces of the
-        // neighbouring cells around it, orbits of every involution but alpha_nb and alpha_k
-        let ks: Vec<usize> = (0..=n).filter(|&k| k != i && k != nb).collect();
-        // computed on the first candidate only: a pass where no cell passes the cheap tests
-        // (the last round, typically) costs two partitions instead of n + 1
-        let mut corners: Vec<(usize, Vec<u32>, UnionFind)> = Vec::new();
-        let mut corners_ready = false;
-        let mut stamp = vec![0u32; self.alive.len()];
-        let mut seen = vec![0u64; self.alive.len()];
-        let mut epoch = 0u64;
-        let mut done = 0;
-        let mut links: Vec<(u32, u32)> = Vec::new();
-        let mut joins: Vec<(usize, u32, u32)> = Vec::new();
-        let mut stack: Vec<u32> = Vec::new();
-        for c in 0..offsets.len() - 1 {
-            let cell = &members[offsets[c]..offsets[c + 1]];
-            let tag = c as u32 + 1;
-            // boundary and degree
-            let mut ok = true;
-            for &x in cell {
-                let y = self.al(x, nb);
-                if y == x || (!remove && (0..=n).any(|j| self.al(x, j) == x)) {
-                    ok = false;
-                    break;
-                }
-                if let Some(j) = nb2 {
-                    if self.al(y, j) != self.al(self.al(x, j), nb) {
-                        ok = false;
-                        break;
-                    }
+        if !remove && (self.free[nb][roots[0] as usize] || self.free[nb][roots[1] as usize]) {
+            return None;
+        }
+        while let Some(x) = self.stack.pop() {
+            self.cell.push(x);
+            let y = self.al(x, nb);
+            if y == x || (!remove && (0..=n).any(|j| self.al(x, j) == x)) {
+                return None;
+            }
+            if let Some(j) = nb2 {
+                if self.al(y, j) != self.al(self.al(x, j), nb) {
+                    return None;
                 }
             }
-            if !ok {
-                continue;
-            }
-            // exactly two distinct neighbour cells
-            let mut roots: [u32; 2] = [DEAD, DEAD];
-            for &x in cell {
-                let r = uf.find(nb_of[x as usize]);
-                if roots[0] == DEAD || roots[0] == r {
-                    roots[0] = r;
-                } else if roots[1] == DEAD || roots[1] == r {
-                    roots[1] = r;
-                } else {
-                    ok = false;
-                    break;
-                }
-            }
-            if !ok || roots[1] == DEAD || has_free[roots[0] as usize] || has_free[roots[1] as usize] {
-                continue;
-            }
-            // appearances in the k-cells that could be cut: each joins two corners, and the
-            // joins must form a forest (else a k-cell would fall apart)
-            for &x in cell {
-                stamp[x as usize] = tag;
-            }
-            joins.clear();
-            if !corners_ready {
-                corners = ks
-                    .iter()
-                    .map(|&k| {
-                        let (of, off, _) = self.partition(AlphaSet::all(n).without(nb).without(k));
-                        (k, of, UnionFind::new(off.len() - 1))
-                    })
-                    .collect();
-                corners_ready = true;
-            }
-            'ks: for (ci, (k, of, cuf)) in corners.iter_mut().enumerate() {
-                let k = *k;
-                let set: Vec<usize> = (0..=n).filter(|&j| j != i && j != k).collect();
-                let mut local: Vec<(u32, u32)> = Vec::new();
-                epoch += 1;
-                let mark = epoch;
-                for &x in cell {
-                    if seen[x as usize] == mark {
-                        continue;
-                    }
-                    // one appearance: the orbit of x in c without alpha_i and alpha_k
-                    let mut side: [u32; 2] = [DEAD, DEAD];
-                    stack.clear();
-                    stack.push(x);
-                    seen[x as usize] = mark;
-                    while let Some(y) = stack.pop() {
-                        let r = cuf.find(of[y as usize]);
-                        if side[0] == DEAD || side[0] == r {
-                            side[0] = r;
-                        } else if side[1] == DEAD || side[1] == r {
-                            side[1] = r;
-                        } else {
-                            ok = false;
-                            break 'ks;
-                        }
-                        for &j in &set {
-                            let z = self.al(y, j);
-                            if seen[z as usize] != mark {
-                                seen[z as usize] = mark;
-                                stack.push(z);
-                            }
-                        }
-                    }
-                    if side[1] == DEAD {
-                        ok = false;
-                        break 'ks;
-                    }
-                    local.push((side[0], side[1]));
-                }
-                // forest test on the corners joined by this cell's appearances
-                let mut tmp: Vec<(u32, u32)> = Vec::new();
-                let find = |tmp: &Vec<(u32, u32)>, mut v: u32| {
-                    while let Some(&(_, p)) = tmp.iter().find(|(a, _)| *a == v) {
-                        v = p;
-                    }
-                    v
-                };
-                for &(a, b) in &local {
-                    let (ra, rb) = (find(&tmp, a), find(&tmp, b));
-                    if ra == rb {
-                        ok = false;
-                        break 'ks;
-                    }
-                    tmp.push((ra, rb));
-                    joins.push((ci, a, b));
-                }
-            }
-            if !ok {
-                continue;
-            }
-            // collapse: re-link alpha_i around the cell, then kill its darts
-            links.clear();
-            for &x in cell {
-                let y = self.al(x, i);
-                if stamp[y as usize] == tag {
+            for j in 0..=n {
+                if j == i {
                     continue;
                 }
-                let mut wv = self.al(x, nb);
-                let mut z = self.al(wv, i);
-                let mut steps = 0;
-                while stamp[z as usize] == tag && z != wv && steps <= cell.len() {
-                    wv = self.al(z, nb);
-                    z = self.al(wv, i);
-                    steps += 1;
+                let z = self.al(x, j);
+                if self.stamp[z as usize] != tag {
+                    self.stamp[z as usize] = tag;
+                    self.stack.push(z);
                 }
-                let target = if stamp[z as usize] == tag { y } else { z };
-                links.push((y, target));
             }
-            for &x in cell {
-                self.alive[x as usize] = false;
-            }
-            for &(y, z) in &links {
-                self.set(y, i, z);
-                self.set(z, i, y);
-            }
-            uf.union(roots[0], roots[1]);
-            let r = uf.find(roots[0]) as usize;
-            has_free[r] = has_free[roots[0] as usize] || has_free[roots[1] as usize];
-            for &(ci, a, b) in &joins {
-                corners[ci].2.union(a, b);
-            }
-            done += 1;
         }
-        done
+        Some((tag, roots))
+    }
+
+    /// The corner of `x` around its k-cell: the orbit of every involution but `alpha_nb` and
+    /// `alpha_k`, named by its smallest dart (cached for the current corner tag).
+    fn corner(&mut self, x: u32, nb: usize, k: usize) -> u32 {
+        if self.cstamp.is_empty() {
+            self.cstamp = vec![0; self.alive.len()];
+            self.cid = vec![0; self.alive.len()];
+        }
+        if self.cstamp[x as usize] == self.ctag {
+            return self.cid[x as usize];
+        }
+        let t = self.ctag;
+        let mut members: Vec<u32> = vec![x];
+        self.cstamp[x as usize] = t;
+        let mut q = 0;
+        let mut least = x;
+        while q < members.len() {
+            let y = members[q];
+            q += 1;
+            least = least.min(y);
+            for j in 0..=self.n {
+                if j == nb || j == k {
+                    continue;
+                }
+                let z = self.al(y, j);
+                if self.cstamp[z as usize] != t {
+                    self.cstamp[z as usize] = t;
+                    members.push(z);
+                }
+            }
+        }
+        for &y in &members {
+            self.cid[y as usize] = least;
+        }
+        least
+    }
+
+    /// For every k-cell (k not i, nb) that the cell in `self.cell` meets more than once, its
+    /// appearances must join distinct corners along a forest.
+    fn corners_ok(&mut self, i: usize, nb: usize) -> bool {
+        let n = self.n;
+        for k in 0..=n {
+            if k == i || k == nb {
+                continue;
+            }
+            self.apps.clear();
+            let set: Vec<usize> = (0..=n).filter(|&j| j != i && j != k).collect();
+            if let [p, q] = set[..] {
+                if p + 2 <= q {
+                    // an appearance is {x, a_p x, a_q x, a_p a_q x}: keep its smallest dart
+                    for c in 0..self.cell.len() {
+                        let x = self.cell[c];
+                        let (y, z) = (self.al(x, p), self.al(x, q));
+                        if x <= y && x <= z && x <= self.al(y, q) {
+                            let r = self.root(k, x);
+                            self.apps.push((r, x));
+                        }
+                    }
+                    if !self.forest_of_appearances(nb, k) {
+                        return false;
+                    }
+                    continue;
+                }
+            }
+            let st = bump(&mut self.seen_tag, &mut self.seen);
+            for c in 0..self.cell.len() {
+                let x = self.cell[c];
+                if self.seen[x as usize] == st {
+                    continue;
+                }
+                self.seen[x as usize] = st;
+                self.stack.clear();
+                self.stack.push(x);
+                while let Some(y) = self.stack.pop() {
+                    for j in 0..=n {
+                        if j == i || j == k {
+                            continue;
+                        }
+                        let z = self.al(y, j);
+                        if self.seen[z as usize] != st {
+                            self.seen[z as usize] = st;
+                            self.stack.push(z);
+                        }
+                    }
+                }
+                let r = self.root(k, x);
+                self.apps.push((r, x));
+            }
+            if !self.forest_of_appearances(nb, k) {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// The forest test on the appearances in `self.apps` (k-cell root, dart), grouped by
+    /// k-cell.
+    fn forest_of_appearances(&mut self, nb: usize, k: usize) -> bool {
+        {
+            if self.apps.len() < 2 {
+                return true;
+            }
+            self.apps.sort_unstable();
+            let mut s = 0;
+            while s < self.apps.len() {
+                let mut e = s + 1;
+                while e < self.apps.len() && self.apps[e].0 == self.apps[s].0 {
+                    e += 1;
+                }
+                if e - s >= 2 {
+                    if self.cstamp.is_empty() {
+                        self.cstamp = vec![0; self.alive.len()];
+                        self.cid = vec![0; self.alive.len()];
+                    }
+                    bump(&mut self.ctag, &mut self.cstamp);
+                    let mut joins: Vec<(u32, u32)> = Vec::with_capacity(e - s);
+                    for t in s..e {
+                        let x = self.apps[t].1;
+                        let y = self.al(x, nb);
+                        let (cx, cy) = (self.corner(x, nb, k), self.corner(y, nb, k));
+                        if cx == cy {
+                            return false;
+                        }
+                        joins.push((cx, cy));
+                    }
+                    if closes_cycle(&joins) {
+                        return false;
+                    }
+                }
+                s = e;
+            }
+        }
+        true
+    }
+
+    /// Re-links `alpha_i` around the cell in `self.cell` and kills its darts.
+    fn collapse(&mut self, i: usize, nb: usize, tag: u32, roots: [u32; 2]) {
+        self.links.clear();
+        for c in 0..self.cell.len() {
+            let x = self.cell[c];
+            let y = self.al(x, i);
+            if self.stamp[y as usize] == tag {
+                continue;
+            }
+            let mut z = self.al(x, nb);
+            let mut t = self.al(z, i);
+            let mut steps = 0;
+            while self.stamp[t as usize] == tag && t != z && steps <= self.cell.len() {
+                z = self.al(t, nb);
+                t = self.al(z, i);
+                steps += 1;
+            }
+            let target = if self.stamp[t as usize] == tag { y } else { t };
+            self.links.push((y, target));
+        }
+        for c in 0..self.cell.len() {
+            self.alive[self.cell[c] as usize] = false;
+        }
+        let w = self.w;
+        for l in 0..self.links.len() {
+            let (y, t) = self.links[l];
+            self.a[y as usize * w + i] = t;
+            self.a[t as usize * w + i] = y;
+            if y == t {
+                for k in 0..=self.n {
+                    let r = self.root(k, y);
+                    self.free[k][r as usize] = true;
+                }
+            }
+        }
+        let (r0, r1) = (roots[0], roots[1]);
+        self.uf[nb].0[r0 as usize] = r1;
+        let f = self.free[nb][r0 as usize] || self.free[nb][r1 as usize];
+        self.free[nb][r1 as usize] = f;
+        self.moves += 1;
+    }
+
+    /// Tries to remove (or contract) the i-cell of `x`; on success queues the cells whose
+    /// degree the move lowered.
+    fn try_move(&mut self, i: usize, remove: bool, x: u32) -> bool {
+        if !self.alive[x as usize] {
+            return false;
+        }
+        let Some((tag, roots)) = self.gather(i, remove, x) else {
+            return false;
+        };
+        let nb = if remove { i + 1 } else { i - 1 };
+        if !self.corners_ok(i, nb) {
+            return false;
+        }
+        self.collapse(i, nb, tag, roots);
+        if remove {
+            self.removed[i] += 1;
+        } else {
+            self.contracted[i] += 1;
+        }
+        // removing an i-cell lowers the degree of the (i-1)-cells on its border; contracting
+        // one lowers the dual degree of the (i+1)-cells around it
+        let next = if remove { i.checked_sub(1) } else { (i < self.n).then_some(i + 1) };
+        // and the merged nb-cell may now separate two distinct cells itself
+        if self.up && ((remove && nb < self.n) || (!remove && nb >= 1)) {
+            let y = self.links.first().map(|l| l.0);
+            if let Some(y) = y {
+                self.work.push((nb as u8, remove, y));
+            }
+        }
+        if let Some(k) = next {
+            let mv = self.moves;
+            for l in 0..self.links.len() {
+                let y = self.links[l].0;
+                let r = self.root(k, y) as usize;
+                if self.queued[k][r] != mv {
+                    self.queued[k][r] = mv;
+                    self.work.push((k as u8, remove, y));
+                }
+            }
+        }
+        true
+    }
+
+    /// Runs the work stack dry.
+    fn drain(&mut self) {
+        while let Some((k, remove, y)) = self.work.pop() {
+            self.try_move(k as usize, remove, y);
+        }
+    }
+
+    /// One scan of the i-cells, in the order of `order` (live darts); returns the number of
+    /// moves made.
+    fn scan(&mut self, i: usize, remove: bool, order: &[u32], scan_id: u32) -> u32 {
+        let before = self.moves;
+        for &d in order {
+            if !self.alive[d as usize] {
+                continue;
+            }
+            let r = self.root(i, d) as usize;
+            if self.exam[i][r] == scan_id {
+                continue;
+            }
+            self.exam[i][r] = scan_id;
+            if self.try_move(i, remove, d) {
+                self.drain();
+            }
+        }
+        self.moves - before
+    }
+
+    /// Rounds of scans in the given order of moves until one changes nothing; returns the
+    /// number of rounds.
+    fn run(&mut self, steps: &[(usize, bool)], mut order: Vec<u32>) -> usize {
+        let mut rounds = 0;
+        let mut scan_id = 0;
+        loop {
+            rounds += 1;
+            let mut changed = 0;
+            for &(i, rem) in steps {
+                scan_id += 1;
+                changed += self.scan(i, rem, &order, scan_id);
+            }
+            if changed == 0 {
+                return rounds;
+            }
+            order.retain(|&d| self.alive[d as usize]);
+        }
     }
 
     fn compact(&self) -> DenseMap {
-        let mut newid = vec![DEAD; self.alive.len()];
+        let mut newid = vec![NONE; self.alive.len()];
         let mut k = 0u32;
         for (d, &al) in self.alive.iter().enumerate() {
             if al {
@@ -337,19 +568,74 @@ impl Work {
     }
 }
 
+/// Whether the edges `joins` (pairs of corner names) contain a cycle.
+fn closes_cycle(joins: &[(u32, u32)]) -> bool {
+    let mut ids: Vec<u32> = joins.iter().flat_map(|&(a, b)| [a, b]).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let mut uf = UnionFind((0..ids.len() as u32).collect());
+    for &(a, b) in joins {
+        let ia = ids.binary_search(&a).expect("listed") as u32;
+        let ib = ids.binary_search(&b).expect("listed") as u32;
+        let (ra, rb) = (uf.find(ia), uf.find(ib));
+        if ra == rb {
+            return true;
+        }
+        uf.0[ra as usize] = rb;
+    }
+    false
+}
+
+/// How [`simplify_with`] searches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SimplifyOptions {
+    /// Number of runs, each from a fresh copy of the input; the smallest result is kept.
+    /// Run 0 scans removals first and run 1 contractions first, both in dart order; later
+    /// runs alternate the two in a random order of the darts drawn from `seed`.
+    pub tries: usize,
+    /// Seed of the random orders (a SplitMix64 generator: the result is deterministic).
+    pub seed: u64,
+}
+
+impl SimplifyOptions {
+    /// The choice of [`simplify`]: eight runs for maps of at most 2^18 darts, two up to
+    /// 2^20, one beyond (the first run does most of the work in linear time; the others pay
+    /// off on the small, hard inputs — triangulated manifolds with torsion or 4-manifolds).
+    pub fn for_map(map: &DenseMap) -> Self {
+        let n = map.dart_count();
+        let tries = if n <= 1 << 18 {
+            8
+        } else if n <= 1 << 20 {
+            2
+        } else {
+            1
+        };
+        SimplifyOptions { tries, seed: 0x5eed_9a3a }
+    }
+}
+
+/// SplitMix64: a small, seeded, deterministic generator for the random orders.
+struct SplitMix(u64);
+
+impl SplitMix {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+}
+
 /// Reduces `map` by removals and contractions of cells (see the module documentation) and
 /// returns the reduced map with a report. The reduced map has the same homology as `map`
 /// whenever the cells of `map` are homology balls (C1, C2 of DESIGN.md), and its cells are
 /// again homology balls, so the cellular method applies to it. Points are dropped.
+/// Equivalent to [`simplify_with`] and [`SimplifyOptions::for_map`].
 ///
 /// Precondition: `map` is valid (BO Def. 1). Cells on a boundary (free darts) are left in
-/// place. O(R · N n²) for R rounds (two to four in practice), O(N n) extra memory.
-///
-/// The greedy reduction stops at a local minimum where every remaining cell has degree
-/// above 2 or would cut a neighbour: hexahedral grids go below 2 % of their darts (the
-/// 40³ 3-torus to 27,664 of 3,072,000 darts, the 40³ ball to 52,704), but triangulated
-/// 3-manifolds stop at a one-vertex, one-volume map whose edges mostly have degree 3
-/// (9 % of the darts for the 600-cell, 25 % for `Hom_n9_655_compl_K4`).
+/// place. O(T · R · N n² α(N)) time for T tries of R rounds of scans (R is two or three in
+/// practice), O(N n) extra memory.
 ///
 /// ```
 /// use gmap_core::GMap;
@@ -366,39 +652,56 @@ impl Work {
 /// assert_eq!((report.darts_before, report.darts_after), (12, 2));
 /// ```
 pub fn simplify(map: &DenseMap) -> (DenseMap, SimplifyReport) {
+    simplify_with(map, &SimplifyOptions::for_map(map))
+}
+
+/// [`simplify`] with an explicit number of runs and seed (at least one run is made).
+pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, SimplifyReport) {
     let n = map.dim();
-    let mut work = Work { n, w: n + 1, a: map.flat().to_vec(), alive: vec![true; map.dart_count()] };
-    let mut removed = vec![0usize; n + 1];
-    let mut contracted = vec![0usize; n + 1];
-    let mut rounds = 0;
-    loop {
-        rounds += 1;
-        let mut changed = 0;
-        // contractions first: on closed objects merging the vertices early leaves fewer
-        // faces behind than merging the n-cells first (measured on 3-tori)
-        let steps = (1..=n).map(|i| (i, false)).chain((0..n).rev().map(|i| (i, true)));
-        for (i, rem) in steps {
-            let k = work.pass(i, rem);
-            if rem {
-                removed[i] += k;
-            } else {
-                contracted[i] += k;
+    let nd = map.dart_count();
+    let (base, cells_before) = Work::new(map);
+    let mut base = Some(base);
+    let tries = options.tries.max(1);
+    let removals: Vec<(usize, bool)> = (0..n).rev().map(|i| (i, true)).collect();
+    let contractions: Vec<(usize, bool)> = (1..=n).map(|i| (i, false)).collect();
+    let mut rng = SplitMix(options.seed);
+    let mut best: Option<(Work, usize)> = None;
+    for t in 0..tries {
+        let steps: Vec<(usize, bool)> = if t % 2 == 0 {
+            removals.iter().chain(&contractions).copied().collect()
+        } else {
+            contractions.iter().chain(&removals).copied().collect()
+        };
+        let mut order: Vec<u32> = (0..nd as u32).collect();
+        if t >= 4 {
+            for k in (1..nd).rev() {
+                let j = (rng.next() % (k as u64 + 1)) as usize;
+                order.swap(k, j);
             }
-            changed += k;
         }
-        if changed == 0 {
-            break;
+        let mut work =
+            if t + 1 == tries { base.take().expect("kept for the last run") } else { base.clone().expect("kept") };
+        work.up = (t / 2) % 2 == 1;
+        let rounds = work.run(&steps, order);
+        let live = work.alive.iter().filter(|&&x| x).count();
+        let better = match &best {
+            None => true,
+            Some((b, _)) => live < b.alive.iter().filter(|&&x| x).count(),
+        };
+        if better {
+            best = Some((work, rounds));
         }
     }
+    let (work, rounds) = best.expect("at least one run");
     let out = work.compact();
     debug_assert!(out.validate().is_ok(), "simplify broke validity");
     let report = SimplifyReport {
-        darts_before: map.dart_count(),
+        darts_before: nd,
         darts_after: out.dart_count(),
-        cells_before: map.cell_counts(),
+        cells_before,
         cells_after: out.cell_counts(),
-        removed,
-        contracted,
+        removed: work.removed,
+        contracted: work.contracted,
         rounds,
     };
     (out, report)

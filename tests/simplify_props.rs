@@ -1,0 +1,81 @@
+//! Property test of `simplify`: on random small maps (classic objects changed by random
+//! Euler operators, lens spaces, grids), whenever the input's cells satisfy C1/C2 the reduced
+//! map is valid, keeps the Euler characteristic, is accepted by the cellular method and has
+//! the same integral homology; every seed and number of runs gives such a map.
+
+use gmap_core::{DartId, DenseMap, GMap};
+use gmap_homology::{cellular_complex, homology_z, Homology};
+use gmap_ops::build::{cube, grid, lens_space, polygon, simplex, solid_torus};
+use gmap_ops::euler::ops::*;
+use gmap_ops::euler::{simplify, simplify_with, SimplifyOptions};
+use proptest::prelude::*;
+
+fn base(kind: u8) -> DenseMap {
+    match kind % 9 {
+        0 => polygon(5).unwrap(),
+        1 => grid(&[3, 3], &[true, true]).unwrap(),
+        2 => grid(&[2, 3], &[false, true]).unwrap(),
+        3 => cube(3).unwrap(),
+        4 => grid(&[2, 2, 3], &[true, true, true]).unwrap(),
+        5 => simplex(3).unwrap(),
+        6 => lens_space(5, 2).unwrap(),
+        7 => solid_torus(3).unwrap(),
+        _ => grid(&[2, 3, 2], &[true, false, true]).unwrap(),
+    }
+}
+
+fn step(g: &mut GMap, op: u8, p1: usize, p2: usize, dim: usize) {
+    let ds: Vec<DartId> = g.darts().collect();
+    let (d, e) = (ds[p1 % ds.len()], ds[p2 % ds.len()]);
+    let i = dim % (g.dim() + 1);
+    let _ = match op % 5 {
+        0 => try_insert_vertex(g, d),
+        1 => try_insert_edge(g, d, e),
+        2 => try_remove_cell(g, d, i),
+        3 => try_contract_cell(g, d, i),
+        _ => try_split_cell(g, &[d, e], i),
+    };
+}
+
+fn cellular(m: &DenseMap) -> Option<Homology> {
+    cellular_complex(m).ok().map(|c| homology_z(&c.chain).expect("homology"))
+}
+
+#[test]
+fn lens_space_keeps_its_torsion() {
+    let m = lens_space(7, 3).unwrap();
+    let (small, r) = simplify(&m);
+    let h = cellular(&small).expect("C1/C2 after simplify");
+    assert_eq!((h.betti, h.torsion), (vec![1, 0, 0, 1], vec![vec![], vec![7], vec![], vec![]]));
+    // already one cell per dimension: nothing to remove
+    assert_eq!((r.darts_before, r.darts_after, r.cells_after), (28, 28, vec![1, 1, 1, 1]));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+
+    #[test]
+    fn simplify_keeps_validity_and_homology(
+        kind in 0u8..9,
+        ops in prop::collection::vec((0u8..5, 0usize..10_000, 0usize..10_000, 0usize..4), 0..6),
+        tries in 1usize..4,
+        seed in 0u64..1000,
+    ) {
+        let mut g = GMap::from_dense(&base(kind)).0;
+        for (op, p1, p2, dim) in ops {
+            step(&mut g, op, p1, p2, dim);
+        }
+        let (m, _) = g.to_dense();
+        prop_assume!(m.validate().is_ok());
+        let Some(before) = cellular(&m) else { return Ok(()) };
+        let (small, report) = simplify_with(&m, &SimplifyOptions { tries, seed });
+        prop_assert!(small.validate().is_ok());
+        prop_assert_eq!(small.euler_characteristic(), m.euler_characteristic());
+        prop_assert_eq!(report.darts_after, small.dart_count());
+        prop_assert!(report.darts_after <= report.darts_before);
+        let after = cellular(&small);
+        prop_assert!(after.is_some(), "reduced cells fail C1/C2");
+        let after = after.unwrap();
+        prop_assert_eq!((after.betti, after.torsion), (before.betti, before.torsion));
+    }
+}
