@@ -520,10 +520,13 @@ fn check_collapse(g: &GMap, d: DartId, i: usize, remove: bool) -> Result<Collaps
         return Ok(Collapse::Merge);
     }
     if remove && i == 1 {
-        // a dangling edge: one of its vertices consists of darts of the edge only
-        let set: HashSet<DartId> = cell.iter().copied().collect();
+        // a dangling edge: at one of its ends the vertex is that end alone (alpha_1 keeps
+        // the end), a vertex of degree one. Asking only that the vertex be made of the edge's
+        // darts would take the loop of a one-vertex, one-edge map (L(1,0), L(2,1)) for one.
+        let above = AlphaSet::above(1, n);
         for &x in &cell {
-            if g.cell(x, 0).iter().all(|y| set.contains(y)) {
+            // the end <alpha_2..alpha_n>(x) lies inside the vertex: equal sizes, equal sets
+            if g.cell(x, 0).len() == g.orbit(x, above).len() {
                 return Ok(Collapse::Dangling);
             }
         }
