@@ -2,8 +2,9 @@
 //!
 //! * integer homology of the periodic 40³ cube grid (the 3-torus: 512,000 cells,
 //!   3,072,000 darts) from the loaded map, by the cellular method (C1/C2 checks, border
-//!   operator, reduction) — to compare with GUDHI's Z/2 homology of the Freudenthal
-//!   triangulation of the same grid (`python3 ../shared/anchors/gudhi_grid.py 3 40 --periodic`);
+//!   operator, reduction) — against GUDHI's Z/2 homology of the Freudenthal triangulation
+//!   of the same grid, run in the same sitting by the anchor script
+//!   (`python3 ../shared/anchors/gudhi_grid.py 3 40 --periodic`); the ratio is printed;
 //! * the same map by the simplicial counterpart (BO §6), for the ratio simplicial / cellular
 //!   (timed once, printed: it is too slow for criterion's repetitions);
 //! * `Hom_n9_655_compl_K4` (456,192 darts) by both methods.
@@ -63,12 +64,52 @@ fn stages(name: &str, map: &DenseMap) {
     );
 }
 
+/// GUDHI's Z/2 homology of the Freudenthal triangulation of the periodic 40³ grid, run by
+/// the anchor script in this same sitting: `(build seconds, homology seconds)`, or `None`
+/// when python3 or gudhi is missing.
+fn gudhi_anchor() -> Option<(f64, f64)> {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/gudhi_grid.py");
+    let out = Command::new("python3").arg(&script).args(["3", "40", "--periodic"]).output().ok()?;
+    if !out.status.success() {
+        eprintln!("homology bench: GUDHI anchor failed: {}", String::from_utf8_lossy(&out.stderr).trim());
+        return None;
+    }
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).ok()?;
+    Some((v["build_s"].as_f64()?, v["homology_s"].as_f64()?))
+}
+
+/// Median wall time of `runs` calls.
+fn median_secs(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..runs)
+        .map(|_| {
+            let s = Instant::now();
+            f();
+            s.elapsed().as_secs_f64()
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[runs / 2]
+}
+
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("homology");
     g.sample_size(10);
     match grid_path().map(|p| gmap_core::io::read_gmap(&p)) {
         Some(Ok(map)) => {
             stages("grid40p", &map);
+            let ours = median_secs(5, || {
+                homology_z(&cellular_complex(&map).unwrap().chain).unwrap();
+            });
+            match gudhi_anchor() {
+                Some((build, hom)) => eprintln!(
+                    "homology bench grid40p: ours (Z, cells from the loaded map) {ours:.3} s; GUDHI Z/2 \
+                     homology {hom:.3} s (+ {build:.3} s building its simplex tree); GUDHI / ours = {:.1}x \
+                     (homology only), {:.1}x (with its build)",
+                    hom / ours,
+                    (hom + build) / ours
+                ),
+                None => eprintln!("homology bench grid40p: ours {ours:.3} s; GUDHI anchor not run"),
+            }
             g.bench_function("grid40p_cellular_z", |b| {
                 b.iter(|| homology_z(&cellular_complex(&map).unwrap().chain).unwrap())
             });
