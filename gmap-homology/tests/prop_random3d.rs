@@ -22,10 +22,12 @@
 //! * violations: a volume bounded by a closed surface of genus ≥ 1 (C2) or a non-orientable
 //!   one (C1) beside a good voxel set, dart numbers shuffled; a volume bounded by a torus
 //!   glued to a voxel set along a square (C2; the groups are the voxel set's); 4-cells
-//!   bounded by lens spaces and by the 3-torus (C2 in dimension 4); a boundary facet (a
-//!   square, or a cube of a 4D voxel set) folded onto itself by an odd symmetry (C1; the
-//!   groups stay the voxel set's) — even ones are controls, accepted unless they fold an
-//!   edge; darts made k-free inside a cell (C1, incomplete boundary).
+//!   bounded by lens spaces, by the 3-torus, by a 3-sphere pinched at two points (the
+//!   suspension of a torus: C2 in dimension 4) and by the suspension of the projective plane
+//!   (C1 in dimension 4); a boundary facet (a square, or a cube of a 4D voxel set) folded
+//!   onto itself by an odd symmetry (C1; the groups stay the voxel set's) — even ones are
+//!   controls, accepted unless they fold an edge; darts made k-free inside a cell (C1,
+//!   incomplete boundary).
 //!
 //! Run with `--nocapture` to see the tallies (acceptance rates, groups met).
 
@@ -38,6 +40,7 @@ use gmap_homology::{
 };
 use gmap_ops::build;
 use gmap_ops::euler::ops;
+use gmap_ops::import::SimplicialComplex;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 
@@ -765,6 +768,91 @@ fn four_cells_bounded_by_lens_spaces_and_3_tori_are_refused() {
     });
     tally.report("4-cells");
     assert!(tally.get("refused: C2 in dimension 4") >= 10);
+}
+
+/// Triangles of three closed surfaces: the boundary of a tetrahedron (S²), the 7-vertex
+/// torus and the 6-vertex projective plane, with their integer homology.
+fn surface_triangles(which: usize) -> (Vec<[u64; 3]>, &'static str) {
+    match which {
+        0 => (vec![[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]], "(Z, 0, Z)"),
+        1 => {
+            let t = (0..7u64).flat_map(|i| [[i, (i + 1) % 7, (i + 3) % 7], [i, (i + 2) % 7, (i + 3) % 7]]).collect();
+            (t, "(Z, Z^2, Z)")
+        }
+        _ => {
+            let t = vec![
+                [1, 2, 3],
+                [1, 3, 4],
+                [1, 4, 5],
+                [1, 5, 6],
+                [1, 6, 2],
+                [2, 3, 5],
+                [3, 4, 6],
+                [4, 5, 2],
+                [5, 6, 3],
+                [6, 2, 4],
+            ];
+            (t, "(Z, Z/2, 0)")
+        }
+    }
+}
+
+#[test]
+fn four_cells_bounded_by_suspensions_are_refused() {
+    // The suspension of a surface, triangulated (two cone points, 10 and 11), is a 3-sphere
+    // only for S²: for the torus it is a 3-sphere pinched at two points whose links are
+    // tori, homology (Z, 0, Z^2, Z), so a 4-cell bounded by it fails C2; for the projective
+    // plane it is not orientable, so the 4-cell fails C1. (A 2-map cannot pinch a sphere: a
+    // vertex of a 2-map is one cycle of corners, so such a vertex splits in two.)
+    let tally = Tally::default();
+    let strategy = (0usize..3, any::<bool>(), any::<u64>());
+    run(24, strategy, |(which, with_good, seed)| {
+        let mut rng = Rng(seed);
+        let (triangles, h_surface) = surface_triangles(which);
+        let surface = SimplicialComplex::from_facets(triangles.iter().map(|t| t.to_vec())).unwrap();
+        let surface = surface.to_gmap(10_000).unwrap();
+        prop_assert_eq!(homology_z(&simplicial_complex(&surface)).unwrap().to_string(), h_surface);
+        let facets = triangles.iter().flat_map(|t| [10, 11].map(|apex| vec![apex, t[0], t[1], t[2]]));
+        let suspension = SimplicialComplex::from_facets(facets).unwrap().to_gmap(100_000).unwrap();
+        let cell = suspension.embedded(4).unwrap();
+        let good = voxels(&[1, 1, 1, 2], &[false, false, false, true], &[true, true]);
+        let (joined, cell_start, want_h0) =
+            if with_good { (union(&good, &cell), good.dart_count(), 2) } else { (cell.clone(), 0, 1) };
+        let (m, perm) = shuffled(&joined, &mut rng);
+        let cell_min = (cell_start..cell_start + cell.dart_count()).map(|d| perm[d]).min().unwrap();
+        match judge(&m)? {
+            Verdict::Accepted(h) => {
+                prop_assert_eq!(which, 0, "a 4-cell bounded by a suspension of {} was accepted", h_surface);
+                prop_assert_eq!(h.z.betti[0], want_h0);
+                tally.add("accepted: bounded by S^3");
+            }
+            Verdict::Refused { error, dim, dart, simplicial } => {
+                prop_assert_eq!((dim, dart), (4, cell_min), "{}", error);
+                match which {
+                    1 => {
+                        prop_assert!(matches!(error, PreconditionError::C2 { .. }), "{}", error);
+                        tally.add("refused: C2, pinched");
+                    }
+                    2 => {
+                        prop_assert!(
+                            matches!(error, PreconditionError::C1(CellDefect::NotOrientable { .. })),
+                            "{}",
+                            error
+                        );
+                        tally.add("refused: C1, non-orientable boundary");
+                    }
+                    _ => return Err(fail(format!("a 4-ball was refused: {error}"))),
+                }
+                // the cone on anything is contractible; the good part is a torus S^1 × I^3
+                let want = if with_good { "(Z^2, Z, 0, 0, 0)" } else { "(Z, 0, 0, 0, 0)" };
+                prop_assert_eq!(simplicial.z.to_string(), want);
+            }
+        }
+        Ok(())
+    });
+    tally.report("suspensions");
+    assert!(tally.get("refused: C2, pinched") >= 3);
+    assert!(tally.get("refused: C1, non-orientable boundary") >= 3);
 }
 
 /// Whether the closed (n-1)-cell made of the darts `facet` (one side of it, the orbit of
