@@ -598,14 +598,15 @@ pub struct SimplifyOptions {
 }
 
 impl SimplifyOptions {
-    /// The choice of [`simplify`]: eight runs for maps of at most 2^18 darts, two up to
-    /// 2^20, one beyond (the first run does most of the work in linear time; the others pay
-    /// off on the small, hard inputs — triangulated manifolds with torsion or 4-manifolds).
+    /// The choice of [`simplify`]: eight runs for maps of at most 2^16 darts, two (removals
+    /// first, contractions first) up to 2^18, one beyond. The first run does the work in
+    /// near-linear time; the others pay off on small, hard inputs (triangulated manifolds with
+    /// torsion, 4-manifolds), where they cost a few milliseconds.
     pub fn for_map(map: &DenseMap) -> Self {
         let n = map.dart_count();
-        let tries = if n <= 1 << 18 {
+        let tries = if n <= 1 << 16 {
             8
-        } else if n <= 1 << 20 {
+        } else if n <= 1 << 18 {
             2
         } else {
             1
