@@ -406,7 +406,7 @@ pub(crate) fn big_to_u64(x: &BigInt) -> Option<u64> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::sparse::SparseMatrix;
 
@@ -466,7 +466,7 @@ mod tests {
     }
 
     /// The simplicial chain complex of the closure of some triangles.
-    fn random_complex(tris: &[(u32, u32, u32)]) -> ChainComplex {
+    pub(crate) fn random_complex(tris: &[(u32, u32, u32)]) -> ChainComplex {
         use std::collections::BTreeSet;
         let mut t: BTreeSet<[u32; 3]> = BTreeSet::new();
         for &(a, b, c) in tris {
