@@ -185,7 +185,11 @@ pub fn run(o: &Options) -> Result<()> {
         outln!("euler characteristic {}", h.euler_characteristic())?;
         if let Some(g) = &gens {
             for x in g {
-                let order = if x.order == 0 { "Z".to_string() } else { format!("Z/{}", x.order) };
+                let order = match (x.order, o.field) {
+                    (0, None) => "Z".to_string(),
+                    (0, Some(p)) => format!("Z/{p}"),
+                    (t, _) => format!("Z/{t}"),
+                };
                 let terms: Vec<String> = x
                     .chain
                     .iter()
