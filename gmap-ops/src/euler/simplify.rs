@@ -29,6 +29,45 @@
 //! spanning tree first instead leaves such an edge with one face on both sides of the
 //! single volume, where no removal or contraction applies any more.
 //!
+//! A few runs from fresh copies of the input (removals first, contractions first, with and
+//! without re-examining the merged neighbour after each move, then seeded random orders of
+//! the darts) keep the smallest result; see [`SimplifyOptions`].
+//!
+//! # Results
+//!
+//! Darts before → after (cells after, per dimension), all with the homology stated in the
+//! files of the Lutz library and accepted by the cellular method (C1/C2 hold throughout):
+//!
+//! | input | darts | after | cells after |
+//! |---|---|---|---|
+//! | 40³ periodic grid (3-torus) | 3,072,000 | 48 | 1, 3, 3, 1 |
+//! | 40³ grid (3-ball) | 3,072,000 | 4 | 2, 1, 1, 1 |
+//! | `600_cell` (3-sphere) | 14,400 | 4 | 1, 1, 1, 1 |
+//! | `poincare` (homology sphere) | 2,160 | 60 (2.8 %) | 1, 5, 5, 1 |
+//! | `Hom_C5_K4` (H_1 = Z/2) | 34,560 | 44 | 1, 4, 4, 1 |
+//! | `Hom_n9_655_compl_K4` | 456,192 | 2,328 (0.5 %) | 1, 141, 141, 1 |
+//! | `RP4` | 18,000 | 16 | 1, 1, 1, 1, 1 |
+//! | `CP2` | 4,320 | 80 | 3, 3, 3, 1, 1 |
+//! | `K3_16` | 34,560 | 3,656 (10.6 %) | 11, 73, 107, 22, 1 |
+//!
+//! The previous version (fixed passes, all faces of the spanning tree removed before any
+//! edge) stopped at 9 % (600-cell), 34 % (poincaré), 25 % (`Hom_C5_K4`) and 45 % (K3).
+//!
+//! K3 stays above 5 %. Where it stops (measured on the result above): one 4-cell, and
+//! - all 22 3-cells bound that 4-cell on both sides (no removal merges anything);
+//! - of the 107 faces, 82 lie in more than two 3-cells and 25 bound one 3-cell on both
+//!   sides; of the 73 edges, 71 lie in more than two faces and 2 in one face twice; the 11
+//!   vertices all have degree above 2 (no removal);
+//! - 71 edges join two distinct vertices, but each meets some cell twice so that contracting
+//!   it would close a cycle of corners (pinch that cell); the 2 others are loops; no face,
+//!   3-cell or 4-cell has dual degree 2 (no contraction).
+//!
+//! No counting bound explains it — H_2 = Z^22 only forces 22 faces, a few hundred darts —
+//! so it is a limit of the two moves and of the orders tried, not of the manifold: going
+//! further needs other moves (collapsing a cell through a free face while it bounds one
+//! cell on both sides, or sliding cells over each other), which are not implemented.
+//! Thirty-two runs instead of eight reach 2,960 darts (8.6 %).
+//!
 //! # Cost
 //!
 //! Every dart carries, per dimension k, the number of its k-cell in the input; cells only
@@ -36,7 +75,9 @@
 //! dimension names the current cells, and no partition is recomputed. A move costs
 //! O(|c| n²) for the darts of the cell c it removes, plus the corners it has to compare
 //! when c meets one k-cell twice; a scan costs O(N α(N)) on top of the moves, and a scan
-//! changing nothing ends the reduction. Memory: O(N n) words.
+//! changing nothing ends the reduction. Memory: O(N n) words. The n + 1 partitions of the
+//! input (two threads) take about a third of the time; on the 40³ periodic grid the whole
+//! reduction takes about as long as the direct cellular homology of the grid.
 
 use gmap_core::DenseMap;
 
