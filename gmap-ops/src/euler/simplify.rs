@@ -76,8 +76,11 @@
 //! O(|c| n²) for the darts of the cell c it removes, plus the corners it has to compare
 //! when c meets one k-cell twice; a scan costs O(N α(N)) on top of the moves, and a scan
 //! changing nothing ends the reduction. Memory: O(N n) words. The n + 1 partitions of the
-//! input (two threads) take about a third of the time; on the 40³ periodic grid the whole
-//! reduction takes about as long as the direct cellular homology of the grid.
+//! input (two threads) take about a third of the time, the moves the rest. On the 40³
+//! periodic grid (3,072,000 darts, release build, two shared cores) the reduction takes
+//! 0.5–0.7 s, 1.2–1.7 times the direct cellular homology of the grid: it makes homology
+//! computations on such grids slower, not faster; its use is the small map itself (and
+//! inputs whose direct homology is expensive).
 
 use gmap_core::DenseMap;
 
@@ -212,13 +215,16 @@ impl Work {
         let mut parts: Vec<(Vec<u32>, usize)> = if nd >= 1 << 16 {
             std::thread::scope(|s| {
                 let a = &a;
-                let odd = s.spawn(move || (1..=n).step_by(2).map(|k| labels(a, n, k)).collect::<Vec<_>>());
-                let even: Vec<_> = (0..=n).step_by(2).map(|k| labels(a, n, k)).collect();
-                let odd = odd.join().expect("labelling thread");
+                // vertices (the widest orbits) with the n-cells (the most compact ones)
+                let first = |k: usize| k == 0 || k == n || (k.is_multiple_of(2) && k + 2 <= n);
+                let other =
+                    s.spawn(move || (0..=n).filter(|&k| !first(k)).map(|k| labels(a, n, k)).collect::<Vec<_>>());
+                let mine: Vec<_> = (0..=n).filter(|&k| first(k)).map(|k| labels(a, n, k)).collect();
+                let other = other.join().expect("labelling thread");
                 let mut all = Vec::with_capacity(n + 1);
-                let (mut e, mut o) = (even.into_iter(), odd.into_iter());
+                let (mut e, mut o) = (mine.into_iter(), other.into_iter());
                 for k in 0..=n {
-                    all.push(if k % 2 == 0 { e.next() } else { o.next() }.expect("one partition per k"));
+                    all.push(if first(k) { e.next() } else { o.next() }.expect("one partition per k"));
                 }
                 all
             })
@@ -368,8 +374,17 @@ impl Work {
                 continue;
             }
             self.apps.clear();
-            let set: Vec<usize> = (0..=n).filter(|&j| j != i && j != k).collect();
-            if let [p, q] = set[..] {
+            // the involutions of an appearance, when there are two of them (n = 3)
+            let mut pair = [0usize; 2];
+            let mut m = 0;
+            for j in (0..=n).filter(|&j| j != i && j != k) {
+                if m < 2 {
+                    pair[m] = j;
+                }
+                m += 1;
+            }
+            if m == 2 {
+                let [p, q] = pair;
                 if p + 2 <= q {
                     // an appearance is {x, a_p x, a_q x, a_p a_q x}: keep its smallest dart
                     for c in 0..self.cell.len() {
