@@ -547,7 +547,7 @@ fn classic(kind: usize, a: usize, b: usize, c: usize) -> (DenseMap, String, &'st
             let q = (1..p).filter(|q| gcd(*q, p) == 1).nth(c % 2).unwrap_or(1);
             (build::lens_space(p, q).unwrap(), format!("(Z, Z/{p}, 0, Z)"), "lens space")
         }
-        // not L(1, 0) nor L(2, 1): see `removing_the_loop_edge_of_l1_and_l2_keeps_the_space`
+        // L(1, 0) and L(2, 1): see `removing_the_loop_edge_of_l1_and_l2_keeps_the_space`
         3 => (build::grid(&[a, b, c], &[true, true, false]).unwrap(), "(Z, Z^2, Z, 0)".into(), "torus × I"),
         _ => {
             let sizes = [1, 1, a.min(2), b.min(2)];
@@ -1022,16 +1022,16 @@ fn cells_opened_inside_are_refused() {
 
 /// L(1, 0) (the 3-sphere) and L(2, 1) (projective 3-space) have one edge, a loop whose
 /// vertex is made of its own darts only, with `alpha_2 alpha_3` an involution on it.
-/// `is_removable` takes it for a dangling edge and `try_remove_cell` then deletes every
-/// dart: the space becomes the empty map. Ignored until gmap-ops tells a loop from a
-/// dangling edge (`check_collapse`, the `remove && i == 1` branch).
+/// `is_removable` once took it for a dangling edge and `try_remove_cell` then deleted every
+/// dart, leaving the empty map. Regression test: a dangling edge now needs a vertex of
+/// degree one (gmap-ops `check_collapse`), and the loop is not removable.
 #[test]
-#[ignore = "gmap-ops bug: the loop edge of L(1, 0) and L(2, 1) is removed as a dangling edge, emptying the map"]
 fn removing_the_loop_edge_of_l1_and_l2_keeps_the_space() {
     for (p, q, want) in [(1, 0, "(Z, 0, 0, Z)"), (2, 1, "(Z, Z/2, 0, Z)")] {
         let base = build::lens_space(p, q).unwrap();
         assert_eq!(base.cell_counts(), vec![1, 1, 1, 1]);
         let (mut g, ids) = GMap::from_dense(&base);
+        assert!(!ops::is_removable(&g, ids[0], 1), "L({p}, {q})");
         if ops::is_removable(&g, ids[0], 1) {
             ops::try_remove_cell(&mut g, ids[0], 1).unwrap();
         }
