@@ -2,7 +2,7 @@
 //!
 //! Two stages:
 //!
-//! 1. the fill-free reduction of [`crate::morse`] (collapses, coreductions, critical cells)
+//! 1. the fill-free reduction of `morse` (private) (collapses, coreductions, critical cells)
 //!    shrinks the complex — on manifolds and cube grids to as many cells as the Betti
 //!    numbers — and records the pairs it eliminated;
 //! 2. on the small complex left, Smith normal form of `∂_{k+1}` with the row operations
@@ -12,7 +12,7 @@
 //!    reduction, generate the free part.
 //!
 //! Each cycle found is then lifted back through the eliminated pairs (the chain map of each
-//! reduction, [`crate::morse`]) to a chain of the input's cells in the same class, and checked
+//! reduction, `morse` (private)) to a chain of the input's cells in the same class, and checked
 //! to be a cycle of the input before it is returned. Stage 2 is dense — O(m^3) for m cells of
 //! a dimension — so it is limited to [`GENERATOR_CELL_LIMIT`] cells per dimension *after*
 //! stage 1; stage 1 and the lifting are near-linear, so generators of complexes with millions

@@ -1,12 +1,12 @@
 //! Homology groups of a [`ChainComplex`] over `Z` and over `Z/p`.
 //!
 //! Four stages:
-//! 0. [`crate::morse`] pairs cells by collapses and coreductions over the whole complex at
+//! 0. `morse` (private) pairs cells by collapses and coreductions over the whole complex at
 //!    once — fill-free, so the reduced complex is a restriction of the input — and makes a
 //!    cell critical where the sweep gets stuck (fill only in critical rows); on manifolds,
 //!    cube grids and simplicial counterparts what is left has as many cells as the Betti
 //!    numbers;
-//! 1. [`crate::reduce`] eliminates unit pivots dimension by dimension (coreductions and
+//! 1. `reduce` (private) eliminates unit pivots dimension by dimension (coreductions and
 //!    collapses first, frozen rows when stuck), leaving a small complex on surviving cells;
 //! 2. each matrix of that small complex is reduced again with general unit pivots;
 //! 3. what is left (entries that are not units) goes through dense Smith normal form.
@@ -348,7 +348,7 @@ fn integer_homology_with<R: Euclid>(
 /// Integer homology of a chain complex: Betti numbers and torsion invariant factors.
 ///
 /// Near-linear in the number of matrix entries on manifold-like complexes (see
-/// [`crate::reduce`]); the dense stage is cubic in the size of what survives. Overflow of
+/// `reduce` (private)); the dense stage is cubic in the size of what survives. Overflow of
 /// `i64` anywhere triggers a full recomputation with big integers.
 ///
 /// ```

@@ -6,7 +6,7 @@
 //!   split a cell (`mve`, `mef`, `mfs`, …), dangling edges, removal and contraction of
 //!   cells of degree 2, closing a boundary — each with a predicate, a `try_` form with a
 //!   typed error and its Euler–Poincaré vector.
-//! * [`simplify`]: homology-preserving reduction of a [`gmap_core::DenseMap`] by removals
+//! * [`simplify()`]: homology-preserving reduction of a [`gmap_core::DenseMap`] by removals
 //!   and contractions.
 //! * [`strata`]: the stratified objects with incomplete boundaries of EO and the Euler
 //!   characteristic of its Theorems 1–2.
