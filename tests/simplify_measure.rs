@@ -86,7 +86,10 @@ fn tries_figures() {
             &map,
             &SimplifyOptions {
                 tries,
-                seed: std::env::var("GMAP_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(0x5eed),
+                seed: std::env::var("GMAP_SEED")
+                    .ok()
+                    .and_then(|s| s.parse().ok())
+                    .unwrap_or(SimplifyOptions::for_map(&map).seed),
             },
         );
         println!(
