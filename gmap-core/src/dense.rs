@@ -465,58 +465,16 @@ impl DenseMap {
     /// [`DenseMap::cell_orientation`]. Fails like `cell_orientation`. O(N n).
     pub fn oriented_cells(&self, i: usize) -> Result<(Partition, BitVec), CellDefect> {
         assert!(i <= self.dim, "cell dimension {i} > map dimension {}", self.dim);
-        let w = self.dim + 1;
         let n = self.dart_count();
-        let a = &self.alpha;
-        if n < (1 << 31) {
-            if let Some(r) = crate::kernels::oriented_cells(a, w, i) {
-                return match r {
-                    Ok((of, reps, words)) => {
-                        let mut pos: BitVec = BitVec::from_vec(words);
-                        pos.truncate(n);
-                        Ok((Partition { of, reps }, pos))
-                    }
-                    Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
-                    Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
-                };
+        match crate::kernels::oriented_cells(&self.alpha, self.dim + 1, i) {
+            Ok((of, reps, words)) => {
+                let mut pos: BitVec = BitVec::from_vec(words);
+                pos.truncate(n);
+                Ok((Partition { of, reps }, pos))
             }
+            Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
+            Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
         }
-        let mut of = vec![UNSET; n];
-        let mut reps = Vec::new();
-        let mut pos: BitVec = BitVec::repeat(false, n);
-        let mut stack: Vec<u32> = Vec::new();
-        for d in 0..n {
-            if of[d] != UNSET {
-                continue;
-            }
-            let id = reps.len() as u32;
-            reps.push(d as u32);
-            of[d] = id;
-            pos.set(d, true);
-            stack.push(d as u32);
-            while let Some(x) = stack.pop() {
-                let x = x as usize;
-                let c = pos[x];
-                for k in 0..w {
-                    if k == i {
-                        continue;
-                    }
-                    let y = a[x * w + k] as usize;
-                    if k < i && y == x {
-                        return Err(CellDefect::IncompleteBoundary { dim: i, dart: d as u32, alpha: k });
-                    }
-                    let want = if k < i { !c } else { c };
-                    if of[y] == UNSET {
-                        of[y] = id;
-                        pos.set(y, want);
-                        stack.push(y as u32);
-                    } else if pos[y] != want {
-                        return Err(CellDefect::NotOrientable { dim: i, dart: d as u32, alpha: k, at: x as u32 });
-                    }
-                }
-            }
-        }
-        Ok((Partition { of, reps }, pos))
     }
 
     /// Checks C1 for every dimension; returns the first failing cell.

@@ -461,20 +461,20 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
     Ok(col)
 }
 
-/// Bit 31 of a packed cell number: the dart is in the negative class of its cell.
-const NEG: u32 = 1 << 31;
-
 /// i-cells oriented as compacted cells (condition C1): `(of, reps, positive words)`, cells
 /// numbered by smallest dart, that dart positive; or the first defect in traversal order as
 /// `(start dart, alpha, at, free)` — `free` when `alpha_k(at) = at` for `k < i`.
-/// One depth-first traversal; the cell number and the sign share one `u32` per dart so a
-/// visit touches one word.
+/// One depth-first traversal; `row(x)` gives the links of dart `x` (a fixed-width row on the
+/// specialised paths). The colours are written straight into the returned bit words.
 #[allow(clippy::type_complexity)]
-fn oriented_rows<const W: usize>(
-    rows: &[[u32; W]],
+fn oriented_by<'a>(
+    n: usize,
+    row: impl Fn(usize) -> &'a [u32],
     i: usize,
 ) -> Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)> {
-    let n = rows.len();
+    let bits = usize::BITS as usize;
+    let mut pos = vec![0usize; n.div_ceil(bits)];
+    let get = |pos: &[usize], x: usize| pos[x / bits] >> (x % bits) & 1 == 1;
     let mut of = vec![u32::MAX; n];
     let mut reps: Vec<u32> = Vec::new();
     let mut stack: Vec<u32> = Vec::with_capacity(1024);
@@ -485,48 +485,44 @@ fn oriented_rows<const W: usize>(
         let id = reps.len() as u32;
         reps.push(d as u32);
         of[d] = id;
+        pos[d / bits] |= 1 << (d % bits);
         stack.push(d as u32);
         while let Some(x) = stack.pop() {
-            let cx = of[x as usize];
-            let row = &rows[x as usize];
-            for (k, &y) in row.iter().enumerate() {
+            let cx = get(&pos, x as usize);
+            for (k, &y) in row(x as usize).iter().enumerate() {
                 if k == i {
                     continue;
                 }
                 if k < i && y == x {
                     return Err((d as u32, k, x, true));
                 }
-                let want = if k < i { cx ^ NEG } else { cx };
-                let cy = of[y as usize];
-                if cy == u32::MAX {
-                    of[y as usize] = want;
+                let want = if k < i { !cx } else { cx };
+                let yu = y as usize;
+                if of[yu] == u32::MAX {
+                    of[yu] = id;
+                    pos[yu / bits] |= usize::from(want) << (yu % bits);
                     stack.push(y);
-                } else if cy != want {
+                } else if get(&pos, yu) != want {
                     return Err((d as u32, k, x, false));
                 }
             }
         }
     }
-    let bits = usize::BITS as usize;
-    let mut words = vec![0usize; n.div_ceil(bits)];
-    for (d, c) in of.iter_mut().enumerate() {
-        if *c & NEG == 0 {
-            words[d / bits] |= 1 << (d % bits);
-        } else {
-            *c &= !NEG;
-        }
-    }
-    Ok((of, reps, words))
+    Ok((of, reps, pos))
 }
 
-/// [`oriented_rows`] for any width: `None` when the width has no specialised path.
+/// [`oriented_by`] on the rows of the flat involution array, specialised by width.
 #[allow(clippy::type_complexity)]
 pub(crate) fn oriented_cells(
     a: &[u32],
     w: usize,
     i: usize,
-) -> Option<Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)>> {
-    with_width!(a, w, |rows| Some(oriented_rows(rows, i)), None)
+) -> Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)> {
+    let n = a.len() / w.max(1);
+    with_width!(a, w, |rows| oriented_by(n, |x| &rows[x][..], i), {
+        let m = Dyn { a, w };
+        oriented_by(n, |x| m.row(x), i)
+    })
 }
 
 /// Joins darts `x` and `y` (absolute numbers, both `>= base`) of one union-find with
