@@ -410,7 +410,8 @@ pub(crate) mod tests {
     use super::*;
     use crate::sparse::SparseMatrix;
 
-    fn complex(counts: Vec<usize>, mats: Vec<Vec<(usize, usize, i64)>>) -> ChainComplex {
+    /// A complex from cell counts and `(row, col, value)` triplets per boundary matrix.
+    pub(crate) fn complex(counts: Vec<usize>, mats: Vec<Vec<(usize, usize, i64)>>) -> ChainComplex {
         let b = mats
             .iter()
             .enumerate()

@@ -92,9 +92,7 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
     // ⟨∂x, y⟩ from the input, for a k-cell x and a (k-1)-cell y (global numbers)
     let value = |x: usize, y: usize| -> R::E {
         let k = dim_of(x);
-        let (ri, rv) = c.boundary(k).col(x - off[k] as usize);
-        let r = (y - off[k - 1] as usize) as u32;
-        ring.of_i64(ri.binary_search(&r).map(|p| rv[p]).unwrap_or(0))
+        ring.of_i64(c.boundary(k).get(y - off[k - 1] as usize, x - off[k] as usize))
     };
     // faces of every cell (global ids, bit 31 set for a unit entry), ring-nonzero entries only
     let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
@@ -397,8 +395,11 @@ pub(crate) fn lift<R: Ring>(
         if ring.is_zero(&bd[a]) {
             continue;
         }
+        let eps = match m.get(a, b) {
+            0 => return None,
+            e => ring.of_i64(e),
+        };
         let (ri, rv) = m.col(b);
-        let eps = ring.of_i64(ri.binary_search(&(a as u32)).map(|p| rv[p]).ok()?);
         let lambda = ring.div_unit(&bd[a], &eps)?;
         z[b] = ring.sub_mul(&z[b], &lambda, &ring.of_i64(1))?;
         for (&r, &x) in ri.iter().zip(rv) {
@@ -429,16 +430,8 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
 mod tests {
     use super::*;
     use crate::homology::homology_z;
+    use crate::homology::tests::complex;
     use crate::ring::{Zi64, Zp};
-
-    fn complex(counts: Vec<usize>, mats: Vec<Vec<(usize, usize, i64)>>) -> ChainComplex {
-        let b = mats
-            .iter()
-            .enumerate()
-            .map(|(i, t)| SparseMatrix::try_from_triplets(counts[i], counts[i + 1], t).unwrap())
-            .collect();
-        ChainComplex::try_new(counts, b).unwrap()
-    }
 
     #[test]
     fn a_filled_triangle_reduces_to_one_vertex() {
