@@ -72,6 +72,17 @@ impl Partition {
     }
 }
 
+/// The oriented cells of every dimension of a 3-map, from [`DenseMap::oriented_cells_3d`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OrientedCells3d {
+    /// `cells[i]`: the i-cells and the colour of each dart in its compacted i-cell, as
+    /// [`DenseMap::oriented_cells`] gives them
+    pub cells: Vec<(Partition, BitVec)>,
+    /// the Euler characteristic of the boundary surface of each volume (volumes numbered as
+    /// in `cells[3]`)
+    pub euler: Vec<i64>,
+}
+
 /// An n-dimensional generalized map with darts `0..N` in flat arrays (BO Def. 1).
 ///
 /// Build one with [`DenseMap::new`] and [`DenseMap::link`], or from raw rows with
@@ -475,6 +486,37 @@ impl DenseMap {
             Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
             Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
         }
+    }
+
+    /// The oriented cells of every dimension of a 3-map and the Euler characteristic of the
+    /// boundary surface of each volume, in one O(N) pass per dimension that walks each cell
+    /// along its rings (faces: two `<alpha_0, alpha_1>`-rings; edges: an
+    /// `<alpha_2, alpha_3>`-orbit and its `alpha_0`-image; vertices: corners joined by
+    /// `alpha_3`) instead of following every involution from every dart. Entry `i` equals
+    /// [`DenseMap::oriented_cells`]`(i)`; `euler[v]` is, for volume `v`, its corners minus its
+    /// edge sides plus its face sides (2 exactly when C2 holds for it, given C1).
+    ///
+    /// `None` when the map is not of dimension 3 or some cell is not of these shapes: a dart
+    /// free for `alpha_0`, `alpha_1` or `alpha_2`, a folded face or edge, a non-orientable
+    /// volume. Then C1 fails somewhere, and [`DenseMap::oriented_cells`] names the cell.
+    /// Maps of at least 65,536 darts use two threads when the machine has them.
+    pub fn oriented_cells_3d(&self) -> Option<OrientedCells3d> {
+        if self.dim != 3 {
+            return None;
+        }
+        let rows: &[[u32; 4]] = self.alpha.as_chunks::<4>().0;
+        let two = crate::kernels::threads_for(rows.len(), 2) == 2;
+        let (cells, euler) = crate::cells3::oriented_cells_3(rows, two)?;
+        let n = rows.len();
+        let cells = cells
+            .into_iter()
+            .map(|(of, reps, words)| {
+                let mut pos: BitVec = BitVec::from_vec(words);
+                pos.truncate(n);
+                (Partition { of, reps }, pos)
+            })
+            .collect();
+        Some(OrientedCells3d { cells, euler })
     }
 
     /// Checks C1 for every dimension; returns the first failing cell.

@@ -237,7 +237,7 @@ pub(crate) fn count_orbits(a: &[u32], w: usize, mask: u32) -> usize {
 /// Darts from which the work is worth a second thread.
 const PARALLEL_FROM: usize = 1 << 16;
 
-fn threads_for(darts: usize, tasks: usize) -> usize {
+pub(crate) fn threads_for(darts: usize, tasks: usize) -> usize {
     if darts < PARALLEL_FROM || tasks < 2 {
         return 1;
     }
@@ -467,7 +467,7 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
 /// One depth-first traversal; `row(x)` gives the links of dart `x` (a fixed-width row on the
 /// specialised paths). The colours are written straight into the returned bit words.
 #[allow(clippy::type_complexity)]
-fn oriented_by<'a>(
+pub(crate) fn oriented_by<'a>(
     n: usize,
     row: impl Fn(usize) -> &'a [u32],
     i: usize,

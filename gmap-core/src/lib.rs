@@ -63,6 +63,7 @@
 #![warn(missing_docs)]
 
 pub mod alpha;
+mod cells3;
 pub mod compacted;
 pub mod dense;
 pub mod edit;
@@ -74,7 +75,7 @@ pub mod marks;
 
 pub use alpha::{AlphaSet, MAX_DIM};
 pub use compacted::{CompactedCells, FaceOperator};
-pub use dense::{Dart, DenseMap, Partition, Point};
+pub use dense::{Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, SewError};
 pub use error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityError};
 pub use marks::{MarkId, Marks};

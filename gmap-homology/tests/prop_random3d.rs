@@ -36,7 +36,8 @@ use std::collections::{BTreeMap, HashMap};
 
 use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap, GMap};
 use gmap_homology::{
-    cellular_complex, homology_z, homology_zp, simplicial_complex, ChainComplex, Homology, PreconditionError,
+    cellular_complex, check_by_dimension, check_preconditions, homology_z, homology_zp, simplicial_complex,
+    ChainComplex, Homology, PreconditionError,
 };
 use gmap_ops::build;
 use gmap_ops::euler::ops;
@@ -313,6 +314,8 @@ fn judge(m: &DenseMap) -> Result<Verdict, TestCaseError> {
     prop_assert_eq!(s.check_dd(), Ok(()));
     let hs = groups(&s)?;
     prop_assert_eq!(hs.z.betti[0], m.component_count());
+    // the ring walks of 3-maps give the cells, colours and error of the per-dimension check
+    prop_assert_eq!(check_preconditions(m), check_by_dimension(m));
     match cellular_complex(m) {
         Ok(c) => {
             prop_assert_eq!(c.chain.check_dd(), Ok(()));
