@@ -139,16 +139,35 @@ fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u3
     out
 }
 
-/// `∂_2` of a 3-map by the `<alpha_0, alpha_3>`-orbits, each at its smallest dart.
+/// `∂_2` of a 3-map by the `<alpha_0, alpha_3>`-orbits, face by face: each orbit
+/// `{x, alpha_0 x, alpha_3 x, alpha_0 alpha_3 x}` has one `alpha_0`-pair in each side of its
+/// face, so walking one side (the `<alpha_0, alpha_1>`-ring of the face's smallest dart) meets
+/// every orbit of the face once at a positive dart; on a face folded onto itself both pairs
+/// lie on that ring, and the orbit is counted at the smaller positive dart. The value is
+/// the same at every dart of an orbit (`alpha_0` flips both signs, `alpha_3` keeps both).
+/// Entries come out column by column. C1 assumed (no free dart in a face side).
 fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u32, u32, i64)> {
-    let a = map.flat();
+    let rows: &[[u32; 4]] = map.flat().as_chunks::<4>().0;
     let mut out = Vec::with_capacity(map.dart_count() / 4 + 1);
-    for (d, row) in a.chunks_exact(4).enumerate() {
-        let d32 = d as u32;
-        let (a0, a3) = (row[0], row[3]);
-        let a03 = a[a3 as usize * 4];
-        if d32 <= a0 && d32 <= a3 && d32 <= a03 {
-            out.push((edges.cells.of[d], faces.cells.of[d], faces.sign(d32) * edges.sign(d32)));
+    // the positive darts of the ring being walked
+    let mut ring: Vec<u32> = Vec::with_capacity(16);
+    for (f, &r) in faces.cells.reps.iter().enumerate() {
+        ring.clear();
+        let mut x = r;
+        loop {
+            ring.push(x);
+            x = rows[rows[x as usize][0] as usize][1];
+            if x == r {
+                break;
+            }
+        }
+        let a3 = rows[r as usize][3];
+        let folded = a3 != r && ring.contains(&a3);
+        let s = faces.sign(r);
+        for &x in &ring {
+            if !folded || rows[x as usize][3] >= x {
+                out.push((edges.cells.of[x as usize], f as u32, s * edges.sign(x)));
+            }
         }
     }
     out

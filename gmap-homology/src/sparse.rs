@@ -184,7 +184,13 @@ impl SparseMatrix {
     /// Like [`SparseMatrix::try_from_triplets`] for `(row, col, value)` entries with `u32`
     /// indices, by two stable counting sorts (rows, then columns) instead of a comparison
     /// sort: O(nnz + rows + cols). Duplicates are summed (overflow checked), zeros dropped.
+    ///
+    /// Entries already in column order (columns non-decreasing, as produced column by
+    /// column) skip both sorts: each column's few entries are sorted in place.
     pub fn try_from_entries(rows: usize, cols: usize, entries: &[(u32, u32, i64)]) -> Result<Self, SparseError> {
+        if entries.windows(2).all(|w| w[0].1 <= w[1].1) {
+            return Self::try_from_column_order(rows, cols, entries);
+        }
         let mut by_row = vec![0usize; rows + 1];
         let mut by_col = vec![0usize; cols + 1];
         for &(r, c, _) in entries {
@@ -245,6 +251,51 @@ impl SparseMatrix {
         }
         row_idx.truncate(out);
         vals.truncate(out);
+        Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
+    }
+
+    /// [`SparseMatrix::try_from_entries`] for entries whose columns do not decrease.
+    fn try_from_column_order(rows: usize, cols: usize, entries: &[(u32, u32, i64)]) -> Result<Self, SparseError> {
+        let mut col_ptr = vec![0usize; cols + 1];
+        let mut row_idx = Vec::with_capacity(entries.len());
+        let mut vals = Vec::with_capacity(entries.len());
+        let mut col: Vec<(u32, i64)> = Vec::new();
+        let mut k = 0;
+        while k < entries.len() {
+            let c = entries[k].1;
+            if c as usize >= cols {
+                return Err(SparseError::ColOutOfRange { row: entries[k].0 as usize, col: c as usize, cols });
+            }
+            col.clear();
+            while k < entries.len() && entries[k].1 == c {
+                let (r, _, v) = entries[k];
+                if r as usize >= rows {
+                    return Err(SparseError::RowOutOfRange { col: c as usize, row: r as usize, rows });
+                }
+                col.push((r, v));
+                k += 1;
+            }
+            // stable, as the counting sorts are: equal rows keep their order before summing
+            col.sort_by_key(|e| e.0);
+            let mut i = 0;
+            while i < col.len() {
+                let (r, mut v) = col[i];
+                i += 1;
+                while i < col.len() && col[i].0 == r {
+                    v = v.checked_add(col[i].1).ok_or(SparseError::Overflow { row: r as usize, col: c as usize })?;
+                    i += 1;
+                }
+                if v != 0 {
+                    row_idx.push(r);
+                    vals.push(v);
+                }
+            }
+            col_ptr[c as usize + 1] = row_idx.len();
+        }
+        // columns without entries take the pointer of the column before
+        for j in 0..cols {
+            col_ptr[j + 1] = col_ptr[j + 1].max(col_ptr[j]);
+        }
         Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
     }
 
@@ -426,6 +477,48 @@ mod tests {
         assert_eq!(
             SparseMatrix::try_from_triplets(1, 1, &[(0, 0, i64::MAX), (0, 0, 1)]),
             Err(SparseError::Overflow { row: 0, col: 0 })
+        );
+    }
+
+    /// Entries in column order take the in-place path; it builds the matrix of the
+    /// counting sorts (which a shuffled order of the same entries goes through).
+    #[test]
+    fn column_ordered_entries_agree_with_the_counting_sorts() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |m: u64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed % m
+        };
+        for case in 0..200 {
+            let (rows, cols) = (1 + next(9) as u32, 1 + next(9) as u32);
+            let mut e: Vec<(u32, u32, i64)> = (0..next(40))
+                .map(|_| (next(rows as u64) as u32, next(cols as u64) as u32, next(5) as i64 - 2))
+                .collect();
+            e.sort_by_key(|x| x.1);
+            let ordered = SparseMatrix::try_from_entries(rows as usize, cols as usize, &e).unwrap();
+            // an order with a decreasing column forces the counting sorts
+            e.reverse();
+            let shuffled = if e.windows(2).all(|w| w[0].1 <= w[1].1) {
+                SparseMatrix::try_from_triplets(
+                    rows as usize,
+                    cols as usize,
+                    &e.iter().map(|&(r, c, v)| (r as usize, c as usize, v)).collect::<Vec<_>>(),
+                )
+                .unwrap()
+            } else {
+                SparseMatrix::try_from_entries(rows as usize, cols as usize, &e).unwrap()
+            };
+            assert_eq!(ordered, shuffled, "case {case}");
+        }
+        assert_eq!(
+            SparseMatrix::try_from_entries(2, 2, &[(0, 0, 1), (0, 1, i64::MAX), (0, 1, 1)]),
+            Err(SparseError::Overflow { row: 0, col: 1 })
+        );
+        assert_eq!(
+            SparseMatrix::try_from_entries(2, 2, &[(0, 0, 1), (3, 1, 1)]),
+            Err(SparseError::RowOutOfRange { col: 1, row: 3, rows: 2 })
         );
     }
 
