@@ -24,11 +24,13 @@
 //! columns `v - w` (or empty), `H(X) = H(X, {v_1..v_c}) ⊕ Z^c` in degree 0, and the relative
 //! complex is the restriction to the other cells. The set-aside vertices stay in the output
 //! as isolated cells (each gives its `Z` in `H_0`). From there the edges at those vertices
-//! become coreducible, and coreductions sweep the complex like a breadth-first spanning tree
-//! in each dimension in turn — Mrozek and Batko's coreduction algorithm. On manifolds,
-//! cube grids and the simplicial counterparts of G-maps what survives is a handful of cells.
+//! become coreducible, and coreductions sweep the complex like a spanning tree in each
+//! dimension in turn — Mrozek and Batko's coreduction algorithm. Waiting cells are taken
+//! lowest number first (lowest dimension, then order of smallest dart), so the sweep walks
+//! the arrays nearly in order. On manifolds, cube grids and the simplicial counterparts of
+//! G-maps what survives is a handful of cells.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
 
 use crate::chain::ChainComplex;
 use crate::ring::{Euclid, Ring};
@@ -162,15 +164,19 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
     // entries of alive or critical cells in critical rows: (row, value), rows increasing
     let mut extra: HashMap<u32, Vec<(u32, R::E)>> = HashMap::new();
     let mut log: Vec<(u32, u32)> = Vec::with_capacity(total / 2);
-    // first in, first out: the sweep grows like a breadth-first search (a stack gets stuck
-    // far earlier on closed manifolds)
-    let mut work: VecDeque<u32> = (0..total as u32)
-        .filter(|&x| state[x as usize] == ALIVE && (nb[x as usize] == 1 || nc[x as usize] == 1))
-        .collect();
+    // lowest cell number first: the sweep moves through the complex in numbering order, which
+    // keeps its accesses close together (2.5x faster than first in, first out on the 40³
+    // grid, with the same survivors); a stack gets stuck far earlier on closed manifolds
+    let mut work = Ready::new(&off);
+    for x in 0..total {
+        if state[x] == ALIVE && (nb[x] == 1 || nc[x] == 1) {
+            work.push(x as u32);
+        }
+    }
     // per dimension, the first cell that may still be alive (critical cells are taken in order)
     let mut cursor: Vec<usize> = off[..n1].iter().map(|&o| o as usize).collect();
     loop {
-        let Some(x) = work.pop_front() else {
+        let Some(x) = work.pop() else {
             if !freeze {
                 break;
             }
@@ -197,7 +203,7 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
                     list.insert(pos, (x as u32, v));
                     nb[y] -= 1;
                     if nb[y] == 1 {
-                        work.push_back(y as u32);
+                        work.push(y as u32);
                     }
                 }
             }
@@ -260,7 +266,7 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
                 if state[y] == ALIVE {
                     nb[y] -= 1;
                     if nb[y] == 1 {
-                        work.push_back(y as u32);
+                        work.push(y as u32);
                     }
                 }
             }
@@ -269,7 +275,7 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
                 if state[y] == ALIVE {
                     nc[y] -= 1;
                     if nc[y] == 1 {
-                        work.push_back(y as u32);
+                        work.push(y as u32);
                     }
                 }
             }
@@ -326,6 +332,68 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
     let new_counts = ids.iter().map(Vec::len).collect();
     let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
     Some(Restricted { chain, ids, log, off })
+}
+
+/// The cells waiting to be looked at, taken lowest number first (lowest dimension, then
+/// order of smallest dart): a bit per cell and, per dimension, a count and the first word
+/// that may hold a bit. Taking cells in numbering order keeps the sweep's memory accesses
+/// close together; on the Lutz library it leaves as few cells as a first-in-first-out queue
+/// did, give or take a few (fewer on bing and knot, more on non_4_2_colorable).
+struct Ready {
+    bits: Vec<u64>,
+    /// per dimension: first and past-the-end word, first word that may be non-zero
+    lo: Vec<usize>,
+    hi: Vec<usize>,
+    cursor: Vec<usize>,
+    count: Vec<usize>,
+    /// dimension of each word (words are per dimension: a dimension starts a new word)
+    start: Vec<u32>,
+}
+
+impl Ready {
+    fn new(off: &[u32]) -> Self {
+        let dims = off.len() - 1;
+        let mut lo = Vec::with_capacity(dims);
+        let mut hi = Vec::with_capacity(dims);
+        let mut start = Vec::with_capacity(dims);
+        let mut words = 0;
+        for k in 0..dims {
+            let m = (off[k + 1] - off[k]) as usize;
+            lo.push(words);
+            start.push(off[k]);
+            words += m.div_ceil(64);
+            hi.push(words);
+        }
+        Ready { bits: vec![0; words], cursor: lo.clone(), lo, hi, count: vec![0; dims], start }
+    }
+
+    #[inline]
+    fn push(&mut self, x: u32) {
+        let k = self.start.partition_point(|&s| s <= x) - 1;
+        let i = (x - self.start[k]) as usize;
+        let w = self.lo[k] + i / 64;
+        let b = 1u64 << (i % 64);
+        if self.bits[w] & b == 0 {
+            self.bits[w] |= b;
+            self.count[k] += 1;
+            self.cursor[k] = self.cursor[k].min(w);
+        }
+    }
+
+    #[inline]
+    fn pop(&mut self) -> Option<u32> {
+        let k = self.count.iter().position(|&c| c > 0)?;
+        let mut w = self.cursor[k];
+        while self.bits[w] == 0 {
+            w += 1;
+        }
+        debug_assert!(w < self.hi[k]);
+        self.cursor[k] = w;
+        let b = self.bits[w].trailing_zeros();
+        self.bits[w] &= self.bits[w] - 1;
+        self.count[k] -= 1;
+        Some(self.start[k] + ((w - self.lo[k]) * 64) as u32 + b)
+    }
 }
 
 /// `list - lambda * fill` for sorted sparse rows; zeros dropped.
