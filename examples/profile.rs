@@ -1,6 +1,7 @@
 //! Stage timings of the cellular and simplicial homology of a map (a profiling aid):
 //! `cargo run --release --example profile -- FILE.gmap|FILE.facets [simplicial]`.
-//! Times are CPU times of the main thread, except the parallel precondition check (wall).
+//! Times are CPU times of the main thread, except the two-thread precondition checks, the
+//! border and the pipeline (wall).
 use std::time::{Duration, Instant as WallInstant};
 
 /// CPU time of the calling thread (from /proc/thread-self/schedstat), so timings hold on a
@@ -44,8 +45,12 @@ fn main() {
         oriented.push(c);
     }
     let t = WallInstant::now();
+    let oriented2 = gmap_homology::check_by_dimension(&map).unwrap();
+    eprintln!("check_by_dimension (two threads) {:.3?}", t.elapsed());
+    drop(oriented2);
+    let t = WallInstant::now();
     let oriented2 = gmap_homology::check_preconditions(&map).unwrap();
-    eprintln!("check_preconditions (parallel) {:.3?}", t.elapsed());
+    eprintln!("check_preconditions (ring walks for 3-maps, two threads) {:.3?}", t.elapsed());
     drop(oriented2);
     let t = WallInstant::now();
     let c = border_from_oriented(&map, &oriented);
