@@ -68,7 +68,7 @@ proptest! {
         let (m, _) = g.to_dense();
         prop_assume!(m.validate().is_ok());
         let Some(before) = cellular(&m) else { return Ok(()) };
-        let (small, report) = simplify_with(&m, &SimplifyOptions { tries, seed });
+        let (small, report) = simplify_with(&m, &SimplifyOptions { tries, seed, search: 40 });
         prop_assert!(small.validate().is_ok());
         prop_assert_eq!(small.euler_characteristic(), m.euler_characteristic());
         prop_assert_eq!(report.darts_after, small.dart_count());

@@ -37,38 +37,54 @@
 //! without re-examining the merged neighbour after each move, then seeded random orders of
 //! the darts) keep the smallest result; see [`SimplifyOptions`].
 //!
+//! # Search past plateaus (3-maps)
+//!
+//! Removals and contractions stop where every remaining cell meets its neighbours more than
+//! once: a ball with a knotted boundary ended at one vertex, one volume, 18 loops and 19
+//! faces that all bound the volume on both sides (8.9 % of `triple_trefoil_arc`). The
+//! inverse moves get out: splitting the volume by a new face along a closed path of its
+//! boundary, or a face by a new edge, subdivides without changing the space, and a face
+//! that bounded the volume on both sides may now separate the two halves and be removed.
+//! Such a split-then-remove is a handle slide. The search ([`SimplifyOptions::search`])
+//! applies random splits (up to a third of the darts' count, at most 40, at a time) to the
+//! smallest map so far, checks that every cell is still a ball (C1 and χ = 2 per volume),
+//! simplifies greedily again and keeps the result when it is no larger. Bigger groups of
+//! splits escaped the plateaus where one to three did not: with 1–3 splits per round half of
+//! the seeds left `triple_trefoil_arc` above 5 %, with up to 40 none of twelve did.
+//!
 //! # Results
 //!
 //! Darts before → after (cells after, per dimension), all with the homology stated in the
-//! files of the Lutz library and accepted by the cellular method (C1/C2 hold throughout):
+//! files of the Lutz library and accepted by the cellular method (C1/C2 hold throughout);
+//! "greedy" is the result before the search:
 //!
-//! | input | darts | after | cells after |
-//! |---|---|---|---|
-//! | 40³ periodic grid (3-torus) | 3,072,000 | 48 | 1, 3, 3, 1 |
-//! | 40³ grid (3-ball) | 3,072,000 | 4 | 2, 1, 1, 1 |
-//! | `600_cell` (3-sphere) | 14,400 | 4 | 1, 1, 1, 1 |
-//! | `knot` (3-ball) | 28,128 | 152 (0.5 %) | 1, 16, 17, 1 |
-//! | `bing` (3-ball, Bing's house inside) | 37,296 | 36 (0.1 %) | 1, 4, 5, 1 |
-//! | `trefoil_arc` (3-ball) | 912 | 20 (2.2 %) | 1, 2, 3, 1 |
-//! | `triple_trefoil_arc` (3-ball) | 2,328 | 208 (8.9 %) | 1, 18, 19, 1 |
-//! | `poincare` (homology sphere) | 2,160 | 60 (2.8 %) | 1, 5, 5, 1 |
-//! | `Hom_C5_K4` (H_1 = Z/2) | 34,560 | 44 | 1, 4, 4, 1 |
-//! | `Hom_n9_655_compl_K4` | 456,192 | 2,328 (0.5 %) | 1, 141, 141, 1 |
-//! | `RP4` | 18,000 | 16 | 1, 1, 1, 1, 1 |
-//! | `CP2` | 4,320 | 80 | 3, 3, 3, 1, 1 |
-//! | `K3_16` | 34,560 | 3,656 (10.6 %) | 11, 73, 107, 22, 1 |
+//! | input | darts | greedy | after | cells after | time |
+//! |---|---|---|---|---|---|
+//! | 40³ periodic grid (3-torus) | 3,072,000 | 48 | 48 | 1, 3, 3, 1 | 0.8 s |
+//! | 40³ grid (3-ball) | 3,072,000 | 4 | 4 | 2, 1, 1, 1 | 0.35 s |
+//! | `600_cell` (3-sphere) | 14,400 | 4 | 4 | 1, 1, 1, 1 | 17 ms |
+//! | `knot` (3-ball) | 28,128 | 152 | 4 (0.01 %) | 1, 1, 2, 1 | 0.4 s |
+//! | `bing` (3-ball, Bing's house inside) | 37,296 | 36 | 4 (0.01 %) | 1, 1, 2, 1 | 57 ms |
+//! | `trefoil_arc` (3-ball) | 912 | 20 | 4 (0.44 %) | 1, 1, 2, 1 | 26 ms |
+//! | `triple_trefoil_arc` (3-ball) | 2,328 | 208 (8.9 %) | 32 (1.37 %) | 1, 3, 4, 1 | 1.1 s |
+//! | `rudin` (non-shellable 3-ball) | 984 | 12 | 4 | 1, 1, 2, 1 | 31 ms |
+//! | `poincare` (homology sphere) | 2,160 | 60 | 52 (2.4 %) | 1, 3, 3, 1 | 1.2 s |
+//! | `hyperbolic_dodecahedral_space` | 4,056 | 176 | 176 (4.3 %) | 1, 13, 13, 1 | 1.9 s |
+//! | `Hom_C5_K4` (H_1 = Z/2) | 34,560 | 44 | 8 | 1, 1, 1, 1 | 66 ms |
+//! | `nc_sphere` | 46,272 | 148 | 4 | 1, 1, 1, 1 | 90 ms |
+//! | `Hom_n9_655_compl_K4` | 456,192 | 2,328 (0.5 %) | not searched | 1, 141, 141, 1 | |
+//! | `RP4` | 18,000 | 16 | (4-map) | 1, 1, 1, 1, 1 | |
+//! | `CP2` | 4,320 | 80 | (4-map) | 3, 3, 3, 1, 1 | |
+//! | `K3_16` | 34,560 | 3,656 (10.6 %) | (4-map) | 11, 73, 107, 22, 1 | |
 //!
-//! The previous version (fixed passes, all faces of the spanning tree removed before any
-//! edge) stopped at 9 % (600-cell), 34 % (poincaré), 25 % (`Hom_C5_K4`) and 45 % (K3).
-//! Without boundary-edge contractions the balls kept their boundary vertices: `knot` 2.6 %
-//! (53 vertices), `triple_trefoil_arc` 13.9 % (14 vertices).
+//! The search depends on its seed: over twelve seeds `triple_trefoil_arc` ended at 4 darts
+//! ten times and at 108 and 112 darts (4.6 %, 4.8 %) twice, in 0.1 to 5.8 s
+//! (`tests/simplify_measure.rs`, `GMAP_SEED`). The previous version (fixed passes, all
+//! faces of the spanning tree removed before any edge) stopped at 9 % (600-cell), 34 %
+//! (poincaré), 25 % (`Hom_C5_K4`) and 45 % (K3).
 //!
-//! `triple_trefoil_arc` (a ball whose boundary is knotted along a triple trefoil) stays
-//! above 5 %: it ends at one vertex and one volume, with 19 faces of which all but the
-//! boundary face bound the volume on both sides, and 18 loop edges; no removal or
-//! contraction applies there.
-//!
-//! K3 stays above 5 %. Where it stops (measured on the result above): one 4-cell, and
+//! K3 (a 4-map: no search) stays above 5 %. Where it stops (measured on the result above):
+//! one 4-cell, and
 //! - all 22 3-cells bound that 4-cell on both sides (no removal merges anything);
 //! - of the 107 faces, 82 lie in more than two 3-cells and 25 bound one 3-cell on both
 //!   sides; of the 73 edges, 71 lie in more than two faces and 2 in one face twice; the 11
@@ -78,10 +94,9 @@
 //!   3-cell or 4-cell has dual degree 2 (no contraction).
 //!
 //! No counting bound explains it — H_2 = Z^22 only forces 22 faces, a few hundred darts —
-//! so it is a limit of the two moves and of the orders tried, not of the manifold: going
-//! further needs other moves (collapsing a cell through a free face while it bounds one
-//! cell on both sides, or sliding cells over each other), which are not implemented.
-//! Thirty-two runs instead of eight (measured with another seed) reached 2,960 darts (8.6 %).
+//! so it is a limit of the two moves and of the orders tried, not of the manifold; the
+//! search by splits would need the ball check of 3-cells inside a 4-map (C2 by homology of
+//! each compacted 3-cell) and splits of 4-cells, which are not implemented.
 //!
 //! # Cost
 //!
@@ -91,13 +106,18 @@
 //! O(|c| n²) for the darts of the cell c it removes, plus the corners it has to compare
 //! when c meets one k-cell twice; a scan costs O(N α(N)) on top of the moves, and a scan
 //! changing nothing ends the reduction. Memory: O(N n) words. The n + 1 partitions of the
-//! input (two threads) take about a third of the time, the moves the rest. On the 40³
-//! periodic grid (3,072,000 darts, release build, two shared cores) the reduction takes
-//! 0.5–0.7 s, 1.2–1.7 times the direct cellular homology of the grid: it makes homology
-//! computations on such grids slower, not faster; its use is the small map itself (and
-//! inputs whose direct homology is expensive).
+//! input (two threads) take about a third of the time, the moves the rest. A search round
+//! costs O(N) per split tried on the current small map (every split is checked on the whole
+//! map), plus a greedy reduction of the split map. On the 40³ periodic grid (3,072,000 darts,
+//! release build, two shared cores) the greedy reduction takes 0.5–0.7 s and the search of
+//! its 48-dart result (500 rounds without a gain) 0.1–0.3 s, several times the direct
+//! cellular homology of the grid (~0.1–0.2 s): simplification makes homology computations on
+//! such grids slower, not faster; its use is the small map itself (and inputs whose direct
+//! homology is expensive).
 
-use gmap_core::DenseMap;
+use gmap_core::{DartId, DenseMap, GMap};
+
+use crate::euler::ops;
 
 const NONE: u32 = u32::MAX;
 
@@ -116,8 +136,14 @@ pub struct SimplifyReport {
     pub removed: Vec<usize>,
     /// number of i-cells contracted, per i
     pub contracted: Vec<usize>,
-    /// rounds of scans run, the last one changing nothing
+    /// rounds of scans run by the greedy stage, the last one changing nothing (`removed`,
+    /// `contracted` and `rounds` describe that stage, which ends the reduction when there is
+    /// no search)
     pub rounds: usize,
+    /// rounds of the search made after the greedy stage (see [`SimplifyOptions::search`])
+    pub search_rounds: usize,
+    /// darts the search removed beyond the greedy stage's result
+    pub search_gain: usize,
 }
 
 impl SimplifyReport {
@@ -692,11 +718,22 @@ pub struct SimplifyOptions {
     pub tries: usize,
     /// Seed of the random orders (a SplitMix64 generator: the result is deterministic).
     pub seed: u64,
+    /// Rounds of search after the greedy runs, for 3-maps whose cells are balls (C1 and
+    /// χ = 2 for every volume); 0 for none. A round splits one to three cells of the smallest
+    /// map so far (a face across a volume, an edge across a face: subdivisions, which keep
+    /// the space), checks that every cell is still a ball, simplifies the result again (two
+    /// greedy runs) and keeps it when it has at most as many darts. The splits move cells
+    /// past each other where removals and contractions alone are stuck. The search stops
+    /// after `search` rounds or when the split maps it has simplified hold `256 · search` darts
+    /// in all (chains and their ends: see the module documentation). Greedy results of more
+    /// than 1,024 darts are not searched.
+    pub search: usize,
 }
 
 impl SimplifyOptions {
     /// The choice of [`simplify`]: eight runs for maps of at most 2^16 darts, two (removals
-    /// first, contractions first) up to 2^18, one beyond. The first run does the work in
+    /// first, contractions first) up to 2^18, one beyond; 4000 rounds of search for 3-maps
+    /// (its cost follows the size of the reduced map, not of the input). The first run does the work in
     /// near-linear time; the others pay off on small, hard inputs (triangulated manifolds with
     /// torsion, 4-manifolds), where they cost a few milliseconds.
     pub fn for_map(map: &DenseMap) -> Self {
@@ -708,7 +745,7 @@ impl SimplifyOptions {
         } else {
             1
         };
-        SimplifyOptions { tries, seed: 0x5eed_9a3a }
+        SimplifyOptions { tries, seed: 0x5eed_9a3a, search: if map.dim() == 3 { 4000 } else { 0 } }
     }
 }
 
@@ -793,6 +830,8 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
     let (work, rounds) = best.expect("at least one run");
     let out = work.compact();
     debug_assert!(out.validate().is_ok(), "simplify broke validity");
+    let greedy = out.dart_count();
+    let (out, search_rounds) = search(out, options, &mut rng);
     let report = SimplifyReport {
         darts_before: nd,
         darts_after: out.dart_count(),
@@ -801,6 +840,123 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
         removed: work.removed,
         contracted: work.contracted,
         rounds,
+        search_rounds,
+        search_gain: greedy - out.dart_count(),
     };
     (out, report)
+}
+
+/// Whether every cell of a 3-map is a ball as the cellular method demands: C1 in every
+/// dimension and a boundary of Euler characteristic 2 for every volume (faces and edges are
+/// then balls by themselves). O(N).
+fn cells_are_balls(map: &DenseMap) -> bool {
+    map.oriented_cells_3d().is_some_and(|c| c.euler.iter().all(|&x| x == 2))
+}
+
+/// Splits up to `count` random cells of `g` (faces across volumes with seven chances in
+/// ten, else edges across faces), trying at most 400 random placements; the number made.
+fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix) -> usize {
+    let mut made = 0;
+    let mut darts: Vec<DartId> = g.darts().collect();
+    for _ in 0..400 {
+        if made == count {
+            break;
+        }
+        if made > 0 && darts.len() != g.dart_count() {
+            darts = g.darts().collect();
+        }
+        let darts = &darts;
+        let pick = |rng: &mut SplitMix| darts[(rng.next() % darts.len() as u64) as usize];
+        if rng.next() % 10 < 7 {
+            // a face across a volume along the closed path of one to three edge sides
+            let k = 1 + (rng.next() % 3) as usize;
+            let seeds: Vec<DartId> = (0..k).map(|_| pick(rng)).collect();
+            if ops::can_split_cell(g, &seeds, 3) {
+                ops::try_split_cell(g, &seeds, 3).expect("checked by can_split_cell");
+                made += 1;
+            }
+        } else {
+            // an edge across the face of d1, to a corner of that face
+            let d1 = pick(rng);
+            let mut ring = vec![d1];
+            let mut x = d1;
+            loop {
+                let y = g.alpha(x, 0);
+                ring.push(y);
+                x = g.alpha(y, 1);
+                if x == d1 || x == y || ring.len() > darts.len() {
+                    break;
+                }
+                ring.push(x);
+            }
+            let d2 = ring[(rng.next() % ring.len() as u64) as usize];
+            if ops::can_insert_edge(g, d1, d2) {
+                ops::try_insert_edge(g, d1, d2).expect("checked by can_insert_edge");
+                made += 1;
+            }
+        }
+    }
+    made
+}
+
+/// Greedy results above this many darts are not searched: every split is checked on the
+/// whole map, so a round costs O(N) per attempt, and such results are already far below
+/// the input (`Hom_n9_655_compl_K4`: 2,328 of 456,192 darts; searching it takes 11 s for
+/// 0.29 % instead of 0.51 %).
+const SEARCH_MAX_DARTS: usize = 1 << 10;
+
+/// The search of [`SimplifyOptions::search`] from the greedy result `map`; the smallest map
+/// found and the rounds made.
+///
+/// Chains of rounds start from `map`; a chain keeps a split-and-simplify round when the map
+/// has at most as many darts, and ends after `search / 8` rounds without fewer darts. A new
+/// chain starts (at most four) while the last one improved on the best map so far: chains
+/// that find their way down usually do so within a few hundred rounds, and one that does
+/// not sits on a plateau that more random splits rarely leave. Splits grow with the map:
+/// up to a third of its darts' count, between 3 and 40.
+fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix) -> (DenseMap, usize) {
+    if map.dim() != 3
+        || options.search == 0
+        || map.dart_count() == 0
+        || map.dart_count() > SEARCH_MAX_DARTS
+        || !cells_are_balls(&map)
+    {
+        return (map, 0);
+    }
+    let inner = SimplifyOptions { tries: 2, seed: 0, search: 0 };
+    let budget = options.search.saturating_mul(256);
+    let patience = options.search.div_ceil(8);
+    let mut best = map.clone();
+    let (mut spent, mut rounds) = (0usize, 0);
+    for _chain in 0..4 {
+        let mut cur = map.clone();
+        let mut since = 0;
+        while rounds < options.search && since < patience && spent < budget {
+            rounds += 1;
+            since += 1;
+            let (mut g, _) = GMap::from_dense(&cur);
+            let most = (cur.dart_count() / 3).clamp(3, 40);
+            let kicks = 1 + (rng.next() % most as u64) as usize;
+            if split_random_cells(&mut g, kicks, rng) == 0 {
+                continue;
+            }
+            let split = g.to_dense().0;
+            spent += split.dart_count();
+            if !cells_are_balls(&split) {
+                continue;
+            }
+            let (small, _) = simplify_with(&split, &SimplifyOptions { seed: rng.next(), ..inner });
+            if small.dart_count() <= cur.dart_count() && cells_are_balls(&small) {
+                if small.dart_count() < cur.dart_count() {
+                    since = 0;
+                }
+                cur = small;
+            }
+        }
+        if cur.dart_count() >= best.dart_count() {
+            break;
+        }
+        best = cur;
+    }
+    (best, rounds)
 }
