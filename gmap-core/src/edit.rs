@@ -8,9 +8,9 @@
 //! [`GMap::to_dense`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.
 
+use rustc_hash::FxHashMap as HashMap;
 use slotmap::{new_key_type, Key, SlotMap};
 use smallvec::SmallVec;
-use std::collections::HashMap;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
@@ -190,7 +190,7 @@ impl GMap {
     /// The orbit `<set>(d)` in breadth-first order from `d`. O(orbit size).
     pub fn orbit(&self, d: DartId, set: AlphaSet) -> Vec<DartId> {
         let idx: SmallVec<[usize; 8]> = set.iter().filter(|&i| i <= self.dim).collect();
-        let mut seen: HashMap<DartId, ()> = HashMap::new();
+        let mut seen: HashMap<DartId, ()> = HashMap::default();
         let mut out = vec![d];
         seen.insert(d, ());
         let mut k = 0;
@@ -234,8 +234,8 @@ impl GMap {
             }
         }
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
-        let mut fwd: HashMap<DartId, DartId> = HashMap::new();
-        let mut bwd: HashMap<DartId, DartId> = HashMap::new();
+        let mut fwd: HashMap<DartId, DartId> = HashMap::default();
+        let mut bwd: HashMap<DartId, DartId> = HashMap::default();
         let conflict = |at| SewError::NotIsomorphic { first: d, second: e, alpha: i, at };
         let mut pairs = vec![(d, e)];
         fwd.insert(d, e);

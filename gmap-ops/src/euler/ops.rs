@@ -13,7 +13,7 @@
 //!
 //! In debug builds every operator checks BO Def. 1 on the result (`debug_assert`).
 
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::{AlphaSet, DartId, GMap};
 use thiserror::Error;
@@ -96,7 +96,7 @@ fn local_counts(g: &GMap, darts: &[DartId]) -> Vec<i64> {
     let n = g.dim();
     let mut out = vec![0i64; n + 1];
     for (k, slot) in out.iter_mut().enumerate() {
-        let mut seen: HashSet<DartId> = HashSet::new();
+        let mut seen: HashSet<DartId> = HashSet::default();
         for &d in darts {
             if !g.contains(d) || seen.contains(&d) {
                 continue;
@@ -131,7 +131,7 @@ fn cut_closure(g: &GMap, seeds: &[DartId], i: usize) -> Vec<DartId> {
             set = set.with(k);
         }
     }
-    let mut seen: HashSet<DartId> = HashSet::new();
+    let mut seen: HashSet<DartId> = HashSet::default();
     let mut out = Vec::new();
     for &s in seeds {
         if seen.contains(&s) {
@@ -199,7 +199,7 @@ fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
             return Err(EulerError::Misplaced { dart: w, what: "other side of the cut" });
         }
     }
-    let mut partner = HashMap::new();
+    let mut partner = HashMap::default();
     if i >= 2 {
         for &x in &darts {
             let z = cut_partner(g, x, i, &set, cell.len() + 1)?;
@@ -214,7 +214,7 @@ fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
     // separation: from side A, moving inside the i-cell without crossing alpha_{i-1} at the
     // cut, the other side must stay out of reach
     let cellset = AlphaSet::cell(i, n);
-    let mut reach: HashSet<DartId> = HashSet::new();
+    let mut reach: HashSet<DartId> = HashSet::default();
     let mut stack = vec![first];
     reach.insert(first);
     while let Some(x) = stack.pop() {
@@ -266,12 +266,46 @@ pub fn can_split_cell(g: &GMap, seeds: &[DartId], i: usize) -> bool {
 /// (i-1)-cell and one more i-cell, homology unchanged. O(size of the i-cell · n).
 pub fn try_split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> Result<EulerOp, EulerError> {
     let cut = check_cut(g, seeds, i)?;
-    let n = g.dim();
     let mut touched: Vec<DartId> = cut.darts.clone();
     touched.extend(cut.darts.iter().map(|&x| g.alpha(x, i - 1)));
     let before = local_counts(g, &touched);
-    let mut a: HashMap<DartId, DartId> = HashMap::new();
-    let mut b: HashMap<DartId, DartId> = HashMap::new();
+    let new_darts = apply_cut(g, &cut, i);
+    touched.extend(new_darts);
+    let after = local_counts(g, &touched);
+    debug_check(g);
+    let name = match i {
+        1 => "mve".to_string(),
+        2 => "mef".to_string(),
+        3 => "mfs".to_string(),
+        _ => format!("m{}{}", cell_letter(i - 1), cell_letter(i)),
+    };
+    Ok(EulerOp::new(name, EpVector::from_cells(&diff(&after, &before))))
+}
+
+/// [`try_split_cell`] without the Euler–Poincaré bookkeeping, for searches that split many
+/// cells and only keep the map: `false` (and `g` unchanged) when the precondition fails.
+/// O(size of the i-cell · n).
+pub(crate) fn split_cell_quietly(g: &mut GMap, seeds: &[DartId], i: usize) -> bool {
+    match check_cut(g, seeds, i) {
+        Ok(cut) => {
+            apply_cut(g, &cut, i);
+            true
+        }
+        Err(_) => false,
+    }
+}
+
+/// [`try_insert_edge`] without the Euler–Poincaré bookkeeping (see [`split_cell_quietly`]).
+pub(crate) fn insert_edge_quietly(g: &mut GMap, d1: DartId, d2: DartId) -> bool {
+    edge_cut(g, d1, d2).is_ok_and(|c| split_cell_quietly(g, &c, 2))
+}
+
+/// Links the two new darts of every crossing of a checked cut (see [`try_split_cell`]);
+/// returns the new darts.
+fn apply_cut(g: &mut GMap, cut: &Cut, i: usize) -> Vec<DartId> {
+    let n = g.dim();
+    let mut a: HashMap<DartId, DartId> = HashMap::default();
+    let mut b: HashMap<DartId, DartId> = HashMap::default();
     for &x in &cut.darts {
         a.insert(x, g.create_dart());
         b.insert(x, g.create_dart());
@@ -297,17 +331,7 @@ pub fn try_split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> Result<EulerO
             g.link(bx, b[&z], i - 2);
         }
     }
-    touched.extend(a.values());
-    touched.extend(b.values());
-    let after = local_counts(g, &touched);
-    debug_check(g);
-    let name = match i {
-        1 => "mve".to_string(),
-        2 => "mef".to_string(),
-        3 => "mfs".to_string(),
-        _ => format!("m{}{}", cell_letter(i - 1), cell_letter(i)),
-    };
-    Ok(EulerOp::new(name, EpVector::from_cells(&diff(&after, &before))))
+    a.into_values().chain(b.into_values()).collect()
 }
 
 /// Like [`try_split_cell`], panicking when the precondition fails.
@@ -425,7 +449,7 @@ pub fn try_insert_dangling_edge(g: &mut GMap, d: DartId) -> Result<EulerOp, Eule
     touched.extend(corners.iter().map(|&x| g.alpha(x, 1)));
     let before = local_counts(g, &touched);
     // per corner copy: p (next to x), q (next to alpha_1 x), p2, q2 at the far end
-    let mut new: HashMap<DartId, [DartId; 4]> = HashMap::new();
+    let mut new: HashMap<DartId, [DartId; 4]> = HashMap::default();
     for &x in &corners {
         let ds = [g.create_dart(), g.create_dart(), g.create_dart(), g.create_dart()];
         new.insert(x, ds);
@@ -486,7 +510,7 @@ fn check_collapse(g: &GMap, d: DartId, i: usize, remove: bool) -> Result<Collaps
             }
         }
     }
-    let mut sides: HashSet<DartId> = HashSet::new();
+    let mut sides: HashSet<DartId> = HashSet::default();
     let mut count = 0;
     let mut free = false;
     for &x in &cell {
@@ -547,9 +571,9 @@ fn check_corners(g: &GMap, cell: &[DartId], i: usize, nb: usize) -> Result<(), E
     for k in (0..=n).filter(|&k| k != i && k != nb) {
         let app_set = AlphaSet::all(n).without(i).without(k);
         let corner_set = AlphaSet::all(n).without(nb).without(k);
-        let mut corner_of: HashMap<DartId, usize> = HashMap::new();
+        let mut corner_of: HashMap<DartId, usize> = HashMap::default();
         let mut parent: Vec<usize> = Vec::new();
-        let mut seen: HashSet<DartId> = HashSet::new();
+        let mut seen: HashSet<DartId> = HashSet::default();
         for &x in cell {
             if seen.contains(&x) {
                 continue;
@@ -788,7 +812,7 @@ pub fn try_close(g: &mut GMap, i: usize) -> Result<CloseReport, EulerError> {
     let plan = close_plan(g, i)?;
     let n = g.dim();
     let before = dense_counts(g);
-    let mut new: HashMap<DartId, DartId> = HashMap::new();
+    let mut new: HashMap<DartId, DartId> = HashMap::default();
     for &(d, _) in &plan {
         new.insert(d, g.create_dart());
     }
