@@ -340,13 +340,14 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
 /// close together; on the Lutz library it leaves as few cells as a first-in-first-out queue
 /// did, give or take a few (fewer on bing and knot, more on non_4_2_colorable).
 struct Ready {
+    /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
-    /// per dimension: first and past-the-end word, first word that may be non-zero
+    /// per dimension: its first word, its past-the-end word, the first word that may hold
+    /// a bit, the number of bits set, and its first global cell number
     lo: Vec<usize>,
     hi: Vec<usize>,
     cursor: Vec<usize>,
     count: Vec<usize>,
-    /// dimension of each word (words are per dimension: a dimension starts a new word)
     start: Vec<u32>,
 }
 
