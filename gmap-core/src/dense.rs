@@ -72,6 +72,14 @@ impl Partition {
     }
 }
 
+/// A kernel's oriented cells `(cell of each dart, smallest darts, colour words)` of a map of
+/// `n` darts as a partition and a bit per dart.
+fn oriented_parts((of, reps, words): (Vec<u32>, Vec<u32>, Vec<usize>), n: usize) -> (Partition, BitVec) {
+    let mut pos: BitVec = BitVec::from_vec(words);
+    pos.truncate(n);
+    (Partition { of, reps }, pos)
+}
+
 /// The oriented cells of every dimension of a 3-map, from [`DenseMap::oriented_cells_3d`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct OrientedCells3d {
@@ -478,11 +486,7 @@ impl DenseMap {
         assert!(i <= self.dim, "cell dimension {i} > map dimension {}", self.dim);
         let n = self.dart_count();
         match crate::kernels::oriented_cells(&self.alpha, self.dim + 1, i) {
-            Ok((of, reps, words)) => {
-                let mut pos: BitVec = BitVec::from_vec(words);
-                pos.truncate(n);
-                Ok((Partition { of, reps }, pos))
-            }
+            Ok(cells) => Ok(oriented_parts(cells, n)),
             Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
             Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
         }
@@ -507,15 +511,7 @@ impl DenseMap {
         let rows: &[[u32; 4]] = self.alpha.as_chunks::<4>().0;
         let two = crate::kernels::threads_for(rows.len(), 2) == 2;
         let (cells, euler) = crate::cells3::oriented_cells_3(rows, two)?;
-        let n = rows.len();
-        let cells = cells
-            .into_iter()
-            .map(|(of, reps, words)| {
-                let mut pos: BitVec = BitVec::from_vec(words);
-                pos.truncate(n);
-                (Partition { of, reps }, pos)
-            })
-            .collect();
+        let cells = cells.into_iter().map(|c| oriented_parts(c, rows.len())).collect();
         Some(OrientedCells3d { cells, euler })
     }
 
