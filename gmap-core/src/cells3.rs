@@ -28,6 +28,8 @@
 //! offending cell.
 
 use crate::kernels::oriented_by;
+use crate::parallel;
+use crate::union_find::ParityUnionFind;
 
 const NONE: u32 = u32::MAX;
 const BITS: usize = usize::BITS as usize;
@@ -37,24 +39,18 @@ pub(crate) type Cells = (Vec<u32>, Vec<u32>, Vec<usize>);
 
 /// The oriented cells of dimensions 0 to 3 of a 3-map, and the Euler characteristic of the
 /// boundary of each volume; `None` when a cell is not of the shapes of the module docs.
-/// Two threads when `two`. O(N α(N)).
-pub(crate) fn oriented_cells_3(rows: &[[u32; 4]], two: bool) -> Option<([Cells; 4], Vec<i64>)> {
+/// The four dimensions are tasks of [`parallel::map_tasks`]. O(N α(N)).
+pub(crate) fn oriented_cells_3(rows: &[[u32; 4]]) -> Option<([Cells; 4], Vec<i64>)> {
     // (first involution of the ring, second, does each flip the colour, link every pair)
-    let vertex = || glued(rows, 1, 2, false, false, true);
-    let edge = || glued(rows, 0, 2, true, false, true);
-    let face = || glued(rows, 0, 1, true, true, false);
-    let volume = || oriented_by(rows.len(), |x| &rows[x][..], 3).ok();
-    let (v, e, f, c) = if two {
-        std::thread::scope(|s| {
-            let h = s.spawn(|| (edge(), face()));
-            let (v, c) = (vertex(), volume());
-            let (e, f) = h.join().expect("cell thread");
-            (v, e, f, c)
-        })
-    } else {
-        (vertex(), edge(), face(), volume())
-    };
-    let ((v, corners), (e, sides), (f, rings), c) = (v?, e?, f?, c?);
+    let mut parts = parallel::map_tasks(4, rows.len(), |k| match k {
+        0 => glued(rows, 1, 2, false, false, true),
+        1 => glued(rows, 0, 2, true, false, true),
+        2 => glued(rows, 0, 1, true, true, false),
+        _ => oriented_by(rows.len(), |x| &rows[x][..], 3).ok().map(|c| (c, Vec::new())),
+    })
+    .into_iter();
+    let mut next = || parts.next().flatten();
+    let ((v, corners), (e, sides), (f, rings), (c, _)) = (next()?, next()?, next()?, next()?);
     let vol = &c.0;
     let mut chi = vec![0i64; c.1.len()];
     for &x in corners.iter().chain(&rings) {
@@ -64,51 +60,6 @@ pub(crate) fn oriented_cells_3(rows: &[[u32; 4]], two: bool) -> Option<([Cells; 
         chi[vol[x as usize] as usize] -= 1;
     }
     Some(([v, e, f, c], chi))
-}
-
-/// Union-find with parities over ring numbers: `parent[r]`, and the colour flip of `r`
-/// relative to its parent.
-struct Rings {
-    parent: Vec<u32>,
-    flip: Vec<bool>,
-}
-
-impl Rings {
-    /// The root of `r` and the flip of `r` relative to it, halving the path.
-    #[inline]
-    fn find(&mut self, mut r: u32) -> (u32, bool) {
-        let mut acc = false;
-        loop {
-            let p = self.parent[r as usize];
-            if p == r {
-                return (r, acc);
-            }
-            let g = self.parent[p as usize];
-            if g == p {
-                return (p, acc ^ self.flip[r as usize]);
-            }
-            // r skips to its grandparent
-            let f = self.flip[r as usize] ^ self.flip[p as usize];
-            self.parent[r as usize] = g;
-            self.flip[r as usize] = f;
-            acc ^= f;
-            r = g;
-        }
-    }
-
-    /// Demands that rings `r` and `s` differ by flip `f`; `false` on a conflict.
-    #[inline]
-    fn join(&mut self, r: u32, s: u32, f: bool) -> bool {
-        let (a, fa) = self.find(r);
-        let (b, fb) = self.find(s);
-        if a == b {
-            return fa ^ fb == f;
-        }
-        let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-        self.parent[hi as usize] = lo;
-        self.flip[hi as usize] = fa ^ fb ^ f;
-        true
-    }
 }
 
 /// The i-cells whose darts, inside a volume, form rings of `alpha_a` and `alpha_b`, glued
@@ -121,7 +72,7 @@ fn glued(rows: &[[u32; 4]], a: usize, b: usize, fa: bool, fb: bool, every_pair: 
     let mut of = vec![NONE; n];
     let mut col = vec![0usize; n.div_ceil(BITS)];
     let mut first: Vec<u32> = Vec::with_capacity(n / 4);
-    let mut uf = Rings { parent: Vec::with_capacity(n / 4), flip: Vec::with_capacity(n / 4) };
+    let mut uf = ParityUnionFind::with_capacity(n / 4);
     let mut links: Vec<u32> = Vec::with_capacity(64);
     let colour = |col: &[usize], x: usize| col[x / BITS] >> (x % BITS) & 1 == 1;
     for d in 0..n {
@@ -130,8 +81,7 @@ fn glued(rows: &[[u32; 4]], a: usize, b: usize, fa: bool, fb: bool, every_pair: 
         }
         let r = first.len() as u32;
         first.push(d as u32);
-        uf.parent.push(r);
-        uf.flip.push(false);
+        uf.push();
         links.clear();
         let mut x = d;
         let mut c = true;

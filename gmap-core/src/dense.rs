@@ -503,14 +503,14 @@ impl DenseMap {
     /// `None` when the map is not of dimension 3 or some cell is not of these shapes: a dart
     /// free for `alpha_0`, `alpha_1` or `alpha_2`, a folded face or edge, a non-orientable
     /// volume. Then C1 fails somewhere, and [`DenseMap::oriented_cells`] names the cell.
-    /// Maps of at least 65,536 darts use two threads when the machine has them.
+    /// Maps of at least 65,536 darts share the four dimensions among threads
+    /// ([`crate::parallel`]).
     pub fn oriented_cells_3d(&self) -> Option<OrientedCells3d> {
         if self.dim != 3 {
             return None;
         }
         let rows: &[[u32; 4]] = self.alpha.as_chunks::<4>().0;
-        let two = crate::kernels::threads_for(rows.len(), 2) == 2;
-        let (cells, euler) = crate::cells3::oriented_cells_3(rows, two)?;
+        let (cells, euler) = crate::cells3::oriented_cells_3(rows)?;
         let cells = cells.into_iter().map(|c| oriented_parts(c, rows.len())).collect();
         Some(OrientedCells3d { cells, euler })
     }

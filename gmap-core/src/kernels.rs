@@ -17,7 +17,8 @@
 //! Every kernel expects a map whose links are in range (a validated map); on an invalid map
 //! they may panic on an index, never read out of bounds.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use crate::parallel;
+use crate::union_find::{ParitySets, ParityUnionFind, UnionFind};
 
 /// A fixed-size bit set over `0..len`.
 pub(crate) struct Bits(Vec<u64>);
@@ -174,53 +175,37 @@ fn count_dyn(m: Dyn<'_>, mask: u32) -> usize {
     count
 }
 
-/// Finds the root of `x`, halving the path on the way.
-#[inline]
-fn uf_find(parent: &mut [u32], mut x: u32) -> u32 {
-    loop {
-        let p = parent[x as usize];
-        if p == x {
-            return x;
-        }
-        let g = parent[p as usize];
-        parent[x as usize] = g;
-        x = g;
-    }
-}
-
 /// Number of orbits by union-find over one sequential scan of the rows: each link
 /// `d -> alpha_i(d)` with `alpha_i(d) > d` merges two classes, the smaller root becoming the
 /// root. Reading rows in order and, for most maps, their partners in runs, it touches
 /// memory far more predictably than a traversal.
 fn count_rows_uf<const W: usize>(rows: &[[u32; W]], mask: u32) -> usize {
-    let mut parent: Vec<u32> = (0..rows.len() as u32).collect();
-    uf_scan(rows, mask, &mut parent, rows.len())
+    let mut uf = UnionFind::new(rows.len());
+    uf_scan(rows, mask, &mut uf, rows.len())
 }
 
 /// The orbit counts of `mask` and of `mask | extra`: the second continues the union-find of
 /// the first with the links of `extra` only.
 fn count_rows_uf_then<const W: usize>(rows: &[[u32; W]], mask: u32, extra: u32) -> (usize, usize) {
-    let mut parent: Vec<u32> = (0..rows.len() as u32).collect();
-    let first = uf_scan(rows, mask, &mut parent, rows.len());
-    let second = uf_scan(rows, extra & !mask, &mut parent, first);
+    let mut uf = UnionFind::new(rows.len());
+    let first = uf_scan(rows, mask, &mut uf, rows.len());
+    let second = uf_scan(rows, extra & !mask, &mut uf, first);
     (first, second)
 }
 
 /// One union-find scan over the links of `mask`, starting from `roots` classes.
-fn uf_scan<const W: usize>(rows: &[[u32; W]], mask: u32, parent: &mut [u32], mut roots: usize) -> usize {
+fn uf_scan<const W: usize>(rows: &[[u32; W]], mask: u32, uf: &mut UnionFind, mut roots: usize) -> usize {
     for (d, row) in rows.iter().enumerate() {
         // the root of d, found at its first link to a later dart and kept up to date
         let mut a = u32::MAX;
         for (i, &e) in row.iter().enumerate() {
             if mask & (1 << i) != 0 && e as usize > d {
                 if a == u32::MAX {
-                    a = uf_find(parent, d as u32);
+                    a = uf.find(d as u32);
                 }
-                let b = uf_find(parent, e);
+                let b = uf.find(e);
                 if a != b {
-                    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-                    parent[hi as usize] = lo;
-                    a = lo;
+                    a = uf.link_roots(a, b);
                     roots -= 1;
                 }
             }
@@ -234,54 +219,16 @@ pub(crate) fn count_orbits(a: &[u32], w: usize, mask: u32) -> usize {
     with_width!(a, w, |rows| count_rows_uf(rows, mask), count_dyn(Dyn { a, w }, mask))
 }
 
-/// Darts from which the work is worth a second thread.
-const PARALLEL_FROM: usize = 1 << 16;
-
-pub(crate) fn threads_for(darts: usize, tasks: usize) -> usize {
-    if darts < PARALLEL_FROM || tasks < 2 {
-        return 1;
-    }
-    let hw = std::thread::available_parallelism().map_or(1, |p| p.get());
-    hw.min(tasks).min(2)
-}
-
-/// Orbit counts for several involution sets, on up to two threads taking the sets from a
-/// shared queue (one union-find scan per set).
+/// Orbit counts for several involution sets, the sets handed out to the threads of
+/// [`parallel::map_tasks`] (one union-find scan per set).
 pub(crate) fn count_orbits_many(a: &[u32], w: usize, masks: &[u32]) -> Vec<usize> {
-    let darts = a.len() / w.max(1);
-    let threads = threads_for(darts, masks.len());
-    if threads == 1 {
-        return masks.iter().map(|&m| count_orbits(a, w, m)).collect();
-    }
-    let next = AtomicUsize::new(0);
-    let mut out = vec![0usize; masks.len()];
-    let results: Vec<Vec<(usize, usize)>> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = Vec::new();
-                    loop {
-                        let k = next.fetch_add(1, Ordering::Relaxed);
-                        if k >= masks.len() {
-                            break mine;
-                        }
-                        mine.push((k, count_orbits(a, w, masks[k])));
-                    }
-                })
-            })
-            .collect();
-        handles.into_iter().map(|h| h.join().expect("orbit counting thread")).collect()
-    });
-    for (k, c) in results.into_iter().flatten() {
-        out[k] = c;
-    }
-    out
+    parallel::map_tasks(masks.len(), a.len() / w.max(1), |k| count_orbits(a, w, masks[k]))
 }
 
 /// The numbers of cells of every dimension `0..=n` (`w = n + 1`) and of connected
 /// components. The n-cells' union-find is continued with the links of `alpha_n` to give the
-/// components, so the rows are scanned n + 1 times plus one light scan; on two threads for
-/// big maps.
+/// components, so the rows are scanned n + 1 times plus one light scan; the n + 1 scans
+/// are shared among the threads of [`parallel::map_tasks`].
 pub(crate) fn counts_and_components(a: &[u32], w: usize) -> (Vec<usize>, usize) {
     let n = w - 1;
     let all = if w >= 32 { u32::MAX } else { (1u32 << w) - 1 };
@@ -296,31 +243,10 @@ pub(crate) fn counts_and_components(a: &[u32], w: usize) -> (Vec<usize>, usize) 
             (count_orbits(a, w, cell(k - 1)), 0)
         }
     };
-    let threads = threads_for(a.len() / w, w);
-    let next = AtomicUsize::new(0);
-    let worker = || {
-        let mut mine = Vec::new();
-        loop {
-            let k = next.fetch_add(1, Ordering::Relaxed);
-            if k > n {
-                break mine;
-            }
-            mine.push((k, task(k)));
-        }
-    };
-    let results: Vec<(usize, (usize, usize))> = if threads == 1 {
-        worker()
-    } else {
-        std::thread::scope(|s| {
-            let h = s.spawn(worker);
-            let mut mine = worker();
-            mine.extend(h.join().expect("counting thread"));
-            mine
-        })
-    };
+    let results = parallel::map_tasks(w, a.len() / w, task);
     let mut counts = vec![0usize; w];
     let mut components = 0;
-    for (k, (c, comps)) in results {
+    for (k, (c, comps)) in results.into_iter().enumerate() {
         if k == 0 {
             counts[n] = c;
             components = comps;
@@ -382,21 +308,14 @@ fn valid_dyn(m: Dyn<'_>, lo: usize, hi: usize) -> bool {
     true
 }
 
-/// The fast all-or-nothing validity check (BO Def. 1), on up to two threads.
+/// The fast all-or-nothing validity check (BO Def. 1), the darts cut into one range per
+/// thread.
 pub(crate) fn is_valid(a: &[u32], w: usize) -> bool {
     let n = a.len() / w;
     let check =
         |lo: usize, hi: usize| with_width!(a, w, |rows| valid_rows(rows, lo, hi), valid_dyn(Dyn { a, w }, lo, hi));
-    if threads_for(n, 2) == 1 {
-        return check(0, n);
-    }
-    let mid = n / 2;
-    std::thread::scope(|s| {
-        let h = s.spawn(|| check(mid, n));
-        let first = check(0, mid);
-        let second = h.join().expect("validation thread");
-        first && second
-    })
+    let ranges = parallel::split_ranges(n, parallel::threads_for(n, usize::MAX));
+    parallel::map_tasks(ranges.len(), n, |k| check(ranges[k].start, ranges[k].end)).into_iter().all(|ok| ok)
 }
 
 /// Orientation colours (BO Def. 7, 8): 1 for the positive class, 2 for the negative, the
@@ -525,56 +444,15 @@ pub(crate) fn oriented_cells(
     })
 }
 
-/// Joins darts `x` and `y` (absolute numbers, both `>= base`) of one union-find with
-/// parities stored from `base` on, demanding opposite classes; `false` on a conflict.
-#[inline]
-fn uf_join_opposite(parent: &mut [u32], parity: &mut [u8], base: u32, x: u32, y: u32) -> bool {
-    let (ra, pa) = uf_find_parity_at(parent, parity, base, x);
-    let (rb, pb) = uf_find_parity_at(parent, parity, base, y);
-    if ra == rb {
-        return pa != pb;
-    }
-    let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-    parent[(hi - base) as usize] = lo;
-    parity[(hi - base) as usize] = pa ^ pb ^ 1;
-    true
-}
-
-/// Finds the root of `x` and the parity of `x` relative to it, compressing the path, in
-/// arrays holding darts `base..`.
-#[inline]
-fn uf_find_parity_at(parent: &mut [u32], parity: &mut [u8], base: u32, x: u32) -> (u32, u8) {
-    let mut r = x;
-    let mut acc = 0u8;
-    while parent[(r - base) as usize] != r {
-        acc ^= parity[(r - base) as usize];
-        r = parent[(r - base) as usize];
-    }
-    let mut y = x;
-    let mut a = acc;
-    while parent[(y - base) as usize] != y {
-        let k = (y - base) as usize;
-        let next = parent[k];
-        let py = parity[k];
-        parent[k] = r;
-        parity[k] = a;
-        a ^= py;
-        y = next;
-    }
-    (r, acc)
-}
-
 /// One half of the orientability scan: the links `d -> e`, `e > d`, of darts `lo..hi`,
-/// with the union-find of darts `lo..hi` in `parent`/`parity`. Links leaving the range
+/// with the union-find range of darts `lo..hi`. Links leaving the range
 /// (`e >= hi`) are returned for the merge. `None` on a conflict.
 fn orient_range<const W: usize>(
     rows: &[[u32; W]],
     lo: usize,
     hi: usize,
-    parent: &mut [u32],
-    parity: &mut [u8],
+    mut uf: ParitySets<'_>,
 ) -> Option<Vec<(u32, u32)>> {
-    let base = lo as u32;
     let mut cross = Vec::new();
     for (k, row) in rows[lo..hi].iter().enumerate() {
         let d = (lo + k) as u32;
@@ -584,7 +462,7 @@ fn orient_range<const W: usize>(
             }
             if e as usize >= hi {
                 cross.push((d, e));
-            } else if !uf_join_opposite(parent, parity, base, d, e) {
+            } else if !uf.join(d, e, true) {
                 return None;
             }
         }
@@ -594,25 +472,22 @@ fn orient_range<const W: usize>(
 
 /// Whether the map is orientable (BO Def. 7): a union-find with parities over sequential
 /// scans, each non-fixed link `d -> alpha_i(d)` demanding opposite classes. Big maps are
-/// split in two halves scanned on two threads, then the links between the halves are
-/// merged.
+/// cut into one range of darts per thread, then the links between ranges are merged.
 fn orientable_rows<const W: usize>(rows: &[[u32; W]]) -> bool {
     let n = rows.len();
-    let mut parent: Vec<u32> = (0..n as u32).collect();
-    let mut parity = vec![0u8; n];
-    let mid = if threads_for(n, 2) == 2 { n / 2 } else { n };
-    let (pa, pb) = parent.split_at_mut(mid);
-    let (qa, qb) = parity.split_at_mut(mid);
-    let (first, second) = std::thread::scope(|s| {
-        let h = (mid < n).then(|| s.spawn(|| orient_range(rows, mid, n, pb, qb)));
-        let first = orient_range(rows, 0, mid, pa, qa);
-        (first, h.map(|h| h.join().expect("orientation thread")))
-    });
-    let Some(cross) = first else { return false };
-    if let Some(None) = second {
-        return false;
+    let mut uf = ParityUnionFind::new(n);
+    let ranges = parallel::split_ranges(n, parallel::threads_for(n, usize::MAX));
+    let lens: Vec<usize> = ranges.iter().map(|r| r.len()).collect();
+    let parts: Vec<_> = ranges.into_iter().zip(uf.split_mut(&lens)).collect();
+    let crosses = parallel::map_parts(parts, |(r, sets)| orient_range(rows, r.start, r.end, sets));
+    let mut cross = Vec::new();
+    for c in crosses {
+        match c {
+            Some(c) => cross.extend(c),
+            None => return false,
+        }
     }
-    cross.into_iter().all(|(d, e)| uf_join_opposite(&mut parent, &mut parity, 0, d, e))
+    cross.into_iter().all(|(d, e)| uf.join(d, e, true))
 }
 
 /// Whether the map is orientable, by [`orientable_rows`] (or a traversal for large widths).
@@ -680,7 +555,7 @@ mod tests {
     fn big_maps_take_the_two_thread_paths() {
         for twist in [false, true] {
             let m = ring_of_squares(10_000, twist);
-            assert!(m.dart_count() >= PARALLEL_FROM);
+            assert!(m.dart_count() >= parallel::PARALLEL_FROM);
             m.validate().unwrap();
             assert_eq!(m.cell_counts_and_components(), (vec![20_000, 30_000, 10_000], 1));
             assert_eq!(m.is_orientable(), !twist);

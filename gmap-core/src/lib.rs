@@ -75,6 +75,8 @@ pub mod examples;
 pub mod io;
 mod kernels;
 pub mod marks;
+pub mod parallel;
+pub mod union_find;
 
 pub use alpha::{AlphaSet, MAX_DIM};
 pub use compacted::{CompactedCells, FaceOperator};

@@ -26,7 +26,6 @@
 //! Both directions are O(R + E) (plus the validation of Def. 3.1).
 
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
@@ -197,27 +196,6 @@ pub struct JsonFileError {
     pub path: PathBuf,
     /// what is wrong
     pub error: JsonError,
-}
-
-/// Writes `text` to `path` through a temporary file in the same directory and a rename,
-/// so that a failure never leaves a partial file.
-pub fn write_text_atomically(path: &Path, text: &str) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = path.file_name().map(|n| n.to_string_lossy().to_string()).unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }
 
 /// Writes the complex in the `.json` format, one region or entry per line.

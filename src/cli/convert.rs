@@ -10,7 +10,7 @@ use anyhow::{bail, Context, Result};
 use gmap_core::DenseMap;
 use gmap_homology::arch::ArchComplex;
 use gmap_homology::dot::write_dot;
-use gmap_homology::json::{write_json, write_text_atomically};
+use gmap_homology::json::write_json;
 use gmap_homology::lar::Lar;
 use gmap_ops::import::{FacePoset, PosetError};
 
@@ -50,7 +50,7 @@ fn complex_of(m: &DenseMap, output: &Path) -> Result<ArchComplex> {
 }
 
 fn write_text(path: &Path, text: &str) -> Result<()> {
-    write_text_atomically(path, text).with_context(|| format!("{}: cannot write", path.display()))
+    gmap_core::io::write_atomic(path, text.as_bytes()).with_context(|| format!("{}: cannot write", path.display()))
 }
 
 /// Writes an architectural complex: `.json` and `.dot` directly; any other format through

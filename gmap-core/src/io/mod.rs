@@ -223,18 +223,50 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, ReadError> {
     fs::read(path).map_err(|e| ReadError::new(&path.display().to_string(), None, ReadErrorKind::Io(e.to_string())))
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same directory and a rename.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    let io_err = |source| WriteError::Io { path: path.to_path_buf(), source };
+/// Writes `bytes` to `path` so that readers of `path` see either the old file or the whole
+/// new one, never a part: the one file writer of the workspace, used by every format.
+///
+/// The bytes go to a temporary file created exclusively (`O_EXCL`, a random name: a planted
+/// symbolic link is never followed) in the destination's own folder, are flushed to disk,
+/// and the file is renamed over `path`. The result has the permissions of the file it
+/// replaces, or `0644` for a new file. On any failure the temporary file is removed and
+/// `path` is left as it was.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(io_err)?;
-    tmp.write_all(bytes).map_err(io_err)?;
-    tmp.as_file().sync_all().map_err(io_err)?;
-    tmp.persist(path).map_err(|e| io_err(e.error))?;
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let mut tmp = tempfile::Builder::new().prefix(&format!(".{name}.")).suffix(".tmp").tempfile_in(dir)?;
+    tmp.write_all(bytes)?;
+    let perms = match fs::metadata(path) {
+        Ok(m) if m.is_file() => Some(m.permissions()),
+        _ => default_permissions(),
+    };
+    if let Some(p) = perms {
+        tmp.as_file().set_permissions(p)?;
+    }
+    tmp.as_file().sync_all()?;
+    tmp.persist(path).map_err(|e| e.error)?;
     Ok(())
+}
+
+/// `0644` on Unix; elsewhere the temporary file keeps what the system gave it.
+fn default_permissions() -> Option<fs::Permissions> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        Some(fs::Permissions::from_mode(0o644))
+    }
+    #[cfg(not(unix))]
+    {
+        None
+    }
+}
+
+/// [`write_atomic`] with the error as a [`WriteError`] naming the file.
+fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    write_atomic(path, bytes).map_err(|source| WriteError::Io { path: path.to_path_buf(), source })
 }
 
 /// Shortens a token for an error message (keeps whole characters).
@@ -454,6 +486,35 @@ fn validity_to_read_error(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[cfg(unix)]
+    #[test]
+    fn atomic_writer_keeps_modes_and_refuses_planted_links() {
+        use std::os::unix::fs::{symlink, PermissionsExt};
+        let dir = tempfile::tempdir().unwrap();
+        let mode = |p: &Path| fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        // a new file is 0644
+        let new = dir.path().join("new.gmap");
+        write_atomic(&new, b"a").unwrap();
+        assert_eq!(mode(&new), 0o644);
+        // an existing 0664 file keeps its mode
+        let old = dir.path().join("old.gmap");
+        fs::write(&old, b"x").unwrap();
+        fs::set_permissions(&old, fs::Permissions::from_mode(0o664)).unwrap();
+        write_atomic(&old, b"yz").unwrap();
+        assert_eq!((mode(&old), fs::read(&old).unwrap()), (0o664, b"yz".to_vec()));
+        // a symlink planted under the old fixed temporary name is not followed
+        let victim = dir.path().join("victim");
+        fs::write(&victim, b"keep").unwrap();
+        symlink(&victim, dir.path().join(format!(".out.json.{}.tmp", std::process::id()))).unwrap();
+        write_atomic(&dir.path().join("out.json"), b"{}").unwrap();
+        assert_eq!(fs::read(&victim).unwrap(), b"keep");
+        // a failure leaves no temporary file behind
+        assert!(write_atomic(&dir.path().join("no/such/dir/x"), b"x").is_err());
+        let names: Vec<String> =
+            fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        assert_eq!(names.iter().filter(|n| n.ends_with(".tmp") && !n.contains(".out.json.")).count(), 0, "{names:?}");
+    }
 
     #[test]
     fn scanner_numbers() {

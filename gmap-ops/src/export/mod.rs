@@ -4,7 +4,6 @@
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
 
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use gmap_core::{AlphaSet, Dart, DenseMap};
@@ -47,26 +46,9 @@ pub enum ExportError {
     },
 }
 
-/// Writes `contents` to `path` through a temporary file in the same directory and a rename.
+/// Writes `contents` to `path` with [`gmap_core::io::write_atomic`] (never a partial file).
 pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ExportError> {
-    let io = |source| ExportError::Io { path: path.to_path_buf(), source };
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(contents)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(io(e));
-    }
-    Ok(())
+    gmap_core::io::write_atomic(path, contents).map_err(|source| ExportError::Io { path: path.to_path_buf(), source })
 }
 
 /// The OFF text of a 2-map with points: one vertex per 0-cell (numbered by its smallest
