@@ -2,6 +2,8 @@
 
 use thiserror::Error;
 
+use crate::dense::Dart;
+
 /// A violation of BO Def. 1 (the G-map axioms), as found by `validate`.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum ValidityError {
@@ -9,11 +11,11 @@ pub enum ValidityError {
     #[error("dart {dart}: alpha_{alpha} = {target} is out of range (the map has {darts} darts)")]
     OutOfRange {
         /// the dart whose link is wrong
-        dart: u32,
+        dart: Dart,
         /// the involution index
         alpha: usize,
         /// the value found
-        target: u32,
+        target: Dart,
         /// the number of darts
         darts: usize,
     },
@@ -21,25 +23,25 @@ pub enum ValidityError {
     #[error("alpha_{alpha} is not an involution: alpha_{alpha}({dart}) = {image} but alpha_{alpha}({image}) = {back}")]
     NotInvolution {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the involution index
         alpha: usize,
         /// `alpha_i(dart)`
-        image: u32,
+        image: Dart,
         /// `alpha_i(image)`, which should be `dart`
-        back: u32,
+        back: Dart,
     },
     /// `alpha_i alpha_j` is not an involution for some `j >= i + 2`.
     #[error("alpha_{i} alpha_{j} is not an involution at dart {dart}: (alpha_{i} alpha_{j})^2({dart}) = {image}")]
     NotCommuting {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the lower index
         i: usize,
         /// the higher index (`j >= i + 2`)
         j: usize,
         /// where the square of the composition sends `dart`
-        image: u32,
+        image: Dart,
     },
     /// A dimension larger than [`crate::MAX_DIM`].
     #[error("dimension {0} is larger than the supported maximum {max}", max = crate::MAX_DIM)]
@@ -56,7 +58,7 @@ pub enum BoundaryDefect {
     #[error("dart {dart} is {alpha}-free (a fixed point of alpha_{alpha}, and {alpha} < n)")]
     Free {
         /// the free dart
-        dart: u32,
+        dart: Dart,
         /// the involution
         alpha: usize,
     },
@@ -64,11 +66,11 @@ pub enum BoundaryDefect {
     #[error("self-bending at dart {dart}: its <alpha_{}..alpha_n> and <alpha_0..alpha_{}> orbits share dart {other}", .i + 1, .i - 1)]
     SelfBending {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the dimension `i` at which the orbits meet
         i: usize,
         /// another dart in both orbits
-        other: u32,
+        other: Dart,
     },
 }
 
@@ -77,14 +79,14 @@ pub enum BoundaryDefect {
 #[error("not orientable: dart {dart} and alpha_{alpha}({dart}) = {other} fall in the same class")]
 pub struct OrientationConflict {
     /// a dart where the 2-colouring fails
-    pub dart: u32,
+    pub dart: Dart,
     /// the involution along which it fails
     pub alpha: usize,
     /// the neighbour with the same colour
-    pub other: u32,
+    pub other: Dart,
 }
 
-/// Why a cell is not orientable as a compacted cell (condition C1 of DESIGN.md).
+/// Why a cell is not orientable as a compacted cell (condition C1: every cell orientable as a compacted cell, docs/DESIGN.md).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum CellDefect {
     /// A dart of the i-cell is k-free for some `k < i`: the cell's boundary is incomplete.
@@ -93,7 +95,7 @@ pub enum CellDefect {
         /// dimension of the cell
         dim: usize,
         /// representative dart
-        dart: u32,
+        dart: Dart,
         /// the involution that has a fixed point
         alpha: usize,
     },
@@ -103,10 +105,10 @@ pub enum CellDefect {
         /// dimension of the cell
         dim: usize,
         /// representative dart of the cell
-        dart: u32,
+        dart: Dart,
         /// the involution along which the colouring fails
         alpha: usize,
         /// the dart where it fails
-        at: u32,
+        at: Dart,
     },
 }

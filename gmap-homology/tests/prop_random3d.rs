@@ -242,14 +242,14 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
     match e {
         PreconditionError::C1(CellDefect::IncompleteBoundary { dim, dart, alpha }) => {
             prop_assert!(alpha < dim, "{e}");
-            let cell = m.orbit(Dart(*dart), AlphaSet::cell(*dim, m.dim()));
+            let cell = m.orbit(*dart, AlphaSet::cell(*dim, m.dim()));
             prop_assert!(cell.iter().any(|&x| m.is_free(x, *alpha)), "no {alpha}-free dart in the cell named: {e}");
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("free"));
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("free"));
+            Ok((*dim, dart.0))
         }
         PreconditionError::C1(CellDefect::NotOrientable { dim, dart, .. }) => {
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("conflict"), "{}", e);
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("conflict"), "{}", e);
+            Ok((*dim, dart.0))
         }
         PreconditionError::C2 { dim, dart, .. } => {
             prop_assert!(*dim >= 3, "{e}");

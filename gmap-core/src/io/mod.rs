@@ -476,7 +476,7 @@ fn validity_to_read_error(
     let dart = match &e {
         ValidityError::OutOfRange { dart, .. }
         | ValidityError::NotInvolution { dart, .. }
-        | ValidityError::NotCommuting { dart, .. } => Some(*dart as usize),
+        | ValidityError::NotCommuting { dart, .. } => Some(dart.index()),
         ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) => None,
     };
     let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));

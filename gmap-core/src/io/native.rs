@@ -21,7 +21,7 @@ use super::{
     ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::alpha::MAX_DIM;
-use crate::dense::DenseMap;
+use crate::dense::{Dart, DenseMap};
 
 const HEADER: &str = "gmap <n> <number of darts>";
 
@@ -115,9 +115,9 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
                 Num::Value(v) if v < darts => alpha.push(v as u32),
                 Num::Value(v) => {
                     let e = crate::ValidityError::OutOfRange {
-                        dart: d as u32,
+                        dart: Dart(d as u32),
                         alpha: i,
-                        target: u32::try_from(v).unwrap_or(u32::MAX),
+                        target: Dart(u32::try_from(v).unwrap_or(u32::MAX)),
                         darts: darts as usize,
                     };
                     return Err(err(s.line, ReadErrorKind::Invalid(e)));
