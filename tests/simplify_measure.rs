@@ -2,7 +2,7 @@
 //! -- --ignored --nocapture` prints darts and cells before and after, the ratio, the time and
 //! whether the reduced map gives the homology stated in the file.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use gmap_homology::{cellular_complex, homology_z};
@@ -11,7 +11,7 @@ use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
 fn lutz(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz")).join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
 }
 
 #[test]
