@@ -528,7 +528,7 @@ impl DenseMap {
         self.check_complete_boundaries().is_ok()
     }
 
-    /// Orients every i-cell as a compacted cell (condition C1 of DESIGN.md): a bit per dart,
+    /// Orients every i-cell as a compacted cell (condition C1, docs/DESIGN.md): a bit per dart,
     /// set for the positive class, such that `alpha_k` flips the class for `k < i` and
     /// `alpha_j` keeps it for `j > i`; the smallest dart of each i-cell is positive.
     /// Fails, naming the cell, where a dart is k-free for some `k < i` or the colouring

@@ -86,7 +86,7 @@ pub struct OrientationConflict {
     pub other: Dart,
 }
 
-/// Why a cell is not orientable as a compacted cell (condition C1: every cell orientable as a compacted cell, docs/DESIGN.md).
+/// Why a cell is not orientable as a compacted cell (condition C1 of docs/DESIGN.md).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum CellDefect {
     /// A dart of the i-cell is k-free for some `k < i`: the cell's boundary is incomplete.

@@ -1,4 +1,4 @@
-//! Moka's ascii format `.moka` (CONTRACT §2).
+//! Moka's ascii format `.moka` (docs/FORMATS.md §2).
 //!
 //! ```text
 //! Moka file [ascii]

@@ -1,4 +1,4 @@
-//! The native `.gmap` format (CONTRACT §2).
+//! The native `.gmap` format (docs/FORMATS.md §2).
 //!
 //! ```text
 //! # comment lines start with '#'
@@ -25,7 +25,7 @@ use crate::dense::{Dart, DenseMap};
 
 const HEADER: &str = "gmap <n> <number of darts>";
 
-/// Reads a `.gmap` file (CONTRACT §2) and validates it (BO Def. 1).
+/// Reads a `.gmap` file (docs/FORMATS.md §2) and validates it (BO Def. 1).
 ///
 /// Errors name the file and line: see [`super::ReadError`].
 pub fn read_gmap(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
