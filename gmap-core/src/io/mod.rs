@@ -477,7 +477,7 @@ fn validity_to_read_error(
         ValidityError::OutOfRange { dart, .. }
         | ValidityError::NotInvolution { dart, .. }
         | ValidityError::NotCommuting { dart, .. } => Some(dart.index()),
-        ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) => None,
+        ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) | ValidityError::RaggedRows { .. } => None,
     };
     let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));
     ReadError::new(file, line, ReadErrorKind::Invalid(e))
