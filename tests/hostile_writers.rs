@@ -88,7 +88,8 @@ fn off_export_reads_back_as_the_same_map_or_is_refused() {
     let mut maps: Vec<(String, DenseMap)> = (1..=6).map(|k| (format!("{k}-gon"), build::polygon(k).unwrap())).collect();
     maps.push(("square".into(), build::cube(2).unwrap()));
     maps.push(("prism side".into(), build::extrude(&build::cube(1).unwrap()).unwrap()));
-    for (sizes, periodic) in [([2, 3], [false, false]), ([3, 3], [true, false]), ([3, 3], [true, true]), ([1, 1], [true, true])]
+    for (sizes, periodic) in
+        [([2, 3], [false, false]), ([3, 3], [true, false]), ([3, 3], [true, true]), ([1, 1], [true, true])]
     {
         maps.push((format!("grid {sizes:?} {periodic:?}"), with_points(build::grid(&sizes, &periodic).unwrap())));
     }
@@ -101,7 +102,8 @@ fn off_export_reads_back_as_the_same_map_or_is_refused() {
     for (name, m) in &maps {
         match off_string(m) {
             Ok(text) => {
-                let back = PolygonMesh::parse(&text).and_then(|x| x.to_gmap()).unwrap_or_else(|e| panic!("{name}: {e}"));
+                let back =
+                    PolygonMesh::parse(&text).and_then(|x| x.to_gmap()).unwrap_or_else(|e| panic!("{name}: {e}"));
                 assert!(iso::are_isomorphic(m, &back), "{name}");
                 written += 1;
             }

@@ -172,7 +172,8 @@ impl DenseMap {
         Self::try_new(dim, darts).expect("DenseMap::new")
     }
 
-    /// A map of `darts` free darts, or an error for a dimension or size out of range.
+    /// A map of `darts` free darts, or an error for a dimension or size out of range, or for
+    /// memory that cannot be had (reserved fallibly: an error, not an abort).
     pub fn try_new(dim: usize, darts: usize) -> Result<Self, ValidityError> {
         if dim > MAX_DIM {
             return Err(ValidityError::DimensionTooLarge(dim));
@@ -181,9 +182,10 @@ impl DenseMap {
             return Err(ValidityError::TooManyDarts(darts));
         }
         let w = dim + 1;
-        let mut alpha = vec![0u32; w * darts];
+        let mut alpha = Vec::new();
+        alpha.try_reserve_exact(w * darts).map_err(|_| ValidityError::OutOfMemory { darts })?;
         for d in 0..darts {
-            alpha[d * w..(d + 1) * w].fill(d as u32);
+            alpha.extend(std::iter::repeat_n(d as u32, w));
         }
         Ok(DenseMap { dim, alpha, points: Vec::new() })
     }

@@ -51,6 +51,12 @@ pub enum ValidityError {
     /// More darts than a `u32` index can name.
     #[error("{0} darts is more than the supported maximum of 2^32 - 1")]
     TooManyDarts(usize),
+    /// The memory for the darts cannot be had.
+    #[error("{darts} darts need more memory than can be had")]
+    OutOfMemory {
+        /// the number of darts asked for
+        darts: usize,
+    },
     /// A flat involution array whose length is not a multiple of `dim + 1`.
     #[error("a flat array of {len} entries does not hold whole rows of {width} entries (dimension {})", .width - 1)]
     RaggedRows {

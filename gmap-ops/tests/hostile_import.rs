@@ -98,7 +98,8 @@ fn facets_one_big_facet_is_refused_before_allocating() {
 fn long_tokens_are_quoted_short() {
     let long = "x".repeat(1 << 20);
     let dir = tempfile::tempdir().unwrap();
-    let cases: Vec<(PathBuf, Box<dyn Fn(&Path) -> String>)> = vec![
+    type Read = Box<dyn Fn(&Path) -> String>;
+    let cases: Vec<(PathBuf, Read)> = vec![
         (
             file(&dir, "a.off", format!("OFF\n3 1 0\n0 0 {long}\n").as_bytes()),
             Box::new(|p| read_off(p).unwrap_err().to_string()),

@@ -62,7 +62,9 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
         "json" if is_lar(output) => write_text(output, &Lar::from_map(m).to_json()?)?,
         "json" => write_text(output, &write_json(&complex_of(m, output)?))?,
         "dot" => write_text(output, &write_dot(&complex_of(m, output)?))?,
-        other => bail!("{}: unsupported output format '.{other}'", output.display()),
+        other => {
+            bail!("{}: unsupported output format '.{}'", output.display(), gmap_core::io::shorten(other.as_bytes(), 40))
+        }
     }
     Ok(())
 }

@@ -51,7 +51,9 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
         }
         "off" => Ok(Loaded::Map(gmap_ops::import::read_off_with(path, max_darts)?)),
         "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
-        other => bail!("{}: unsupported input format '.{other}'", path.display()),
+        other => {
+            bail!("{}: unsupported input format '.{}'", path.display(), gmap_core::io::shorten(other.as_bytes(), 40))
+        }
     }
 }
 

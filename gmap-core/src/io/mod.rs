@@ -118,8 +118,8 @@ pub enum ReadErrorKind {
         /// the count as written
         found: String,
     },
-    /// The file is larger than the memory that can be had for it.
-    #[error("the file of {bytes} bytes cannot be held in memory")]
+    /// The file, or the map it describes, needs more memory than can be had.
+    #[error("{bytes} bytes cannot be had to hold the file or its map")]
     OutOfMemory {
         /// the size of the file
         bytes: u64,
@@ -543,7 +543,10 @@ fn validity_to_read_error(
         ValidityError::OutOfRange { dart, .. }
         | ValidityError::NotInvolution { dart, .. }
         | ValidityError::NotCommuting { dart, .. } => Some(dart.index()),
-        ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) | ValidityError::RaggedRows { .. } => None,
+        ValidityError::DimensionTooLarge(_)
+        | ValidityError::TooManyDarts(_)
+        | ValidityError::RaggedRows { .. }
+        | ValidityError::OutOfMemory { .. } => None,
     };
     let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));
     ReadError::new(file, line, ReadErrorKind::Invalid(e))

@@ -123,7 +123,10 @@ pub fn parse_moka_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     let data_line = s.line;
     let w = MOKA_DIM + 1;
     let limit = opts.max_darts.unwrap_or(u64::MAX);
-    let mut alpha: Vec<u32> = Vec::with_capacity(bytes.len() / 24 * w);
+    let mut alpha: Vec<u32> = Vec::new();
+    if alpha.try_reserve_exact(bytes.len() / 24 * w).is_err() {
+        return Err(err(data_line, ReadErrorKind::OutOfMemory { bytes: (bytes.len() / 24 * w * 4) as u64 }));
+    }
     let mut points: Vec<(u32, Point)> = Vec::new();
     let mut d: u64 = 0;
     loop {

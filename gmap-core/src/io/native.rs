@@ -127,7 +127,11 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     let data_start = s.pos;
     let data_line = s.line;
     // every value takes at least two bytes: never reserve more than the file can fill
-    let mut alpha: Vec<u32> = Vec::with_capacity(total.min(bytes.len() / 2 + w));
+    let mut alpha: Vec<u32> = Vec::new();
+    let reserve = total.min(bytes.len() / 2 + w);
+    if alpha.try_reserve_exact(reserve).is_err() {
+        return Err(err(header_line, ReadErrorKind::OutOfMemory { bytes: reserve as u64 * 4 }));
+    }
     for d in 0..darts {
         // fast path: a line of exactly `w` in-range values separated by single spaces
         if let Some(end) = fast_line(bytes, s.pos, w, darts, &mut alpha) {

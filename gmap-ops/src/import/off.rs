@@ -149,7 +149,10 @@ impl PolygonMesh {
         if total == 0 {
             return Err(ImportError::Empty);
         }
-        let mut m = DenseMap::try_new(2, total).map_err(|e| ImportError::Syntax { line: 0, message: e.to_string() })?;
+        let mut m = DenseMap::try_new(2, total).map_err(|_| ImportError::OutOfMemory {
+            what: format!("a map of {total} darts"),
+            bytes: total as u64 * 12,
+        })?;
         for (f, p) in self.polygons.iter().enumerate() {
             let k = p.len();
             let o = offsets[f];

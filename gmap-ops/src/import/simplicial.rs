@@ -151,7 +151,7 @@ impl SimplicialComplex {
             }
         }
         match name {
-            Some(n) => Err(ImportError::NoSuchName(n.to_string())),
+            Some(n) => Err(ImportError::NoSuchName(shorten(n.as_bytes(), 80))),
             None => Err(ImportError::Empty),
         }
     }
