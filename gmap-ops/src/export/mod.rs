@@ -178,38 +178,38 @@ pub fn write_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
 
 /// The largest dimension [`barycentric_facets_string`] handles: its check visits the
 /// `2^(n+1)` faces of a flag, and a read-back of an n-simplex takes `(n + 1)!` darts.
-pub const MAX_FACETS_DIM: usize = 10;
+pub const MAX_FACETS_DIM: usize = 8;
 
-/// The faces of the simplices of the barycentric subdivision, one partition per nonempty
-/// subset `S` of `0..=n` (bit `i` for the i-cell): the face of dart `d`'s simplex spanned by
-/// its vertices in `S` is the orbit of `d` under the involutions not in `S`.
-fn faces(map: &DenseMap) -> Vec<Partition> {
+/// The faces of the simplices of the barycentric subdivision spanned by the vertices of the
+/// dimensions in `s` (bit `i` for the i-cell; `s` nonempty): the face of dart `d`'s simplex
+/// is the orbit of `d` under the involutions not in `s`.
+fn faces_of(map: &DenseMap, s: usize) -> Partition {
     let n = map.dim();
-    let all = (1u32 << (n + 1)) - 1;
-    (0..=all)
-        .map(|s| {
-            if s == 0 {
-                Partition { of: Vec::new(), reps: Vec::new() }
-            } else {
-                map.partition(AlphaSet::of(&(0..=n).filter(|&i| s & (1 << i) == 0).collect::<Vec<_>>()))
-            }
-        })
-        .collect()
+    map.partition(AlphaSet::of(&(0..=n).filter(|&i| s & (1 << i) == 0).collect::<Vec<_>>()))
+}
+
+/// [`faces_of`] for every subset, indexed by subset (entry 0 empty).
+fn faces(map: &DenseMap) -> Vec<Partition> {
+    let all = (1usize << (map.dim() + 1)) - 1;
+    (0..=all).map(|s| if s == 0 { Partition { of: Vec::new(), reps: Vec::new() } } else { faces_of(map, s) }).collect()
 }
 
 /// Whether the barycentric subdivision (one simplex per dart, vertex i of dart `d` its
 /// i-cell) is a simplicial complex: every face, of every dimension, is the only one with its
 /// vertex labels. Fails on maps whose cells are not embedded (a loop edge, a monogon, a torus
 /// of one square, a lens space): two darts or two faces with the same cells.
-fn first_subdivision_is_simplicial(map: &DenseMap, faces: &[Partition]) -> bool {
+/// The faces are computed one subset at a time (the cells are `cells[i]`), so the check takes
+/// O(N) memory whatever the dimension.
+fn first_subdivision_is_simplicial(map: &DenseMap, cells: &[Partition]) -> bool {
     let n = map.dim();
-    for (s, part) in faces.iter().enumerate().skip(1) {
+    for s in 1..(1usize << (n + 1)) {
         let dims: Vec<usize> = (0..=n).filter(|&i| s & (1 << i) != 0).collect();
         if dims.len() == 1 {
             continue;
         }
+        let part = faces_of(map, s);
         let mut keys: Vec<Vec<u32>> =
-            part.reps.iter().map(|&d| dims.iter().map(|&i| faces[1 << i].of[d.index()]).collect()).collect();
+            part.reps.iter().map(|&d| dims.iter().map(|&i| cells[i].of[d.index()]).collect()).collect();
         keys.sort_unstable();
         if keys.windows(2).any(|w| w[0] == w[1]) {
             return false;
@@ -244,11 +244,11 @@ pub fn barycentric_facets_string(map: &DenseMap) -> Result<String, ExportError> 
     if map.is_empty() {
         return Err(ExportError::Empty);
     }
-    let faces = faces(map);
-    if first_subdivision_is_simplicial(map, &faces) {
+    let cells: Vec<Partition> = (0..=n).map(|i| faces_of(map, 1 << i)).collect();
+    if first_subdivision_is_simplicial(map, &cells) {
         let mut offsets = vec![0u64; n + 1];
         for i in 1..=n {
-            offsets[i] = offsets[i - 1] + faces[1 << (i - 1)].len() as u64;
+            offsets[i] = offsets[i - 1] + cells[i - 1].len() as u64;
         }
         let mut out = String::with_capacity(map.dart_count() * (n + 1) * 6);
         let _ = writeln!(
@@ -260,13 +260,15 @@ pub fn barycentric_facets_string(map: &DenseMap) -> Result<String, ExportError> 
                 if i > 0 {
                     out.push(' ');
                 }
-                let _ = write!(out, "{}", offsets[i] + faces[1 << i].of[d] as u64);
+                let _ = write!(out, "{}", offsets[i] + cells[i].of[d] as u64);
             }
             out.push('\n');
         }
         return Ok(out);
     }
     // the second subdivision: vertices are the faces (subset s, orbit), numbered by subset
+    drop(cells);
+    let faces = faces(map);
     let mut offsets = vec![0u64; faces.len()];
     for s in 1..faces.len() {
         offsets[s] = offsets[s - 1] + faces[s - 1].len() as u64;
