@@ -35,3 +35,4 @@ pub mod export;
 pub mod import;
 pub mod iso;
 mod perm;
+pub mod rng;

@@ -115,9 +115,12 @@
 //! such grids slower, not faster; its use is the small map itself (and inputs whose direct
 //! homology is expensive).
 
+use gmap_core::parallel;
+use gmap_core::union_find::UnionFind;
 use gmap_core::{DartId, DenseMap, GMap};
 
 use crate::euler::ops;
+use crate::rng::SplitMix64;
 
 const NONE: u32 = u32::MAX;
 
@@ -155,51 +158,6 @@ impl SimplifyReport {
             self.darts_after as f64 / self.darts_before as f64
         }
     }
-}
-
-#[derive(Clone)]
-struct UnionFind(Vec<u32>);
-
-impl UnionFind {
-    #[inline]
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let p = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = p;
-            x = p;
-        }
-        x
-    }
-}
-
-/// Cell numbers of every dart for the cells of dimension `k` (orbits of all involutions
-/// but `alpha_k`), and how many there are.
-fn labels(a: &[u32], n: usize, k: usize) -> (Vec<u32>, usize) {
-    let w = n + 1;
-    let nd = a.len() / w;
-    let idx: Vec<usize> = (0..=n).filter(|&j| j != k).collect();
-    let mut lab = vec![NONE; nd];
-    let mut count = 0u32;
-    let mut stack: Vec<u32> = Vec::new();
-    for d in 0..nd {
-        if lab[d] != NONE {
-            continue;
-        }
-        lab[d] = count;
-        stack.push(d as u32);
-        while let Some(x) = stack.pop() {
-            let row = &a[x as usize * w..x as usize * w + w];
-            for &j in &idx {
-                let y = row[j];
-                if lab[y as usize] == NONE {
-                    lab[y as usize] = count;
-                    stack.push(y);
-                }
-            }
-        }
-        count += 1;
-    }
-    (lab, count as usize)
 }
 
 #[derive(Clone)]
@@ -255,28 +213,10 @@ impl Work {
         let n = map.dim();
         let a = map.flat().to_vec();
         let nd = map.dart_count();
-        // the n + 1 partitions, shared between two threads
-        let mut parts: Vec<(Vec<u32>, usize)> = if nd >= 1 << 16 {
-            std::thread::scope(|s| {
-                let a = &a;
-                // vertices (the widest orbits) with the n-cells (the most compact ones)
-                let first = |k: usize| k == 0 || k == n || (k.is_multiple_of(2) && k + 2 <= n);
-                let other =
-                    s.spawn(move || (0..=n).filter(|&k| !first(k)).map(|k| labels(a, n, k)).collect::<Vec<_>>());
-                let mine: Vec<_> = (0..=n).filter(|&k| first(k)).map(|k| labels(a, n, k)).collect();
-                let other = other.join().expect("labelling thread");
-                let mut all = Vec::with_capacity(n + 1);
-                let (mut e, mut o) = (mine.into_iter(), other.into_iter());
-                for k in 0..=n {
-                    all.push(if first(k) { e.next() } else { o.next() }.expect("one partition per k"));
-                }
-                all
-            })
-        } else {
-            (0..=n).map(|k| labels(&a, n, k)).collect()
-        };
-        let counts: Vec<usize> = parts.iter().map(|p| p.1).collect();
-        let label: Vec<Vec<u32>> = parts.drain(..).map(|p| p.0).collect();
+        // the n + 1 cell partitions, one task each
+        let parts = parallel::map_tasks(n + 1, nd, |k| map.cells(k));
+        let counts: Vec<usize> = parts.iter().map(|p| p.len()).collect();
+        let label: Vec<Vec<u32>> = parts.into_iter().map(|p| p.of).collect();
         let mut free: Vec<Vec<bool>> = counts.iter().map(|&c| vec![false; c]).collect();
         let w = n + 1;
         let top_free_only = n >= 2 && (0..nd).all(|d| (0..n).all(|j| a[d * w + j] as usize != d));
@@ -293,7 +233,7 @@ impl Work {
             a,
             alive: vec![true; nd],
             label,
-            uf: counts.iter().map(|&c| UnionFind((0..c as u32).collect())).collect(),
+            uf: counts.iter().map(|&c| UnionFind::new(c)).collect(),
             free,
             top_free_only,
             exam: counts.iter().map(|&c| vec![0; c]).collect(),
@@ -574,10 +514,12 @@ impl Work {
                 }
             }
         }
-        let (r0, r1) = (roots[0], roots[1]);
-        self.uf[nb].0[r0 as usize] = r1;
-        let f = self.free[nb][r0 as usize] || self.free[nb][r1 as usize];
-        self.free[nb][r1 as usize] = f;
+        // the merged cell holds a free dart if either did, and counts as examined in the
+        // current scan if the cell across alpha_nb (root r1) did
+        let (r0, r1) = (roots[0] as usize, roots[1] as usize);
+        let r = self.uf[nb].link_roots(roots[0], roots[1]) as usize;
+        self.free[nb][r] = self.free[nb][r0] || self.free[nb][r1];
+        self.exam[nb][r] = self.exam[nb][r1];
         self.moves += 1;
     }
 
@@ -696,17 +638,12 @@ fn closes_cycle(joins: &[(u32, u32)]) -> bool {
     let mut ids: Vec<u32> = joins.iter().flat_map(|&(a, b)| [a, b]).collect();
     ids.sort_unstable();
     ids.dedup();
-    let mut uf = UnionFind((0..ids.len() as u32).collect());
-    for &(a, b) in joins {
+    let mut uf = UnionFind::new(ids.len());
+    joins.iter().any(|&(a, b)| {
         let ia = ids.binary_search(&a).expect("listed") as u32;
         let ib = ids.binary_search(&b).expect("listed") as u32;
-        let (ra, rb) = (uf.find(ia), uf.find(ib));
-        if ra == rb {
-            return true;
-        }
-        uf.0[ra as usize] = rb;
-    }
-    false
+        !uf.union(ia, ib)
+    })
 }
 
 /// How [`simplify_with`] searches.
@@ -749,19 +686,6 @@ impl SimplifyOptions {
     }
 }
 
-/// SplitMix64: a small, seeded, deterministic generator for the random orders.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-}
-
 /// Reduces `map` by removals and contractions of cells (see the module documentation) and
 /// returns the reduced map with a report. The reduced map has the same homology as `map`
 /// whenever the cells of `map` are homology balls (C1, C2 of DESIGN.md), and its cells are
@@ -799,7 +723,7 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
     let tries = options.tries.max(1);
     let removals: Vec<(usize, bool)> = (0..n).rev().map(|i| (i, true)).collect();
     let contractions: Vec<(usize, bool)> = (1..=n).map(|i| (i, false)).collect();
-    let mut rng = SplitMix(options.seed);
+    let mut rng = SplitMix64::new(options.seed);
     let mut best: Option<(Work, usize)> = None;
     for t in 0..tries {
         let steps: Vec<(usize, bool)> = if t % 2 == 0 {
@@ -809,10 +733,7 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
         };
         let mut order: Vec<u32> = (0..nd as u32).collect();
         if t >= 4 {
-            for k in (1..nd).rev() {
-                let j = (rng.next() % (k as u64 + 1)) as usize;
-                order.swap(k, j);
-            }
+            rng.shuffle(&mut order);
         }
         let mut work =
             if t + 1 == tries { base.take().expect("kept for the last run") } else { base.clone().expect("kept") };
@@ -855,7 +776,7 @@ fn cells_are_balls(map: &DenseMap) -> bool {
 
 /// Splits up to `count` random cells of `g` (faces across volumes with seven chances in
 /// ten, else edges across faces), trying at most 400 random placements; the number made.
-fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix) -> usize {
+fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix64) -> usize {
     let mut made = 0;
     let mut darts: Vec<DartId> = g.darts().collect();
     for _ in 0..400 {
@@ -866,10 +787,10 @@ fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix) -> usize {
             darts = g.darts().collect();
         }
         let darts = &darts;
-        let pick = |rng: &mut SplitMix| darts[(rng.next() % darts.len() as u64) as usize];
-        if rng.next() % 10 < 7 {
+        let pick = |rng: &mut SplitMix64| darts[rng.below(darts.len())];
+        if rng.below(10) < 7 {
             // a face across a volume along the closed path of one to three edge sides
-            let k = 1 + (rng.next() % 3) as usize;
+            let k = 1 + rng.below(3);
             let seeds: Vec<DartId> = (0..k).map(|_| pick(rng)).collect();
             if ops::split_cell_quietly(g, &seeds, 3) {
                 made += 1;
@@ -888,7 +809,7 @@ fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix) -> usize {
                 }
                 ring.push(x);
             }
-            let d2 = ring[(rng.next() % ring.len() as u64) as usize];
+            let d2 = ring[rng.below(ring.len())];
             if ops::insert_edge_quietly(g, d1, d2) {
                 made += 1;
             }
@@ -912,7 +833,7 @@ const SEARCH_MAX_DARTS: usize = 1 << 10;
 /// that find their way down usually do so within a few hundred rounds, and one that does
 /// not sits on a plateau that more random splits rarely leave. Splits grow with the map:
 /// up to a third of its darts' count, between 3 and 40.
-fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix) -> (DenseMap, usize) {
+fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix64) -> (DenseMap, usize) {
     if map.dim() != 3
         || options.search == 0
         || map.dart_count() == 0
@@ -934,7 +855,7 @@ fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix) -> (Dens
             since += 1;
             let (mut g, _) = GMap::from_dense(&cur);
             let most = (cur.dart_count() / 3).clamp(3, 40);
-            let kicks = 1 + (rng.next() % most as u64) as usize;
+            let kicks = 1 + rng.below(most);
             if split_random_cells(&mut g, kicks, rng) == 0 {
                 continue;
             }
@@ -943,7 +864,7 @@ fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix) -> (Dens
             if !cells_are_balls(&split) {
                 continue;
             }
-            let (small, _) = simplify_with(&split, &SimplifyOptions { seed: rng.next(), ..inner });
+            let (small, _) = simplify_with(&split, &SimplifyOptions { seed: rng.next_u64(), ..inner });
             if small.dart_count() <= cur.dart_count() && cells_are_balls(&small) {
                 if small.dart_count() < cur.dart_count() {
                     since = 0;
