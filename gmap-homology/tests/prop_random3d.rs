@@ -41,6 +41,7 @@ use gmap_homology::{
 };
 use gmap_ops::build;
 use gmap_ops::euler::ops;
+use gmap_ops::euler::random::{random_steps, Operator};
 use gmap_ops::import::SimplicialComplex;
 use gmap_ops::rng::SplitMix64;
 use proptest::prelude::*;
@@ -482,39 +483,15 @@ fn random_gluings_of_4_simplices() {
 // ---------------------------------------------------------------------------------------
 // family (c): Euler operators on classic objects
 
-/// Random Euler operators (split an edge, split a face, a dangling edge, remove or
-/// contract a cell) tried at random darts; each applied only when its predicate allows.
-/// Returns the names of the operators applied.
-fn random_euler_ops(g: &mut GMap, steps: usize, rng: &mut SplitMix64) -> Vec<String> {
-    let n = g.dim();
-    let mut applied = Vec::new();
-    for _ in 0..steps {
-        let darts: Vec<_> = g.darts().collect();
-        let d = darts[rng.below(darts.len())];
-        // each predicate is asserted to agree with its `try_` form
-        let op = match rng.below(6) {
-            0 => ops::can_insert_vertex(g, d).then(|| ops::try_insert_vertex(g, d)),
-            1 => {
-                let face = g.orbit(d, AlphaSet::of(&[0, 1]));
-                let d2 = face[rng.below(face.len())];
-                ops::can_insert_edge(g, d, d2).then(|| ops::try_insert_edge(g, d, d2))
-            }
-            2 => ops::can_insert_dangling_edge(g, d).then(|| ops::try_insert_dangling_edge(g, d)),
-            3 | 4 => {
-                let i = rng.below(n);
-                ops::is_removable(g, d, i).then(|| ops::try_remove_cell(g, d, i))
-            }
-            _ => {
-                let i = 1 + rng.below(n);
-                ops::is_contractible(g, d, i).then(|| ops::try_contract_cell(g, d, i))
-            }
-        };
-        if let Some(op) = op {
-            applied.push(op.expect("the predicate allowed it").name);
-        }
-    }
-    applied
-}
+/// The operators of the classic-object family, removals drawn twice as often as the others.
+const CLASSIC_OPERATORS: [Operator; 6] = [
+    Operator::InsertVertex,
+    Operator::InsertEdge,
+    Operator::InsertDanglingEdge,
+    Operator::RemoveCell,
+    Operator::RemoveCell,
+    Operator::ContractCell,
+];
 
 /// A classic closed or bounded object and its integer homology.
 fn classic(kind: usize, a: usize, b: usize, c: usize) -> (DenseMap, String, &'static str) {
@@ -555,7 +532,7 @@ fn euler_operators_on_classic_objects_keep_the_groups() {
         }
         let (mut g, _) = GMap::from_dense(&base);
         let mut rng = SplitMix64::new(seed);
-        let applied = random_euler_ops(&mut g, steps, &mut rng);
+        let applied = random_steps(&mut g, steps, &CLASSIC_OPERATORS, &mut rng);
         let (m, _) = g.to_dense();
         match judge(&m)? {
             Verdict::Accepted(h) => {
@@ -594,21 +571,7 @@ fn coned_surface(orientable: bool, g: usize, steps: usize, rng: &mut SplitMix64)
     let word = if orientable { build::orientable_surface_word(g) } else { build::nonorientable_surface_word(g) };
     let s = build::schema(&word).unwrap();
     let (mut gm, _) = GMap::from_dense(&s);
-    for _ in 0..steps {
-        let darts: Vec<_> = gm.darts().collect();
-        let d = darts[rng.below(darts.len())];
-        if rng.below(2) == 0 {
-            if ops::can_insert_vertex(&gm, d) {
-                ops::try_insert_vertex(&mut gm, d).unwrap();
-            }
-        } else {
-            let face = gm.orbit(d, AlphaSet::of(&[0, 1]));
-            let d2 = face[rng.below(face.len())];
-            if ops::can_insert_edge(&gm, d, d2) {
-                ops::try_insert_edge(&mut gm, d, d2).unwrap();
-            }
-        }
-    }
+    random_steps(&mut gm, steps, &[Operator::InsertVertex, Operator::InsertEdge], rng);
     gm.to_dense().0.embedded(3).unwrap()
 }
 
