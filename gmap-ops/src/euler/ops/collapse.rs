@@ -10,6 +10,36 @@ use gmap_core::{AlphaSet, DartId, GMap};
 use super::{debug_check, diff, live, local_counts, op_name, EulerError};
 use crate::euler::vector::{EpVector, EulerOp};
 
+/// A removal of an i-cell, which merges the two (i+1)-cells on its sides, or a contraction,
+/// which merges the two (i-1)-cells at its ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Move {
+    /// remove the cell
+    Remove,
+    /// contract the cell
+    Contract,
+}
+
+impl Move {
+    /// The dimension of the cells that an i-cell's move merges, `i + 1` or `i - 1`: the
+    /// only involution of the cell's darts that leaves those cells.
+    pub(crate) fn neighbour(self, i: usize) -> usize {
+        match self {
+            Move::Remove => i + 1,
+            Move::Contract => i - 1,
+        }
+    }
+
+    /// The next dimension beyond, `i + 2` or `i - 2`, if it is one of the n-map: the move
+    /// needs `alpha_nb alpha_next` to be an involution on the cell (degree 2).
+    pub(crate) fn beyond(self, i: usize, n: usize) -> Option<usize> {
+        match self {
+            Move::Remove => (i + 2 <= n).then_some(i + 2),
+            Move::Contract => i.checked_sub(2),
+        }
+    }
+}
+
 /// How a removal or contraction will rewire the map.
 enum Collapse {
     /// the cell separates two distinct cells of the next dimension (or, for contraction,
@@ -19,8 +49,9 @@ enum Collapse {
     Dangling,
 }
 
-/// Shared check of [`is_removable`] (`dir = +1`) and [`is_contractible`] (`dir = -1`).
-fn check_collapse(g: &GMap, d: DartId, i: usize, remove: bool) -> Result<Collapse, EulerError> {
+/// The check of [`is_removable`] and [`is_contractible`].
+fn check_collapse(g: &GMap, d: DartId, i: usize, kind: Move) -> Result<Collapse, EulerError> {
+    let remove = kind == Move::Remove;
     live(g, d)?;
     let n = g.dim();
     let (what, lo, hi) = if remove { ("removal", 0, n.saturating_sub(1)) } else { ("contraction", 1, n) };
@@ -28,9 +59,8 @@ fn check_collapse(g: &GMap, d: DartId, i: usize, remove: bool) -> Result<Collaps
         return Err(EulerError::BadDimension { what, lo, hi, got: i });
     }
     let cell = g.cell(d, i);
-    // the neighbour involution (i+1 or i-1) and the next one (i+2 or i-2)
-    let nb = if remove { i + 1 } else { i - 1 };
-    let nb2 = if remove { (i + 2 <= n).then_some(i + 2) } else { i.checked_sub(2) };
+    let nb = kind.neighbour(i);
+    let nb2 = kind.beyond(i, n);
     if let Some(j) = nb2 {
         for &x in &cell {
             let a = g.alpha(g.alpha(x, nb), j);
@@ -147,12 +177,12 @@ fn check_corners(g: &GMap, cell: &[DartId], i: usize, nb: usize) -> Result<(), E
 
 /// Whether the i-cell of `d` can be removed by [`try_remove_cell`].
 pub fn is_removable(g: &GMap, d: DartId, i: usize) -> bool {
-    check_collapse(g, d, i, true).is_ok()
+    check_collapse(g, d, i, Move::Remove).is_ok()
 }
 
 /// Whether the i-cell of `d` can be contracted by [`try_contract_cell`].
 pub fn is_contractible(g: &GMap, d: DartId, i: usize) -> bool {
-    check_collapse(g, d, i, false).is_ok()
+    check_collapse(g, d, i, Move::Contract).is_ok()
 }
 
 /// Deletes the darts of `cell` after re-linking `alpha_i` around it: a dart `y` outside
@@ -208,7 +238,7 @@ fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
 /// Effect: `-X_i - X_{i+1}` (space unchanged) or `-X_0 - X_1` (a whisker collapsed).
 /// O(size of the cells touched · n).
 pub fn try_remove_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
-    let kind = check_collapse(g, d, i, true)?;
+    let kind = check_collapse(g, d, i, Move::Remove)?;
     let cell = g.cell(d, i);
     let mut touched: Vec<DartId> = cell.clone();
     touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
@@ -241,7 +271,7 @@ pub fn remove_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
 /// Effect `-X_{i-1} - X_i`,
 /// homology unchanged. O(size of the cells touched · n).
 pub fn try_contract_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
-    check_collapse(g, d, i, false)?;
+    check_collapse(g, d, i, Move::Contract)?;
     let cell = g.cell(d, i);
     let mut touched: Vec<DartId> = cell.clone();
     touched.extend(cell.iter().map(|&x| g.alpha(x, i)));

@@ -31,6 +31,7 @@ use gmap_core::{DartId, GMap};
 use super::vector::cell_letter;
 
 pub use close::{can_close, try_close, CloseReport};
+pub(crate) use collapse::Move;
 pub use collapse::{contract_cell, is_contractible, is_removable, remove_cell, try_contract_cell, try_remove_cell};
 pub use error::EulerError;
 pub use split::{

@@ -6,6 +6,7 @@
 use gmap_core::DenseMap;
 
 use super::work::Work;
+use crate::euler::ops::Move;
 use crate::rng::SplitMix64;
 
 /// The smallest result of the greedy runs, and the rounds of scans it took.
@@ -25,11 +26,11 @@ pub(super) fn best_run(map: &DenseMap, tries: usize, rng: &mut SplitMix64) -> (V
     let (base, cells_before) = Work::new(map);
     let mut base = Some(base);
     let tries = tries.max(1);
-    let removals: Vec<(usize, bool)> = (0..n).rev().map(|i| (i, true)).collect();
-    let contractions: Vec<(usize, bool)> = (1..=n).map(|i| (i, false)).collect();
+    let removals: Vec<(usize, Move)> = (0..n).rev().map(|i| (i, Move::Remove)).collect();
+    let contractions: Vec<(usize, Move)> = (1..=n).map(|i| (i, Move::Contract)).collect();
     let mut best: Option<Best> = None;
     for t in 0..tries {
-        let steps: Vec<(usize, bool)> = if t % 2 == 0 {
+        let steps: Vec<(usize, Move)> = if t % 2 == 0 {
             removals.iter().chain(&contractions).copied().collect()
         } else {
             contractions.iter().chain(&removals).copied().collect()
@@ -52,14 +53,14 @@ pub(super) fn best_run(map: &DenseMap, tries: usize, rng: &mut SplitMix64) -> (V
 impl Work {
     /// Runs the work stack dry.
     fn drain(&mut self) {
-        while let Some((k, remove, y)) = self.pending.pop() {
-            self.try_move(k as usize, remove, y);
+        while let Some((k, kind, y)) = self.pending.pop() {
+            self.try_move(k as usize, kind, y);
         }
     }
 
     /// One scan of the i-cells, in the order of `order` (live darts); returns the number of
     /// moves made.
-    fn scan(&mut self, i: usize, remove: bool, order: &[u32], scan_id: u32) -> u32 {
+    fn scan(&mut self, i: usize, kind: Move, order: &[u32], scan_id: u32) -> u32 {
         let before = self.moves;
         for &d in order {
             if !self.alive[d as usize] {
@@ -70,7 +71,7 @@ impl Work {
                 continue;
             }
             self.exam[i][r] = scan_id;
-            if self.try_move(i, remove, d) {
+            if self.try_move(i, kind, d) {
                 self.drain();
             }
         }
@@ -79,15 +80,15 @@ impl Work {
 
     /// Rounds of scans in the given order of moves until one changes nothing; returns the
     /// number of rounds.
-    fn run(&mut self, steps: &[(usize, bool)], mut order: Vec<u32>) -> usize {
+    fn run(&mut self, steps: &[(usize, Move)], mut order: Vec<u32>) -> usize {
         let mut rounds = 0;
         let mut scan_id = 0;
         loop {
             rounds += 1;
             let mut changed = 0;
-            for &(i, rem) in steps {
+            for &(i, kind) in steps {
                 scan_id += 1;
-                changed += self.scan(i, rem, &order, scan_id);
+                changed += self.scan(i, kind, &order, scan_id);
             }
             if changed == 0 {
                 return rounds;

@@ -5,15 +5,17 @@
 use gmap_core::union_find::UnionFind;
 
 use super::work::{bump, Work};
+use crate::euler::ops::Move;
 
 impl Work {
     /// Collects the i-cell of `x0` into `self.cell` (stamped with the returned tag) while
     /// testing the cheap conditions of the move; `None` when one fails. On success the two
     /// neighbour cells (roots in dimension `nb`) are returned.
-    fn gather(&mut self, i: usize, remove: bool, x0: u32) -> Option<(u32, [u32; 2])> {
+    fn gather(&mut self, i: usize, kind: Move, x0: u32) -> Option<(u32, [u32; 2])> {
         let n = self.n;
-        let nb = if remove { i + 1 } else { i - 1 };
-        let nb2 = if remove { (i + 2 <= n).then_some(i + 2) } else { i.checked_sub(2) };
+        let contract = kind == Move::Contract;
+        let nb = kind.neighbour(i);
+        let nb2 = kind.beyond(i, n);
         let tag = bump(&mut self.tag, &mut self.stamp);
         self.cell.clear();
         self.stack.clear();
@@ -29,8 +31,8 @@ impl Work {
         // for an edge on the boundary of a manifold with boundary: the links of its two
         // vertices are disks glued along the edge's link, an arc on both their boundaries,
         // so the merged vertex is one cell again
-        let boundary_edge = !remove && i == 1 && self.top_free_only;
-        let ends_free = !remove && (self.free[nb][roots[0] as usize] || self.free[nb][roots[1] as usize]);
+        let boundary_edge = contract && i == 1 && self.top_free_only;
+        let ends_free = contract && (self.free[nb][roots[0] as usize] || self.free[nb][roots[1] as usize]);
         if ends_free && !boundary_edge {
             return None;
         }
@@ -41,7 +43,7 @@ impl Work {
             if y == x {
                 return None;
             }
-            if !remove {
+            if contract {
                 for j in 0..=n {
                     if self.al(x, j) == x {
                         if boundary_edge && j == n {
@@ -257,31 +259,37 @@ impl Work {
 
     /// Tries to remove (or contract) the i-cell of `x`; on success queues the cells whose
     /// degree the move lowered.
-    pub(super) fn try_move(&mut self, i: usize, remove: bool, x: u32) -> bool {
+    pub(super) fn try_move(&mut self, i: usize, kind: Move, x: u32) -> bool {
         if !self.alive[x as usize] {
             return false;
         }
-        let Some((tag, roots)) = self.gather(i, remove, x) else {
+        let Some((tag, roots)) = self.gather(i, kind, x) else {
             return false;
         };
-        let nb = if remove { i + 1 } else { i - 1 };
+        let nb = kind.neighbour(i);
         if !self.corners_ok(i, nb) {
             return false;
         }
         self.collapse(i, nb, tag, roots);
-        if remove {
-            self.removed[i] += 1;
-        } else {
-            self.contracted[i] += 1;
+        match kind {
+            Move::Remove => self.removed[i] += 1,
+            Move::Contract => self.contracted[i] += 1,
         }
         // removing an i-cell lowers the degree of the (i-1)-cells on its border; contracting
         // one lowers the dual degree of the (i+1)-cells around it
-        let next = if remove { i.checked_sub(1) } else { (i < self.n).then_some(i + 1) };
+        let next = match kind {
+            Move::Remove => i.checked_sub(1),
+            Move::Contract => (i < self.n).then_some(i + 1),
+        };
         // and the merged nb-cell may now separate two distinct cells itself
-        if self.up && ((remove && nb < self.n) || (!remove && nb >= 1)) {
+        let nb_movable = match kind {
+            Move::Remove => nb < self.n,
+            Move::Contract => nb >= 1,
+        };
+        if self.up && nb_movable {
             let y = self.links.first().map(|l| l.0);
             if let Some(y) = y {
-                self.pending.push((nb as u8, remove, y));
+                self.pending.push((nb as u8, kind, y));
             }
         }
         if let Some(k) = next {
@@ -291,7 +299,7 @@ impl Work {
                 let r = self.root(k, y) as usize;
                 if self.queued[k][r] != mv {
                     self.queued[k][r] = mv;
-                    self.pending.push((k as u8, remove, y));
+                    self.pending.push((k as u8, kind, y));
                 }
             }
         }

@@ -7,6 +7,8 @@ use gmap_core::parallel;
 use gmap_core::union_find::UnionFind;
 use gmap_core::DenseMap;
 
+use crate::euler::ops::Move;
+
 /// The working copy of a map under removals and contractions. See the [module docs](self).
 #[derive(Clone)]
 pub(super) struct Work {
@@ -42,8 +44,8 @@ pub(super) struct Work {
     pub(super) stack: Vec<u32>,
     pub(super) links: Vec<(u32, u32)>,
     pub(super) apps: Vec<(u32, u32)>,
-    /// the work stack: cells to examine at once, as (dimension, removal, dart)
-    pub(super) pending: Vec<(u8, bool, u32)>,
+    /// the work stack: cells to examine at once, as (dimension, move, dart)
+    pub(super) pending: Vec<(u8, Move, u32)>,
     /// moves made so far
     pub(super) moves: u32,
     /// also re-examine the merged neighbour cell after a move
