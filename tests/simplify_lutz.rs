@@ -8,8 +8,11 @@ use gmap_homology::{cellular_complex, homology_z};
 use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
+/// A file of the Lutz library: in `GMAP_LUTZ`, else in ../shared/data/lutz beside the checkout.
 fn lutz(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz")).join(name)
+    let dir = std::env::var("GMAP_LUTZ")
+        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz").to_string());
+    PathBuf::from(dir).join(name)
 }
 
 /// The homology in the header, normalised: `(Z,Z_2,0,Z)` → `(Z,Z/2,0,Z)`.
@@ -93,7 +96,7 @@ fn closed_three_manifolds() {
 fn four_manifolds() {
     exact("RP4.facets", &[1, 1, 1, 1, 1], 16);
     exact("CP2.facets", &[3, 3, 3, 1, 1], 80);
-    // K3: 34,560 darts -> 3,656 (10.6 %); see the module docs of `simplify` on why it stalls
+    // K3: 34,560 darts -> 3,656 (10.6 %); docs/SIMPLIFY.md says where and why it stops
     exact("K3_16.facets", &[11, 73, 107, 22, 1], 3656);
 }
 

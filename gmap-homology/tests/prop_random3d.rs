@@ -1,4 +1,4 @@
-//! Property tests on random 3- and 4-dimensional G-maps (issue #4).
+//! Property tests on random 3- and 4-dimensional G-maps.
 //!
 //! The theorem under test (DESIGN.md, "Homology: when the cellular method is right"): where
 //! every cell is orientable as a compacted cell (C1) and bounded by a homology sphere (C2),
@@ -16,7 +16,7 @@
 //! * random gluings: tetrahedra and cubes (4-simplices and 4-cubes) with random facet
 //!   pairings by random rotations and reflections; the pieces are balls, so a refusal must
 //!   name a folded edge or face (C1), and an acceptance must agree;
-//! * random Euler operators (gmap_ops::euler::ops) on the solid torus, the 3-torus,
+//! * random Euler operators (gmap_ops::euler::random) on the solid torus, the 3-torus,
 //!   torus × I, lens spaces L(p, q) with p ≥ 3 and the 4-torus: both methods must give the
 //!   known groups;
 //! * violations: a volume bounded by a closed surface of genus ≥ 1 (C2) or a non-orientable
@@ -964,9 +964,9 @@ fn cells_opened_inside_are_refused() {
 
 /// L(1, 0) (the 3-sphere) and L(2, 1) (projective 3-space) have one edge, a loop whose
 /// vertex is made of its own darts only, with `alpha_2 alpha_3` an involution on it.
-/// `is_removable` once took it for a dangling edge and `try_remove_cell` then deleted every
-/// dart, leaving the empty map. Regression test: a dangling edge now needs a vertex of
-/// degree one (gmap-ops `check_collapse`), and the loop is not removable.
+/// Taken for a dangling edge, its removal would delete every dart and leave the empty map;
+/// a dangling edge needs a vertex of degree one, so the loop is not removable and the
+/// space keeps its homology.
 #[test]
 fn removing_the_loop_edge_of_l1_and_l2_keeps_the_space() {
     for (p, q, want) in [(1, 0, "(Z, 0, 0, Z)"), (2, 1, "(Z, Z/2, 0, Z)")] {
