@@ -219,6 +219,19 @@ fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
     }
 }
 
+/// Applies a checked removal or contraction of the i-cell of `d` ([`collapse`]) and returns
+/// the change of cells, recounted on the cells around it.
+fn collapse_counted(g: &mut GMap, d: DartId, i: usize, kind: Move) -> Vec<i64> {
+    let cell = g.cell(d, i);
+    let mut touched: Vec<DartId> = cell.clone();
+    touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
+    let before = local_counts(g, &touched);
+    collapse(g, &cell, i, kind.neighbour(i));
+    let after = local_counts(g, &touched);
+    debug_check(g);
+    diff(&after, &before)
+}
+
 /// Removes the i-cell of `d`, `i < n`, merging the two (i+1)-cells on its sides (`kve`,
 /// `kef`, `kfs`, …; CGAL's `remove_cell<i>`), or removes a dangling edge with its free end
 /// vertex (`kev`).
@@ -239,18 +252,12 @@ fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
 /// O(size of the cells touched · n).
 pub fn try_remove_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
     let kind = check_collapse(g, d, i, Move::Remove)?;
-    let cell = g.cell(d, i);
-    let mut touched: Vec<DartId> = cell.clone();
-    touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
-    let before = local_counts(g, &touched);
-    collapse(g, &cell, i, i + 1);
-    let after = local_counts(g, &touched);
-    debug_check(g);
+    let dx = collapse_counted(g, d, i, Move::Remove);
     let name = match kind {
         Collapse::Dangling => "kev".to_string(),
         Collapse::Merge => op_name('k', i),
     };
-    Ok(EulerOp::new(name, EpVector::from_cells(&diff(&after, &before))))
+    Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
 }
 
 /// Like [`try_remove_cell`], panicking when the precondition fails.
@@ -272,16 +279,10 @@ pub fn remove_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
 /// homology unchanged. O(size of the cells touched · n).
 pub fn try_contract_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
     check_collapse(g, d, i, Move::Contract)?;
-    let cell = g.cell(d, i);
-    let mut touched: Vec<DartId> = cell.clone();
-    touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
-    let before = local_counts(g, &touched);
-    collapse(g, &cell, i, i - 1);
-    let after = local_counts(g, &touched);
-    debug_check(g);
+    let dx = collapse_counted(g, d, i, Move::Contract);
     // an edge contracted is the classical kev (kill edge and vertex), as its dual removal is kve
     let name = if i == 1 { "kev".to_string() } else { op_name('k', i - 1) };
-    Ok(EulerOp::new(name, EpVector::from_cells(&diff(&after, &before))))
+    Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
 }
 
 /// Like [`try_contract_cell`], panicking when the precondition fails.
