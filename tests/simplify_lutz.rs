@@ -2,17 +2,14 @@
 //! boundary): the reduced map keeps the homology stated in each file's header, its cells
 //! satisfy C1/C2 (the cellular method accepts it), and it is smaller.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use gmap_homology::{cellular_complex, homology_z};
 use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
-/// A file of the Lutz library: in `GMAP_LUTZ`, else in ../shared/data/lutz beside the checkout.
 fn lutz(name: &str) -> PathBuf {
-    let dir = std::env::var("GMAP_LUTZ")
-        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz").to_string());
-    PathBuf::from(dir).join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
 }
 
 /// The homology in the header, normalised: `(Z,Z_2,0,Z)` → `(Z,Z/2,0,Z)`.

@@ -2,7 +2,7 @@
 //! -- --ignored --nocapture` prints darts and cells before and after, the ratio, the time and
 //! whether the reduced map gives the homology stated in the file.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use gmap_homology::{cellular_complex, homology_z};
@@ -10,11 +10,8 @@ use gmap_ops::build::grid;
 use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
-/// A file of the Lutz library: in `GMAP_LUTZ`, else in ../shared/data/lutz beside the checkout.
 fn lutz(name: &str) -> PathBuf {
-    let dir = std::env::var("GMAP_LUTZ")
-        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz").to_string());
-    PathBuf::from(dir).join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
 }
 
 #[test]

@@ -44,7 +44,7 @@
 use std::collections::HashMap;
 use std::fmt;
 
-use gmap_core::{AlphaSet, CellDefect, DenseMap};
+use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap};
 use thiserror::Error;
 
 use crate::chain::ChainComplex;
@@ -690,15 +690,15 @@ impl DimData {
 
 fn incidences_between(hi: &DimData, lo: &DimData) -> Vec<CellIncidence> {
     // the fixed element of B_{i-1} of each (i-1)-cell: the one holding its smallest dart
-    let chosen: Vec<u32> = lo.cells.reps.iter().map(|&r| lo.b.of[r as usize]).collect();
+    let chosen: Vec<u32> = lo.cells.reps.iter().map(|&Dart(r)| lo.b.of[r as usize]).collect();
     // both cells are unions of B_i elements, so one dart per element gives every pair
     let mut pairs: Vec<(u32, u32)> =
-        hi.b.reps.iter().map(|&r| (hi.cells.of[r as usize], lo.cells.of[r as usize])).collect();
+        hi.b.reps.iter().map(|&Dart(r)| (hi.cells.of[r as usize], lo.cells.of[r as usize])).collect();
     pairs.sort_unstable();
     pairs.dedup();
     let mut out: Vec<CellIncidence> =
         pairs.iter().map(|&(upper, lower)| CellIncidence { upper, lower, plus: 0, minus: 0 }).collect();
-    for &r in &hi.b.reps {
+    for &Dart(r) in &hi.b.reps {
         let d = r as usize;
         let f = lo.cells.of[d];
         if lo.b.of[d] != chosen[f as usize] {

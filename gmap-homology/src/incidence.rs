@@ -64,7 +64,7 @@ impl Incidence {
     /// (`upper`) and (i-1)-cells (`lower`), as produced by [`oriented_cells`].
     pub fn signed_with(&self, upper: &OrientedCells, lower: &OrientedCells, cell_dart: Dart, face_dart: Dart) -> i64 {
         let s = lower.sign(face_dart.0);
-        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize]) * s).sum()
+        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize].0) * s).sum()
     }
 
     /// The signed incidence number (BO Def. 9) with the orientation in which the smallest

@@ -96,7 +96,7 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
                 }
             }
             let p = map.partition(set);
-            for &r in &p.reps {
+            for &Dart(r) in &p.reps {
                 chi[cells.cells.of[r as usize] as usize] += sign;
             }
         }
@@ -105,7 +105,7 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
     // i >= 4: build every compacted cell as an (i-1)-map and compute its homology
     let b = map.partition(AlphaSet::above(i, n));
     let mut elems_of_cell: Vec<Vec<u32>> = vec![Vec::new(); ncells];
-    for (e, &r) in b.reps.iter().enumerate() {
+    for (e, &Dart(r)) in b.reps.iter().enumerate() {
         elems_of_cell[cells.cells.of[r as usize] as usize].push(e as u32);
     }
     let mut local = vec![u32::MAX; b.len()];
@@ -115,7 +115,7 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let mut flat = Vec::with_capacity(elems.len() * i);
         for &e in elems {
-            let r = b.reps[e as usize];
+            let r = b.reps[e as usize].0;
             for k in 0..i {
                 let t = b.of[map.alpha(Dart(r), k).index()];
                 flat.push(local[t as usize]);
@@ -123,16 +123,16 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let sub = DenseMap::from_flat_unchecked(i - 1, flat).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: e.to_string(),
         })?;
         let h = homology_z(&simplicial_complex(&sub)).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: e.to_string(),
         })?;
         if !is_sphere(&h, i - 1) {
-            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c], found: format!("homology {h}") });
+            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c].0, found: format!("homology {h}") });
         }
     }
     Ok(())
@@ -145,7 +145,7 @@ fn check_chi(chi: &[i64], cells: &OrientedCells) -> Result<(), PreconditionError
         None => Ok(()),
         Some(c) => Err(PreconditionError::C2 {
             dim: 3,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: format!("a surface of Euler characteristic {}", chi[c]),
         }),
     }

@@ -1,6 +1,6 @@
 //! Property tests on random 3- and 4-dimensional G-maps.
 //!
-//! The theorem under test (DESIGN.md, "Homology: when the cellular method is right"): where
+//! The theorem under test (docs/DESIGN.md, "When cellular homology is right"): where
 //! every cell is orientable as a compacted cell (C1) and bounded by a homology sphere (C2),
 //! the cellular border operator (BO Def. 10) has the homology of the simplicial counterpart
 //! (BO §6) — over Z, Z/2 and Z/3. Where C1 or C2 fails, the cellular method refuses and names
@@ -219,14 +219,14 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
     match e {
         PreconditionError::C1(CellDefect::IncompleteBoundary { dim, dart, alpha }) => {
             prop_assert!(alpha < dim, "{e}");
-            let cell = m.orbit(Dart(*dart), AlphaSet::cell(*dim, m.dim()));
+            let cell = m.orbit(*dart, AlphaSet::cell(*dim, m.dim()));
             prop_assert!(cell.iter().any(|&x| m.is_free(x, *alpha)), "no {alpha}-free dart in the cell named: {e}");
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("free"));
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("free"));
+            Ok((*dim, dart.0))
         }
         PreconditionError::C1(CellDefect::NotOrientable { dim, dart, .. }) => {
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("conflict"), "{}", e);
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("conflict"), "{}", e);
+            Ok((*dim, dart.0))
         }
         PreconditionError::C2 { dim, dart, .. } => {
             prop_assert!(*dim >= 3, "{e}");

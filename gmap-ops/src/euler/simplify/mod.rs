@@ -1,6 +1,6 @@
 //! Homology-preserving simplification by removals and contractions.
 //!
-//! A G-map whose cells are homology balls (conditions C1, C2 of DESIGN.md) is a
+//! A G-map whose cells are homology balls (conditions C1, C2 of docs/DESIGN.md) is a
 //! CW-structure on its space; its cellular homology is the space's homology. Removing an
 //! i-cell of degree 2 that separates two *distinct* (i+1)-cells merges them into one
 //! (i+1)-cell — a ball glued to a ball along a ball — and leaves the space untouched;
@@ -160,7 +160,7 @@ impl SimplifyOptions {
 
 /// Reduces `map` by removals and contractions of cells (see the module documentation) and
 /// returns the reduced map with a report. The reduced map has the same homology as `map`
-/// whenever the cells of `map` are homology balls (C1, C2 of DESIGN.md), and its cells are
+/// whenever the cells of `map` are homology balls (C1, C2 of docs/DESIGN.md), and its cells are
 /// again homology balls, so the cellular method applies to it. Points are dropped.
 /// Equivalent to [`simplify_with`] and [`SimplifyOptions::for_map`].
 ///
