@@ -93,7 +93,7 @@ fn closed_three_manifolds() {
 fn four_manifolds() {
     exact("RP4.facets", &[1, 1, 1, 1, 1], 16);
     exact("CP2.facets", &[3, 3, 3, 1, 1], 80);
-    // K3: 34,560 darts -> 3,656 (10.6 %); see the module docs of `simplify` on why it stalls
+    // K3: 34,560 darts -> 3,656 (10.6 %); docs/SIMPLIFY.md says where and why it stops
     exact("K3_16.facets", &[11, 73, 107, 22, 1], 3656);
 }
 

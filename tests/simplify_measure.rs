@@ -75,10 +75,7 @@ fn grid_figures() {
 }
 
 /// Greedy runs and search rounds against the result (`GMAP_MEASURE_ONE`, default
-/// `triple_trefoil_arc`; `GMAP_SEED`). Measured for `triple_trefoil_arc` (2,328 darts), the
-/// library's seed: greedy runs alone give 208 darts with 8 runs, 164 with 128, 136 with 512
-/// (5.8 %); 8 runs and the default search of 4000 rounds give 32 (1.37 %). Over seeds 1 to
-/// 12 the default search ended at 4 darts ten times, 108 and 112 twice (4.6 %, 4.8 %).
+/// `triple_trefoil_arc`; `GMAP_SEED`). The figures measured are in docs/SIMPLIFY.md.
 #[test]
 #[ignore = "prints figures; run by hand in release"]
 fn tries_figures() {

@@ -76,39 +76,14 @@ impl Bits {
 /// map's `W`, or with the generic fallback `$generic` for larger widths.
 macro_rules! with_width {
     ($a:expr, $w:expr, |$rows:ident| $body:expr, $generic:expr) => {
+        with_width!(@arms $a, $w, $rows, $body, $generic; 1 2 3 4 5 6 7 8)
+    };
+    (@arms $a:expr, $w:expr, $rows:ident, $body:expr, $generic:expr; $($k:literal)*) => {
         match $w {
-            1 => {
-                let $rows: &[[u32; 1]] = $a.as_chunks::<1>().0;
+            $($k => {
+                let $rows: &[[u32; $k]] = $a.as_chunks::<$k>().0;
                 $body
-            }
-            2 => {
-                let $rows: &[[u32; 2]] = $a.as_chunks::<2>().0;
-                $body
-            }
-            3 => {
-                let $rows: &[[u32; 3]] = $a.as_chunks::<3>().0;
-                $body
-            }
-            4 => {
-                let $rows: &[[u32; 4]] = $a.as_chunks::<4>().0;
-                $body
-            }
-            5 => {
-                let $rows: &[[u32; 5]] = $a.as_chunks::<5>().0;
-                $body
-            }
-            6 => {
-                let $rows: &[[u32; 6]] = $a.as_chunks::<6>().0;
-                $body
-            }
-            7 => {
-                let $rows: &[[u32; 7]] = $a.as_chunks::<7>().0;
-                $body
-            }
-            8 => {
-                let $rows: &[[u32; 8]] = $a.as_chunks::<8>().0;
-                $body
-            }
+            })*
             _ => $generic,
         }
     };
