@@ -232,3 +232,22 @@ fn memory_that_cannot_be_had_is_an_error_not_an_abort() {
     let o = gmap_limited(dir.path(), "-v 1000000", "info huge.gmap");
     refused(&o, "huge.gmap");
 }
+
+#[test]
+fn simplicial_counterpart_too_big_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    // the fuzzer's slow unit: an empty map of dimension 24 took 16 s (2^25 vertex sets, 25 times)
+    let empty = write(dir.path(), "e24.gmap", b"gmap 24 0\n");
+    let t = std::time::Instant::now();
+    refused(&gmap(&["homology", s(&empty), "--method", "simplicial"]), "too many to build");
+    assert!(t.elapsed().as_secs() < 5);
+    // one dart of dimension 30: 2^31 simplices
+    let one = write(dir.path(), "one.gmap", format!("gmap 30 1\n{}\n", vec!["0"; 31].join(" ")).as_bytes());
+    refused(&gmap(&["homology", s(&one), "--method", "simplicial"]), "2^31 x 1 simplices");
+    // the cellular method answers
+    let o = gmap(&["homology", s(&empty), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // small ones still go through
+    let seg = write(dir.path(), "seg.gmap", b"gmap 1 2\n0 1\n1 0\n");
+    assert!(gmap(&["homology", s(&seg), "--method", "simplicial"]).status.success());
+}

@@ -52,6 +52,28 @@ fn cellular(map: &DenseMap, file: &str) -> Result<Named> {
     Ok(Named { chain: c.chain, names })
 }
 
+/// The most work [`simplicial`] takes on: the simplicial counterpart of an n-map of N darts
+/// has up to `2^(n+1) N` simplices, and building it visits the `2^(n+1)` vertex sets of a
+/// flag once per dimension even without darts.
+const SIMPLICIAL_WORK_LIMIT: u128 = 1 << 27;
+
+/// Refuses a map whose simplicial counterpart is too big to build (exponential in the
+/// dimension): `gmap 30 1` would ask for 2^31 simplices.
+fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
+    let n = map.dim() as u32;
+    let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
+    if work > SIMPLICIAL_WORK_LIMIT {
+        bail!(
+            "{file}: the simplicial counterpart of a {n}-map of {} darts has up to 2^{} x {} simplices, too many to \
+             build; the cellular method works on the cells themselves",
+            map.dart_count(),
+            n + 1,
+            map.dart_count().max(1)
+        );
+    }
+    Ok(())
+}
+
 fn simplicial(map: &DenseMap) -> Named {
     progress("building the simplicial counterpart");
     let s = simplicial_complex_with_simplices(map);
@@ -151,7 +173,10 @@ pub fn run(o: &Options) -> Result<()> {
             let map = if o.simplify { simplified(map) } else { map };
             let named = match o.method {
                 Method::Cellular => cellular(&map, &file)?,
-                Method::Simplicial => simplicial(&map),
+                Method::Simplicial => {
+                    check_simplicial_size(&map, &file)?;
+                    simplicial(&map)
+                }
             };
             (map.dim(), named)
         }
