@@ -14,8 +14,8 @@ use bitvec::vec::BitVec;
 use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap, Partition};
 use thiserror::Error;
 
-use crate::homology::{homology_z, Homology};
-use crate::simplicial::simplicial_complex;
+use crate::cellular::simplicial::simplicial_complex;
+use crate::engine::homology::{homology_z, Homology};
 
 /// A cell on which the cellular method does not apply.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]

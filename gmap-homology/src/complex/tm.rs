@@ -42,7 +42,7 @@ use std::collections::BTreeMap;
 use gmap_core::DenseMap;
 use thiserror::Error;
 
-use crate::arch::{all_cell_incidences, ArchComplex, FromMapError};
+use crate::complex::arch::{all_cell_incidences, ArchComplex, FromMapError};
 
 /// A set of cells with signed multiplicities: for each cell, the number of positive and of
 /// negative occurrences, kept apart (TM §IV). Cells are region indices of a [`TmModel`].
@@ -192,7 +192,7 @@ impl TmModel {
 
     /// The model of the cells of a G-map (cells indexed and identified as in
     /// [`ArchComplex::from_map`]: 0-cells first). Occurrences are the face-operator preimage
-    /// elements counted by sign ([`crate::arch::cell_incidences`]); needs condition C1.
+    /// elements counted by sign ([`crate::complex::arch::cell_incidences`]); needs condition C1.
     pub fn from_map(map: &DenseMap) -> Result<TmModel, FromMapError> {
         let n = map.dim();
         let counts = map.cell_counts();

@@ -7,14 +7,14 @@
 //! `e` of `B_i` met there (each `<alpha_{i+1}..alpha_n>`-orbit, once) add `sign_i(e) ·
 //! sign_{i-1}` to the entry (cell of `e`, that (i-1)-cell). This is exactly the sum of
 //! BO Def. 9 over the face-operator preimage, for all i-cells at once, multi-incidences
-//! included. [`crate::incidence::Incidence`] answers the same question pair by pair.
+//! included. [`crate::cellular::incidence::Incidence`] answers the same question pair by pair.
 
 use bitvec::vec::BitVec;
 use gmap_core::{AlphaSet, Dart, DenseMap};
 
-use crate::chain::{ChainComplex, ChainError};
-use crate::precond::{check_preconditions, OrientedCells, PreconditionError};
-use crate::sparse::SparseMatrix;
+use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
+use crate::engine::chain::{ChainComplex, ChainError};
+use crate::engine::sparse::SparseMatrix;
 
 /// The cellular chain complex of a map: the border operator, with each cell named by its
 /// smallest dart.
@@ -219,8 +219,8 @@ fn walks(map: &DenseMap, i: usize, upper: &OrientedCells, lower: &OrientedCells)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::homology::homology_z;
-    use crate::incidence::Incidence;
+    use crate::cellular::incidence::Incidence;
+    use crate::engine::homology::homology_z;
     use gmap_core::examples;
 
     #[test]
@@ -228,7 +228,7 @@ mod tests {
         for m in [examples::cylinder(), examples::torus(), examples::klein_bottle()] {
             let c = cellular_complex(&m).unwrap();
             c.chain.check_dd().unwrap();
-            let oriented: Vec<_> = (0..=2).map(|i| crate::precond::oriented_cells(&m, i).unwrap()).collect();
+            let oriented: Vec<_> = (0..=2).map(|i| crate::cellular::precond::oriented_cells(&m, i).unwrap()).collect();
             for i in 1..=2 {
                 let inc = Incidence::new(&m, i);
                 for (col, &cd) in c.reps[i].iter().enumerate() {

@@ -4,7 +4,7 @@
 //!
 //! Eliminating a pair `(a, b)` — `a` a (k-1)-cell, `b` a k-cell, `∂_k[a, b]` a unit — leaves
 //! a complex with the same homology whose matrix `∂_k` changes by `c ↦ c - (∂[a, c] / ∂[a, b]) ∂b`
-//! on the other k-cells `c` (see [`crate::reduce`]). Two kinds of pairs make that update
+//! on the other k-cells `c` (see [`crate::engine::reduce`]). Two kinds of pairs make that update
 //! vanish on the surviving cells:
 //!
 //! * a **collapse**: `b` is the only surviving coface of `a`, so `∂[a, c] = 0` for every other
@@ -32,9 +32,9 @@
 
 use std::collections::HashMap;
 
-use crate::chain::ChainComplex;
-use crate::ring::{Euclid, Ring};
-use crate::sparse::SparseMatrix;
+use crate::engine::chain::ChainComplex;
+use crate::engine::ring::{Euclid, Ring};
+use crate::engine::sparse::SparseMatrix;
 
 const ALIVE: u8 = 0;
 const PAIRED: u8 = 1;
@@ -71,7 +71,7 @@ impl Restricted {
 /// in the ring is no entry; only unit entries are paired). With `freeze`, a stuck pass makes
 /// a cell of the lowest dimension left **critical** and goes on: the cell stays in the output
 /// and the later coreductions add fill in its row only (the frozen rows of
-/// [`crate::reduce`]), so the output is the restriction of the input plus those rows.
+/// [`crate::engine::reduce`]), so the output is the restriction of the input plus those rows.
 /// `None` when the fill overflows. O(entries + cells + fill in the critical rows).
 pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
@@ -498,9 +498,9 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::homology::homology_z;
-    use crate::homology::tests::complex;
-    use crate::ring::{Zi64, Zp};
+    use crate::engine::homology::homology_z;
+    use crate::engine::homology::tests::complex;
+    use crate::engine::ring::{Zi64, Zp};
 
     #[test]
     fn a_filled_triangle_reduces_to_one_vertex() {

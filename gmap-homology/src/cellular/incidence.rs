@@ -8,11 +8,11 @@
 //! their compacted cells and `-1` otherwise. Both are independent of the darts chosen
 //! (BO Properties 1 and 3).
 //!
-//! For whole boundary matrices use [`crate::border`], which builds each dimension in O(N).
+//! For whole boundary matrices use [`crate::cellular::border`], which builds each dimension in O(N).
 
 use gmap_core::{CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
 
-use crate::precond::{oriented_cells, OrientedCells};
+use crate::cellular::precond::{oriented_cells, OrientedCells};
 
 /// The face operator between dimensions i and i-1 of a map, with what is needed to answer
 /// incidence questions. Building it is O(N n); each query is O(size of one preimage).

@@ -12,8 +12,8 @@
 
 use gmap_core::{AlphaSet, DenseMap};
 
-use crate::chain::ChainComplex;
-use crate::sparse::SparseMatrix;
+use crate::engine::chain::ChainComplex;
+use crate::engine::sparse::SparseMatrix;
 
 /// A k-simplex of the simplicial counterpart: its vertex labels and one of its darts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -125,7 +125,7 @@ pub fn simplicial_complex_with_simplices(map: &DenseMap) -> SimplicialComplex {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::homology::homology_z;
+    use crate::engine::homology::homology_z;
     use gmap_core::examples;
 
     #[test]

@@ -17,7 +17,7 @@
 //! open and closed sets and the T0 separation of Axiom 3.6. Homology is that of the
 //! *completion by zero* (AC Def. 3.8, 3.9): [`ArchComplex::boundary_entries`] lists its
 //! non-zero entries between consecutive dimensions (entries across a gap are zero by
-//! Def. 3.1), and [`crate::arch::ArchComplex::euler_characteristic`] is the left side of the
+//! Def. 3.1), and [`crate::complex::arch::ArchComplex::euler_characteristic`] is the left side of the
 //! Euler–Poincaré formula (AC Cor. 3.11).
 //!
 //! Algorithm 8.16 (turning a realisable complex into a cw-complex with the same
@@ -47,10 +47,10 @@ use std::fmt;
 use gmap_core::{AlphaSet, CellDefect, DenseMap};
 use thiserror::Error;
 
-use crate::chain::ChainComplex;
-use crate::ep::EpVector;
-use crate::homology::{homology_z, homology_zp, Homology, HomologyError};
-use crate::sparse::SparseMatrix;
+use crate::complex::ep::EpVector;
+use crate::engine::chain::ChainComplex;
+use crate::engine::homology::{homology_z, homology_zp, Homology, HomologyError};
+use crate::engine::sparse::SparseMatrix;
 
 /// A region: a user id and a dimension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
