@@ -32,20 +32,36 @@
 
 use std::collections::HashMap;
 
+use gmap_core::union_find::UnionFind;
+
 use crate::engine::chain::ChainComplex;
 use crate::engine::ring::{Euclid, Ring};
 use crate::engine::sparse::SparseMatrix;
 
-const ALIVE: u8 = 0;
-const PAIRED: u8 = 1;
-/// a vertex set aside for `H_0`: survives, but takes part in no entry
-const SET_ASIDE: u8 = 2;
-/// a critical cell: survives, with the fill of later coreductions in its row
-const CRITICAL: u8 = 3;
-/// bit 31 of an entry: its value is a unit
+/// What the sweep knows of a cell: one byte per cell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+enum State {
+    /// not paired yet: counts among its neighbours' surviving faces and cofaces
+    Alive,
+    /// eliminated together with its partner (a pair of the log)
+    Paired,
+    /// a vertex set aside for `H_0`: survives, but takes part in no entry
+    SetAside,
+    /// a critical cell: survives, with the fill of later coreductions in its row
+    Critical,
+}
+
+/// bit 31 of a link: the entry is a unit
 const UNIT: u32 = 1 << 31;
 /// cells and entries are numbered in 31 bits
 const LIMIT: usize = 1 << 31;
+
+/// The cell of a link (its global number, without the [`UNIT`] bit).
+#[inline]
+fn cell(link: u32) -> usize {
+    (link & !UNIT) as usize
+}
 
 /// The complex left by [`prereduce`]: the surviving cells and the boundary between them.
 #[derive(Debug)]
@@ -75,270 +91,380 @@ impl Restricted {
 /// `None` when the fill overflows. O(entries + cells + fill in the critical rows).
 pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
-    let n1 = counts.len();
     let total: usize = counts.iter().sum();
-    let nnz: usize = (1..n1).map(|k| c.boundary(k).nnz()).sum();
+    let nnz: usize = (1..counts.len()).map(|k| c.boundary(k).nnz()).sum();
     if total >= LIMIT || nnz >= LIMIT {
-        // beyond u32 indices: hand the complex on as it is
+        // beyond 31-bit numbers: hand the complex on as it is
         let ids = counts.iter().map(|&m| (0..m as u32).collect()).collect();
         return Some(Restricted { chain: c.clone(), ids, log: Vec::new(), off: Vec::new() });
     }
-    let mut off = Vec::with_capacity(n1 + 1);
+    let mut sweep = Sweep::new(ring, c, Links::new(ring, c, nnz));
+    sweep.set_aside_base_vertices();
+    sweep.queue_ready();
+    sweep.run(freeze)?;
+    sweep.restricted()
+}
+
+/// Global cell numbers: `off[k]` is the number of the first k-cell, `off[n + 1]` the number
+/// of cells.
+fn offsets(counts: &[usize]) -> Vec<u32> {
+    let mut off = Vec::with_capacity(counts.len() + 1);
     let mut acc = 0u32;
     for &m in counts {
         off.push(acc);
         acc += m as u32;
     }
     off.push(acc);
-    let dim_of = |x: usize| off.partition_point(|&o| o as usize <= x) - 1;
-    // ⟨∂x, y⟩ from the input, for a k-cell x and a (k-1)-cell y (global numbers)
-    let value = |x: usize, y: usize| -> R::E {
-        let k = dim_of(x);
-        ring.of_i64(c.boundary(k).get(y - off[k - 1] as usize, x - off[k] as usize))
-    };
-    // faces of every cell (global ids, bit 31 set for a unit entry), ring-nonzero entries only
-    let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
-    let mut faces: Vec<u32> = Vec::with_capacity(nnz);
-    fptr.extend(std::iter::repeat_n(0, counts.first().copied().unwrap_or(0) + 1));
-    for k in 1..n1 {
-        let m = c.boundary(k);
-        let base = off[k - 1];
-        for j in 0..m.cols() {
-            let (ri, rv) = m.col(j);
-            for (&r, &v) in ri.iter().zip(rv) {
-                let x = ring.of_i64(v);
-                if !ring.is_zero(&x) {
-                    faces.push((base + r) | if ring.is_unit(&x) { UNIT } else { 0 });
+    off
+}
+
+/// The faces and cofaces of every cell through its ring-nonzero entries, as links (global
+/// cell numbers, [`UNIT`] set for a unit entry): the boundary in compressed rows per cell,
+/// and its transpose.
+struct Links {
+    /// `off[k]`: global number of the first k-cell
+    off: Vec<u32>,
+    fptr: Vec<u32>,
+    faces: Vec<u32>,
+    cptr: Vec<u32>,
+    cofaces: Vec<u32>,
+}
+
+impl Links {
+    fn new<R: Euclid>(ring: &R, c: &ChainComplex, nnz: usize) -> Self {
+        let counts = c.counts();
+        let off = offsets(counts);
+        let total = off[counts.len()] as usize;
+        let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
+        let mut faces: Vec<u32> = Vec::with_capacity(nnz);
+        fptr.extend(std::iter::repeat_n(0, counts.first().copied().unwrap_or(0) + 1));
+        for k in 1..counts.len() {
+            let m = c.boundary(k);
+            let base = off[k - 1];
+            for j in 0..m.cols() {
+                let (ri, rv) = m.col(j);
+                for (&r, &v) in ri.iter().zip(rv) {
+                    let x = ring.of_i64(v);
+                    if !ring.is_zero(&x) {
+                        faces.push((base + r) | if ring.is_unit(&x) { UNIT } else { 0 });
+                    }
                 }
+                fptr.push(faces.len() as u32);
             }
-            fptr.push(faces.len() as u32);
         }
-    }
-    // cofaces: the transpose
-    let mut cptr = vec![0u32; total + 1];
-    for &r in &faces {
-        cptr[(r & !UNIT) as usize + 1] += 1;
-    }
-    for i in 0..total {
-        cptr[i + 1] += cptr[i];
-    }
-    let mut cofaces = vec![0u32; faces.len()];
-    {
+        let mut cptr = vec![0u32; total + 1];
+        for &r in &faces {
+            cptr[cell(r) + 1] += 1;
+        }
+        for i in 0..total {
+            cptr[i + 1] += cptr[i];
+        }
+        let mut cofaces = vec![0u32; faces.len()];
         let mut fill = cptr.clone();
         for col in 0..total {
             for &r in &faces[fptr[col] as usize..fptr[col + 1] as usize] {
-                let slot = &mut fill[(r & !UNIT) as usize];
+                let slot = &mut fill[cell(r)];
                 cofaces[*slot as usize] = col as u32 | (r & UNIT);
                 *slot += 1;
             }
         }
+        Links { off, fptr, faces, cptr, cofaces }
     }
-    let mut nb: Vec<u32> = fptr.windows(2).map(|w| w[1] - w[0]).collect();
-    let mut nc: Vec<u32> = cptr.windows(2).map(|w| w[1] - w[0]).collect();
-    let mut state = vec![ALIVE; total];
 
-    // set aside one vertex per component of the 1-skeleton when ∂_1 is made of `v - w` columns
-    if n1 >= 2 && edges_are_differences(c.boundary(1)) {
-        let nv = counts[0];
-        let mut parent: Vec<u32> = (0..nv as u32).collect();
+    fn total(&self) -> usize {
+        self.fptr.len() - 1
+    }
+
+    #[inline]
+    fn faces(&self, x: usize) -> &[u32] {
+        &self.faces[self.fptr[x] as usize..self.fptr[x + 1] as usize]
+    }
+
+    #[inline]
+    fn cofaces(&self, x: usize) -> &[u32] {
+        &self.cofaces[self.cptr[x] as usize..self.cptr[x + 1] as usize]
+    }
+}
+
+/// The pass in progress: per cell its state and its numbers of surviving faces (`nb`) and
+/// cofaces (`nc`), the cells waiting to be looked at, the pairs eliminated so far, and the
+/// entries of the critical rows.
+struct Sweep<'a, R: Euclid> {
+    ring: &'a R,
+    c: &'a ChainComplex,
+    links: Links,
+    state: Vec<State>,
+    nb: Vec<u32>,
+    nc: Vec<u32>,
+    /// entries of alive or critical cells in critical rows: (row, value), rows increasing
+    extra: HashMap<u32, Vec<(u32, R::E)>>,
+    log: Vec<(u32, u32)>,
+    /// lowest cell number first: the sweep then moves through the complex in numbering
+    /// order, which keeps its memory accesses close together (a stack gets stuck far
+    /// earlier on closed manifolds)
+    work: Ready,
+    /// per dimension, the first cell that may still be alive (critical cells are taken in order)
+    cursor: Vec<usize>,
+}
+
+impl<'a, R: Euclid> Sweep<'a, R> {
+    fn new(ring: &'a R, c: &'a ChainComplex, links: Links) -> Self {
+        let total = links.total();
+        let nb = links.fptr.windows(2).map(|w| w[1] - w[0]).collect();
+        let nc = links.cptr.windows(2).map(|w| w[1] - w[0]).collect();
+        let work = Ready::new(&links.off);
+        let cursor = links.off[..c.counts().len()].iter().map(|&o| o as usize).collect();
+        Sweep {
+            ring,
+            c,
+            links,
+            state: vec![State::Alive; total],
+            nb,
+            nc,
+            extra: HashMap::new(),
+            log: Vec::with_capacity(total / 2),
+            work,
+            cursor,
+        }
+    }
+
+    /// `⟨∂x, y⟩` from the input, for a k-cell `x` and a (k-1)-cell `y` (global numbers).
+    fn value(&self, x: usize, y: usize) -> R::E {
+        let off = &self.links.off;
+        let k = off.partition_point(|&o| o as usize <= x) - 1;
+        self.ring.of_i64(self.c.boundary(k).get(y - off[k - 1] as usize, x - off[k] as usize))
+    }
+
+    /// When `∂_1` is made of `v - w` columns, sets aside the smallest vertex of each
+    /// component of the 1-skeleton: `H(X) = H(X, {v_1..v_c}) ⊕ Z^c` in degree 0, and the
+    /// relative complex is the restriction to the other cells.
+    fn set_aside_base_vertices(&mut self) {
+        let c = self.c;
+        if c.counts().len() < 2 || !edges_are_differences(c.boundary(1)) {
+            return;
+        }
+        let nv = c.count(0);
+        let mut uf = UnionFind::new(nv);
         let m = c.boundary(1);
         for j in 0..m.cols() {
             let (ri, _) = m.col(j);
             if ri.len() == 2 {
-                let (x, y) = (find(&mut parent, ri[0]), find(&mut parent, ri[1]));
-                if x != y {
-                    parent[x.max(y) as usize] = x.min(y);
-                }
+                uf.union(ri[0], ri[1]);
             }
         }
         for v in 0..nv as u32 {
-            if find(&mut parent, v) == v {
-                state[v as usize] = SET_ASIDE;
-                for &e in &cofaces[cptr[v as usize] as usize..cptr[v as usize + 1] as usize] {
-                    nb[(e & !UNIT) as usize] -= 1;
+            if uf.find(v) == v {
+                self.state[v as usize] = State::SetAside;
+                for &e in self.links.cofaces(v as usize) {
+                    self.nb[cell(e)] -= 1;
                 }
             }
         }
     }
 
-    // entries of alive or critical cells in critical rows: (row, value), rows increasing
-    let mut extra: HashMap<u32, Vec<(u32, R::E)>> = HashMap::new();
-    let mut log: Vec<(u32, u32)> = Vec::with_capacity(total / 2);
-    // lowest cell number first: the sweep moves through the complex in numbering order, which
-    // keeps its accesses close together (2.5x faster than first in, first out on the 40³
-    // grid, with the same survivors); a stack gets stuck far earlier on closed manifolds
-    let mut work = Ready::new(&off);
-    for x in 0..total {
-        if state[x] == ALIVE && (nb[x] == 1 || nc[x] == 1) {
-            work.push(x as u32);
+    /// Queues every alive cell with a single surviving face or coface.
+    fn queue_ready(&mut self) {
+        for x in 0..self.state.len() {
+            if self.state[x] == State::Alive && (self.nb[x] == 1 || self.nc[x] == 1) {
+                self.work.push(x as u32);
+            }
         }
     }
-    // per dimension, the first cell that may still be alive (critical cells are taken in order)
-    let mut cursor: Vec<usize> = off[..n1].iter().map(|&o| o as usize).collect();
-    loop {
-        let Some(x) = work.pop() else {
-            if !freeze {
+
+    /// Pairs cells until none is ready; with `freeze`, makes a cell critical each time it is
+    /// stuck and goes on until every cell is paired, set aside or critical. `None` when the
+    /// fill of the critical rows overflows.
+    fn run(&mut self, freeze: bool) -> Option<()> {
+        loop {
+            let Some(x) = self.work.pop() else {
+                if freeze && self.make_critical() {
+                    continue;
+                }
+                return Some(());
+            };
+            let x = x as usize;
+            if self.state[x] != State::Alive {
+                continue;
+            }
+            if let Some((a, b, coreduction)) = self.pair_of(x) {
+                self.eliminate(a, b, coreduction)?;
+            }
+        }
+    }
+
+    /// Makes the first alive cell of the lowest dimension critical; `false` when no cell is
+    /// alive. The cell has no alive face, so only its cofaces change: their entries in its
+    /// row move to the critical rows.
+    fn make_critical(&mut self) -> bool {
+        let off = &self.links.off;
+        let mut pick = None;
+        for k in 0..self.cursor.len() {
+            let end = off[k + 1] as usize;
+            while self.cursor[k] < end && self.state[self.cursor[k]] != State::Alive {
+                self.cursor[k] += 1;
+            }
+            if self.cursor[k] < end {
+                pick = Some(self.cursor[k]);
                 break;
             }
-            // stuck: the first alive cell of the lowest dimension becomes critical; it has no
-            // alive face, so only its cofaces change
-            let mut pick = None;
-            for k in 0..n1 {
-                while cursor[k] < off[k + 1] as usize && state[cursor[k]] != ALIVE {
-                    cursor[k] += 1;
-                }
-                if cursor[k] < off[k + 1] as usize {
-                    pick = Some(cursor[k]);
-                    break;
-                }
-            }
-            let Some(x) = pick else { break };
-            state[x] = CRITICAL;
-            for &e in &cofaces[cptr[x] as usize..cptr[x + 1] as usize] {
-                let y = (e & !UNIT) as usize;
-                if state[y] == ALIVE {
-                    let v = value(y, x);
-                    let list = extra.entry(y as u32).or_default();
-                    let pos = list.partition_point(|(r, _)| (*r as usize) < x);
-                    list.insert(pos, (x as u32, v));
-                    nb[y] -= 1;
-                    if nb[y] == 1 {
-                        work.push(y as u32);
-                    }
-                }
-            }
-            continue;
-        };
-        let x = x as usize;
-        if state[x] != ALIVE {
-            continue;
         }
-        let mut pair = None;
-        let mut coreduction = false;
-        if nb[x] == 1 {
-            // coreduction: the only surviving face of x
-            let f =
-                faces[fptr[x] as usize..fptr[x + 1] as usize].iter().find(|&&e| state[(e & !UNIT) as usize] == ALIVE);
-            if let Some(&e) = f {
+        let Some(x) = pick else { return false };
+        self.state[x] = State::Critical;
+        for &e in self.links.cofaces(x) {
+            let y = cell(e);
+            if self.state[y] == State::Alive {
+                let v = self.value(y, x);
+                let list = self.extra.entry(y as u32).or_default();
+                let pos = list.partition_point(|(r, _)| (*r as usize) < x);
+                list.insert(pos, (x as u32, v));
+                self.nb[y] -= 1;
+                if self.nb[y] == 1 {
+                    self.work.push(y as u32);
+                }
+            }
+        }
+        true
+    }
+
+    /// The pair `(a, b, coreduction)` that alive cell `x` makes: with its only surviving face
+    /// (a coreduction) or its only surviving coface (a collapse), through a unit entry.
+    fn pair_of(&self, x: usize) -> Option<(usize, usize, bool)> {
+        let alive = |e: &&u32| self.state[cell(**e)] == State::Alive;
+        if self.nb[x] == 1 {
+            if let Some(&e) = self.links.faces(x).iter().find(alive) {
                 if e & UNIT != 0 {
-                    pair = Some(((e & !UNIT) as usize, x));
-                    coreduction = true;
+                    return Some((cell(e), x, true));
                 }
             }
         }
-        if pair.is_none() && nc[x] == 1 {
-            // collapse: the only surviving coface of x
-            let f =
-                cofaces[cptr[x] as usize..cptr[x + 1] as usize].iter().find(|&&e| state[(e & !UNIT) as usize] == ALIVE);
-            if let Some(&e) = f {
+        if self.nc[x] == 1 {
+            if let Some(&e) = self.links.cofaces(x).iter().find(alive) {
                 if e & UNIT != 0 {
-                    pair = Some((x, (e & !UNIT) as usize));
+                    return Some((x, cell(e), false));
                 }
             }
         }
-        let Some((a, b)) = pair else { continue };
-        state[a] = PAIRED;
-        state[b] = PAIRED;
-        log.push((a as u32, b as u32));
-        extra.remove(&(a as u32));
-        // a collapse changes no other column; a coreduction of a column with entries in
-        // critical rows adds them to the other columns meeting row a
-        if let Some(fill) = extra.remove(&(b as u32)) {
+        None
+    }
+
+    /// Eliminates the pair `(a, b)`: logs it, moves the critical-row entries of `b` onto the
+    /// other cofaces of `a` after a coreduction (a collapse changes no other column), and
+    /// updates the counts of the neighbours. `None` when the fill overflows.
+    fn eliminate(&mut self, a: usize, b: usize, coreduction: bool) -> Option<()> {
+        self.state[a] = State::Paired;
+        self.state[b] = State::Paired;
+        self.log.push((a as u32, b as u32));
+        self.extra.remove(&(a as u32));
+        if let Some(fill) = self.extra.remove(&(b as u32)) {
             if coreduction {
-                let eps = value(b, a);
-                for &e in &cofaces[cptr[a] as usize..cptr[a + 1] as usize] {
-                    let y = (e & !UNIT) as usize;
-                    if state[y] != ALIVE {
+                let eps = self.value(b, a);
+                for &e in self.links.cofaces(a) {
+                    let y = cell(e);
+                    if self.state[y] != State::Alive {
                         continue;
                     }
-                    let lambda = ring.div_unit(&value(y, a), &eps)?;
-                    let list = extra.entry(y as u32).or_default();
-                    *list = axpy(ring, list, &lambda, &fill)?;
+                    let lambda = self.ring.div_unit(&self.value(y, a), &eps)?;
+                    let list = self.extra.entry(y as u32).or_default();
+                    *list = axpy(self.ring, list, &lambda, &fill)?;
                     if list.is_empty() {
-                        extra.remove(&(y as u32));
+                        self.extra.remove(&(y as u32));
                     }
                 }
             }
         }
-        for z in [a, b] {
-            for &e in &cofaces[cptr[z] as usize..cptr[z + 1] as usize] {
-                let y = (e & !UNIT) as usize;
-                if state[y] == ALIVE {
-                    nb[y] -= 1;
-                    if nb[y] == 1 {
-                        work.push(y as u32);
-                    }
+        self.release(a);
+        self.release(b);
+        Some(())
+    }
+
+    /// A cell `z` leaves: its alive cofaces lose a face and its alive faces a coface; those
+    /// left with one are queued.
+    #[inline]
+    fn release(&mut self, z: usize) {
+        let Sweep { links, state, nb, nc, work, .. } = self;
+        for &e in links.cofaces(z) {
+            let y = cell(e);
+            if state[y] == State::Alive {
+                nb[y] -= 1;
+                if nb[y] == 1 {
+                    work.push(y as u32);
                 }
             }
-            for &e in &faces[fptr[z] as usize..fptr[z + 1] as usize] {
-                let y = (e & !UNIT) as usize;
-                if state[y] == ALIVE {
-                    nc[y] -= 1;
-                    if nc[y] == 1 {
-                        work.push(y as u32);
-                    }
+        }
+        for &e in links.faces(z) {
+            let y = cell(e);
+            if state[y] == State::Alive {
+                nc[y] -= 1;
+                if nc[y] == 1 {
+                    work.push(y as u32);
                 }
             }
         }
     }
 
-    // the survivors: restricted entries in alive rows, tracked entries in critical rows
-    let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
-    let mut local = vec![u32::MAX; total];
-    for k in 0..n1 {
-        let mut v = Vec::new();
-        for j in 0..counts[k] {
-            let g = off[k] as usize + j;
-            if state[g] != PAIRED {
-                local[g] = v.len() as u32;
-                v.push(j as u32);
-            }
-        }
-        ids.push(v);
-    }
-    let mut mats = Vec::with_capacity(n1.saturating_sub(1));
-    let mut col: Vec<(u32, i64)> = Vec::new();
-    for k in 1..n1 {
-        let m = c.boundary(k);
-        let mut col_ptr = Vec::with_capacity(ids[k].len() + 1);
-        col_ptr.push(0usize);
-        let mut rows = Vec::new();
-        let mut vals = Vec::new();
-        for &j in &ids[k] {
-            col.clear();
-            let (ri, rv) = m.col(j as usize);
-            for (&r, &v) in ri.iter().zip(rv) {
-                let g = (off[k - 1] + r) as usize;
-                if state[g] == ALIVE && !ring.is_zero(&ring.of_i64(v)) {
-                    col.push((local[g], v));
+    /// The survivors: the input restricted to alive rows, plus the entries of the critical
+    /// rows. `None` when an entry of a critical row does not fit `i64`.
+    fn restricted(self) -> Option<Restricted> {
+        let Sweep { ring, c, links, state, extra, log, .. } = self;
+        let off = links.off;
+        let counts = c.counts();
+        let n1 = counts.len();
+        let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
+        let mut local = vec![u32::MAX; state.len()];
+        for k in 0..n1 {
+            let mut v = Vec::new();
+            for j in 0..counts[k] {
+                let g = off[k] as usize + j;
+                if state[g] != State::Paired {
+                    local[g] = v.len() as u32;
+                    v.push(j as u32);
                 }
             }
-            if let Some(list) = extra.get(&(off[k] + j)) {
-                for (r, v) in list {
-                    col.push((local[*r as usize], ring.to_i64(v)?));
-                }
-                col.sort_unstable_by_key(|e| e.0);
-            }
-            for &(r, v) in &col {
-                rows.push(r);
-                vals.push(v);
-            }
-            col_ptr.push(rows.len());
+            ids.push(v);
         }
-        let sm = SparseMatrix::try_from_csc(ids[k - 1].len(), ids[k].len(), col_ptr, rows, vals)
-            .expect("survivors keep rows sorted and in range");
-        mats.push(sm);
+        let mut mats = Vec::with_capacity(n1.saturating_sub(1));
+        let mut col: Vec<(u32, i64)> = Vec::new();
+        for k in 1..n1 {
+            let m = c.boundary(k);
+            let mut col_ptr = Vec::with_capacity(ids[k].len() + 1);
+            col_ptr.push(0usize);
+            let mut rows = Vec::new();
+            let mut vals = Vec::new();
+            for &j in &ids[k] {
+                col.clear();
+                let (ri, rv) = m.col(j as usize);
+                for (&r, &v) in ri.iter().zip(rv) {
+                    let g = (off[k - 1] + r) as usize;
+                    if state[g] == State::Alive && !ring.is_zero(&ring.of_i64(v)) {
+                        col.push((local[g], v));
+                    }
+                }
+                if let Some(list) = extra.get(&(off[k] + j)) {
+                    for (r, v) in list {
+                        col.push((local[*r as usize], ring.to_i64(v)?));
+                    }
+                    col.sort_unstable_by_key(|e| e.0);
+                }
+                for &(r, v) in &col {
+                    rows.push(r);
+                    vals.push(v);
+                }
+                col_ptr.push(rows.len());
+            }
+            let sm = SparseMatrix::try_from_csc(ids[k - 1].len(), ids[k].len(), col_ptr, rows, vals)
+                .expect("survivors keep rows sorted and in range");
+            mats.push(sm);
+        }
+        let new_counts = ids.iter().map(Vec::len).collect();
+        let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
+        Some(Restricted { chain, ids, log, off })
     }
-    let new_counts = ids.iter().map(Vec::len).collect();
-    let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
-    Some(Restricted { chain, ids, log, off })
 }
 
 /// The cells waiting to be looked at, taken lowest number first (lowest dimension, then
 /// order of smallest dart): a bit per cell and, per dimension, a count and the first word
 /// that may hold a bit. Taking cells in numbering order keeps the sweep's memory accesses
-/// close together; on the Lutz library it leaves as few cells as a first-in-first-out queue
-/// did, give or take a few (fewer on bing and knot, more on non_4_2_colorable).
+/// close together.
 struct Ready {
     /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
@@ -484,15 +610,6 @@ fn edges_are_differences(m: &SparseMatrix) -> bool {
         let (_, v) = m.col(j);
         v.is_empty() || (v.len() == 2 && v[0] + v[1] == 0 && v[0].abs() == 1)
     })
-}
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[parent[x as usize] as usize];
-        parent[x as usize] = p;
-        x = p;
-    }
-    x
 }
 
 #[cfg(test)]
