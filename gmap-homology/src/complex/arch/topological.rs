@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+use gmap_core::union_find::UnionFind;
+
 use super::{ArchComplex, ArchError, Region};
 use crate::complex::ep::EpVector;
 
@@ -184,7 +186,7 @@ impl ArchComplex {
                     g.entries.push((e, a, -1));
                     g.entries.push((e, c, 1));
                     g.entries.push((bid, e, 0));
-                    let joined = uf.union(v0, v1);
+                    let joined = uf.union(v0 as u32, v1 as u32);
                     let vector = if joined { EpVector::a(n, 1) } else { EpVector::b(n, 1) };
                     added.push(AppliedOperator { step: Step::ConnectBoundary, region: bid, created: vec![e], vector });
                 }
@@ -208,33 +210,9 @@ impl ArchComplex {
                 .map(|x| x.to)
                 .collect();
             for w in ends.windows(2) {
-                uf.union(w[0], w[1]);
+                uf.union(w[0] as u32, w[1] as u32);
             }
         }
         uf
-    }
-}
-
-struct UnionFind(Vec<usize>);
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        UnionFind((0..n).collect())
-    }
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] != x {
-            self.0[x] = self.0[self.0[x]];
-            x = self.0[x];
-        }
-        x
-    }
-    /// Joins the classes; true if they were distinct.
-    fn union(&mut self, a: usize, b: usize) -> bool {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra == rb {
-            return false;
-        }
-        self.0[ra] = rb;
-        true
     }
 }
