@@ -10,7 +10,7 @@
 //! included. [`crate::cellular::incidence::Incidence`] answers the same question pair by pair.
 
 use bitvec::vec::BitVec;
-use gmap_core::{AlphaSet, Dart, DenseMap};
+use gmap_core::{parallel, AlphaSet, Dart, DenseMap};
 
 use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
 use crate::engine::chain::{ChainComplex, ChainError};
@@ -78,19 +78,9 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
         SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
             .expect("indices come from partitions of the same map; entries are small")
     };
-    // big maps: the even dimensions on a second thread (∂_2, the largest in 3D, alone there)
-    let two = n >= 2 && map.dart_count() >= 1 << 16 && std::thread::available_parallelism().is_ok_and(|p| p.get() >= 2);
-    let mats: Vec<SparseMatrix> = if two {
-        let (odd, even) = std::thread::scope(|s| {
-            let h = s.spawn(|| (2..=n).step_by(2).map(matrix).collect::<Vec<_>>());
-            let odd: Vec<SparseMatrix> = (1..=n).step_by(2).map(matrix).collect();
-            (odd, h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-        });
-        let (mut odd, mut even) = (odd.into_iter(), even.into_iter());
-        (1..=n).map(|i| if i % 2 == 1 { odd.next() } else { even.next() }.expect("one matrix per dimension")).collect()
-    } else {
-        (1..=n).map(matrix).collect()
-    };
+    // one task per dimension, on as many threads as the setting allows (∂_2, the largest
+    // in 3D, is taken second, so it starts at once on a second thread)
+    let mats: Vec<SparseMatrix> = parallel::map_tasks(n, map.dart_count(), |t| matrix(t + 1));
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
     debug_assert_eq!(chain.check_dd(), Ok::<(), ChainError>(()), "∂∂ = 0 under C1");
     let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();

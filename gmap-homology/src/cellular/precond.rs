@@ -10,8 +10,10 @@
 //!   orientable connected surface, a sphere exactly when its Euler characteristic is 2; for
 //!   `i >= 4` the homology of the compacted cell is computed by the simplicial method.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use bitvec::vec::BitVec;
-use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap, Partition};
+use gmap_core::{parallel, AlphaSet, CellDefect, Dart, DenseMap, Partition};
 use thiserror::Error;
 
 use crate::cellular::simplicial::simplicial_complex;
@@ -225,9 +227,9 @@ pub fn check_preconditions(map: &DenseMap) -> Result<Vec<OrientedCells>, Precond
 /// [`check_preconditions`] by one traversal per dimension ([`oriented_cells`] and
 /// [`check_c2`]), the reference for the ring walks of 3-maps.
 ///
-/// Maps of at least 65,536 darts are checked on two threads when the machine has them (the
-/// dimensions are shared out so that each thread walks about half of the darts' links); the
-/// error reported is the same as in order: the lowest failing dimension, C1 before C2.
+/// The dimensions are checked as separate tasks on the threads `gmap_core::parallel` allows
+/// (maps of at least 65,536 darts); the error reported is the same as in order: the lowest
+/// failing dimension, C1 before C2.
 pub fn check_by_dimension(map: &DenseMap) -> Result<Vec<OrientedCells>, PreconditionError> {
     let n = map.dim();
     let check = |i: usize| -> Result<OrientedCells, PreconditionError> {
@@ -235,36 +237,22 @@ pub fn check_by_dimension(map: &DenseMap) -> Result<Vec<OrientedCells>, Precondi
         check_c2(map, &c)?;
         Ok(c)
     };
-    let two = map.dart_count() >= 1 << 16 && n >= 1 && std::thread::available_parallelism().is_ok_and(|p| p.get() >= 2);
-    if !two {
-        return (0..=n).map(check).collect();
-    }
-    // dimensions 0 and n on one side (vertices walk far, n-cells stay local), the rest on the other
-    let (mine, theirs): (Vec<usize>, Vec<usize>) = (0..=n).partition(|&i| i == 0 || i == n || (i % 2 == 1 && n > 3));
-    let run = |dims: &[usize]| -> Vec<(usize, Result<OrientedCells, PreconditionError>)> {
-        let mut out = Vec::with_capacity(dims.len());
-        for &i in dims {
-            let r = check(i);
-            let failed = r.is_err();
-            out.push((i, r));
-            if failed {
-                break;
-            }
+    // one task per dimension; a dimension above one that already failed is skipped, since
+    // the lowest failing dimension is the one reported
+    let failed = AtomicUsize::new(usize::MAX);
+    let results = parallel::map_tasks(n + 1, map.dart_count(), |i| {
+        if failed.load(Ordering::Relaxed) < i {
+            return None;
         }
-        out
-    };
-    let (a, b) = std::thread::scope(|s| {
-        let h = s.spawn(|| run(&theirs));
-        let a = run(&mine);
-        (a, h.join())
+        let r = check(i);
+        if r.is_err() {
+            failed.fetch_min(i, Ordering::Relaxed);
+        }
+        Some(r)
     });
-    let b = b.unwrap_or_else(|e| std::panic::resume_unwind(e));
-    let mut all: Vec<(usize, Result<OrientedCells, PreconditionError>)> = a.into_iter().chain(b).collect();
-    all.sort_by_key(|x| x.0);
     let mut out = Vec::with_capacity(n + 1);
-    for (i, r) in all {
-        debug_assert_eq!(i, out.len());
-        out.push(r?);
+    for r in results {
+        out.push(r.expect("a dimension is skipped only above a failed one, reported before it")?);
     }
     Ok(out)
 }
