@@ -1,6 +1,7 @@
 //! LAR, the Linear Algebraic Representation of cell complexes (LAR lecture): every p-cell
 //! is the set of its vertices, and the *characteristic matrix* `M_p` (one row per p-cell,
-//! one column per vertex, 1 where the vertex belongs to the cell) is stored in CSR.
+//! one column per vertex, 1 where the vertex belongs to the cell) is a [`SparseMatrix`], the
+//! engine's own.
 //! Topological queries are sparse products:
 //! * `M_{p-1} M_p^T` counts the common vertices of a (p-1)-cell and a p-cell; the *count
 //!   rule* keeps a 1 where the count equals the size of the (p-1)-cell: the unsigned
@@ -15,11 +16,11 @@
 //! (really 2, signed 0) reads 1.
 //!
 //! ```
-//! use gmap_homology::lar::{Csr, Lar};
+//! use gmap_homology::lar::{characteristic_matrix, Lar};
 //! // a triangle: vertices 0, 1, 2; edges {0,1}, {1,2}, {0,2}; one face
 //! let lar = Lar::from_cells(3, vec![
-//!     Csr::from_rows(3, &[vec![0, 1], vec![1, 2], vec![0, 2]]).unwrap(),
-//!     Csr::from_rows(3, &[vec![0, 1, 2]]).unwrap(),
+//!     characteristic_matrix(3, &[vec![0, 1], vec![1, 2], vec![0, 2]]).unwrap(),
+//!     characteristic_matrix(3, &[vec![0, 1, 2]]).unwrap(),
 //! ]).unwrap();
 //! // the face's boundary is its three edges
 //! assert_eq!(lar.unsigned_boundary(2).unwrap().to_dense(), vec![vec![1], vec![1], vec![1]]);
@@ -29,6 +30,8 @@ use std::fmt::Write as _;
 
 use gmap_core::DenseMap;
 use thiserror::Error;
+
+use crate::engine::sparse::SparseMatrix;
 
 /// Why LAR data is malformed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -58,136 +61,43 @@ pub enum LarError {
     },
 }
 
-/// A sparse integer matrix in compressed sparse row form: row `i` holds the column indices
-/// `indices[offsets[i]..offsets[i + 1]]` (strictly increasing) with their values.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Csr {
-    rows: usize,
-    cols: usize,
-    offsets: Vec<usize>,
-    indices: Vec<u32>,
-    values: Vec<i64>,
+/// The characteristic matrix of cells given by their vertex sets: row `i` has a 1 in the
+/// columns of `rows[i]` (sorted and deduplicated here). Fails if a vertex is `>= vertices`.
+/// O(nnz log + vertices).
+pub fn characteristic_matrix(vertices: usize, rows: &[Vec<u32>]) -> Result<SparseMatrix, LarError> {
+    // the transpose has the vertex sets as columns: build it, then turn it over
+    let mut col_ptr = Vec::with_capacity(rows.len() + 1);
+    col_ptr.push(0);
+    let mut row_idx = Vec::new();
+    for (i, r) in rows.iter().enumerate() {
+        let mut r = r.clone();
+        r.sort_unstable();
+        r.dedup();
+        if let Some(&v) = r.iter().find(|&&v| v as usize >= vertices) {
+            return Err(LarError::VertexOutOfRange { dim: 0, cell: i, vertex: v, vertices });
+        }
+        row_idx.extend_from_slice(&r);
+        col_ptr.push(row_idx.len());
+    }
+    let vals = vec![1; row_idx.len()];
+    let t = SparseMatrix::try_from_csc(vertices, rows.len(), col_ptr, row_idx, vals)
+        .expect("vertex sets are sorted, distinct and in range");
+    Ok(t.transpose())
 }
 
-impl Csr {
-    /// A 0/1 matrix from the column sets of its rows (sorted and deduplicated here).
-    /// Fails if a column is `>= cols`. O(nnz log).
-    pub fn from_rows(cols: usize, rows: &[Vec<u32>]) -> Result<Csr, LarError> {
-        let mut offsets = Vec::with_capacity(rows.len() + 1);
-        offsets.push(0);
-        let mut indices = Vec::new();
-        for (i, r) in rows.iter().enumerate() {
-            let mut r = r.clone();
-            r.sort_unstable();
-            r.dedup();
-            if let Some(&v) = r.iter().find(|&&v| v as usize >= cols) {
-                return Err(LarError::VertexOutOfRange { dim: 0, cell: i, vertex: v, vertices: cols });
-            }
-            indices.extend_from_slice(&r);
-            offsets.push(indices.len());
-        }
-        let values = vec![1; indices.len()];
-        Ok(Csr { rows: rows.len(), cols, offsets, indices, values })
-    }
+/// `a · b`, checked. The shapes agree by construction.
+fn mul(a: &SparseMatrix, b: &SparseMatrix) -> Result<SparseMatrix, LarError> {
+    debug_assert_eq!(a.cols(), b.rows(), "shapes of a product");
+    a.checked_mul(b).ok_or(LarError::Overflow)
+}
 
-    /// The `n × n` identity.
-    pub fn identity(n: usize) -> Csr {
-        Csr { rows: n, cols: n, offsets: (0..=n).collect(), indices: (0..n as u32).collect(), values: vec![1; n] }
+/// The number of entries in each row of `m`. O(nnz + rows).
+fn row_lengths(m: &SparseMatrix) -> Vec<usize> {
+    let mut len = vec![0usize; m.rows()];
+    for (i, _, _) in m.iter() {
+        len[i] += 1;
     }
-
-    /// Number of rows.
-    pub fn rows(&self) -> usize {
-        self.rows
-    }
-
-    /// Number of columns.
-    pub fn cols(&self) -> usize {
-        self.cols
-    }
-
-    /// Number of stored entries.
-    pub fn nnz(&self) -> usize {
-        self.indices.len()
-    }
-
-    /// Row `i`: its column indices and values.
-    pub fn row(&self, i: usize) -> (&[u32], &[i64]) {
-        let r = self.offsets[i]..self.offsets[i + 1];
-        (&self.indices[r.clone()], &self.values[r])
-    }
-
-    /// The entry at `(i, j)` (0 if not stored). O(log row length).
-    pub fn get(&self, i: usize, j: usize) -> i64 {
-        let (c, v) = self.row(i);
-        c.binary_search(&(j as u32)).map_or(0, |k| v[k])
-    }
-
-    /// The transpose. O(nnz + rows + cols).
-    pub fn transpose(&self) -> Csr {
-        let mut offsets = vec![0usize; self.cols + 1];
-        for &j in &self.indices {
-            offsets[j as usize + 1] += 1;
-        }
-        for k in 0..self.cols {
-            offsets[k + 1] += offsets[k];
-        }
-        let mut fill = offsets.clone();
-        let mut indices = vec![0u32; self.indices.len()];
-        let mut values = vec![0i64; self.indices.len()];
-        for i in 0..self.rows {
-            let (c, v) = self.row(i);
-            for (&j, &x) in c.iter().zip(v) {
-                let p = fill[j as usize];
-                indices[p] = i as u32;
-                values[p] = x;
-                fill[j as usize] += 1;
-            }
-        }
-        Csr { rows: self.cols, cols: self.rows, offsets, indices, values }
-    }
-
-    /// The product `self · other`, checked (Gustavson's row-by-row algorithm). Zeros are
-    /// not stored. O(flops + rows + cols).
-    pub fn mul(&self, other: &Csr) -> Result<Csr, LarError> {
-        assert_eq!(self.cols, other.rows, "shapes do not agree for a product");
-        let mut acc = vec![0i64; other.cols];
-        let mut mark = vec![false; other.cols];
-        let mut touched: Vec<u32> = Vec::new();
-        let mut offsets = Vec::with_capacity(self.rows + 1);
-        offsets.push(0);
-        let (mut indices, mut values) = (Vec::new(), Vec::new());
-        for i in 0..self.rows {
-            let (c, v) = self.row(i);
-            for (&h, &a) in c.iter().zip(v) {
-                let (c2, v2) = other.row(h as usize);
-                for (&j, &b) in c2.iter().zip(v2) {
-                    let p = a.checked_mul(b).ok_or(LarError::Overflow)?;
-                    acc[j as usize] = acc[j as usize].checked_add(p).ok_or(LarError::Overflow)?;
-                    if !mark[j as usize] {
-                        mark[j as usize] = true;
-                        touched.push(j);
-                    }
-                }
-            }
-            touched.sort_unstable();
-            for &j in &touched {
-                if acc[j as usize] != 0 {
-                    indices.push(j);
-                    values.push(acc[j as usize]);
-                }
-                acc[j as usize] = 0;
-                mark[j as usize] = false;
-            }
-            touched.clear();
-            offsets.push(indices.len());
-        }
-        Ok(Csr { rows: self.rows, cols: other.cols, offsets, indices, values })
-    }
-
-    /// The dense form, row by row (for tests and small matrices).
-    pub fn to_dense(&self) -> Vec<Vec<i64>> {
-        (0..self.rows).map(|i| (0..self.cols).map(|j| self.get(i, j)).collect()).collect()
-    }
+    len
 }
 
 /// The nine incidence/adjacency operators of a 2-complex (LAR, Table 1).
@@ -224,15 +134,15 @@ impl LarOp {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Lar {
     vertices: usize,
-    cells: Vec<Csr>,
+    cells: Vec<SparseMatrix>,
 }
 
 impl Lar {
     /// From characteristic matrices `cells[p - 1] = M_p`; each must have `vertices` columns.
-    pub fn from_cells(vertices: usize, cells: Vec<Csr>) -> Result<Lar, LarError> {
+    pub fn from_cells(vertices: usize, cells: Vec<SparseMatrix>) -> Result<Lar, LarError> {
         for (p, m) in cells.iter().enumerate() {
-            if m.cols != vertices {
-                return Err(LarError::VertexOutOfRange { dim: p + 1, cell: 0, vertex: m.cols as u32, vertices });
+            if m.cols() != vertices {
+                return Err(LarError::VertexOutOfRange { dim: p + 1, cell: 0, vertex: m.cols() as u32, vertices });
             }
         }
         Ok(Lar { vertices, cells })
@@ -250,7 +160,7 @@ impl Lar {
             for d in map.darts() {
                 rows[c.of[d.index()] as usize].push(v.of[d.index()]);
             }
-            cells.push(Csr::from_rows(v.len(), &rows).expect("0-cell numbers are in range"));
+            cells.push(characteristic_matrix(v.len(), &rows).expect("0-cell numbers are in range"));
         }
         Lar { vertices: v.len(), cells }
     }
@@ -266,9 +176,9 @@ impl Lar {
     }
 
     /// `M_p` (the identity for p = 0). Panics if `p > n`.
-    pub fn characteristic(&self, p: usize) -> Csr {
+    pub fn characteristic(&self, p: usize) -> SparseMatrix {
         if p == 0 {
-            Csr::identity(self.vertices)
+            SparseMatrix::identity(self.vertices)
         } else {
             self.cells[p - 1].clone()
         }
@@ -276,52 +186,47 @@ impl Lar {
 
     /// `M_{p-1,p} = M_{p-1} M_p^T`: entry (i, j) is the number of common vertices of the
     /// (p-1)-cell i and the p-cell j. `1 <= p <= n`.
-    pub fn incidence(&self, p: usize) -> Result<Csr, LarError> {
+    pub fn incidence(&self, p: usize) -> Result<SparseMatrix, LarError> {
         if p == 0 || p > self.dim() {
             return Err(LarError::NoSuchDimension { p, n: self.dim() });
         }
-        self.characteristic(p - 1).mul(&self.characteristic(p).transpose())
+        mul(&self.characteristic(p - 1), &self.characteristic(p).transpose())
     }
 
     /// The unsigned boundary `[∂_p]` by the count rule: 1 where the p-cell holds every
     /// vertex of the (p-1)-cell, i.e. `M_{p-1,p}(i, j) = #μ_i`. Rows: (p-1)-cells;
     /// columns: p-cells. O(cost of the product).
-    pub fn unsigned_boundary(&self, p: usize) -> Result<Csr, LarError> {
+    pub fn unsigned_boundary(&self, p: usize) -> Result<SparseMatrix, LarError> {
         let m = self.incidence(p)?;
-        let lower = self.characteristic(p - 1);
-        let mut offsets = vec![0usize];
-        let (mut indices, mut values) = (Vec::new(), Vec::new());
-        for i in 0..m.rows {
-            let size = lower.row(i).0.len() as i64;
-            let (c, v) = m.row(i);
-            for (&j, &x) in c.iter().zip(v) {
-                if x == size {
-                    indices.push(j);
-                    values.push(1);
-                }
-            }
-            offsets.push(indices.len());
+        let size = row_lengths(&self.characteristic(p - 1));
+        let mut col_ptr = vec![0usize];
+        let mut row_idx = Vec::new();
+        for j in 0..m.cols() {
+            let (r, v) = m.col(j);
+            row_idx.extend(r.iter().zip(v).filter(|&(&i, &x)| x == size[i as usize] as i64).map(|(&i, _)| i));
+            col_ptr.push(row_idx.len());
         }
-        Ok(Csr { rows: m.rows, cols: m.cols, offsets, indices, values })
+        let vals = vec![1; row_idx.len()];
+        Ok(SparseMatrix::try_from_csc(m.rows(), m.cols(), col_ptr, row_idx, vals).expect("a subset of a valid matrix"))
     }
 
     /// One of the nine operators of LAR Table 1 (needs n >= 2; `M_2` is the 2-cells).
-    pub fn operator(&self, op: LarOp) -> Result<Csr, LarError> {
+    pub fn operator(&self, op: LarOp) -> Result<SparseMatrix, LarError> {
         if self.dim() < 2 {
             return Err(LarError::NoSuchDimension { p: 2, n: self.dim() });
         }
         let m1 = &self.cells[0];
         let m2 = &self.cells[1];
         Ok(match op {
-            LarOp::VV => m1.transpose().mul(m1)?,
+            LarOp::VV => mul(&m1.transpose(), m1)?,
             LarOp::VE => m1.transpose(),
             LarOp::VF => m2.transpose(),
             LarOp::EV => m1.clone(),
-            LarOp::EE => m1.mul(&m1.transpose())?,
-            LarOp::EF => m1.mul(&m2.transpose())?,
+            LarOp::EE => mul(m1, &m1.transpose())?,
+            LarOp::EF => mul(m1, &m2.transpose())?,
             LarOp::FV => m2.clone(),
-            LarOp::FE => m2.mul(&m1.transpose())?,
-            LarOp::FF => m2.mul(&m2.transpose())?,
+            LarOp::FE => mul(m2, &m1.transpose())?,
+            LarOp::FF => mul(m2, &m2.transpose())?,
         })
     }
 
@@ -330,13 +235,14 @@ impl Lar {
     /// `∂_p` lists, for every p-cell, the (p-1)-cells of its unsigned boundary.
     pub fn to_json(&self) -> Result<String, LarError> {
         let mut s = format!("{{\"dimension\": {}, \"vertices\": {},\n \"cells\": [", self.dim(), self.vertices);
-        let list = |s: &mut String, m: &Csr| {
+        // one list per column of `m`
+        let list = |s: &mut String, m: &SparseMatrix| {
             s.push('[');
-            for i in 0..m.rows {
+            for i in 0..m.cols() {
                 if i > 0 {
                     s.push_str(", ");
                 }
-                let (c, _) = m.row(i);
+                let (c, _) = m.col(i);
                 s.push('[');
                 for (k, j) in c.iter().enumerate() {
                     let _ = write!(s, "{}{j}", if k == 0 { "" } else { ", " });
@@ -349,14 +255,14 @@ impl Lar {
             if p > 0 {
                 s.push_str(",\n  ");
             }
-            list(&mut s, m);
+            list(&mut s, &m.transpose());
         }
         s.push_str("],\n \"boundary\": [");
         for p in 1..=self.dim() {
             if p > 1 {
                 s.push_str(",\n  ");
             }
-            list(&mut s, &self.unsigned_boundary(p)?.transpose());
+            list(&mut s, &self.unsigned_boundary(p)?);
         }
         s.push_str("]}\n");
         Ok(s)
