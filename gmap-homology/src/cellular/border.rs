@@ -9,9 +9,9 @@
 //! BO Def. 9 over the face-operator preimage, for all i-cells at once, multi-incidences
 //! included. [`crate::cellular::incidence::Incidence`] answers the same question pair by pair.
 
-use bitvec::vec::BitVec;
-use gmap_core::{parallel, AlphaSet, Dart, DenseMap};
+use gmap_core::{parallel, Dart, DenseMap};
 
+use crate::cellular::incidence::incidence_terms;
 use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
 use crate::engine::chain::{ChainComplex, ChainError};
 use crate::engine::sparse::SparseMatrix;
@@ -73,7 +73,7 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
         } else if i == 2 && n == 3 {
             sides(map, &oriented[2], &oriented[1])
         } else {
-            walks(map, i, &oriented[i], &oriented[i - 1])
+            incidence_terms(map, &oriented[i], &oriented[i - 1])
         };
         SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
             .expect("indices come from partitions of the same map; entries are small")
@@ -94,7 +94,7 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
     let counts: Vec<usize> = oriented.iter().map(|c| c.cells.len()).collect();
     let mats = (1..=n)
         .map(|i| {
-            let e = walks(map, i, &oriented[i], &oriented[i - 1]);
+            let e = incidence_terms(map, &oriented[i], &oriented[i - 1]);
             SparseMatrix::try_from_entries(counts[i - 1], counts[i], &e).expect("indices from partitions")
         })
         .collect();
@@ -157,49 +157,6 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
         for &x in &ring {
             if !folded || rows[x as usize][3] >= x {
                 out.push((edges.cells.of[x as usize], f as u32, s * edges.sign(x)));
-            }
-        }
-    }
-    out
-}
-
-/// `∂_i` by walking one element of `B_{i-1}` (a `<alpha_i..alpha_n>`-orbit) per
-/// (i-1)-cell and counting the elements of `B_i` met there (BO Def. 9 as written).
-fn walks(map: &DenseMap, i: usize, upper: &OrientedCells, lower: &OrientedCells) -> Vec<(u32, u32, i64)> {
-    let n = map.dim();
-    let w = n + 1;
-    let a = map.flat();
-    let mut seen: BitVec = BitVec::repeat(false, map.dart_count());
-    let mut orbit: Vec<u32> = Vec::new();
-    // B_i elements: a dart stands for its <alpha_{i+1..n}>-orbit
-    let b_rep: Option<Vec<u32>> = if i == n { None } else { Some(map.partition(AlphaSet::above(i, n)).of) };
-    let mut b_seen: Vec<bool> = if b_rep.is_some() { vec![false; map.dart_count()] } else { Vec::new() };
-    let mut out = Vec::new();
-    for (row, &d0) in lower.cells.reps.iter().enumerate() {
-        orbit.clear();
-        orbit.push(d0);
-        seen.set(d0 as usize, true);
-        let mut k = 0;
-        while k < orbit.len() {
-            let x = orbit[k] as usize;
-            k += 1;
-            for j in i..w {
-                let y = a[x * w + j];
-                if !seen[y as usize] {
-                    seen.set(y as usize, true);
-                    orbit.push(y);
-                }
-            }
-        }
-        let s = lower.sign(d0);
-        for &x in &orbit {
-            seen.set(x as usize, false);
-            let first = match &b_rep {
-                None => true,
-                Some(of) => !std::mem::replace(&mut b_seen[of[x as usize] as usize], true),
-            };
-            if first {
-                out.push((row as u32, upper.cells.of[x as usize], upper.sign(x) * s));
             }
         }
     }

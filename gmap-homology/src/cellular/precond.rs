@@ -13,7 +13,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use bitvec::vec::BitVec;
-use gmap_core::{parallel, AlphaSet, CellDefect, Dart, DenseMap, Partition};
+use gmap_core::{parallel, AlphaSet, CellDefect, CompactedCells, DenseMap, Partition};
 use thiserror::Error;
 
 use crate::cellular::simplicial::simplicial_complex;
@@ -104,11 +104,11 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         return check_chi(&chi, cells);
     }
-    // i >= 4: build every compacted cell as an (i-1)-map and compute its homology
-    let b = map.partition(AlphaSet::above(i, n));
+    // i >= 4: every compacted cell as an (i-1)-map, and its homology
+    let b = CompactedCells::new(map, i);
     let mut elems_of_cell: Vec<Vec<u32>> = vec![Vec::new(); ncells];
-    for (e, &r) in b.reps.iter().enumerate() {
-        elems_of_cell[cells.cells.of[r as usize] as usize].push(e as u32);
+    for (e, &c) in b.cell_of.iter().enumerate() {
+        elems_of_cell[c as usize].push(e as u32);
     }
     let mut local = vec![u32::MAX; b.len()];
     for (c, elems) in elems_of_cell.iter().enumerate() {
@@ -117,11 +117,7 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let mut flat = Vec::with_capacity(elems.len() * i);
         for &e in elems {
-            let r = b.reps[e as usize];
-            for k in 0..i {
-                let t = b.of[map.alpha(Dart(r), k).index()];
-                flat.push(local[t as usize]);
-            }
+            flat.extend((0..i).map(|k| local[b.alpha(e, k) as usize]));
         }
         let sub = DenseMap::from_flat_unchecked(i - 1, flat).map_err(|e| PreconditionError::C2 {
             dim: i,

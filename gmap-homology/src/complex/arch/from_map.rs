@@ -1,10 +1,12 @@
 //! The architectural complex of a G-map's cells (AC Remark 3.3), weighted by signed
 //! incidence numbers (BO Def. 9).
 
-use gmap_core::{AlphaSet, CellDefect, DenseMap};
+use gmap_core::{CellDefect, DenseMap};
 use thiserror::Error;
 
 use super::{ArchComplex, ArchError, Region};
+use crate::cellular::incidence::incidence_terms;
+use crate::cellular::precond::{oriented_cells, OrientedCells};
 
 /// Why the cells of a G-map do not give an architectural complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -49,65 +51,44 @@ impl CellIncidence {
 /// Every adherent pair of i-cells and (i-1)-cells of a valid G-map with its incidence
 /// counts, sorted by `(upper, lower)`. Needs every i-cell and (i-1)-cell orientable as a
 /// compacted cell (condition C1), else returns the defect naming the cell. `1 <= i <= n`.
-/// O(N (n + log N)).
+/// O(N n + terms log terms).
 pub fn cell_incidences(map: &DenseMap, i: usize) -> Result<Vec<CellIncidence>, CellDefect> {
     assert!(i >= 1 && i <= map.dim(), "incidences need 1 <= i <= n");
-    Ok(incidences_between(&DimData::new(map, i)?, &DimData::new(map, i - 1)?))
+    let upper = oriented_cells(map, i)?;
+    let lower = oriented_cells(map, i - 1)?;
+    Ok(counted_by_sign(map, &upper, &lower))
 }
 
-/// [`cell_incidences`] for every `i = 1..=n` (`result[i - 1]`), computing the cells, the
-/// elements of `B_i` and the orientation of each dimension once. O(N n (n + log N)).
+/// [`cell_incidences`] for every `i = 1..=n` (`result[i - 1]`), orienting the cells of each
+/// dimension once. O(N n^2 + terms log terms).
 pub fn all_cell_incidences(map: &DenseMap) -> Result<Vec<Vec<CellIncidence>>, CellDefect> {
     let mut out = Vec::with_capacity(map.dim());
-    let mut lo = DimData::new(map, 0)?;
+    let mut lower = oriented_cells(map, 0)?;
     for i in 1..=map.dim() {
-        let hi = DimData::new(map, i)?;
-        out.push(incidences_between(&hi, &lo));
-        lo = hi;
+        let upper = oriented_cells(map, i)?;
+        out.push(counted_by_sign(map, &upper, &lower));
+        lower = upper;
     }
     Ok(out)
 }
 
-/// What the incidences need of one dimension k: the k-cells, the elements of `B_k`
-/// (`<alpha_{k+1..n}>`-orbits) and the orientation of every k-cell (C1).
-struct DimData {
-    pos: bitvec::vec::BitVec,
-    cells: gmap_core::Partition,
-    b: gmap_core::Partition,
-}
-
-impl DimData {
-    fn new(map: &DenseMap, k: usize) -> Result<DimData, CellDefect> {
-        Ok(DimData {
-            pos: map.cell_orientation(k)?,
-            cells: map.cells(k),
-            b: map.partition(AlphaSet::above(k, map.dim())),
-        })
-    }
-}
-
-fn incidences_between(hi: &DimData, lo: &DimData) -> Vec<CellIncidence> {
-    // the fixed element of B_{i-1} of each (i-1)-cell: the one holding its smallest dart
-    let chosen: Vec<u32> = lo.cells.reps.iter().map(|&r| lo.b.of[r as usize]).collect();
-    // both cells are unions of B_i elements, so one dart per element gives every pair
-    let mut pairs: Vec<(u32, u32)> =
-        hi.b.reps.iter().map(|&r| (hi.cells.of[r as usize], lo.cells.of[r as usize])).collect();
-    pairs.sort_unstable();
-    pairs.dedup();
-    let mut out: Vec<CellIncidence> =
-        pairs.iter().map(|&(upper, lower)| CellIncidence { upper, lower, plus: 0, minus: 0 }).collect();
-    for &r in &hi.b.reps {
-        let d = r as usize;
-        let f = lo.cells.of[d];
-        if lo.b.of[d] != chosen[f as usize] {
-            continue;
+/// The terms of BO Def. 9 ([`incidence_terms`]) counted by pair and sign; every adherent
+/// pair has a term.
+fn counted_by_sign(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCells) -> Vec<CellIncidence> {
+    let mut terms: Vec<(u32, u32, bool)> =
+        incidence_terms(map, upper, lower).into_iter().map(|(lo, up, s)| (up, lo, s > 0)).collect();
+    terms.sort_unstable();
+    let mut out: Vec<CellIncidence> = Vec::new();
+    for (upper, lower, positive) in terms {
+        match out.last_mut() {
+            Some(c) if (c.upper, c.lower) == (upper, lower) => {}
+            _ => out.push(CellIncidence { upper, lower, plus: 0, minus: 0 }),
         }
-        let c = hi.cells.of[d];
-        let k = pairs.binary_search(&(c, f)).expect("a dart's own pair is adherent");
-        if hi.pos[d] == lo.pos[d] {
-            out[k].plus += 1;
+        let c = out.last_mut().expect("pushed above");
+        if positive {
+            c.plus += 1;
         } else {
-            out[k].minus += 1;
+            c.minus += 1;
         }
     }
     out
