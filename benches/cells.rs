@@ -1,37 +1,22 @@
 //! Kernel speed on the 40³ hexahedral grid (3,072,000 darts), to compare side by side with
-//! CGAL's Generalized_map (`../shared/anchors/run-cgal.sh FILE`):
+//! CGAL's Generalized_map (`benches/anchors/run-cgal.sh FILE`):
 //! loading the `.gmap` file, counting the cells of every dimension plus the connected
 //! components, orientability (BO Def. 7) and validation (BO Def. 1).
 //!
-//! The grid is read from `$GMAP_GRID` (default `/work/grid40.gmap`); when missing it is made
-//! with `python3 ../shared/anchors/gmapgen.py cubegrid 3 40`. Without the file or the script
-//! the bench says so and measures nothing.
+//! The grid is read from `$GMAP_GRID` when set, else from `target/bench-data/grid40.gmap`
+//! (under `$CARGO_TARGET_DIR` when that is set); a missing file is written first by the
+//! library itself (`gmap_ops::build::grid`, `gmap_core::io::write_gmap`). Give CGAL's harness
+//! that same file. When the file can be neither read nor written the bench says so and
+//! measures nothing.
 //!
 //! `cargo bench --bench cells`
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
 use criterion::{criterion_group, criterion_main, Criterion};
 
-fn grid_path() -> Option<PathBuf> {
-    let path = PathBuf::from(std::env::var("GMAP_GRID").unwrap_or_else(|_| "/work/grid40.gmap".into()));
-    if path.exists() {
-        return Some(path);
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/gmapgen.py");
-    eprintln!("cells bench: generating {} with {}", path.display(), script.display());
-    let out = Command::new("python3").arg(&script).args(["cubegrid", "3", "40"]).output().ok()?;
-    if !out.status.success() {
-        eprintln!("cells bench: generator failed: {}", String::from_utf8_lossy(&out.stderr));
-        return None;
-    }
-    std::fs::write(&path, out.stdout).ok()?;
-    Some(path)
-}
+mod common;
 
 fn bench(c: &mut Criterion) {
-    let Some(path) = grid_path() else {
+    let Some(path) = common::grid_file("GMAP_GRID", 3, 40, false) else {
         eprintln!("cells bench: no grid file, nothing measured");
         return;
     };

@@ -4,18 +4,18 @@
 //!   3,072,000 darts) from the loaded map, by the cellular method (C1/C2 checks, border
 //!   operator, reduction) — against GUDHI's Z/2 homology of the Freudenthal triangulation
 //!   of the same grid, run in the same sitting by the anchor script
-//!   (`python3 ../shared/anchors/gudhi_grid.py 3 40 --periodic`); the ratio is printed;
+//!   (`python3 benches/anchors/gudhi_grid.py 3 40 --periodic`); the ratio is printed;
 //! * the same map by the simplicial counterpart (BO §6), for the ratio simplicial / cellular
 //!   (timed once, printed: it is too slow for criterion's repetitions);
 //! * `Hom_n9_655_compl_K4` (456,192 darts) by both methods.
 //!
-//! Inputs: `$GMAP_GRID_PERIODIC` (default `/work/grid40p.gmap`, made with
-//! `python3 ../shared/anchors/gmapgen.py cubegrid 3 40 --periodic` when missing) and
-//! `../shared/data/lutz/Hom_n9_655_compl_K4.facets`. A missing input is reported and skipped.
+//! Inputs: `$GMAP_GRID_PERIODIC` when set, else `target/bench-data/grid40p.gmap` (under
+//! `$CARGO_TARGET_DIR` when set), written first by the library's grid builder when missing;
+//! and `tests/data/lutz/Hom_n9_655_compl_K4.facets` (folder overridden by `$GMAP_LUTZ`). A
+//! missing input is reported and skipped.
 //!
 //! `cargo bench --bench homology`
 
-use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
@@ -23,20 +23,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use gmap_core::DenseMap;
 use gmap_homology::{cellular_complex, homology_z, homology_zp, simplicial_complex};
 
-fn grid_path() -> Option<PathBuf> {
-    let path = PathBuf::from(std::env::var("GMAP_GRID_PERIODIC").unwrap_or_else(|_| "/work/grid40p.gmap".into()));
-    if path.exists() {
-        return Some(path);
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/gmapgen.py");
-    let out = Command::new("python3").arg(&script).args(["cubegrid", "3", "40", "--periodic"]).output().ok()?;
-    if !out.status.success() {
-        eprintln!("homology bench: generator failed: {}", String::from_utf8_lossy(&out.stderr));
-        return None;
-    }
-    std::fs::write(&path, out.stdout).ok()?;
-    Some(path)
-}
+mod common;
 
 /// One timed run of each stage, printed before criterion's statistics.
 fn stages(name: &str, map: &DenseMap) {
@@ -68,7 +55,7 @@ fn stages(name: &str, map: &DenseMap) {
 /// the anchor script in this same sitting, three times: the medians `(build seconds,
 /// homology seconds)`, or `None` when python3 or gudhi is missing.
 fn gudhi_anchor() -> Option<(f64, f64)> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/gudhi_grid.py");
+    let script = common::anchor("gudhi_grid.py");
     let mut build = Vec::new();
     let mut hom = Vec::new();
     for _ in 0..3 {
@@ -102,7 +89,7 @@ fn median_secs(runs: usize, mut f: impl FnMut()) -> f64 {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("homology");
     g.sample_size(10);
-    match grid_path().map(|p| gmap_core::io::read_gmap(&p)) {
+    match common::grid_file("GMAP_GRID_PERIODIC", 3, 40, true).map(|p| gmap_core::io::read_gmap(&p)) {
         Some(Ok(map)) => {
             stages("grid40p", &map);
             let ours = median_secs(11, || {
@@ -128,7 +115,7 @@ fn bench(c: &mut Criterion) {
         Some(Err(e)) => eprintln!("homology bench: cannot read the grid: {e}"),
         None => eprintln!("homology bench: no grid file, grid not measured"),
     }
-    let hom = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/lutz/Hom_n9_655_compl_K4.facets");
+    let hom = common::lutz_dir().join("Hom_n9_655_compl_K4.facets");
     match gmap_ops::import::read_facets(&hom, None) {
         Ok(map) => {
             stages("Hom_n9_655_compl_K4", &map);

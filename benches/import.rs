@@ -2,16 +2,17 @@
 //! target < 2 s) and the Freudenthal triangulation of the 40³ grid (384,000 tetrahedra,
 //! 9,216,000 darts; target < 3 s), each from its file to a [`gmap_core::DenseMap`].
 //!
-//! `GMAP_LUTZ` names the folder of the Lutz files (default `../shared/data/lutz` beside the checkout); the
-//! grid's facets are written by this bench into a temporary folder (the same facets as
-//! `anchors/gudhi_grid.py 3 40 --facets`). A missing Lutz folder skips that benchmark.
+//! `GMAP_LUTZ` names the folder of the Lutz files (default: the workspace's `tests/data/lutz`);
+//! the grid's facets are written by this bench into a temporary folder (the same facets as
+//! `benches/anchors/gudhi_grid.py 3 40 --facets`). A missing Lutz file skips that benchmark.
 
 use std::fmt::Write as _;
-use std::path::PathBuf;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gmap_ops::import::read_facets;
+
+mod common;
 
 /// The Freudenthal (Kuhn) triangulation of a k³ grid of unit cubes: each cube splits into
 /// 6 tetrahedra, one per ordering of the axes, walking from its lowest to its highest
@@ -42,11 +43,7 @@ fn freudenthal_facets(k: usize) -> String {
 fn bench_import(c: &mut Criterion) {
     let mut g = c.benchmark_group("import");
     g.sample_size(10).warm_up_time(Duration::from_secs(1)).measurement_time(Duration::from_secs(15));
-    let lutz = PathBuf::from(
-        std::env::var("GMAP_LUTZ")
-            .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz").into()),
-    );
-    let s2p = lutz.join("S2xpoincare.facets");
+    let s2p = common::lutz_dir().join("S2xpoincare.facets");
     if s2p.exists() {
         g.bench_function("S2xpoincare", |b| {
             b.iter(|| {

@@ -5,7 +5,7 @@
 //!
 //! Inputs: the k³ periodic hexahedral grid (a 3-torus, 48·k³ darts, reduced to 48 darts:
 //! one vertex, three edges, three faces, one volume) and the Lutz 3-sphere `S_3_100_4850`
-//! (116,400 darts, reduced to 4). Before the measurements the bench prints the darts and
+//! (116,400 darts, reduced to 4; from `tests/data/lutz`, or `$GMAP_LUTZ`). Before the measurements the bench prints the darts and
 //! cells before and after each reduction.
 //!
 //! Run with `cargo bench --bench simplify`; `GMAP_BENCH_GRID=40` (default 20) sets k (the
@@ -18,6 +18,8 @@ use gmap_homology::{cellular_complex, homology_z};
 use gmap_ops::build::grid;
 use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
+
+mod common;
 
 fn direct(map: &gmap_core::DenseMap) -> Vec<usize> {
     let c = cellular_complex(map).expect("C1/C2");
@@ -52,8 +54,8 @@ fn bench(c: &mut Criterion) {
     g.bench_function(format!("torus{k}/direct_cellular"), |b| b.iter(|| direct(&torus)));
     g.bench_function(format!("torus{k}/simplify_then_cellular"), |b| b.iter(|| reduced(&torus)));
     g.bench_function(format!("torus{k}/simplify_only"), |b| b.iter(|| simplify(&torus)));
-    let lutz = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz/S_3_100_4850.facets"));
-    if let Ok(m) = read_facets(lutz, None) {
+    let lutz = common::lutz_dir().join("S_3_100_4850.facets");
+    if let Ok(m) = read_facets(&lutz, None) {
         describe("S_3_100_4850", &m);
         g.bench_function("S_3_100_4850/direct_cellular", |b| b.iter(|| direct(&m)));
         g.bench_function("S_3_100_4850/simplify_then_cellular", |b| b.iter(|| reduced(&m)));

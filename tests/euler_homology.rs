@@ -2,10 +2,11 @@
 //! each returned Euler–Poincaré vector equals the recomputed change of cells *and* of
 //! Betti numbers (simplicial counterpart, BO §6), and lies on the AC §4 hyperplane.
 
-use gmap_core::{DartId, DenseMap, GMap};
+use gmap_core::{DenseMap, GMap};
 use gmap_homology::{homology_z, simplicial_complex};
 use gmap_ops::build::{cube, grid, polygon, simplex};
 use gmap_ops::euler::ops::*;
+use gmap_ops::euler::random::{attempt_at, Operator};
 use gmap_ops::euler::EpVector;
 use proptest::prelude::*;
 
@@ -30,19 +31,10 @@ fn base(kind: u8) -> GMap {
     GMap::from_dense(&m).0
 }
 
+/// One operator of the six at a place given by numbers; its vector when it applied.
 fn step(g: &mut GMap, op: u8, p1: usize, p2: usize, dim: usize) -> Option<EpVector> {
-    let ds: Vec<DartId> = g.darts().collect();
-    let (d, e) = (ds[p1 % ds.len()], ds[p2 % ds.len()]);
-    let i = dim % (g.dim() + 1);
-    match op % 6 {
-        0 => try_insert_vertex(g, d).ok(),
-        1 => try_insert_edge(g, d, e).ok(),
-        2 => try_insert_dangling_edge(g, d).ok(),
-        3 => try_remove_cell(g, d, i).ok(),
-        4 => try_contract_cell(g, d, i).ok(),
-        _ => try_split_cell(g, &[d, e], i).ok(),
-    }
-    .map(|o| o.vector)
+    let op = Operator::ALL[op as usize % Operator::ALL.len()];
+    attempt_at(g, op, p1, p2, dim)?.result.ok().map(|o| o.vector)
 }
 
 #[test]

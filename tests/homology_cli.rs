@@ -94,7 +94,7 @@ fn parse_groups(s: &str) -> Option<(Vec<usize>, Vec<Vec<u64>>)> {
 }
 
 fn lutz_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data/lutz")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz")
 }
 
 /// A library entry: file, darts, Betti numbers, torsion (prime powers).

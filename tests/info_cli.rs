@@ -115,11 +115,11 @@ fn dart_count_mismatch() {
 fn index_out_of_range() {
     assert_eq!(
         bad("r.gmap", b"gmap 1 2\n0 0\n1 7\n", 3),
-        "not a G-map (BO Def. 1): dart 1: alpha_1 = 7 is out of range (the map has 2 darts)"
+        "not a G-map (BO Def. 1): dart 1 is linked along alpha_1 to dart 7, which does not exist (the map has 2 darts)"
     );
     assert_eq!(
         bad("r.moka", b"Moka file [ascii]\n0 0 0 0 0 0 0 0\n0 0 0 9 0 0 0 0 0\n", 3),
-        "not a G-map (BO Def. 1): dart 0: alpha_3 = 9 is out of range (the map has 1 darts)"
+        "not a G-map (BO Def. 1): dart 0 is linked along alpha_3 to dart 9, which does not exist (the map has 1 darts)"
     );
 }
 
@@ -127,7 +127,7 @@ fn index_out_of_range() {
 fn not_an_involution() {
     assert_eq!(
         bad("i.gmap", b"gmap 0 3\n1\n2\n0\n", 2),
-        "not a G-map (BO Def. 1): alpha_0 is not an involution: alpha_0(0) = 1 but alpha_0(1) = 2"
+        "not a G-map (BO Def. 1): dart 0 is linked along alpha_0 to dart 1, which is linked back to dart 2 instead"
     );
 }
 
@@ -135,7 +135,7 @@ fn not_an_involution() {
 fn alpha_i_alpha_j_not_an_involution() {
     assert_eq!(
         bad("c.gmap", b"gmap 2 4\n1 0 0\n0 1 2\n3 2 1\n2 3 3\n", 2),
-        "not a G-map (BO Def. 1): alpha_0 alpha_2 is not an involution at dart 0: (alpha_0 alpha_2)^2(0) = 3"
+        "not a G-map (BO Def. 1): the links alpha_0 and alpha_2 do not commute at dart 0: alpha_0, alpha_2, alpha_0, alpha_2 from it lead to dart 3, not back to it"
     );
 }
 

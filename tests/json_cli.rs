@@ -9,7 +9,9 @@ use gmap_homology::arch::ArchComplex;
 use gmap_homology::json::{read_json, write_json};
 use gmap_homology::{cellular_complex, homology_z, Homology};
 
-const LUTZ: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz");
+fn lutz_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz")
+}
 
 fn round_trip(name: &str, m: &DenseMap) -> Option<Homology> {
     let cellular = cellular_complex(m);
@@ -50,8 +52,8 @@ fn demo_objects_round_trip() {
 
 #[test]
 fn lutz_corpus_round_trip() {
-    let dir = Path::new(LUTZ);
-    assert!(dir.is_dir(), "{LUTZ} is missing");
+    let dir = lutz_dir();
+    assert!(dir.is_dir(), "{} is missing", dir.display());
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
     files.sort();
     let mut done = Vec::new();

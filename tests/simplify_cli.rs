@@ -10,7 +10,8 @@ fn homology(args: &[&str]) -> String {
 
 #[test]
 fn simplify_keeps_the_groups() {
-    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz/Hom_C5_K4.facets");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz/Hom_C5_K4.facets");
+    let file = path.to_str().expect("utf-8 path");
     let direct = homology(&[file, "--json"]);
     let reduced = homology(&[file, "--json", "--simplify"]);
     assert_eq!(direct, reduced);

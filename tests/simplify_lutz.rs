@@ -2,14 +2,14 @@
 //! boundary): the reduced map keeps the homology stated in each file's header, its cells
 //! satisfy C1/C2 (the cellular method accepts it), and it is smaller.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use gmap_homology::{cellular_complex, homology_z};
 use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
 fn lutz(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz")).join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
 }
 
 /// The homology in the header, normalised: `(Z,Z_2,0,Z)` → `(Z,Z/2,0,Z)`.
@@ -93,7 +93,7 @@ fn closed_three_manifolds() {
 fn four_manifolds() {
     exact("RP4.facets", &[1, 1, 1, 1, 1], 16);
     exact("CP2.facets", &[3, 3, 3, 1, 1], 80);
-    // K3: 34,560 darts -> 3,656 (10.6 %); see the module docs of `simplify` on why it stalls
+    // K3: 34,560 darts -> 3,656 (10.6 %); docs/SIMPLIFY.md says where and why it stops
     exact("K3_16.facets", &[11, 73, 107, 22, 1], 3656);
 }
 

@@ -2,7 +2,7 @@
 //! -- --ignored --nocapture` prints darts and cells before and after, the ratio, the time and
 //! whether the reduced map gives the homology stated in the file.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use gmap_homology::{cellular_complex, homology_z};
@@ -11,7 +11,7 @@ use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
 fn lutz(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/data/lutz")).join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
 }
 
 #[test]
@@ -75,10 +75,7 @@ fn grid_figures() {
 }
 
 /// Greedy runs and search rounds against the result (`GMAP_MEASURE_ONE`, default
-/// `triple_trefoil_arc`; `GMAP_SEED`). Measured for `triple_trefoil_arc` (2,328 darts), the
-/// library's seed: greedy runs alone give 208 darts with 8 runs, 164 with 128, 136 with 512
-/// (5.8 %); 8 runs and the default search of 4000 rounds give 32 (1.37 %). Over seeds 1 to
-/// 12 the default search ended at 4 darts ten times, 108 and 112 twice (4.6 %, 4.8 %).
+/// `triple_trefoil_arc`; `GMAP_SEED`). The figures measured are in docs/SIMPLIFY.md.
 #[test]
 #[ignore = "prints figures; run by hand in release"]
 fn tries_figures() {

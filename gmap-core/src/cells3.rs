@@ -27,6 +27,7 @@
 //! involutions) gives `None`, and the caller runs the generic traversal, which names the
 //! offending cell.
 
+use crate::dense::Dart;
 use crate::kernels::oriented_by;
 use crate::parallel;
 use crate::union_find::ParityUnionFind;
@@ -35,7 +36,7 @@ const NONE: u32 = u32::MAX;
 const BITS: usize = usize::BITS as usize;
 
 /// The partition, representatives and colour words of one dimension.
-pub(crate) type Cells = (Vec<u32>, Vec<u32>, Vec<usize>);
+pub(crate) type Cells = (Vec<u32>, Vec<Dart>, Vec<usize>);
 
 /// The oriented cells of dimensions 0 to 3 of a 3-map, and the Euler characteristic of the
 /// boundary of each volume; `None` when a cell is not of the shapes of the module docs.
@@ -133,7 +134,7 @@ fn glued(rows: &[[u32; 4]], a: usize, b: usize, fa: bool, fb: bool, every_pair: 
         let (root, f) = uf.find(r);
         if root == r {
             fin.push((reps.len() as u32, false));
-            reps.push(first[r as usize]);
+            reps.push(Dart(first[r as usize]));
         } else {
             fin.push((fin[root as usize].0, f));
         }

@@ -31,11 +31,11 @@ impl CompactedCells {
         let mut induced = Vec::with_capacity(orbits.len() * i);
         for &r in &orbits.reps {
             for k in 0..i {
-                induced.push(orbits.of[map.alpha(Dart(r), k).index()]);
+                induced.push(orbits.of[map.alpha(r, k).index()]);
             }
         }
         let cells = map.cells(i);
-        let cell_of = orbits.reps.iter().map(|&r| cells.of[r as usize]).collect();
+        let cell_of = orbits.reps.iter().map(|&r| cells.of[r.index()]).collect();
         CompactedCells { dim: i, orbits, induced, cell_of }
     }
 
@@ -76,7 +76,7 @@ impl FaceOperator {
     /// Builds `∂_i` from the compacted cells of dimensions i and i-1. O(|B_i| + |B_{i-1}|).
     pub fn new(upper: &CompactedCells, lower: &CompactedCells) -> Self {
         assert_eq!(upper.dim, lower.dim + 1);
-        let image: Vec<u32> = upper.orbits.reps.iter().map(|&r| lower.orbits.of[r as usize]).collect();
+        let image: Vec<u32> = upper.orbits.reps.iter().map(|&r| lower.orbits.of[r.index()]).collect();
         let mut pre_offsets = vec![0usize; lower.len() + 1];
         for &t in &image {
             pre_offsets[t as usize + 1] += 1;

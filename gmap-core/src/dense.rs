@@ -16,6 +16,18 @@ use crate::error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityErro
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Dart(pub u32);
 
+impl std::fmt::Display for Dart {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl From<Dart> for usize {
+    fn from(d: Dart) -> usize {
+        d.0 as usize
+    }
+}
+
 impl Dart {
     /// The index as `usize`.
     #[inline]
@@ -38,13 +50,50 @@ pub struct Partition {
     /// orbit number of each dart
     pub of: Vec<u32>,
     /// smallest dart of each orbit
-    pub reps: Vec<u32>,
+    pub reps: Vec<Dart>,
+}
+
+/// The number of a cell (an orbit) in a [`Partition`]: `0..len`, in the order of the
+/// cells' smallest darts. `Partition::of` holds these numbers as bare `u32` for the
+/// whole-map loops that index arrays by them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct CellId(pub u32);
+
+impl CellId {
+    /// The number as `usize`.
+    #[inline]
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+impl std::fmt::Display for CellId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
 }
 
 impl Partition {
     /// Number of orbits.
     pub fn len(&self) -> usize {
         self.reps.len()
+    }
+
+    /// The orbit (cell) of dart `d`.
+    #[inline]
+    pub fn cell_of(&self, d: Dart) -> CellId {
+        CellId(self.of[d.index()])
+    }
+
+    /// The smallest dart of orbit `c`.
+    #[inline]
+    pub fn rep(&self, c: CellId) -> Dart {
+        self.reps[c.index()]
+    }
+
+    /// The orbits' numbers, `0..len`.
+    pub fn cell_ids(&self) -> impl Iterator<Item = CellId> {
+        (0..self.reps.len() as u32).map(CellId)
     }
 
     /// Whether there is no orbit (the map has no dart).
@@ -74,7 +123,7 @@ impl Partition {
 
 /// A kernel's oriented cells `(cell of each dart, smallest darts, colour words)` of a map of
 /// `n` darts as a partition and a bit per dart.
-fn oriented_parts((of, reps, words): (Vec<u32>, Vec<u32>, Vec<usize>), n: usize) -> (Partition, BitVec) {
+fn oriented_parts((of, reps, words): (Vec<u32>, Vec<Dart>, Vec<usize>), n: usize) -> (Partition, BitVec) {
     let mut pos: BitVec = BitVec::from_vec(words);
     pos.truncate(n);
     (Partition { of, reps }, pos)
@@ -290,11 +339,21 @@ impl DenseMap {
             let row = &a[d * w..(d + 1) * w];
             for (i, &e) in row.iter().enumerate() {
                 if e as usize >= n {
-                    return Err(ValidityError::OutOfRange { dart: d as u32, alpha: i, target: e, darts: n });
+                    return Err(ValidityError::OutOfRange {
+                        dart: Dart(d as u32),
+                        alpha: i,
+                        target: Dart(e),
+                        darts: n,
+                    });
                 }
                 let back = a[e as usize * w + i];
                 if back as usize != d {
-                    return Err(ValidityError::NotInvolution { dart: d as u32, alpha: i, image: e, back });
+                    return Err(ValidityError::NotInvolution {
+                        dart: Dart(d as u32),
+                        alpha: i,
+                        image: Dart(e),
+                        back: Dart(back),
+                    });
                 }
             }
         }
@@ -306,7 +365,7 @@ impl DenseMap {
                     let x = a[x * w + i] as usize;
                     let x = a[x * w + j];
                     if x as usize != d {
-                        return Err(ValidityError::NotCommuting { dart: d as u32, i, j, image: x });
+                        return Err(ValidityError::NotCommuting { dart: Dart(d as u32), i, j, image: Dart(x) });
                     }
                 }
             }
@@ -362,7 +421,7 @@ impl DenseMap {
                 continue;
             }
             let id = reps.len() as u32;
-            reps.push(d as u32);
+            reps.push(Dart(d as u32));
             of[d] = id;
             stack.push(d as u32);
             while let Some(x) = stack.pop() {
@@ -429,8 +488,7 @@ impl DenseMap {
     /// where the smallest dart of each component is positive and `alpha_i` changes the
     /// class of every dart it does not fix. Fails with the first conflict found.
     pub fn orientation(&self) -> Result<BitVec, OrientationConflict> {
-        let col = crate::kernels::orientation(&self.alpha, self.dim + 1)
-            .map_err(|(dart, alpha, other)| OrientationConflict { dart, alpha, other })?;
+        let col = crate::kernels::orientation(&self.alpha, self.dim + 1)?;
         Ok(col.iter().map(|&c| c == 1).collect())
     }
 
@@ -446,7 +504,7 @@ impl DenseMap {
         for d in self.darts() {
             for i in 0..n {
                 if self.is_free(d, i) {
-                    return Err(BoundaryDefect::Free { dart: d.0, alpha: i });
+                    return Err(BoundaryDefect::Free { dart: d, alpha: i });
                 }
             }
         }
@@ -458,7 +516,7 @@ impl DenseMap {
             pairs.sort_unstable();
             for win in pairs.windows(2) {
                 if win[0].0 == win[1].0 {
-                    return Err(BoundaryDefect::SelfBending { dart: win[0].1, i, other: win[1].1 });
+                    return Err(BoundaryDefect::SelfBending { dart: Dart(win[0].1), i, other: Dart(win[1].1) });
                 }
             }
         }
@@ -470,7 +528,7 @@ impl DenseMap {
         self.check_complete_boundaries().is_ok()
     }
 
-    /// Orients every i-cell as a compacted cell (condition C1 of DESIGN.md): a bit per dart,
+    /// Orients every i-cell as a compacted cell (condition C1, docs/DESIGN.md): a bit per dart,
     /// set for the positive class, such that `alpha_k` flips the class for `k < i` and
     /// `alpha_j` keeps it for `j > i`; the smallest dart of each i-cell is positive.
     /// Fails, naming the cell, where a dart is k-free for some `k < i` or the colouring
@@ -485,11 +543,7 @@ impl DenseMap {
     pub fn oriented_cells(&self, i: usize) -> Result<(Partition, BitVec), CellDefect> {
         assert!(i <= self.dim, "cell dimension {i} > map dimension {}", self.dim);
         let n = self.dart_count();
-        match crate::kernels::oriented_cells(&self.alpha, self.dim + 1, i) {
-            Ok(cells) => Ok(oriented_parts(cells, n)),
-            Err((d, k, _, true)) => Err(CellDefect::IncompleteBoundary { dim: i, dart: d, alpha: k }),
-            Err((d, k, at, false)) => Err(CellDefect::NotOrientable { dim: i, dart: d, alpha: k, at }),
-        }
+        crate::kernels::oriented_cells(&self.alpha, self.dim + 1, i).map(|cells| oriented_parts(cells, n))
     }
 
     /// The oriented cells of every dimension of a 3-map and the Euler characteristic of the

@@ -2,44 +2,48 @@
 
 use thiserror::Error;
 
+use crate::dense::Dart;
+
 /// A violation of BO Def. 1 (the G-map axioms), as found by `validate`.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum ValidityError {
     /// `alpha_i(d)` names a dart that does not exist.
-    #[error("dart {dart}: alpha_{alpha} = {target} is out of range (the map has {darts} darts)")]
+    #[error(
+        "dart {dart} is linked along alpha_{alpha} to dart {target}, which does not exist (the map has {darts} darts)"
+    )]
     OutOfRange {
         /// the dart whose link is wrong
-        dart: u32,
+        dart: Dart,
         /// the involution index
         alpha: usize,
         /// the value found
-        target: u32,
+        target: Dart,
         /// the number of darts
         darts: usize,
     },
     /// `alpha_i(alpha_i(d)) != d`.
-    #[error("alpha_{alpha} is not an involution: alpha_{alpha}({dart}) = {image} but alpha_{alpha}({image}) = {back}")]
+    #[error("dart {dart} is linked along alpha_{alpha} to dart {image}, which is linked back to dart {back} instead")]
     NotInvolution {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the involution index
         alpha: usize,
         /// `alpha_i(dart)`
-        image: u32,
+        image: Dart,
         /// `alpha_i(image)`, which should be `dart`
-        back: u32,
+        back: Dart,
     },
     /// `alpha_i alpha_j` is not an involution for some `j >= i + 2`.
-    #[error("alpha_{i} alpha_{j} is not an involution at dart {dart}: (alpha_{i} alpha_{j})^2({dart}) = {image}")]
+    #[error("the links alpha_{i} and alpha_{j} do not commute at dart {dart}: alpha_{i}, alpha_{j}, alpha_{i}, alpha_{j} from it lead to dart {image}, not back to it")]
     NotCommuting {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the lower index
         i: usize,
         /// the higher index (`j >= i + 2`)
         j: usize,
         /// where the square of the composition sends `dart`
-        image: u32,
+        image: Dart,
     },
     /// A dimension larger than [`crate::MAX_DIM`].
     #[error("dimension {0} is larger than the supported maximum {max}", max = crate::MAX_DIM)]
@@ -53,60 +57,60 @@ pub enum ValidityError {
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum BoundaryDefect {
     /// `alpha_i` has a fixed point for some `i < n`.
-    #[error("dart {dart} is {alpha}-free (a fixed point of alpha_{alpha}, and {alpha} < n)")]
+    #[error("the boundary is open at dart {dart}: it has no neighbour along alpha_{alpha} (Def. 6 of BO: only alpha_n may have free darts)")]
     Free {
         /// the free dart
-        dart: u32,
+        dart: Dart,
         /// the involution
         alpha: usize,
     },
     /// `<alpha_{i+1..n}>(d)` and `<alpha_{0..i-1}>(d)` share a dart other than `d`.
-    #[error("self-bending at dart {dart}: its <alpha_{}..alpha_n> and <alpha_0..alpha_{}> orbits share dart {other}", .i + 1, .i - 1)]
+    #[error("a cell is folded onto itself at dart {dart}: its <alpha_{}..alpha_n> and <alpha_0..alpha_{}> orbits share dart {other} (Def. 6 of BO: no self-bending)", .i + 1, .i - 1)]
     SelfBending {
         /// the dart
-        dart: u32,
+        dart: Dart,
         /// the dimension `i` at which the orbits meet
         i: usize,
         /// another dart in both orbits
-        other: u32,
+        other: Dart,
     },
 }
 
 /// Why a map is not orientable as a whole (BO Def. 7).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
-#[error("not orientable: dart {dart} and alpha_{alpha}({dart}) = {other} fall in the same class")]
+#[error("the map is not orientable: dart {dart} and its alpha_{alpha} neighbour {other} get the same orientation (Def. 7 of BO)")]
 pub struct OrientationConflict {
     /// a dart where the 2-colouring fails
-    pub dart: u32,
+    pub dart: Dart,
     /// the involution along which it fails
     pub alpha: usize,
     /// the neighbour with the same colour
-    pub other: u32,
+    pub other: Dart,
 }
 
-/// Why a cell is not orientable as a compacted cell (condition C1 of DESIGN.md).
+/// Why a cell is not orientable as a compacted cell (condition C1 of docs/DESIGN.md).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum CellDefect {
     /// A dart of the i-cell is k-free for some `k < i`: the cell's boundary is incomplete.
-    #[error("the {dim}-cell of dart {dart} has an incomplete boundary: dart {dart} is {alpha}-free")]
+    #[error("the {dim}-cell of dart {dart} has an open boundary: one of its darts has no neighbour along alpha_{alpha} (condition C1: cells with complete boundaries)")]
     IncompleteBoundary {
         /// dimension of the cell
         dim: usize,
         /// representative dart
-        dart: u32,
+        dart: Dart,
         /// the involution that has a fixed point
         alpha: usize,
     },
     /// The 2-colouring of the compacted cell fails: the cell is non-orientable or folded.
-    #[error("the {dim}-cell of dart {dart} is not orientable as a compacted cell (conflict along alpha_{alpha} at dart {at})")]
+    #[error("the {dim}-cell of dart {dart} is glued to itself in a way that reverses its orientation, or is not orientable (at dart {at}, along alpha_{alpha}; condition C1: every cell orientable as a compacted cell)")]
     NotOrientable {
         /// dimension of the cell
         dim: usize,
         /// representative dart of the cell
-        dart: u32,
+        dart: Dart,
         /// the involution along which the colouring fails
         alpha: usize,
         /// the dart where it fails
-        at: u32,
+        at: Dart,
     },
 }

@@ -228,7 +228,7 @@ mod tests {
         let count_in = |edge_dart: usize| {
             d1.preimage(v)
                 .iter()
-                .filter(|&&e| cells1.of[b1.orbits.reps[e as usize] as usize] == cells1.of[edge_dart])
+                .filter(|&&e| cells1.of[b1.orbits.reps[e as usize].index()] == cells1.of[edge_dart])
                 .count()
         };
         assert_eq!(count_in(0), 1);

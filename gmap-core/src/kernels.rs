@@ -17,6 +17,8 @@
 //! Every kernel expects a map whose links are in range (a validated map); on an invalid map
 //! they may panic on an index, never read out of bounds.
 
+use crate::dense::Dart;
+use crate::error::{CellDefect, OrientationConflict};
 use crate::parallel;
 use crate::union_find::{ParitySets, ParityUnionFind, UnionFind};
 
@@ -74,39 +76,14 @@ impl Bits {
 /// map's `W`, or with the generic fallback `$generic` for larger widths.
 macro_rules! with_width {
     ($a:expr, $w:expr, |$rows:ident| $body:expr, $generic:expr) => {
+        with_width!(@arms $a, $w, $rows, $body, $generic; 1 2 3 4 5 6 7 8)
+    };
+    (@arms $a:expr, $w:expr, $rows:ident, $body:expr, $generic:expr; $($k:literal)*) => {
         match $w {
-            1 => {
-                let $rows: &[[u32; 1]] = $a.as_chunks::<1>().0;
+            $($k => {
+                let $rows: &[[u32; $k]] = $a.as_chunks::<$k>().0;
                 $body
-            }
-            2 => {
-                let $rows: &[[u32; 2]] = $a.as_chunks::<2>().0;
-                $body
-            }
-            3 => {
-                let $rows: &[[u32; 3]] = $a.as_chunks::<3>().0;
-                $body
-            }
-            4 => {
-                let $rows: &[[u32; 4]] = $a.as_chunks::<4>().0;
-                $body
-            }
-            5 => {
-                let $rows: &[[u32; 5]] = $a.as_chunks::<5>().0;
-                $body
-            }
-            6 => {
-                let $rows: &[[u32; 6]] = $a.as_chunks::<6>().0;
-                $body
-            }
-            7 => {
-                let $rows: &[[u32; 7]] = $a.as_chunks::<7>().0;
-                $body
-            }
-            8 => {
-                let $rows: &[[u32; 8]] = $a.as_chunks::<8>().0;
-                $body
-            }
+            })*
             _ => $generic,
         }
     };
@@ -321,7 +298,7 @@ pub(crate) fn is_valid(a: &[u32], w: usize) -> bool {
 /// Orientation colours (BO Def. 7, 8): 1 for the positive class, 2 for the negative, the
 /// smallest dart of each component positive; or the first conflict `(dart, alpha, other)`
 /// in traversal order.
-fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, (u32, usize, u32)> {
+fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, OrientationConflict> {
     let n = rows.len();
     let mut col = vec![0u8; n];
     let mut stack: Vec<u32> = Vec::with_capacity(1024);
@@ -343,7 +320,7 @@ fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, (u32, usize
                     col[y as usize] = other;
                     stack.push(y);
                 } else if cy == c {
-                    return Err((x, i, y));
+                    return Err(OrientationConflict { dart: Dart(x), alpha: i, other: Dart(y) });
                 }
             }
         }
@@ -351,7 +328,7 @@ fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, (u32, usize
     Ok(col)
 }
 
-fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
+fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, OrientationConflict> {
     let n = m.a.len() / m.w;
     let mut col = vec![0u8; n];
     let mut stack: Vec<u32> = Vec::new();
@@ -372,7 +349,7 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
                     col[y as usize] = 3 - c;
                     stack.push(y);
                 } else if cy == c {
-                    return Err((x, i, y));
+                    return Err(OrientationConflict { dart: Dart(x), alpha: i, other: Dart(y) });
                 }
             }
         }
@@ -381,8 +358,7 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, (u32, usize, u32)> {
 }
 
 /// i-cells oriented as compacted cells (condition C1): `(of, reps, positive words)`, cells
-/// numbered by smallest dart, that dart positive; or the first defect in traversal order as
-/// `(start dart, alpha, at, free)` — `free` when `alpha_k(at) = at` for `k < i`.
+/// numbered by smallest dart, that dart positive; or the first defect in traversal order.
 /// One depth-first traversal; `row(x)` gives the links of dart `x` (a fixed-width row on the
 /// specialised paths). The colours are written straight into the returned bit words.
 #[allow(clippy::type_complexity)]
@@ -390,19 +366,19 @@ pub(crate) fn oriented_by<'a>(
     n: usize,
     row: impl Fn(usize) -> &'a [u32],
     i: usize,
-) -> Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)> {
+) -> Result<(Vec<u32>, Vec<Dart>, Vec<usize>), CellDefect> {
     let bits = usize::BITS as usize;
     let mut pos = vec![0usize; n.div_ceil(bits)];
     let get = |pos: &[usize], x: usize| pos[x / bits] >> (x % bits) & 1 == 1;
     let mut of = vec![u32::MAX; n];
-    let mut reps: Vec<u32> = Vec::new();
+    let mut reps: Vec<Dart> = Vec::new();
     let mut stack: Vec<u32> = Vec::with_capacity(1024);
     for d in 0..n {
         if of[d] != u32::MAX {
             continue;
         }
         let id = reps.len() as u32;
-        reps.push(d as u32);
+        reps.push(Dart(d as u32));
         of[d] = id;
         pos[d / bits] |= 1 << (d % bits);
         stack.push(d as u32);
@@ -413,7 +389,7 @@ pub(crate) fn oriented_by<'a>(
                     continue;
                 }
                 if k < i && y == x {
-                    return Err((d as u32, k, x, true));
+                    return Err(CellDefect::IncompleteBoundary { dim: i, dart: Dart(d as u32), alpha: k });
                 }
                 let want = if k < i { !cx } else { cx };
                 let yu = y as usize;
@@ -422,7 +398,7 @@ pub(crate) fn oriented_by<'a>(
                     pos[yu / bits] |= usize::from(want) << (yu % bits);
                     stack.push(y);
                 } else if get(&pos, yu) != want {
-                    return Err((d as u32, k, x, false));
+                    return Err(CellDefect::NotOrientable { dim: i, dart: Dart(d as u32), alpha: k, at: Dart(x) });
                 }
             }
         }
@@ -432,11 +408,7 @@ pub(crate) fn oriented_by<'a>(
 
 /// [`oriented_by`] on the rows of the flat involution array, specialised by width.
 #[allow(clippy::type_complexity)]
-pub(crate) fn oriented_cells(
-    a: &[u32],
-    w: usize,
-    i: usize,
-) -> Result<(Vec<u32>, Vec<u32>, Vec<usize>), (u32, usize, u32, bool)> {
+pub(crate) fn oriented_cells(a: &[u32], w: usize, i: usize) -> Result<(Vec<u32>, Vec<Dart>, Vec<usize>), CellDefect> {
     let n = a.len() / w.max(1);
     with_width!(a, w, |rows| oriented_by(n, |x| &rows[x][..], i), {
         let m = Dyn { a, w };
@@ -496,7 +468,7 @@ pub(crate) fn is_orientable(a: &[u32], w: usize) -> bool {
 }
 
 /// See [`orient_rows`].
-pub(crate) fn orientation(a: &[u32], w: usize) -> Result<Vec<u8>, (u32, usize, u32)> {
+pub(crate) fn orientation(a: &[u32], w: usize) -> Result<Vec<u8>, OrientationConflict> {
     with_width!(a, w, |rows| orient_rows(rows), orient_dyn(Dyn { a, w }))
 }
 

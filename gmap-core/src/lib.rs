@@ -78,10 +78,12 @@ mod kernels;
 pub mod marks;
 pub mod parallel;
 pub mod union_find;
+pub mod view;
 
 pub use alpha::{AlphaSet, MAX_DIM};
 pub use compacted::{CompactedCells, FaceOperator};
-pub use dense::{Dart, DenseMap, OrientedCells3d, Partition, Point};
+pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, SewError};
 pub use error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityError};
 pub use marks::{MarkId, Marks};
+pub use view::MapView;

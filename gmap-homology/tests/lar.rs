@@ -12,9 +12,7 @@ fn unsigned_matrix(m: &DenseMap, i: usize) -> Vec<Vec<i64>> {
     let inc = Incidence::new(m, i);
     let lo = m.cells(i - 1).reps;
     let hi = m.cells(i).reps;
-    lo.iter()
-        .map(|&f| hi.iter().map(|&c| inc.unsigned(gmap_core::Dart(c), gmap_core::Dart(f)) as i64).collect())
-        .collect()
+    lo.iter().map(|&f| hi.iter().map(|&c| inc.unsigned(c, f) as i64).collect()).collect()
 }
 
 #[test]
@@ -96,7 +94,7 @@ fn my_incidences_agree_with_the_border_operator() {
             let inc = Incidence::new(&m, i);
             let (hi, lo) = (m.cells(i).reps, m.cells(i - 1).reps);
             for c in cell_incidences(&m, i).unwrap() {
-                let (cd, fd) = (gmap_core::Dart(hi[c.upper as usize]), gmap_core::Dart(lo[c.lower as usize]));
+                let (cd, fd) = (hi[c.upper as usize], lo[c.lower as usize]);
                 assert_eq!(c.unsigned() as usize, inc.unsigned(cd, fd));
                 assert_eq!(c.signed(), inc.signed(&m, cd, fd).unwrap());
             }

@@ -1,6 +1,6 @@
-//! Property tests on random 3- and 4-dimensional G-maps (issue #4).
+//! Property tests on random 3- and 4-dimensional G-maps.
 //!
-//! The theorem under test (DESIGN.md, "Homology: when the cellular method is right"): where
+//! The theorem under test (docs/DESIGN.md, "When cellular homology is right"): where
 //! every cell is orientable as a compacted cell (C1) and bounded by a homology sphere (C2),
 //! the cellular border operator (BO Def. 10) has the homology of the simplicial counterpart
 //! (BO §6) — over Z, Z/2 and Z/3. Where C1 or C2 fails, the cellular method refuses and names
@@ -16,7 +16,7 @@
 //! * random gluings: tetrahedra and cubes (4-simplices and 4-cubes) with random facet
 //!   pairings by random rotations and reflections; the pieces are balls, so a refusal must
 //!   name a folded edge or face (C1), and an acceptance must agree;
-//! * random Euler operators (gmap_ops::euler::ops) on the solid torus, the 3-torus,
+//! * random Euler operators (gmap_ops::euler::random) on the solid torus, the 3-torus,
 //!   torus × I, lens spaces L(p, q) with p ≥ 3 and the 4-torus: both methods must give the
 //!   known groups;
 //! * violations: a volume bounded by a closed surface of genus ≥ 1 (C2) or a non-orientable
@@ -41,37 +41,14 @@ use gmap_homology::{
 };
 use gmap_ops::build;
 use gmap_ops::euler::ops;
+use gmap_ops::euler::random::{random_steps, Operator};
 use gmap_ops::import::SimplicialComplex;
+use gmap_ops::rng::SplitMix64;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 
 // ---------------------------------------------------------------------------------------
 // small tools
-
-/// splitmix64: the choices inside one generated case, driven by a proptest seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        assert!(n > 0);
-        (self.next() % n as u64) as usize
-    }
-
-    fn shuffle<T>(&mut self, v: &mut [T]) {
-        for k in (1..v.len()).rev() {
-            let j = self.below(k + 1);
-            v.swap(k, j);
-        }
-    }
-}
 
 /// Counters of what a family generated, shared by the cases of one runner.
 #[derive(Default)]
@@ -137,7 +114,7 @@ fn union(a: &DenseMap, b: &DenseMap) -> DenseMap {
 }
 
 /// A random renumbering of the darts.
-fn shuffled(m: &DenseMap, rng: &mut Rng) -> (DenseMap, Vec<u32>) {
+fn shuffled(m: &DenseMap, rng: &mut SplitMix64) -> (DenseMap, Vec<u32>) {
     let mut perm: Vec<u32> = (0..m.dart_count() as u32).collect();
     rng.shuffle(&mut perm);
     (m.permuted(&perm), perm)
@@ -242,14 +219,14 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
     match e {
         PreconditionError::C1(CellDefect::IncompleteBoundary { dim, dart, alpha }) => {
             prop_assert!(alpha < dim, "{e}");
-            let cell = m.orbit(Dart(*dart), AlphaSet::cell(*dim, m.dim()));
+            let cell = m.orbit(*dart, AlphaSet::cell(*dim, m.dim()));
             prop_assert!(cell.iter().any(|&x| m.is_free(x, *alpha)), "no {alpha}-free dart in the cell named: {e}");
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("free"));
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("free"));
+            Ok((*dim, dart.0))
         }
         PreconditionError::C1(CellDefect::NotOrientable { dim, dart, .. }) => {
-            prop_assert_eq!(own_c1(m, *dim, *dart), Err("conflict"), "{}", e);
-            Ok((*dim, *dart))
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("conflict"), "{}", e);
+            Ok((*dim, dart.0))
         }
         PreconditionError::C2 { dim, dart, .. } => {
             prop_assert!(*dim >= 3, "{e}");
@@ -418,7 +395,7 @@ fn voxel_sets_4d_cellular_equals_simplicial() {
 /// (a facet with one of the same shape) by a random isomorphism of the facets (a rotation
 /// or a reflection), sewn with `alpha_n`; about one facet in `free_one_in` stays free.
 fn glued(n: usize, cubes: &[bool], free_one_in: usize, seed: u64) -> DenseMap {
-    let mut rng = Rng(seed);
+    let mut rng = SplitMix64::new(seed);
     let mut m = DenseMap::new(n, 0);
     for &c in cubes {
         let piece = if c { build::cube(n) } else { build::simplex(n) }.expect("small piece");
@@ -506,39 +483,15 @@ fn random_gluings_of_4_simplices() {
 // ---------------------------------------------------------------------------------------
 // family (c): Euler operators on classic objects
 
-/// Random Euler operators (split an edge, split a face, a dangling edge, remove or
-/// contract a cell) tried at random darts; each applied only when its predicate allows.
-/// Returns the names of the operators applied.
-fn random_euler_ops(g: &mut GMap, steps: usize, rng: &mut Rng) -> Vec<String> {
-    let n = g.dim();
-    let mut applied = Vec::new();
-    for _ in 0..steps {
-        let darts: Vec<_> = g.darts().collect();
-        let d = darts[rng.below(darts.len())];
-        // each predicate is asserted to agree with its `try_` form
-        let op = match rng.below(6) {
-            0 => ops::can_insert_vertex(g, d).then(|| ops::try_insert_vertex(g, d)),
-            1 => {
-                let face = g.orbit(d, AlphaSet::of(&[0, 1]));
-                let d2 = face[rng.below(face.len())];
-                ops::can_insert_edge(g, d, d2).then(|| ops::try_insert_edge(g, d, d2))
-            }
-            2 => ops::can_insert_dangling_edge(g, d).then(|| ops::try_insert_dangling_edge(g, d)),
-            3 | 4 => {
-                let i = rng.below(n);
-                ops::is_removable(g, d, i).then(|| ops::try_remove_cell(g, d, i))
-            }
-            _ => {
-                let i = 1 + rng.below(n);
-                ops::is_contractible(g, d, i).then(|| ops::try_contract_cell(g, d, i))
-            }
-        };
-        if let Some(op) = op {
-            applied.push(op.expect("the predicate allowed it").name);
-        }
-    }
-    applied
-}
+/// The operators of the classic-object family, removals drawn twice as often as the others.
+const CLASSIC_OPERATORS: [Operator; 6] = [
+    Operator::InsertVertex,
+    Operator::InsertEdge,
+    Operator::InsertDanglingEdge,
+    Operator::RemoveCell,
+    Operator::RemoveCell,
+    Operator::ContractCell,
+];
 
 /// A classic closed or bounded object and its integer homology.
 fn classic(kind: usize, a: usize, b: usize, c: usize) -> (DenseMap, String, &'static str) {
@@ -578,8 +531,8 @@ fn euler_operators_on_classic_objects_keep_the_groups() {
             Verdict::Refused { error, .. } => return Err(fail(format!("{name}: base object refused: {error}"))),
         }
         let (mut g, _) = GMap::from_dense(&base);
-        let mut rng = Rng(seed);
-        let applied = random_euler_ops(&mut g, steps, &mut rng);
+        let mut rng = SplitMix64::new(seed);
+        let applied = random_steps(&mut g, steps, &CLASSIC_OPERATORS, &mut rng);
         let (m, _) = g.to_dense();
         match judge(&m)? {
             Verdict::Accepted(h) => {
@@ -614,25 +567,11 @@ fn euler_operators_on_classic_objects_keep_the_groups() {
 /// A closed surface from a schema word (orientable of genus `g`, or the connected sum of
 /// `g` projective planes), subdivided by random edge and face splits, as a 3-map with
 /// `alpha_3` the identity: one volume bounded by the surface — the cone on it, contractible.
-fn coned_surface(orientable: bool, g: usize, steps: usize, rng: &mut Rng) -> DenseMap {
+fn coned_surface(orientable: bool, g: usize, steps: usize, rng: &mut SplitMix64) -> DenseMap {
     let word = if orientable { build::orientable_surface_word(g) } else { build::nonorientable_surface_word(g) };
     let s = build::schema(&word).unwrap();
     let (mut gm, _) = GMap::from_dense(&s);
-    for _ in 0..steps {
-        let darts: Vec<_> = gm.darts().collect();
-        let d = darts[rng.below(darts.len())];
-        if rng.below(2) == 0 {
-            if ops::can_insert_vertex(&gm, d) {
-                ops::try_insert_vertex(&mut gm, d).unwrap();
-            }
-        } else {
-            let face = gm.orbit(d, AlphaSet::of(&[0, 1]));
-            let d2 = face[rng.below(face.len())];
-            if ops::can_insert_edge(&gm, d, d2) {
-                ops::try_insert_edge(&mut gm, d, d2).unwrap();
-            }
-        }
-    }
+    random_steps(&mut gm, steps, &[Operator::InsertVertex, Operator::InsertEdge], rng);
     gm.to_dense().0.embedded(3).unwrap()
 }
 
@@ -641,7 +580,7 @@ fn volumes_bounded_by_surfaces_of_genus_at_least_one_are_refused() {
     let tally = Tally::default();
     let strategy = (any::<bool>(), 0usize..=3, 0usize..8, voxel_params(3, 3), any::<u64>());
     run(64, strategy, |(orientable, g, steps, (sizes, periodic, keep), seed)| {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let good = voxels(&sizes, &periodic, &keep);
         let hgood = groups(&simplicial_complex(&good))?;
         let cone = coned_surface(orientable, g, steps, &mut rng);
@@ -692,7 +631,7 @@ fn volume_bounded_by_a_torus_glued_to_a_voxel_set_is_refused() {
     let strategy = (2usize..=3, 2usize..=3, voxel_params(3, 3), any::<u64>());
     run(48, strategy, |(k1, k2, (sizes, mut periodic, keep), seed)| {
         periodic[0] = false; // a boundary face always exists
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let good = voxels(&sizes, &periodic, &keep);
         let hgood = groups(&simplicial_complex(&good))?;
         // one volume bounded by a torus of k1 × k2 squares: the cone on the torus
@@ -744,7 +683,7 @@ fn four_cells_bounded_by_lens_spaces_and_3_tori_are_refused() {
     let tally = Tally::default();
     let strategy = (1usize..=5, 1usize..5, any::<bool>(), 1usize..=2, any::<u64>());
     run(24, strategy, |(p, q, torus, a, seed)| {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let (boundary, is_sphere) = if torus {
             (build::grid(&[a, 1, 1], &[true; 3]).unwrap(), false)
         } else {
@@ -810,7 +749,7 @@ fn four_cells_bounded_by_suspensions_are_refused() {
     let tally = Tally::default();
     let strategy = (0usize..3, any::<bool>(), any::<u64>());
     run(24, strategy, |(which, with_good, seed)| {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let (triangles, h_surface) = surface_triangles(which);
         let surface = SimplicialComplex::from_facets(triangles.iter().map(|t| t.to_vec())).unwrap();
         let surface = surface.to_gmap(10_000).unwrap();
@@ -908,7 +847,7 @@ fn boundary_facets_folded_onto_themselves() {
     let tally = Tally::default();
     let strategy = (prop_oneof![3 => Just(3usize), 1 => Just(4usize)], 0usize..4, any::<u64>());
     run(64, strategy, |(n, odd_one_in, seed)| {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let sizes: Vec<usize> = (0..n).map(|_| 1 + rng.below(if n == 3 { 4 } else { 2 })).collect();
         let periodic: Vec<bool> = (0..n).map(|a| a > 0 && rng.below(2) == 0).collect(); // axis 0 has a boundary
         let cubes: usize = sizes.iter().product();
@@ -984,7 +923,7 @@ fn cells_opened_inside_are_refused() {
     let tally = Tally::default();
     let strategy = (prop_oneof![4 => Just(3usize), 1 => Just(4usize)], any::<u64>(), any::<u64>());
     run(64, strategy, |(n, pick, seed)| {
-        let mut rng = Rng(seed);
+        let mut rng = SplitMix64::new(seed);
         let sizes: Vec<usize> = (0..n).map(|_| 1 + rng.below(if n == 3 { 3 } else { 2 })).collect();
         let periodic: Vec<bool> = (0..n).map(|_| rng.below(2) == 0).collect();
         let cubes: usize = sizes.iter().product();
@@ -1025,9 +964,9 @@ fn cells_opened_inside_are_refused() {
 
 /// L(1, 0) (the 3-sphere) and L(2, 1) (projective 3-space) have one edge, a loop whose
 /// vertex is made of its own darts only, with `alpha_2 alpha_3` an involution on it.
-/// `is_removable` once took it for a dangling edge and `try_remove_cell` then deleted every
-/// dart, leaving the empty map. Regression test: a dangling edge now needs a vertex of
-/// degree one (gmap-ops `check_collapse`), and the loop is not removable.
+/// Taken for a dangling edge, its removal would delete every dart and leave the empty map;
+/// a dangling edge needs a vertex of degree one, so the loop is not removable and the
+/// space keeps its homology.
 #[test]
 fn removing_the_loop_edge_of_l1_and_l2_keeps_the_space() {
     for (p, q, want) in [(1, 0, "(Z, 0, 0, Z)"), (2, 1, "(Z, Z/2, 0, Z)")] {

@@ -1,7 +1,7 @@
 //! # gmap-ops: making and changing generalized maps
 //!
-//! The construction side of the workspace. Every function here returns a
-//! [`gmap_core::DenseMap`] that passes [`gmap_core::DenseMap::validate`]:
+//! The construction side of the workspace. Every map its functions return passes
+//! [`gmap_core::DenseMap::validate`] (BO Def. 1). Its modules:
 //!
 //! * [`build`]: the classic objects — n-simplex, n-cube, k-gon, the product with an edge
 //!   (extrusion), cube grids in any dimension with any axes periodic (d-tori), surfaces
@@ -11,7 +11,11 @@
 //!   construction), each refusing what is not a G-map with an error that says where;
 //! * [`export`]: `.off` polygon meshes and the `.facets` of the barycentric subdivision,
 //!   written through a temporary file and a rename;
-//! * [`iso`]: isomorphism of maps (canonical breadth-first codes), for round-trip tests.
+//! * [`iso`]: isomorphism of maps (canonical breadth-first codes), for round-trip tests;
+//! * [`euler`]: Euler operators on the editable [`gmap_core::GMap`] (split, remove,
+//!   contract, close) with their Euler–Poincaré vectors, homology-preserving simplification,
+//!   stratified objects with incomplete boundaries, and random operator sequences for tests;
+//! * [`rng`]: the seeded SplitMix64 generator behind every random choice of the crate.
 //!
 //! ```
 //! use gmap_ops::{build, import::SimplicialComplex, iso};
@@ -35,3 +39,4 @@ pub mod export;
 pub mod import;
 pub mod iso;
 mod perm;
+pub mod rng;

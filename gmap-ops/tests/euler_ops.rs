@@ -7,6 +7,7 @@ mod euler_common;
 use euler_common::{counts, cube_grid, cycle, polygon, sphere_simplicial, thaw};
 use gmap_core::{DartId, GMap};
 use gmap_ops::euler::ops::*;
+use gmap_ops::euler::random::{attempt_at, Operator};
 use gmap_ops::euler::{EpVector, EulerError};
 use proptest::prelude::*;
 
@@ -233,35 +234,13 @@ fn base(kind: u8, size: usize) -> GMap {
     }
 }
 
+/// One operator of the six at a place given by numbers; every predicate must agree with its
+/// `try_` form.
 fn apply(g: &mut GMap, op: u8, pick: usize, pick2: usize, dim: usize) -> Option<EpVector> {
-    let ds: Vec<DartId> = g.darts().collect();
-    if ds.is_empty() {
-        return None;
-    }
-    let d = ds[pick % ds.len()];
-    let e = ds[pick2 % ds.len()];
-    let n = g.dim();
-    let i = dim % (n + 1);
-    match op % 6 {
-        0 => {
-            assert_eq!(can_insert_vertex(g, d), try_insert_vertex(&mut g.clone(), d).is_ok());
-            try_insert_vertex(g, d).ok().map(|o| o.vector)
-        }
-        1 => {
-            assert_eq!(can_insert_edge(g, d, e), try_insert_edge(&mut g.clone(), d, e).is_ok());
-            try_insert_edge(g, d, e).ok().map(|o| o.vector)
-        }
-        2 => try_insert_dangling_edge(g, d).ok().map(|o| o.vector),
-        3 => {
-            assert_eq!(is_removable(g, d, i), try_remove_cell(&mut g.clone(), d, i).is_ok());
-            try_remove_cell(g, d, i).ok().map(|o| o.vector)
-        }
-        4 => {
-            assert_eq!(is_contractible(g, d, i), try_contract_cell(&mut g.clone(), d, i).is_ok());
-            try_contract_cell(g, d, i).ok().map(|o| o.vector)
-        }
-        _ => try_split_cell(g, &[d, e], i).ok().map(|o| o.vector),
-    }
+    let op = Operator::ALL[op as usize % Operator::ALL.len()];
+    let tried = attempt_at(g, op, pick, pick2, dim)?;
+    assert!(tried.consistent(), "{op:?}: predicate {} but {:?}", tried.allowed, tried.result);
+    tried.result.ok().map(|o| o.vector)
 }
 
 proptest! {

@@ -1,4 +1,4 @@
-//! Every file of the Benedetti–Lutz library in ../shared/data/lutz (beside the checkout): pseudo-manifolds
+//! Every file of the Benedetti–Lutz library in the workspace's tests/data/lutz: pseudo-manifolds
 //! import, validate and keep the Euler characteristic of their facets; the three
 //! non-pseudo-manifolds are refused naming a ridge; the 11-dimensional one is refused
 //! before allocating. Files over 10^6 darts are behind `#[ignore]`.
@@ -10,7 +10,7 @@ use gmap_ops::import::{read_facets, ImportError, SimplicialComplex};
 
 fn path(name: &str) -> PathBuf {
     let dir = std::env::var("GMAP_LUTZ")
-        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/lutz").to_string());
+        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/lutz").to_string());
     PathBuf::from(dir).join(format!("{name}.facets"))
 }
 

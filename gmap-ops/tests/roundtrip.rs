@@ -8,7 +8,7 @@ use gmap_ops::{build, iso};
 
 fn lutz(name: &str) -> String {
     let dir = std::env::var("GMAP_LUTZ")
-        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/data/lutz").to_string());
+        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/lutz").to_string());
     std::fs::read_to_string(format!("{dir}/{name}.facets")).unwrap()
 }
 

@@ -29,7 +29,9 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
     match extension(output).as_str() {
         "gmap" => gmap_core::io::write_gmap(m, output)?,
         "moka" => gmap_core::io::write_moka(m, output)?,
-        "off" => gmap_ops::export::write_off(m, output)?,
+        "off" => {
+            gmap_ops::export::write_off(m, output).with_context(|| format!("{}: cannot write", output.display()))?
+        }
         "facets" => gmap_ops::export::write_barycentric_facets(m, output)?,
         "json" if is_lar(output) => write_text(output, &Lar::from_map(m).to_json()?)?,
         "json" => write_text(output, &write_json(&complex_of(m, output)?))?,

@@ -29,7 +29,7 @@ pub struct Options {
 /// When the command started (for the elapsed times of the progress lines).
 static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
 
-/// Prints a stage message on stderr when it is a terminal (CONTRACT §1: progress only
+/// Prints a stage message on stderr when it is a terminal (docs/FORMATS.md §1: progress only
 /// there), with the time elapsed since the start: `gmap homology: [  0.41 s] reducing…`.
 fn progress(msg: &str) {
     if std::io::stderr().is_terminal() {

@@ -1,4 +1,4 @@
-//! `gmap info FILE [--json]` (CONTRACT §1): reads FILE, validates it, prints its
+//! `gmap info FILE [--json]` (docs/FORMATS.md §1): reads FILE, validates it, prints its
 //! characteristics. Each kind of [`Loaded`] input has its own arm in [`run`] that builds
 //! the lines to print; the JSON object of a G-map is [`MapInfo`].
 
@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use super::load::{load, Loaded};
 
-/// The characteristics of a G-map, in the key order of CONTRACT §1.
+/// The characteristics of a G-map, in the key order of docs/FORMATS.md §1.
 #[derive(Debug, Serialize)]
 pub struct MapInfo {
     /// n
@@ -136,7 +136,7 @@ fn print_lines(lines: &[(&str, String)]) -> std::io::Result<()> {
 }
 
 /// The characteristics of an architectural complex (`.json`): the keys of a map's
-/// (CONTRACT §1) with regions for cells, no darts, orientability undefined (`null`), then
+/// (docs/FORMATS.md §1) with regions for cells, no darts, orientability undefined (`null`), then
 /// its own counts.
 #[derive(Debug, Serialize)]
 pub struct ComplexInfo {

@@ -1,4 +1,4 @@
-//! Reading any supported input file, chosen by extension (CONTRACT §2).
+//! Reading any supported input file, chosen by extension (docs/FORMATS.md §2).
 
 use std::path::Path;
 
@@ -9,7 +9,7 @@ use gmap_core::DenseMap;
 pub enum Loaded {
     /// a generalized map
     Map(DenseMap),
-    /// an architectural complex / incidence graph (`.json`, CONTRACT §2)
+    /// an architectural complex / incidence graph (`.json`, docs/FORMATS.md §2)
     Complex(gmap_homology::arch::ArchComplex),
 }
 
@@ -20,8 +20,23 @@ pub fn extension(path: &Path) -> String {
     Path::new(base).extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
 }
 
-/// Reads `path` by its extension.
+/// Reads `path` by its extension. A refusal for size gets the flag that raises the limit.
 pub fn load(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
+    load_any(path, max_darts).map_err(|e| {
+        let over_limit = e
+            .downcast_ref::<gmap_ops::import::FileError>()
+            .is_some_and(|f| matches!(f.error, gmap_ops::import::ImportError::TooManyDarts { .. }))
+            || e.downcast_ref::<gmap_core::io::ReadError>()
+                .is_some_and(|r| matches!(r.kind, gmap_core::io::ReadErrorKind::DartLimit { .. }));
+        if over_limit {
+            anyhow::anyhow!("{e:#}; raise the limit with --max-darts N")
+        } else {
+            e
+        }
+    })
+}
+
+fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
     let opts = gmap_core::io::ReadOptions { max_darts };
     match extension(path).as_str() {
         "gmap" => Ok(Loaded::Map(gmap_core::io::read_gmap_with(path, &opts)?)),

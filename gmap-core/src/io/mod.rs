@@ -28,7 +28,7 @@
 //! let bad = b"gmap 1 2\n1 0\n0 0\n";
 //! let err = io::parse_gmap(bad, "bad.gmap").unwrap_err();
 //! assert_eq!(err.to_string(), "bad.gmap:3: not a G-map (BO Def. 1): \
-//!     alpha_1 is not an involution: alpha_1(1) = 0 but alpha_1(0) = 0");
+//!     dart 1 is linked along alpha_1 to dart 0, which is linked back to dart 0 instead");
 //! ```
 
 use std::fmt;
@@ -476,7 +476,7 @@ fn validity_to_read_error(
     let dart = match &e {
         ValidityError::OutOfRange { dart, .. }
         | ValidityError::NotInvolution { dart, .. }
-        | ValidityError::NotCommuting { dart, .. } => Some(*dart as usize),
+        | ValidityError::NotCommuting { dart, .. } => Some(dart.index()),
         ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) => None,
     };
     let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));

@@ -1,4 +1,4 @@
-//! Moka's ascii format `.moka` (CONTRACT §2).
+//! Moka's ascii format `.moka` (docs/FORMATS.md §2).
 //!
 //! ```text
 //! Moka file [ascii]
@@ -281,11 +281,11 @@ mod tests {
         assert_eq!(with("0 0 0 0 0 x 0 0 0\n"), "f.moka:3: dart 0, mark 1: `x` is not a non-negative integer");
         assert_eq!(
             with("0 0 0 0 0 0 0 0 0\n1 1 1 5 0 0 0 0 0\n"),
-            "f.moka:4: not a G-map (BO Def. 1): dart 1: alpha_3 = 5 is out of range (the map has 2 darts)"
+            "f.moka:4: not a G-map (BO Def. 1): dart 1 is linked along alpha_3 to dart 5, which does not exist (the map has 2 darts)"
         );
         assert_eq!(
             with("1 0 0 0 0 0 0 0 0\n1 1 1 1 0 0 0 0 0\n"),
-            "f.moka:3: not a G-map (BO Def. 1): alpha_0 is not an involution: alpha_0(0) = 1 but alpha_0(1) = 1"
+            "f.moka:3: not a G-map (BO Def. 1): dart 0 is linked along alpha_0 to dart 1, which is linked back to dart 1 instead"
         );
         assert_eq!(
             msg(b"Moka file [ascii]\n0 0 0 0 0 0 0 0\n0 0 0 0 0 0 0 0 \xc3\x28\n"),

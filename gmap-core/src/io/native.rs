@@ -1,4 +1,4 @@
-//! The native `.gmap` format (CONTRACT §2).
+//! The native `.gmap` format (docs/FORMATS.md §2).
 //!
 //! ```text
 //! # comment lines start with '#'
@@ -21,11 +21,11 @@ use super::{
     ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::alpha::MAX_DIM;
-use crate::dense::DenseMap;
+use crate::dense::{Dart, DenseMap};
 
 const HEADER: &str = "gmap <n> <number of darts>";
 
-/// Reads a `.gmap` file (CONTRACT §2) and validates it (BO Def. 1).
+/// Reads a `.gmap` file (docs/FORMATS.md §2) and validates it (BO Def. 1).
 ///
 /// Errors name the file and line: see [`super::ReadError`].
 pub fn read_gmap(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
@@ -115,9 +115,9 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
                 Num::Value(v) if v < darts => alpha.push(v as u32),
                 Num::Value(v) => {
                     let e = crate::ValidityError::OutOfRange {
-                        dart: d as u32,
+                        dart: Dart(d as u32),
                         alpha: i,
-                        target: u32::try_from(v).unwrap_or(u32::MAX),
+                        target: Dart(u32::try_from(v).unwrap_or(u32::MAX)),
                         darts: darts as usize,
                     };
                     return Err(err(s.line, ReadErrorKind::Invalid(e)));
@@ -276,11 +276,11 @@ mod tests {
         assert_eq!(msg(b"gmap 1 2\n0 0 0 0\n1 1\n"), "f.gmap:2: dart 0: expected 2 values, found 4");
         assert_eq!(
             msg(b"gmap 1 2\n0 0\n1 2\n"),
-            "f.gmap:3: not a G-map (BO Def. 1): dart 1: alpha_1 = 2 is out of range (the map has 2 darts)"
+            "f.gmap:3: not a G-map (BO Def. 1): dart 1 is linked along alpha_1 to dart 2, which does not exist (the map has 2 darts)"
         );
         assert_eq!(
             msg(b"gmap 1 2\n0 0\n1 99999999999\n"),
-            "f.gmap:3: not a G-map (BO Def. 1): dart 1: alpha_1 = 4294967295 is out of range (the map has 2 darts)"
+            "f.gmap:3: not a G-map (BO Def. 1): dart 1 is linked along alpha_1 to dart 4294967295, which does not exist (the map has 2 darts)"
         );
         assert_eq!(msg(b"gmap 1 2\n0 0\n1 -1\n"), "f.gmap:3: dart 1, alpha_1: `-1` is negative");
         assert_eq!(msg(b"gmap 1 2\n0 0\n1 1.5\n"), "f.gmap:3: dart 1, alpha_1: `1.5` is not a non-negative integer");
@@ -288,17 +288,17 @@ mod tests {
         assert_eq!(msg(b"gmap 1 2\n0 0\n1 \xff\n"), "f.gmap:3: not UTF-8 text: invalid byte at offset 15");
         assert_eq!(
             msg(b"gmap 1 3\n1 0\n2 1\n1 2\n"),
-            "f.gmap:2: not a G-map (BO Def. 1): alpha_0 is not an involution: alpha_0(0) = 1 but alpha_0(1) = 2"
+            "f.gmap:2: not a G-map (BO Def. 1): dart 0 is linked along alpha_0 to dart 1, which is linked back to dart 2 instead"
         );
         // alpha_0 alpha_2 not an involution: a0 = (0 1)(2 3), a2 = (1 2), 0 and 3 2-free
         assert_eq!(
             msg(b"gmap 2 4\n1 0 0\n0 1 2\n3 2 1\n2 3 3\n"),
-            "f.gmap:2: not a G-map (BO Def. 1): alpha_0 alpha_2 is not an involution at dart 0: (alpha_0 alpha_2)^2(0) = 3"
+            "f.gmap:2: not a G-map (BO Def. 1): the links alpha_0 and alpha_2 do not commute at dart 0: alpha_0, alpha_2, alpha_0, alpha_2 from it lead to dart 3, not back to it"
         );
         // the offending dart's line counts data lines only
         assert_eq!(
             msg(b"gmap 1 2\n# c\n0 0\n\n1 0\n"),
-            "f.gmap:5: not a G-map (BO Def. 1): alpha_1 is not an involution: alpha_1(1) = 0 but alpha_1(0) = 0"
+            "f.gmap:5: not a G-map (BO Def. 1): dart 1 is linked along alpha_1 to dart 0, which is linked back to dart 0 instead"
         );
     }
 

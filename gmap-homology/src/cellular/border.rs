@@ -83,7 +83,7 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
     let mats: Vec<SparseMatrix> = parallel::map_tasks(n, map.dart_count(), |t| matrix(t + 1));
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
     debug_assert_eq!(chain.check_dd(), Ok::<(), ChainError>(()), "∂∂ = 0 under C1");
-    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
     CellularComplex { chain, reps }
 }
 
@@ -99,14 +99,14 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
         })
         .collect();
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
-    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
     CellularComplex { chain, reps }
 }
 
 /// `∂_1` by the two ends of each edge.
 fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let mut out = Vec::with_capacity(2 * edges.cells.len());
-    for (e, &r) in edges.cells.reps.iter().enumerate() {
+    for (e, &Dart(r)) in edges.cells.reps.iter().enumerate() {
         let other = map.alpha(Dart(r), 0).0;
         for x in [r, other] {
             out.push((vertices.cells.of[x as usize], e as u32, edges.sign(x) * vertices.sign(x)));
@@ -119,7 +119,7 @@ fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<
 fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let n = map.dim();
     let mut out = Vec::with_capacity(2 * facets.cells.len());
-    for (f, &r) in facets.cells.reps.iter().enumerate() {
+    for (f, &Dart(r)) in facets.cells.reps.iter().enumerate() {
         let other = map.alpha(Dart(r), n).0;
         out.push((f as u32, top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
         if other != r {
@@ -141,7 +141,7 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
     let mut out = Vec::with_capacity(map.dart_count() / 4 + 1);
     // the positive darts of the ring being walked
     let mut ring: Vec<u32> = Vec::with_capacity(16);
-    for (f, &r) in faces.cells.reps.iter().enumerate() {
+    for (f, &Dart(r)) in faces.cells.reps.iter().enumerate() {
         ring.clear();
         let mut x = r;
         loop {

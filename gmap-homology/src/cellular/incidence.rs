@@ -69,7 +69,7 @@ impl Incidence {
     /// (`upper`) and (i-1)-cells (`lower`), as produced by [`oriented_cells`].
     pub fn signed_with(&self, upper: &OrientedCells, lower: &OrientedCells, cell_dart: Dart, face_dart: Dart) -> i64 {
         let s = lower.sign(face_dart.0);
-        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize]) * s).sum()
+        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize].0) * s).sum()
     }
 
     /// The signed incidence number (BO Def. 9) with the orientation in which the smallest
@@ -102,7 +102,7 @@ pub fn incidence_terms(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCe
     let b_rep: Option<Vec<u32>> = if i == n { None } else { Some(map.partition(AlphaSet::above(i, n)).of) };
     let mut b_seen: Vec<bool> = if b_rep.is_some() { vec![false; map.dart_count()] } else { Vec::new() };
     let mut out = Vec::new();
-    for (row, &d0) in lower.cells.reps.iter().enumerate() {
+    for (row, &Dart(d0)) in lower.cells.reps.iter().enumerate() {
         orbit.clear();
         orbit.push(d0);
         seen.set(d0 as usize, true);

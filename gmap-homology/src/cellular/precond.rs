@@ -13,7 +13,7 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use bitvec::vec::BitVec;
-use gmap_core::{parallel, AlphaSet, CellDefect, CompactedCells, DenseMap, Partition};
+use gmap_core::{parallel, AlphaSet, CellDefect, CompactedCells, Dart, DenseMap, Partition};
 use thiserror::Error;
 
 use crate::cellular::simplicial::simplicial_complex;
@@ -98,7 +98,7 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
                 }
             }
             let p = map.partition(set);
-            for &r in &p.reps {
+            for &Dart(r) in &p.reps {
                 chi[cells.cells.of[r as usize] as usize] += sign;
             }
         }
@@ -121,16 +121,16 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let sub = DenseMap::from_flat_unchecked(i - 1, flat).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: e.to_string(),
         })?;
         let h = homology_z(&simplicial_complex(&sub)).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: e.to_string(),
         })?;
         if !is_sphere(&h, i - 1) {
-            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c], found: format!("homology {h}") });
+            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c].0, found: format!("homology {h}") });
         }
     }
     Ok(())
@@ -143,7 +143,7 @@ fn check_chi(chi: &[i64], cells: &OrientedCells) -> Result<(), PreconditionError
         None => Ok(()),
         Some(c) => Err(PreconditionError::C2 {
             dim: 3,
-            dart: cells.cells.reps[c],
+            dart: cells.cells.reps[c].0,
             found: format!("a surface of Euler characteristic {}", chi[c]),
         }),
     }

@@ -10,7 +10,7 @@
 //!
 //! Sizes: `Σ_S #orbits`, at most `2^(n+1) N` simplices; time O(2^n N n).
 
-use gmap_core::{AlphaSet, DenseMap};
+use gmap_core::{AlphaSet, Dart, DenseMap};
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::sparse::SparseMatrix;
@@ -74,7 +74,7 @@ pub fn simplicial_complex_with_simplices(map: &DenseMap) -> SimplicialComplex {
         let mut simp = Vec::new();
         for s in subsets(n, k + 1) {
             let p = map.partition(complement(s));
-            for &r in &p.reps {
+            for &Dart(r) in &p.reps {
                 simp.push(Simplex { labels: s, dart: r });
             }
             let len = p.len();

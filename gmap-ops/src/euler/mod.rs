@@ -6,10 +6,13 @@
 //!   split a cell (`mve`, `mef`, `mfs`, …), dangling edges, removal and contraction of
 //!   cells of degree 2, closing a boundary — each with a predicate, a `try_` form with a
 //!   typed error and its Euler–Poincaré vector.
-//! * [`simplify()`]: homology-preserving reduction of a [`gmap_core::DenseMap`] by removals
-//!   and contractions.
+//! * [`simplify`](mod@simplify): homology-preserving reduction of a
+//!   [`gmap_core::DenseMap`] by removals and contractions ([`simplify()`],
+//!   [`simplify_with`]), with a search past plateaus for 3-maps.
 //! * [`strata`]: the stratified objects with incomplete boundaries of EO and the Euler
 //!   characteristic of its Theorems 1–2.
+//! * [`random`]: random sequences of Euler operators for tests and benches, each attempt
+//!   checking that an operator's predicate agrees with its `try_` form.
 //!
 //! ```
 //! use gmap_core::GMap;
@@ -32,6 +35,7 @@
 //! ```
 
 pub mod ops;
+pub mod random;
 pub mod simplify;
 pub mod strata;
 pub mod vector;

@@ -70,11 +70,11 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
     let faces = map.cells(2);
     let mut out = String::new();
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
-    for &r in &verts.reps {
+    for &Dart(r) in &verts.reps {
         let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
-    for &r in &faces.reps {
+    for &Dart(r) in &faces.reps {
         let mut corners = Vec::new();
         let mut d = Dart(r);
         loop {

@@ -64,7 +64,7 @@ pub enum ImportError {
         lines: Vec<usize>,
     },
     /// The G-map would have more darts than allowed.
-    #[error("{facets} facets of dimension {dim} make {} darts, over the limit of {limit} (see --max-darts)",
+    #[error("{facets} facets of dimension {dim} make {} darts, over the limit of {limit} darts",
         darts.map_or_else(|| "more than 2^64".to_string(), |d| d.to_string()))]
     TooManyDarts {
         /// the number of facets (or polygons, or flags found so far)

@@ -124,9 +124,9 @@ pub fn sphere_simplicial(n: usize) -> DenseMap {
     simplicial(&facets)
 }
 
-/// A k-gon as a 2-map (one face, complete lower boundaries, 2-free).
-pub fn polygon(k: usize) -> GMap {
-    let mut g = GMap::new(2);
+/// A cycle of k edges in a map of dimension `dim`: darts 2j, 2j+1 are edge j.
+fn ring(dim: usize, k: usize) -> GMap {
+    let mut g = GMap::new(dim);
     let d: Vec<_> = (0..2 * k).map(|_| g.create_dart()).collect();
     for j in 0..k {
         g.sew(d[2 * j], d[2 * j + 1], 0);
@@ -135,15 +135,14 @@ pub fn polygon(k: usize) -> GMap {
     g
 }
 
+/// A k-gon as a 2-map (one face, complete lower boundaries, 2-free).
+pub fn polygon(k: usize) -> GMap {
+    ring(2, k)
+}
+
 /// A cycle of k edges as a 1-map.
 pub fn cycle(k: usize) -> GMap {
-    let mut g = GMap::new(1);
-    let d: Vec<_> = (0..2 * k).map(|_| g.create_dart()).collect();
-    for j in 0..k {
-        g.sew(d[2 * j], d[2 * j + 1], 0);
-        g.sew(d[2 * j + 1], d[(2 * j + 2) % (2 * k)], 1);
-    }
-    g
+    ring(1, k)
 }
 
 /// Thaws a dense map; returns the map and the handle of each dense dart.

@@ -1,5 +1,8 @@
 //! # gmap: generalized maps, their construction and their homology
 //!
+//! The library side of the project: it pulls in the three crates below and nothing of the
+//! command line (the `gmap` binary lives in the `gmap-cli` package).
+//!
 //! This facade re-exports the three crates of the workspace:
 //!
 //! * [`core`] (`gmap-core`): the kernel — darts, involutions, orbits, cells, marks,

@@ -1,0 +1,291 @@
+//! Removals and contractions of cells of degree 2 ([`try_remove_cell`],
+//! [`try_contract_cell`]), which merge the two cells on either side, and the removal of a
+//! dangling edge; each checks first that the space does not change.
+
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+
+use gmap_core::union_find::UnionFind;
+use gmap_core::{AlphaSet, DartId, GMap};
+
+use super::{debug_check, diff, live, local_counts, op_name, EulerError};
+use crate::euler::vector::{EpVector, EulerOp};
+
+/// A removal of an i-cell, which merges the two (i+1)-cells on its sides, or a contraction,
+/// which merges the two (i-1)-cells at its ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Move {
+    /// remove the cell
+    Remove,
+    /// contract the cell
+    Contract,
+}
+
+impl Move {
+    /// The dimension of the cells that an i-cell's move merges, `i + 1` or `i - 1`: the
+    /// only involution of the cell's darts that leaves those cells.
+    pub(crate) fn neighbour(self, i: usize) -> usize {
+        match self {
+            Move::Remove => i + 1,
+            Move::Contract => i - 1,
+        }
+    }
+
+    /// The next dimension beyond, `i + 2` or `i - 2`, if it is one of the n-map: the move
+    /// needs `alpha_nb alpha_next` to be an involution on the cell (degree 2).
+    pub(crate) fn beyond(self, i: usize, n: usize) -> Option<usize> {
+        match self {
+            Move::Remove => (i + 2 <= n).then_some(i + 2),
+            Move::Contract => i.checked_sub(2),
+        }
+    }
+}
+
+/// How a removal or contraction will rewire the map.
+enum Collapse {
+    /// the cell separates two distinct cells of the next dimension (or, for contraction,
+    /// of the previous one)
+    Merge,
+    /// an edge hanging from a vertex into a face (removal only)
+    Dangling,
+}
+
+/// The check of [`is_removable`] and [`is_contractible`].
+fn check_collapse(g: &GMap, d: DartId, i: usize, kind: Move) -> Result<Collapse, EulerError> {
+    let remove = kind == Move::Remove;
+    live(g, d)?;
+    let n = g.dim();
+    let (what, lo, hi) = if remove { ("removal", 0, n.saturating_sub(1)) } else { ("contraction", 1, n) };
+    if i < lo || i > hi || (remove && n == 0) {
+        return Err(EulerError::BadDimension { what, lo, hi, got: i });
+    }
+    let cell = g.cell(d, i);
+    let nb = kind.neighbour(i);
+    let nb2 = kind.beyond(i, n);
+    if let Some(j) = nb2 {
+        for &x in &cell {
+            let a = g.alpha(g.alpha(x, nb), j);
+            let b = g.alpha(g.alpha(x, j), nb);
+            if a != b {
+                return Err(EulerError::DegreeAboveTwo { dim: i, dart: x });
+            }
+        }
+    }
+    let mut sides: HashSet<DartId> = HashSet::default();
+    let mut count = 0;
+    let mut free = false;
+    for &x in &cell {
+        if g.is_free(x, nb) {
+            free = true;
+        }
+        if !sides.contains(&x) {
+            count += 1;
+            sides.extend(g.cell(x, nb));
+        }
+    }
+    if free {
+        return Err(EulerError::WouldChangeTopology { dim: i, dart: d, why: "lies on the boundary" });
+    }
+    if count == 2 {
+        if !remove {
+            // both end cells interior: no free dart in the cell or at its ends
+            for &x in &cell {
+                for y in g.cell(x, nb) {
+                    if (0..=n).any(|j| g.is_free(y, j)) {
+                        return Err(EulerError::WouldChangeTopology {
+                            dim: i,
+                            dart: y,
+                            why: "joins cells on the boundary (the space would be pinched)",
+                        });
+                    }
+                }
+            }
+        }
+        check_corners(g, &cell, i, nb)?;
+        return Ok(Collapse::Merge);
+    }
+    if remove && i == 1 {
+        // a dangling edge: at one of its ends the vertex is that end alone (alpha_1 keeps
+        // the end), a vertex of degree one. Asking only that the vertex be made of the edge's
+        // darts would take the loop of a one-vertex, one-edge map (L(1,0), L(2,1)) for one.
+        let above = AlphaSet::above(1, n);
+        for &x in &cell {
+            // the end <alpha_2..alpha_n>(x) lies inside the vertex: equal sizes, equal sets
+            if g.cell(x, 0).len() == g.orbit(x, above).len() {
+                return Ok(Collapse::Dangling);
+            }
+        }
+    }
+    Err(EulerError::WouldChangeTopology {
+        dim: i,
+        dart: d,
+        why: if remove { "has the same cell on both sides" } else { "has the same cell at both ends" },
+    })
+}
+
+/// The corner test: in every k-cell (k other than i and nb) that the cell meets, its
+/// appearances (orbits of the cell without alpha_i and alpha_k) must each join two distinct
+/// corners (orbits of every involution but alpha_nb and alpha_k), and these joins must
+/// form a forest; otherwise the k-cell would fall apart.
+fn check_corners(g: &GMap, cell: &[DartId], i: usize, nb: usize) -> Result<(), EulerError> {
+    let n = g.dim();
+    for k in (0..=n).filter(|&k| k != i && k != nb) {
+        let app_set = AlphaSet::all(n).without(i).without(k);
+        let corner_set = AlphaSet::all(n).without(nb).without(k);
+        let mut corner_of: HashMap<DartId, u32> = HashMap::default();
+        let mut corners = UnionFind::new(0);
+        let mut seen: HashSet<DartId> = HashSet::default();
+        for &x in cell {
+            if seen.contains(&x) {
+                continue;
+            }
+            let app = g.orbit(x, app_set);
+            seen.extend(app.iter().copied());
+            let mut sides: Vec<u32> = Vec::new();
+            for &y in &app {
+                let id = match corner_of.get(&y) {
+                    Some(&id) => id,
+                    None => {
+                        let id = corners.push();
+                        for z in g.orbit(y, corner_set) {
+                            corner_of.insert(z, id);
+                        }
+                        id
+                    }
+                };
+                if !sides.contains(&id) {
+                    sides.push(id);
+                }
+            }
+            if sides.len() != 2 {
+                return Err(EulerError::WouldChangeTopology {
+                    dim: i,
+                    dart: x,
+                    why: "meets a lower or higher cell in a way that would split it",
+                });
+            }
+            if !corners.union(sides[0], sides[1]) {
+                return Err(EulerError::WouldChangeTopology {
+                    dim: i,
+                    dart: x,
+                    why: "appears twice between the same corners of a cell it touches",
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether the i-cell of `d` can be removed by [`try_remove_cell`].
+pub fn is_removable(g: &GMap, d: DartId, i: usize) -> bool {
+    check_collapse(g, d, i, Move::Remove).is_ok()
+}
+
+/// Whether the i-cell of `d` can be contracted by [`try_contract_cell`].
+pub fn is_contractible(g: &GMap, d: DartId, i: usize) -> bool {
+    check_collapse(g, d, i, Move::Contract).is_ok()
+}
+
+/// Deletes the darts of `cell` after re-linking `alpha_i` around it: a dart `y` outside
+/// the cell linked to `x` inside gets the first dart outside reached by alternating
+/// `alpha_nb`, `alpha_i` from `x` (or becomes i-free).
+fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
+    let set: HashSet<DartId> = cell.iter().copied().collect();
+    let mut links: Vec<(DartId, DartId)> = Vec::new();
+    for &x in cell {
+        let y = g.alpha(x, i);
+        if set.contains(&y) {
+            continue;
+        }
+        let mut w = g.alpha(x, nb);
+        let mut z = g.alpha(w, i);
+        let mut steps = 0;
+        while set.contains(&z) && z != w && steps <= cell.len() {
+            w = g.alpha(z, nb);
+            z = g.alpha(w, i);
+            steps += 1;
+        }
+        let target = if set.contains(&z) { y } else { z };
+        links.push((y, target));
+    }
+    for &x in cell {
+        g.remove_dart(x);
+    }
+    for (y, z) in links {
+        if y == z {
+            g.unlink(y, i);
+        } else {
+            g.link(y, z, i);
+        }
+    }
+}
+
+/// Applies a checked removal or contraction of the i-cell of `d` ([`collapse`]) and returns
+/// the change of cells, recounted on the cells around it.
+fn collapse_counted(g: &mut GMap, d: DartId, i: usize, kind: Move) -> Vec<i64> {
+    let cell = g.cell(d, i);
+    let mut touched: Vec<DartId> = cell.clone();
+    touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
+    let before = local_counts(g, &touched);
+    collapse(g, &cell, i, kind.neighbour(i));
+    let after = local_counts(g, &touched);
+    debug_check(g);
+    diff(&after, &before)
+}
+
+/// Removes the i-cell of `d`, `i < n`, merging the two (i+1)-cells on its sides (`kve`,
+/// `kef`, `kfs`, …; CGAL's `remove_cell<i>`), or removes a dangling edge with its free end
+/// vertex (`kev`).
+///
+/// ```text
+///   ┌───┬───┐          ┌───────┐
+///   │ a │ b │   kef    │  a∪b  │   the middle edge goes, the faces merge
+///   └───┴───┘          └───────┘
+/// ```
+/// Precondition ([`is_removable`]): `i < n`; the cell has degree 2 (CGAL's condition:
+/// `alpha_{i+1} alpha_{i+2}` is an involution on its darts); no dart is (i+1)-free; its
+/// darts meet exactly two distinct (i+1)-cells, and in every other cell it touches its
+/// appearances join distinct corners without a cycle (else that cell would fall apart) —
+/// or, for `i = 1`, the edge is dangling. This
+/// is stricter than CGAL, which also removes cells with the same (i+1)-cell on both
+/// sides: that changes the space, and then no local rule gives the homology change.
+/// Effect: `-X_i - X_{i+1}` (space unchanged) or `-X_0 - X_1` (a whisker collapsed).
+/// O(size of the cells touched · n).
+pub fn try_remove_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+    let kind = check_collapse(g, d, i, Move::Remove)?;
+    let dx = collapse_counted(g, d, i, Move::Remove);
+    let name = match kind {
+        Collapse::Dangling => "kev".to_string(),
+        Collapse::Merge => op_name('k', i),
+    };
+    Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
+}
+
+/// Like [`try_remove_cell`], panicking when the precondition fails.
+pub fn remove_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
+    try_remove_cell(g, d, i).unwrap_or_else(|e| panic!("remove_cell: {e}"))
+}
+
+/// Contracts the i-cell of `d`, `i >= 1`, to an (i-1)-cell, merging the two (i-1)-cells
+/// at its ends (CGAL's `contract_cell<i>`): the dual of [`try_remove_cell`].
+///
+/// ```text
+///   u ──── e ──── v ── …     kev     w ── …    the edge shrinks, u and v become w
+/// ```
+/// Precondition ([`is_contractible`]): `1 <= i <= n`; dual degree 2
+/// (`alpha_{i-1} alpha_{i-2}` an involution on the cell, vacuous for edges); no dart
+/// free; its darts meet exactly two distinct (i-1)-cells, neither with a free dart; its
+/// appearances in the other cells it touches join distinct corners without a cycle.
+/// Effect `-X_{i-1} - X_i`,
+/// homology unchanged. O(size of the cells touched · n).
+pub fn try_contract_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+    check_collapse(g, d, i, Move::Contract)?;
+    let dx = collapse_counted(g, d, i, Move::Contract);
+    // an edge contracted is the classical kev (kill edge and vertex), as its dual removal is kve
+    let name = if i == 1 { "kev".to_string() } else { op_name('k', i - 1) };
+    Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
+}
+
+/// Like [`try_contract_cell`], panicking when the precondition fails.
+pub fn contract_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
+    try_contract_cell(g, d, i).unwrap_or_else(|e| panic!("contract_cell: {e}"))
+}

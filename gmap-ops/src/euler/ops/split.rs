@@ -1,0 +1,363 @@
+//! Splits and insertions: an i-cell cut in two by a new (i-1)-cell ([`try_split_cell`],
+//! with [`try_insert_vertex`] and [`try_insert_edge`] as its cases i = 1, 2) and a dangling
+//! edge hung into a face ([`try_insert_dangling_edge`]).
+
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+
+use gmap_core::{AlphaSet, DartId, GMap};
+
+use super::{debug_check, diff, live, local_counts, op_name, EulerError};
+use crate::euler::vector::{EpVector, EulerOp};
+
+/// The darts on side A of a cut of an i-cell: the closure of `seeds` under `alpha_k`
+/// for `k <= i - 3` and `k >= i + 1`.
+fn cut_closure(g: &GMap, seeds: &[DartId], i: usize) -> Vec<DartId> {
+    let n = g.dim();
+    let mut set = AlphaSet::EMPTY;
+    for k in 0..=n {
+        if k + 3 <= i || k > i {
+            set = set.with(k);
+        }
+    }
+    let mut seen: HashSet<DartId> = HashSet::default();
+    let mut out = Vec::new();
+    for &s in seeds {
+        if seen.contains(&s) {
+            continue;
+        }
+        for x in g.orbit(s, set) {
+            if seen.insert(x) {
+                out.push(x);
+            }
+        }
+    }
+    out
+}
+
+/// The `alpha_{i-2}` partner of a cut dart inside the new (i-1)-cell: walk from `x` by
+/// `alpha_{i-2}`, then alternately `alpha_{i-1}`, `alpha_{i-2}`, until a dart of the cut.
+fn cut_partner(g: &GMap, x: DartId, i: usize, cut: &HashSet<DartId>, limit: usize) -> Result<DartId, EulerError> {
+    let mut y = g.alpha(x, i - 2);
+    for _ in 0..limit {
+        if cut.contains(&y) {
+            return if y == x { Err(EulerError::OpenCut(x)) } else { Ok(y) };
+        }
+        let z = g.alpha(y, i - 1);
+        if z == y {
+            return Err(EulerError::Free { dart: y, alpha: i - 1 });
+        }
+        let w = g.alpha(z, i - 2);
+        if w == z {
+            return Err(EulerError::Free { dart: z, alpha: i - 2 });
+        }
+        y = w;
+    }
+    Err(EulerError::OpenCut(x))
+}
+
+/// A checked cut, ready to be applied.
+struct Cut {
+    darts: Vec<DartId>,
+    partner: HashMap<DartId, DartId>,
+}
+
+fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
+    let n = g.dim();
+    if i == 0 || i > n {
+        return Err(EulerError::BadDimension { what: "cell split", lo: 1, hi: n, got: i });
+    }
+    let Some(&first) = seeds.first() else {
+        return Err(EulerError::BadDimension { what: "cell split (no dart given)", lo: 1, hi: n, got: i });
+    };
+    for &s in seeds {
+        live(g, s)?;
+    }
+    let cell: HashSet<DartId> = g.cell(first, i).into_iter().collect();
+    let darts = cut_closure(g, seeds, i);
+    let set: HashSet<DartId> = darts.iter().copied().collect();
+    for &x in &darts {
+        if !cell.contains(&x) {
+            return Err(EulerError::Misplaced { dart: x, what: "cell being split" });
+        }
+        let w = g.alpha(x, i - 1);
+        if w == x {
+            return Err(EulerError::Free { dart: x, alpha: i - 1 });
+        }
+        if set.contains(&w) {
+            return Err(EulerError::Misplaced { dart: w, what: "other side of the cut" });
+        }
+    }
+    let mut partner = HashMap::default();
+    if i >= 2 {
+        for &x in &darts {
+            let z = cut_partner(g, x, i, &set, cell.len() + 1)?;
+            partner.insert(x, z);
+        }
+        for (&x, &z) in &partner {
+            if partner.get(&z) != Some(&x) {
+                return Err(EulerError::OpenCut(x));
+            }
+        }
+    }
+    // separation: from side A, moving inside the i-cell without crossing alpha_{i-1} at the
+    // cut, the other side must stay out of reach
+    let cellset = AlphaSet::cell(i, n);
+    let mut reach: HashSet<DartId> = HashSet::default();
+    let mut stack = vec![first];
+    reach.insert(first);
+    while let Some(x) = stack.pop() {
+        for k in cellset.iter() {
+            if k == i - 1 && set.contains(&x) {
+                continue;
+            }
+            let y = g.alpha(x, k);
+            if k == i - 1 && set.contains(&y) {
+                continue;
+            }
+            if reach.insert(y) {
+                stack.push(y);
+            }
+        }
+    }
+    for &x in &darts {
+        if reach.contains(&g.alpha(x, i - 1)) {
+            return Err(EulerError::NotSeparating(x));
+        }
+    }
+    Ok(Cut { darts, partner })
+}
+
+/// Whether [`try_split_cell`] would succeed for `seeds` and `i`.
+pub fn can_split_cell(g: &GMap, seeds: &[DartId], i: usize) -> bool {
+    check_cut(g, seeds, i).is_ok()
+}
+
+/// Splits an i-cell in two by inserting an (i-1)-cell along a closed cut (EO's
+/// `ms^{n-1}s^n`, CGAL's `insert_cell_0_in_cell_1`, `insert_cell_1_in_cell_2`,
+/// `insert_cell_2_in_cell_3` in one routine, for every `1 <= i <= n`).
+///
+/// The cut is given by darts of side A: the darts whose `alpha_{i-1}` link crosses the cut,
+/// taken on one side. The set is closed under `alpha_k` for `k <= i-3` and `k > i`
+/// automatically. For i = 1 it is one dart of the edge (the vertex goes between it and its
+/// `alpha_0`); for i = 2 the two corners' darts (see [`try_insert_edge`]); for i = 3 one dart
+/// per edge of a closed path on the volume's boundary, all in faces of one side.
+///
+/// ```text
+///   before:  x ──alpha_{i-1}── w        after:  x ─ a(x) ═alpha_i═ b(x) ─ w
+/// ```
+/// Each crossing `x — w` gets two new darts, `a(x)` on side A and `b(x)` on side B,
+/// `alpha_i`-linked: they are the two sides of the new (i-1)-cell.
+///
+/// Precondition ([`can_split_cell`]): `1 <= i <= n`; the darts lie in one i-cell; none is
+/// `(i-1)`-free and none is linked to another cut dart; the walk that turns around each
+/// (i-3)-cell of the cut closes up; the cut separates the cell. Effect: one more
+/// (i-1)-cell and one more i-cell, homology unchanged. O(size of the i-cell · n).
+pub fn try_split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> Result<EulerOp, EulerError> {
+    let cut = check_cut(g, seeds, i)?;
+    let mut touched: Vec<DartId> = cut.darts.clone();
+    touched.extend(cut.darts.iter().map(|&x| g.alpha(x, i - 1)));
+    let before = local_counts(g, &touched);
+    let new_darts = apply_cut(g, &cut, i);
+    touched.extend(new_darts);
+    let after = local_counts(g, &touched);
+    debug_check(g);
+    Ok(EulerOp::new(op_name('m', i - 1), EpVector::from_cells(&diff(&after, &before))))
+}
+
+/// [`try_split_cell`] without the Euler–Poincaré bookkeeping, for searches that split many
+/// cells and only keep the map: `false` (and `g` unchanged) when the precondition fails.
+/// O(size of the i-cell · n).
+pub(crate) fn split_cell_quietly(g: &mut GMap, seeds: &[DartId], i: usize) -> bool {
+    match check_cut(g, seeds, i) {
+        Ok(cut) => {
+            apply_cut(g, &cut, i);
+            true
+        }
+        Err(_) => false,
+    }
+}
+
+/// [`try_insert_edge`] without the Euler–Poincaré bookkeeping (see [`split_cell_quietly`]).
+pub(crate) fn insert_edge_quietly(g: &mut GMap, d1: DartId, d2: DartId) -> bool {
+    edge_cut(g, d1, d2).is_ok_and(|c| split_cell_quietly(g, &c, 2))
+}
+
+/// Links the two new darts of every crossing of a checked cut (see [`try_split_cell`]);
+/// returns the new darts.
+fn apply_cut(g: &mut GMap, cut: &Cut, i: usize) -> Vec<DartId> {
+    let n = g.dim();
+    let mut a: HashMap<DartId, DartId> = HashMap::default();
+    let mut b: HashMap<DartId, DartId> = HashMap::default();
+    for &x in &cut.darts {
+        a.insert(x, g.create_dart());
+        b.insert(x, g.create_dart());
+    }
+    for &x in &cut.darts {
+        let (ax, bx) = (a[&x], b[&x]);
+        let w = g.alpha(x, i - 1);
+        g.link(x, ax, i - 1);
+        g.link(w, bx, i - 1);
+        g.link(ax, bx, i);
+        for k in 0..=n {
+            if k + 3 <= i || k > i {
+                let y = g.alpha(x, k);
+                if y != x {
+                    g.link(ax, a[&y], k);
+                    g.link(bx, b[&y], k);
+                }
+            }
+        }
+        if i >= 2 {
+            let z = cut.partner[&x];
+            g.link(ax, a[&z], i - 2);
+            g.link(bx, b[&z], i - 2);
+        }
+    }
+    a.into_values().chain(b.into_values()).collect()
+}
+
+/// Like [`try_split_cell`], panicking when the precondition fails.
+pub fn split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> EulerOp {
+    try_split_cell(g, seeds, i).unwrap_or_else(|e| panic!("split_cell: {e}"))
+}
+
+/// Whether [`try_insert_vertex`] would succeed.
+pub fn can_insert_vertex(g: &GMap, d: DartId) -> bool {
+    g.contains(d) && g.dim() >= 1 && can_split_cell(g, &[d], 1)
+}
+
+/// Inserts a vertex in the edge of `d` (`mve`, CGAL's `insert_cell_0_in_cell_1`).
+///
+/// ```text
+///   u ─────────── v      becomes      u ───── w ───── v
+/// ```
+/// Precondition ([`can_insert_vertex`]): `n >= 1`, the edge has both ends (no 0-free dart)
+/// and is not folded onto itself. Effect `X_0 + X_1` (`B0 + A1`). O(edge size · n).
+pub fn try_insert_vertex(g: &mut GMap, d: DartId) -> Result<EulerOp, EulerError> {
+    live(g, d)?;
+    try_split_cell(g, &[d], 1)
+}
+
+/// The two corner darts that define an edge inserted between the vertices of `d1` and
+/// `d2` in their face: `d1`, and whichever of `d2`, `alpha_1(d2)` the face boundary
+/// reaches first walking from `d1` by `alpha_0`, `alpha_1`, ….
+fn edge_cut(g: &GMap, d1: DartId, d2: DartId) -> Result<[DartId; 2], EulerError> {
+    live(g, d1)?;
+    live(g, d2)?;
+    if g.dim() < 2 {
+        return Err(EulerError::BadDimension { what: "edge insertion", lo: 2, hi: g.dim(), got: g.dim() });
+    }
+    let corner = [d2, g.alpha(d2, 1)];
+    if corner.contains(&d1) || corner.contains(&g.alpha(d1, 1)) {
+        return Err(EulerError::Misplaced { dart: d2, what: "a corner other than d1's" });
+    }
+    let mut x = d1;
+    let limit = g.cell(d1, 2).len() + 2;
+    for _ in 0..limit {
+        let y = g.alpha(x, 0);
+        if y == x {
+            return Err(EulerError::Free { dart: x, alpha: 0 });
+        }
+        if corner.contains(&y) {
+            return Ok([d1, y]);
+        }
+        let z = g.alpha(y, 1);
+        if z == y {
+            return Err(EulerError::Free { dart: y, alpha: 1 });
+        }
+        if z == d1 {
+            break;
+        }
+        if corner.contains(&z) {
+            return Ok([d1, z]);
+        }
+        x = z;
+    }
+    Err(EulerError::Misplaced { dart: d2, what: "the face of d1" })
+}
+
+/// Whether [`try_insert_edge`] would succeed.
+pub fn can_insert_edge(g: &GMap, d1: DartId, d2: DartId) -> bool {
+    edge_cut(g, d1, d2).map(|c| can_split_cell(g, &c, 2)).unwrap_or(false)
+}
+
+/// Inserts an edge across the face of `d1`, from the corner of `d1` (between `d1` and
+/// `alpha_1(d1)`) to the corner of `d2` (`mef`, CGAL's `insert_cell_1_in_cell_2`).
+///
+/// ```text
+///   ┌───────┐          ┌───────┐
+///   │       │   mef    │      /│
+///   │   f   │  ─────>  │  f1 / │   one face becomes two
+///   │       │          │   / f2│
+///   └───────┘          └───────┘
+/// ```
+/// Precondition ([`can_insert_edge`]): `n >= 2`; `d2` lies on the boundary of the face of
+/// `d1` at another corner; the face boundary between them has no free dart. Effect
+/// `X_1 + X_2` (`B1 + A2`). O(face size · n).
+pub fn try_insert_edge(g: &mut GMap, d1: DartId, d2: DartId) -> Result<EulerOp, EulerError> {
+    let cut = edge_cut(g, d1, d2)?;
+    try_split_cell(g, &cut, 2)
+}
+
+/// Whether [`try_insert_dangling_edge`] would succeed.
+pub fn can_insert_dangling_edge(g: &GMap, d: DartId) -> bool {
+    g.contains(d) && g.dim() >= 2 && !g.is_free(d, 1)
+}
+
+/// Inserts a dangling edge in the face of `d`, hanging from the vertex of `d` between `d`
+/// and `alpha_1(d)` (`mev`, CGAL's `insert_dangling_cell_1_in_cell_2`).
+///
+/// ```text
+///   ┌───────┐          ┌───────┐
+///   │       │   mev    │       │
+///   │       │  ─────>  │   o   │   a new vertex o on a new edge, inside the face
+///   │       │          │   |   │
+///   └───────┘          └───┴───┘
+/// ```
+/// Precondition ([`can_insert_dangling_edge`]): `n >= 2` and `d` is not 1-free. Effect
+/// `X_0 + X_1` (`B0 + A1`). O(size of the cells touched · n).
+pub fn try_insert_dangling_edge(g: &mut GMap, d: DartId) -> Result<EulerOp, EulerError> {
+    live(g, d)?;
+    let n = g.dim();
+    if n < 2 {
+        return Err(EulerError::BadDimension { what: "dangling edge", lo: 2, hi: n, got: n });
+    }
+    if g.is_free(d, 1) {
+        return Err(EulerError::Free { dart: d, alpha: 1 });
+    }
+    // copies of the corner across alpha_3..alpha_n
+    let corners = g.orbit(d, AlphaSet::range(3, n));
+    let mut touched: Vec<DartId> = corners.clone();
+    touched.extend(corners.iter().map(|&x| g.alpha(x, 1)));
+    let before = local_counts(g, &touched);
+    // per corner copy: p (next to x), q (next to alpha_1 x), p2, q2 at the far end
+    let mut new: HashMap<DartId, [DartId; 4]> = HashMap::default();
+    for &x in &corners {
+        let ds = [g.create_dart(), g.create_dart(), g.create_dart(), g.create_dart()];
+        new.insert(x, ds);
+    }
+    for &x in &corners {
+        let [p, q, p2, q2] = new[&x];
+        let y = g.alpha(x, 1);
+        g.link(x, p, 1);
+        g.link(y, q, 1);
+        g.link(p, p2, 0);
+        g.link(q, q2, 0);
+        g.link(p, q, 2);
+        g.link(p2, q2, 2);
+        g.link(p2, q2, 1);
+        for k in 3..=n {
+            let z = g.alpha(x, k);
+            if z != x {
+                let o = new[&z];
+                for t in 0..4 {
+                    g.link(new[&x][t], o[t], k);
+                }
+            }
+        }
+    }
+    touched.extend(new.values().flatten());
+    let after = local_counts(g, &touched);
+    debug_check(g);
+    Ok(EulerOp::new("mev", EpVector::from_cells(&diff(&after, &before))))
+}
