@@ -23,17 +23,18 @@ use crate::engine::homology::{homology_z, Homology};
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum PreconditionError {
     /// Condition C1 fails: the cell is not orientable as a compacted cell, or its boundary
-    /// is incomplete.
-    #[error("condition C1 fails: {0}")]
+    /// is open (the kernel's message names the cell and the condition).
+    #[error(transparent)]
     C1(#[from] CellDefect),
     /// Condition C2 fails: the boundary of the cell is not a homology sphere.
-    #[error("condition C2 fails: the boundary of the {dim}-cell of dart {dart} is not a homology {}-sphere ({found})", .dim - 1)]
+    #[error("the {dim}-cell of dart {dart} is not bounded by a sphere: its boundary has {found} (condition C2: every cell bounded by a homology sphere)")]
     C2 {
         /// dimension of the cell
         dim: usize,
         /// the smallest dart of the cell
-        dart: u32,
-        /// what the boundary is instead (an Euler characteristic or homology groups)
+        dart: Dart,
+        /// what the boundary has instead: `Euler characteristic 0`, `homology (Z, Z^2, Z)`,
+        /// or `no computable homology (…)`
         found: String,
     },
 }
@@ -121,16 +122,16 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let sub = DenseMap::from_flat_unchecked(i - 1, flat).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c].0,
-            found: e.to_string(),
+            dart: cells.cells.reps[c],
+            found: format!("no computable homology ({e})"),
         })?;
         let h = homology_z(&simplicial_complex(&sub)).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c].0,
-            found: e.to_string(),
+            dart: cells.cells.reps[c],
+            found: format!("no computable homology ({e})"),
         })?;
         if !is_sphere(&h, i - 1) {
-            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c].0, found: format!("homology {h}") });
+            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c], found: format!("homology {h}") });
         }
     }
     Ok(())
@@ -143,8 +144,8 @@ fn check_chi(chi: &[i64], cells: &OrientedCells) -> Result<(), PreconditionError
         None => Ok(()),
         Some(c) => Err(PreconditionError::C2 {
             dim: 3,
-            dart: cells.cells.reps[c].0,
-            found: format!("a surface of Euler characteristic {}", chi[c]),
+            dart: cells.cells.reps[c],
+            found: format!("Euler characteristic {}", chi[c]),
         }),
     }
 }

@@ -107,7 +107,7 @@ impl fmt::Display for Homology {
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
-    #[error("{0} is not a prime number below 2^31: --field needs a prime")]
+    #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]
     NotPrime(u64),
     /// A torsion coefficient does not fit in `u64`.
     #[error("a torsion coefficient of H_{dim} exceeds 2^64")]
@@ -123,7 +123,7 @@ pub enum HomologyError {
         /// alternating sum of the Betti numbers
         betti: i64,
     },
-    /// `--generators` on a complex whose reduction keeps too many cells in one dimension.
+    /// Generators asked of a complex whose reduction keeps too many cells in one dimension.
     #[error("generators are computed when the reduced complex keeps at most {limit} cells per dimension; dimension {dim} keeps {cells}")]
     GeneratorsTooLarge {
         /// the dimension

@@ -101,7 +101,7 @@ pub enum ArchError {
         weight: i64,
     },
     /// `δ²` has a non-zero defined entry: the boundary of `from` has a non-zero boundary at `to`.
-    #[error("the partial boundary matrix does not square to zero: δ² from region {from} to region {to} is {value}")]
+    #[error("the boundary of the boundary of region {from} is {value} at region {to}, not 0: the partial boundary matrix does not square to zero (AC Def. 3.1)")]
     SquareNotZero {
         /// the upper region
         from: u64,
