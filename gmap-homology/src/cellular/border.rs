@@ -23,7 +23,7 @@ pub struct CellularComplex {
     /// `∂_1..∂_n` over the cells
     pub chain: ChainComplex,
     /// `reps[k][j]`: the smallest dart of k-cell `j`
-    pub reps: Vec<Vec<u32>>,
+    pub reps: Vec<Vec<Dart>>,
 }
 
 /// Builds the border operator of `map` after checking C1 and C2 on every cell.
@@ -83,7 +83,7 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
     let mats: Vec<SparseMatrix> = parallel::map_tasks(n, map.dart_count(), |t| matrix(t + 1));
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
     debug_assert_eq!(chain.check_dd(), Ok::<(), ChainError>(()), "∂∂ = 0 under C1");
-    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
     CellularComplex { chain, reps }
 }
 
@@ -99,7 +99,7 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
         })
         .collect();
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
-    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
     CellularComplex { chain, reps }
 }
 
@@ -180,7 +180,7 @@ mod tests {
                 let inc = Incidence::new(&m, i);
                 for (col, &cd) in c.reps[i].iter().enumerate() {
                     for (row, &fd) in c.reps[i - 1].iter().enumerate() {
-                        let want = inc.signed_with(&oriented[i], &oriented[i - 1], Dart(cd), Dart(fd));
+                        let want = inc.signed_with(&oriented[i], &oriented[i - 1], cd, fd);
                         assert_eq!(c.chain.boundary(i).get(row, col), want);
                     }
                 }
