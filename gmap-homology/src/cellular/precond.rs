@@ -1,5 +1,5 @@
 //! Conditions C1 and C2 under which the cellular border operator gives the true homology
-//! (DESIGN.md, "Homology: when the cellular method is right").
+//! (`docs/DESIGN.md`, "When cellular homology is right").
 //!
 //! * **C1**: every i-cell is orientable as a compacted cell — a colouring of its darts
 //!   that `alpha_k` flips for `k < i` and `alpha_j` keeps for `j > i` (so no dart is
