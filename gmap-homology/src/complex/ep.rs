@@ -276,42 +276,27 @@ pub struct ElementaryOperator {
 
 /// The word for an i-dimensional element: vertex, edge, area, volume, then "i-cell".
 pub fn element_name(i: usize) -> String {
-    match i {
-        0 => "vertex".into(),
-        1 => "edge".into(),
-        2 => "area".into(),
-        3 => "volume".into(),
-        _ => format!("{i}-cell"),
-    }
+    named(i, &["vertex", "edge", "area", "volume"], |i| format!("{i}-cell"))
 }
 
 /// The word for a j-dimensional hole: component, loop, shell, then "j-hole" (AC §7.3).
 pub fn hole_name(j: usize) -> String {
-    match j {
-        0 => "component".into(),
-        1 => "loop".into(),
-        2 => "shell".into(),
-        _ => format!("{j}-hole"),
-    }
+    named(j, &["component", "loop", "shell"], |j| format!("{j}-hole"))
 }
 
+/// The letter of an i-dimensional element in mnemonics: v, e, a, b (body), then "c<i>".
 fn element_code(i: usize) -> String {
-    match i {
-        0 => "v".into(),
-        1 => "e".into(),
-        2 => "a".into(),
-        3 => "b".into(),
-        _ => format!("c{i}"),
-    }
+    named(i, &["v", "e", "a", "b"], |i| format!("c{i}"))
 }
 
+/// The letter of a j-dimensional hole in mnemonics: c, l, s, then "h<j>".
 fn hole_code(j: usize) -> String {
-    match j {
-        0 => "c".into(),
-        1 => "l".into(),
-        2 => "s".into(),
-        _ => format!("h{j}"),
-    }
+    named(j, &["c", "l", "s"], |j| format!("h{j}"))
+}
+
+/// `names[k]`, or `beyond(k)` past the named dimensions.
+fn named(k: usize, names: &[&str], beyond: impl Fn(usize) -> String) -> String {
+    names.get(k).map_or_else(|| beyond(k), |s| s.to_string())
 }
 
 impl ElementaryOperator {

@@ -353,26 +353,8 @@ impl TmModel {
             if k == 0 {
                 continue;
             }
-            let b = self.boundary(&SignedSet::cell(c));
-            if k == 1 {
-                let (p, m) = Self::zero_sum(&b);
-                if p != m {
-                    return Err(TmDefect::BoundaryNotCircuit {
-                        cell: self.ids[c],
-                        dim: k,
-                        at: self.ids[c],
-                        plus: p,
-                        minus: m,
-                    });
-                }
-            } else if let Some((at, p, m)) = self.boundary(&b).iter().find(|&(_, p, m)| p != m) {
-                return Err(TmDefect::BoundaryNotCircuit {
-                    cell: self.ids[c],
-                    dim: k,
-                    at: self.ids[at],
-                    plus: p,
-                    minus: m,
-                });
+            if let Some((at, plus, minus)) = self.unbalanced(c, k == 1, |x| self.boundary(x)) {
+                return Err(TmDefect::BoundaryNotCircuit { cell: self.ids[c], dim: k, at: self.ids[at], plus, minus });
             }
         }
         for c in 0..self.len() {
@@ -380,29 +362,30 @@ impl TmModel {
             if k >= self.dim {
                 continue;
             }
-            let g = self.coboundary(&SignedSet::cell(c));
-            if k + 1 == self.dim {
-                let (p, m) = Self::zero_sum(&g);
-                if p != m {
-                    return Err(TmDefect::CoboundaryNotCocircuit {
-                        cell: self.ids[c],
-                        dim: k,
-                        at: self.ids[c],
-                        plus: p,
-                        minus: m,
-                    });
-                }
-            } else if let Some((at, p, m)) = self.coboundary(&g).iter().find(|&(_, p, m)| p != m) {
+            if let Some((at, plus, minus)) = self.unbalanced(c, k + 1 == self.dim, |x| self.coboundary(x)) {
                 return Err(TmDefect::CoboundaryNotCocircuit {
                     cell: self.ids[c],
                     dim: k,
                     at: self.ids[at],
-                    plus: p,
-                    minus: m,
+                    plus,
+                    minus,
                 });
             }
         }
         Ok(())
+    }
+
+    /// Where the image of cell `c` under `step` is not a circuit: with `ends`, the image is
+    /// a set of end cells whose coefficients must cancel (reported at `c` itself); else the
+    /// first cell occurring unequally often with each sign in the image of the image.
+    fn unbalanced(&self, c: usize, ends: bool, step: impl Fn(&SignedSet) -> SignedSet) -> Option<(usize, u64, u64)> {
+        let image = step(&SignedSet::cell(c));
+        if ends {
+            let (p, m) = Self::zero_sum(&image);
+            (p != m).then_some((c, p, m))
+        } else {
+            step(&image).iter().find(|&(_, p, m)| p != m)
+        }
     }
 
     /// The Poincaré dual (TM §IV): cell of dimension k becomes dimension `n - k`, boundary

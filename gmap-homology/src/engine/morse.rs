@@ -382,24 +382,8 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     #[inline]
     fn release(&mut self, z: usize) {
         let Sweep { links, state, nb, nc, work, .. } = self;
-        for &e in links.cofaces(z) {
-            let y = cell(e);
-            if state[y] == State::Alive {
-                nb[y] -= 1;
-                if nb[y] == 1 {
-                    work.push(y as u32);
-                }
-            }
-        }
-        for &e in links.faces(z) {
-            let y = cell(e);
-            if state[y] == State::Alive {
-                nc[y] -= 1;
-                if nc[y] == 1 {
-                    work.push(y as u32);
-                }
-            }
-        }
+        lose_one(links.cofaces(z), state, nb, work);
+        lose_one(links.faces(z), state, nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
@@ -458,6 +442,21 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let new_counts = ids.iter().map(Vec::len).collect();
         let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
         Some(Restricted { chain, ids, log, off })
+    }
+}
+
+/// Each alive cell of `linked` has one neighbour less in `count`; those left with one are
+/// queued.
+#[inline]
+fn lose_one(linked: &[u32], state: &[State], count: &mut [u32], work: &mut Ready) {
+    for &e in linked {
+        let y = cell(e);
+        if state[y] == State::Alive {
+            count[y] -= 1;
+            if count[y] == 1 {
+                work.push(y as u32);
+            }
+        }
     }
 }
 

@@ -128,36 +128,23 @@ impl ArchComplex {
             let all_zero = hit.peek().is_some() && hit.all(|e| e.weight == 0);
             if rule == ZeroWeightRule::Seam && all_zero {
                 let v = g.fresh(0);
-                let mut vec = EpVector::x_unit(n, 0).try_add(&EpVector::y_unit(n, 0)).expect("small");
-                if i > 1 {
+                let created = if i > 1 {
                     let s = g.fresh(i - 1);
                     g.entries.push((reg.id, s, 1));
                     g.entries.push((s, v, 0));
-                    vec = vec
-                        .try_add(&EpVector::x_unit(n, i - 1))
-                        .and_then(|x| x.try_add_scaled(-1, &EpVector::y_unit(n, i)))
-                        .expect("small");
-                    ops.push(AppliedOperator {
-                        step: Step::CompleteSeam,
-                        region: reg.id,
-                        created: vec![s, v],
-                        vector: vec,
-                    });
+                    vec![s, v]
                 } else {
                     let w = g.fresh(0);
                     g.entries.push((reg.id, v, -1));
                     g.entries.push((reg.id, w, 1));
-                    vec = vec
-                        .try_add(&EpVector::x_unit(n, 0))
-                        .and_then(|x| x.try_add_scaled(-1, &EpVector::y_unit(n, 1)))
-                        .expect("small");
-                    ops.push(AppliedOperator {
-                        step: Step::CompleteSeam,
-                        region: reg.id,
-                        created: vec![v, w],
-                        vector: vec,
-                    });
-                }
+                    vec![v, w]
+                };
+                // (X_0 + Y_0) + (X_{i-1} - Y_i)
+                let vector = EpVector::b(n, 0)
+                    .try_add(&EpVector::x_unit(n, i - 1))
+                    .and_then(|x| x.try_add_scaled(-1, &EpVector::y_unit(n, i)))
+                    .expect("small");
+                ops.push(AppliedOperator { step: Step::CompleteSeam, region: reg.id, created, vector });
             } else {
                 let v = g.fresh(0);
                 g.entries.push((reg.id, v, 0));
