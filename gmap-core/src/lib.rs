@@ -84,6 +84,6 @@ pub use alpha::{AlphaSet, MAX_DIM};
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, SewError};
-pub use error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityError};
+pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
 pub use marks::{MarkId, Marks};
 pub use view::MapView;
