@@ -443,7 +443,7 @@ impl EoOperator {
                 "stratum s is an n-stratum, boundary-complete (or incomplete for the ∞ form); the new (n-1)-ball is attached to `on`; the second part takes the frontier strata `moved` and the holes `holes`; parts of a complete stratum are complete, of an incomplete one at least one is incomplete (`parts_complete`)"
             }
             (Subdivide, true, _) => {
-                "s and u are distinct n-strata of one component, t an (n-1)-ball in both frontiers that bounds no other stratum beside those above s or u; all complete (at least one incomplete for the ∞ form); u and t join s"
+                "s and u are distinct n-strata of one component (or the incomplete one a component of its own, which the merged stratum joins), t an (n-1)-ball in both frontiers that bounds no other stratum beside those above s or u; all complete (at least one incomplete for the ∞ form); u and t join s"
             }
             (SubdivideByClosed, false, _) => {
                 "stratum s is an n-stratum; a closed (n-1)-stratum inside it makes an (n-1)-hole in s and bounds a new n-ball"
@@ -835,14 +835,23 @@ impl StratifiedObject {
                 self.expect_dim(name, u, n)?;
                 self.expect_dim(name, t, n - 1)?;
                 self.expect_ball(name, t)?;
-                let c = self.strata[s].component;
-                if self.strata[u].component != c || self.strata[t].component != c {
-                    return Err(pre(name, "s, t and u are not in one component"));
-                }
+                let (cs, ct, cu) = (self.strata[s].component, self.strata[t].component, self.strata[u].component);
                 self.expect_frontier_of(name, &[t], s)?;
                 self.expect_frontier_of(name, &[t], u)?;
                 self.expect_bounds_only(name, t, &[s, u])?;
                 let complete = self.strata[s].complete && self.strata[u].complete && self.strata[t].complete;
+                // the parts may lie in different components when one of them is a
+                // boundary-incomplete stratum component of its own (a G-map read by
+                // `from_map`): the merged stratum goes to the boundary-incomplete one, and a
+                // component left without strata goes; the theorems check the rest
+                let target = if !complete && self.components[cs].complete { cu } else { cs };
+                if cs != cu && (complete || self.components[target].complete) {
+                    return Err(pre(name, "s and u are in different components"));
+                }
+                if ct != cs && ct != cu {
+                    return Err(pre(name, "t is not in the component of s or u"));
+                }
+                self.strata[s].component = target;
                 if complete == op.open {
                     return Err(pre(
                         name,
@@ -872,6 +881,14 @@ impl StratifiedObject {
                 self.replace_in_frontiers(t, None);
                 self.strata[u].alive = false;
                 self.strata[t].alive = false;
+                for c in [cs, ct, cu] {
+                    if self.components[c].alive && self.strata_of(c).is_empty() {
+                        if self.components[c].holes.iter().any(|&h| h != 0) {
+                            return Err(pre(name, format!("component {c} would vanish with its global holes")));
+                        }
+                        self.components[c].alive = false;
+                    }
+                }
             }
             (SubdivideByClosed, false) | (SubdivideClosedByClosed, false) => {
                 let s = self.live(need(a.s, name, "the stratum s")?)?;
