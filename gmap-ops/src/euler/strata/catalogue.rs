@@ -277,7 +277,9 @@ pub struct EoArgs {
     pub c2: Option<usize>,
     /// a third component (the one of a compacting vertex in `kE∞C`)
     pub c3: Option<usize>,
-    /// the frontier of the new stratum; the fillers of a compacter
+    /// the frontier of the new stratum; the fillers of a compacter; in a subdivision, the
+    /// frontier strata that bound both parts (and the cut, where lower than it: the ends of
+    /// the edge of `mef`; for `mve` on a loop, its one vertex)
     pub on: Vec<usize>,
     /// strata that go with the new part: the second part of a subdivision takes these of
     /// the frontier (those also in `on` stay with both), a split component takes these
@@ -443,7 +445,7 @@ impl EoOperator {
                 "stratum s is an n-stratum, boundary-complete (or incomplete for the ∞ form); the new (n-1)-ball is attached to `on`; the second part takes the frontier strata `moved` and the holes `holes`; parts of a complete stratum are complete, of an incomplete one at least one is incomplete (`parts_complete`)"
             }
             (Subdivide, true, _) => {
-                "s and u are distinct n-strata of one component (or the incomplete one a component of its own, which the merged stratum joins), t an (n-1)-ball in both frontiers that bounds no other stratum beside those above s or u; all complete (at least one incomplete for the ∞ form); u and t join s"
+                "s and u are distinct n-strata of one component (or of several, as in a G-map read by `from_map`: the merged stratum stays in s's component, or goes to u's when it is boundary-incomplete and s's is not; a component left empty goes), t an (n-1)-ball in both frontiers that bounds no other stratum beside those above s or u; all complete (at least one incomplete for the ∞ form); u and t join s"
             }
             (SubdivideByClosed, false, _) => {
                 "stratum s is an n-stratum; a closed (n-1)-stratum inside it makes an (n-1)-hole in s and bounds a new n-ball"
@@ -805,7 +807,9 @@ impl StratifiedObject {
                 }
                 self.expect_frontier_of(name, &a.on, s)?;
                 self.expect_frontier_of(name, &a.moved, s)?;
-                let cut = self.new_stratum(n - 1, cut_complete, st.component, &a.on);
+                // the strata of `on` bound both parts, and the cut where they are lower
+                let cut_on: Vec<usize> = a.on.iter().copied().filter(|&x| self.strata[x].dim + 1 < n).collect();
+                let cut = self.new_stratum(n - 1, cut_complete, st.component, &cut_on);
                 let mut fb = vec![cut];
                 fb.extend(a.on.iter().copied());
                 fb.extend(a.moved.iter().copied());
@@ -816,6 +820,20 @@ impl StratifiedObject {
                 self.strata[s].frontier = keep;
                 self.strata[s].frontier.push(cut);
                 self.strata[s].complete = pa;
+                // a boundary-complete part of a boundary-incomplete stratum joins the
+                // complete part of the object where its frontier lies (mve∞ on an edge with
+                // one end: the part from that end to the new vertex), with the cut
+                if pa && !self.components[st.component].complete {
+                    let home = self.strata[s]
+                        .frontier
+                        .iter()
+                        .map(|&x| self.strata[x].component)
+                        .find(|&c| self.components[c].complete);
+                    if let Some(h) = home {
+                        self.strata[s].component = h;
+                        self.strata[cut].component = h;
+                    }
+                }
                 // the holes that go with the second part are boundary-complete ones; the
                 // boundary-incomplete holes stay with the first part
                 for &(k, h) in &a.holes {
@@ -845,12 +863,6 @@ impl StratifiedObject {
                 // `from_map`): the merged stratum goes to the boundary-incomplete one, and a
                 // component left without strata goes; the theorems check the rest
                 let target = if !complete && self.components[cs].complete { cu } else { cs };
-                if cs != cu && (complete || self.components[target].complete) {
-                    return Err(pre(name, "s and u are in different components"));
-                }
-                if ct != cs && ct != cu {
-                    return Err(pre(name, "t is not in the component of s or u"));
-                }
                 self.strata[s].component = target;
                 if complete == op.open {
                     return Err(pre(
