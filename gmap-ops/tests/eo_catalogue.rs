@@ -460,11 +460,14 @@ fn refusals_name_the_reason_and_change_nothing() {
     let mut o = StratifiedObject::new();
     let r = run(&mut o, "meehCCh", EoArgs::new()).new[0];
     assert_eq!(refuse(&mut o, "mve", EoArgs::new().s(r)), StrataError::ClosedWithFrontier(r));
-    // kvmfc on an open face would give it a 2-hole
+    // kvmfc on an open face (with a vertex inside) would give it a 2-hole
     let mut o = StratifiedObject::new();
-    let v = run(&mut o, "mvC", EoArgs::new()).new[0];
-    let f = run(&mut o, "mf∞F∞", EoArgs::new().on(&[v])).new[0];
-    refuse(&mut o, "kvmfc", EoArgs::new().s(f).t(v));
+    let f = run(&mut o, "mf∞F∞", EoArgs::new()).new[0];
+    let v = run(&mut o, "mvfh", EoArgs::new().s(f)).new[0];
+    assert_eq!(
+        refuse(&mut o, "kvmfc", EoArgs::new().s(f).t(v)),
+        StrataError::HoleOutOfRange { stratum: f, dim: 2, state: "boundary-incomplete", k: 2 }
+    );
     // detaching a vertex that bounds an edge
     let (mut o, v, _, _) = circle();
     assert!(matches!(refuse(&mut o, "kvC", EoArgs::new().s(v[0])), StrataError::Precondition { .. }));
@@ -478,4 +481,38 @@ fn refusals_name_the_reason_and_change_nothing() {
     refuse(&mut o, "keCh", EoArgs::new().s(e[0]));
     // unknown names
     assert!(StratifiedObject::new().apply_named("mxyz", &EoArgs::new()).is_err());
+}
+
+#[test]
+fn invariants_catch_hand_made_objects() {
+    // the fields are public: validate() names what a hand-made object breaks
+    let (good, v, e, f, _) = disc();
+    assert_eq!(good.validate(), Ok(()));
+    // a vertex has no holes
+    let mut o = good.clone();
+    o.strata[v[0]].holes = vec![0, 1];
+    assert_eq!(o.validate(), Err(StrataError::VertexHole(v[0])));
+    // an edge has no 2-hole
+    let mut o = good.clone();
+    o.strata[e[0]].holes = vec![0, 0, 1];
+    assert!(matches!(o.validate(), Err(StrataError::HoleOutOfRange { k: 2, dim: 1, .. })));
+    // a face has at most one 2-hole
+    let mut o = good.clone();
+    o.strata[f].holes[2] = 2;
+    assert!(matches!(o.validate(), Err(StrataError::HoleCount { k: 2, .. })));
+    // a lone open edge is never complete
+    let mut o = StratifiedObject::new();
+    let x = run(&mut o, "me∞E∞", EoArgs::new()).new[0];
+    o.strata[x].complete = true;
+    o.components[o.strata[x].component].complete = true;
+    assert_eq!(o.validate(), Err(StrataError::LoneOpenStratum(x)));
+    // the theorems must agree
+    let mut o = good.clone();
+    let c = o.strata[f].component;
+    o.components[c].holes = vec![0, 1];
+    assert_eq!(o.validate(), Err(StrataError::TheoremsDisagree { by_strata: 1, by_components: 0 }));
+    // an incomplete stratum in a complete component
+    let mut o = good;
+    o.strata[e[1]].complete = false;
+    assert!(matches!(o.validate(), Err(StrataError::IncompleteInComplete { .. })));
 }

@@ -3,7 +3,10 @@
 
 use gmap_ops::euler::strata::{example_1, example_2, EoStep};
 
-fn table(steps: &[EoStep]) -> Vec<(String, Vec<(&'static str, i64)>, i64)> {
+/// One step: the operator's name, the counts that are not zero, χ.
+type Row = (String, Vec<(&'static str, i64)>, i64);
+
+fn table(steps: &[EoStep]) -> Vec<Row> {
     steps
         .iter()
         .map(|s| {
@@ -14,7 +17,7 @@ fn table(steps: &[EoStep]) -> Vec<(String, Vec<(&'static str, i64)>, i64)> {
         .collect()
 }
 
-fn row(name: &str, counts: &[(&'static str, i64)], chi: i64) -> (String, Vec<(&'static str, i64)>, i64) {
+fn row(name: &str, counts: &[(&'static str, i64)], chi: i64) -> Row {
     (name.to_string(), counts.to_vec(), chi)
 }
 

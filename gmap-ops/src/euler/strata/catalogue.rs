@@ -366,10 +366,13 @@ impl EoArgs {
 }
 
 impl EoOperator {
-    /// The name in the paper's notation (`mvC`, `mve∞`, `kffhmCCh`, …).
+    /// The name in the paper's notation (`mvC`, `mve∞`, `kffhmCCh`, …); for an instance the
+    /// paper does not name (a dimension above 3), the scheme's generic notation.
     pub fn name(&self) -> &'static str {
-        let i = Self::ALL.iter().position(|o| o == self).expect("every EoOperator value is in ALL");
-        Self::NAMES[i]
+        match Self::ALL.iter().position(|o| o == self) {
+            Some(i) => Self::NAMES[i],
+            None => self.scheme.notation(),
+        }
     }
 
     /// The operator with this name, if the paper names one.

@@ -18,9 +18,9 @@ pub fn incomplete_cells(map: &DenseMap) -> (Vec<usize>, Vec<usize>) {
     let mut complete = vec![0usize; n + 1];
     let mut incomplete = vec![0usize; n + 1];
     for i in 0..=n {
-        let (p, bad) = cell_states(map, i);
-        for c in 0..p {
-            if bad[c] {
+        let (_, bad) = cell_states(map, i);
+        for b in bad {
+            if b {
                 incomplete[i] += 1;
             } else {
                 complete[i] += 1;
@@ -130,12 +130,8 @@ impl StratifiedObject {
         let parts: Vec<_> = (0..=n).map(|i| map.cells(i)).collect();
         let states: Vec<Vec<bool>> = (0..=n).map(|i| cell_states(map, i).1).collect();
         let mut ids: Vec<Vec<usize>> = Vec::new();
-        for i in 0..=n {
-            let mut row = Vec::new();
-            for c in 0..parts[i].len() {
-                row.push(o.new_stratum(i, !states[i][c], usize::MAX, &[]));
-            }
-            ids.push(row);
+        for (i, st) in states.iter().enumerate() {
+            ids.push(st.iter().map(|&bad| o.new_stratum(i, !bad, usize::MAX, &[])).collect());
         }
         // frontiers: the lower cells met by the darts of each cell
         for d in map.darts() {

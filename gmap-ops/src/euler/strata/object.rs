@@ -433,6 +433,22 @@ impl StratifiedObject {
                     return Err(StrataError::BadFrontier { stratum: s, by: b });
                 }
             }
+            let extra = |v: &[i64]| v.iter().enumerate().skip(st.dim + 1).find(|&(_, &h)| h != 0).map(|(k, _)| k);
+            if let Some(k) = extra(&st.holes).or(extra(&st.open_holes)).or((st.holes.len() <= st.dim).then_some(st.dim))
+            {
+                if st.dim == 0 {
+                    return Err(StrataError::VertexHole(s));
+                }
+                return Err(StrataError::HoleOutOfRange { stratum: s, dim: st.dim, state: state(st.complete), k });
+            }
+            if st.open_holes.len() <= st.dim {
+                return Err(StrataError::HoleOutOfRange {
+                    stratum: s,
+                    dim: st.dim,
+                    state: state(st.complete),
+                    k: st.dim,
+                });
+            }
             for k in 1..=st.dim {
                 let (h, o) = (st.holes[k], st.open_holes[k]);
                 if h < 0 || o < 0 || o > h || (k == st.dim && h > 1) {
