@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use gmap_core::DenseMap;
+use gmap_core::{Dart, DenseMap};
 use gmap_homology::{cellular_complex, homology_z, homology_zp, simplicial_complex, Homology, PreconditionError};
 use gmap_ops::build;
 
@@ -57,7 +57,7 @@ fn volume_bounded_by_a_torus_is_refused() {
     }
     let m = DenseMap::try_from_flat(3, flat).unwrap();
     match cellular_complex(&m) {
-        Err(PreconditionError::C2 { dim: 3, dart: 0, .. }) => {}
+        Err(PreconditionError::C2 { dim: 3, dart: Dart(0), .. }) => {}
         other => panic!("expected C2 on the 3-cell of dart 0, got {other:?}"),
     }
     // the simplicial counterpart is the cone over the torus: contractible

@@ -10,7 +10,7 @@
 use bitvec::vec::BitVec;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
-use crate::error::{BoundaryDefect, CellDefect, OrientationConflict, ValidityError};
+use crate::error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
 
 /// A dart of a [`DenseMap`]: an index `0..N`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -172,7 +172,8 @@ impl DenseMap {
         Self::try_new(dim, darts).expect("DenseMap::new")
     }
 
-    /// A map of `darts` free darts, or an error for a dimension or size out of range.
+    /// A map of `darts` free darts, or an error for a dimension or size out of range, or for
+    /// memory that cannot be had (reserved fallibly: an error, not an abort).
     pub fn try_new(dim: usize, darts: usize) -> Result<Self, ValidityError> {
         if dim > MAX_DIM {
             return Err(ValidityError::DimensionTooLarge(dim));
@@ -181,9 +182,10 @@ impl DenseMap {
             return Err(ValidityError::TooManyDarts(darts));
         }
         let w = dim + 1;
-        let mut alpha = vec![0u32; w * darts];
+        let mut alpha = Vec::new();
+        alpha.try_reserve_exact(w * darts).map_err(|_| ValidityError::OutOfMemory { darts })?;
         for d in 0..darts {
-            alpha[d * w..(d + 1) * w].fill(d as u32);
+            alpha.extend(std::iter::repeat_n(d as u32, w));
         }
         Ok(DenseMap { dim, alpha, points: Vec::new() })
     }
@@ -195,14 +197,18 @@ impl DenseMap {
         Ok(m)
     }
 
-    /// A map from its rows without checking the involution axioms (only the sizes).
+    /// A map from its rows without checking the involution axioms (only the sizes: an array
+    /// whose length is not a multiple of `dim + 1` is refused with
+    /// [`ValidityError::RaggedRows`]).
     /// The result may be invalid; call [`DenseMap::validate`] before relying on it.
     pub fn from_flat_unchecked(dim: usize, alpha: Vec<u32>) -> Result<Self, ValidityError> {
         if dim > MAX_DIM {
             return Err(ValidityError::DimensionTooLarge(dim));
         }
         let w = dim + 1;
-        assert!(alpha.len().is_multiple_of(w), "flat array length must be a multiple of dim + 1");
+        if !alpha.len().is_multiple_of(w) {
+            return Err(ValidityError::RaggedRows { len: alpha.len(), width: w });
+        }
         let darts = alpha.len() / w;
         if darts >= u32::MAX as usize {
             return Err(ValidityError::TooManyDarts(darts));
@@ -239,29 +245,101 @@ impl DenseMap {
     }
 
     /// The row `alpha_0(d), …, alpha_n(d)` of dart `d`.
+    ///
+    /// # Panics
+    /// If `d` is not a dart of the map.
     #[inline]
+    #[track_caller]
     pub fn row(&self, d: Dart) -> &[u32] {
         let w = self.dim + 1;
+        if (d.index() + 1) * w > self.alpha.len() {
+            self.refuse(DartError::NoSuchDart { dart: d, darts: self.dart_count() });
+        }
         &self.alpha[d.index() * w..(d.index() + 1) * w]
     }
 
-    /// `alpha_i(d)`.
+    /// Checks that `d` is a dart of the map and `i <= n`.
     #[inline]
+    fn check(&self, d: Dart, i: usize) -> Result<(), DartError> {
+        if d.index() >= self.dart_count() {
+            return Err(DartError::NoSuchDart { dart: d, darts: self.dart_count() });
+        }
+        if i > self.dim {
+            return Err(DartError::BadIndex { dart: d, alpha: i, dim: self.dim });
+        }
+        Ok(())
+    }
+
+    /// The panic of the panicking forms, out of the hot paths.
+    #[cold]
+    #[inline(never)]
+    #[track_caller]
+    fn refuse(&self, e: DartError) -> ! {
+        panic!("{e}")
+    }
+
+    /// `alpha_i(d)`.
+    ///
+    /// # Panics
+    /// If `d` is not a dart of the map or `i > n`; [`DenseMap::try_alpha`] returns the error.
+    #[inline]
+    #[track_caller]
     pub fn alpha(&self, d: Dart, i: usize) -> Dart {
-        Dart(self.alpha[d.index() * (self.dim + 1) + i])
+        let w = self.dim + 1;
+        let k = d.index() * w + i;
+        if i < w && k < self.alpha.len() {
+            Dart(self.alpha[k])
+        } else {
+            self.refuse(self.check(d, i).expect_err("out of range"))
+        }
+    }
+
+    /// `alpha_i(d)`, or an error naming the dart or the index that does not exist.
+    #[inline]
+    pub fn try_alpha(&self, d: Dart, i: usize) -> Result<Dart, DartError> {
+        self.check(d, i)?;
+        Ok(Dart(self.alpha[d.index() * (self.dim + 1) + i]))
     }
 
     /// Whether `d` is i-free (a fixed point of `alpha_i`).
+    ///
+    /// # Panics
+    /// Like [`DenseMap::alpha`].
     #[inline]
+    #[track_caller]
     pub fn is_free(&self, d: Dart, i: usize) -> bool {
         self.alpha(d, i) == d
     }
 
     /// Appends `k` darts free for every involution; returns the first new dart.
+    ///
+    /// # Panics
+    /// If the map would have more than `u32::MAX - 1` darts; [`DenseMap::try_add_darts`]
+    /// returns the error.
+    #[track_caller]
     pub fn add_darts(&mut self, k: usize) -> Dart {
+        match self.try_add_darts(k) {
+            Ok(d) => d,
+            Err(e) => self.refuse(e),
+        }
+    }
+
+    /// Appends `k` darts free for every involution and returns the first new dart, or refuses
+    /// (changing nothing) when the map would have more than `u32::MAX - 1` darts, the most a
+    /// `u32` dart index names (see [`DenseMap::try_new`]), or when the memory cannot be had.
+    pub fn try_add_darts(&mut self, k: usize) -> Result<Dart, DartError> {
         let first = self.dart_count();
+        let too_many = DartError::TooManyDarts { darts: first, adding: k };
+        match first.checked_add(k) {
+            Some(t) if t < u32::MAX as usize => {}
+            _ => return Err(too_many),
+        }
         let w = self.dim + 1;
-        self.alpha.reserve(k * w);
+        let entries = k.checked_mul(w).ok_or_else(|| too_many.clone())?;
+        self.alpha.try_reserve(entries).map_err(|_| too_many.clone())?;
+        if !self.points.is_empty() {
+            self.points.try_reserve(k).map_err(|_| too_many)?;
+        }
         for d in first..first + k {
             for _ in 0..w {
                 self.alpha.push(d as u32);
@@ -270,26 +348,60 @@ impl DenseMap {
         if !self.points.is_empty() {
             self.points.resize(first + k, None);
         }
-        Dart(first as u32)
+        Ok(Dart(first as u32))
     }
 
     /// Low-level: sets `alpha_i(d) = e` and `alpha_i(e) = d` (first making their former
     /// partners i-free). Keeps `alpha_i` an involution but may break the
     /// `alpha_i alpha_j` condition of BO Def. 1: callers re-validate. `d == e` frees `d`.
+    ///
+    /// # Panics
+    /// If `d` or `e` is not a dart of the map or `i > n` (nothing is changed then);
+    /// [`DenseMap::try_link`] returns the error.
+    #[track_caller]
     pub fn link(&mut self, d: Dart, e: Dart, i: usize) {
-        self.unlink(d, i);
-        self.unlink(e, i);
+        if let Err(err) = self.try_link(d, e, i) {
+            self.refuse(err)
+        }
+    }
+
+    /// [`DenseMap::link`], or an error (and no change) when a dart or the index does not exist.
+    pub fn try_link(&mut self, d: Dart, e: Dart, i: usize) -> Result<(), DartError> {
+        self.check(d, i)?;
+        self.check(e, i)?;
+        self.unlink_unchecked(d, i);
+        self.unlink_unchecked(e, i);
         let w = self.dim + 1;
         self.alpha[d.index() * w + i] = e.0;
         self.alpha[e.index() * w + i] = d.0;
+        Ok(())
     }
 
     /// Low-level: makes `d` and its `alpha_i` partner i-free. May break validity.
+    ///
+    /// # Panics
+    /// If `d` is not a dart of the map or `i > n`; [`DenseMap::try_unlink`] returns the error.
+    #[track_caller]
     pub fn unlink(&mut self, d: Dart, i: usize) {
+        if let Err(err) = self.try_unlink(d, i) {
+            self.refuse(err)
+        }
+    }
+
+    /// [`DenseMap::unlink`], or an error (and no change) when the dart or the index does not
+    /// exist.
+    pub fn try_unlink(&mut self, d: Dart, i: usize) -> Result<(), DartError> {
+        self.check(d, i)?;
+        self.unlink_unchecked(d, i);
+        Ok(())
+    }
+
+    /// `unlink` for a dart and an index already checked.
+    fn unlink_unchecked(&mut self, d: Dart, i: usize) {
         let w = self.dim + 1;
         let e = self.alpha[d.index() * w + i] as usize;
         self.alpha[d.index() * w + i] = d.0;
-        if e < self.dart_count() {
+        if e < self.dart_count() && self.alpha[e * w + i] == d.0 {
             self.alpha[e * w + i] = e as u32;
         }
     }
@@ -305,7 +417,14 @@ impl DenseMap {
     }
 
     /// Attaches a point to dart `d` (the position of its 0-cell).
+    ///
+    /// # Panics
+    /// If `d` is not a dart of the map.
+    #[track_caller]
     pub fn set_point(&mut self, d: Dart, p: Option<Point>) {
+        if d.index() >= self.dart_count() {
+            self.refuse(DartError::NoSuchDart { dart: d, darts: self.dart_count() });
+        }
         if self.points.is_empty() {
             if p.is_none() {
                 return;

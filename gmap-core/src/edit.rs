@@ -29,7 +29,10 @@ struct DartData {
     point: Option<Point>,
 }
 
-/// Why two darts cannot be i-sewn.
+/// Why two darts cannot be i-sewn, or why an edit or a query of a [`GMap`] was refused: the
+/// `try_` forms ([`GMap::try_sew`], [`GMap::try_link`], [`GMap::try_unsew`],
+/// [`GMap::try_remove_dart`], [`GMap::try_mark`], …) return it, the panicking forms panic
+/// with its message.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum SewError {
     /// `i` is larger than the dimension.
@@ -63,6 +66,14 @@ pub enum SewError {
         /// a dart where the pairing fails
         at: DartId,
     },
+}
+
+/// The panic of the panicking forms, out of the hot paths.
+#[cold]
+#[inline(never)]
+#[track_caller]
+fn refuse(e: SewError) -> ! {
+    panic!("{e}")
 }
 
 /// An editable n-dimensional generalized map (BO Def. 1) with stable dart handles.
@@ -138,53 +149,154 @@ impl GMap {
 
     /// Removes a dart, first making its partners free. Other handles stay valid.
     /// May leave the map invalid (a hole in an orbit); callers re-sew or remove whole cells.
+    ///
+    /// # Panics
+    /// If `d` is not a live dart (removed, or of another map); [`GMap::try_remove_dart`]
+    /// returns the error.
+    #[track_caller]
     pub fn remove_dart(&mut self, d: DartId) {
+        if let Err(e) = self.try_remove_dart(d) {
+            refuse(e)
+        }
+    }
+
+    /// [`GMap::remove_dart`], or [`SewError::NoSuchDart`] (and no change) for a handle that
+    /// does not name a live dart.
+    pub fn try_remove_dart(&mut self, d: DartId) -> Result<(), SewError> {
+        self.live(d)?;
         for i in 0..=self.dim {
-            self.unlink(d, i);
+            self.unlink_unchecked(d, i);
         }
         let idx = self.dart_index(d);
         self.darts.remove(d);
         // marks are stored by slot index: clear them so a reused slot starts unmarked
         self.marks.clear_index(idx);
+        Ok(())
     }
 
-    /// `alpha_i(d)`. Panics on a stale handle or `i > n`.
+    /// Checks that `d` names a live dart (the handle's version is the slot's: a handle of a
+    /// removed dart is refused even when a new dart reuses the slot).
     #[inline]
+    fn live(&self, d: DartId) -> Result<(), SewError> {
+        if self.darts.contains_key(d) {
+            Ok(())
+        } else {
+            Err(SewError::NoSuchDart(d))
+        }
+    }
+
+    /// Checks that `d` names a live dart and `i <= n`.
+    #[inline]
+    fn check(&self, d: DartId, i: usize) -> Result<(), SewError> {
+        if i > self.dim {
+            return Err(SewError::BadIndex { alpha: i, dim: self.dim });
+        }
+        self.live(d)
+    }
+
+    /// `alpha_i(d)`.
+    ///
+    /// # Panics
+    /// On a stale handle or `i > n`; [`GMap::try_alpha`] returns the error.
+    #[inline]
+    #[track_caller]
     pub fn alpha(&self, d: DartId, i: usize) -> DartId {
-        self.darts[d].alpha[i]
+        match self.darts.get(d).and_then(|x| x.alpha.get(i)) {
+            Some(&e) => e,
+            None => refuse(self.check(d, i).expect_err("refused")),
+        }
+    }
+
+    /// `alpha_i(d)`, or an error for a stale handle or `i > n`.
+    pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, SewError> {
+        self.check(d, i)?;
+        Ok(self.darts[d].alpha[i])
     }
 
     /// Whether `d` is i-free.
+    ///
+    /// # Panics
+    /// Like [`GMap::alpha`].
+    #[track_caller]
     pub fn is_free(&self, d: DartId, i: usize) -> bool {
         self.alpha(d, i) == d
     }
 
     /// Low-level: `alpha_i(d) = e`, `alpha_i(e) = d`, freeing former partners. Keeps
     /// `alpha_i` an involution but may break the other conditions of BO Def. 1.
+    ///
+    /// # Panics
+    /// On a stale handle or `i > n` (nothing is changed then); [`GMap::try_link`] returns
+    /// the error.
+    #[track_caller]
     pub fn link(&mut self, d: DartId, e: DartId, i: usize) {
-        self.unlink(d, i);
-        self.unlink(e, i);
+        if let Err(err) = self.try_link(d, e, i) {
+            refuse(err)
+        }
+    }
+
+    /// [`GMap::link`], or an error (and no change) for a stale handle or `i > n`.
+    pub fn try_link(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
+        self.check(d, i)?;
+        self.check(e, i)?;
+        self.unlink_unchecked(d, i);
+        self.unlink_unchecked(e, i);
         self.darts[d].alpha[i] = e;
         self.darts[e].alpha[i] = d;
+        Ok(())
     }
 
     /// Low-level: makes `d` and its `alpha_i` partner i-free. May break validity.
+    ///
+    /// # Panics
+    /// On a stale handle or `i > n`; [`GMap::try_unlink`] returns the error.
+    #[track_caller]
     pub fn unlink(&mut self, d: DartId, i: usize) {
+        if let Err(err) = self.try_unlink(d, i) {
+            refuse(err)
+        }
+    }
+
+    /// [`GMap::unlink`], or an error (and no change) for a stale handle or `i > n`.
+    pub fn try_unlink(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
+        self.check(d, i)?;
+        self.unlink_unchecked(d, i);
+        Ok(())
+    }
+
+    /// `unlink` for a live dart and an index checked by the caller.
+    fn unlink_unchecked(&mut self, d: DartId, i: usize) {
         let e = self.darts[d].alpha[i];
         self.darts[d].alpha[i] = d;
         if let Some(x) = self.darts.get_mut(e) {
-            x.alpha[i] = e;
+            if x.alpha[i] == d {
+                x.alpha[i] = e;
+            }
         }
     }
 
     /// The point attached to `d`.
+    ///
+    /// # Panics
+    /// On a stale handle.
+    #[track_caller]
     pub fn point(&self, d: DartId) -> Option<Point> {
-        self.darts[d].point
+        match self.darts.get(d) {
+            Some(x) => x.point,
+            None => refuse(SewError::NoSuchDart(d)),
+        }
     }
 
     /// Attaches a point to `d`.
+    ///
+    /// # Panics
+    /// On a stale handle.
+    #[track_caller]
     pub fn set_point(&mut self, d: DartId, p: Option<Point>) {
-        self.darts[d].point = p;
+        match self.darts.get_mut(d) {
+            Some(x) => x.point = p,
+            None => refuse(SewError::NoSuchDart(d)),
+        }
     }
 
     /// The orbit `<set>(d)` in breadth-first order from `d`. O(orbit size).
@@ -302,6 +414,10 @@ impl GMap {
     }
 
     /// Like [`GMap::try_sew`], panicking if the darts are not sewable.
+    ///
+    /// # Panics
+    /// With the message of the [`SewError`] `try_sew` returns.
+    #[track_caller]
     pub fn sew(&mut self, d: DartId, e: DartId, i: usize) {
         if let Err(err) = self.try_sew(d, e, i) {
             panic!("sew failed: {err}");
@@ -310,13 +426,26 @@ impl GMap {
 
     /// i-unsews `d`: every dart of its sew orbit becomes i-free. Keeps a valid map valid.
     /// A no-op when `d` is already i-free.
+    ///
+    /// # Panics
+    /// On a stale handle or `i > n`; [`GMap::try_unsew`] returns the error.
+    #[track_caller]
     pub fn unsew(&mut self, d: DartId, i: usize) {
+        if let Err(e) = self.try_unsew(d, i) {
+            refuse(e)
+        }
+    }
+
+    /// [`GMap::unsew`], or an error (and no change) for a stale handle or `i > n`.
+    pub fn try_unsew(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
+        self.check(d, i)?;
         if self.is_free(d, i) {
-            return;
+            return Ok(());
         }
         for x in self.orbit(d, self.sew_set(i)) {
-            self.unlink(x, i);
+            self.unlink_unchecked(x, i);
         }
+        Ok(())
     }
 
     /// Freezes the map: darts renumbered `0..N` in storage order. Returns the dense map and
@@ -369,19 +498,47 @@ impl GMap {
     }
 
     /// Marks dart `d`; returns whether it was marked already.
+    ///
+    /// # Panics
+    /// On a stale handle: marks are stored by slot, and the handle of a removed dart must not
+    /// mark the dart that reuses its slot. [`GMap::try_mark`] returns the error.
+    #[track_caller]
     pub fn mark(&mut self, m: MarkId, d: DartId) -> bool {
+        match self.try_mark(m, d) {
+            Ok(was) => was,
+            Err(e) => refuse(e),
+        }
+    }
+
+    /// [`GMap::mark`], or [`SewError::NoSuchDart`] (and no change) for a stale handle.
+    pub fn try_mark(&mut self, m: MarkId, d: DartId) -> Result<bool, SewError> {
+        self.live(d)?;
         let k = self.dart_index(d);
-        self.marks.mark(m, k)
+        Ok(self.marks.mark(m, k))
     }
 
     /// Unmarks dart `d`.
+    ///
+    /// # Panics
+    /// On a stale handle, like [`GMap::mark`].
+    #[track_caller]
     pub fn unmark(&mut self, m: MarkId, d: DartId) {
+        if let Err(e) = self.live(d) {
+            refuse(e)
+        }
         let k = self.dart_index(d);
         self.marks.unmark(m, k)
     }
 
     /// Whether dart `d` is marked.
+    ///
+    /// # Panics
+    /// On a stale handle, like [`GMap::mark`].
+    #[track_caller]
     pub fn is_marked(&self, m: MarkId, d: DartId) -> bool {
+        if let Err(e) = self.live(d) {
+            refuse(e)
+        }
         self.marks.is_marked(m, self.dart_index(d))
     }
 

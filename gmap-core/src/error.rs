@@ -51,6 +51,53 @@ pub enum ValidityError {
     /// More darts than a `u32` index can name.
     #[error("{0} darts is more than the supported maximum of 2^32 - 1")]
     TooManyDarts(usize),
+    /// The memory for the darts cannot be had.
+    #[error("{darts} darts need more memory than can be had")]
+    OutOfMemory {
+        /// the number of darts asked for
+        darts: usize,
+    },
+    /// A flat involution array whose length is not a multiple of `dim + 1`.
+    #[error("a flat array of {len} entries does not hold whole rows of {width} entries (dimension {})", .width - 1)]
+    RaggedRows {
+        /// the length of the array
+        len: usize,
+        /// the length of a row, `dim + 1`
+        width: usize,
+    },
+}
+
+/// Why an edit or a query of a [`crate::DenseMap`] was refused: the dart or the involution
+/// index it names does not exist. The panicking forms ([`crate::DenseMap::alpha`],
+/// [`crate::DenseMap::link`], …) panic with this message; the `try_` forms return it.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum DartError {
+    /// The dart is not one of the map's darts `0..darts`.
+    #[error("dart {dart} does not exist (the map has {darts} darts)")]
+    NoSuchDart {
+        /// the dart asked for
+        dart: Dart,
+        /// the number of darts
+        darts: usize,
+    },
+    /// `alpha_i` with `i` above the dimension.
+    #[error("alpha_{alpha} does not exist in a map of dimension {dim} (asked at dart {dart})")]
+    BadIndex {
+        /// the dart the operation was asked at
+        dart: Dart,
+        /// the index asked for
+        alpha: usize,
+        /// the map's dimension
+        dim: usize,
+    },
+    /// Adding darts would pass the largest number of darts a `u32` index can name.
+    #[error("adding {adding} darts to {darts} would pass the maximum of {max} darts", max = u32::MAX - 1)]
+    TooManyDarts {
+        /// the darts the map has
+        darts: usize,
+        /// the darts asked for
+        adding: usize,
+    },
 }
 
 /// Why a map does not have cells with complete boundaries (BO Def. 6).

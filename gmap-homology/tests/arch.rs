@@ -166,7 +166,7 @@ fn algorithm_8_16_operators_are_exact() {
             if rule == ZeroWeightRule::Closed {
                 // only the connecting step lowers a Betti number (b_0, joining parts)
                 for o in &t.operators {
-                    let lowered: Vec<usize> = (0..o.vector.y().len()).filter(|&j| o.vector.y()[j] < 0).collect();
+                    let lowered: Vec<usize> = (0..o.vector.dy().len()).filter(|&j| o.vector.dy()[j] < 0).collect();
                     match o.step {
                         Step::ConnectBoundary => assert!(lowered.is_empty() || lowered == vec![0]),
                         _ => assert!(lowered.is_empty()),

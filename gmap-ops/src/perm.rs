@@ -22,8 +22,14 @@ pub(crate) struct PermTable {
 impl PermTable {
     /// Builds the table for `m` elements. O(m! m^2). The caller bounds `m!` beforehand.
     pub(crate) fn new(m: usize) -> Self {
-        let count = factorial(m).expect("caller bounds m") as usize;
-        let mut perms = Vec::with_capacity(count * m);
+        Self::try_new(m).expect("memory for the permutation table")
+    }
+
+    /// The table, or `None` when its memory cannot be had (reserved fallibly).
+    pub(crate) fn try_new(m: usize) -> Option<Self> {
+        let count = usize::try_from(factorial(m)?).ok()?;
+        let mut perms = Vec::new();
+        perms.try_reserve_exact(count.checked_mul(m)?).ok()?;
         let mut cur: Vec<u8> = (0..m as u8).collect();
         loop {
             perms.extend_from_slice(&cur);
@@ -32,7 +38,8 @@ impl PermTable {
             }
         }
         let w = m.saturating_sub(1);
-        let mut swaps = Vec::with_capacity(count * w);
+        let mut swaps = Vec::new();
+        swaps.try_reserve_exact(count.checked_mul(w)?).ok()?;
         let mut tmp = vec![0u8; m];
         for p in 0..count {
             for i in 0..w {
@@ -41,7 +48,7 @@ impl PermTable {
                 swaps.push(rank(&tmp) as u32);
             }
         }
-        PermTable { m, perms, swaps }
+        Some(PermTable { m, perms, swaps })
     }
 
     /// Number of permutations, `m!`.

@@ -13,7 +13,7 @@ fn lutz(name: &str) -> String {
 }
 
 fn barycentric_roundtrip(m: &DenseMap) -> DenseMap {
-    let text = barycentric_facets_string(m);
+    let text = barycentric_facets_string(m).unwrap();
     let sc = SimplicialComplex::parse_facets(&text).unwrap();
     assert_eq!(sc.facet_count(), m.dart_count());
     sc.to_gmap(u64::MAX).unwrap()

@@ -14,14 +14,40 @@ use gmap_homology::json::write_json;
 use gmap_homology::lar::Lar;
 use gmap_ops::import::{FacePoset, PosetError};
 
-use super::load::{extension, load, Loaded};
+use super::load::{extension, load, split_lex_name, Loaded};
 
 /// Runs `gmap convert`.
 pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
+    if same_file(input, output) {
+        bail!(
+            "{}: the output is the input file {}: convert to another file (the input would be replaced)",
+            output.display(),
+            input.display()
+        );
+    }
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),
         Loaded::Complex(x) => write_complex(&x, output, max_darts),
     }
+}
+
+/// Whether `output` names the file `input` reads (the same path, through `./`, `..` or a
+/// symbolic link, or a hard link to it). A `.lex#name` input is the `.lex` file.
+fn same_file(input: &Path, output: &Path) -> bool {
+    let (file, name) = split_lex_name(input);
+    let input = if name.is_some() && !input.exists() { file.as_path() } else { input };
+    let (Ok(a), Ok(b)) = (std::fs::metadata(input), std::fs::metadata(output)) else {
+        return false;
+    };
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        if a.dev() == b.dev() && a.ino() == b.ino() {
+            return true;
+        }
+    }
+    let _ = (a, b);
+    matches!((input.canonicalize(), output.canonicalize()), (Ok(x), Ok(y)) if x == y)
 }
 
 /// Writes a map in the format named by the extension of `output`.
@@ -36,7 +62,9 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
         "json" if is_lar(output) => write_text(output, &Lar::from_map(m).to_json()?)?,
         "json" => write_text(output, &write_json(&complex_of(m, output)?))?,
         "dot" => write_text(output, &write_dot(&complex_of(m, output)?))?,
-        other => bail!("{}: unsupported output format '.{other}'", output.display()),
+        other => {
+            bail!("{}: unsupported output format '.{}'", output.display(), gmap_core::io::shorten(other.as_bytes(), 40))
+        }
     }
     Ok(())
 }

@@ -104,6 +104,35 @@ fn compute(c: &ChainComplex, field: Option<u64>) -> Result<Homology> {
     })
 }
 
+/// The map reduced by `--simplify`, or the map itself where the reduction could change the
+/// groups. Removals and contractions keep the homology only when the cells are homology
+/// balls (conditions C1 and C2, docs/DESIGN.md): where they fail (a segment with open ends, a
+/// map of loose darts), simplifying would merge components and lose classes, so it is skipped,
+/// with the reason on stderr when stderr is a terminal. As a guard, a reduction that changes
+/// the number of components is dropped too. Either way the groups are those without
+/// `--simplify`.
+pub fn simplified(map: DenseMap) -> DenseMap {
+    progress("checking C1 and C2 before simplifying");
+    if let Err(e) = gmap_homology::check_preconditions(&map) {
+        note(&format!("--simplify skipped: the cells are not all homology balls ({e})"));
+        return map;
+    }
+    progress("simplifying by removals and contractions of cells");
+    let small = gmap_ops::euler::simplify(&map).0;
+    if small.component_count() != map.component_count() {
+        note("--simplify skipped: the reduction changed the number of components");
+        return map;
+    }
+    small
+}
+
+/// A note on stderr when it is a terminal (nothing otherwise: the output stays the same).
+fn note(msg: &str) {
+    if std::io::stderr().is_terminal() {
+        eprintln!("gmap homology: {msg}");
+    }
+}
+
 pub fn run(o: &Options) -> Result<()> {
     if let Some(p) = o.field {
         if !is_prime(p) || p >= 1 << 31 {
@@ -119,13 +148,7 @@ pub fn run(o: &Options) -> Result<()> {
             if o.topological {
                 bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
             }
-            // removals and contractions keep the homology and the cells' ball property
-            let map = if o.simplify {
-                progress("simplifying by removals and contractions of cells");
-                gmap_ops::euler::simplify(&map).0
-            } else {
-                map
-            };
+            let map = if o.simplify { simplified(map) } else { map };
             let named = match o.method {
                 Method::Cellular => cellular(&map, &file)?,
                 Method::Simplicial => simplicial(&map),

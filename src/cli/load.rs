@@ -13,11 +13,13 @@ pub enum Loaded {
     Complex(gmap_homology::arch::ArchComplex),
 }
 
-/// The lower-cased extension of a path, after stripping a `#name` suffix (for `.lex`).
+/// The lower-cased extension of a path. A `#` belongs to the file name (`run#3.gmap`) unless
+/// the path names a `.lex` complex, `FILE.lex#name`, and no file has the whole path (see
+/// [`split_lex_name`]): the extension is taken from the real path when it exists.
 pub fn extension(path: &Path) -> String {
-    let s = path.to_string_lossy();
-    let base = s.split('#').next().unwrap_or("");
-    Path::new(base).extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
+    let (file, name) = split_lex_name(path);
+    let base = if name.is_some() && !path.exists() { file.as_path() } else { path };
+    base.extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
 }
 
 /// Reads `path` by its extension. A refusal for size gets the flag that raises the limit.
@@ -42,13 +44,16 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
         "gmap" => Ok(Loaded::Map(gmap_core::io::read_gmap_with(path, &opts)?)),
         "moka" => Ok(Loaded::Map(gmap_core::io::read_moka_with(path, &opts)?)),
         "facets" => Ok(Loaded::Map(gmap_ops::import::read_facets(path, max_darts)?)),
+        "lex" if path.exists() => Ok(Loaded::Map(gmap_ops::import::read_lex(path, None, max_darts)?)),
         "lex" => {
             let (file, name) = split_lex_name(path);
             Ok(Loaded::Map(gmap_ops::import::read_lex(&file, name.as_deref(), max_darts)?))
         }
-        "off" => Ok(Loaded::Map(gmap_ops::import::read_off(path)?)),
+        "off" => Ok(Loaded::Map(gmap_ops::import::read_off_with(path, max_darts)?)),
         "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
-        other => bail!("{}: unsupported input format '.{other}'", path.display()),
+        other => {
+            bail!("{}: unsupported input format '.{}'", path.display(), gmap_core::io::shorten(other.as_bytes(), 40))
+        }
     }
 }
 

@@ -99,6 +99,24 @@ enum Command {
     },
 }
 
+/// The one-line message of an error: its chain of causes joined by `: `, leaving out a cause
+/// whose text the message already ends with (an error that quotes its source), with newlines
+/// made spaces.
+fn error_message(e: &anyhow::Error) -> String {
+    let mut msg = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if msg.ends_with(&text) {
+            continue;
+        }
+        if !msg.is_empty() {
+            msg.push_str(": ");
+        }
+        msg.push_str(&text);
+    }
+    msg.replace('\n', " ")
+}
+
 /// Runs the command line; returns the process exit code.
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
@@ -126,7 +144,7 @@ pub fn run() -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            let msg = format!("{e:#}").replace('\n', " ");
+            let msg = error_message(&e);
             eprintln!("error: {msg}");
             ExitCode::from(1)
         }

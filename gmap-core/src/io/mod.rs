@@ -118,6 +118,12 @@ pub enum ReadErrorKind {
         /// the count as written
         found: String,
     },
+    /// The file, or the map it describes, needs more memory than can be had.
+    #[error("{bytes} bytes cannot be had to hold the file or its map")]
+    OutOfMemory {
+        /// the size of the file
+        bytes: u64,
+    },
     /// The map has more darts than the caller allows ([`ReadOptions::max_darts`]).
     #[error("the map has more than {limit} darts (the limit set by the caller): {found}")]
     DartLimit {
@@ -218,9 +224,67 @@ pub enum WriteError {
     },
 }
 
-/// Reads a whole file, mapping failure to a [`ReadError`] without a line.
+/// Reads a whole file, mapping failure to a [`ReadError`] without a line. The buffer is
+/// reserved fallibly: a file larger than the memory to be had is an error naming its size,
+/// not an abort.
 fn read_bytes(path: &Path) -> Result<Vec<u8>, ReadError> {
-    fs::read(path).map_err(|e| ReadError::new(&path.display().to_string(), None, ReadErrorKind::Io(e.to_string())))
+    use std::io::Read as _;
+    let io_err =
+        |e: std::io::Error| ReadError::new(&path.display().to_string(), None, ReadErrorKind::Io(e.to_string()));
+    let mut f = fs::File::open(path).map_err(io_err)?;
+    let size = f.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut bytes = Vec::new();
+    let want = usize::try_from(size).unwrap_or(usize::MAX);
+    if bytes.try_reserve_exact(want).is_err() {
+        return Err(ReadError::new(&path.display().to_string(), None, ReadErrorKind::OutOfMemory { bytes: size }));
+    }
+    f.read_to_end(&mut bytes).map_err(io_err)?;
+    Ok(bytes)
+}
+
+/// Calls `f` on each line of the file at `path` (its number from 1 and at most its first
+/// `keep` bytes after its leading blanks, without the newline), streaming: never more than a buffer and `keep` bytes
+/// in memory, whatever the file. Stops when `f` returns `false`. Used to check a size limit
+/// before the whole file is read.
+fn scan_lines(path: &Path, keep: usize, mut f: impl FnMut(usize, &[u8]) -> bool) -> std::io::Result<()> {
+    use std::io::Read as _;
+    let mut file = fs::File::open(path)?;
+    let mut buf = vec![0u8; 1 << 16];
+    let mut line = Vec::with_capacity(keep);
+    let mut number = 1;
+    loop {
+        let k = match file.read(&mut buf) {
+            Ok(0) => break,
+            Ok(k) => k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        for &c in &buf[..k] {
+            if c == b'\n' {
+                if !f(number, &line) {
+                    return Ok(());
+                }
+                line.clear();
+                number += 1;
+            } else if line.len() < keep && !(line.is_empty() && matches!(c, b' ' | b'\t' | b'\r')) {
+                // leading blanks are not kept: the first byte kept tells a comment line
+                line.push(c);
+            }
+        }
+    }
+    if !line.is_empty() {
+        f(number, &line);
+    }
+    Ok(())
+}
+
+/// Whether a line holds data: not blank and not a comment (first non-blank byte `#`), as
+/// [`Scanner::skip_empty_lines`] decides.
+fn is_content(line: &[u8]) -> bool {
+    match line.iter().find(|c| !matches!(c, b' ' | b'\t' | b'\r')) {
+        None | Some(b'#') => false,
+        Some(_) => true,
+    }
 }
 
 /// Writes `bytes` to `path` so that readers of `path` see either the old file or the whole
@@ -269,8 +333,10 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     write_atomic(path, bytes).map_err(|source| WriteError::Io { path: path.to_path_buf(), source })
 }
 
-/// Shortens a token for an error message (keeps whole characters).
-fn shorten(bytes: &[u8], max: usize) -> String {
+/// Shortens a token for an error message: at most `max` whole characters (invalid UTF-8
+/// replaced), then `…`. Every reader of the workspace quotes offending input through it, so a
+/// 100 MB token is never echoed whole (the readers use at most 80 characters).
+pub fn shorten(bytes: &[u8], max: usize) -> String {
     let s = String::from_utf8_lossy(bytes);
     if s.chars().count() <= max {
         s.into_owned()
@@ -477,7 +543,10 @@ fn validity_to_read_error(
         ValidityError::OutOfRange { dart, .. }
         | ValidityError::NotInvolution { dart, .. }
         | ValidityError::NotCommuting { dart, .. } => Some(dart.index()),
-        ValidityError::DimensionTooLarge(_) | ValidityError::TooManyDarts(_) => None,
+        ValidityError::DimensionTooLarge(_)
+        | ValidityError::TooManyDarts(_)
+        | ValidityError::RaggedRows { .. }
+        | ValidityError::OutOfMemory { .. } => None,
     };
     let line = dart.map(|d| line_of_data(bytes, data_start, data_line, d));
     ReadError::new(file, line, ReadErrorKind::Invalid(e))

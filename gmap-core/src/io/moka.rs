@@ -26,8 +26,8 @@ use std::io::Write as _;
 use std::path::Path;
 
 use super::{
-    bad_number, check_utf8, push_u32, read_bytes, shorten, validity_to_read_error, write_atomically, Num, ReadError,
-    ReadErrorKind, ReadOptions, Scanner, WriteError,
+    bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
+    write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::dense::{Dart, DenseMap, Point};
 
@@ -45,8 +45,35 @@ pub fn read_moka(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
 /// [`read_moka`] with options (a cap on the number of darts).
 pub fn read_moka_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
     let path = path.as_ref();
+    if let Some(limit) = opts.max_darts {
+        check_line_limit(path, limit)?;
+    }
     let bytes = read_bytes(path)?;
     parse_moka_with(&bytes, &path.display().to_string(), opts)
+}
+
+/// Refuses a file of more than `limit` dart lines, counting lines as it streams and stopping
+/// at the first one over the limit (a file of any size is not loaded to find out it is too
+/// big). The first two lines with content are the header and the mark masks.
+fn check_line_limit(path: &Path, limit: u64) -> Result<(), ReadError> {
+    let name = path.display().to_string();
+    let mut content = 0u64;
+    let mut over = None;
+    scan_lines(path, 1, |number, line| {
+        if is_content(line) {
+            content += 1;
+        }
+        if content > limit.saturating_add(2) {
+            over = Some(number);
+            return false;
+        }
+        true
+    })
+    .map_err(|e| ReadError::new(&name, None, ReadErrorKind::Io(e.to_string())))?;
+    match over {
+        Some(line) => Err(ReadError::new(&name, Some(line), ReadErrorKind::DartLimit { limit, found: limit + 1 })),
+        None => Ok(()),
+    }
 }
 
 /// Parses the bytes of a `.moka` file; `name` is the file name used in errors.
@@ -96,7 +123,10 @@ pub fn parse_moka_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     let data_line = s.line;
     let w = MOKA_DIM + 1;
     let limit = opts.max_darts.unwrap_or(u64::MAX);
-    let mut alpha: Vec<u32> = Vec::with_capacity(bytes.len() / 24 * w);
+    let mut alpha: Vec<u32> = Vec::new();
+    if alpha.try_reserve_exact(bytes.len() / 24 * w).is_err() {
+        return Err(err(data_line, ReadErrorKind::OutOfMemory { bytes: (bytes.len() / 24 * w * 4) as u64 }));
+    }
     let mut points: Vec<(u32, Point)> = Vec::new();
     let mut d: u64 = 0;
     loop {

@@ -17,8 +17,8 @@
 use std::path::Path;
 
 use super::{
-    bad_number, check_utf8, push_u32, read_bytes, shorten, validity_to_read_error, write_atomically, Num, ReadError,
-    ReadErrorKind, ReadOptions, Scanner, WriteError,
+    bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
+    write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::alpha::MAX_DIM;
 use crate::dense::{Dart, DenseMap};
@@ -35,8 +35,37 @@ pub fn read_gmap(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
 /// [`read_gmap`] with options (a cap on the number of darts).
 pub fn read_gmap_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
     let path = path.as_ref();
+    if let Some(limit) = opts.max_darts {
+        check_header_limit(path, limit)?;
+    }
     let bytes = read_bytes(path)?;
     parse_gmap_with(&bytes, &path.display().to_string(), opts)
+}
+
+/// Refuses a file whose header announces more than `limit` darts, reading only up to the
+/// header (a file of any size is not loaded to find out it is too big).
+fn check_header_limit(path: &Path, limit: u64) -> Result<(), ReadError> {
+    let name = path.display().to_string();
+    let mut found = None;
+    scan_lines(path, 256, |number, line| {
+        if !is_content(line) {
+            return true;
+        }
+        let mut t = line.split(|c| matches!(c, b' ' | b'\t' | b'\r')).filter(|t| !t.is_empty());
+        if t.next() == Some(b"gmap") {
+            let _dim = t.next();
+            let darts = t.next().and_then(|d| std::str::from_utf8(d).ok()).and_then(|d| d.parse::<u64>().ok());
+            if let Some(d) = darts.filter(|&d| d > limit) {
+                found = Some((number, d));
+            }
+        }
+        false
+    })
+    .map_err(|e| ReadError::new(&name, None, ReadErrorKind::Io(e.to_string())))?;
+    match found {
+        Some((line, darts)) => Err(ReadError::new(&name, Some(line), ReadErrorKind::DartLimit { limit, found: darts })),
+        None => Ok(()),
+    }
 }
 
 /// Parses the bytes of a `.gmap` file; `name` is the file name used in errors.
@@ -98,7 +127,11 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     let data_start = s.pos;
     let data_line = s.line;
     // every value takes at least two bytes: never reserve more than the file can fill
-    let mut alpha: Vec<u32> = Vec::with_capacity(total.min(bytes.len() / 2 + w));
+    let mut alpha: Vec<u32> = Vec::new();
+    let reserve = total.min(bytes.len() / 2 + w);
+    if alpha.try_reserve_exact(reserve).is_err() {
+        return Err(err(header_line, ReadErrorKind::OutOfMemory { bytes: reserve as u64 * 4 }));
+    }
     for d in 0..darts {
         // fast path: a line of exactly `w` in-range values separated by single spaces
         if let Some(end) = fast_line(bytes, s.pos, w, darts, &mut alpha) {

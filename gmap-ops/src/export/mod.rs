@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use gmap_core::{AlphaSet, Dart, DenseMap};
+use gmap_core::{AlphaSet, Dart, DenseMap, Partition};
 use thiserror::Error;
 
 /// Why a map could not be exported.
@@ -19,6 +19,16 @@ pub enum ExportError {
         format: &'static str,
         /// the dimension it needs
         expected: usize,
+        /// the map's dimension
+        found: usize,
+    },
+    /// The writer handles maps up to a dimension.
+    #[error("{format} is written for maps of dimension at most {max}, this map has dimension {found}")]
+    DimensionAbove {
+        /// the format
+        format: &'static str,
+        /// the largest dimension written
+        max: usize,
         /// the map's dimension
         found: usize,
     },
@@ -35,6 +45,27 @@ pub enum ExportError {
         dart: u32,
         /// the involution with a fixed point
         alpha: usize,
+    },
+    /// A map without darts has no simplicial complex to write.
+    #[error("the map has no dart: there is no facet to write")]
+    Empty,
+    /// The output would not fit in memory.
+    #[error("the output of {facets} facets cannot be held in memory")]
+    TooLarge {
+        /// the number of facets
+        facets: usize,
+    },
+    /// The `.off` text would not read back as the same map.
+    #[error("the map is not a polygon mesh that .off can describe: {reason}")]
+    NotAMesh {
+        /// what the reader makes of the text
+        reason: String,
+    },
+    /// A vertex whose point is not finite.
+    #[error("the vertex of dart {dart} has a point that is not finite: .off needs finite coordinates")]
+    NonFinitePoint {
+        /// a dart of that vertex
+        dart: u32,
     },
     /// Writing failed.
     #[error("{path}: {source}")]
@@ -54,7 +85,9 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ExportError> {
 /// The OFF text of a 2-map with points: one vertex per 0-cell (numbered by its smallest
 /// dart), one polygon per 2-cell listing its corners in cycle order (walking
 /// `alpha_0 alpha_1` from the face's smallest dart). Faces must be closed polygons (no 0- or
-/// 1-free dart) and every vertex must carry a point. O(N).
+/// 1-free dart), every vertex must carry a finite point, and the text must read back as the
+/// same map ([`ExportError::NotAMesh`] otherwise: a monogon or a digon, an edge from a vertex
+/// to itself, two edges between the same two vertices). O(N log N).
 pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
     if map.dim() != 2 {
         return Err(ExportError::Dimension { format: ".off", expected: 2, found: map.dim() });
@@ -72,16 +105,28 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
     for &Dart(r) in &verts.reps {
         let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
+        if !p.iter().all(|c| c.is_finite()) {
+            return Err(ExportError::NonFinitePoint { dart: r });
+        }
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
+    // the darts in the order the reader numbers them: per face, per corner, the dart at the
+    // corner and its alpha_0 image at the next corner
+    let mut order: Vec<Dart> = Vec::with_capacity(map.dart_count());
     for &Dart(r) in &faces.reps {
         let mut corners = Vec::new();
         let mut d = Dart(r);
         loop {
             corners.push(verts.of[d.index()]);
+            order.push(d);
+            order.push(map.alpha(d, 0));
             d = map.alpha(map.alpha(d, 0), 1);
             if d.0 == r {
                 break;
+            }
+            if corners.len() > map.dart_count() {
+                // a face that is not one cycle of alpha_0 alpha_1 (an invalid map)
+                return Err(ExportError::NotAMesh { reason: format!("the face of dart {r} is not a cycle") });
             }
         }
         let _ = write!(out, "{}", corners.len());
@@ -90,7 +135,40 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
         out.push('\n');
     }
+    same_as_read_back(map, &out, &order)?;
     Ok(out)
+}
+
+/// Checks that the `.off` reader makes `text` into `map` again: the reader numbers the darts
+/// as `order` lists them and builds `alpha_0` and `alpha_1` from the polygons as the writer
+/// walked them, so the map is reproduced exactly when the reader accepts the text (polygons
+/// of three corners or more, no edge from a vertex to itself, no edge in three polygons) and
+/// glues by `alpha_2` the darts the map glues. Refuses otherwise (a monogon, a digon, two
+/// edges between the same two vertices), so the writer never writes a file its reader
+/// refuses or reads as another space. O(N log N).
+fn same_as_read_back(map: &DenseMap, text: &str, order: &[Dart]) -> Result<(), ExportError> {
+    let not_a_mesh = |reason: String| ExportError::NotAMesh { reason };
+    let back = crate::import::PolygonMesh::parse(text)
+        .and_then(|m| m.to_gmap())
+        .map_err(|e| not_a_mesh(format!("its .off would read as: {e}")))?;
+    if back.dart_count() != order.len() || order.len() != map.dart_count() {
+        return Err(not_a_mesh("its .off would read back with another number of darts".into()));
+    }
+    let mut new_of = vec![u32::MAX; map.dart_count()];
+    for (k, d) in order.iter().enumerate() {
+        new_of[d.index()] = k as u32;
+    }
+    for (k, &d) in order.iter().enumerate() {
+        for i in 0..=2 {
+            if back.alpha(Dart(k as u32), i).0 != new_of[map.alpha(d, i).index()] {
+                return Err(not_a_mesh(format!(
+                    "its .off would read back glued otherwise along alpha_{i} at dart {d} (two edges \
+                     between the same vertices, or an edge of a vertex to itself)"
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Writes a 2-map with points as `.off` (see [`off_string`]).
@@ -98,39 +176,132 @@ pub fn write_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
     write_atomic(path, off_string(map)?.as_bytes())
 }
 
-/// The `.facets` text of the barycentric subdivision: one n-simplex per dart, whose vertices
-/// are the dart's 0-cell, 1-cell, …, n-cell, numbered `offset_i + k` for the k-th i-cell
-/// (`offset_i` = number of cells of lower dimension), so labels of different dimensions
-/// never collide. On a map whose darts are determined by their cells (a regular complex,
-/// e.g. anything imported from `.facets`) this is a triangulation of the same space.
-/// O(N n).
-pub fn barycentric_facets_string(map: &DenseMap) -> String {
+/// The largest dimension [`barycentric_facets_string`] handles: its check visits the
+/// `2^(n+1)` faces of a flag, and a read-back of an n-simplex takes `(n + 1)!` darts.
+pub const MAX_FACETS_DIM: usize = 8;
+
+/// The faces of the simplices of the barycentric subdivision spanned by the vertices of the
+/// dimensions in `s` (bit `i` for the i-cell; `s` nonempty): the face of dart `d`'s simplex
+/// is the orbit of `d` under the involutions not in `s`.
+fn faces_of(map: &DenseMap, s: usize) -> Partition {
     let n = map.dim();
-    let parts: Vec<_> = (0..=n).map(|i| map.partition(AlphaSet::cell(i, n))).collect();
-    let mut offsets = vec![0u64; n + 1];
-    for i in 1..=n {
-        offsets[i] = offsets[i - 1] + parts[i - 1].len() as u64;
-    }
-    let mut out = String::with_capacity(map.dart_count() * (n + 1) * 6);
-    let _ = writeln!(
-        out,
-        "# barycentric subdivision of a {n}-map: one simplex per dart, vertex = (dimension offset) + cell"
-    );
-    for d in 0..map.dart_count() {
-        for i in 0..=n {
-            if i > 0 {
-                out.push(' ');
-            }
-            let _ = write!(out, "{}", offsets[i] + parts[i].of[d] as u64);
-        }
-        out.push('\n');
-    }
-    out
+    map.partition(AlphaSet::of(&(0..=n).filter(|&i| s & (1 << i) == 0).collect::<Vec<_>>()))
 }
 
-/// Writes the barycentric `.facets` of a map (see [`barycentric_facets_string`]).
+/// [`faces_of`] for every subset, indexed by subset (entry 0 empty).
+fn faces(map: &DenseMap) -> Vec<Partition> {
+    let all = (1usize << (map.dim() + 1)) - 1;
+    (0..=all).map(|s| if s == 0 { Partition { of: Vec::new(), reps: Vec::new() } } else { faces_of(map, s) }).collect()
+}
+
+/// Whether the barycentric subdivision (one simplex per dart, vertex i of dart `d` its
+/// i-cell) is a simplicial complex: every face, of every dimension, is the only one with its
+/// vertex labels. Fails on maps whose cells are not embedded (a loop edge, a monogon, a torus
+/// of one square, a lens space): two darts or two faces with the same cells.
+/// The faces are computed one subset at a time (the cells are `cells[i]`), so the check takes
+/// O(N) memory whatever the dimension.
+fn first_subdivision_is_simplicial(map: &DenseMap, cells: &[Partition]) -> bool {
+    let n = map.dim();
+    for s in 1..(1usize << (n + 1)) {
+        let dims: Vec<usize> = (0..=n).filter(|&i| s & (1 << i) != 0).collect();
+        if dims.len() == 1 {
+            continue;
+        }
+        let part = faces_of(map, s);
+        let mut keys: Vec<Vec<u32>> =
+            part.reps.iter().map(|&d| dims.iter().map(|&i| cells[i].of[d.index()]).collect()).collect();
+        keys.sort_unstable();
+        if keys.windows(2).any(|w| w[0] == w[1]) {
+            return false;
+        }
+    }
+    true
+}
+
+/// The `.facets` text of a map's space as a simplicial complex, or why it has none.
+///
+/// The barycentric subdivision of a map has one n-simplex per dart, whose vertices are the
+/// dart's 0-cell, 1-cell, …, n-cell, labelled by cell (`offset_i + k` for the k-th i-cell,
+/// `offset_i` the number of cells of lower dimension). It is a simplicial complex of the same
+/// space only when no two of its faces have the same vertices: true of a regular complex (a
+/// cube, anything imported from `.facets`), false of a monogon, a torus of one square or a
+/// lens space, where two darts can have the same cells. This is checked on every face; where
+/// it fails, the text is the *second* barycentric subdivision, which is always a simplicial
+/// complex: one facet per dart and ordering of `0..=n`, whose vertices are the faces of the
+/// dart's simplex along the chain (the face spanned by the cells of the first k dimensions of
+/// the ordering, `k = 1..=n+1`), labelled by face. So reading the text back gives a map of the
+/// same space (the homology of the map's simplicial counterpart, BO §6), `(n + 1)!` times
+/// bigger when the second subdivision is needed.
+///
+/// A first comment line says which subdivision was written. Errors: a dimension above
+/// [`MAX_FACETS_DIM`] ([`ExportError::Dimension`]), a map without darts
+/// ([`ExportError::Empty`]). O(2^(n+1) N n) for the check, plus the output.
+pub fn barycentric_facets_string(map: &DenseMap) -> Result<String, ExportError> {
+    let n = map.dim();
+    if n > MAX_FACETS_DIM {
+        return Err(ExportError::DimensionAbove { format: ".facets", max: MAX_FACETS_DIM, found: n });
+    }
+    if map.is_empty() {
+        return Err(ExportError::Empty);
+    }
+    let cells: Vec<Partition> = (0..=n).map(|i| faces_of(map, 1 << i)).collect();
+    if first_subdivision_is_simplicial(map, &cells) {
+        let mut offsets = vec![0u64; n + 1];
+        for i in 1..=n {
+            offsets[i] = offsets[i - 1] + cells[i - 1].len() as u64;
+        }
+        let mut out = String::with_capacity(map.dart_count() * (n + 1) * 6);
+        let _ = writeln!(
+            out,
+            "# barycentric subdivision of a {n}-map: one simplex per dart, vertex = (dimension offset) + cell"
+        );
+        for d in 0..map.dart_count() {
+            for i in 0..=n {
+                if i > 0 {
+                    out.push(' ');
+                }
+                let _ = write!(out, "{}", offsets[i] + cells[i].of[d] as u64);
+            }
+            out.push('\n');
+        }
+        return Ok(out);
+    }
+    // the second subdivision: vertices are the faces (subset s, orbit), numbered by subset
+    drop(cells);
+    let faces = faces(map);
+    let mut offsets = vec![0u64; faces.len()];
+    for s in 1..faces.len() {
+        offsets[s] = offsets[s - 1] + faces[s - 1].len() as u64;
+    }
+    let orderings = crate::perm::PermTable::try_new(n + 1).ok_or(ExportError::TooLarge { facets: usize::MAX })?;
+    let lines = map.dart_count().saturating_mul(orderings.len());
+    let mut out = String::new();
+    out.try_reserve(lines.saturating_mul((n + 1) * 6)).map_err(|_| ExportError::TooLarge { facets: lines })?;
+    let _ = writeln!(
+        out,
+        "# second barycentric subdivision of a {n}-map (the first is not a simplicial complex): \
+         one simplex per dart and ordering of its cells"
+    );
+    for d in 0..map.dart_count() {
+        for p in 0..orderings.len() {
+            let mut s = 0usize;
+            for (k, &i) in orderings.perm(p).iter().enumerate() {
+                s |= 1 << i;
+                if k > 0 {
+                    out.push(' ');
+                }
+                let _ = write!(out, "{}", offsets[s] + faces[s].of[d] as u64);
+            }
+            out.push('\n');
+        }
+    }
+    Ok(out)
+}
+
+/// Writes the `.facets` of a map (see [`barycentric_facets_string`]); nothing is written
+/// when the map is refused.
 pub fn write_barycentric_facets(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
-    write_atomic(path, barycentric_facets_string(map).as_bytes())
+    write_atomic(path, barycentric_facets_string(map)?.as_bytes())
 }
 
 #[cfg(test)]
@@ -152,7 +323,7 @@ mod tests {
     #[test]
     fn barycentric_of_an_edge() {
         let e = build::simplex(1).unwrap();
-        assert_eq!(barycentric_facets_string(&e).lines().skip(1).collect::<Vec<_>>(), vec!["0 2", "1 2"]);
+        assert_eq!(barycentric_facets_string(&e).unwrap().lines().skip(1).collect::<Vec<_>>(), vec!["0 2", "1 2"]);
     }
 
     #[test]

@@ -16,7 +16,7 @@ pub mod off;
 pub mod poset;
 pub mod simplicial;
 
-pub use off::{read_off, PolygonMesh};
+pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_lex, SimplicialComplex};
 
@@ -94,6 +94,22 @@ pub enum ImportError {
         /// what is wrong
         reason: String,
     },
+    /// Memory for the input or the map could not be had.
+    #[error("cannot allocate {bytes} bytes for {what}")]
+    OutOfMemory {
+        /// what the memory was for
+        what: String,
+        /// the estimate
+        bytes: u64,
+    },
+    /// The same facet listed twice: a simplicial complex is a set of simplices.
+    #[error("facet on line {second} repeats the facet on line {first} (a simplicial complex lists each facet once)")]
+    RepeatedFacet {
+        /// line of the first occurrence
+        first: usize,
+        /// line of the repetition
+        second: usize,
+    },
     /// A `.lex` file without a complex of the requested name.
     #[error("no complex named '{0}' in the file")]
     NoSuchName(String),
@@ -126,22 +142,48 @@ fn fmt_list<T: fmt::Display>(xs: &[T]) -> String {
     format!("[{}]", parts.join(", "))
 }
 
+/// Reads a whole text file: the buffer is reserved fallibly (a file larger than the memory to
+/// be had is an error naming its size, not an abort), and bytes that are not UTF-8 are an
+/// error naming the line.
+pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
+    use std::io::Read as _;
+    let mut f = std::fs::File::open(path).map_err(|e| FileError::new(path, e.into()))?;
+    let size = f.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut bytes = Vec::new();
+    if bytes.try_reserve_exact(usize::try_from(size).unwrap_or(usize::MAX)).is_err() {
+        return Err(FileError::new(path, ImportError::OutOfMemory { what: "the file".into(), bytes: size }));
+    }
+    f.read_to_end(&mut bytes).map_err(|e| FileError::new(path, e.into()))?;
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();
+        FileError::new(
+            path,
+            ImportError::Syntax { line, message: format!("not UTF-8 text: invalid byte at offset {at}") },
+        )
+    })
+}
+
 /// The default dart limit for a map of dimension `dim`: what fits in the memory available
 /// now (`MemAvailable` of `/proc/meminfo`) at `bytes_per_dart(dim)` bytes each, capped at
 /// `u32::MAX - 1` (the largest dart index). Where `/proc/meminfo` cannot be read, the cap.
 pub fn default_max_darts(dim: usize) -> u64 {
     let cap = u32::MAX as u64 - 1;
-    let avail = std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
+    match available_memory() {
+        Some(bytes) => (bytes / bytes_per_dart(dim)).min(cap),
+        None => cap,
+    }
+}
+
+/// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
+pub(crate) fn available_memory() -> Option<u64> {
+    std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
         s.lines()
             .find(|l| l.starts_with("MemAvailable:"))
             .and_then(|l| l.split_whitespace().nth(1))
             .and_then(|kb| kb.parse::<u64>().ok())
             .map(|kb| kb.saturating_mul(1024))
-    });
-    match avail {
-        Some(bytes) => (bytes / bytes_per_dart(dim)).min(cap),
-        None => cap,
-    }
+    })
 }
 
 /// Bytes counted per dart when importing an n-dimensional complex: the involution row

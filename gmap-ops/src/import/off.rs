@@ -12,7 +12,9 @@ use std::path::Path;
 
 use gmap_core::{Dart, DenseMap, Point};
 
-use super::{FileError, ImportError};
+use gmap_core::io::shorten;
+
+use super::{default_max_darts, FileError, ImportError};
 
 /// A polygon mesh: points, and polygons as lists of point indices, each with its input line.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,65 +29,98 @@ pub struct PolygonMesh {
 
 impl PolygonMesh {
     /// Parses the OFF format: a header `OFF` (optionally followed by the counts on the same
-    /// line), the counts `vertices faces edges`, one vertex per line (`x y z`, extra values
-    /// ignored), one polygon per line (`k i_1 … i_k`, extra values such as colours ignored).
-    /// `#` starts a comment. Errors name the line. O(size of the text).
+    /// line), the counts `vertices faces edges`, one vertex per line (`x y z`, finite numbers,
+    /// extra values ignored), one polygon per line (`k i_1 … i_k`, extra values such as
+    /// colours ignored), nothing but comments and blank lines after the last polygon. `#`
+    /// starts a comment. Errors name the line and quote at most 40 characters of a token.
+    /// O(size of the text). No dart limit: see [`PolygonMesh::parse_limited`].
     pub fn parse(text: &str) -> Result<Self, ImportError> {
+        Self::parse_limited(text, u32::MAX as u64 - 1)
+    }
+
+    /// [`PolygonMesh::parse`], refusing as soon as the polygons read or announced make more
+    /// than `max_darts` darts (two per polygon side; every polygon has at least three sides),
+    /// before the polygons are stored.
+    pub fn parse_limited(text: &str, max_darts: u64) -> Result<Self, ImportError> {
         let mut lines = text
             .lines()
             .enumerate()
             .map(|(k, l)| (k + 1, l.split('#').next().unwrap_or("").trim()))
             .filter(|(_, l)| !l.is_empty());
         let syntax = |line: usize, message: String| ImportError::Syntax { line, message };
+        let q = |t: &str| shorten(t.as_bytes(), 40);
         let (hl, header) = lines.next().ok_or(ImportError::Empty)?;
-        let mut toks: Vec<&str> = header.split_whitespace().collect();
+        let mut toks: Vec<&str> = header.split_whitespace().take(8).collect();
         if toks.first() != Some(&"OFF") {
-            return Err(syntax(hl, format!("expected the header 'OFF', found '{header}'")));
+            return Err(syntax(hl, format!("expected the header 'OFF', found '{}'", q(header))));
         }
         toks.remove(0);
         let mut cl = hl;
         if toks.is_empty() {
             let (l, c) = lines.next().ok_or_else(|| syntax(hl, "missing the counts line".into()))?;
             cl = l;
-            toks = c.split_whitespace().collect();
+            toks = c.split_whitespace().take(8).collect();
         }
         if toks.len() < 2 {
             return Err(syntax(cl, "expected 'vertices faces edges'".into()));
         }
-        let count = |t: &str| t.parse::<u32>().map_err(|_| syntax(cl, format!("'{t}' is not a count")));
+        let count = |t: &str| t.parse::<u32>().map_err(|_| syntax(cl, format!("'{}' is not a count", q(t))));
         let (nv, nf) = (count(toks[0])?, count(toks[1])?);
+        let limit = max_darts.min(u32::MAX as u64 - 1);
+        let too_many = |facets: usize, darts: Option<u64>| ImportError::TooManyDarts { facets, dim: 2, darts, limit };
+        // every polygon has at least three sides, two darts each
+        if 6 * nf as u64 > limit {
+            return Err(too_many(nf as usize, Some(6 * nf as u64)));
+        }
         let mut points = Vec::new();
         for k in 0..nv {
             let (l, body) = lines.next().ok_or_else(|| syntax(cl, format!("expected {nv} vertices, found {k}")))?;
-            let xs: Vec<&str> = body.split_whitespace().collect();
+            let xs: Vec<&str> = body.split_whitespace().take(3).collect();
             if xs.len() < 3 {
                 return Err(syntax(l, "a vertex needs three coordinates".into()));
             }
             let mut p = [0.0; 3];
             for (c, t) in p.iter_mut().zip(&xs) {
-                *c = t.parse::<f64>().map_err(|_| syntax(l, format!("'{t}' is not a coordinate")))?;
+                *c = t
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| syntax(l, format!("'{}' is not a finite coordinate", q(t))))?;
             }
             points.push(p);
         }
         let mut polygons = Vec::new();
         let mut plines = Vec::new();
+        let mut darts = 0u64;
         for k in 0..nf {
             let (l, body) = lines.next().ok_or_else(|| syntax(cl, format!("expected {nf} polygons, found {k}")))?;
-            let xs: Vec<&str> = body.split_whitespace().collect();
-            let size = xs[0].parse::<usize>().map_err(|_| syntax(l, format!("'{}' is not a vertex count", xs[0])))?;
-            if xs.len() < size + 1 {
-                return Err(syntax(l, format!("the polygon announces {size} vertices but lists {}", xs.len() - 1)));
-            }
-            let mut poly = Vec::with_capacity(size);
-            for t in &xs[1..=size] {
-                let v = t.parse::<u32>().map_err(|_| syntax(l, format!("'{t}' is not a vertex index")))?;
+            let mut xs = body.split_whitespace();
+            let first = xs.next().unwrap_or("");
+            let size =
+                first.parse::<usize>().map_err(|_| syntax(l, format!("'{}' is not a vertex count", q(first))))?;
+            let mut poly = Vec::with_capacity(size.min(body.len()));
+            for t in xs.by_ref().take(size) {
+                let v = t.parse::<u32>().map_err(|_| syntax(l, format!("'{}' is not a vertex index", q(t))))?;
                 if v >= nv {
                     return Err(syntax(l, format!("vertex index {v} out of range (the mesh has {nv} vertices)")));
                 }
                 poly.push(v);
             }
+            if poly.len() < size {
+                return Err(syntax(l, format!("the polygon announces {size} vertices but lists {}", poly.len())));
+            }
+            darts = darts.saturating_add(2 * size as u64);
+            if darts > limit {
+                return Err(too_many(k as usize + 1, Some(darts)));
+            }
             polygons.push(poly);
             plines.push(l);
+        }
+        if let Some((l, body)) = lines.next() {
+            return Err(syntax(
+                l,
+                format!("'{}' after the {nf} polygons the header announces: the counts are wrong", q(body)),
+            ));
         }
         Ok(PolygonMesh { points, polygons, lines: plines })
     }
@@ -114,7 +149,10 @@ impl PolygonMesh {
         if total == 0 {
             return Err(ImportError::Empty);
         }
-        let mut m = DenseMap::new(2, total);
+        let mut m = DenseMap::try_new(2, total).map_err(|_| ImportError::OutOfMemory {
+            what: format!("a map of {total} darts"),
+            bytes: total as u64 * 12,
+        })?;
         for (f, p) in self.polygons.iter().enumerate() {
             let k = p.len();
             let o = offsets[f];
@@ -188,10 +226,18 @@ impl PolygonMesh {
     }
 }
 
-/// Reads an `.off` file into a 2-map with points.
+/// Reads an `.off` file into a 2-map with points, with the default dart limit
+/// ([`default_max_darts`]); see [`read_off_with`].
 pub fn read_off(path: &Path) -> Result<DenseMap, FileError> {
-    let text = std::fs::read_to_string(path).map_err(|e| FileError::new(path, e.into()))?;
-    PolygonMesh::parse(&text).and_then(|m| m.to_gmap()).map_err(|e| FileError::new(path, e))
+    read_off_with(path, None)
+}
+
+/// Reads an `.off` file into a 2-map with points, refusing more than `max_darts` darts
+/// (default: [`default_max_darts`]) while the polygons are read, before the map is built.
+pub fn read_off_with(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
+    let text = super::read_text(path)?;
+    let limit = max_darts.unwrap_or_else(|| default_max_darts(2));
+    PolygonMesh::parse_limited(&text, limit).and_then(|m| m.to_gmap()).map_err(|e| FileError::new(path, e))
 }
 
 #[cfg(test)]

@@ -11,9 +11,10 @@
 
 use std::path::Path;
 
+use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{default_max_darts, FileError, ImportError};
+use super::{available_memory, bytes_per_dart, default_max_darts, FileError, ImportError};
 use crate::perm::{factorial, rank, PermTable};
 
 /// A simplicial complex given by its facets, each with its vertices sorted, and the line of
@@ -35,8 +36,11 @@ pub struct SimplicialComplex {
 
 impl SimplicialComplex {
     /// A complex from facets given with their line numbers. Checks that no facet repeats a
-    /// vertex; facets smaller than the largest are counted and the first one is remembered
-    /// (see the type's docs). O(F n log n).
+    /// vertex and that no facet is listed twice (a simplicial complex is a set: a repeated
+    /// facet is refused with [`ImportError::RepeatedFacet`], naming both lines, rather than
+    /// read as two simplices glued along their whole boundary); facets smaller than the
+    /// largest are counted and the first one is remembered (see the type's docs).
+    /// O(F n log F).
     pub fn from_facets_with_lines<I>(facets: I) -> Result<Self, ImportError>
     where
         I: IntoIterator<Item = (usize, Vec<u64>)>,
@@ -48,6 +52,11 @@ impl SimplicialComplex {
                 return Err(ImportError::RepeatedVertex { line, vertex: w[0] });
             }
             all.push((line, f));
+        }
+        let mut order: Vec<usize> = (0..all.len()).collect();
+        order.sort_unstable_by(|&a, &b| all[a].1.cmp(&all[b].1).then(all[a].0.cmp(&all[b].0)));
+        if let Some(w) = order.windows(2).find(|w| all[w[0]].1 == all[w[1]].1) {
+            return Err(ImportError::RepeatedFacet { first: all[w[0]].0, second: all[w[1]].0 });
         }
         let m = all.iter().map(|(_, f)| f.len()).max().unwrap_or(0);
         if m == 0 {
@@ -87,7 +96,10 @@ impl SimplicialComplex {
             for tok in body.split(|c: char| c.is_whitespace() || c == ',').filter(|t| !t.is_empty()) {
                 let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
                     line,
-                    message: format!("'{tok}' is not a vertex label (a non-negative integer)"),
+                    message: format!(
+                        "'{}' is not a vertex label (a non-negative integer)",
+                        shorten(tok.as_bytes(), 40)
+                    ),
                 })?;
                 f.push(v);
             }
@@ -139,7 +151,7 @@ impl SimplicialComplex {
             }
         }
         match name {
-            Some(n) => Err(ImportError::NoSuchName(n.to_string())),
+            Some(n) => Err(ImportError::NoSuchName(shorten(n.as_bytes(), 80))),
             None => Err(ImportError::Empty),
         }
     }
@@ -176,8 +188,23 @@ impl SimplicialComplex {
         factorial(self.dim + 1).and_then(|p| p.checked_mul(self.total as u64))
     }
 
+    /// Bytes the import takes at most: the involution rows and the tables of orderings of a
+    /// facet (`(n + 1)!` of them, shared by all facets, so for a complex of one big facet they
+    /// weigh as much as the map), or `None` past `u64`. [`read_facets`] derives its default
+    /// limit from it.
+    pub fn memory_estimate(&self) -> Option<u64> {
+        let m = self.dim as u64 + 1;
+        let orderings = factorial(self.dim + 1)?;
+        let tables = orderings.checked_mul(table_bytes_per_ordering(self.dim))?;
+        self.dart_count()?
+            .checked_mul(bytes_per_dart(self.dim))?
+            .checked_add(tables)?
+            .checked_add(self.total as u64 * m * 36)
+    }
+
     /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
-    /// allocating it. Errors, in this order: [`ImportError::TooManyDarts`],
+    /// allocating it. Every large buffer is reserved fallibly: memory that cannot be had is
+    /// an [`ImportError::OutOfMemory`] naming the bytes, not an abort. Errors, in this order: [`ImportError::TooManyDarts`],
     /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order (among the
     /// n-facets), [`ImportError::MixedDimension`] for the first facet smaller than n.
     /// O(F n log F) for the ridges and O(F (n+1)! n^2) for the darts.
@@ -196,15 +223,22 @@ impl SimplicialComplex {
         if let Some((line, found)) = self.smaller {
             return Err(ImportError::MixedDimension { line, expected: m, found });
         }
-        let table = PermTable::new(m);
+        let oom = |what: &str, bytes: usize| ImportError::OutOfMemory { what: what.into(), bytes: bytes as u64 };
+        let table = PermTable::try_new(m).ok_or_else(|| {
+            oom("the orderings of a facet", (factorial(m).unwrap_or(0) * table_bytes_per_ordering(n)) as usize)
+        })?;
         let pc = table.len();
+        // the crossing table is only needed where two facets share a ridge
+        let cross_len = if partner.iter().any(|&x| x != NONE) { m * pc } else { 0 };
         // cross[jg * pc + p]: the ordering reached from ordering p of a facet when crossing the
         // ridge of its first n positions into a facet whose extra vertex is its local vertex jg.
         // The ridge's vertices keep their order, and local numbers shift around the omitted
         // vertex: it depends on p and jg only, not on the facets.
-        let mut cross = vec![0u32; m * pc];
+        let mut cross: Vec<u32> = Vec::new();
+        cross.try_reserve_exact(cross_len).map_err(|_| oom("the ridge-crossing table", cross_len * 4))?;
+        cross.resize(cross_len, 0);
         let mut q = vec![0u8; m];
-        for jg in 0..m {
+        for jg in 0..if cross_len == 0 { 0 } else { m } {
             for p in 0..pc {
                 let perm = table.perm(p);
                 let j = perm[n] as usize;
@@ -218,7 +252,9 @@ impl SimplicialComplex {
             }
         }
         let w = n + 1;
-        let mut alpha = vec![0u32; darts * w];
+        let mut alpha: Vec<u32> = Vec::new();
+        alpha.try_reserve_exact(darts * w).map_err(|_| oom("the involutions", darts * w * 4))?;
+        alpha.resize(darts * w, 0);
         for f in 0..nf {
             let base = f * pc;
             for p in 0..pc {
@@ -347,6 +383,27 @@ impl SimplicialComplex {
 
 const NONE: u32 = u32::MAX;
 
+/// Bytes of the tables kept per ordering of a facet of dimension `dim` (`m = dim + 1`
+/// vertices): the ordering itself (`m` bytes), its `m - 1` neighbours by a swap (`u32` each)
+/// and the `m` orderings reached across a ridge (`u32` each).
+fn table_bytes_per_ordering(dim: usize) -> u64 {
+    let m = dim as u64 + 1;
+    m + 4 * m.saturating_sub(1) + 4 * m
+}
+
+/// The default dart limit of an import: what fits in the memory available now at
+/// [`bytes_per_dart`] each, once the tables of orderings are counted (see
+/// [`SimplicialComplex::memory_estimate`]), and never more than [`default_max_darts`].
+fn default_limit(sc: &SimplicialComplex) -> u64 {
+    let cap = default_max_darts(sc.dim());
+    let tables = factorial(sc.dim() + 1).and_then(|p| p.checked_mul(table_bytes_per_ordering(sc.dim())));
+    match (available_memory(), tables) {
+        (Some(avail), Some(t)) => (avail.saturating_sub(t) / bytes_per_dart(sc.dim())).min(cap),
+        (Some(_), None) => 0,
+        (None, _) => cap,
+    }
+}
+
 struct LexParser<'a> {
     bytes: &'a [u8],
     pos: usize,
@@ -403,7 +460,7 @@ impl LexParser<'_> {
                 let tok = std::str::from_utf8(&self.bytes[start..self.pos]).unwrap_or("");
                 let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
                     line: self.line,
-                    message: format!("vertex label '{tok}' is too large"),
+                    message: format!("vertex label '{}' is too large", shorten(tok.as_bytes(), 40)),
                 })?;
                 f.push(v);
                 match self.peek() {
@@ -431,18 +488,18 @@ impl LexParser<'_> {
 /// Reads a `.facets` file into a G-map, refusing more than `max_darts` darts (default:
 /// [`default_max_darts`]) before allocating.
 pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = std::fs::read_to_string(path).map_err(|e| FileError::new(path, e.into()))?;
+    let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
-    let limit = max_darts.unwrap_or_else(|| default_max_darts(sc.dim()));
+    let limit = max_darts.unwrap_or_else(|| default_limit(&sc));
     sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.lex` file (the complex `name`, or the first one) into a G-map; see
 /// [`read_facets`] for the limit.
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = std::fs::read_to_string(path).map_err(|e| FileError::new(path, e.into()))?;
+    let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
-    let limit = max_darts.unwrap_or_else(|| default_max_darts(sc.dim()));
+    let limit = max_darts.unwrap_or_else(|| default_limit(&sc));
     sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
 }
 
@@ -467,7 +524,7 @@ mod tests {
 
     #[test]
     fn errors_name_line_and_ridge() {
-        let sc = SimplicialComplex::parse_facets("1 2\n1 2 3\n1 2\n").unwrap();
+        let sc = SimplicialComplex::parse_facets("1 2\n1 2 3\n1 3\n").unwrap();
         assert!(!sc.is_pure());
         assert_eq!((sc.facet_count(), sc.total_facet_count(), sc.dart_count()), (1, 3, Some(18)));
         let e = sc.to_gmap(100).unwrap_err();

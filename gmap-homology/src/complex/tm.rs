@@ -42,7 +42,7 @@ use std::collections::BTreeMap;
 use gmap_core::DenseMap;
 use thiserror::Error;
 
-use crate::arch::{all_cell_incidences, ArchComplex, FromMapError};
+use crate::complex::arch::{all_cell_incidences, ArchComplex, FromMapError};
 
 /// A set of cells with signed multiplicities: for each cell, the number of positive and of
 /// negative occurrences, kept apart (TM §IV). Cells are region indices of a [`TmModel`].
@@ -192,7 +192,7 @@ impl TmModel {
 
     /// The model of the cells of a G-map (cells indexed and identified as in
     /// [`ArchComplex::from_map`]: 0-cells first). Occurrences are the face-operator preimage
-    /// elements counted by sign ([`crate::arch::cell_incidences`]); needs condition C1.
+    /// elements counted by sign ([`crate::complex::arch::cell_incidences`]); needs condition C1.
     pub fn from_map(map: &DenseMap) -> Result<TmModel, FromMapError> {
         let n = map.dim();
         let counts = map.cell_counts();
@@ -353,26 +353,8 @@ impl TmModel {
             if k == 0 {
                 continue;
             }
-            let b = self.boundary(&SignedSet::cell(c));
-            if k == 1 {
-                let (p, m) = Self::zero_sum(&b);
-                if p != m {
-                    return Err(TmDefect::BoundaryNotCircuit {
-                        cell: self.ids[c],
-                        dim: k,
-                        at: self.ids[c],
-                        plus: p,
-                        minus: m,
-                    });
-                }
-            } else if let Some((at, p, m)) = self.boundary(&b).iter().find(|&(_, p, m)| p != m) {
-                return Err(TmDefect::BoundaryNotCircuit {
-                    cell: self.ids[c],
-                    dim: k,
-                    at: self.ids[at],
-                    plus: p,
-                    minus: m,
-                });
+            if let Some((at, plus, minus)) = self.unbalanced(c, k == 1, |x| self.boundary(x)) {
+                return Err(TmDefect::BoundaryNotCircuit { cell: self.ids[c], dim: k, at: self.ids[at], plus, minus });
             }
         }
         for c in 0..self.len() {
@@ -380,29 +362,30 @@ impl TmModel {
             if k >= self.dim {
                 continue;
             }
-            let g = self.coboundary(&SignedSet::cell(c));
-            if k + 1 == self.dim {
-                let (p, m) = Self::zero_sum(&g);
-                if p != m {
-                    return Err(TmDefect::CoboundaryNotCocircuit {
-                        cell: self.ids[c],
-                        dim: k,
-                        at: self.ids[c],
-                        plus: p,
-                        minus: m,
-                    });
-                }
-            } else if let Some((at, p, m)) = self.coboundary(&g).iter().find(|&(_, p, m)| p != m) {
+            if let Some((at, plus, minus)) = self.unbalanced(c, k + 1 == self.dim, |x| self.coboundary(x)) {
                 return Err(TmDefect::CoboundaryNotCocircuit {
                     cell: self.ids[c],
                     dim: k,
                     at: self.ids[at],
-                    plus: p,
-                    minus: m,
+                    plus,
+                    minus,
                 });
             }
         }
         Ok(())
+    }
+
+    /// Where the image of cell `c` under `step` is not a circuit: with `ends`, the image is
+    /// a set of end cells whose coefficients must cancel (reported at `c` itself); else the
+    /// first cell occurring unequally often with each sign in the image of the image.
+    fn unbalanced(&self, c: usize, ends: bool, step: impl Fn(&SignedSet) -> SignedSet) -> Option<(usize, u64, u64)> {
+        let image = step(&SignedSet::cell(c));
+        if ends {
+            let (p, m) = Self::zero_sum(&image);
+            (p != m).then_some((c, p, m))
+        } else {
+            step(&image).iter().find(|&(_, p, m)| p != m)
+        }
     }
 
     /// The Poincaré dual (TM §IV): cell of dimension k becomes dimension `n - k`, boundary

@@ -105,6 +105,17 @@ impl SparseMatrix {
         SparseMatrix { rows, cols, col_ptr: vec![0; cols + 1], row_idx: Vec::new(), vals: Vec::new() }
     }
 
+    /// The `n × n` identity. O(n).
+    pub fn identity(n: usize) -> Self {
+        SparseMatrix {
+            rows: n,
+            cols: n,
+            col_ptr: (0..=n).collect(),
+            row_idx: (0..n as u32).collect(),
+            vals: vec![1; n],
+        }
+    }
+
     /// A matrix from its CSC parts, checking every invariant. O(rows + nnz).
     pub fn try_from_csc(
         rows: usize,

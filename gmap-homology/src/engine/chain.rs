@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use crate::sparse::SparseMatrix;
+use crate::engine::sparse::SparseMatrix;
 
 /// Why matrices do not form a chain complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]

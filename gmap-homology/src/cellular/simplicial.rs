@@ -12,8 +12,8 @@
 
 use gmap_core::{AlphaSet, Dart, DenseMap};
 
-use crate::chain::ChainComplex;
-use crate::sparse::SparseMatrix;
+use crate::engine::chain::ChainComplex;
+use crate::engine::sparse::SparseMatrix;
 
 /// A k-simplex of the simplicial counterpart: its vertex labels and one of its darts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,7 +21,7 @@ pub struct Simplex {
     /// the vertex labels `S` as a bit set (bit i = the i-cell vertex)
     pub labels: u32,
     /// the smallest dart of the `<alpha_j : j ∉ S>`-orbit
-    pub dart: u32,
+    pub dart: Dart,
 }
 
 /// The simplicial chain complex with the simplex behind each generator.
@@ -74,7 +74,7 @@ pub fn simplicial_complex_with_simplices(map: &DenseMap) -> SimplicialComplex {
         let mut simp = Vec::new();
         for s in subsets(n, k + 1) {
             let p = map.partition(complement(s));
-            for &Dart(r) in &p.reps {
+            for &r in &p.reps {
                 simp.push(Simplex { labels: s, dart: r });
             }
             let len = p.len();
@@ -97,7 +97,7 @@ pub fn simplicial_complex_with_simplices(map: &DenseMap) -> SimplicialComplex {
                     }
                     let face = x.labels & !(1 << i);
                     let (_, of, off) = prev.iter().find(|(t, _, _)| *t == face).expect("face subset present");
-                    let row = off + of[x.dart as usize] as usize;
+                    let row = off + of[x.dart.index()] as usize;
                     entries.push((row as u32, if m % 2 == 0 { 1 } else { -1 }));
                     m += 1;
                 }
@@ -125,7 +125,7 @@ pub fn simplicial_complex_with_simplices(map: &DenseMap) -> SimplicialComplex {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::homology::homology_z;
+    use crate::engine::homology::homology_z;
     use gmap_core::examples;
 
     #[test]

@@ -26,12 +26,12 @@
 //!
 //! What remains is a complex on the surviving cells whose matrices are small; they are
 //! reduced again with general unit pivots (fewest entries first, a Markowitz-like rule)
-//! and then by dense Smith normal form ([`crate::snf`]).
+//! and then by dense Smith normal form ([`crate::engine::snf`]).
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use crate::ring::Ring;
+use crate::engine::ring::Ring;
 
 /// State of a row during elimination.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -368,7 +368,7 @@ impl<R: Ring> Engine<'_, R> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ring::{Zi64, Zp};
+    use crate::engine::ring::{Zi64, Zp};
 
     fn col(v: &[(u32, i64)]) -> Col<i64> {
         v.to_vec()

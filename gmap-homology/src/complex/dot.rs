@@ -15,7 +15,7 @@
 
 use std::fmt::Write as _;
 
-use crate::arch::ArchComplex;
+use crate::complex::arch::ArchComplex;
 
 /// The Graphviz text of the incidence graph; nodes are named `r<id>`, ranked by dimension
 /// (higher dimensions on top).

@@ -20,11 +20,11 @@
 
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
-use crate::chain::ChainComplex;
-use crate::homology::{is_prime, HomologyError};
-use crate::morse::{lift, prereduce};
-use crate::ring::{Euclid, Zi64, Zp};
-use crate::snf::smith_tracked;
+use crate::engine::chain::ChainComplex;
+use crate::engine::homology::{is_prime, HomologyError};
+use crate::engine::morse::{lift, prereduce};
+use crate::engine::ring::{Euclid, Zi64, Zp};
+use crate::engine::snf::smith_tracked;
 
 /// Largest number of cells in one dimension of the reduced complex for which generators are
 /// computed.
@@ -247,8 +247,8 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::border::cellular_complex;
-    use crate::homology::homology_z;
+    use crate::cellular::border::cellular_complex;
+    use crate::engine::homology::homology_z;
     use gmap_core::examples;
 
     #[test]
@@ -273,11 +273,11 @@ mod tests {
         /// lifting (an error otherwise).
         #[test]
         fn random_complexes(tris in proptest::collection::vec((0u32..7, 0u32..7, 0u32..7), 0..18)) {
-            let c = crate::homology::tests::random_complex(&tris);
+            let c = crate::engine::homology::tests::random_complex(&tris);
             for field in [None, Some(2)] {
                 let h = match field {
                     None => homology_z(&c).unwrap(),
-                    Some(p) => crate::homology::homology_zp(&c, p).unwrap(),
+                    Some(p) => crate::engine::homology::homology_zp(&c, p).unwrap(),
                 };
                 let g = generators(&c, field).unwrap();
                 for k in 0..h.betti.len() {

@@ -5,7 +5,7 @@
 
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
-use crate::ring::Euclid;
+use crate::engine::ring::Euclid;
 
 /// The non-zero diagonal of the Smith normal form of a dense `rows × cols` matrix (given
 /// row by row): entries `d_1 | d_2 | … | d_r` up to sign, r the rank. `None` on overflow.
@@ -148,7 +148,7 @@ pub(crate) fn smith_tracked<R: Euclid>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ring::{ZBig, Zi64};
+    use crate::engine::ring::{ZBig, Zi64};
     use num_bigint::BigInt;
 
     #[test]

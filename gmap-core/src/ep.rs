@@ -1,29 +1,28 @@
-//! Euler–Poincaré operators (AC §4–7).
+//! Euler–Poincaré vectors (AC §4–5): changes of cell counts and Betti numbers.
 //!
-//! An n-dimensional complex has a *configuration* `(v_0, …, v_n; b_0, …, b_n)`: its region
-//! counts and Betti numbers. The Euler–Poincaré formula (AC Thm. 2.1, Cor. 3.11) says that
-//! every configuration lies on the hyperplane `Σ (-1)^i (x_i - y_i) = 0` of
+//! An n-dimensional complex has a *configuration* `(v_0, …, v_n; b_0, …, b_n)`: its cell
+//! (region) counts and Betti numbers. The Euler–Poincaré formula (AC Thm. 2.1, Cor. 3.11)
+//! says that every configuration lies on the hyperplane `Σ (-1)^i (x_i - y_i) = 0` of
 //! `Z^{n+1} × Z^{n+1}` (the *Euler–Poincaré hyperplane*, AC Def. 4.1). A vector of that
 //! hyperplane is an *Euler–Poincaré operator*: adding it to a configuration describes a
-//! change of the complex that keeps the formula true (AC §5).
+//! change of the complex that keeps the formula true (AC §5), such as the change made by an
+//! Euler operator on a map ([`EpVector::between`] two configurations).
 //!
 //! [`EpVector`] holds such a vector `(ΔX_0..ΔX_n; ΔY_0..ΔY_n)`. It tests membership in the
 //! hyperplane ([`EpVector::is_operator`]) and in the Euler–Poincaré space of non-negative
 //! configurations ([`EpVector::is_configuration`]), and expands an operator in the two bases
 //! of the paper:
 //! * `K_i = X_i - (-1)^i X_0` (i = 1..n) and `L_j = Y_j + (-1)^j X_0` (j = 0..n), AC (4)–(5);
-//! * `A_i = X_i - Y_{i-1}` (i = 1..n) and `B_j = X_j + Y_j` (j = 0..n), AC Prop. 5.2, whose
-//!   members are the *elementary* operators ("make edge, kill component", "make vertex and
-//!   component", …; see [`elementary_operators`]).
-//!
-//! The polynomial view (AC §6) maps `X_i` to `X^i` and `Y_j` to `X^{n+1+j}`; [`Poly`]
-//! implements it with the membership tests of AC Prop. 6.1 / Lemma 6.3 and the closed-form
-//! expansions of AC Prop. 6.7 (n even) and Prop. 6.13 (n odd).
+//! * `A_i = X_i - Y_{i-1}` (i = 1..n, make an i-cell and kill an (i-1)-hole) and
+//!   `B_j = X_j + Y_j` (j = 0..n, make a j-cell and a j-hole), AC Prop. 5.2, the
+//!   *elementary* operators ([`EpVector::expand_ab`], named by [`EpVector::basis_name`]).
 //!
 //! All arithmetic is checked: an overflow is reported as [`EpError::Overflow`], never wrapped.
+//! The polynomial view of AC §6 and the names of the elementary operators live with the
+//! architectural complexes, in `gmap_homology::ep`.
 //!
 //! ```
-//! use gmap_homology::ep::EpVector;
+//! use gmap_core::ep::EpVector;
 //! // make an edge and a loop in a surface complex (n = 2)
 //! let meml = EpVector::b(2, 1);
 //! assert!(meml.is_operator());
@@ -31,6 +30,9 @@
 //! let e = meml.expand_ab().unwrap();
 //! assert_eq!(e.delta, vec![0, 1, 0]);
 //! assert_eq!(e.recombine(2).unwrap(), meml);
+//! // inserting a vertex in an edge: one more vertex, one more edge, same homology
+//! let v = EpVector::from_cells(&[1, 1, 0]);
+//! assert_eq!(v.basis_name(), "B0 + A1");
 //! ```
 
 use std::fmt;
@@ -131,6 +133,30 @@ impl EpVector {
         Ok(EpVector { x, y })
     }
 
+    /// A change of cells with unchanged homology (the `K`-type operators of AC Remark 5.1):
+    /// `dx` cells made (negative: removed) per dimension. Panics if `dx` is empty.
+    pub fn from_cells(dx: &[i64]) -> Self {
+        assert!(!dx.is_empty(), "a configuration has at least dimension 0");
+        EpVector { x: dx.to_vec(), y: vec![0; dx.len()] }
+    }
+
+    /// The change `after - before` between two configurations, each given as cell counts
+    /// and Betti numbers. Panics if the four lengths differ or are 0.
+    pub fn between(
+        cells_before: &[usize],
+        betti_before: &[usize],
+        cells_after: &[usize],
+        betti_after: &[usize],
+    ) -> Self {
+        let n1 = cells_before.len();
+        assert!(
+            n1 > 0 && cells_after.len() == n1 && betti_before.len() == n1 && betti_after.len() == n1,
+            "configurations of different dimensions"
+        );
+        let d = |a: &[usize], b: &[usize]| a.iter().zip(b).map(|(&p, &q)| q as i64 - p as i64).collect();
+        EpVector { x: d(cells_before, cells_after), y: d(betti_before, betti_after) }
+    }
+
     /// The unit vector `X_i` ("make an i-dimensional element"). Panics if `i > n`.
     pub fn x_unit(n: usize, i: usize) -> Self {
         assert!(i <= n, "X_{i} does not exist in dimension {n}");
@@ -184,13 +210,13 @@ impl EpVector {
         self.x.len() - 1
     }
 
-    /// The region part `ΔX_0..ΔX_n`.
-    pub fn x(&self) -> &[i64] {
+    /// The cell part `ΔX_0..ΔX_n`: the change of the number of i-cells.
+    pub fn dx(&self) -> &[i64] {
         &self.x
     }
 
-    /// The Betti part `ΔY_0..ΔY_n`.
-    pub fn y(&self) -> &[i64] {
+    /// The Betti part `ΔY_0..ΔY_n`: the change of the i-th Betti number.
+    pub fn dy(&self) -> &[i64] {
         &self.y
     }
 
@@ -202,6 +228,17 @@ impl EpVector {
     /// Whether the vector lies on the Euler–Poincaré hyperplane (AC Def. 4.1): an operator.
     pub fn is_operator(&self) -> bool {
         self.euler_defect() == 0
+    }
+
+    /// [`EpVector::is_operator`] under the name of the hyperplane: whether the change keeps
+    /// the Euler–Poincaré formula true.
+    pub fn is_on_hyperplane(&self) -> bool {
+        self.is_operator()
+    }
+
+    /// The change of the Euler characteristic, `Σ (-1)^i ΔX_i`, or `None` on overflow.
+    pub fn euler_change(&self) -> Option<i64> {
+        self.x.iter().enumerate().try_fold(0i64, |s, (i, &c)| s.checked_add(sign(i).checked_mul(c)?))
     }
 
     /// Whether the vector lies in the Euler–Poincaré space `𝔼` (AC Def. 4.1): on the
@@ -262,7 +299,7 @@ impl EpVector {
     /// Expansion in the elementary basis `A_i, B_j` (AC Prop. 5.2), by back substitution:
     /// `δ_0 = x_0`, `γ_i = δ_{i-1} - y_{i-1}`, `δ_i = x_i - γ_i`; the hyperplane equation is
     /// what makes the last equation `δ_n = y_n` hold. O(n). Agrees with the closed forms of
-    /// [`Poly::expand_ab`] (AC Props. 6.7, 6.13).
+    /// AC Props. 6.7 and 6.13 (`gmap_homology::ep::Poly::expand_ab`).
     pub fn expand_ab(&self) -> Result<AbExpansion, EpError> {
         self.check_operator()?;
         let n = self.dim();
@@ -278,26 +315,63 @@ impl EpVector {
         Ok(AbExpansion { gamma, delta })
     }
 
-    /// The polynomial of AC (9): `X_i ↦ X^i`, `Y_j ↦ X^{n+1+j}`.
-    pub fn to_poly(&self) -> Poly {
-        let mut c = self.x.clone();
-        c.extend_from_slice(&self.y);
-        Poly::new(c)
+    /// The expansion in the elementary basis `A_i, B_j`, or `None` when the vector is not
+    /// an operator (or overflows): [`EpVector::expand_ab`] as an option.
+    pub fn basis(&self) -> Option<AbExpansion> {
+        self.expand_ab().ok()
     }
 
-    /// The vector of dimension `n` of a polynomial of degree at most `2n + 1`.
-    pub fn from_poly(p: &Poly, n: usize) -> Result<EpVector, EpError> {
-        if let Some(d) = p.degree() {
-            if d > 2 * n + 1 {
-                return Err(EpError::DegreeTooHigh { degree: d, n, max: 2 * n + 1 });
+    /// The vector written in the elementary basis, lowest dimension first, `B_j` before
+    /// `A_{j+1}`: `"B0 + A1"` for "make a vertex, make an edge", `"-A2"` for "kill a face,
+    /// make a 1-hole", `"0"` for no change, `"off hyperplane"` when the vector is not an
+    /// Euler–Poincaré operator.
+    pub fn basis_name(&self) -> String {
+        let Some(c) = self.basis() else {
+            return "off hyperplane".to_string();
+        };
+        let mut terms: Vec<(i64, String)> = Vec::new();
+        for (j, &d) in c.delta.iter().enumerate() {
+            if d != 0 {
+                terms.push((d, format!("B{j}")));
+            }
+            if let Some(&g) = c.gamma.get(j).filter(|&&g| g != 0) {
+                terms.push((g, format!("A{}", j + 1)));
             }
         }
-        let mut c = vec![0i64; 2 * n + 2];
-        for (i, &a) in p.coeffs().iter().enumerate() {
-            c[i] = a;
+        if terms.is_empty() {
+            return "0".to_string();
         }
-        let y = c.split_off(n + 1);
-        Ok(EpVector { x: c, y })
+        let mut s = String::new();
+        for (k, (coef, name)) in terms.iter().enumerate() {
+            match (k, *coef < 0) {
+                (0, true) => s.push('-'),
+                (0, false) => {}
+                (_, true) => s.push_str(" - "),
+                (_, false) => s.push_str(" + "),
+            }
+            if coef.unsigned_abs() != 1 {
+                s.push_str(&coef.unsigned_abs().to_string());
+            }
+            s.push_str(name);
+        }
+        s
+    }
+
+    /// The coordinates as `(ΔX_0, …, ΔX_n; ΔY_0, …, ΔY_n)`, e.g. `(1, 1; 0, 0)` (the
+    /// [`Display`](fmt::Display) of the vector writes it in the `X_i, Y_j` basis instead).
+    pub fn coordinates(&self) -> Coordinates<'_> {
+        Coordinates(self)
+    }
+}
+
+/// The coordinates of an [`EpVector`], written `(1, 1; 0, 0)`: see [`EpVector::coordinates`].
+#[derive(Clone, Copy, Debug)]
+pub struct Coordinates<'a>(&'a EpVector);
+
+impl fmt::Display for Coordinates<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let list = |v: &[i64]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ");
+        write!(f, "({}; {})", list(&self.0.x), list(&self.0.y))
     }
 }
 
@@ -365,272 +439,6 @@ impl fmt::Display for EpVector {
     }
 }
 
-/// An integer polynomial `Σ c_i X^i` (AC §6), coefficients from degree 0 up, with no
-/// trailing zeros (the zero polynomial has no coefficient).
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct Poly(Vec<i64>);
-
-impl Poly {
-    /// The polynomial with these coefficients (trailing zeros are dropped).
-    pub fn new(mut c: Vec<i64>) -> Self {
-        while c.last() == Some(&0) {
-            c.pop();
-        }
-        Poly(c)
-    }
-
-    /// The monomial `X^k`.
-    pub fn monomial(k: usize) -> Self {
-        let mut c = vec![0; k + 1];
-        c[k] = 1;
-        Poly(c)
-    }
-
-    /// The coefficients, lowest degree first.
-    pub fn coeffs(&self) -> &[i64] {
-        &self.0
-    }
-
-    /// The coefficient of `X^k` (0 beyond the degree).
-    pub fn coeff(&self, k: usize) -> i64 {
-        self.0.get(k).copied().unwrap_or(0)
-    }
-
-    /// The degree, `None` for the zero polynomial.
-    pub fn degree(&self) -> Option<usize> {
-        self.0.len().checked_sub(1)
-    }
-
-    /// `F(-1)`, checked.
-    pub fn at_minus_one(&self) -> Result<i64, EpError> {
-        let mut s = 0i64;
-        for (i, &c) in self.0.iter().enumerate() {
-            s = add(s, mul(sign(i), c)?)?;
-        }
-        Ok(s)
-    }
-
-    /// The product, checked. O(deg² ).
-    pub fn try_mul(&self, other: &Poly) -> Result<Poly, EpError> {
-        if self.0.is_empty() || other.0.is_empty() {
-            return Ok(Poly(Vec::new()));
-        }
-        let mut c = vec![0i64; self.0.len() + other.0.len() - 1];
-        for (i, &a) in self.0.iter().enumerate() {
-            for (j, &b) in other.0.iter().enumerate() {
-                c[i + j] = add(c[i + j], mul(a, b)?)?;
-            }
-        }
-        Ok(Poly::new(c))
-    }
-
-    /// The sum, checked.
-    pub fn try_add(&self, other: &Poly) -> Result<Poly, EpError> {
-        let len = self.0.len().max(other.0.len());
-        let c = (0..len).map(|k| add(self.coeff(k), other.coeff(k))).collect::<Result<Vec<_>, _>>()?;
-        Ok(Poly::new(c))
-    }
-
-    /// Division by `X + 1`: the quotient and the remainder `F(-1)` (synthetic division).
-    pub fn div_by_x_plus_one(&self) -> Result<(Poly, i64), EpError> {
-        if self.0.is_empty() {
-            return Ok((Poly(Vec::new()), 0));
-        }
-        let d = self.0.len() - 1;
-        let mut q = vec![0i64; d];
-        let mut carry = 0i64;
-        for k in (0..=d).rev() {
-            let v = add(self.0[k], carry)?;
-            if k == 0 {
-                return Ok((Poly::new(q), v));
-            }
-            q[k - 1] = v;
-            carry = v.checked_neg().ok_or(EpError::Overflow)?;
-        }
-        unreachable!("the loop returns at k = 0")
-    }
-
-    /// Membership of the polynomial of an n-vector in `f(𝔈) = 𝔍` (AC Prop. 6.1, Lemma 6.3):
-    /// for n even, `F(-1) = 0` (F is a multiple of `X + 1`); for n odd,
-    /// `F - 2 Σ_{i<=n} (-1)^i α_i` is divisible by `X + 1`. Fails if the degree exceeds `2n+1`.
-    pub fn is_operator(&self, n: usize) -> Result<bool, EpError> {
-        if let Some(d) = self.degree() {
-            if d > 2 * n + 1 {
-                return Err(EpError::DegreeTooHigh { degree: d, n, max: 2 * n + 1 });
-            }
-        }
-        if n.is_multiple_of(2) {
-            Ok(self.div_by_x_plus_one()?.1 == 0)
-        } else {
-            let mut s = 0i64;
-            for i in 0..=n {
-                s = add(s, mul(sign(i), self.coeff(i))?)?;
-            }
-            let shifted = self.try_add(&Poly::new(vec![mul(-2, s)?]))?;
-            Ok(shifted.div_by_x_plus_one()?.1 == 0)
-        }
-    }
-
-    /// The expansion of an operator polynomial in `A_i, B_j` by the closed forms of
-    /// AC Prop. 6.7 (n even) and Prop. 6.13 (n odd):
-    /// `γ_i = (-1)^i Σ_{ℓ=i}^{n} (-1)^ℓ (α_ℓ - α_{n+1+ℓ})`, `δ_j = α_j - γ_j` (1 <= j < n),
-    /// `δ_0 = α_0`, `δ_n = α_{2n+1}`. Fails unless [`Poly::is_operator`]. O(n²).
-    pub fn expand_ab(&self, n: usize) -> Result<AbExpansion, EpError> {
-        if !self.is_operator(n)? {
-            let v = EpVector::from_poly(self, n)?;
-            return Err(EpError::NotOnHyperplane { defect: v.euler_defect() });
-        }
-        let a = |k: usize| self.coeff(k);
-        let mut gamma = Vec::with_capacity(n);
-        for i in 1..=n {
-            let mut s = 0i64;
-            for l in i..=n {
-                s = add(s, mul(sign(l), sub(a(l), a(n + 1 + l))?)?)?;
-            }
-            gamma.push(mul(sign(i), s)?);
-        }
-        let mut delta = Vec::with_capacity(n + 1);
-        delta.push(a(0));
-        for j in 1..n {
-            delta.push(sub(a(j), gamma[j - 1])?);
-        }
-        if n > 0 {
-            delta.push(a(2 * n + 1));
-        }
-        Ok(AbExpansion { gamma, delta })
-    }
-}
-
-impl fmt::Display for Poly {
-    /// Writes `1 - X^2 + 3X^5`; the zero polynomial is `0`.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let mut first = true;
-        for (k, &c) in self.0.iter().enumerate() {
-            if c == 0 {
-                continue;
-            }
-            let mag = c.unsigned_abs();
-            if first {
-                if c < 0 {
-                    write!(f, "-")?;
-                }
-            } else {
-                write!(f, " {} ", if c < 0 { '-' } else { '+' })?;
-            }
-            first = false;
-            match k {
-                0 => write!(f, "{mag}")?,
-                _ => {
-                    if mag != 1 {
-                        write!(f, "{mag}")?;
-                    }
-                    if k == 1 {
-                        write!(f, "X")?;
-                    } else {
-                        write!(f, "X^{k}")?;
-                    }
-                }
-            }
-        }
-        if first {
-            write!(f, "0")?;
-        }
-        Ok(())
-    }
-}
-
-/// Which elementary operator of AC Prop. 5.2.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Elementary {
-    /// `A_i = X_i - Y_{i-1}`, i >= 1: make an i-element, kill an (i-1)-hole
-    A(usize),
-    /// `B_j = X_j + Y_j`: make a j-element and a j-hole
-    B(usize),
-}
-
-/// One elementary Euler–Poincaré operator with its names (AC §7).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ElementaryOperator {
-    /// which one
-    pub which: Elementary,
-    /// its vector
-    pub vector: EpVector,
-    /// mnemonic in the style of Euler operators: `mvmc`, `meml`, `mekc`, …
-    pub mnemonic: String,
-    /// description in words: "make edge, kill component"
-    pub description: String,
-}
-
-/// The word for an i-dimensional element: vertex, edge, area, volume, then "i-cell".
-pub fn element_name(i: usize) -> String {
-    match i {
-        0 => "vertex".into(),
-        1 => "edge".into(),
-        2 => "area".into(),
-        3 => "volume".into(),
-        _ => format!("{i}-cell"),
-    }
-}
-
-/// The word for a j-dimensional hole: component, loop, shell, then "j-hole" (AC §7.3).
-pub fn hole_name(j: usize) -> String {
-    match j {
-        0 => "component".into(),
-        1 => "loop".into(),
-        2 => "shell".into(),
-        _ => format!("{j}-hole"),
-    }
-}
-
-fn element_code(i: usize) -> String {
-    match i {
-        0 => "v".into(),
-        1 => "e".into(),
-        2 => "a".into(),
-        3 => "b".into(),
-        _ => format!("c{i}"),
-    }
-}
-
-fn hole_code(j: usize) -> String {
-    match j {
-        0 => "c".into(),
-        1 => "l".into(),
-        2 => "s".into(),
-        _ => format!("h{j}"),
-    }
-}
-
-impl ElementaryOperator {
-    /// The operator `which` in dimension `n`. Panics if the index is out of range.
-    pub fn new(n: usize, which: Elementary) -> Self {
-        match which {
-            Elementary::A(i) => ElementaryOperator {
-                which,
-                vector: EpVector::a(n, i),
-                mnemonic: format!("m{}k{}", element_code(i), hole_code(i - 1)),
-                description: format!("make {}, kill {}", element_name(i), hole_name(i - 1)),
-            },
-            Elementary::B(j) => ElementaryOperator {
-                which,
-                vector: EpVector::b(n, j),
-                mnemonic: format!("m{}m{}", element_code(j), hole_code(j)),
-                description: format!("make {} and {}", element_name(j), hole_name(j)),
-            },
-        }
-    }
-}
-
-/// The `2n + 1` elementary operators of dimension n (AC Prop. 5.2, §7): `A_1..A_n`, then
-/// `B_0..B_n`. Mnemonics use v/e/a/b (vertex, edge, area, body) for elements and c/l/s
-/// (component, loop, shell) for holes: `mvmc = X_0 + Y_0`, `meml = X_1 + Y_1`,
-/// `mekc = X_1 - Y_0`.
-pub fn elementary_operators(n: usize) -> Vec<ElementaryOperator> {
-    let mut v: Vec<ElementaryOperator> = (1..=n).map(|i| ElementaryOperator::new(n, Elementary::A(i))).collect();
-    v.extend((0..=n).map(|j| ElementaryOperator::new(n, Elementary::B(j))));
-    v
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -641,23 +449,39 @@ mod tests {
         assert_eq!(v.to_string(), "3X_0 + 2Y_0 - Y_1");
         assert!(v.is_operator());
         assert_eq!(EpVector::zero(1).to_string(), "0");
-    }
-
-    #[test]
-    fn division_by_x_plus_one() {
-        // 1 + X^3 = (1 + X)(1 - X + X^2)
-        let (q, r) = Poly::new(vec![1, 0, 0, 1]).div_by_x_plus_one().unwrap();
-        assert_eq!(q, Poly::new(vec![1, -1, 1]));
-        assert_eq!(r, 0);
-        // 1 - X = -(1 + X) + 2
-        let (q, r) = Poly::new(vec![1, -1]).div_by_x_plus_one().unwrap();
-        assert_eq!(q, Poly::new(vec![-1]));
-        assert_eq!(r, 2);
+        assert_eq!(EpVector::from_cells(&[1, 1]).coordinates().to_string(), "(1, 1; 0, 0)");
     }
 
     #[test]
     fn overflow_is_reported() {
         let v = EpVector::try_new(vec![i64::MAX, 0], vec![i64::MAX, 0]).unwrap();
         assert_eq!(v.try_add(&v), Err(EpError::Overflow));
+    }
+
+    #[test]
+    fn basis_names() {
+        // A_1 = X_1 - Y_0: an edge joining two parts; B_1 = X_1 + Y_1: an edge closing a loop
+        assert_eq!(EpVector::a(2, 1).basis_name(), "A1");
+        assert_eq!(EpVector::b(2, 1).basis_name(), "B1");
+        // kill an edge and a face: -(B_1 + A_2)
+        assert_eq!(EpVector::from_cells(&[0, -1, -1]).basis_name(), "-B1 - A2");
+        // L_2 = Y_2 + X_0 = B_0 + A_1 - B_1 - A_2 + B_2
+        let c = EpVector::l(2, 2).basis().unwrap();
+        assert_eq!((c.gamma, c.delta), (vec![1, -1], vec![1, -1, 1]));
+        let off = EpVector::from_cells(&[1, 0, 0]);
+        assert!(!off.is_on_hyperplane());
+        assert_eq!(off.euler_defect(), 1);
+        assert_eq!(off.basis_name(), "off hyperplane");
+        assert_eq!(EpVector::zero(2).basis_name(), "0");
+        assert_eq!(EpVector::from_cells(&[2, 2, 0]).basis_name(), "2B0 + 2A1");
+    }
+
+    #[test]
+    fn between_two_configurations() {
+        let v = EpVector::between(&[4, 4, 1], &[1, 0, 0], &[1, 2, 1], &[1, 2, 1]);
+        assert_eq!((v.dx(), v.dy()), (&[-3, -2, 0][..], &[0, 2, 1][..]));
+        assert!(v.is_on_hyperplane());
+        assert_eq!(v.try_add_scaled(-1, &v), Ok(EpVector::zero(2)));
+        assert_eq!(v.euler_change(), Some(-1));
     }
 }

@@ -7,14 +7,14 @@
 //! `e` of `B_i` met there (each `<alpha_{i+1}..alpha_n>`-orbit, once) add `sign_i(e) ·
 //! sign_{i-1}` to the entry (cell of `e`, that (i-1)-cell). This is exactly the sum of
 //! BO Def. 9 over the face-operator preimage, for all i-cells at once, multi-incidences
-//! included. [`crate::incidence::Incidence`] answers the same question pair by pair.
+//! included. [`crate::cellular::incidence::Incidence`] answers the same question pair by pair.
 
-use bitvec::vec::BitVec;
-use gmap_core::{AlphaSet, Dart, DenseMap};
+use gmap_core::{parallel, Dart, DenseMap};
 
-use crate::chain::{ChainComplex, ChainError};
-use crate::precond::{check_preconditions, OrientedCells, PreconditionError};
-use crate::sparse::SparseMatrix;
+use crate::cellular::incidence::incidence_terms;
+use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
+use crate::engine::chain::{ChainComplex, ChainError};
+use crate::engine::sparse::SparseMatrix;
 
 /// The cellular chain complex of a map: the border operator, with each cell named by its
 /// smallest dart.
@@ -23,7 +23,7 @@ pub struct CellularComplex {
     /// `∂_1..∂_n` over the cells
     pub chain: ChainComplex,
     /// `reps[k][j]`: the smallest dart of k-cell `j`
-    pub reps: Vec<Vec<u32>>,
+    pub reps: Vec<Vec<Dart>>,
 }
 
 /// Builds the border operator of `map` after checking C1 and C2 on every cell.
@@ -73,27 +73,17 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
         } else if i == 2 && n == 3 {
             sides(map, &oriented[2], &oriented[1])
         } else {
-            walks(map, i, &oriented[i], &oriented[i - 1])
+            incidence_terms(map, &oriented[i], &oriented[i - 1])
         };
         SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
             .expect("indices come from partitions of the same map; entries are small")
     };
-    // big maps: the even dimensions on a second thread (∂_2, the largest in 3D, alone there)
-    let two = n >= 2 && map.dart_count() >= 1 << 16 && std::thread::available_parallelism().is_ok_and(|p| p.get() >= 2);
-    let mats: Vec<SparseMatrix> = if two {
-        let (odd, even) = std::thread::scope(|s| {
-            let h = s.spawn(|| (2..=n).step_by(2).map(matrix).collect::<Vec<_>>());
-            let odd: Vec<SparseMatrix> = (1..=n).step_by(2).map(matrix).collect();
-            (odd, h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-        });
-        let (mut odd, mut even) = (odd.into_iter(), even.into_iter());
-        (1..=n).map(|i| if i % 2 == 1 { odd.next() } else { even.next() }.expect("one matrix per dimension")).collect()
-    } else {
-        (1..=n).map(matrix).collect()
-    };
+    // one task per dimension, on as many threads as the setting allows (∂_2, the largest
+    // in 3D, is taken second, so it starts at once on a second thread)
+    let mats: Vec<SparseMatrix> = parallel::map_tasks(n, map.dart_count(), |t| matrix(t + 1));
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
     debug_assert_eq!(chain.check_dd(), Ok::<(), ChainError>(()), "∂∂ = 0 under C1");
-    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
     CellularComplex { chain, reps }
 }
 
@@ -104,12 +94,12 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
     let counts: Vec<usize> = oriented.iter().map(|c| c.cells.len()).collect();
     let mats = (1..=n)
         .map(|i| {
-            let e = walks(map, i, &oriented[i], &oriented[i - 1]);
+            let e = incidence_terms(map, &oriented[i], &oriented[i - 1]);
             SparseMatrix::try_from_entries(counts[i - 1], counts[i], &e).expect("indices from partitions")
         })
         .collect();
     let chain = ChainComplex::try_new_unchecked_dd(counts, mats).expect("shapes follow the cell counts");
-    let reps = oriented.iter().map(|c| c.cells.reps.iter().map(|d| d.0).collect()).collect();
+    let reps = oriented.iter().map(|c| c.cells.reps.clone()).collect();
     CellularComplex { chain, reps }
 }
 
@@ -173,54 +163,11 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
     out
 }
 
-/// `∂_i` by walking one element of `B_{i-1}` (a `<alpha_i..alpha_n>`-orbit) per
-/// (i-1)-cell and counting the elements of `B_i` met there (BO Def. 9 as written).
-fn walks(map: &DenseMap, i: usize, upper: &OrientedCells, lower: &OrientedCells) -> Vec<(u32, u32, i64)> {
-    let n = map.dim();
-    let w = n + 1;
-    let a = map.flat();
-    let mut seen: BitVec = BitVec::repeat(false, map.dart_count());
-    let mut orbit: Vec<u32> = Vec::new();
-    // B_i elements: a dart stands for its <alpha_{i+1..n}>-orbit
-    let b_rep: Option<Vec<u32>> = if i == n { None } else { Some(map.partition(AlphaSet::above(i, n)).of) };
-    let mut b_seen: Vec<bool> = if b_rep.is_some() { vec![false; map.dart_count()] } else { Vec::new() };
-    let mut out = Vec::new();
-    for (row, &Dart(d0)) in lower.cells.reps.iter().enumerate() {
-        orbit.clear();
-        orbit.push(d0);
-        seen.set(d0 as usize, true);
-        let mut k = 0;
-        while k < orbit.len() {
-            let x = orbit[k] as usize;
-            k += 1;
-            for j in i..w {
-                let y = a[x * w + j];
-                if !seen[y as usize] {
-                    seen.set(y as usize, true);
-                    orbit.push(y);
-                }
-            }
-        }
-        let s = lower.sign(d0);
-        for &x in &orbit {
-            seen.set(x as usize, false);
-            let first = match &b_rep {
-                None => true,
-                Some(of) => !std::mem::replace(&mut b_seen[of[x as usize] as usize], true),
-            };
-            if first {
-                out.push((row as u32, upper.cells.of[x as usize], upper.sign(x) * s));
-            }
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::homology::homology_z;
-    use crate::incidence::Incidence;
+    use crate::cellular::incidence::Incidence;
+    use crate::engine::homology::homology_z;
     use gmap_core::examples;
 
     #[test]
@@ -228,12 +175,12 @@ mod tests {
         for m in [examples::cylinder(), examples::torus(), examples::klein_bottle()] {
             let c = cellular_complex(&m).unwrap();
             c.chain.check_dd().unwrap();
-            let oriented: Vec<_> = (0..=2).map(|i| crate::precond::oriented_cells(&m, i).unwrap()).collect();
+            let oriented: Vec<_> = (0..=2).map(|i| crate::cellular::precond::oriented_cells(&m, i).unwrap()).collect();
             for i in 1..=2 {
                 let inc = Incidence::new(&m, i);
                 for (col, &cd) in c.reps[i].iter().enumerate() {
                     for (row, &fd) in c.reps[i - 1].iter().enumerate() {
-                        let want = inc.signed_with(&oriented[i], &oriented[i - 1], Dart(cd), Dart(fd));
+                        let want = inc.signed_with(&oriented[i], &oriented[i - 1], cd, fd);
                         assert_eq!(c.chain.boundary(i).get(row, col), want);
                     }
                 }

@@ -32,7 +32,7 @@ use serde::Deserialize;
 use serde_json::Value;
 use thiserror::Error;
 
-use crate::arch::{ArchComplex, ArchError, Region};
+use crate::complex::arch::{ArchComplex, ArchError, Region};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]

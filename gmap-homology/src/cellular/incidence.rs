@@ -8,11 +8,16 @@
 //! their compacted cells and `-1` otherwise. Both are independent of the darts chosen
 //! (BO Properties 1 and 3).
 //!
-//! For whole boundary matrices use [`crate::border`], which builds each dimension in O(N).
+//! [`Incidence`] answers pair by pair through the kernel's face operator; it is the
+//! reference the whole-map computations are tested against. [`incidence_terms`] lists the
+//! terms of BO Def. 9 for every pair at once, by one orbit walk per (i-1)-cell: the border
+//! operator ([`crate::cellular::border`]) sums them where it has no local formula, and the
+//! architectural complex of a map (`crate::complex::arch`) counts them by sign.
 
-use gmap_core::{CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
+use bitvec::vec::BitVec;
+use gmap_core::{AlphaSet, CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
 
-use crate::precond::{oriented_cells, OrientedCells};
+use crate::cellular::precond::{oriented_cells, OrientedCells};
 
 /// The face operator between dimensions i and i-1 of a map, with what is needed to answer
 /// incidence questions. Building it is O(N n); each query is O(size of one preimage).
@@ -74,6 +79,58 @@ impl Incidence {
         let lower = oriented_cells(map, self.dim - 1)?;
         Ok(self.signed_with(&upper, &lower, cell_dart, face_dart))
     }
+}
+
+/// The terms of BO Def. 9 for all i-cells and (i-1)-cells at once (`i = upper.dim`): for
+/// each (i-1)-cell, the element of `B_{i-1}` (a `<alpha_i..alpha_n>`-orbit) holding its
+/// smallest dart is walked once, and each element `e` of `B_i` met there gives a term
+/// `((i-1)-cell, i-cell of e, sign_i(e) · sign_{i-1})`, in order of the (i-1)-cells.
+///
+/// Summed per pair the terms are the signed incidence numbers, counted the unsigned ones;
+/// every adherent pair has a term (an i-cell meeting an (i-1)-cell meets each of its
+/// elements of `B_{i-1}`, since `alpha_0..alpha_{i-2}` carry these elements onto one
+/// another inside both cells). Both cells oriented as compacted cells (C1). O(N n).
+pub fn incidence_terms(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCells) -> Vec<(u32, u32, i64)> {
+    let i = upper.dim;
+    assert_eq!(lower.dim + 1, i, "incidences between consecutive dimensions");
+    let n = map.dim();
+    let w = n + 1;
+    let a = map.flat();
+    let mut seen: BitVec = BitVec::repeat(false, map.dart_count());
+    let mut orbit: Vec<u32> = Vec::new();
+    // B_i elements: a dart stands for its <alpha_{i+1..n}>-orbit
+    let b_rep: Option<Vec<u32>> = if i == n { None } else { Some(map.partition(AlphaSet::above(i, n)).of) };
+    let mut b_seen: Vec<bool> = if b_rep.is_some() { vec![false; map.dart_count()] } else { Vec::new() };
+    let mut out = Vec::new();
+    for (row, &Dart(d0)) in lower.cells.reps.iter().enumerate() {
+        orbit.clear();
+        orbit.push(d0);
+        seen.set(d0 as usize, true);
+        let mut k = 0;
+        while k < orbit.len() {
+            let x = orbit[k] as usize;
+            k += 1;
+            for j in i..w {
+                let y = a[x * w + j];
+                if !seen[y as usize] {
+                    seen.set(y as usize, true);
+                    orbit.push(y);
+                }
+            }
+        }
+        let s = lower.sign(d0);
+        for &x in &orbit {
+            seen.set(x as usize, false);
+            let first = match &b_rep {
+                None => true,
+                Some(of) => !std::mem::replace(&mut b_seen[of[x as usize] as usize], true),
+            };
+            if first {
+                out.push((row as u32, upper.cells.of[x as usize], upper.sign(x) * s));
+            }
+        }
+    }
+    out
 }
 
 #[cfg(test)]

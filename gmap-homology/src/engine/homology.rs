@@ -20,10 +20,10 @@ use std::fmt;
 use num_bigint::BigInt;
 use thiserror::Error;
 
-use crate::chain::ChainComplex;
-use crate::reduce::{eliminate, Col, Mode};
-use crate::ring::{Euclid, Ring, ZBig, Zi64, Zp};
-use crate::snf::smith_diagonal;
+use crate::engine::chain::ChainComplex;
+use crate::engine::reduce::{eliminate, Col, Mode};
+use crate::engine::ring::{Euclid, Ring, ZBig, Zi64, Zp};
+use crate::engine::snf::smith_diagonal;
 
 /// The coefficients of a homology computation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -107,7 +107,7 @@ impl fmt::Display for Homology {
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
-    #[error("{0} is not a prime number below 2^31: --field needs a prime")]
+    #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]
     NotPrime(u64),
     /// A torsion coefficient does not fit in `u64`.
     #[error("a torsion coefficient of H_{dim} exceeds 2^64")]
@@ -123,7 +123,7 @@ pub enum HomologyError {
         /// alternating sum of the Betti numbers
         betti: i64,
     },
-    /// `--generators` on a complex whose reduction keeps too many cells in one dimension.
+    /// Generators asked of a complex whose reduction keeps too many cells in one dimension.
     #[error("generators are computed when the reduced complex keeps at most {limit} cells per dimension; dimension {dim} keeps {cells}")]
     GeneratorsTooLarge {
         /// the dimension
@@ -174,10 +174,10 @@ pub(crate) struct Survivors<E> {
 
 /// Stage 1 over any ring: unit-pivot elimination dimension by dimension.
 pub(crate) fn survivors<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> {
-    let pre = match crate::morse::prereduce(ring, c, true) {
+    let pre = match crate::engine::morse::prereduce(ring, c, true) {
         Some(p) => p,
         // the fill of the critical rows overflowed: the pass without critical cells has none
-        None => crate::morse::prereduce(ring, c, false)?,
+        None => crate::engine::morse::prereduce(ring, c, false)?,
     };
     let mut s = survivors_of(ring, &pre.chain)?;
     for (k, cells) in s.cells.iter_mut().enumerate() {
@@ -408,7 +408,7 @@ pub(crate) fn big_to_u64(x: &BigInt) -> Option<u64> {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::sparse::SparseMatrix;
+    use crate::engine::sparse::SparseMatrix;
 
     /// A complex from cell counts and `(row, col, value)` triplets per boundary matrix.
     pub(crate) fn complex(counts: Vec<usize>, mats: Vec<Vec<(usize, usize, i64)>>) -> ChainComplex {

@@ -1,5 +1,5 @@
 //! Conditions C1 and C2 under which the cellular border operator gives the true homology
-//! (DESIGN.md, "Homology: when the cellular method is right").
+//! (`docs/DESIGN.md`, "When cellular homology is right").
 //!
 //! * **C1**: every i-cell is orientable as a compacted cell — a colouring of its darts
 //!   that `alpha_k` flips for `k < i` and `alpha_j` keeps for `j > i` (so no dart is
@@ -10,28 +10,31 @@
 //!   orientable connected surface, a sphere exactly when its Euler characteristic is 2; for
 //!   `i >= 4` the homology of the compacted cell is computed by the simplicial method.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use bitvec::vec::BitVec;
-use gmap_core::{AlphaSet, CellDefect, Dart, DenseMap, Partition};
+use gmap_core::{parallel, AlphaSet, CellDefect, CompactedCells, Dart, DenseMap, Partition};
 use thiserror::Error;
 
-use crate::homology::{homology_z, Homology};
-use crate::simplicial::simplicial_complex;
+use crate::cellular::simplicial::simplicial_complex;
+use crate::engine::homology::{homology_z, Homology};
 
 /// A cell on which the cellular method does not apply.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum PreconditionError {
     /// Condition C1 fails: the cell is not orientable as a compacted cell, or its boundary
-    /// is incomplete.
-    #[error("condition C1 fails: {0}")]
+    /// is open (the kernel's message names the cell and the condition).
+    #[error(transparent)]
     C1(#[from] CellDefect),
     /// Condition C2 fails: the boundary of the cell is not a homology sphere.
-    #[error("condition C2 fails: the boundary of the {dim}-cell of dart {dart} is not a homology {}-sphere ({found})", .dim - 1)]
+    #[error("the {dim}-cell of dart {dart} is not bounded by a sphere: its boundary has {found} (condition C2: every cell bounded by a homology sphere)")]
     C2 {
         /// dimension of the cell
         dim: usize,
         /// the smallest dart of the cell
-        dart: u32,
-        /// what the boundary is instead (an Euler characteristic or homology groups)
+        dart: Dart,
+        /// what the boundary has instead: `Euler characteristic 0`, `homology (Z, Z^2, Z)`,
+        /// or `no computable homology (…)`
         found: String,
     },
 }
@@ -102,11 +105,11 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         return check_chi(&chi, cells);
     }
-    // i >= 4: build every compacted cell as an (i-1)-map and compute its homology
-    let b = map.partition(AlphaSet::above(i, n));
+    // i >= 4: every compacted cell as an (i-1)-map, and its homology
+    let b = CompactedCells::new(map, i);
     let mut elems_of_cell: Vec<Vec<u32>> = vec![Vec::new(); ncells];
-    for (e, &Dart(r)) in b.reps.iter().enumerate() {
-        elems_of_cell[cells.cells.of[r as usize] as usize].push(e as u32);
+    for (e, &c) in b.cell_of.iter().enumerate() {
+        elems_of_cell[c as usize].push(e as u32);
     }
     let mut local = vec![u32::MAX; b.len()];
     for (c, elems) in elems_of_cell.iter().enumerate() {
@@ -115,24 +118,20 @@ pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditio
         }
         let mut flat = Vec::with_capacity(elems.len() * i);
         for &e in elems {
-            let r = b.reps[e as usize].0;
-            for k in 0..i {
-                let t = b.of[map.alpha(Dart(r), k).index()];
-                flat.push(local[t as usize]);
-            }
+            flat.extend((0..i).map(|k| local[b.alpha(e, k) as usize]));
         }
         let sub = DenseMap::from_flat_unchecked(i - 1, flat).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c].0,
-            found: e.to_string(),
+            dart: cells.cells.reps[c],
+            found: format!("no computable homology ({e})"),
         })?;
         let h = homology_z(&simplicial_complex(&sub)).map_err(|e| PreconditionError::C2 {
             dim: i,
-            dart: cells.cells.reps[c].0,
-            found: e.to_string(),
+            dart: cells.cells.reps[c],
+            found: format!("no computable homology ({e})"),
         })?;
         if !is_sphere(&h, i - 1) {
-            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c].0, found: format!("homology {h}") });
+            return Err(PreconditionError::C2 { dim: i, dart: cells.cells.reps[c], found: format!("homology {h}") });
         }
     }
     Ok(())
@@ -145,8 +144,8 @@ fn check_chi(chi: &[i64], cells: &OrientedCells) -> Result<(), PreconditionError
         None => Ok(()),
         Some(c) => Err(PreconditionError::C2 {
             dim: 3,
-            dart: cells.cells.reps[c].0,
-            found: format!("a surface of Euler characteristic {}", chi[c]),
+            dart: cells.cells.reps[c],
+            found: format!("Euler characteristic {}", chi[c]),
         }),
     }
 }
@@ -225,9 +224,9 @@ pub fn check_preconditions(map: &DenseMap) -> Result<Vec<OrientedCells>, Precond
 /// [`check_preconditions`] by one traversal per dimension ([`oriented_cells`] and
 /// [`check_c2`]), the reference for the ring walks of 3-maps.
 ///
-/// Maps of at least 65,536 darts are checked on two threads when the machine has them (the
-/// dimensions are shared out so that each thread walks about half of the darts' links); the
-/// error reported is the same as in order: the lowest failing dimension, C1 before C2.
+/// The dimensions are checked as separate tasks on the threads `gmap_core::parallel` allows
+/// (maps of at least 65,536 darts); the error reported is the same as in order: the lowest
+/// failing dimension, C1 before C2.
 pub fn check_by_dimension(map: &DenseMap) -> Result<Vec<OrientedCells>, PreconditionError> {
     let n = map.dim();
     let check = |i: usize| -> Result<OrientedCells, PreconditionError> {
@@ -235,36 +234,22 @@ pub fn check_by_dimension(map: &DenseMap) -> Result<Vec<OrientedCells>, Precondi
         check_c2(map, &c)?;
         Ok(c)
     };
-    let two = map.dart_count() >= 1 << 16 && n >= 1 && std::thread::available_parallelism().is_ok_and(|p| p.get() >= 2);
-    if !two {
-        return (0..=n).map(check).collect();
-    }
-    // dimensions 0 and n on one side (vertices walk far, n-cells stay local), the rest on the other
-    let (mine, theirs): (Vec<usize>, Vec<usize>) = (0..=n).partition(|&i| i == 0 || i == n || (i % 2 == 1 && n > 3));
-    let run = |dims: &[usize]| -> Vec<(usize, Result<OrientedCells, PreconditionError>)> {
-        let mut out = Vec::with_capacity(dims.len());
-        for &i in dims {
-            let r = check(i);
-            let failed = r.is_err();
-            out.push((i, r));
-            if failed {
-                break;
-            }
+    // one task per dimension; a dimension above one that already failed is skipped, since
+    // the lowest failing dimension is the one reported
+    let failed = AtomicUsize::new(usize::MAX);
+    let results = parallel::map_tasks(n + 1, map.dart_count(), |i| {
+        if failed.load(Ordering::Relaxed) < i {
+            return None;
         }
-        out
-    };
-    let (a, b) = std::thread::scope(|s| {
-        let h = s.spawn(|| run(&theirs));
-        let a = run(&mine);
-        (a, h.join())
+        let r = check(i);
+        if r.is_err() {
+            failed.fetch_min(i, Ordering::Relaxed);
+        }
+        Some(r)
     });
-    let b = b.unwrap_or_else(|e| std::panic::resume_unwind(e));
-    let mut all: Vec<(usize, Result<OrientedCells, PreconditionError>)> = a.into_iter().chain(b).collect();
-    all.sort_by_key(|x| x.0);
     let mut out = Vec::with_capacity(n + 1);
-    for (i, r) in all {
-        debug_assert_eq!(i, out.len());
-        out.push(r?);
+    for r in results {
+        out.push(r.expect("a dimension is skipped only above a failed one, reported before it")?);
     }
     Ok(out)
 }

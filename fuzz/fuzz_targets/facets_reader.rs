@@ -1,0 +1,19 @@
+//! Fuzzes the `.facets` and `.lex` parsers and the simplicial importer: never a panic, and
+//! whatever is accepted is a valid map within the dart limit.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use gmap_ops::import::SimplicialComplex;
+
+fuzz_target!(|data: &[u8]| {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    for sc in [SimplicialComplex::parse_facets(text), SimplicialComplex::parse_lex(text, None)] {
+        if let Ok(sc) = sc {
+            if let Ok(m) = sc.to_gmap(1 << 14) {
+                assert!(m.dart_count() <= 1 << 14);
+                assert!(m.validate().is_ok());
+                let _ = m.cell_counts_and_components();
+            }
+        }
+    }
+});

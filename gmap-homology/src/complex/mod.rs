@@ -1,0 +1,8 @@
+//! Architectural complexes (AC), Euler–Poincaré operators, LAR and TM models, and their file formats.
+
+pub mod arch;
+pub mod dot;
+pub mod ep;
+pub mod json;
+pub mod lar;
+pub mod tm;
