@@ -445,7 +445,7 @@ impl EoOperator {
                 "components c and c2 are distinct and boundary-complete, c2 has a global (n-1)-hole; the new n-stratum with an (n-1)-hole is attached to `on`, which meets both; c2 joins c and loses the hole"
             }
             (Subdivide, false, _) => {
-                "stratum s is an n-stratum, boundary-complete (or incomplete for the ∞ form); the new (n-1)-ball is attached to `on`; the second part takes the frontier strata `moved` and the holes `holes`; parts of a complete stratum are complete, of an incomplete one at least one is incomplete (`parts_complete`)"
+                "stratum s is an n-stratum, boundary-complete (or incomplete for the ∞ form); the new (n-1)-ball is bounded by the strata of `on` below it, which bound both parts; the second part takes the frontier strata `moved` and the complete holes `holes`; parts of a complete stratum are complete, of an incomplete one at least one is incomplete (`parts_complete`; a complete part joins the complete component of its frontier)"
             }
             (Subdivide, true, _) => {
                 "s and u are distinct n-strata of one component (or of several, as in a G-map read by `from_map`: the merged stratum stays in s's component, or goes to u's when it is boundary-incomplete and s's is not; a component left empty goes), t an (n-1)-ball in both frontiers that bounds no other stratum beside those above s or u; all complete (at least one incomplete for the ∞ form); u and t join s"
