@@ -220,7 +220,7 @@ fn errors_name_the_dart() {
     let mut line = GMap::new(1);
     let a = line.create_dart();
     let op = try_insert_vertex(&mut line, a).unwrap();
-    assert_eq!((op.name.as_str(), op.vector.dx.as_slice()), ("mve", &[1, 1][..]));
+    assert_eq!((op.name.as_str(), op.vector.dx()), ("mve", &[1, 1][..]));
     assert_eq!(line.to_dense().0.cell_counts(), vec![2, 2]);
 }
 
