@@ -215,9 +215,13 @@ fn errors_name_the_dart() {
     assert_eq!(try_insert_vertex(&mut g, gone), Err(EulerError::NoSuchDart(gone)));
     assert!(matches!(try_remove_cell(&mut g, d, 2), Err(EulerError::BadDimension { got: 2, .. })));
     assert!(matches!(try_contract_cell(&mut g, d, 0), Err(EulerError::BadDimension { got: 0, .. })));
+    // a lone dart is a vertex with an edge missing its far end: mve on it is accepted (EO's
+    // mve applies to boundary-incomplete edges) and leaves a complete edge and an open one
     let mut line = GMap::new(1);
     let a = line.create_dart();
-    assert!(matches!(try_insert_vertex(&mut line, a), Err(EulerError::Free { alpha: 0, .. })));
+    let op = try_insert_vertex(&mut line, a).unwrap();
+    assert_eq!((op.name.as_str(), op.vector.dx()), ("mve", &[1, 1][..]));
+    assert_eq!(line.to_dense().0.cell_counts(), vec![2, 2]);
 }
 
 // ---------- property tests ----------
