@@ -301,7 +301,10 @@ fn every_lutz_file_by_the_direct_route() {
             }
             // the header gives Betti numbers mod 2; over Z it is the Wu manifold
             ("SU2_SO3.facets", Some((b2, _))) => {
-                assert_eq!((betti, torsion), (vec![1, 0, 0, 0, 0, 1], vec![vec![], vec![], vec![2], vec![], vec![], vec![]]));
+                assert_eq!(
+                    (betti, torsion),
+                    (vec![1, 0, 0, 0, 0, 1], vec![vec![], vec![], vec![2], vec![], vec![], vec![]])
+                );
                 let (code, out, _) = gmap(&["homology", f.to_str().unwrap(), "--json", "--field", "2"]);
                 assert_eq!(code, 0);
                 let v: serde_json::Value = serde_json::from_str(&out).unwrap();

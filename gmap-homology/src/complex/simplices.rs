@@ -309,10 +309,7 @@ mod tests {
         assert_eq!(fc.chain.counts(), &[7, 8, 3]);
         assert_eq!(homology_z(&fc.chain).unwrap().to_string(), "(Z^2, 0, 0)");
         assert_eq!(fc.labels(2, 2), vec![1, 2, 5]);
-        assert_eq!(
-            face_complex(&[vec![1, 2, 2]], 100).unwrap_err(),
-            FaceError::RepeatedVertex { facet: 0, vertex: 2 }
-        );
+        assert_eq!(face_complex(&[vec![1, 2, 2]], 100).unwrap_err(), FaceError::RepeatedVertex { facet: 0, vertex: 2 });
         assert_eq!(
             face_complex(&[vec![1, 2, 3]], 6).unwrap_err(),
             FaceError::TooManyFaces { estimate: Some(7), limit: 6 }
