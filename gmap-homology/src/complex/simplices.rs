@@ -19,7 +19,7 @@
 //! let fc = face_complex(&[vec![1, 2], vec![2, 3], vec![1, 3], vec![7]], u64::MAX).unwrap();
 //! assert_eq!(fc.chain.counts(), &[4, 3]);
 //! assert_eq!(homology_z(&fc.chain).unwrap().to_string(), "(Z^2, Z)");
-//! assert_eq!(fc.labels(1, 2), vec![1, 3]);
+//! assert_eq!(fc.labels(1, 1), vec![1, 3]); // edges in lexicographic order: [1,2], [1,3], [2,3]
 //! ```
 
 use thiserror::Error;
