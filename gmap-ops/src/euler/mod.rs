@@ -25,12 +25,12 @@
 //!     g.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
 //! }
 //! let op = try_insert_vertex(&mut g, d[0]).unwrap();
-//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("mve", vec![1, 1]));
+//! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("mve", vec![1, 1]));
 //! assert_eq!(op.basis_name(), "B0 + A1");
 //! assert_eq!(g.to_dense().0.cell_counts(), vec![4, 4]);
 //! // removing a vertex of degree 2 merges its two edges back
 //! let op = try_remove_cell(&mut g, d[1], 0).unwrap();
-//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("kve", vec![-1, -1]));
+//! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("kve", vec![-1, -1]));
 //! assert_eq!(g.to_dense().0.cell_counts(), vec![3, 3]);
 //! ```
 
@@ -42,4 +42,4 @@ pub mod vector;
 
 pub use ops::{CloseReport, EulerError};
 pub use simplify::{simplify, simplify_with, SimplifyOptions, SimplifyReport};
-pub use vector::{EpBasis, EpVector, EulerOp};
+pub use vector::{AbExpansion, EpVector, EulerOp};
