@@ -265,6 +265,21 @@ fn cli_generators() {
     let (code, out, _) = gmap(&["homology", q.to_str().unwrap(), "--generators"]);
     assert_eq!(code, 0);
     assert!(out.contains("generator of H_1 (Z/2): ") && out.contains(" dart "), "{out}");
+    // a map with points: the cell's dart and its point
+    let off = dir.path().join("tet.off");
+    std::fs::write(&off, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n").unwrap();
+    let (code, out, _) = gmap(&["homology", off.to_str().unwrap(), "--json", "--generators"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let cell = &v["generators"][0]["chain"][0]["cell"];
+    assert!(cell["dart"].is_u64() && cell["point"].as_array().is_some_and(|p| p.len() == 3), "{cell}");
+    // the simplicial counterpart: a dart and the dimensions of the cells spanning the simplex
+    let (code, out, _) = gmap(&["homology", p.to_str().unwrap(), "--json", "--generators", "--method", "simplicial"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let cell = &v["generators"][1]["chain"][0]["cell"];
+    assert_eq!(cell["simplex"].as_array().map(Vec::len), Some(2), "{cell}");
+    assert_eq!(v["route"], "gmap");
 }
 
 /// The groups of a Lutz file's header (`homology H_*=(Z,Z_5^3,0,Z)`), `None` for `(?)`.
