@@ -64,7 +64,7 @@ fn simplify_on_a_segment_keeps_its_homology() {
     assert_eq!(simp, plain);
     // the cellular method does not apply, with or without --simplify
     let o = gmap(&["homology", s(&seg), "--simplify"]);
-    refused(&o, "condition C1 fails");
+    refused(&o, "condition C1");
     assert_eq!(stderr(&o), stderr(&gmap(&["homology", s(&seg)])));
     // the error quotes its cause once
     assert_eq!(stderr(&o).matches("has an open boundary").count(), 1, "{}", stderr(&o));

@@ -39,6 +39,7 @@
 //!   - [`ep`]: Euler–Poincaré operators and their polynomial view (AC §4–7).
 //!   - [`lar`]: LAR's characteristic matrices and the count rule.
 //!   - [`tm`]: TM's boundary/coboundary model and its edit checks.
+//!   - [`simplices`]: any finite simplicial complex by its facets, every face a cell.
 //!   - [`json`]: the `.json` incidence-graph format; [`dot`]: Graphviz output.
 //!
 //! Every module stays reachable at the crate root (`gmap_homology::sparse`,
@@ -68,7 +69,7 @@ pub mod complex;
 pub mod engine;
 
 pub use cellular::{border, incidence, precond, simplicial};
-pub use complex::{arch, dot, ep, json, lar, tm};
+pub use complex::{arch, dot, ep, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::{cellular_complex, CellularComplex};

@@ -57,6 +57,21 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
     }
 }
 
+/// A `.facets` or `.lex[#name]` input read as a simplicial complex, without making a G-map
+/// of it (any finite simplicial complex); `None` for the other formats.
+pub fn load_simplicial(path: &Path) -> Result<Option<gmap_ops::import::SimplicialComplex>> {
+    use gmap_ops::import::{read_facets_complex, read_lex_complex};
+    Ok(match extension(path).as_str() {
+        "facets" => Some(read_facets_complex(path)?),
+        "lex" if path.exists() => Some(read_lex_complex(path, None)?),
+        "lex" => {
+            let (file, name) = split_lex_name(path);
+            Some(read_lex_complex(&file, name.as_deref())?)
+        }
+        _ => None,
+    })
+}
+
 /// Splits `FILE.lex#name` into the file and the complex name (none without `#`). The split
 /// is at the first `#` after `.lex`, so names that hold `#` themselves (Lutz's
 /// `manifold_lex_d3_n5_#1`) stay whole.

@@ -46,6 +46,15 @@ pub enum Method {
     Simplicial,
 }
 
+/// How `gmap homology` takes a simplicial complex (`.facets`, `.lex`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Via {
+    /// every face of every facet is a cell (any simplicial complex)
+    Direct,
+    /// through the G-map of the facets (pure pseudo-manifolds)
+    Gmap,
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Build the classic objects and print one table row each.
@@ -83,9 +92,12 @@ enum Command {
         /// for an architectural complex: apply Algorithm 8.16 first (topological Betti numbers)
         #[arg(long)]
         topological: bool,
-        /// refuse inputs whose G-map would have more darts than this
+        /// refuse inputs whose G-map would have more darts than this (direct route: more faces)
         #[arg(long)]
         max_darts: Option<u64>,
+        /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
+        #[arg(long, value_enum)]
+        via: Option<Via>,
     },
     /// Convert between formats, chosen by file extension.
     Convert {
@@ -123,7 +135,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command {
         Command::Demo => demo::run(),
         Command::Info { file, json, max_darts } => info::run(&file, json, max_darts),
-        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts } => {
+        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts, via } => {
             homology::run(&homology::Options {
                 file,
                 method,
@@ -133,6 +145,7 @@ pub fn run() -> ExitCode {
                 simplify,
                 topological,
                 max_darts,
+                via,
             })
         }
         Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),

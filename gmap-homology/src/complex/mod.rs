@@ -5,4 +5,5 @@ pub mod dot;
 pub mod ep;
 pub mod json;
 pub mod lar;
+pub mod simplices;
 pub mod tm;

@@ -18,7 +18,7 @@ pub mod simplicial;
 
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
-pub use simplicial::{read_facets, read_lex, SimplicialComplex};
+pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
 #[derive(Debug, Error)]
@@ -171,6 +171,18 @@ pub fn default_max_darts(dim: usize) -> u64 {
     let cap = u32::MAX as u64 - 1;
     match available_memory() {
         Some(bytes) => (bytes / bytes_per_dart(dim)).min(cap),
+        None => cap,
+    }
+}
+
+/// The default limit on the faces of a simplicial complex taken straight to its chain
+/// complex (counted with repetition, `2^(d+1) - 1` per d-facet): what fits in the memory
+/// available now at about `40 (dim + 2)` bytes a face (its key, its vertex list, its
+/// boundary entries, the sort), capped at `u32::MAX - 1` (the largest cell index).
+pub fn default_max_faces(dim: usize) -> u64 {
+    let cap = u32::MAX as u64 - 1;
+    match available_memory() {
+        Some(bytes) => (bytes / (40 * (dim as u64 + 2))).min(cap),
         None => cap,
     }
 }
