@@ -180,7 +180,7 @@ fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named<'static>> {
         x
     };
     let ids: Vec<Vec<u64>> =
-        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id).collect()).collect();
+        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
     Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
 }
 
