@@ -98,7 +98,14 @@ fn a_folder_is_its_supported_files_sorted() {
     let names: Vec<&str> = inputs.iter().map(|p| p.file_name().unwrap().to_str().unwrap()).collect();
     assert_eq!(
         names,
-        ["Barnette_sphere.facets", "Barnette_sphere.facets", "cube.gmap", "cube.gmap", "d2n12g6.facets", "d2n12g6.facets"]
+        [
+            "Barnette_sphere.facets",
+            "Barnette_sphere.facets",
+            "cube.gmap",
+            "cube.gmap",
+            "d2n12g6.facets",
+            "d2n12g6.facets"
+        ]
     );
     let rows = v["rows"].as_array().unwrap();
     assert_eq!(rows[2]["groups"], "(Z, 0, 0, 0)");

@@ -67,7 +67,9 @@ fn a_cube_surface_through_moka_keeps_its_homology() {
 #[test]
 fn three_maps_round_trip_unchanged() {
     let dir = tempfile::tempdir().unwrap();
-    for (k, m) in [gmap_ops::build::cube(3).unwrap(), gmap_ops::build::grid(&[2, 1, 1], &[true; 3]).unwrap()].iter().enumerate() {
+    for (k, m) in
+        [gmap_ops::build::cube(3).unwrap(), gmap_ops::build::grid(&[2, 1, 1], &[true; 3]).unwrap()].iter().enumerate()
+    {
         let g = dir.path().join(format!("m{k}.gmap"));
         gmap_core::io::write_gmap(m, &g).unwrap();
         let moka = dir.path().join(format!("m{k}.moka"));
