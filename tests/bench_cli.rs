@@ -148,6 +148,18 @@ fn errors_and_usage() {
     let o = gmap(&["bench", "--json", &lutz("Barnette_sphere.facets"), bad.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
     assert!(o.stdout.is_empty());
+    // in a folder, the unreadable file is a row and the others are run
+    let folder = tempfile::tempdir().unwrap();
+    std::fs::copy(&bad, folder.path().join("bad.facets")).unwrap();
+    std::fs::copy(lutz("Barnette_sphere.facets"), folder.path().join("a.facets")).unwrap();
+    let o = gmap(&["bench", "--json", "--no-gudhi", folder.path().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert_eq!(rows[2]["route"], "read");
+    assert!(rows[2]["error"].as_str().unwrap().starts_with("cannot read: "), "{v}");
+    assert_eq!(rows[2]["betti"], Value::Null);
     let empty = tempfile::tempdir().unwrap();
     let o = gmap(&["bench", empty.path().to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));

@@ -85,8 +85,9 @@ fn progress(msg: &str) {
 }
 
 /// The files named by the inputs: a file as given, a folder as its supported files sorted by
-/// name (not recursive). A missing input or a folder with no supported file is an error.
-fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
+/// name (not recursive), each with whether it was found in a folder. A folder with no
+/// supported file is an error.
+fn expand(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
     let mut files = Vec::new();
     for p in inputs {
         if p.is_dir() {
@@ -99,9 +100,9 @@ fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
                 bail!("{}: the folder holds no supported input ({})", p.display(), INPUT_EXTENSIONS.join(", "));
             }
             found.sort();
-            files.extend(found);
+            files.extend(found.into_iter().map(|f| (f, true)));
         } else {
-            files.push(p.clone());
+            files.push((p.clone(), false));
         }
     }
     Ok(files)
@@ -109,12 +110,26 @@ fn expand(inputs: &[PathBuf]) -> Result<Vec<PathBuf>> {
 
 /// Runs `gmap bench`.
 pub fn run(o: &Options) -> Result<()> {
-    let files = expand(&o.inputs)?;
+    let listed = expand(&o.inputs)?;
     let mut rows = Vec::new();
-    for (k, f) in files.iter().enumerate() {
-        progress(&format!("[{}/{}] {}", k + 1, files.len(), f.display()));
-        rows.extend(bench_one(f, o.max_darts)?);
+    for (k, (f, in_folder)) in listed.iter().enumerate() {
+        progress(&format!("[{}/{}] {}", k + 1, listed.len(), f.display()));
+        match bench_one(f, o.max_darts) {
+            Ok(r) => rows.extend(r),
+            // a file found in a folder that cannot be read is a row; one named is an error
+            Err(e) if *in_folder => rows.push(Row {
+                input: f.display().to_string(),
+                route: "read",
+                cells: Vec::new(),
+                times: Times::default(),
+                result: Err(format!("cannot read: {}", super::error_message(&e))),
+                agree: true,
+                gudhi_ms: None,
+            }),
+            Err(e) => return Err(e),
+        }
     }
+    let files: Vec<PathBuf> = listed.into_iter().map(|(f, _)| f).collect();
     if o.gudhi {
         add_gudhi(&mut rows, &files);
     }
