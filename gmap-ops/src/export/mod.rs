@@ -56,6 +56,16 @@ pub enum ExportError {
         /// the format
         format: &'static str,
     },
+    /// A vertex without a finite point, for a format other than `.off` that needs them.
+    #[error("the vertex of dart {dart} has {what}: {format} needs finite coordinates for every vertex")]
+    VertexPoint {
+        /// the format
+        format: &'static str,
+        /// a dart of that vertex
+        dart: u32,
+        /// `no point` or `a point that is not finite`
+        what: &'static str,
+    },
     /// A map without darts has no simplicial complex to write.
     #[error("the map has no dart: there is no facet to write")]
     Empty,

@@ -81,9 +81,10 @@ pub fn vtk_string(map: &DenseMap) -> Result<String, ExportError> {
     let verts = map.cells(0);
     let mut pts: Vec<Point> = Vec::with_capacity(verts.len());
     for &Dart(r) in &verts.reps {
-        let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
+        let p =
+            map.vertex_point(Dart(r)).ok_or(ExportError::VertexPoint { format: ".vtk", dart: r, what: "no point" })?;
         if !p.iter().all(|c| c.is_finite()) {
-            return Err(ExportError::NonFinitePoint { dart: r });
+            return Err(ExportError::VertexPoint { format: ".vtk", dart: r, what: "a point that is not finite" });
         }
         pts.push(p);
     }
@@ -251,6 +252,14 @@ mod tests {
         let e = vtk_string(&build::cube(3).unwrap()).unwrap_err();
         assert_eq!(e.to_string(), "the map has no points: .vtk needs coordinates for every vertex");
         assert!(matches!(vtk_string(&DenseMap::new(4, 1)), Err(ExportError::DimensionAbove { .. })));
+        let mut half = sq.clone();
+        half.set_point(Dart(0), None);
+        half.set_point(Dart(7), None);
+        half.set_point(Dart(4), Some([f64::NAN, 0.0, 0.0]));
+        assert_eq!(
+            vtk_string(&half).unwrap_err().to_string(),
+            "the vertex of dart 0 has no point: .vtk needs finite coordinates for every vertex"
+        );
         // a 1-map: the square's boundary
         let mut c = DenseMap::new(1, 4);
         for (a, b) in [(0, 1), (2, 3)] {
