@@ -13,6 +13,9 @@ pub enum Loaded {
     Complex(gmap_homology::arch::ArchComplex),
 }
 
+/// The extensions [`load`] reads (the files `gmap bench` takes from a folder).
+pub const INPUT_EXTENSIONS: &[&str] = &["gmap", "moka", "facets", "lex", "off", "json"];
+
 /// The lower-cased extension of a path. A `#` belongs to the file name (`run#3.gmap`) unless
 /// the path names a `.lex` complex, `FILE.lex#name`, and no file has the whole path (see
 /// [`split_lex_name`]): the extension is taken from the real path when it exists.

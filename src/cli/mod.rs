@@ -23,6 +23,7 @@ macro_rules! out {
     }};
 }
 
+mod bench;
 mod convert;
 mod demo;
 mod homology;
@@ -99,6 +100,24 @@ enum Command {
         #[arg(long, value_enum)]
         via: Option<Via>,
     },
+    /// Homology benchmark: one row per input and route, with stage times and the groups.
+    Bench {
+        /// input files, or folders (every supported file in them, sorted)
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        /// print one JSON object
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        /// print CSV: a header line, then one line per row
+        #[arg(long)]
+        csv: bool,
+        /// leave out the GUDHI column (otherwise filled for .facets inputs when python3 has gudhi)
+        #[arg(long)]
+        no_gudhi: bool,
+        /// refuse inputs whose G-map would have more darts than this
+        #[arg(long)]
+        max_darts: Option<u64>,
+    },
     /// Convert between formats, chosen by file extension.
     Convert {
         /// input file
@@ -147,6 +166,14 @@ pub fn run() -> ExitCode {
                 max_darts,
                 via,
             })
+        }
+        Command::Bench { inputs, json, csv, no_gudhi, max_darts } => {
+            let format = match (json, csv) {
+                (true, _) => bench::Format::Json,
+                (_, true) => bench::Format::Csv,
+                _ => bench::Format::Markdown,
+            };
+            bench::run(&bench::Options { inputs, format, max_darts, gudhi: !no_gudhi })
         }
         Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),
     };
