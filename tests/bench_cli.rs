@@ -3,22 +3,12 @@
 //! an unreadable input is exit 1 and bad usage exit 2, and a route that does not apply is a
 //! row that says so.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+use common::{gmap, lutz, stderr};
+use std::path::PathBuf;
+use std::process::Command;
 
 use serde_json::Value;
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
-
-fn lutz(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name).display().to_string()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 const FILES: [&str; 3] = ["Barnette_sphere.facets", "d2n12g6.facets", "B_3_9_18.facets"];
 

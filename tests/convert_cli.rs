@@ -1,21 +1,9 @@
 //! `gmap convert` and `gmap demo` end to end, through the binary.
 
-use std::path::Path;
-use std::process::{Command, Output};
+mod common;
+use common::{gmap, p, stderr};
 
 use gmap_ops::iso;
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
-
-fn p(path: &Path) -> &str {
-    path.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 const TORUS_FACETS: &str = "# Moebius' 7-vertex torus
 1 2 4\n2 3 5\n3 4 6\n4 5 7\n5 6 1\n6 7 2\n7 1 3

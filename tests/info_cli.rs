@@ -1,14 +1,11 @@
 //! `gmap info` end to end (CONTRACT §1): exact JSON on good `.gmap` and `.moka` files, and
 //! for every kind of bad input exit code 1 with one line `error: FILE:LINE: …` on stderr.
 
+mod common;
+use common::gmap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use serde_json::json;
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
     let p = dir.join(name);

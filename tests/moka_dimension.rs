@@ -2,16 +2,9 @@
 //! of lower dimension is written with its dimension recorded in the last mark mask, which
 //! the reader restores. Conversions through `.moka` keep the dimension and the homology.
 
+mod common;
+use common::{gmap, p};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
-
-fn p(path: &Path) -> &str {
-    path.to_str().unwrap()
-}
 
 fn homology_json(file: &Path) -> serde_json::Value {
     let o = gmap(&["homology", p(file), "--json"]);

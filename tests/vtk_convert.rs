@@ -3,20 +3,10 @@
 //! a read-back of the polygons by meshio when python3 has it (its legacy reader has no
 //! polyhedra).
 
+mod common;
+use common::{gmap, p, stderr};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
-
-fn p(path: &Path) -> &str {
-    path.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use std::process::Command;
 
 /// The values after the line that starts with `key` (`CELLS 2 64` gives `[2, 64]`).
 fn header(text: &str, key: &str) -> Vec<String> {
