@@ -69,6 +69,7 @@ pub mod engine;
 
 pub use cellular::{border, incidence, precond, simplicial};
 pub use complex::{arch, dot, ep, json, lar, tm};
+pub use complex::cubical;
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::{cellular_complex, CellularComplex};
