@@ -68,8 +68,8 @@ pub mod complex;
 pub mod engine;
 
 pub use cellular::{border, incidence, precond, simplicial};
-pub use complex::{arch, dot, ep, json, lar, tm};
 pub use complex::cubical;
+pub use complex::{arch, dot, ep, json, lar, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::{cellular_complex, CellularComplex};

@@ -24,6 +24,7 @@ pub struct Options {
     pub simplify: bool,
     pub topological: bool,
     pub max_darts: Option<u64>,
+    pub periodic: bool,
 }
 
 /// When the command started (for the elapsed times of the progress lines).
@@ -143,7 +144,15 @@ pub fn run(o: &Options) -> Result<()> {
     let file = o.file.display().to_string();
     progress(&format!("reading {file}"));
     let loaded = load(&o.file, o.max_darts)?;
+    if o.periodic && !matches!(loaded, Loaded::Cubical(_)) {
+        bail!("{file}: --periodic applies to cubical sets (.cub, .pbm)");
+    }
     let (dim, named) = match loaded {
+        Loaded::Cubical(set) => {
+            progress("building the cubical complex");
+            let (chain, names) = super::cubical::complex(&set, o, &file)?;
+            (set.dim(), Named { chain, names })
+        }
         Loaded::Map(map) => {
             if o.topological {
                 bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");

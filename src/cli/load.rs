@@ -11,6 +11,8 @@ pub enum Loaded {
     Map(DenseMap),
     /// an architectural complex / incidence graph (`.json`, docs/FORMATS.md §2)
     Complex(gmap_homology::arch::ArchComplex),
+    /// a full cubical set (`.cub`, `.pbm`)
+    Cubical(gmap_ops::import::CubicalSet),
 }
 
 /// The lower-cased extension of a path. A `#` belongs to the file name (`run#3.gmap`) unless
@@ -51,6 +53,8 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
         }
         "off" => Ok(Loaded::Map(gmap_ops::import::read_off_with(path, max_darts)?)),
         "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
+        "cub" => Ok(Loaded::Cubical(gmap_ops::import::read_cub(path)?)),
+        "pbm" => Ok(Loaded::Cubical(gmap_ops::import::read_pbm(path)?)),
         other => {
             bail!("{}: unsupported input format '.{}'", path.display(), gmap_core::io::shorten(other.as_bytes(), 40))
         }

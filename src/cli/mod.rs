@@ -24,6 +24,7 @@ macro_rules! out {
 }
 
 mod convert;
+mod cubical;
 mod demo;
 mod homology;
 mod info;
@@ -60,6 +61,9 @@ enum Command {
         /// refuse inputs whose G-map would have more darts than this
         #[arg(long)]
         max_darts: Option<u64>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
+        #[arg(long)]
+        periodic: bool,
     },
     /// Homology over Z, or over Z/P with --field P.
     Homology {
@@ -86,6 +90,9 @@ enum Command {
         /// refuse inputs whose G-map would have more darts than this
         #[arg(long)]
         max_darts: Option<u64>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
+        #[arg(long)]
+        periodic: bool,
     },
     /// Convert between formats, chosen by file extension.
     Convert {
@@ -122,8 +129,8 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Demo => demo::run(),
-        Command::Info { file, json, max_darts } => info::run(&file, json, max_darts),
-        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts } => {
+        Command::Info { file, json, max_darts, periodic } => info::run(&file, json, max_darts, periodic),
+        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts, periodic } => {
             homology::run(&homology::Options {
                 file,
                 method,
@@ -133,6 +140,7 @@ pub fn run() -> ExitCode {
                 simplify,
                 topological,
                 max_darts,
+                periodic,
             })
         }
         Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),

@@ -18,7 +18,7 @@
 //! // a ring of 8 squares around a hole
 //! let bits = [1, 1, 1, 1, 0, 1, 1, 1, 1];
 //! let c = cubical_complex(&[3, 3], &bits, false).unwrap();
-//! assert_eq!(homology_z(&c).unwrap().betti, vec![1, 1, 0]);
+//! assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 1, 0]);
 //! ```
 
 use thiserror::Error;
@@ -47,6 +47,51 @@ pub enum CubicalError {
         /// the estimate
         bytes: u64,
     },
+}
+
+/// A cubical chain complex with the cells its generators stand for.
+#[derive(Clone, Debug)]
+pub struct CubicalComplex {
+    /// the chain complex
+    pub chain: ChainComplex,
+    /// `cells[k][i]`: the doubled-grid point of the i-th k-cell
+    pub cells: Vec<Vec<u64>>,
+    /// points of the doubled grid per axis (`2L + 1`, or `2L` on periodic axes)
+    pub grid: Vec<usize>,
+}
+
+impl CubicalComplex {
+    /// The doubled coordinates of the i-th k-cell (odd along the axes it spans).
+    pub fn coordinates(&self, k: usize, i: usize) -> Vec<usize> {
+        let mut p = self.cells[k][i] as usize;
+        self.grid
+            .iter()
+            .map(|&n| {
+                let c = p % n;
+                p /= n;
+                c
+            })
+            .collect()
+    }
+
+    /// The i-th k-cell as a product of intervals and points of the input's coordinates
+    /// (`min` is the box's minimal vertex): `[0,1]x[2,3]x5`.
+    pub fn cell_name(&self, k: usize, i: usize, min: &[i64]) -> String {
+        let coords = self.coordinates(k, i);
+        let parts: Vec<String> = coords
+            .iter()
+            .enumerate()
+            .map(|(a, &c)| {
+                let lo = min.get(a).copied().unwrap_or(0) + (c / 2) as i64;
+                if c % 2 == 1 {
+                    format!("[{},{}]", lo, lo + 1)
+                } else {
+                    lo.to_string()
+                }
+            })
+            .collect();
+        parts.join("x")
+    }
 }
 
 /// The largest doubled grid (cells of the closed box) accepted.
@@ -95,7 +140,7 @@ impl Grid {
 /// The cubical chain complex of a set of box cubes, after collapses of free faces. `shape` is
 /// the box's number of cubes per axis, `bits` one byte a cube (non-zero: in the set), axis 0
 /// fastest. With `periodic` the box's opposite faces are identified (a d-torus of cubes).
-pub fn cubical_complex(shape: &[usize], bits: &[u8], periodic: bool) -> Result<ChainComplex, CubicalError> {
+pub fn cubical_complex(shape: &[usize], bits: &[u8], periodic: bool) -> Result<CubicalComplex, CubicalError> {
     cubical_complex_with(shape, bits, periodic, true)
 }
 
@@ -106,7 +151,7 @@ pub fn cubical_complex_with(
     bits: &[u8],
     periodic: bool,
     collapse: bool,
-) -> Result<ChainComplex, CubicalError> {
+) -> Result<CubicalComplex, CubicalError> {
     let d = shape.len();
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));
@@ -228,18 +273,21 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
 }
 
 /// Numbers the present cells per dimension in grid order and builds the boundaries.
-fn build(g: &Grid, state: &[u8]) -> Result<ChainComplex, CubicalError> {
+fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
     let d = g.n.len();
     let mut idx: Vec<u32> = Vec::new();
-    idx.try_reserve_exact(g.len).map_err(|_| CubicalError::OutOfMemory { what: "the cell numbers", bytes: 4 * g.len as u64 })?;
+    idx.try_reserve_exact(g.len)
+        .map_err(|_| CubicalError::OutOfMemory { what: "the cell numbers", bytes: 4 * g.len as u64 })?;
     idx.resize(g.len, u32::MAX);
     let mut counts = vec![0usize; d + 1];
     let mut coord = vec![0usize; d];
     let mut odd = 0usize;
+    let mut cells: Vec<Vec<u64>> = vec![Vec::new(); d + 1];
     for (p, slot) in idx.iter_mut().enumerate() {
         if state[p] & PRESENT != 0 {
             *slot = counts[odd] as u32;
             counts[odd] += 1;
+            cells[odd].push(p as u64);
         }
         for a in 0..d {
             coord[a] += 1;
@@ -307,7 +355,9 @@ fn build(g: &Grid, state: &[u8]) -> Result<ChainComplex, CubicalError> {
         .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
         boundaries.push(m);
     }
-    ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| CubicalError::BadShape(format!("internal: {e}")))
+    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries)
+        .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
+    Ok(CubicalComplex { chain, cells, grid: g.n.clone() })
 }
 
 #[cfg(test)]
@@ -316,9 +366,9 @@ mod tests {
     use crate::homology_z;
 
     fn betti(shape: &[usize], bits: &[u8], periodic: bool) -> Vec<usize> {
-        let a = cubical_complex_with(shape, bits, periodic, false).unwrap();
+        let a = cubical_complex_with(shape, bits, periodic, false).unwrap().chain;
         a.check_dd().unwrap();
-        let b = cubical_complex(shape, bits, periodic).unwrap();
+        let b = cubical_complex(shape, bits, periodic).unwrap().chain;
         b.check_dd().unwrap();
         let (ha, hb) = (homology_z(&a).unwrap(), homology_z(&b).unwrap());
         assert_eq!(ha, hb);

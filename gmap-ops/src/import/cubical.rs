@@ -188,9 +188,10 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         let inner = &t[1..t.len() - 1];
         let before = coords.len();
         for tok in inner.split(|&b| b == b',' || b.is_ascii_whitespace()).filter(|s| !s.is_empty()) {
-            let v = std::str::from_utf8(tok).ok().and_then(|s| s.parse::<i64>().ok()).ok_or_else(|| {
-                syntax(line, format!("'{}' is not an integer coordinate", shorten(tok, 80)))
-            })?;
+            let v = std::str::from_utf8(tok)
+                .ok()
+                .and_then(|s| s.parse::<i64>().ok())
+                .ok_or_else(|| syntax(line, format!("'{}' is not an integer coordinate", shorten(tok, 80))))?;
             if v.unsigned_abs() > 1 << 40 {
                 return Err(syntax(line, format!("coordinate {v} out of range (at most 2^40 in absolute value)")));
             }
@@ -211,7 +212,7 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         }
     }
     if dim == 0 {
-        return Err(ImportError::Empty);
+        return Err(ImportError::Format("no cube found".into()));
     }
     let mut lo = vec![i64::MAX; dim];
     let mut hi = vec![i64::MIN; dim];
@@ -283,7 +284,8 @@ pub fn parse_pbm(bytes: &[u8]) -> Result<CubicalSet, ImportError> {
     let [w, h] = header;
     let volume = box_volume(&[w, h])? as usize;
     let mut bits = Vec::new();
-    bits.try_reserve_exact(volume).map_err(|_| ImportError::OutOfMemory { what: "the bitmap".into(), bytes: volume as u64 })?;
+    bits.try_reserve_exact(volume)
+        .map_err(|_| ImportError::OutOfMemory { what: "the bitmap".into(), bytes: volume as u64 })?;
     bits.resize(volume, 0u8);
     if binary {
         // exactly one whitespace byte after the height
@@ -354,7 +356,7 @@ mod tests {
         assert!(matches!(parse_cub(b"(0,x)\n"), Err(ImportError::Syntax { line: 1, .. })));
         assert!(matches!(parse_cub(b"0,1\n"), Err(ImportError::Syntax { line: 1, .. })));
         assert!(matches!(parse_cub(b"()\n"), Err(ImportError::Syntax { line: 1, .. })));
-        assert!(matches!(parse_cub(b"; nothing\n"), Err(ImportError::Empty)));
+        assert!(matches!(parse_cub(b"; nothing\n"), Err(ImportError::Format(_))));
         assert!(matches!(parse_cub(b"(0,0,0)\n(2000,2000,2000)\n"), Err(ImportError::Format(_))));
     }
 
