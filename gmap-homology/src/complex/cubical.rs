@@ -21,6 +21,8 @@
 //! assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 1, 0]);
 //! ```
 
+#![allow(clippy::needless_range_loop)] // axes index several arrays at once
+
 use thiserror::Error;
 
 use crate::{ChainComplex, SparseMatrix};
@@ -239,7 +241,7 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
         let mut count = 0;
         for (a, c) in coord.iter_mut().enumerate() {
             *c = g.coord(p, a);
-            if *c % 2 == 0 {
+            if c.is_multiple_of(2) {
                 for q in g.cofaces(p, a, *c).into_iter().flatten() {
                     if state[q] & PRESENT != 0 {
                         count += 1;
@@ -301,7 +303,7 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
                 break;
             }
             // wrapped from n_a - 1 to 0: that coordinate was odd iff n_a is even
-            if g.n[a] % 2 == 0 {
+            if g.n[a].is_multiple_of(2) {
                 odd -= 1;
             }
             coord[a] = 0;
@@ -319,11 +321,11 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
             continue;
         }
         entries.clear();
-        let mut j = 0;
+        let mut j = 0usize;
         for a in 0..d {
             let c = g.coord(p, a);
             if c % 2 == 1 {
-                let sign = if j % 2 == 0 { 1 } else { -1 };
+                let sign = if j.is_multiple_of(2) { 1 } else { -1 };
                 j += 1;
                 let (lo, up) = g.faces(p, a, c);
                 if lo != up {

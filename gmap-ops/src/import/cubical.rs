@@ -12,6 +12,8 @@
 //! assert_eq!((s.dim(), s.shape(), s.cube_count()), (2, &[2usize, 2][..], 2));
 //! ```
 
+#![allow(clippy::needless_range_loop)] // axes index several arrays at once
+
 use std::path::Path;
 
 use gmap_core::io::shorten;
