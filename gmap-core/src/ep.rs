@@ -99,25 +99,37 @@ pub struct AbExpansion {
     pub delta: Vec<i64>,
 }
 
-fn mul(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_mul(b).ok_or(EpError::Overflow)
-}
+/// Checked arithmetic of the Euler–Poincaré computations: an overflow is
+/// [`EpError::Overflow`], never a wrapped value.
+pub mod checked {
+    use super::EpError;
 
-fn add(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_add(b).ok_or(EpError::Overflow)
-}
+    /// `a * b`.
+    pub fn mul(a: i64, b: i64) -> Result<i64, EpError> {
+        a.checked_mul(b).ok_or(EpError::Overflow)
+    }
 
-fn sub(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_sub(b).ok_or(EpError::Overflow)
-}
+    /// `a + b`.
+    pub fn add(a: i64, b: i64) -> Result<i64, EpError> {
+        a.checked_add(b).ok_or(EpError::Overflow)
+    }
 
-fn sign(i: usize) -> i64 {
-    if i.is_multiple_of(2) {
-        1
-    } else {
-        -1
+    /// `a - b`.
+    pub fn sub(a: i64, b: i64) -> Result<i64, EpError> {
+        a.checked_sub(b).ok_or(EpError::Overflow)
+    }
+
+    /// `(-1)^i`.
+    pub fn sign(i: usize) -> i64 {
+        if i.is_multiple_of(2) {
+            1
+        } else {
+            -1
+        }
     }
 }
+
+use checked::{add, mul, sign, sub};
 
 impl EpVector {
     /// The zero vector of dimension `n` (`n + 1` coordinates on each side).

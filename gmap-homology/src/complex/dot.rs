@@ -1,11 +1,11 @@
-//! The incidence graph for Graphviz (`.dot`, CONTRACT §2): one node per region (cell)
+//! The incidence graph for Graphviz (`.dot`, docs/FORMATS.md §2): one node per region (cell)
 //! labelled with its dimension, one edge per defined entry, from the higher region to the
 //! lower one, labelled with its weight (the signed incidence number).
 //!
 //! ```
-//! use gmap_homology::arch::{ArchComplex, Region};
+//! use gmap_homology::arch::ArchComplex;
 //! use gmap_homology::dot::write_dot;
-//! let x = ArchComplex::try_new(1, vec![Region { id: 0, dim: 0 }, Region { id: 1, dim: 1 }], vec![(1, 0, 0)]).unwrap();
+//! let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 1)], &[(1, 0, 0)]).unwrap();
 //! let d = write_dot(&x);
 //! assert!(d.contains("r0 [label=\"0\"];"));
 //! assert!(d.contains("r1 -> r0 [label=\"0\"];"));

@@ -26,26 +26,7 @@ use std::fmt;
 
 pub use gmap_core::ep::{AbExpansion, Coordinates, EpError, EpVector, KlExpansion};
 
-fn mul(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_mul(b).ok_or(EpError::Overflow)
-}
-
-fn add(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_add(b).ok_or(EpError::Overflow)
-}
-
-fn sub(a: i64, b: i64) -> Result<i64, EpError> {
-    a.checked_sub(b).ok_or(EpError::Overflow)
-}
-
-/// `(-1)^i`.
-fn sign(i: usize) -> i64 {
-    if i.is_multiple_of(2) {
-        1
-    } else {
-        -1
-    }
-}
+use gmap_core::ep::checked::{add, mul, sign, sub};
 
 /// The polynomial view of a vector (AC (9)): `X_i ↦ X^i`, `Y_j ↦ X^{n+1+j}`.
 pub trait EpPolynomial: Sized {

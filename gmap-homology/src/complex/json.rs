@@ -32,7 +32,7 @@ use serde::Deserialize;
 use serde_json::Value;
 use thiserror::Error;
 
-use crate::complex::arch::{ArchComplex, ArchError, Region};
+use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]
@@ -134,13 +134,13 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
     let mut regions = Vec::with_capacity(raw.regions.len());
     for (index, r) in raw.regions.iter().enumerate() {
         let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
-        regions.push(Region { id: r.id, dim });
+        regions.push(Region { id: RegionId(r.id), dim });
     }
     let dim = match raw.dimension {
         Some(d) => check_dim(d, || "dimension".to_string())?,
         None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
     };
-    let entries = raw.incidence.iter().map(|e| (e.from, e.to, e.weight)).collect();
+    let entries = raw.incidence.iter().map(|e| (RegionId(e.from), RegionId(e.to), e.weight)).collect();
     Ok(ArchComplex::try_new(dim, regions, entries)?)
 }
 
@@ -161,7 +161,7 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
         let at = At { list: "regions", index };
         let id = get_u64(r, at, "id")?;
         let dim = check_dim(get_u64(r, at, "dim")?, || at.path("dim"))?;
-        regions.push(Region { id, dim });
+        regions.push(Region { id: RegionId(id), dim });
     }
     let dim = match obj.get("dimension") {
         Some(v) => {
@@ -176,7 +176,7 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
     let mut entries = Vec::with_capacity(inc.len());
     for (index, e) in inc.iter().enumerate() {
         let at = At { list: "incidence", index };
-        entries.push((get_u64(e, at, "from")?, get_u64(e, at, "to")?, get_i64(e, at, "weight")?));
+        entries.push((RegionId(get_u64(e, at, "from")?), RegionId(get_u64(e, at, "to")?), get_i64(e, at, "weight")?));
     }
     Ok(ArchComplex::try_new(dim, regions, entries)?)
 }

@@ -224,7 +224,7 @@ impl TmModel {
     /// smallest split of a cancelling adherence, as on a seam). Entries across a dimension
     /// gap are not incidences of TM and are dropped.
     pub fn from_arch(x: &ArchComplex) -> TmModel {
-        let cells = x.regions().iter().map(|r| (r.id, r.dim)).collect();
+        let cells = x.regions().iter().map(|r| (r.id.0, r.dim)).collect();
         let inc: Vec<(usize, usize, u64, u64)> = x
             .entries()
             .iter()

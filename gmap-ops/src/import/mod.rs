@@ -182,7 +182,7 @@ pub fn default_max_darts(dim: usize) -> u64 {
 
 /// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
 pub(crate) fn available_memory() -> Option<u64> {
-    std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
+    std::fs::read_to_string(std::path::Path::new("/proc").join("meminfo")).ok().and_then(|s| {
         s.lines()
             .find(|l| l.starts_with("MemAvailable:"))
             .and_then(|l| l.split_whitespace().nth(1))

@@ -4,7 +4,7 @@
 use gmap_core::{CellDefect, DenseMap};
 use thiserror::Error;
 
-use super::{ArchComplex, ArchError, Region};
+use super::{ArchComplex, ArchError, Region, RegionId};
 use crate::cellular::incidence::incidence_terms;
 use crate::cellular::precond::{oriented_cells, OrientedCells};
 
@@ -109,13 +109,17 @@ impl ArchComplex {
         }
         let mut regions = Vec::with_capacity(offset[n + 1] as usize);
         for (k, &c) in counts.iter().enumerate() {
-            regions.extend((0..c as u64).map(|j| Region { id: offset[k] + j, dim: k }));
+            regions.extend((0..c as u64).map(|j| Region { id: RegionId(offset[k] + j), dim: k }));
         }
         let mut entries = Vec::new();
         for (k, list) in all_cell_incidences(map)?.into_iter().enumerate() {
             let i = k + 1;
             for ci in list {
-                entries.push((offset[i] + ci.upper as u64, offset[i - 1] + ci.lower as u64, ci.signed()));
+                entries.push((
+                    RegionId(offset[i] + ci.upper as u64),
+                    RegionId(offset[i - 1] + ci.lower as u64),
+                    ci.signed(),
+                ));
             }
         }
         Ok(ArchComplex::try_new(n, regions, entries)?)

@@ -25,9 +25,9 @@
 //! [`ArchComplex::topological`].
 //!
 //! ```
-//! use gmap_homology::arch::{ArchComplex, Region};
+//! use gmap_homology::arch::{ArchComplex, Region, RegionId};
 //! // The left graph of AC Figure 2 / Table 1: a = Q - P, b = R - Q, c a loop at Q.
-//! let (p, q, r, a, b, c) = (0, 1, 2, 3, 4, 5);
+//! let [p, q, r, a, b, c] = [0, 1, 2, 3, 4, 5].map(RegionId);
 //! let regions = [(p, 0), (q, 0), (r, 0), (a, 1), (b, 1), (c, 1)].map(|(id, dim)| Region { id, dim });
 //! let entries = vec![(a, p, -1), (a, q, 1), (b, q, -1), (b, r, 1), (c, q, 0)];
 //! let x = ArchComplex::try_new(1, regions.to_vec(), entries).unwrap();
@@ -47,5 +47,5 @@ mod topological;
 mod topology;
 
 pub use from_map::{all_cell_incidences, cell_incidences, CellIncidence, FromMapError};
-pub use model::{ArchComplex, ArchError, Entry, Region};
+pub use model::{ArchComplex, ArchError, Entry, Region, RegionId};
 pub use topological::{AppliedOperator, Step, Topological, ZeroWeightRule};

@@ -9,11 +9,29 @@ use crate::engine::chain::ChainComplex;
 use crate::engine::homology::{homology_z, homology_zp, Homology, HomologyError};
 use crate::engine::sparse::SparseMatrix;
 
+/// The user's name of a region: the id given in the input file (or chosen by the
+/// producer), unique in its complex. Distinct from a region's *index*, its position in
+/// [`ArchComplex::regions`], which the methods taking `usize` expect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct RegionId(pub u64);
+
+impl std::fmt::Display for RegionId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl From<u64> for RegionId {
+    fn from(id: u64) -> Self {
+        RegionId(id)
+    }
+}
+
 /// A region: a user id and a dimension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Region {
     /// the id, unique in the complex
-    pub id: u64,
+    pub id: RegionId,
     /// the dimension
     pub dim: usize,
 }
@@ -32,17 +50,20 @@ pub struct Entry {
 /// Why data is not an architectural complex (AC Def. 3.1). Regions are named by id.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum ArchError {
+    /// A new region is needed but every `u64` id above the largest one is taken.
+    #[error("no region id is left above the largest id in use ({max})", max = u64::MAX)]
+    IdsExhausted,
     /// Two regions share an id.
     #[error("duplicate region id {id}")]
     DuplicateRegion {
         /// the id
-        id: u64,
+        id: RegionId,
     },
     /// A region's dimension exceeds the complex's.
     #[error("region {id} has dimension {dim}, above the complex's dimension {max}")]
     RegionDimension {
         /// the region
-        id: u64,
+        id: RegionId,
         /// its dimension
         dim: usize,
         /// the complex's dimension
@@ -52,25 +73,25 @@ pub enum ArchError {
     #[error("incidence entry {from} -> {to} names the unknown region {missing}")]
     UnknownRegion {
         /// `from` of the entry
-        from: u64,
+        from: RegionId,
         /// `to` of the entry
-        to: u64,
+        to: RegionId,
         /// the id not found
-        missing: u64,
+        missing: RegionId,
     },
     /// The same pair appears twice.
     #[error("duplicate incidence entry {from} -> {to}")]
     DuplicateEntry {
         /// `from`
-        from: u64,
+        from: RegionId,
         /// `to`
-        to: u64,
+        to: RegionId,
     },
     /// The incidence graph has a directed cycle (listed in order, first id repeated last).
     #[error("the incidence graph has a cycle: {}", join(cycle))]
     Cycle {
         /// the regions of the cycle
-        cycle: Vec<u64>,
+        cycle: Vec<RegionId>,
     },
     /// An entry does not go from a higher to a strictly lower dimension.
     #[error(
@@ -78,9 +99,9 @@ pub enum ArchError {
     )]
     DimensionNotDecreasing {
         /// `from`
-        from: u64,
+        from: RegionId,
         /// `to`
-        to: u64,
+        to: RegionId,
         /// dimension of `from`
         from_dim: usize,
         /// dimension of `to`
@@ -90,9 +111,9 @@ pub enum ArchError {
     #[error("incidence entry {from} -> {to} crosses from dimension {from_dim} to {to_dim} with weight {weight}: an entry across a gap must be 0")]
     WeightAcrossGap {
         /// `from`
-        from: u64,
+        from: RegionId,
         /// `to`
-        to: u64,
+        to: RegionId,
         /// dimension of `from`
         from_dim: usize,
         /// dimension of `to`
@@ -104,9 +125,9 @@ pub enum ArchError {
     #[error("the boundary of the boundary of region {from} is {value} at region {to}, not 0: the partial boundary matrix does not square to zero (AC Def. 3.1)")]
     SquareNotZero {
         /// the upper region
-        from: u64,
+        from: RegionId,
         /// the region two steps down
-        to: u64,
+        to: RegionId,
         /// the value of the entry of δ²
         value: i128,
     },
@@ -114,11 +135,11 @@ pub enum ArchError {
     #[error("integer overflow while checking δ² at region {from}")]
     Overflow {
         /// the upper region
-        from: u64,
+        from: RegionId,
     },
 }
 
-fn join(ids: &[u64]) -> String {
+fn join(ids: &[RegionId]) -> String {
     ids.iter().map(|i| i.to_string()).collect::<Vec<_>>().join(" -> ")
 }
 
@@ -127,7 +148,7 @@ fn join(ids: &[u64]) -> String {
 pub struct ArchComplex {
     pub(super) dim: usize,
     pub(super) regions: Vec<Region>,
-    pub(super) by_id: HashMap<u64, usize>,
+    pub(super) by_id: HashMap<RegionId, usize>,
     /// entries sorted by (from, to)
     pub(super) entries: Vec<Entry>,
     /// entries of region r are `entries[down_off[r]..down_off[r + 1]]`
@@ -146,7 +167,13 @@ impl ArchComplex {
     /// `(from id, to id, weight)`. Checks, in this order: duplicate ids, region dimensions,
     /// unknown ids, duplicate entries, cycles, decreasing dimension, zero weight across a
     /// gap, `δ² = 0`. Returns the first violation. See the module docs for complexity.
-    pub fn try_new(dim: usize, regions: Vec<Region>, entries: Vec<(u64, u64, i64)>) -> Result<Self, ArchError> {
+    pub fn try_new<I: Into<RegionId> + Copy>(
+        dim: usize,
+        regions: Vec<Region>,
+        entries: Vec<(I, I, i64)>,
+    ) -> Result<Self, ArchError> {
+        let entries: Vec<(RegionId, RegionId, i64)> =
+            entries.into_iter().map(|(f, t, w)| (f.into(), t.into(), w)).collect();
         let mut by_id = HashMap::with_capacity(regions.len());
         for (k, r) in regions.iter().enumerate() {
             if by_id.insert(r.id, k).is_some() {
@@ -175,7 +202,7 @@ impl ArchComplex {
         Ok(x)
     }
 
-    fn assemble(dim: usize, regions: Vec<Region>, by_id: HashMap<u64, usize>, entries: Vec<Entry>) -> Self {
+    fn assemble(dim: usize, regions: Vec<Region>, by_id: HashMap<RegionId, usize>, entries: Vec<Entry>) -> Self {
         let nr = regions.len();
         let mut down_off = vec![0usize; nr + 1];
         for e in &entries {
@@ -233,7 +260,7 @@ impl ArchComplex {
             pos.insert(cur, path.len() - 1);
             let pred = self.up_of(cur).map(|e| e.from).find(|&f| indeg[f] > 0).expect("a leftover predecessor");
             if let Some(&p) = pos.get(&pred) {
-                let mut cyc: Vec<u64> = path[p..].iter().rev().map(|&r| self.regions[r].id).collect();
+                let mut cyc: Vec<RegionId> = path[p..].iter().rev().map(|&r| self.regions[r].id).collect();
                 // start at the smallest id, for a stable message
                 let m = (0..cyc.len()).min_by_key(|&k| cyc[k]).unwrap_or(0);
                 cyc.rotate_left(m);
@@ -296,6 +323,14 @@ impl ArchComplex {
         Ok(())
     }
 
+    /// [`ArchComplex::try_new`] from plain numbers: regions as `(id, dim)`, entries as
+    /// `(from id, to id, weight)`.
+    pub fn try_from_ids(dim: usize, regions: &[(u64, usize)], entries: &[(u64, u64, i64)]) -> Result<Self, ArchError> {
+        let regions = regions.iter().map(|&(id, dim)| Region { id: RegionId(id), dim }).collect();
+        let entries = entries.iter().map(|&(f, t, w)| (RegionId(f), RegionId(t), w)).collect();
+        ArchComplex::try_new(dim, regions, entries)
+    }
+
     /// The dimension n of the complex (regions have dimensions `0..=n`).
     pub fn dim(&self) -> usize {
         self.dim
@@ -312,7 +347,7 @@ impl ArchComplex {
     }
 
     /// The index of the region with this id. O(1).
-    pub fn index_of(&self, id: u64) -> Option<usize> {
+    pub fn index_of(&self, id: RegionId) -> Option<usize> {
         self.by_id.get(&id).copied()
     }
 
@@ -408,7 +443,7 @@ impl ArchComplex {
     }
 
     /// The entries as `(from id, to id, weight)`.
-    pub fn entry_ids(&self) -> Vec<(u64, u64, i64)> {
+    pub fn entry_ids(&self) -> Vec<(RegionId, RegionId, i64)> {
         self.entries.iter().map(|e| (self.regions[e.from].id, self.regions[e.to].id, e.weight)).collect()
     }
 
@@ -426,23 +461,23 @@ impl ArchComplex {
 mod tests {
     use super::*;
 
-    fn reg(v: &[(u64, usize)]) -> Vec<Region> {
-        v.iter().map(|&(id, dim)| Region { id, dim }).collect()
+    fn ids(v: &[u64]) -> Vec<RegionId> {
+        v.iter().copied().map(RegionId).collect()
     }
 
     #[test]
     fn cycle_is_named() {
-        let e = ArchComplex::try_new(1, reg(&[(1, 1), (2, 1)]), vec![(1, 2, 0), (2, 1, 0)]).unwrap_err();
-        assert_eq!(e, ArchError::Cycle { cycle: vec![1, 2, 1] });
-        let e = ArchComplex::try_new(1, reg(&[(7, 1)]), vec![(7, 7, 0)]).unwrap_err();
-        assert_eq!(e, ArchError::Cycle { cycle: vec![7, 7] });
+        let e = ArchComplex::try_from_ids(1, &[(1, 1), (2, 1)], &[(1, 2, 0), (2, 1, 0)]).unwrap_err();
+        assert_eq!(e, ArchError::Cycle { cycle: ids(&[1, 2, 1]) });
+        let e = ArchComplex::try_from_ids(1, &[(7, 1)], &[(7, 7, 0)]).unwrap_err();
+        assert_eq!(e, ArchError::Cycle { cycle: ids(&[7, 7]) });
     }
 
     #[test]
     fn square_not_zero_is_named() {
         // a disc whose boundary edge has two distinct ends: δ² = ±1 at both vertices
-        let e = ArchComplex::try_new(2, reg(&[(0, 0), (1, 0), (2, 1), (3, 2)]), vec![(2, 0, -1), (2, 1, 1), (3, 2, 1)])
+        let e = ArchComplex::try_from_ids(2, &[(0, 0), (1, 0), (2, 1), (3, 2)], &[(2, 0, -1), (2, 1, 1), (3, 2, 1)])
             .unwrap_err();
-        assert_eq!(e, ArchError::SquareNotZero { from: 3, to: 0, value: -1 });
+        assert_eq!(e, ArchError::SquareNotZero { from: RegionId(3), to: RegionId(0), value: -1 });
     }
 }

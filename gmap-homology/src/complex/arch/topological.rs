@@ -5,7 +5,7 @@ use std::fmt;
 
 use gmap_core::union_find::UnionFind;
 
-use super::{ArchComplex, ArchError, Region};
+use super::{ArchComplex, ArchError, Region, RegionId};
 use crate::complex::ep::EpVector;
 
 /// How Algorithm 8.16 treats a region of dimension i > 0 with an empty boundary whose only
@@ -43,9 +43,9 @@ pub struct AppliedOperator {
     /// the step
     pub step: Step,
     /// the region it was applied to (id)
-    pub region: u64,
+    pub region: RegionId,
     /// the regions it created (ids)
-    pub created: Vec<u64>,
+    pub created: Vec<RegionId>,
     /// the operator `(ΔX; ΔY)`
     pub vector: EpVector,
 }
@@ -79,16 +79,18 @@ impl Topological {
 struct Growing {
     dim: usize,
     regions: Vec<Region>,
-    entries: Vec<(u64, u64, i64)>,
-    next_id: u64,
+    entries: Vec<(RegionId, RegionId, i64)>,
+    /// the next fresh id; `None` once `u64::MAX` is taken
+    next_id: Option<u64>,
 }
 
 impl Growing {
-    fn fresh(&mut self, dim: usize) -> u64 {
-        let id = self.next_id;
-        self.next_id += 1;
-        self.regions.push(Region { id, dim });
-        id
+    /// A new region with an id above every existing one; refused when the ids run out.
+    fn fresh(&mut self, dim: usize) -> Result<RegionId, ArchError> {
+        let id = self.next_id.ok_or(ArchError::IdsExhausted)?;
+        self.next_id = id.checked_add(1);
+        self.regions.push(Region { id: RegionId(id), dim });
+        Ok(RegionId(id))
     }
 }
 
@@ -115,7 +117,7 @@ impl ArchComplex {
             dim: n,
             regions: self.regions.clone(),
             entries: self.entry_ids(),
-            next_id: self.regions.iter().map(|r| r.id).max().map_or(0, |m| m + 1),
+            next_id: self.regions.iter().map(|r| r.id.0).max().map_or(Some(0), |m| m.checked_add(1)),
         };
         let mut ops = Vec::new();
         // step 1: regions with empty boundary
@@ -127,14 +129,14 @@ impl ArchComplex {
             let mut hit = self.up_of(r).filter(|e| self.regions[e.from].dim == i + 1).peekable();
             let all_zero = hit.peek().is_some() && hit.all(|e| e.weight == 0);
             if rule == ZeroWeightRule::Seam && all_zero {
-                let v = g.fresh(0);
+                let v = g.fresh(0)?;
                 let created = if i > 1 {
-                    let s = g.fresh(i - 1);
+                    let s = g.fresh(i - 1)?;
                     g.entries.push((reg.id, s, 1));
                     g.entries.push((s, v, 0));
                     vec![s, v]
                 } else {
-                    let w = g.fresh(0);
+                    let w = g.fresh(0)?;
                     g.entries.push((reg.id, v, -1));
                     g.entries.push((reg.id, w, 1));
                     vec![v, w]
@@ -146,7 +148,7 @@ impl ArchComplex {
                     .expect("small");
                 ops.push(AppliedOperator { step: Step::CompleteSeam, region: reg.id, created, vector });
             } else {
-                let v = g.fresh(0);
+                let v = g.fresh(0)?;
                 g.entries.push((reg.id, v, 0));
                 let vec = EpVector::b(n, 0);
                 ops.push(AppliedOperator { step: Step::BaseVertex, region: reg.id, created: vec![v], vector: vec });
@@ -155,7 +157,7 @@ impl ArchComplex {
         let mut cur = ArchComplex::try_new(g.dim, g.regions.clone(), g.entries.clone())?;
         // step 2: disconnected boundaries, dimension by dimension
         for i in 2..=n {
-            let targets: Vec<u64> = cur.per_dim[i].iter().map(|&r| cur.regions[r as usize].id).collect();
+            let targets: Vec<RegionId> = cur.per_dim[i].iter().map(|&r| cur.regions[r as usize].id).collect();
             for bid in targets {
                 let b = cur.index_of(bid).expect("region kept");
                 let comps = cur.components_of(&cur.boundary_regions(b));
@@ -168,7 +170,7 @@ impl ArchComplex {
                 let mut added = Vec::new();
                 for comp in &comps[1..] {
                     let Some(v1) = vertex_of(comp) else { continue };
-                    let e = g.fresh(1);
+                    let e = g.fresh(1)?;
                     let (a, c) = (cur.regions[v0].id, cur.regions[v1].id);
                     g.entries.push((e, a, -1));
                     g.entries.push((e, c, 1));
