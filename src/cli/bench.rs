@@ -185,6 +185,20 @@ fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
             let (cells, r) = reduce(&s, &mut times);
             rows.push(row("simplicial", cells, times, r));
         }
+        Loaded::Cubical(set) => {
+            // the cubical complex of the closure, after collapses of free faces
+            let mut times = Times { read, ..Times::default() };
+            let t = Instant::now();
+            let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
+            times.border = Some(ms(t));
+            match c {
+                Ok(c) => {
+                    let (cells, r) = reduce(&c.chain, &mut times);
+                    rows.push(row("cubical", cells, times, r));
+                }
+                Err(e) => rows.push(row("cubical", Vec::new(), times, Err(e.to_string()))),
+            }
+        }
         Loaded::Complex(x) => {
             let mut times = Times { read, ..Times::default() };
             let t = Instant::now();

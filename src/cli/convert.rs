@@ -29,6 +29,9 @@ pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),
         Loaded::Complex(x) => write_complex(&x, output, max_darts),
+        Loaded::Cubical(_) => {
+            anyhow::bail!("{}: a cubical set cannot be converted; use gmap homology", input.display())
+        }
     }
 }
 

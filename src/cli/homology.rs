@@ -29,6 +29,8 @@ pub struct Options {
     pub max_darts: Option<u64>,
     /// the route of a simplicial complex (`None`: direct unless the options need the G-map)
     pub via: Option<Via>,
+    /// `--periodic`: a cubical set's box is a torus
+    pub periodic: bool,
 }
 
 /// When the command started (for the elapsed times of the progress lines).
@@ -52,6 +54,9 @@ enum CellName {
     Dart { dart: u32, point: Option<[f64; 3]>, simplex: Option<Vec<u32>> },
     /// a region of an architectural complex by its id
     Region(u64),
+    /// an elementary cube of a cubical set: its minimal vertex and its extent (0 or 1) per
+    /// axis
+    Cube { min: Vec<i64>, extent: Vec<u8> },
 }
 
 impl CellName {
@@ -69,6 +74,7 @@ impl CellName {
                 v
             }
             CellName::Region(id) => json!({ "region": id }),
+            CellName::Cube { min, extent } => json!({ "cube": min, "extent": extent }),
         }
     }
 
@@ -88,6 +94,12 @@ impl CellName {
                 t
             }
             CellName::Region(id) => format!("region {id}"),
+            CellName::Cube { min, extent } => min
+                .iter()
+                .zip(extent)
+                .map(|(&lo, &e)| if e == 1 { format!("[{},{}]", lo, lo + 1) } else { lo.to_string() })
+                .collect::<Vec<_>>()
+                .join("x"),
         }
     }
 }
@@ -257,6 +269,9 @@ pub fn run(o: &Options) -> Result<()> {
     }
     progress(&format!("reading {file}"));
     // the complex itself: for the direct route, and to name the G-map's cells by labels
+    if o.periodic && !matches!(super::load::extension(&o.file).as_str(), "cub" | "pbm") {
+        bail!("{file}: --periodic applies to cubical sets (.cub, .pbm)");
+    }
     let sc = if route == Some(Via::Direct) || (route == Some(Via::Gmap) && o.generators) {
         super::load::load_simplicial(&o.file)?
     } else {
@@ -266,6 +281,15 @@ pub fn run(o: &Options) -> Result<()> {
         direct(sc.as_ref().expect("a simplicial input"), o, &file)?
     } else {
         match load(&o.file, o.max_darts)? {
+            Loaded::Cubical(set) => {
+                progress("building the cubical complex");
+                let (chain, names) = super::cubical::complex(&set, o, &file)?;
+                let name = Box::new(move |k: usize, j: u32| {
+                    let (min, extent) = names[k][j as usize].clone();
+                    CellName::Cube { min, extent }
+                });
+                (set.dim(), Named { chain, name })
+            }
             Loaded::Map(map) => {
                 if o.topological {
                     bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");

@@ -77,7 +77,7 @@ pub fn map_info(map: &DenseMap) -> MapInfo {
 }
 
 /// Runs `gmap info`.
-pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
+pub fn run(file: &Path, json: bool, max_darts: Option<u64>, periodic: bool) -> Result<()> {
     let progress = Progress::new(file);
     progress.step("reading");
     let loaded = match load(file, max_darts) {
@@ -88,6 +88,9 @@ pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
         },
     };
     progress.step("computing");
+    if periodic && !matches!(loaded, Loaded::Cubical(_)) {
+        anyhow::bail!("{}: --periodic applies to cubical sets (.cub, .pbm)", file.display());
+    }
     match loaded {
         Loaded::Map(map) => {
             let info = map_info(&map);
@@ -107,6 +110,7 @@ pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
                 print_lines(&complex_lines(file, &info))?;
             }
         }
+        Loaded::Cubical(set) => super::cubical::run(file, &set, json, periodic)?,
     }
     Ok(())
 }

@@ -25,6 +25,7 @@ macro_rules! out {
 
 mod bench;
 mod convert;
+mod cubical;
 mod demo;
 mod homology;
 mod info;
@@ -70,6 +71,9 @@ enum Command {
         /// refuse inputs whose G-map would have more darts than this
         #[arg(long)]
         max_darts: Option<u64>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
+        #[arg(long)]
+        periodic: bool,
     },
     /// Homology over Z, or over Z/P with --field P.
     Homology {
@@ -99,6 +103,9 @@ enum Command {
         /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
         #[arg(long, value_enum)]
         via: Option<Via>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
+        #[arg(long)]
+        periodic: bool,
     },
     /// Homology benchmark: one row per input and route, with stage times and the groups.
     Bench {
@@ -153,20 +160,30 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Demo => demo::run(),
-        Command::Info { file, json, max_darts } => info::run(&file, json, max_darts),
-        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts, via } => {
-            homology::run(&homology::Options {
-                file,
-                method,
-                field,
-                json,
-                generators,
-                simplify,
-                topological,
-                max_darts,
-                via,
-            })
-        }
+        Command::Info { file, json, max_darts, periodic } => info::run(&file, json, max_darts, periodic),
+        Command::Homology {
+            file,
+            method,
+            field,
+            json,
+            generators,
+            simplify,
+            topological,
+            max_darts,
+            via,
+            periodic,
+        } => homology::run(&homology::Options {
+            file,
+            method,
+            field,
+            json,
+            generators,
+            simplify,
+            topological,
+            max_darts,
+            via,
+            periodic,
+        }),
         Command::Bench { inputs, json, csv, no_gudhi, max_darts } => {
             let format = match (json, csv) {
                 (true, _) => bench::Format::Json,

@@ -12,10 +12,12 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
+pub mod cubical;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
 
+pub use cubical::{read_cub, read_pbm, CubicalSet};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
@@ -113,6 +115,9 @@ pub enum ImportError {
     /// A `.lex` file without a complex of the requested name.
     #[error("no complex named '{0}' in the file")]
     NoSuchName(String),
+    /// A file that does not fit its format as a whole (a `.pbm` header, a bounding box too big).
+    #[error("{0}")]
+    Format(String),
 }
 
 /// An [`ImportError`] with the file it came from. Displays as `FILE: message`.
