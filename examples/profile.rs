@@ -11,7 +11,8 @@ struct Instant(u64);
 
 impl Instant {
     fn now() -> Self {
-        let s = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap_or_default();
+        let s = std::fs::read_to_string(std::path::Path::new("/proc").join("thread-self").join("schedstat"))
+            .unwrap_or_default();
         Instant(s.split_whitespace().next().and_then(|x| x.parse().ok()).unwrap_or(0))
     }
     fn elapsed(&self) -> Duration {

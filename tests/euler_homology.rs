@@ -72,7 +72,7 @@ fn closing_a_disc_makes_a_sphere() {
     let (c1, b1) = config(&g);
     assert_eq!((c1.clone(), b1.clone()), (vec![6, 6, 2], vec![1, 0, 1]));
     let v = EpVector::between(&c0, &b0, &c1, &b1);
-    assert_eq!(v.dx, rep.dx);
+    assert_eq!(v.dx(), rep.dx.as_slice());
     assert_eq!(v.basis_name(), "B2"); // make a face and a 2-hole
 }
 

@@ -3,7 +3,7 @@
 //! stratified model gives the same Euler characteristic. EO Example 2 step by step.
 
 use gmap_core::GMap;
-use gmap_ops::euler::strata::{example_2, incomplete_cells, StratifiedObject};
+use gmap_ops::euler::strata::{example_2, incomplete_cells, EoArgs, StratifiedObject};
 
 #[test]
 fn detach_and_reattach_a_vertex() {
@@ -26,14 +26,29 @@ fn detach_and_reattach_a_vertex() {
     // EO Theorem 1 with ball strata: v - e - e∞ = 2 - 1 - 2
     let chi = m.euler_characteristic();
     assert_eq!(chi, -1);
+    // the same object by EO's operators: two vertices joined by an edge, and an open edge
+    // at each of them
     let mut o = StratifiedObject::new();
-    let (_, _) = o.try_attach("me∞E∞", 1, &[], false, None, &[]).unwrap();
-    let (_, _) = o.try_attach("mv", 0, &[], true, Some(0), &[]).unwrap();
-    let (_, _) = o.try_attach("me", 1, &[], true, Some(0), &[]).unwrap();
-    let (_, _) = o.try_attach("mv", 0, &[], true, Some(0), &[]).unwrap();
-    let (_, s) = o.try_attach("me∞", 1, &[], false, Some(0), &[]).unwrap();
+    let run = |o: &mut StratifiedObject, name: &str, a: EoArgs| o.apply_named(name, &a).unwrap();
+    let v1 = run(&mut o, "mvC", EoArgs::new()).new[0];
+    let v2 = run(&mut o, "mvC", EoArgs::new()).new[0];
+    let (c1, c2) = (o.strata[v1].component, o.strata[v2].component);
+    run(&mut o, "mekC", EoArgs::new().c(c1).c2(c2).on(&[v1, v2]));
+    let ea = run(&mut o, "me∞E∞", EoArgs::new().on(&[v1])).new[0];
+    let s = run(&mut o, "me∞E∞", EoArgs::new().on(&[v2]));
+    let eb = s.new[0];
     assert_eq!((s.complete, s.incomplete), (vec![2, 1], vec![0, 2]));
     assert_eq!(o.euler_by_strata(), chi);
+    // compact it: a new vertex v3 closes both open ends (kE∞C joins v3's component,
+    // kE∞mCh closes the loop)
+    let v3 = run(&mut o, "mvC", EoArgs::new()).new[0];
+    run(&mut o, "ke∞me", EoArgs::new().s(ea).on(&[v3]));
+    run(&mut o, "ke∞me", EoArgs::new().s(eb).on(&[v3]));
+    let (ca, cb, c3) = (o.strata[ea].component, o.strata[eb].component, o.strata[v3].component);
+    run(&mut o, "kE∞C", EoArgs::new().c(ca).c2(c1).c3(c3));
+    let s = run(&mut o, "kE∞mCh", EoArgs::new().c(cb).c2(c1));
+    assert_eq!((s.complete, s.incomplete, s.euler), (vec![3, 3], vec![0, 0], 0));
+    assert_eq!((s.counts.big_c, s.counts.big_ch), (1, 1));
     // compact: a new vertex closes both open ends again
     let a = g.create_dart();
     let b = g.create_dart();

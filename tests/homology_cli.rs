@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use gmap_core::DenseMap;
+use gmap_core::{Dart, DenseMap};
 use gmap_homology::{cellular_complex, homology_z, homology_zp, simplicial_complex, Homology, PreconditionError};
 use gmap_ops::build;
 
@@ -57,7 +57,7 @@ fn volume_bounded_by_a_torus_is_refused() {
     }
     let m = DenseMap::try_from_flat(3, flat).unwrap();
     match cellular_complex(&m) {
-        Err(PreconditionError::C2 { dim: 3, dart: 0, .. }) => {}
+        Err(PreconditionError::C2 { dim: 3, dart: Dart(0), .. }) => {}
         other => panic!("expected C2 on the 3-cell of dart 0, got {other:?}"),
     }
     // the simplicial counterpart is the cone over the torus: contractible
@@ -227,10 +227,289 @@ fn cli_generators() {
     assert_eq!(v["torsion"], serde_json::json!([[], [2], []]));
     let g = v["generators"].as_array().unwrap();
     assert_eq!(g.len(), 2);
-    assert_eq!(g[0]["dimension"], 0);
-    assert_eq!(g[1]["dimension"], 1);
+    assert_eq!(g[0]["dim"], 0);
+    assert_eq!(g[1]["dim"], 1);
     assert_eq!(g[1]["order"], 2);
-    assert!(!g[1]["chain"].as_array().unwrap().is_empty());
+    // cells are simplices named by their labels from the file, by both routes
+    for via in ["direct", "gmap"] {
+        let (code, out, _) = gmap(&["homology", p.to_str().unwrap(), "--json", "--generators", "--via", via]);
+        assert_eq!(code, 0, "{via}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let g = v["generators"].as_array().unwrap();
+        assert_eq!(g[0]["chain"].as_array().unwrap().len(), 1);
+        let cell = &g[0]["chain"][0]["cell"];
+        assert!(cell.as_array().is_some_and(|c| c.len() == 1), "{via}: {cell}");
+        let chain = g[1]["chain"].as_array().unwrap();
+        assert!(!chain.is_empty());
+        // a cycle: every vertex of its edges is met by coefficients summing to zero
+        let mut at = std::collections::BTreeMap::<u64, i64>::new();
+        for t in chain {
+            let e: Vec<u64> = t["cell"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect();
+            assert!(e.len() == 2 && e[0] < e[1] && (1..=6).contains(&e[0]) && e[1] <= 6, "{via}: {t}");
+            let c = t["coefficient"].as_i64().unwrap();
+            *at.entry(e[1]).or_default() += c;
+            *at.entry(e[0]).or_default() -= c;
+        }
+        assert!(at.values().all(|&x| x == 0), "{via}: {chain:?}");
+    }
+    // a G-map's cells by dart
+    let q = dir.path().join("rp2.gmap");
+    let (code, _, _) = gmap(&["convert", p.to_str().unwrap(), q.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    let (code, out, _) = gmap(&["homology", q.to_str().unwrap(), "--json", "--generators"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let t = &v["generators"][1];
+    assert_eq!((t["dim"].as_u64(), t["order"].as_u64()), (Some(1), Some(2)));
+    assert!(t["chain"][0]["cell"]["dart"].is_u64(), "{t}");
+    let (code, out, _) = gmap(&["homology", q.to_str().unwrap(), "--generators"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("generator of H_1 (Z/2): ") && out.contains(" dart "), "{out}");
+    // a map with points: the cell's dart and its point
+    let off = dir.path().join("tet.off");
+    std::fs::write(&off, "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n").unwrap();
+    let (code, out, _) = gmap(&["homology", off.to_str().unwrap(), "--json", "--generators"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let cell = &v["generators"][0]["chain"][0]["cell"];
+    assert!(cell["dart"].is_u64() && cell["point"].as_array().is_some_and(|p| p.len() == 3), "{cell}");
+    // the simplicial counterpart: a dart and the dimensions of the cells spanning the simplex
+    let (code, out, _) = gmap(&["homology", p.to_str().unwrap(), "--json", "--generators", "--method", "simplicial"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let cell = &v["generators"][1]["chain"][0]["cell"];
+    assert_eq!(cell["simplex"].as_array().map(Vec::len), Some(2), "{cell}");
+    assert_eq!(v["route"], "gmap");
+}
+
+/// The groups of a Lutz file's header (`homology H_*=(Z,Z_5^3,0,Z)`), `None` for `(?)`.
+fn header_groups(path: &Path) -> Option<(Vec<usize>, Vec<Vec<u64>>)> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let line = text.lines().take(3).find(|l| l.contains("H_*="))?;
+    let groups = line.split("H_*=").nth(1)?.split(';').next()?;
+    parse_groups(groups)
+}
+
+/// `gmap homology FILE --json` (the direct route) on every file of the library, mixed
+/// dimensions and non-pseudo-manifolds included, gives the groups of its header.
+#[test]
+fn every_lutz_file_by_the_direct_route() {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(lutz_dir())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "facets"))
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 44);
+    for f in &files {
+        let name = f.file_name().unwrap().to_string_lossy().into_owned();
+        let (code, out, err) = gmap(&["homology", f.to_str().unwrap(), "--json"]);
+        assert_eq!(code, 0, "{name}: {err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["route"], "direct", "{name}");
+        let betti: Vec<usize> = serde_json::from_value(v["betti"].clone()).unwrap();
+        let mut torsion: Vec<Vec<u64>> = serde_json::from_value(v["torsion"].clone()).unwrap();
+        match (name.as_str(), header_groups(f)) {
+            // two tetrahedra on a triangle, and a triangle's boundary on their vertex 5
+            ("scTest.facets", None) => {
+                assert_eq!((betti, torsion), (vec![1, 1, 0, 0], vec![vec![]; 4]));
+            }
+            // the header gives Betti numbers mod 2; over Z it is the Wu manifold
+            ("SU2_SO3.facets", Some((b2, _))) => {
+                assert_eq!(
+                    (betti, torsion),
+                    (vec![1, 0, 0, 0, 0, 1], vec![vec![], vec![], vec![2], vec![], vec![], vec![]])
+                );
+                let (code, out, _) = gmap(&["homology", f.to_str().unwrap(), "--json", "--field", "2"]);
+                assert_eq!(code, 0);
+                let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+                assert_eq!(v["betti"], serde_json::json!(b2));
+            }
+            (_, Some((b, mut t))) => {
+                for x in torsion.iter_mut().chain(t.iter_mut()) {
+                    x.sort_unstable();
+                }
+                assert_eq!((betti, torsion), (b, t), "{name}");
+            }
+            (_, None) => panic!("{name}: no homology in the header"),
+        }
+    }
+}
+
+/// Facets of a mod-k Moore space: a disk (an annulus of two rings of 3k vertices and a fan
+/// around a centre) whose boundary ring wraps the triangle 0 1 2 k times.
+fn moore_space(k: u64) -> String {
+    let n = 3 * k;
+    let b = |i: u64| i % 3;
+    let c = |i: u64| 3 + (i % n);
+    let z = 3 + n;
+    let mut out = String::new();
+    for i in 0..n {
+        out += &format!("{} {} {}\n", b(i), b(i + 1), c(i));
+        out += &format!("{} {} {}\n", b(i + 1), c(i), c(i + 1));
+        out += &format!("{} {} {}\n", c(i), c(i + 1), z);
+    }
+    out
+}
+
+#[test]
+fn torsion_in_non_manifolds() {
+    let dir = tempfile::tempdir().unwrap();
+    for k in [3u64, 12] {
+        let p = dir.path().join(format!("moore{k}.facets"));
+        std::fs::write(&p, moore_space(k)).unwrap();
+        let p = p.to_str().unwrap();
+        let (code, out, err) = gmap(&["homology", p, "--json"]);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["betti"], serde_json::json!([1, 0, 0]), "k = {k}");
+        assert_eq!(v["torsion"], serde_json::json!([[], [k], []]), "k = {k}");
+        // over Z/3 the torsion of Z/3 and Z/12 gives one dimension in H_1 and one in H_2
+        let (code, out, _) = gmap(&["homology", p, "--json", "--field", "3"]);
+        assert_eq!(code, 0);
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["betti"], serde_json::json!([1, 1, 1]), "k = {k}");
+        // a torsion generator: a cycle of edges along the triangle, order k
+        let (code, out, _) = gmap(&["homology", p, "--json", "--generators"]);
+        assert_eq!(code, 0);
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let t = v["generators"].as_array().unwrap().iter().find(|g| g["order"] == k).unwrap().clone();
+        assert_eq!(t["dim"], 1);
+        // the edges that wrap it are not pseudo-manifold ridges: the G-map route refuses
+        let (code, _, err) = gmap(&["homology", p, "--via", "gmap"]);
+        assert_eq!(code, 1);
+        assert!(err.contains("lies in") && err.contains("facets"), "{err}");
+    }
+    let dunce = lutz_dir().join("dunce_hat.facets");
+    let (code, out, _) = gmap(&["homology", dunce.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert!(out.contains("H_0 = Z\nH_1 = 0\nH_2 = 0\n"), "{out}");
+    // mixed dimensions, an isolated vertex, a book of three triangles, over Z/2 too
+    let p = dir.path().join("mixed.facets");
+    std::fs::write(&p, "1 2 3\n1 2 4\n1 2 5\n5 6\n6 7\n7 5\n9\n").unwrap();
+    let (code, out, _) = gmap(&["homology", p.to_str().unwrap(), "--json", "--field", "2"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["betti"], serde_json::json!([2, 1, 0]));
+    assert_eq!(v["coefficients"], "Z/2");
+    // a repeated vertex is refused, naming the line
+    std::fs::write(&p, "1 2 3\n4 4 5\n").unwrap();
+    let (code, _, err) = gmap(&["homology", p.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.starts_with("error: ") && err.contains("line 2") && err.contains("repeats vertex 4"), "{err}");
+    // too many faces: refused before enumerating, naming the estimate
+    std::fs::write(&p, "1 2 3 4 5 6 7 8 9 10\n").unwrap();
+    let (code, _, err) = gmap(&["homology", p.to_str().unwrap(), "--max-darts", "1000"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("1023 faces") && err.contains("--max-darts"), "{err}");
+}
+
+/// The direct route and the G-map route agree on every pseudo-manifold of the library
+/// (within the dart range), over Z and Z/2.
+fn direct_equals_gmap(lo: u64, hi: u64) -> usize {
+    let mut checked = 0;
+    for (file, darts, _, _) in lutz_cases() {
+        if darts < lo || darts > hi {
+            continue;
+        }
+        let path = lutz_dir().join(&file);
+        let sc = gmap_ops::import::read_facets_complex(&path).unwrap();
+        let direct = gmap_homology::simplices::face_complex(&sc.all_facets(), u64::MAX).unwrap().chain;
+        let map = gmap_ops::import::read_facets(&path, None).unwrap();
+        let cell = cellular_complex(&map).unwrap().chain;
+        assert_eq!(homology_z(&direct).unwrap(), homology_z(&cell).unwrap(), "{file}");
+        assert_eq!(homology_zp(&direct, 2).unwrap(), homology_zp(&cell, 2).unwrap(), "{file}");
+        checked += 1;
+    }
+    checked
+}
+
+#[test]
+fn direct_route_equals_gmap_route_on_lutz() {
+    assert_eq!(direct_equals_gmap(0, 100_000), 30);
+}
+
+#[test]
+#[ignore = "large inputs (up to 10^6 darts): run with --ignored in release mode"]
+fn direct_route_equals_gmap_route_on_lutz_large() {
+    assert_eq!(direct_equals_gmap(100_001, 1_000_000), 7);
+}
+
+/// Random pure pseudo-manifolds: facets drawn at random on few vertices, kept while no
+/// ridge lies in three of them, and only where every face's star is connected through
+/// ridges (so that the G-map glues exactly what the labels glue). Both routes agree.
+fn random_pseudo_manifold(dim: usize, verts: u64, draws: &[Vec<u64>]) -> Vec<Vec<u64>> {
+    use std::collections::{BTreeMap, BTreeSet};
+    let mut facets: Vec<Vec<u64>> = Vec::new();
+    let mut ridges: BTreeMap<Vec<u64>, usize> = BTreeMap::new();
+    let mut seen = BTreeSet::new();
+    for d in draws {
+        let mut f: Vec<u64> = d.iter().map(|x| x % verts).collect();
+        f.sort_unstable();
+        f.dedup();
+        if f.len() != dim + 1 || !seen.insert(f.clone()) {
+            continue;
+        }
+        let rs: Vec<Vec<u64>> = (0..=dim).map(|i| [&f[..i], &f[i + 1..]].concat()).collect();
+        if rs.iter().any(|r| ridges.get(r).copied().unwrap_or(0) >= 2) {
+            continue;
+        }
+        for r in rs {
+            *ridges.entry(r).or_default() += 1;
+        }
+        facets.push(f);
+    }
+    facets
+}
+
+/// Whether the facets containing each face are connected through ridges containing it.
+fn stars_connected(facets: &[Vec<u64>]) -> bool {
+    use std::collections::BTreeSet;
+    let mut faces = BTreeSet::new();
+    for f in facets {
+        for mask in 1u32..(1 << f.len()) {
+            faces.insert((0..f.len()).filter(|i| mask & (1 << i) != 0).map(|i| f[i]).collect::<Vec<u64>>());
+        }
+    }
+    faces.iter().all(|s| {
+        let star: Vec<&Vec<u64>> = facets.iter().filter(|f| s.iter().all(|v| f.contains(v))).collect();
+        let mut reached = vec![false; star.len()];
+        let mut stack = vec![0];
+        reached[0] = true;
+        while let Some(a) = stack.pop() {
+            for b in 0..star.len() {
+                let shared = star[a].iter().filter(|v| star[b].contains(v)).count();
+                if !reached[b] && shared + 1 == star[a].len() {
+                    reached[b] = true;
+                    stack.push(b);
+                }
+            }
+        }
+        reached.iter().all(|&r| r)
+    })
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+    #[test]
+    fn direct_route_equals_gmap_route_on_random_pseudo_manifolds(
+        dim in 1usize..4,
+        verts in 4u64..9,
+        draws in proptest::collection::vec(proptest::collection::vec(0u64..64, 4), 1..40),
+    ) {
+        let draws: Vec<Vec<u64>> = draws.into_iter().map(|d| d[..dim + 1].to_vec()).collect();
+        let facets = random_pseudo_manifold(dim, verts, &draws);
+        proptest::prop_assume!(!facets.is_empty() && stars_connected(&facets));
+        let direct = gmap_homology::simplices::face_complex(&facets, u64::MAX).unwrap().chain;
+        let sc = gmap_ops::import::SimplicialComplex::from_facets(facets.clone()).unwrap();
+        let map = sc.to_gmap(1 << 20).unwrap();
+        let by_map = simplicial_complex(&map);
+        proptest::prop_assert_eq!(homology_z(&direct).unwrap(), homology_z(&by_map).unwrap(), "{:?}", facets);
+        proptest::prop_assert_eq!(homology_zp(&direct, 2).unwrap(), homology_zp(&by_map, 2).unwrap());
+        if let Ok(c) = cellular_complex(&map) {
+            proptest::prop_assert_eq!(homology_z(&direct).unwrap(), homology_z(&c.chain).unwrap());
+        }
+    }
 }
 
 #[test]

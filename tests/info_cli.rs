@@ -1,14 +1,11 @@
 //! `gmap info` end to end (CONTRACT §1): exact JSON on good `.gmap` and `.moka` files, and
 //! for every kind of bad input exit code 1 with one line `error: FILE:LINE: …` on stderr.
 
+mod common;
+use common::gmap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use serde_json::json;
-
-fn gmap(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().expect("run gmap")
-}
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
     let p = dir.join(name);
@@ -195,4 +192,43 @@ fn missing_file_and_dart_limit() {
 fn bad_usage_exits_2() {
     assert_eq!(gmap(&["info"]).status.code(), Some(2));
     assert_eq!(gmap(&["info", "x.gmap", "--no-such-flag"]).status.code(), Some(2));
+}
+
+/// A simplicial complex without a G-map (a ridge in three facets, mixed dimensions): `info`
+/// prints its simplices, components and Euler characteristic, with `"gmap": null` and why.
+#[test]
+fn simplicial_complex_without_a_gmap() {
+    let dir = tempfile::tempdir().unwrap();
+    // a book of three triangles, a dangling edge, an isolated vertex
+    let p = write(dir.path(), "book.facets", b"1 2 3\n1 2 4\n1 2 5\n5 6\n9\n");
+    let v = info_json(&p);
+    assert_eq!(v["dimension"], 2);
+    assert_eq!(v["cells"], json!([7, 8, 3]));
+    assert_eq!(v["components"], 2);
+    assert_eq!(v["euler_characteristic"], 2);
+    assert_eq!(v["darts"], 0);
+    assert_eq!(v["valid"], true);
+    assert!(v["gmap"].is_null() && v.as_object().unwrap().contains_key("gmap"));
+    let why = v["why"].as_str().unwrap();
+    assert!(why.contains("ridge [1, 2] lies in 3 facets"), "{why}");
+    let o = gmap(&["info", p.to_str().unwrap()]);
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("simplices (0..n)      7 8 3") && text.contains("gmap  ") && text.contains("lies in 3"),
+        "{text}"
+    );
+    // mixed dimensions only
+    let p = write(dir.path(), "mixed.facets", b"1 2 3\n3 4\n");
+    let v = info_json(&p);
+    assert_eq!((v["cells"].clone(), v["components"].clone()), (json!([4, 4, 1]), json!(1)));
+    assert!(v["why"].as_str().unwrap().contains("mixed dimensions"), "{v}");
+    // the Lutz dunce hat, and a complex over the dart limit that is not pure
+    let lutz = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz");
+    let v = info_json(&lutz.join("dunce_hat.facets"));
+    assert_eq!((v["cells"].clone(), v["euler_characteristic"].clone()), (json!([8, 24, 17]), json!(1)));
+    let v = info_json(&lutz.join("contractible_vertex-homogeneous.facets"));
+    assert_eq!(v["dimension"], 11);
+    assert_eq!(v["euler_characteristic"], 1);
+    assert!(v["gmap"].is_null() && v["why"].as_str().unwrap().contains("mixed dimensions"), "{v}");
 }

@@ -16,6 +16,7 @@ use thiserror::Error;
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::dense::{Dart, DenseMap, Point};
 use crate::marks::{MarkId, Marks};
+use crate::view::MapView;
 
 new_key_type! {
     /// A stable handle to a dart of a [`GMap`].
@@ -299,24 +300,10 @@ impl GMap {
         }
     }
 
-    /// The orbit `<set>(d)` in breadth-first order from `d`. O(orbit size).
+    /// The orbit `<set>(d)` in breadth-first order from `d` ([`MapView::orbit`]).
+    /// O(orbit size).
     pub fn orbit(&self, d: DartId, set: AlphaSet) -> Vec<DartId> {
-        let idx: SmallVec<[usize; 8]> = set.iter().filter(|&i| i <= self.dim).collect();
-        let mut seen: HashMap<DartId, ()> = HashMap::default();
-        let mut out = vec![d];
-        seen.insert(d, ());
-        let mut k = 0;
-        while k < out.len() {
-            let x = out[k];
-            k += 1;
-            for &i in &idx {
-                let y = self.alpha(x, i);
-                if seen.insert(y, ()).is_none() {
-                    out.push(y);
-                }
-            }
-        }
-        out
+        <Self as MapView>::orbit(self, d, set)
     }
 
     /// The darts of the i-cell of `d` (BO Def. 2).

@@ -70,6 +70,7 @@ mod cells3;
 pub mod compacted;
 pub mod dense;
 pub mod edit;
+pub mod ep;
 pub mod error;
 pub mod examples;
 pub mod io;

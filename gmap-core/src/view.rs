@@ -173,10 +173,6 @@ impl MapView for GMap {
     fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
         f(&self.to_dense().0)
     }
-
-    fn orbit(&self, d: DartId, set: AlphaSet) -> Vec<DartId> {
-        GMap::orbit(self, d, set)
-    }
 }
 
 #[cfg(test)]

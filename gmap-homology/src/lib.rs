@@ -9,20 +9,41 @@
 //! refuses otherwise, naming the cell. The simplicial counterpart (BO §6: one n-simplex per
 //! dart) is always right and serves as the oracle.
 //!
-//! ## Model
+//! ## Two halves
 //!
-//! * [`SparseMatrix`]: CSC integer matrices with validated invariants.
-//! * [`ChainComplex`]: cell counts per dimension and `∂_k : C_k → C_{k-1}`, `∂∂ = 0` checked.
-//! * [`homology_z`] / [`homology_zp`]: [`Homology`] (Betti numbers and torsion invariant
-//!   factors) in three stages: a fill-free pass of collapses and coreductions over the whole
-//!   complex, making a cell critical where it gets stuck (`morse`, private: on manifolds and
-//!   cube grids it leaves as many cells as the Betti numbers, in time linear in the
-//!   entries); unit-pivot elimination of what is left (`reduce`, private too);
-//!   Smith normal form of the non-unit remainder. Checked `i64`, big-integer fall-back.
-//! * [`border::cellular_complex`]: the border operator of a map, after checking C1/C2 on two
-//!   threads; `∂_1`, `∂_n` and `∂_2` of 3-maps by local formulas, the rest by orbit walks.
-//! * [`generators::generators`]: a representative cycle per summand, found on the reduced
-//!   complex and lifted back through the eliminated pairs.
+//! The crate has an **engine** that computes and a **front** that builds what it computes
+//! on; dependencies run from the front to the engine, never back.
+//!
+//! * [`engine`]: homology of any chain complex, knowing nothing of where its cells came from.
+//!   - [`sparse`]: [`SparseMatrix`], CSC integer matrices with validated invariants.
+//!   - [`chain`]: [`ChainComplex`], cell counts per dimension and `∂_k : C_k → C_{k-1}`,
+//!     `∂∂ = 0` checked.
+//!   - [`homology`]: [`homology_z`] / [`homology_zp`] give [`Homology`] (Betti numbers and
+//!     torsion invariant factors) in three stages: a fill-free pass of collapses and
+//!     coreductions over the whole complex, making a cell critical where it gets stuck
+//!     (`morse`, private: on manifolds and cube grids it leaves as many cells as the Betti
+//!     numbers, in time linear in the entries); unit-pivot elimination of what is left
+//!     (`reduce`, private); Smith normal form of the non-unit remainder (`snf`, private).
+//!     Checked `i64` (`ring`, private), big-integer fall-back.
+//!   - [`generators`]: a representative cycle per summand, found on the reduced complex and
+//!     lifted back through the eliminated pairs.
+//! * [`cellular`]: the chain complexes of a G-map.
+//!   - [`incidence`]: incidence numbers pair by pair, [`Incidence`] (BO Def. 5, 9).
+//!   - [`precond`]: the conditions C1 and C2, checked cell by cell, and the oriented cells.
+//!   - [`border`]: [`cellular_complex`], the border operator of a map (BO Def. 10) after
+//!     the C1/C2 checks, dimensions shared out over the threads `gmap_core::parallel` allows.
+//!   - [`simplicial`]: [`simplicial_complex`], the simplicial counterpart (BO §6), the oracle.
+//! * [`complex`]: complexes given by their incidences rather than by a map, and formats.
+//!   - [`arch`]: architectural complexes (AC §3), their topology, the complex of a G-map and
+//!     Algorithm 8.16.
+//!   - [`ep`]: Euler–Poincaré operators and their polynomial view (AC §4–7).
+//!   - [`lar`]: LAR's characteristic matrices and the count rule.
+//!   - [`tm`]: TM's boundary/coboundary model and its edit checks.
+//!   - [`simplices`]: any finite simplicial complex by its facets, every face a cell.
+//!   - [`json`]: the `.json` incidence-graph format; [`dot`]: Graphviz output.
+//!
+//! Every module stays reachable at the crate root (`gmap_homology::sparse`,
+//! `gmap_homology::arch`, …).
 //!
 //! ## Example
 //!
@@ -43,24 +64,13 @@
 
 #![warn(missing_docs)]
 
-pub mod arch;
-pub mod border;
-pub mod chain;
-pub mod dot;
-pub mod ep;
-pub mod generators;
-pub mod homology;
-pub mod incidence;
-pub mod json;
-pub mod lar;
-mod morse;
-pub mod precond;
-pub(crate) mod reduce;
-pub(crate) mod ring;
-pub mod simplicial;
-pub(crate) mod snf;
-pub mod sparse;
-pub mod tm;
+pub mod cellular;
+pub mod complex;
+pub mod engine;
+
+pub use cellular::{border, incidence, precond, simplicial};
+pub use complex::{arch, cubical, dot, ep, json, lar, simplices, tm};
+pub use engine::{chain, generators, homology, sparse};
 
 pub use border::{cellular_complex, CellularComplex};
 pub use chain::{ChainComplex, ChainError};

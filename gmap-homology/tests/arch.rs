@@ -2,13 +2,13 @@
 //! and the reader's refusals.
 
 use gmap_core::examples;
-use gmap_homology::arch::{ArchComplex, ArchError, Region, Step, ZeroWeightRule};
+use gmap_homology::arch::{ArchComplex, ArchError, Region, RegionId, Step, ZeroWeightRule};
 use gmap_homology::dot::write_dot;
 use gmap_homology::ep::EpVector;
 use gmap_homology::json::{read_json, write_json, JsonError};
 
 fn regions(v: &[(u64, usize)]) -> Vec<Region> {
-    v.iter().map(|&(id, dim)| Region { id, dim }).collect()
+    v.iter().map(|&(id, dim)| Region { id: RegionId(id), dim }).collect()
 }
 
 fn betti(x: &ArchComplex) -> Vec<usize> {
@@ -42,7 +42,7 @@ fn table_1_two_graphs_one_chain_complex() {
         x.entries()
             .iter()
             .filter(|e| e.weight == 0)
-            .map(|e| (x.region(e.from).id, x.region(e.to).id))
+            .map(|e| (x.region(e.from).id.0, x.region(e.to).id.0))
             .collect::<Vec<_>>()
     };
     assert_eq!(zeros(&delta), vec![(5, 1)]);
@@ -50,12 +50,12 @@ fn table_1_two_graphs_one_chain_complex() {
     // 5 defined entries of 9: the other zeros are dropped
     assert_eq!(delta.entries().len(), 5);
     // the topology tells the graphs apart: c's closure holds Q in δ, and R in δ'
-    let ids = |x: &ArchComplex, v: Vec<usize>| v.iter().map(|&r| x.region(r).id).collect::<Vec<_>>();
-    assert_eq!(ids(&delta, delta.closure(delta.index_of(5).unwrap())), vec![1, 5]);
-    assert_eq!(ids(&delta2, delta2.closure(delta2.index_of(5).unwrap())), vec![2, 5]);
+    let ids = |x: &ArchComplex, v: Vec<usize>| v.iter().map(|&r| x.region(r).id.0).collect::<Vec<_>>();
+    assert_eq!(ids(&delta, delta.closure(delta.index_of(RegionId(5)).unwrap())), vec![1, 5]);
+    assert_eq!(ids(&delta2, delta2.closure(delta2.index_of(RegionId(5)).unwrap())), vec![2, 5]);
     // and so does the star of Q: in δ it holds the three edges, in δ' two
-    assert_eq!(ids(&delta, delta.star(delta.index_of(1).unwrap())), vec![1, 3, 4, 5]);
-    assert_eq!(ids(&delta2, delta2.star(delta2.index_of(1).unwrap())), vec![1, 3, 4]);
+    assert_eq!(ids(&delta, delta.star(delta.index_of(RegionId(1)).unwrap())), vec![1, 3, 4, 5]);
+    assert_eq!(ids(&delta2, delta2.star(delta2.index_of(RegionId(1)).unwrap())), vec![1, 3, 4]);
 }
 
 /// AC Figure 4 as described in Example 3.4 / 3.13.
@@ -63,7 +63,7 @@ fn table_1_two_graphs_one_chain_complex() {
 /// B: two vertices, two lines with zero boundary, a surface bounded by both lines.
 /// C: two lines without boundary and a surface bounded by both.
 fn figure_4() -> (ArchComplex, ArchComplex, ArchComplex) {
-    let a = ArchComplex::try_new(1, regions(&[(0, 1)]), vec![]).unwrap();
+    let a = ArchComplex::try_new(1, regions(&[(0, 1)]), Vec::<(u64, u64, i64)>::new()).unwrap();
     let b = ArchComplex::try_new(
         2,
         regions(&[(0, 0), (1, 0), (2, 1), (3, 1), (4, 2)]),
@@ -90,7 +90,7 @@ fn example_3_13_betti_numbers() {
 #[test]
 fn stars_closures_and_t0() {
     let (_, b, _) = figure_4();
-    let idx = |id| b.index_of(id).unwrap();
+    let idx = |id: u64| b.index_of(RegionId(id)).unwrap();
     assert_eq!(b.star(idx(0)), vec![idx(0), idx(2), idx(4)]);
     assert_eq!(b.closure(idx(4)), vec![0, 1, 2, 3, 4]);
     assert!(b.is_open(&b.star(idx(1))));
@@ -166,7 +166,7 @@ fn algorithm_8_16_operators_are_exact() {
             if rule == ZeroWeightRule::Closed {
                 // only the connecting step lowers a Betti number (b_0, joining parts)
                 for o in &t.operators {
-                    let lowered: Vec<usize> = (0..o.vector.y().len()).filter(|&j| o.vector.y()[j] < 0).collect();
+                    let lowered: Vec<usize> = (0..o.vector.dy().len()).filter(|&j| o.vector.dy()[j] < 0).collect();
                     match o.step {
                         Step::ConnectBoundary => assert!(lowered.is_empty() || lowered == vec![0]),
                         _ => assert!(lowered.is_empty()),
@@ -217,7 +217,7 @@ fn floor_plan() -> ArchComplex {
 fn example_8_22_floor_plan() {
     let x = floor_plan();
     assert_eq!(x.region_counts(), vec![8, 12, 1]);
-    let a = x.index_of(100).unwrap();
+    let a = x.index_of(RegionId(100)).unwrap();
     assert_eq!(x.components_of(&x.boundary_regions(a)).len(), 3);
     let t = x.topological(ZeroWeightRule::Closed).unwrap();
     // two connecting edges, each joining two parts
@@ -226,7 +226,7 @@ fn example_8_22_floor_plan() {
     assert_eq!(betti(&x)[0], 3);
     assert_eq!(betti(&t.complex)[0], 1);
     let y = &t.complex;
-    assert_eq!(y.components_of(&y.boundary_regions(y.index_of(100).unwrap())).len(), 1);
+    assert_eq!(y.components_of(&y.boundary_regions(y.index_of(RegionId(100)).unwrap())).len(), 1);
 }
 
 #[test]
@@ -235,7 +235,7 @@ fn gmap_to_complex_keeps_the_cylinder_zeros() {
     let x = ArchComplex::from_map(&cyl).unwrap();
     assert_eq!(x.region_counts(), vec![2, 3, 1]);
     // entries: each of the 3 edges on its vertices, the face on its 3 edges
-    let w: Vec<(u64, u64, i64)> = x.entry_ids();
+    let w: Vec<(RegionId, RegionId, i64)> = x.entry_ids();
     let zeros = w.iter().filter(|e| e.2 == 0).count();
     // the two boundary loops on their vertices, and the face on the seam edge
     assert_eq!(zeros, 3);
@@ -286,22 +286,31 @@ fn arch_err(text: &str) -> ArchError {
 fn reader_rejects_each_violation() {
     let head = r#"{"dimension": 2, "regions": [{"id": 0, "dim": 0}, {"id": 1, "dim": 1}, {"id": 2, "dim": 1}, {"id": 3, "dim": 2}], "incidence": "#;
     let cyc = format!("{head}[{{\"from\": 1, \"to\": 2, \"weight\": 0}}, {{\"from\": 2, \"to\": 1, \"weight\": 0}}]}}");
-    assert_eq!(arch_err(&cyc), ArchError::Cycle { cycle: vec![1, 2, 1] });
+    assert_eq!(arch_err(&cyc), ArchError::Cycle { cycle: vec![RegionId(1), RegionId(2), RegionId(1)] });
     let up = format!("{head}[{{\"from\": 0, \"to\": 1, \"weight\": 1}}]}}");
-    assert_eq!(arch_err(&up), ArchError::DimensionNotDecreasing { from: 0, to: 1, from_dim: 0, to_dim: 1 });
+    assert_eq!(
+        arch_err(&up),
+        ArchError::DimensionNotDecreasing { from: RegionId(0), to: RegionId(1), from_dim: 0, to_dim: 1 }
+    );
     let same = format!("{head}[{{\"from\": 1, \"to\": 2, \"weight\": 1}}]}}");
-    assert!(matches!(arch_err(&same), ArchError::DimensionNotDecreasing { from: 1, to: 2, .. }));
+    assert!(matches!(arch_err(&same), ArchError::DimensionNotDecreasing { from: RegionId(1), to: RegionId(2), .. }));
     let gap = format!("{head}[{{\"from\": 3, \"to\": 0, \"weight\": 2}}]}}");
-    assert_eq!(arch_err(&gap), ArchError::WeightAcrossGap { from: 3, to: 0, from_dim: 2, to_dim: 0, weight: 2 });
+    assert_eq!(
+        arch_err(&gap),
+        ArchError::WeightAcrossGap { from: RegionId(3), to: RegionId(0), from_dim: 2, to_dim: 0, weight: 2 }
+    );
     let dup_e =
         format!("{head}[{{\"from\": 1, \"to\": 0, \"weight\": 1}}, {{\"from\": 1, \"to\": 0, \"weight\": 1}}]}}");
-    assert_eq!(arch_err(&dup_e), ArchError::DuplicateEntry { from: 1, to: 0 });
+    assert_eq!(arch_err(&dup_e), ArchError::DuplicateEntry { from: RegionId(1), to: RegionId(0) });
     let dup_r = r#"{"regions": [{"id": 4, "dim": 0}, {"id": 4, "dim": 1}], "incidence": []}"#;
-    assert_eq!(arch_err(dup_r), ArchError::DuplicateRegion { id: 4 });
+    assert_eq!(arch_err(dup_r), ArchError::DuplicateRegion { id: RegionId(4) });
     let sq = format!("{head}[{{\"from\": 1, \"to\": 0, \"weight\": 1}}, {{\"from\": 3, \"to\": 1, \"weight\": 1}}]}}");
-    assert_eq!(arch_err(&sq), ArchError::SquareNotZero { from: 3, to: 0, value: 1 });
+    assert_eq!(arch_err(&sq), ArchError::SquareNotZero { from: RegionId(3), to: RegionId(0), value: 1 });
     let unknown = format!("{head}[{{\"from\": 9, \"to\": 0, \"weight\": 1}}]}}");
-    assert_eq!(arch_err(&unknown), ArchError::UnknownRegion { from: 9, to: 0, missing: 9 });
+    assert_eq!(
+        arch_err(&unknown),
+        ArchError::UnknownRegion { from: RegionId(9), to: RegionId(0), missing: RegionId(9) }
+    );
     // the message names the reason
     assert!(read_json(&cyc).unwrap_err().to_string().contains("cycle: 1 -> 2 -> 1"));
     // not JSON, or JSON of the wrong shape
@@ -310,4 +319,15 @@ fn reader_rejects_each_violation() {
     assert_eq!(e.to_string(), "regions[0].id: expected a non-negative integer, found -1");
     let e = read_json(r#"{"regions": [{"id": 1, "dim": 0}]}"#).unwrap_err();
     assert_eq!(e.to_string(), "incidence: missing");
+}
+
+#[test]
+fn algorithm_8_16_refuses_when_ids_run_out() {
+    // a line without boundary whose id is the largest u64: a base vertex needs a new id
+    let x = ArchComplex::try_from_ids(1, &[(u64::MAX, 1)], &[]).unwrap();
+    assert_eq!(x.topological(ZeroWeightRule::Closed).unwrap_err(), ArchError::IdsExhausted);
+    // one below leaves exactly one id: the vertex gets u64::MAX
+    let y = ArchComplex::try_from_ids(1, &[(u64::MAX - 1, 1)], &[]).unwrap();
+    let t = y.topological(ZeroWeightRule::Closed).unwrap();
+    assert!(t.complex.index_of(RegionId(u64::MAX)).is_some());
 }

@@ -1,6 +1,6 @@
 //! Euler–Poincaré operators: the tables of AC §7 and exact expansions.
 
-use gmap_homology::ep::{elementary_operators, EpError, EpVector, Poly};
+use gmap_homology::ep::{elementary_operators, EpError, EpPolynomial, EpVector, Poly};
 use proptest::prelude::*;
 
 fn v(x: &[i64], y: &[i64]) -> EpVector {

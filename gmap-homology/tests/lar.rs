@@ -3,7 +3,7 @@
 
 use gmap_core::{examples, DenseMap};
 use gmap_homology::arch::{cell_incidences, ArchComplex};
-use gmap_homology::lar::{Csr, Lar, LarOp};
+use gmap_homology::lar::{characteristic_matrix, Lar, LarOp};
 use gmap_homology::{cellular_complex, Incidence};
 
 /// The unsigned incidence numbers (BO Def. 5) of the i-cells on the (i-1)-cells as a dense
@@ -103,11 +103,11 @@ fn my_incidences_agree_with_the_border_operator() {
 }
 
 #[test]
-fn csr_products() {
-    let a = Csr::from_rows(3, &[vec![0, 2], vec![1]]).unwrap();
+fn characteristic_matrix_products() {
+    let a = characteristic_matrix(3, &[vec![0, 2], vec![1]]).unwrap();
     assert_eq!(a.to_dense(), vec![vec![1, 0, 1], vec![0, 1, 0]]);
-    assert_eq!(a.mul(&a.transpose()).unwrap().to_dense(), vec![vec![2, 0], vec![0, 1]]);
-    assert!(Csr::from_rows(2, &[vec![2]]).is_err());
+    assert_eq!(a.checked_mul(&a.transpose()).unwrap().to_dense(), vec![vec![2, 0], vec![0, 1]]);
+    assert!(characteristic_matrix(2, &[vec![2]]).is_err());
     let lar = Lar::from_map(&examples::fig1_surface());
     let json = lar.to_json().unwrap();
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();

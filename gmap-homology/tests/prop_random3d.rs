@@ -230,11 +230,11 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
         }
         PreconditionError::C2 { dim, dart, .. } => {
             prop_assert!(*dim >= 3, "{e}");
-            prop_assert_eq!(own_c1(m, *dim, *dart), Ok(()), "C2 is checked after C1: {}", e);
-            let b = own_compacted(m, *dim, *dart);
+            prop_assert_eq!(own_c1(m, *dim, dart.0), Ok(()), "C2 is checked after C1: {}", e);
+            let b = own_compacted(m, *dim, dart.0);
             let h = homology_z(&simplicial_complex(&b)).map_err(fail)?;
             prop_assert_ne!(h.to_string(), sphere_string(dim - 1), "the cell named is bounded by a sphere: {}", e);
-            Ok((*dim, *dart))
+            Ok((*dim, dart.0))
         }
     }
 }

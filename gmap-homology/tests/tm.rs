@@ -82,10 +82,10 @@ fn poincare_duality_transposes_the_incidence_graph() {
         let mut a: Vec<(u64, u64, i64)> = xt
             .entry_ids()
             .into_iter()
-            .map(|(f, t, w)| (map_id(f), map_id(t), if orientable { w.abs() } else { 0 }))
+            .map(|(f, t, w)| (map_id(f.0), map_id(t.0), if orientable { w.abs() } else { 0 }))
             .collect();
         let mut b: Vec<(u64, u64, i64)> =
-            d.entry_ids().into_iter().map(|(f, t, w)| (f, t, if orientable { w.abs() } else { 0 })).collect();
+            d.entry_ids().into_iter().map(|(f, t, w)| (f.0, t.0, if orientable { w.abs() } else { 0 })).collect();
         a.sort();
         b.sort();
         assert_eq!(a, b);

@@ -1,7 +1,8 @@
 //! `gmap convert IN OUT`: read by the input's extension, write by the output's.
 //!
-//! Outputs: `.gmap` and `.moka` (gmap-core io), `.off` (2-maps with points) and `.facets`
-//! (the barycentric subdivision: one simplex per dart). Every writer goes through a
+//! Outputs: `.gmap` and `.moka` (gmap-core io), `.off` (2-maps with points), `.facets`
+//! (the barycentric subdivision: one simplex per dart) and `.vtk` (maps of dimension ≤ 3
+//! with points). Every writer goes through a
 //! temporary file and a rename, so a failure leaves no partial output.
 
 use std::path::Path;
@@ -28,6 +29,9 @@ pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),
         Loaded::Complex(x) => write_complex(&x, output, max_darts),
+        Loaded::Cubical(_) => {
+            anyhow::bail!("{}: a cubical set cannot be converted; use gmap homology", input.display())
+        }
     }
 }
 
@@ -59,6 +63,9 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
             gmap_ops::export::write_off(m, output).with_context(|| format!("{}: cannot write", output.display()))?
         }
         "facets" => gmap_ops::export::write_barycentric_facets(m, output)?,
+        "vtk" => {
+            gmap_ops::export::write_vtk(m, output).with_context(|| format!("{}: cannot write", output.display()))?
+        }
         "json" if is_lar(output) => write_text(output, &Lar::from_map(m).to_json()?)?,
         "json" => write_text(output, &write_json(&complex_of(m, output)?))?,
         "dot" => write_text(output, &write_dot(&complex_of(m, output)?))?,

@@ -11,8 +11,11 @@ use gmap_homology::{
 };
 use serde_json::json;
 
+use gmap_homology::simplices::{face_complex, face_estimate, FaceComplex, FaceError};
+use gmap_ops::import::SimplicialComplex;
+
 use super::load::{load, Loaded};
-use super::Method;
+use super::{Method, Via};
 
 /// Options of `gmap homology`.
 pub struct Options {
@@ -24,6 +27,10 @@ pub struct Options {
     pub simplify: bool,
     pub topological: bool,
     pub max_darts: Option<u64>,
+    /// the route of a simplicial complex (`None`: direct unless the options need the G-map)
+    pub via: Option<Via>,
+    /// `--periodic`: a cubical set's box is a torus
+    pub periodic: bool,
 }
 
 /// When the command started (for the elapsed times of the progress lines).
@@ -38,18 +45,93 @@ fn progress(msg: &str) {
     }
 }
 
-/// A chain complex with a printable name for each generator (for `--generators`).
-struct Named {
-    chain: ChainComplex,
-    names: Vec<Vec<String>>,
+/// A cell of the input, in the input's own terms (docs/FORMATS.md, generators).
+enum CellName {
+    /// a simplex of a simplicial complex: its vertex labels, increasing
+    Simplex(Vec<u64>),
+    /// a G-map cell by one of its darts; for the simplicial counterpart, the dimensions of
+    /// the cells of that dart spanning the simplex
+    Dart { dart: u32, point: Option<[f64; 3]>, simplex: Option<Vec<u32>> },
+    /// a region of an architectural complex by its id
+    Region(u64),
+    /// an elementary cube of a cubical set: its minimal vertex and its extent (0 or 1) per
+    /// axis
+    Cube { min: Vec<i64>, extent: Vec<u8> },
 }
 
-fn cellular(map: &DenseMap, file: &str) -> Result<Named> {
+impl CellName {
+    fn to_json(&self) -> serde_json::Value {
+        match self {
+            CellName::Simplex(v) => json!(v),
+            CellName::Dart { dart, point, simplex } => {
+                let mut v = json!({ "dart": dart });
+                if let Some(s) = simplex {
+                    v["simplex"] = json!(s);
+                }
+                if let Some(p) = point {
+                    v["point"] = json!(p);
+                }
+                v
+            }
+            CellName::Region(id) => json!({ "region": id }),
+            CellName::Cube { min, extent } => json!({ "cube": min, "extent": extent }),
+        }
+    }
+
+    fn to_text(&self) -> String {
+        let list = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(",");
+        match self {
+            CellName::Simplex(v) => format!("[{}]", list(v)),
+            CellName::Dart { dart, point, simplex } => {
+                let mut t = format!("dart {dart}");
+                if let Some(s) = simplex {
+                    let s: Vec<u64> = s.iter().map(|&x| u64::from(x)).collect();
+                    t = format!("simplex {{{}}} of {t}", list(&s));
+                }
+                if let Some([x, y, z]) = point {
+                    t.push_str(&format!(" at ({x}, {y}, {z})"));
+                }
+                t
+            }
+            CellName::Region(id) => format!("region {id}"),
+            CellName::Cube { min, extent } => min
+                .iter()
+                .zip(extent)
+                .map(|(&lo, &e)| if e == 1 { format!("[{},{}]", lo, lo + 1) } else { lo.to_string() })
+                .collect::<Vec<_>>()
+                .join("x"),
+        }
+    }
+}
+
+/// A chain complex with a name for each generator (for `--generators`): `name(k, j)` names
+/// k-cell `j` in the input's terms.
+struct Named<'a> {
+    chain: ChainComplex,
+    name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
+}
+
+/// The points of a map's darts, when it has any (for naming G-map cells).
+fn points(map: &DenseMap) -> Option<Vec<Option<[f64; 3]>>> {
+    map.has_points().then(|| map.darts().map(|d| map.point(d)).collect())
+}
+
+/// The name of the k-cell with dart `d`: by labels when the map came from a simplicial
+/// complex (the k-face of the dart's flag), else by dart (and point).
+fn dart_cell(sc: Option<&SimplicialComplex>, pts: &Option<Vec<Option<[f64; 3]>>>, k: usize, d: u32) -> CellName {
+    if let Some(face) = sc.and_then(|sc| sc.dart_face(u64::from(d), k)) {
+        return CellName::Simplex(face);
+    }
+    CellName::Dart { dart: d, point: pts.as_ref().and_then(|p| p[d as usize]), simplex: None }
+}
+
+fn cellular<'a>(map: &DenseMap, file: &str, sc: Option<&'a SimplicialComplex>) -> Result<Named<'a>> {
     progress("checking C1 and C2 and building the border operator");
     let c = cellular_complex(map)
         .with_context(|| format!("{file}: the cellular method does not apply (use --method simplicial)"))?;
-    let names = c.reps.iter().map(|r| r.iter().map(|d| format!("cell of dart {d}")).collect()).collect();
-    Ok(Named { chain: c.chain, names })
+    let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.0).collect()).collect();
+    let pts = points(map);
+    Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
 }
 
 /// The most work [`simplicial`] takes on: the simplicial counterpart of an n-map of N darts
@@ -74,28 +156,51 @@ fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
     Ok(())
 }
 
-fn simplicial(map: &DenseMap) -> Named {
+fn simplicial(map: &DenseMap) -> Named<'static> {
     progress("building the simplicial counterpart");
     let s = simplicial_complex_with_simplices(map);
-    let names = s
-        .simplices
-        .iter()
-        .map(|v| {
-            v.iter()
-                .map(|x| {
-                    let labels: Vec<String> =
-                        (0..32).filter(|i| x.labels & (1 << i) != 0).map(|i| i.to_string()).collect();
-                    format!("simplex {{{}}} of dart {}", labels.join(","), x.dart)
-                })
-                .collect()
-        })
-        .collect();
-    Named { chain: s.chain, names }
+    let pts = points(map);
+    let simplices = s.simplices;
+    Named {
+        chain: s.chain,
+        name: Box::new(move |k, j| {
+            let x = &simplices[k][j as usize];
+            CellName::Dart {
+                dart: x.dart.0,
+                point: pts.as_ref().and_then(|p| p[x.dart.index()]),
+                simplex: Some((0..32).filter(|i| x.labels & (1 << i) != 0).collect()),
+            }
+        }),
+    }
+}
+
+/// The direct route for a simplicial complex: every face of every facet is a cell
+/// (`gmap_homology::simplices`), no G-map. The faces are counted first and refused past
+/// `--max-darts` (default: what the available memory holds).
+fn direct(sc: &SimplicialComplex, o: &Options, file: &str) -> Result<(usize, Named<'static>)> {
+    let facets = sc.all_facets();
+    let limit = o.max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
+    progress(&format!(
+        "enumerating the faces of {} facets (at most {})",
+        facets.len(),
+        face_estimate(facets.iter().copied()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
+    ));
+    let fc = face_complex(&facets, limit).map_err(|e| match e {
+        FaceError::TooManyFaces { .. } => anyhow::anyhow!("{file}: {e}; raise the limit with --max-darts N"),
+        e => anyhow::anyhow!("{file}: {e}"),
+    })?;
+    let FaceComplex { chain, vertices, faces } = fc;
+    let dim = chain.dim();
+    let name = Box::new(move |k: usize, j: u32| {
+        let j = j as usize;
+        CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())
+    });
+    Ok((dim, Named { chain, name }))
 }
 
 /// The chain complex of an architectural complex (`.json`): the completion by zero of its
 /// partial boundary matrix (AC Def. 3.9), after Algorithm 8.16 with `--topological`.
-fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named> {
+fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named<'static>> {
     if o.method == Method::Simplicial {
         bail!("{file}: an architectural complex has no simplicial counterpart; use --method cellular");
     }
@@ -108,10 +213,9 @@ fn complex(x: ArchComplex, o: &Options, file: &str) -> Result<Named> {
     } else {
         x
     };
-    let names = (0..=x.dim())
-        .map(|k| x.regions_of_dim(k).iter().map(|&r| format!("region {}", x.region(r as usize).id)).collect())
-        .collect();
-    Ok(Named { chain: x.chain_complex(), names })
+    let ids: Vec<Vec<u64>> =
+        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
+    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
 }
 
 fn compute(c: &ChainComplex, field: Option<u64>) -> Result<Homology> {
@@ -155,6 +259,24 @@ fn note(msg: &str) {
     }
 }
 
+/// Which route a simplicial complex (`.facets`, `.lex`) takes: `None` for other inputs.
+/// Direct by default; through the G-map with `--via gmap`, `--method simplicial` (the
+/// G-map's simplicial counterpart) or `--simplify` (which works on maps).
+fn simplicial_route(o: &Options) -> Result<Option<Via>> {
+    let simplicial_input = matches!(super::load::extension(&o.file).as_str(), "facets" | "lex");
+    let file = o.file.display();
+    match (o.via, simplicial_input) {
+        (Some(Via::Direct), false) => bail!("{file}: --via direct applies to simplicial complexes (.facets, .lex)"),
+        (Some(Via::Direct), true) if o.method == Method::Simplicial || o.simplify => {
+            bail!("{file}: --method simplicial and --simplify work on the G-map; use --via gmap")
+        }
+        (_, false) => Ok(None),
+        (Some(v), true) => Ok(Some(v)),
+        (None, true) if o.method == Method::Simplicial || o.simplify => Ok(Some(Via::Gmap)),
+        (None, true) => Ok(Some(Via::Direct)),
+    }
+}
+
 pub fn run(o: &Options) -> Result<()> {
     if let Some(p) = o.field {
         if !is_prime(p) || p >= 1 << 31 {
@@ -163,28 +285,55 @@ pub fn run(o: &Options) -> Result<()> {
     }
     START.get_or_init(std::time::Instant::now);
     let file = o.file.display().to_string();
+    let route = simplicial_route(o)?;
+    if o.topological && route.is_some() {
+        bail!("{file}: --topological applies to architectural complexes (.json), not to simplicial complexes");
+    }
     progress(&format!("reading {file}"));
-    let loaded = load(&o.file, o.max_darts)?;
-    let (dim, named) = match loaded {
-        Loaded::Map(map) => {
-            if o.topological {
-                bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
+    // the complex itself: for the direct route, and to name the G-map's cells by labels
+    if o.periodic && !matches!(super::load::extension(&o.file).as_str(), "cub" | "pbm") {
+        bail!("{file}: --periodic applies to cubical sets (.cub, .pbm)");
+    }
+    let sc = if route == Some(Via::Direct) || (route == Some(Via::Gmap) && o.generators) {
+        super::load::load_simplicial(&o.file)?
+    } else {
+        None
+    };
+    let (dim, named) = if route == Some(Via::Direct) {
+        direct(sc.as_ref().expect("a simplicial input"), o, &file)?
+    } else {
+        match load(&o.file, o.max_darts)? {
+            Loaded::Cubical(set) => {
+                progress("building the cubical complex");
+                let (chain, names) = super::cubical::complex(&set, o, &file)?;
+                let name = Box::new(move |k: usize, j: u32| {
+                    let (min, extent) = names[k][j as usize].clone();
+                    CellName::Cube { min, extent }
+                });
+                (set.dim(), Named { chain, name })
             }
-            let map = if o.simplify { simplified(map) } else { map };
-            let named = match o.method {
-                Method::Cellular => cellular(&map, &file)?,
-                Method::Simplicial => {
-                    check_simplicial_size(&map, &file)?;
-                    simplicial(&map)
+            Loaded::Map(map) => {
+                if o.topological {
+                    bail!("{file}: --topological applies to architectural complexes (.json), not to G-maps");
                 }
-            };
-            (map.dim(), named)
-        }
-        Loaded::Complex(x) => {
-            if o.simplify {
-                bail!("{file}: --simplify applies to G-maps, not to architectural complexes (.json)");
+                let map = if o.simplify { simplified(map) } else { map };
+                // labels name the cells only while darts are those of the import
+                let sc = if o.simplify { None } else { sc.as_ref() };
+                let named = match o.method {
+                    Method::Cellular => cellular(&map, &file, sc)?,
+                    Method::Simplicial => {
+                        check_simplicial_size(&map, &file)?;
+                        simplicial(&map)
+                    }
+                };
+                (map.dim(), named)
             }
-            (x.dim(), complex(x, o, &file)?)
+            Loaded::Complex(x) => {
+                if o.simplify {
+                    bail!("{file}: --simplify applies to G-maps, not to architectural complexes (.json)");
+                }
+                (x.dim(), complex(x, o, &file)?)
+            }
         }
     };
     let h = compute(&named.chain, o.field).with_context(|| file.clone())?;
@@ -207,16 +356,21 @@ pub fn run(o: &Options) -> Result<()> {
             "torsion": h.torsion,
             "euler_characteristic": h.euler_characteristic(),
         });
+        if let Some(r) = route {
+            v["route"] = json!(match r {
+                Via::Direct => "direct",
+                Via::Gmap => "gmap",
+            });
+        }
         if let Some(g) = &gens {
             let list: Vec<_> = g
                 .iter()
                 .map(|x| {
                     json!({
-                        "dimension": x.dim,
+                        "dim": x.dim,
                         "order": x.order,
                         "chain": x.chain.iter().map(|&(cell, coef)| json!({
-                            "cell": named.names[x.dim][cell as usize],
-                            "index": cell,
+                            "cell": (named.name)(x.dim, cell).to_json(),
                             "coefficient": coef,
                         })).collect::<Vec<_>>(),
                     })
@@ -226,7 +380,12 @@ pub fn run(o: &Options) -> Result<()> {
         }
         outln!("{v}")?;
     } else {
-        outln!("dimension {dim}, method {method}, coefficients {}", h.coefficients)?;
+        let via = match route {
+            Some(Via::Direct) => ", route direct",
+            Some(Via::Gmap) => ", route gmap",
+            None => "",
+        };
+        outln!("dimension {dim}, method {method}, coefficients {}{via}", h.coefficients)?;
         for k in 0..h.betti.len() {
             outln!("H_{k} = {}", h.group_string(k))?;
         }
@@ -241,7 +400,7 @@ pub fn run(o: &Options) -> Result<()> {
                 let terms: Vec<String> = x
                     .chain
                     .iter()
-                    .map(|&(cell, coef)| format!("{coef:+} [{}]", named.names[x.dim][cell as usize]))
+                    .map(|&(cell, coef)| format!("{coef:+} {}", (named.name)(x.dim, cell).to_text()))
                     .collect();
                 outln!("generator of H_{} ({order}): {}", x.dim, terms.join(" "))?;
             }

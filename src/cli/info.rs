@@ -77,11 +77,20 @@ pub fn map_info(map: &DenseMap) -> MapInfo {
 }
 
 /// Runs `gmap info`.
-pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
+pub fn run(file: &Path, json: bool, max_darts: Option<u64>, periodic: bool) -> Result<()> {
     let progress = Progress::new(file);
     progress.step("reading");
-    let loaded = load(file, max_darts)?;
+    let loaded = match load(file, max_darts) {
+        Ok(l) => l,
+        Err(e) => match no_gmap_reason(file, &e) {
+            Some(why) => return simplicial_run(file, json, max_darts, why),
+            None => return Err(e),
+        },
+    };
     progress.step("computing");
+    if periodic && !matches!(loaded, Loaded::Cubical(_)) {
+        anyhow::bail!("{}: --periodic applies to cubical sets (.cub, .pbm)", file.display());
+    }
     match loaded {
         Loaded::Map(map) => {
             let info = map_info(&map);
@@ -101,6 +110,7 @@ pub fn run(file: &Path, json: bool, max_darts: Option<u64>) -> Result<()> {
                 print_lines(&complex_lines(file, &info))?;
             }
         }
+        Loaded::Cubical(set) => super::cubical::run(file, &set, json, periodic)?,
     }
     Ok(())
 }
@@ -198,4 +208,111 @@ fn complex_lines(file: &Path, info: &ComplexInfo) -> Vec<(&'static str, String)>
         ("complete boundaries", yes(info.complete_boundaries)),
         ("euler characteristic", info.euler_characteristic.to_string()),
     ]
+}
+
+/// Why a simplicial complex has no G-map, when that is why loading failed: a ridge in three
+/// or more facets, or facets of mixed dimensions (also when the dart count, checked first,
+/// was over the limit).
+fn no_gmap_reason(file: &Path, e: &anyhow::Error) -> Option<String> {
+    use gmap_ops::import::{FileError, ImportError};
+    if let Some(f) = e.downcast_ref::<FileError>() {
+        if matches!(f.error, ImportError::RidgeInManyFacets { .. } | ImportError::MixedDimension { .. }) {
+            return Some(f.error.to_string());
+        }
+    }
+    let sc = super::load::load_simplicial(file).ok()??;
+    (!sc.is_pure()).then(|| {
+        format!(
+            "mixed dimensions: {} of its {} facets have dimension {}, the others fewer vertices",
+            sc.facet_count(),
+            sc.total_facet_count(),
+            sc.dim()
+        )
+    })
+}
+
+/// The characteristics of a simplicial complex that has no G-map: the keys of a map's
+/// (docs/FORMATS.md §1) with simplices for cells, `"darts": 0`, `complete_boundaries` and
+/// `orientable` `null`, then `kind`, `"gmap": null` and `why`.
+#[derive(Debug, Serialize)]
+pub struct SimplicialInfo {
+    /// the largest facets' dimension
+    pub dimension: usize,
+    /// always 0: no G-map
+    pub darts: usize,
+    /// `cells[i]`: number of i-simplices
+    pub cells: Vec<usize>,
+    /// connected components
+    pub components: usize,
+    /// a simplicial complex (the reader refuses anything else)
+    pub valid: bool,
+    /// not defined without a G-map
+    pub complete_boundaries: Option<bool>,
+    /// not defined without a G-map
+    pub orientable: Option<bool>,
+    /// the alternating sum of `cells`
+    pub euler_characteristic: i64,
+    /// `"simplicial complex"`
+    pub kind: &'static str,
+    /// always `null`: the complex has no G-map
+    pub gmap: Option<()>,
+    /// why it has no G-map
+    pub why: String,
+}
+
+/// `gmap info` on a simplicial complex without a G-map: its simplices, straight from the
+/// facets (`gmap_homology::simplices`).
+fn simplicial_run(file: &Path, json: bool, max_darts: Option<u64>, why: String) -> Result<()> {
+    let sc = super::load::load_simplicial(file)?
+        .ok_or_else(|| anyhow::anyhow!("{}: not a simplicial complex", file.display()))?;
+    let facets = sc.all_facets();
+    let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
+    let fc = gmap_homology::simplices::face_complex(&facets, limit)
+        .map_err(|e| anyhow::anyhow!("{}: {e}; raise the limit with --max-darts N", file.display()))?;
+    // components: union-find over the vertices, joined along each facet
+    let mut parent: Vec<u32> = (0..fc.vertices.len() as u32).collect();
+    fn root(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    for f in &facets {
+        let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;
+        let a = root(&mut parent, idx(&f[0]));
+        for v in &f[1..] {
+            let b = root(&mut parent, idx(v));
+            parent[b as usize] = a;
+        }
+    }
+    let components = (0..parent.len() as u32).filter(|&x| root(&mut parent, x) == x).count();
+    let info = SimplicialInfo {
+        dimension: fc.dim(),
+        darts: 0,
+        cells: fc.chain.counts().to_vec(),
+        components,
+        valid: true,
+        complete_boundaries: None,
+        orientable: None,
+        euler_characteristic: fc.chain.euler_characteristic(),
+        kind: "simplicial complex",
+        gmap: None,
+        why,
+    };
+    if json {
+        outln!("{}", serde_json::to_string(&info)?)?;
+    } else {
+        let cells = info.cells.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ");
+        print_lines(&[
+            ("file", file.display().to_string()),
+            ("kind", info.kind.to_string()),
+            ("dimension", info.dimension.to_string()),
+            ("simplices (0..n)", cells),
+            ("components", info.components.to_string()),
+            ("euler characteristic", info.euler_characteristic.to_string()),
+            ("gmap", format!("none: {}", info.why)),
+        ])?;
+    }
+    Ok(())
 }

@@ -11,7 +11,12 @@ pub enum Loaded {
     Map(DenseMap),
     /// an architectural complex / incidence graph (`.json`, docs/FORMATS.md §2)
     Complex(gmap_homology::arch::ArchComplex),
+    /// a full cubical set (`.cub`, `.pbm`)
+    Cubical(gmap_ops::import::CubicalSet),
 }
+
+/// The extensions [`load`] reads (the files `gmap bench` takes from a folder).
+pub const INPUT_EXTENSIONS: &[&str] = &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm"];
 
 /// The lower-cased extension of a path. A `#` belongs to the file name (`run#3.gmap`) unless
 /// the path names a `.lex` complex, `FILE.lex#name`, and no file has the whole path (see
@@ -51,10 +56,27 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
         }
         "off" => Ok(Loaded::Map(gmap_ops::import::read_off_with(path, max_darts)?)),
         "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
+        "cub" => Ok(Loaded::Cubical(gmap_ops::import::read_cub(path)?)),
+        "pbm" => Ok(Loaded::Cubical(gmap_ops::import::read_pbm(path)?)),
         other => {
             bail!("{}: unsupported input format '.{}'", path.display(), gmap_core::io::shorten(other.as_bytes(), 40))
         }
     }
+}
+
+/// A `.facets` or `.lex[#name]` input read as a simplicial complex, without making a G-map
+/// of it (any finite simplicial complex); `None` for the other formats.
+pub fn load_simplicial(path: &Path) -> Result<Option<gmap_ops::import::SimplicialComplex>> {
+    use gmap_ops::import::{read_facets_complex, read_lex_complex};
+    Ok(match extension(path).as_str() {
+        "facets" => Some(read_facets_complex(path)?),
+        "lex" if path.exists() => Some(read_lex_complex(path, None)?),
+        "lex" => {
+            let (file, name) = split_lex_name(path);
+            Some(read_lex_complex(&file, name.as_deref())?)
+        }
+        _ => None,
+    })
 }
 
 /// Splits `FILE.lex#name` into the file and the complex name (none without `#`). The split

@@ -23,7 +23,9 @@ macro_rules! out {
     }};
 }
 
+mod bench;
 mod convert;
+mod cubical;
 mod demo;
 mod homology;
 mod info;
@@ -46,6 +48,15 @@ pub enum Method {
     Simplicial,
 }
 
+/// How `gmap homology` takes a simplicial complex (`.facets`, `.lex`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Via {
+    /// every face of every facet is a cell (any simplicial complex)
+    Direct,
+    /// through the G-map of the facets (pure pseudo-manifolds)
+    Gmap,
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Build the classic objects and print one table row each.
@@ -60,6 +71,9 @@ enum Command {
         /// refuse inputs whose G-map would have more darts than this
         #[arg(long)]
         max_darts: Option<u64>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
+        #[arg(long)]
+        periodic: bool,
     },
     /// Homology over Z, or over Z/P with --field P.
     Homology {
@@ -83,6 +97,30 @@ enum Command {
         /// for an architectural complex: apply Algorithm 8.16 first (topological Betti numbers)
         #[arg(long)]
         topological: bool,
+        /// refuse inputs whose G-map would have more darts than this (direct route: more faces)
+        #[arg(long)]
+        max_darts: Option<u64>,
+        /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
+        #[arg(long, value_enum)]
+        via: Option<Via>,
+        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
+        #[arg(long)]
+        periodic: bool,
+    },
+    /// Homology benchmark: one row per input and route, with stage times and the groups.
+    Bench {
+        /// input files, or folders (every supported file in them, sorted)
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+        /// print one JSON object
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        /// print CSV: a header line, then one line per row
+        #[arg(long)]
+        csv: bool,
+        /// leave out the GUDHI column (otherwise filled for .facets inputs when python3 has gudhi)
+        #[arg(long)]
+        no_gudhi: bool,
         /// refuse inputs whose G-map would have more darts than this
         #[arg(long)]
         max_darts: Option<u64>,
@@ -122,18 +160,37 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Demo => demo::run(),
-        Command::Info { file, json, max_darts } => info::run(&file, json, max_darts),
-        Command::Homology { file, method, field, json, generators, simplify, topological, max_darts } => {
-            homology::run(&homology::Options {
-                file,
-                method,
-                field,
-                json,
-                generators,
-                simplify,
-                topological,
-                max_darts,
-            })
+        Command::Info { file, json, max_darts, periodic } => info::run(&file, json, max_darts, periodic),
+        Command::Homology {
+            file,
+            method,
+            field,
+            json,
+            generators,
+            simplify,
+            topological,
+            max_darts,
+            via,
+            periodic,
+        } => homology::run(&homology::Options {
+            file,
+            method,
+            field,
+            json,
+            generators,
+            simplify,
+            topological,
+            max_darts,
+            via,
+            periodic,
+        }),
+        Command::Bench { inputs, json, csv, no_gudhi, max_darts } => {
+            let format = match (json, csv) {
+                (true, _) => bench::Format::Json,
+                (_, true) => bench::Format::Csv,
+                _ => bench::Format::Markdown,
+            };
+            bench::run(&bench::Options { inputs, format, max_darts, gudhi: !no_gudhi })
         }
         Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),
     };

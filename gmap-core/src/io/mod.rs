@@ -191,6 +191,17 @@ pub enum ReadErrorKind {
     /// The darts do not form a G-map (BO Def. 1).
     #[error("not a G-map (BO Def. 1): {0}")]
     Invalid(ValidityError),
+    /// A `.moka` file records a dimension n < 3 (its last mark mask) that its darts do not
+    /// have: some dart is linked along `alpha_k` for a k > n.
+    #[error("the mark masks record dimension {recorded}, but dart {dart} is linked along alpha_{alpha}")]
+    RecordedDimension {
+        /// the dimension the file records
+        recorded: usize,
+        /// the first dart not free along `alpha_k`
+        dart: u64,
+        /// that k
+        alpha: usize,
+    },
 }
 
 impl ReadError {

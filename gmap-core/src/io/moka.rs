@@ -9,16 +9,20 @@
 //!
 //! Moka is a format of 3G-maps, with no dart count in the header (the number of dart
 //! lines is the count). Choices made here:
-//! - **reading** always gives a map of dimension 3; the mark masks and the four mark values
-//!   of each dart must be non-negative integers and are otherwise ignored; a dart with flag
-//!   `1` carries its point (see [`DenseMap::point`]); blank lines are skipped;
+//! - **reading** gives a map of dimension 3, unless the last mark-mask integer records a
+//!   lower dimension (below); the mark masks and the four mark values of each dart must be
+//!   non-negative integers and are otherwise ignored; a dart with flag `1` carries its point
+//!   (see [`DenseMap::point`]); blank lines are skipped;
 //! - **writing** accepts maps of dimension n ≤ 3 and embeds them in dimension 3 with
 //!   `alpha_k` the identity for n < k ≤ 3 (every dart k-free, which keeps BO Def. 1); a
-//!   map of dimension above 3 is refused with [`WriteError::DimensionTooLarge`]. Masks and
-//!   marks are written as zeros; every dart that carries a point is written with flag `1`
-//!   and its coordinates in Rust's shortest round-trip notation, so reading back gives the
-//!   same darts, involutions (in dimension 3, see [`DenseMap::embedded`]) and points, bit
-//!   for bit.
+//!   map of dimension above 3 is refused with [`WriteError::DimensionTooLarge`]. Marks are
+//!   written as zeros, and so are the masks, except that for n < 3 the last mask integer is
+//!   [`DIM_TAG`]` + n`: Moka reads such a file as the 3-map (a mask only flips the meaning
+//!   of a mark), and this reader restores the dimension n, so a conversion never changes
+//!   a map's dimension or homology. A file whose tag records n but where some dart is not
+//!   k-free for some k > n is refused. Every dart that carries a point is written with flag
+//!   `1` and its coordinates in Rust's shortest round-trip notation, so reading back gives
+//!   the same darts, involutions, dimension and points, bit for bit.
 //!
 //! Reading is O(file size) plus the validation of BO Def. 1.
 
@@ -36,6 +40,10 @@ pub const MOKA_HEADER: &str = "Moka file [ascii]";
 
 /// The dimension of Moka maps.
 const MOKA_DIM: usize = 3;
+
+/// The last mark-mask integer of a file written from a map of dimension n < 3 is
+/// `DIM_TAG + n` (0x7F000000 + n, below 2^31); the reader restores dimension n.
+pub const DIM_TAG: u64 = 0x7F00_0000;
 
 /// Reads a `.moka` file as a map of dimension 3 and validates it (BO Def. 1).
 pub fn read_moka(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
@@ -100,9 +108,11 @@ pub fn parse_moka_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     if s.at_end() {
         return Err(err(s.line, ReadErrorKind::Truncated { expected: 0, found: 0 }).mask_line_missing());
     }
+    let mask_line = s.line;
+    let mut last_mask = 0;
     for k in 0..8 {
         match s.number() {
-            Num::Value(_) => {}
+            Num::Value(v) => last_mask = v,
             Num::Eol => {
                 let what = "mark-mask line".to_string();
                 return Err(err(s.line, ReadErrorKind::WrongValueCount { what, expected: "8".into(), found: k }));
@@ -192,10 +202,30 @@ pub fn parse_moka_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
     let mut map = DenseMap::from_flat_unchecked(MOKA_DIM, alpha)
         .map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
     map.validate().map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
+    if let Some(n) = last_mask.checked_sub(DIM_TAG).filter(|&n| n < MOKA_DIM as u64) {
+        map = lower_dimension(&map, n as usize).map_err(|(d, k)| {
+            err(mask_line, ReadErrorKind::RecordedDimension { recorded: n as usize, dart: d as u64, alpha: k })
+        })?;
+    }
     for (k, p) in points {
         map.set_point(Dart(k), Some(p));
     }
     Ok(map)
+}
+
+/// The map of dimension `n` whose `alpha_0..alpha_n` are those of `map`, or the first dart
+/// and index k > n where `map` is not k-free.
+fn lower_dimension(map: &DenseMap, n: usize) -> Result<DenseMap, (u32, usize)> {
+    let mut alpha = Vec::with_capacity(map.dart_count() * (n + 1));
+    for d in map.darts() {
+        let row = map.row(d);
+        if let Some(k) = (n + 1..row.len()).find(|&k| row[k] != d.0) {
+            return Err((d.0, k));
+        }
+        alpha.extend_from_slice(&row[..=n]);
+    }
+    // the rows are those of a valid map restricted to fewer involutions: still valid
+    Ok(DenseMap::from_flat_unchecked(n, alpha).expect("a restriction of a valid map"))
 }
 
 impl ReadError {
@@ -215,7 +245,9 @@ pub fn format_moka(map: &DenseMap) -> Option<Vec<u8>> {
     }
     let mut out = Vec::with_capacity(64 + map.dart_count() * 24);
     out.extend_from_slice(MOKA_HEADER.as_bytes());
-    out.extend_from_slice(b"\n0 0 0 0 0 0 0 0\n");
+    out.extend_from_slice(b"\n0 0 0 0 0 0 0 ");
+    push_u32(&mut out, if n < MOKA_DIM { (DIM_TAG + n as u64) as u32 } else { 0 });
+    out.push(b'\n');
     for d in map.darts() {
         let row = map.row(d);
         for &v in row.iter().chain(std::iter::repeat_n(&d.0, MOKA_DIM - n)) {
@@ -267,9 +299,9 @@ mod tests {
         m.set_point(Dart(0), Some([0.1, -2.5e-300, 1e300]));
         m.set_point(Dart(5), Some([-0.0, 3.0, f64::MIN_POSITIVE]));
         let text = format_moka(&m).unwrap();
-        assert!(text.starts_with(b"Moka file [ascii]\n0 0 0 0 0 0 0 0\n1 7 5 0 0 0 0 0 1 0.1 "));
+        assert!(text.starts_with(b"Moka file [ascii]\n0 0 0 0 0 0 0 2130706434\n1 7 5 0 0 0 0 0 1 0.1 "));
         let back = parse_moka(&text, "x").unwrap();
-        assert_eq!(back, m.embedded(3).unwrap());
+        assert_eq!(back, m);
         assert_eq!(back.point(Dart(5)).unwrap()[0].to_bits(), (-0.0f64).to_bits());
         assert_eq!(back.point(Dart(1)), None);
         assert!(format_moka(&DenseMap::new(4, 1)).is_none());
@@ -339,6 +371,33 @@ mod tests {
         assert!(!p.exists());
         let m = examples::fig1_surface();
         write_moka(&m, &p).unwrap();
-        assert_eq!(read_moka(&p).unwrap(), m.embedded(3).unwrap());
+        assert_eq!(read_moka(&p).unwrap(), m);
+    }
+
+    #[test]
+    fn lower_dimensions_are_restored() {
+        for n in 0..=3 {
+            let mut m = DenseMap::new(n, 4);
+            if n >= 1 {
+                m.link(Dart(0), Dart(1), n);
+            }
+            m.link(Dart(2), Dart(3), 0);
+            m.set_point(Dart(2), Some([1.0, 2.0, 3.0]));
+            let text = format_moka(&m).unwrap();
+            let back = parse_moka(&text, "x").unwrap();
+            assert_eq!(back, m, "dimension {n}");
+            assert_eq!(back.point(Dart(2)), Some([1.0, 2.0, 3.0]));
+        }
+        // the tag of dimension 1 on a map linked along alpha_2
+        let text = format!("Moka file [ascii]\n0 0 0 0 0 0 0 {}\n0 0 1 0 0 0 0 0 0\n1 1 0 1 0 0 0 0 0\n", DIM_TAG + 1);
+        assert_eq!(
+            msg(text.as_bytes()),
+            "f.moka:2: the mark masks record dimension 1, but dart 0 is linked along alpha_2"
+        );
+        // a tag of 3 or more is an ordinary mask
+        let text = format!("Moka file [ascii]\n0 0 0 0 0 0 0 {}\n0 0 0 0 0 0 0 0 0\n", DIM_TAG + 3);
+        assert_eq!(parse_moka(text.as_bytes(), "x").unwrap().dim(), 3);
+        let empty = format_moka(&DenseMap::new(2, 0)).unwrap();
+        assert_eq!(parse_moka(&empty, "x").unwrap(), DenseMap::new(2, 0));
     }
 }

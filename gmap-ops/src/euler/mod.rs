@@ -3,14 +3,17 @@
 //!
 //! * [`vector`]: Euler–Poincaré vectors and their names in the basis of AC Prop. 5.2.
 //! * [`ops`]: cell operators on the editable [`gmap_core::GMap`] in any dimension —
-//!   split a cell (`mve`, `mef`, `mfs`, …), dangling edges, removal and contraction of
+//!   split a cell (`mve`, also on an edge missing an end, `mef`, `mfs`, …), dangling edges, removal and contraction of
 //!   cells of degree 2, closing a boundary — each with a predicate, a `try_` form with a
 //!   typed error and its Euler–Poincaré vector.
 //! * [`simplify`](mod@simplify): homology-preserving reduction of a
 //!   [`gmap_core::DenseMap`] by removals and contractions ([`simplify()`],
 //!   [`simplify_with`]), with a search past plateaus for 3-maps.
-//! * [`strata`]: the stratified objects with incomplete boundaries of EO and the Euler
-//!   characteristic of its Theorems 1–2.
+//! * [`strata`]: the stratified objects with incomplete boundaries of EO, the Euler
+//!   characteristic of its Theorems 1–2, and the catalogue of its operators
+//!   ([`strata::EoOperator`]: every operator the paper names, applied by name, refused
+//!   unchanged when it would break an invariant), with their G-map counterparts; docs/EO.md
+//!   maps the paper to code and tests.
 //! * [`random`]: random sequences of Euler operators for tests and benches, each attempt
 //!   checking that an operator's predicate agrees with its `try_` form.
 //!
@@ -25,12 +28,12 @@
 //!     g.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
 //! }
 //! let op = try_insert_vertex(&mut g, d[0]).unwrap();
-//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("mve", vec![1, 1]));
+//! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("mve", vec![1, 1]));
 //! assert_eq!(op.basis_name(), "B0 + A1");
 //! assert_eq!(g.to_dense().0.cell_counts(), vec![4, 4]);
 //! // removing a vertex of degree 2 merges its two edges back
 //! let op = try_remove_cell(&mut g, d[1], 0).unwrap();
-//! assert_eq!((op.name.as_str(), op.vector.dx.clone()), ("kve", vec![-1, -1]));
+//! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("kve", vec![-1, -1]));
 //! assert_eq!(g.to_dense().0.cell_counts(), vec![3, 3]);
 //! ```
 
@@ -42,4 +45,4 @@ pub mod vector;
 
 pub use ops::{CloseReport, EulerError};
 pub use simplify::{simplify, simplify_with, SimplifyOptions, SimplifyReport};
-pub use vector::{EpBasis, EpVector, EulerOp};
+pub use vector::{AbExpansion, EpVector, EulerOp};

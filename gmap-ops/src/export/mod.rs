@@ -1,5 +1,6 @@
-//! Exporters: `.off` polygon meshes (2-maps with points) and `.facets` of the barycentric
-//! subdivision (any map). Every writer goes through a temporary file in the target's
+//! Exporters: `.off` polygon meshes (2-maps with points), `.facets` of the barycentric
+//! subdivision (any map) and legacy `.vtk` unstructured grids (maps of dimension ≤ 3 with
+//! points, [`vtk_string`]). Every writer goes through a temporary file in the target's
 //! directory and a rename, so a failure never leaves a partial file behind. The native
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
 
@@ -8,6 +9,9 @@ use std::path::{Path, PathBuf};
 
 use gmap_core::{AlphaSet, Dart, DenseMap, Partition};
 use thiserror::Error;
+
+mod vtk;
+pub use vtk::{vtk_string, write_vtk};
 
 /// Why a map could not be exported.
 #[derive(Debug, Error)]
@@ -45,6 +49,22 @@ pub enum ExportError {
         dart: u32,
         /// the involution with a fixed point
         alpha: usize,
+    },
+    /// The format needs coordinates and the map has no points at all.
+    #[error("the map has no points: {format} needs coordinates for every vertex")]
+    NoPoints {
+        /// the format
+        format: &'static str,
+    },
+    /// A vertex without a finite point, for a format other than `.off` that needs them.
+    #[error("the vertex of dart {dart} has {what}: {format} needs finite coordinates for every vertex")]
+    VertexPoint {
+        /// the format
+        format: &'static str,
+        /// a dart of that vertex
+        dart: u32,
+        /// `no point` or `a point that is not finite`
+        what: &'static str,
     },
     /// A map without darts has no simplicial complex to write.
     #[error("the map has no dart: there is no facet to write")]

@@ -12,13 +12,15 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
+pub mod cubical;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
 
+pub use cubical::{read_cub, read_pbm, CubicalSet};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
-pub use simplicial::{read_facets, read_lex, SimplicialComplex};
+pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
 #[derive(Debug, Error)]
@@ -113,6 +115,9 @@ pub enum ImportError {
     /// A `.lex` file without a complex of the requested name.
     #[error("no complex named '{0}' in the file")]
     NoSuchName(String),
+    /// A file that does not fit its format as a whole (a `.pbm` header, a bounding box too big).
+    #[error("{0}")]
+    Format(String),
 }
 
 /// An [`ImportError`] with the file it came from. Displays as `FILE: message`.
@@ -175,9 +180,21 @@ pub fn default_max_darts(dim: usize) -> u64 {
     }
 }
 
+/// The default limit on the faces of a simplicial complex taken straight to its chain
+/// complex (counted with repetition, `2^(d+1) - 1` per d-facet): what fits in the memory
+/// available now at about `40 (dim + 2)` bytes a face (its key, its vertex list, its
+/// boundary entries, the sort), capped at `u32::MAX - 1` (the largest cell index).
+pub fn default_max_faces(dim: usize) -> u64 {
+    let cap = u32::MAX as u64 - 1;
+    match available_memory() {
+        Some(bytes) => (bytes / (40 * (dim as u64 + 2))).min(cap),
+        None => cap,
+    }
+}
+
 /// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
 pub(crate) fn available_memory() -> Option<u64> {
-    std::fs::read_to_string("/proc/meminfo").ok().and_then(|s| {
+    std::fs::read_to_string(std::path::Path::new("/proc").join("meminfo")).ok().and_then(|s| {
         s.lines()
             .find(|l| l.starts_with("MemAvailable:"))
             .and_then(|l| l.split_whitespace().nth(1))

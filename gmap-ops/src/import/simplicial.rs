@@ -32,6 +32,8 @@ pub struct SimplicialComplex {
     total: usize,
     /// the first facet smaller than the largest: (line, number of vertices)
     smaller: Option<(usize, usize)>,
+    /// the facets smaller than the largest, sorted, with their lines
+    others: Vec<(usize, Vec<u64>)>,
 }
 
 impl SimplicialComplex {
@@ -65,13 +67,25 @@ impl SimplicialComplex {
         let smaller = all.iter().find(|(_, f)| f.len() < m).map(|(l, f)| (*l, f.len()));
         let mut vertices = Vec::new();
         let mut lines = Vec::new();
-        for (line, f) in &all {
+        let total = all.len();
+        let mut others = Vec::new();
+        for (line, f) in all {
             if f.len() == m {
-                vertices.extend_from_slice(f);
-                lines.push(*line);
+                vertices.extend_from_slice(&f);
+                lines.push(line);
+            } else {
+                others.push((line, f));
             }
         }
-        Ok(SimplicialComplex { dim: m - 1, vertices, lines, total: all.len(), smaller })
+        Ok(SimplicialComplex { dim: m - 1, vertices, lines, total, smaller, others })
+    }
+
+    /// Every facet, of every dimension, with its vertices sorted: the n-facets first, then
+    /// the smaller ones in input order.
+    pub fn all_facets(&self) -> Vec<&[u64]> {
+        let mut out: Vec<&[u64]> = (0..self.facet_count()).map(|f| self.facet(f)).collect();
+        out.extend(self.others.iter().map(|(_, f)| f.as_slice()));
+        out
     }
 
     /// Whether every facet has dimension n (only then is there a G-map).
@@ -180,6 +194,29 @@ impl SimplicialComplex {
     /// The input line of n-facet `f`.
     pub fn line(&self, f: usize) -> usize {
         self.lines[f]
+    }
+
+    /// The i-face of dart `d`'s flag in the G-map of [`SimplicialComplex::to_gmap`]: the
+    /// labels of the first `i + 1` vertices of the dart's ordering of its facet, sorted.
+    /// `None` when there is no such dart or `i > n`. O(n^2).
+    pub fn dart_face(&self, d: u64, i: usize) -> Option<Vec<u64>> {
+        let m = self.dim + 1;
+        let pc = factorial(m)?;
+        let (f, mut r) = (usize::try_from(d / pc).ok()?, d % pc);
+        if f >= self.facet_count() || i >= m {
+            return None;
+        }
+        // unrank the ordering: digit k is how many later elements are smaller (radix m - k)
+        let mut digits = vec![0usize; m];
+        for k in (0..m).rev() {
+            let radix = (m - k) as u64;
+            digits[k] = (r % radix) as usize;
+            r /= radix;
+        }
+        let mut rest: Vec<u64> = self.facet(f).to_vec();
+        let mut face: Vec<u64> = (0..=i).map(|k| rest.remove(digits[k])).collect();
+        face.sort_unstable();
+        Some(face)
     }
 
     /// The number of darts of the G-map, `facets × (n + 1)!` (all facets counted, as if
@@ -494,6 +531,19 @@ pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, File
     sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
 }
 
+/// Reads a `.facets` file as a simplicial complex, without making a G-map of it (any
+/// finite simplicial complex: mixed dimensions, ridges in any number of facets).
+pub fn read_facets_complex(path: &Path) -> Result<SimplicialComplex, FileError> {
+    let text = super::read_text(path)?;
+    SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))
+}
+
+/// Reads the complex `name` (or the first) of a `.lex` file, without making a G-map of it.
+pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialComplex, FileError> {
+    let text = super::read_text(path)?;
+    SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))
+}
+
 /// Reads a `.lex` file (the complex `name`, or the first one) into a G-map; see
 /// [`read_facets`] for the limit.
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
@@ -570,6 +620,20 @@ mod tests {
             }
             e => panic!("{e}"),
         }
+    }
+
+    #[test]
+    fn dart_faces_follow_the_orderings() {
+        let sc = SimplicialComplex::parse_facets("1 2 3\n7 5 6\n").unwrap();
+        // dart 0 is ordering (0 1 2) of facet [1 2 3]; dart 1 is (0 2 1); dart 6 + 5 is (2 1 0) of [5 6 7]
+        assert_eq!(sc.dart_face(0, 0), Some(vec![1]));
+        assert_eq!(sc.dart_face(1, 1), Some(vec![1, 3]));
+        assert_eq!(sc.dart_face(11, 0), Some(vec![7]));
+        assert_eq!(sc.dart_face(11, 1), Some(vec![6, 7]));
+        assert_eq!(sc.dart_face(11, 2), Some(vec![5, 6, 7]));
+        assert_eq!(sc.dart_face(12, 0), None);
+        let mixed = SimplicialComplex::parse_facets("1 2 3\n4 5\n6\n").unwrap();
+        assert_eq!(mixed.all_facets(), vec![&[1u64, 2, 3][..], &[4, 5][..], &[6][..]]);
     }
 
     #[test]

@@ -86,6 +86,16 @@ fn check_collapse(g: &GMap, d: DartId, i: usize, kind: Move) -> Result<Collapse,
         return Err(EulerError::WouldChangeTopology { dim: i, dart: d, why: "lies on the boundary" });
     }
     if count == 2 {
+        if sides.iter().all(|x| cell.contains(x)) {
+            // the two cells are made of the cell's darts only (a vertex between two edges
+            // that both miss their far end): the merged cell would keep no dart — a lone
+            // open edge, which a G-map cannot carry
+            return Err(EulerError::WouldChangeTopology {
+                dim: i,
+                dart: d,
+                why: "would leave a merged cell without darts (both far ends are missing)",
+            });
+        }
         if !remove {
             // both end cells interior: no free dart in the cell or at its ends
             for &x in &cell {

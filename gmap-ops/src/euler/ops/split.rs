@@ -81,6 +81,12 @@ fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
         }
         let w = g.alpha(x, i - 1);
         if w == x {
+            // an edge with a missing end (EO's boundary-incomplete edge): its darts are all
+            // 0-free and form one side; the new vertex goes between that side and the open
+            // end, so the far part keeps the missing end
+            if i == 1 {
+                continue;
+            }
             return Err(EulerError::Free { dart: x, alpha: i - 1 });
         }
         if set.contains(&w) {
@@ -120,7 +126,8 @@ fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
         }
     }
     for &x in &darts {
-        if reach.contains(&g.alpha(x, i - 1)) {
+        let w = g.alpha(x, i - 1);
+        if w != x && reach.contains(&w) {
             return Err(EulerError::NotSeparating(x));
         }
     }
@@ -149,7 +156,8 @@ pub fn can_split_cell(g: &GMap, seeds: &[DartId], i: usize) -> bool {
 /// `alpha_i`-linked: they are the two sides of the new (i-1)-cell.
 ///
 /// Precondition ([`can_split_cell`]): `1 <= i <= n`; the darts lie in one i-cell; none is
-/// `(i-1)`-free and none is linked to another cut dart; the walk that turns around each
+/// `(i-1)`-free (except for `i = 1`: an edge with a missing end, whose darts are all 0-free,
+/// is cut between its one end and the missing one) and none is linked to another cut dart; the walk that turns around each
 /// (i-3)-cell of the cut closes up; the cut separates the cell. Effect: one more
 /// (i-1)-cell and one more i-cell, homology unchanged. O(size of the i-cell · n).
 pub fn try_split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> Result<EulerOp, EulerError> {
@@ -196,7 +204,9 @@ fn apply_cut(g: &mut GMap, cut: &Cut, i: usize) -> Vec<DartId> {
         let (ax, bx) = (a[&x], b[&x]);
         let w = g.alpha(x, i - 1);
         g.link(x, ax, i - 1);
-        g.link(w, bx, i - 1);
+        if w != x {
+            g.link(w, bx, i - 1);
+        }
         g.link(ax, bx, i);
         for k in 0..=n {
             if k + 3 <= i || k > i {
@@ -226,13 +236,22 @@ pub fn can_insert_vertex(g: &GMap, d: DartId) -> bool {
     g.contains(d) && g.dim() >= 1 && can_split_cell(g, &[d], 1)
 }
 
-/// Inserts a vertex in the edge of `d` (`mve`, CGAL's `insert_cell_0_in_cell_1`).
+/// Inserts a vertex in the edge of `d` (`mve`, CGAL's `insert_cell_0_in_cell_1`), whether
+/// or not the edge's boundary is complete (EO §3.2: the subdivider `ms^{n-1}s^n` applies to
+/// boundary-incomplete strata too).
 ///
 /// ```text
 ///   u ─────────── v      becomes      u ───── w ───── v
+///   u ─────────── ∘      becomes      u ───── w ───── ∘     (∘: the missing end)
 /// ```
-/// Precondition ([`can_insert_vertex`]): `n >= 1`, the edge has both ends (no 0-free dart)
-/// and is not folded onto itself. Effect `X_0 + X_1` (`B0 + A1`). O(edge size · n).
+/// An edge with a missing end has 0-free darts (one side only); the new vertex `w` splits it
+/// into a boundary-complete edge `u w` (the darts of `d`'s side and their new `alpha_0`
+/// partners) and a boundary-incomplete edge from `w` to the missing end (new 0-free darts):
+/// EO's `mve` on `e∞`, one more vertex, one more complete edge, the same number of
+/// incomplete ones.
+///
+/// Precondition ([`can_insert_vertex`]): `n >= 1` and the edge is not folded onto itself.
+/// Effect `X_0 + X_1` (`B0 + A1`). O(edge size · n).
 pub fn try_insert_vertex(g: &mut GMap, d: DartId) -> Result<EulerOp, EulerError> {
     live(g, d)?;
     try_split_cell(g, &[d], 1)

@@ -1,0 +1,409 @@
+//! The cubical chain complex of a full cubical set, built directly on flat arrays.
+//!
+//! A set of `L_0 × … × L_{d-1}` box cubes (a bitmap) is the union of closed unit cubes; its
+//! cells are the elementary cubes of the closure. In doubled coordinates (a grid of `2L + 1`
+//! points per axis, `2L` on a periodic axis whose ends are identified) a point is a cell whose
+//! dimension is its number of odd coordinates, and a cube with minimal vertex `x` is the
+//! point `2x + 1`. The boundary of a cell sums its two faces along each odd axis `a`, with
+//! sign `(-1)^j` for the upper face and `-(-1)^j` for the lower one, `j` the number of odd
+//! axes before `a`.
+//!
+//! Before any matrix is built, free faces are collapsed on the grid itself (an elementary
+//! collapse removes a cell with a single coface together with that coface, which keeps the
+//! homology): on solid regions this removes nearly everything, so the matrices hold only the
+//! cells that got stuck. [`cubical_complex_with`] can skip it (the plain complex, for checks).
+//!
+//! ```
+//! use gmap_homology::{cubical::cubical_complex, homology_z};
+//! // a ring of 8 squares around a hole
+//! let bits = [1, 1, 1, 1, 0, 1, 1, 1, 1];
+//! let c = cubical_complex(&[3, 3], &bits, false).unwrap();
+//! assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 1, 0]);
+//! ```
+
+#![allow(clippy::needless_range_loop)] // axes index several arrays at once
+
+use thiserror::Error;
+
+use crate::{ChainComplex, SparseMatrix};
+
+/// Why the cubical complex of a set could not be built.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum CubicalError {
+    /// The shape and the bitmap do not match, or the dimension is 0.
+    #[error("bad cubical set: {0}")]
+    BadShape(String),
+    /// The doubled grid has too many points.
+    #[error("the cubical grid of {points} cells is over the limit of {limit} cells")]
+    TooLarge {
+        /// points of the doubled grid (`None` past `u64`)
+        points: String,
+        /// the limit
+        limit: u64,
+    },
+    /// Memory could not be had.
+    #[error("cannot allocate {bytes} bytes for {what}")]
+    OutOfMemory {
+        /// what the memory was for
+        what: &'static str,
+        /// the estimate
+        bytes: u64,
+    },
+}
+
+/// A cubical chain complex with the cells its generators stand for.
+#[derive(Clone, Debug)]
+pub struct CubicalComplex {
+    /// the chain complex
+    pub chain: ChainComplex,
+    /// `cells[k][i]`: the doubled-grid point of the i-th k-cell
+    pub cells: Vec<Vec<u64>>,
+    /// points of the doubled grid per axis (`2L + 1`, or `2L` on periodic axes)
+    pub grid: Vec<usize>,
+}
+
+impl CubicalComplex {
+    /// The doubled coordinates of the i-th k-cell (odd along the axes it spans).
+    pub fn coordinates(&self, k: usize, i: usize) -> Vec<usize> {
+        let mut p = self.cells[k][i] as usize;
+        self.grid
+            .iter()
+            .map(|&n| {
+                let c = p % n;
+                p /= n;
+                c
+            })
+            .collect()
+    }
+
+    /// The i-th k-cell as a product of intervals and points of the input's coordinates
+    /// (`min` is the box's minimal vertex): `[0,1]x[2,3]x5`.
+    pub fn cell_name(&self, k: usize, i: usize, min: &[i64]) -> String {
+        let coords = self.coordinates(k, i);
+        let parts: Vec<String> = coords
+            .iter()
+            .enumerate()
+            .map(|(a, &c)| {
+                let lo = min.get(a).copied().unwrap_or(0) + (c / 2) as i64;
+                if c % 2 == 1 {
+                    format!("[{},{}]", lo, lo + 1)
+                } else {
+                    lo.to_string()
+                }
+            })
+            .collect();
+        parts.join("x")
+    }
+}
+
+/// The largest doubled grid (cells of the closed box) accepted.
+pub const MAX_GRID_POINTS: u64 = u32::MAX as u64 - 1;
+
+const PRESENT: u8 = 1;
+const QUEUED: u8 = 2;
+
+/// The doubled grid of a box.
+struct Grid {
+    n: Vec<usize>,
+    stride: Vec<usize>,
+    periodic: bool,
+    len: usize,
+}
+
+impl Grid {
+    fn coord(&self, p: usize, a: usize) -> usize {
+        (p / self.stride[a]) % self.n[a]
+    }
+
+    /// The two faces of `p` along odd axis `a` whose coordinate is `c` (lower, upper).
+    #[inline]
+    fn faces(&self, p: usize, a: usize, c: usize) -> (usize, usize) {
+        let s = self.stride[a];
+        let up = if c + 1 == self.n[a] { p - c * s } else { p + s };
+        (p - s, up)
+    }
+
+    /// The cofaces of `p` along even axis `a` whose coordinate is `c`.
+    #[inline]
+    fn cofaces(&self, p: usize, a: usize, c: usize) -> [Option<usize>; 2] {
+        let s = self.stride[a];
+        let lo = if c > 0 {
+            Some(p - s)
+        } else if self.periodic {
+            Some(p + (self.n[a] - 1) * s)
+        } else {
+            None
+        };
+        let hi = if c + 1 < self.n[a] { Some(p + s) } else { None };
+        [lo, hi]
+    }
+}
+
+/// The cubical chain complex of a set of box cubes, after collapses of free faces. `shape` is
+/// the box's number of cubes per axis, `bits` one byte a cube (non-zero: in the set), axis 0
+/// fastest. With `periodic` the box's opposite faces are identified (a d-torus of cubes).
+pub fn cubical_complex(shape: &[usize], bits: &[u8], periodic: bool) -> Result<CubicalComplex, CubicalError> {
+    cubical_complex_with(shape, bits, periodic, true)
+}
+
+/// [`cubical_complex`], with the collapses of free faces or without them (the complex of all
+/// the cells of the closure).
+pub fn cubical_complex_with(
+    shape: &[usize],
+    bits: &[u8],
+    periodic: bool,
+    collapse: bool,
+) -> Result<CubicalComplex, CubicalError> {
+    let d = shape.len();
+    if d == 0 || shape.contains(&0) {
+        return Err(CubicalError::BadShape(format!("shape {shape:?}")));
+    }
+    let volume = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s));
+    if volume != Some(bits.len()) {
+        return Err(CubicalError::BadShape(format!("{} bytes for the shape {shape:?}", bits.len())));
+    }
+    let n: Vec<usize> = shape.iter().map(|&l| if periodic { 2 * l } else { 2 * l + 1 }).collect();
+    let len = n.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64)).filter(|&v| v <= MAX_GRID_POINTS);
+    let Some(len) = len else {
+        return Err(CubicalError::TooLarge {
+            points: n.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × "),
+            limit: MAX_GRID_POINTS,
+        });
+    };
+    let len = len as usize;
+    let mut stride = vec![1usize; d];
+    for a in 1..d {
+        stride[a] = stride[a - 1] * n[a - 1];
+    }
+    let g = Grid { n, stride, periodic, len };
+    let mut state: Vec<u8> = Vec::new();
+    state.try_reserve_exact(len).map_err(|_| CubicalError::OutOfMemory { what: "the grid", bytes: len as u64 })?;
+    state.resize(len, 0);
+
+    // the cubes: doubled point 2x + 1
+    let mut x = vec![0usize; d];
+    for &b in bits {
+        if b != 0 {
+            let p: usize = (0..d).map(|a| (2 * x[a] + 1) * g.stride[a]).sum();
+            state[p] = PRESENT;
+        }
+        for a in 0..d {
+            x[a] += 1;
+            if x[a] < shape[a] {
+                break;
+            }
+            x[a] = 0;
+        }
+    }
+    // the closure: along each axis in turn, a point with an odd coordinate marks its two faces
+    for a in 0..d {
+        let (s, na) = (g.stride[a], g.n[a]);
+        let block = s * na;
+        for base in (0..len).step_by(block) {
+            for c in (1..na).step_by(2) {
+                let row = base + c * s;
+                let up = if c + 1 == na { base } else { row + s };
+                for lo in 0..s {
+                    if state[row + lo] != 0 {
+                        state[row - s + lo] = PRESENT;
+                        state[up + lo] = PRESENT;
+                    }
+                }
+            }
+        }
+    }
+    if collapse {
+        collapse_free_faces(&g, &mut state);
+    }
+    build(&g, &state)
+}
+
+/// Elementary collapses of free faces (a present cell with exactly one present coface),
+/// until none is left, on the grid itself. Each removal queues the faces of the two cells
+/// removed, whose cofaces changed.
+fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
+    let d = g.n.len();
+    let mut stack: Vec<u32> = Vec::new();
+    for p in (0..g.len).rev() {
+        if state[p] & PRESENT != 0 {
+            state[p] |= QUEUED;
+            stack.push(p as u32);
+        }
+    }
+    let mut coord = vec![0usize; d];
+    while let Some(p) = stack.pop() {
+        let p = p as usize;
+        state[p] &= !QUEUED;
+        if state[p] & PRESENT == 0 {
+            continue;
+        }
+        let mut found = None;
+        let mut count = 0;
+        for (a, c) in coord.iter_mut().enumerate() {
+            *c = g.coord(p, a);
+            if c.is_multiple_of(2) {
+                for q in g.cofaces(p, a, *c).into_iter().flatten() {
+                    if state[q] & PRESENT != 0 {
+                        count += 1;
+                        found = Some(q);
+                    }
+                }
+            }
+        }
+        if count != 1 {
+            continue;
+        }
+        let t = found.unwrap();
+        state[p] &= !PRESENT;
+        state[t] &= !PRESENT;
+        // faces of p and of t
+        for cell in [p, t] {
+            for a in 0..d {
+                let c = g.coord(cell, a);
+                if c % 2 == 1 {
+                    let (lo, up) = g.faces(cell, a, c);
+                    for q in [lo, up] {
+                        if state[q] == PRESENT {
+                            state[q] |= QUEUED;
+                            stack.push(q as u32);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Numbers the present cells per dimension in grid order and builds the boundaries.
+fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
+    let d = g.n.len();
+    let mut idx: Vec<u32> = Vec::new();
+    idx.try_reserve_exact(g.len)
+        .map_err(|_| CubicalError::OutOfMemory { what: "the cell numbers", bytes: 4 * g.len as u64 })?;
+    idx.resize(g.len, u32::MAX);
+    let mut counts = vec![0usize; d + 1];
+    let mut coord = vec![0usize; d];
+    let mut odd = 0usize;
+    let mut cells: Vec<Vec<u64>> = vec![Vec::new(); d + 1];
+    for (p, slot) in idx.iter_mut().enumerate() {
+        if state[p] & PRESENT != 0 {
+            *slot = counts[odd] as u32;
+            counts[odd] += 1;
+            cells[odd].push(p as u64);
+        }
+        for a in 0..d {
+            coord[a] += 1;
+            if coord[a] < g.n[a] {
+                // the coordinate's parity flipped
+                if coord[a] & 1 == 1 {
+                    odd += 1;
+                } else {
+                    odd -= 1;
+                }
+                break;
+            }
+            // wrapped from n_a - 1 to 0: that coordinate was odd iff n_a is even
+            if g.n[a].is_multiple_of(2) {
+                odd -= 1;
+            }
+            coord[a] = 0;
+        }
+    }
+    let mut col_ptr: Vec<Vec<usize>> = (0..=d).map(|k| Vec::with_capacity(counts[k] + 1)).collect();
+    let mut rows: Vec<Vec<u32>> = (0..=d).map(|k| Vec::with_capacity(2 * k * counts[k])).collect();
+    let mut vals: Vec<Vec<i64>> = (0..=d).map(|k| Vec::with_capacity(2 * k * counts[k])).collect();
+    for c in col_ptr.iter_mut() {
+        c.push(0);
+    }
+    let mut entries: Vec<(u32, i64)> = Vec::with_capacity(2 * d);
+    for p in 0..g.len {
+        if state[p] & PRESENT == 0 {
+            continue;
+        }
+        entries.clear();
+        let mut j = 0usize;
+        for a in 0..d {
+            let c = g.coord(p, a);
+            if c % 2 == 1 {
+                let sign = if j.is_multiple_of(2) { 1 } else { -1 };
+                j += 1;
+                let (lo, up) = g.faces(p, a, c);
+                if lo != up {
+                    entries.push((idx[lo], -sign));
+                    entries.push((idx[up], sign));
+                }
+            }
+        }
+        let k = j;
+        if k == 0 {
+            continue;
+        }
+        entries.sort_unstable_by_key(|e| e.0);
+        for &(r, v) in &entries {
+            rows[k].push(r);
+            vals[k].push(v);
+        }
+        col_ptr[k].push(rows[k].len());
+    }
+    let mut boundaries = Vec::with_capacity(d);
+    for k in 1..=d {
+        let m = SparseMatrix::try_from_csc(
+            counts[k - 1],
+            counts[k],
+            std::mem::take(&mut col_ptr[k]),
+            std::mem::take(&mut rows[k]),
+            std::mem::take(&mut vals[k]),
+        )
+        .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
+        boundaries.push(m);
+    }
+    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries)
+        .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
+    Ok(CubicalComplex { chain, cells, grid: g.n.clone() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::homology_z;
+
+    fn betti(shape: &[usize], bits: &[u8], periodic: bool) -> Vec<usize> {
+        let a = cubical_complex_with(shape, bits, periodic, false).unwrap().chain;
+        a.check_dd().unwrap();
+        let b = cubical_complex(shape, bits, periodic).unwrap().chain;
+        b.check_dd().unwrap();
+        let (ha, hb) = (homology_z(&a).unwrap(), homology_z(&b).unwrap());
+        assert_eq!(ha, hb);
+        assert!(ha.torsion.iter().all(|t| t.is_empty()));
+        ha.betti
+    }
+
+    #[test]
+    fn small_sets() {
+        assert_eq!(betti(&[1, 1], &[1], false), vec![1, 0, 0]);
+        assert_eq!(betti(&[3, 3], &[1, 1, 1, 1, 0, 1, 1, 1, 1], false), vec![1, 1, 0]);
+        assert_eq!(betti(&[2, 2], &[1, 0, 0, 1], false), vec![1, 0, 0]);
+        let mut shell = vec![1u8; 27];
+        shell[13] = 0;
+        assert_eq!(betti(&[3, 3, 3], &shell, false), vec![1, 0, 1, 0]);
+        assert_eq!(betti(&[4, 4], &[1; 16], true), vec![1, 2, 1]);
+        assert_eq!(betti(&[1, 1], &[1], true), vec![1, 2, 1]);
+        assert_eq!(betti(&[2, 1, 3], &[1; 6], true), vec![1, 3, 3, 1]);
+        assert_eq!(betti(&[3, 2], &[0; 6], false), vec![0, 0, 0]);
+    }
+
+    #[test]
+    fn random_sets_agree_with_the_plain_complex() {
+        let mut s = 12345u64;
+        for t in 0..40 {
+            let shape = if t % 2 == 0 { vec![5, 4, 3] } else { vec![7, 6] };
+            let bits: Vec<u8> = (0..shape.iter().product::<usize>())
+                .map(|_| {
+                    s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    ((s >> 33) % 100 < 55) as u8
+                })
+                .collect();
+            betti(&shape, &bits, t % 3 == 0);
+        }
+    }
+}

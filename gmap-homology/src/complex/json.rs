@@ -1,0 +1,216 @@
+//! The `.json` incidence graph / architectural complex format (CONTRACT §2).
+//!
+//! ```json
+//! {"dimension": 2,
+//!  "regions": [{"id": 0, "dim": 0}, {"id": 1, "dim": 1}, {"id": 2, "dim": 2}],
+//!  "incidence": [{"from": 2, "to": 1, "weight": 0}, {"from": 1, "to": 0, "weight": 0}]}
+//! ```
+//!
+//! `regions` are the cells (or regions), `incidence` exactly the defined entries of the
+//! partial boundary matrix: `from` a region of dimension k, `to` a lower region adhering to
+//! it, `weight` the signed incidence number (0 kept). [`read_json`] parses and validates the
+//! whole of AC Def. 3.1 through [`ArchComplex::try_new`]: a cycle, a dimension that does not
+//! decrease, a non-zero weight across a gap, duplicate ids or entries and `δ² ≠ 0` are each
+//! a distinct [`JsonError::Arch`] error naming the regions. `"dimension"` may be omitted
+//! (then the largest region dimension, 0 for no region).
+//!
+//! ```
+//! use gmap_homology::json::{read_json, write_json};
+//! let text = r#"{"dimension": 1, "regions": [{"id": 0, "dim": 0}, {"id": 1, "dim": 1}],
+//!                "incidence": [{"from": 1, "to": 0, "weight": 0}]}"#;
+//! let x = read_json(text).unwrap();
+//! assert_eq!(x.region_counts(), vec![1, 1]);
+//! assert_eq!(read_json(&write_json(&x)).unwrap(), x);
+//! ```
+//!
+//! Both directions are O(R + E) (plus the validation of Def. 3.1).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use serde_json::Value;
+use thiserror::Error;
+
+use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
+
+/// Why a `.json` text is not an architectural complex.
+#[derive(Debug, Error)]
+pub enum JsonError {
+    /// Not JSON at all.
+    #[error("line {line}, column {column}: invalid JSON: {message}")]
+    Syntax {
+        /// 1-based line
+        line: usize,
+        /// 1-based column
+        column: usize,
+        /// what the parser said
+        message: String,
+    },
+    /// A required field is missing or has the wrong type.
+    #[error("{path}: {problem}")]
+    Schema {
+        /// where, e.g. `regions[3].dim`
+        path: String,
+        /// what is wrong
+        problem: String,
+    },
+    /// The file could not be read.
+    #[error("cannot read: {0}")]
+    Io(String),
+    /// The data violates AC Def. 3.1.
+    #[error(transparent)]
+    Arch(#[from] ArchError),
+}
+
+fn schema(path: impl Into<String>, problem: impl Into<String>) -> JsonError {
+    JsonError::Schema { path: path.into(), problem: problem.into() }
+}
+
+/// Where a value sits, formatted only when an error is reported.
+#[derive(Clone, Copy)]
+struct At<'a> {
+    list: &'a str,
+    index: usize,
+}
+
+impl At<'_> {
+    fn path(self, key: &str) -> String {
+        format!("{}[{}].{key}", self.list, self.index)
+    }
+}
+
+fn field<'a>(obj: &'a Value, at: At<'_>, key: &str) -> Result<&'a Value, JsonError> {
+    let o = obj.as_object().ok_or_else(|| schema(format!("{}[{}]", at.list, at.index), "expected an object"))?;
+    o.get(key).ok_or_else(|| schema(at.path(key), "missing"))
+}
+
+fn get_u64(obj: &Value, at: At<'_>, key: &str) -> Result<u64, JsonError> {
+    let v = field(obj, at, key)?;
+    v.as_u64().ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer, found {v}")))
+}
+
+fn get_i64(obj: &Value, at: At<'_>, key: &str) -> Result<i64, JsonError> {
+    let v = field(obj, at, key)?;
+    v.as_i64().ok_or_else(|| schema(at.path(key), format!("expected an integer in the range of i64, found {v}")))
+}
+
+fn check_dim(d: u64, path: impl FnOnce() -> String) -> Result<usize, JsonError> {
+    usize::try_from(d)
+        .ok()
+        .filter(|&d| d <= 1 << 20)
+        .ok_or_else(|| schema(path(), format!("dimension {d} is too large")))
+}
+
+#[derive(Deserialize)]
+struct RawRegion {
+    id: u64,
+    dim: u64,
+}
+
+#[derive(Deserialize)]
+struct RawEntry {
+    from: u64,
+    to: u64,
+    weight: i64,
+}
+
+#[derive(Deserialize)]
+struct Raw {
+    dimension: Option<u64>,
+    regions: Vec<RawRegion>,
+    incidence: Vec<RawEntry>,
+}
+
+/// Parses and validates a `.json` architectural complex. See the module docs.
+///
+/// Well-formed input is deserialised straight into typed records (no intermediate tree);
+/// anything else is parsed again as a JSON tree to say exactly which field is wrong.
+pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
+    let raw: Raw = match serde_json::from_str(text) {
+        Ok(raw) => raw,
+        Err(_) => return read_json_slow(text),
+    };
+    let mut regions = Vec::with_capacity(raw.regions.len());
+    for (index, r) in raw.regions.iter().enumerate() {
+        let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
+        regions.push(Region { id: RegionId(r.id), dim });
+    }
+    let dim = match raw.dimension {
+        Some(d) => check_dim(d, || "dimension".to_string())?,
+        None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
+    };
+    let entries = raw.incidence.iter().map(|e| (RegionId(e.from), RegionId(e.to), e.weight)).collect();
+    Ok(ArchComplex::try_new(dim, regions, entries)?)
+}
+
+/// The tree-based reader, for its precise messages on malformed input.
+fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
+    let root: Value = serde_json::from_str(text).map_err(|e| JsonError::Syntax {
+        line: e.line(),
+        column: e.column(),
+        message: e.to_string(),
+    })?;
+    let Some(obj) = root.as_object() else {
+        return Err(schema("top level", "expected an object with \"regions\" and \"incidence\""));
+    };
+    let regs = obj.get("regions").ok_or_else(|| schema("regions", "missing"))?;
+    let regs = regs.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
+    let mut regions = Vec::with_capacity(regs.len());
+    for (index, r) in regs.iter().enumerate() {
+        let at = At { list: "regions", index };
+        let id = get_u64(r, at, "id")?;
+        let dim = check_dim(get_u64(r, at, "dim")?, || at.path("dim"))?;
+        regions.push(Region { id: RegionId(id), dim });
+    }
+    let dim = match obj.get("dimension") {
+        Some(v) => {
+            let d =
+                v.as_u64().ok_or_else(|| schema("dimension", format!("expected a non-negative integer, found {v}")))?;
+            check_dim(d, || "dimension".to_string())?
+        }
+        None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
+    };
+    let inc = obj.get("incidence").ok_or_else(|| schema("incidence", "missing"))?;
+    let inc = inc.as_array().ok_or_else(|| schema("incidence", "expected an array"))?;
+    let mut entries = Vec::with_capacity(inc.len());
+    for (index, e) in inc.iter().enumerate() {
+        let at = At { list: "incidence", index };
+        entries.push((RegionId(get_u64(e, at, "from")?), RegionId(get_u64(e, at, "to")?), get_i64(e, at, "weight")?));
+    }
+    Ok(ArchComplex::try_new(dim, regions, entries)?)
+}
+
+/// Reads and validates a `.json` file; errors name the file (and the line for syntax).
+pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
+    read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
+}
+
+/// A [`JsonError`] with the file it comes from.
+#[derive(Debug, Error)]
+#[error("{}: {error}", path.display())]
+pub struct JsonFileError {
+    /// the file
+    pub path: PathBuf,
+    /// what is wrong
+    pub error: JsonError,
+}
+
+/// Writes the complex in the `.json` format, one region or entry per line.
+pub fn write_json(x: &ArchComplex) -> String {
+    let mut s = String::with_capacity(32 * (x.regions().len() + x.entries().len()) + 64);
+    let _ = write!(s, "{{\"dimension\": {},\n \"regions\": [", x.dim());
+    for (k, r) in x.regions().iter().enumerate() {
+        let sep = if k == 0 { "" } else { ",\n  " };
+        let _ = write!(s, "{sep}{{\"id\": {}, \"dim\": {}}}", r.id, r.dim);
+    }
+    s.push_str("],\n \"incidence\": [");
+    for (k, (f, t, w)) in x.entry_ids().into_iter().enumerate() {
+        let sep = if k == 0 { "" } else { ",\n  " };
+        let _ = write!(s, "{sep}{{\"from\": {f}, \"to\": {t}, \"weight\": {w}}}");
+    }
+    s.push_str("]}\n");
+    s
+}

@@ -1,0 +1,270 @@
+//! LAR, the Linear Algebraic Representation of cell complexes (LAR lecture): every p-cell
+//! is the set of its vertices, and the *characteristic matrix* `M_p` (one row per p-cell,
+//! one column per vertex, 1 where the vertex belongs to the cell) is a [`SparseMatrix`], the
+//! engine's own.
+//! Topological queries are sparse products:
+//! * `M_{p-1} M_p^T` counts the common vertices of a (p-1)-cell and a p-cell; the *count
+//!   rule* keeps a 1 where the count equals the size of the (p-1)-cell: the unsigned
+//!   boundary `[∂_p]` ([`Lar::unsigned_boundary`]);
+//! * the nine incidence/adjacency operators `VV … FF` of a 2-complex ([`LarOp`]).
+//!
+//! From a G-map ([`Lar::from_map`]) a cell's vertex set is the set of 0-cells of its darts.
+//! On maps without multi-incidence (every unsigned incidence number 0 or 1) the unsigned
+//! boundary equals the unsigned incidence numbers of BO Def. 5. With multi-incidence the
+//! vertex-set model loses information: on the one-vertex torus both edges and the face
+//! have the vertex set `{v}`, so the two edges cannot be told apart and every incidence
+//! (really 2, signed 0) reads 1.
+//!
+//! ```
+//! use gmap_homology::lar::{characteristic_matrix, Lar};
+//! // a triangle: vertices 0, 1, 2; edges {0,1}, {1,2}, {0,2}; one face
+//! let lar = Lar::from_cells(3, vec![
+//!     characteristic_matrix(3, &[vec![0, 1], vec![1, 2], vec![0, 2]]).unwrap(),
+//!     characteristic_matrix(3, &[vec![0, 1, 2]]).unwrap(),
+//! ]).unwrap();
+//! // the face's boundary is its three edges
+//! assert_eq!(lar.unsigned_boundary(2).unwrap().to_dense(), vec![vec![1], vec![1], vec![1]]);
+//! ```
+
+use std::fmt::Write as _;
+
+use gmap_core::DenseMap;
+use thiserror::Error;
+
+use crate::engine::sparse::SparseMatrix;
+
+/// Why LAR data is malformed.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum LarError {
+    /// A vertex index is out of range.
+    #[error("cell {cell} of dimension {dim} names vertex {vertex}, but there are {vertices} vertices")]
+    VertexOutOfRange {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+        /// the vertex
+        vertex: u32,
+        /// number of vertices
+        vertices: usize,
+    },
+    /// A count does not fit (more than 2^63 entries).
+    #[error("integer overflow in a sparse product")]
+    Overflow,
+    /// `p` is out of `1..=n`.
+    #[error("no boundary of dimension {p} in a complex of dimension {n}")]
+    NoSuchDimension {
+        /// the dimension asked
+        p: usize,
+        /// the complex's dimension
+        n: usize,
+    },
+}
+
+/// The characteristic matrix of cells given by their vertex sets: row `i` has a 1 in the
+/// columns of `rows[i]` (sorted and deduplicated here). Fails if a vertex is `>= vertices`.
+/// O(nnz log + vertices).
+pub fn characteristic_matrix(vertices: usize, rows: &[Vec<u32>]) -> Result<SparseMatrix, LarError> {
+    // the transpose has the vertex sets as columns: build it, then turn it over
+    let mut col_ptr = Vec::with_capacity(rows.len() + 1);
+    col_ptr.push(0);
+    let mut row_idx = Vec::new();
+    for (i, r) in rows.iter().enumerate() {
+        let mut r = r.clone();
+        r.sort_unstable();
+        r.dedup();
+        if let Some(&v) = r.iter().find(|&&v| v as usize >= vertices) {
+            return Err(LarError::VertexOutOfRange { dim: 0, cell: i, vertex: v, vertices });
+        }
+        row_idx.extend_from_slice(&r);
+        col_ptr.push(row_idx.len());
+    }
+    let vals = vec![1; row_idx.len()];
+    let t = SparseMatrix::try_from_csc(vertices, rows.len(), col_ptr, row_idx, vals)
+        .expect("vertex sets are sorted, distinct and in range");
+    Ok(t.transpose())
+}
+
+/// `a · b`, checked. The shapes agree by construction.
+fn mul(a: &SparseMatrix, b: &SparseMatrix) -> Result<SparseMatrix, LarError> {
+    debug_assert_eq!(a.cols(), b.rows(), "shapes of a product");
+    a.checked_mul(b).ok_or(LarError::Overflow)
+}
+
+/// The number of entries in each row of `m`. O(nnz + rows).
+fn row_lengths(m: &SparseMatrix) -> Vec<usize> {
+    let mut len = vec![0usize; m.rows()];
+    for (i, _, _) in m.iter() {
+        len[i] += 1;
+    }
+    len
+}
+
+/// The nine incidence/adjacency operators of a 2-complex (LAR, Table 1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LarOp {
+    /// vertices sharing an edge with a vertex: `M_1^T M_1`
+    VV,
+    /// edges on a vertex: `M_1^T`
+    VE,
+    /// faces on a vertex: `M_2^T`
+    VF,
+    /// vertices of an edge: `M_1`
+    EV,
+    /// edges sharing a vertex: `M_1 M_1^T`
+    EE,
+    /// faces on an edge (shared vertices): `M_1 M_2^T`
+    EF,
+    /// vertices of a face: `M_2`
+    FV,
+    /// edges of a face (shared vertices): `M_2 M_1^T`
+    FE,
+    /// faces sharing vertices: `M_2 M_2^T`
+    FF,
+}
+
+impl LarOp {
+    /// All nine, in table order.
+    pub const ALL: [LarOp; 9] =
+        [LarOp::VV, LarOp::VE, LarOp::VF, LarOp::EV, LarOp::EE, LarOp::EF, LarOp::FV, LarOp::FE, LarOp::FF];
+}
+
+/// A cell complex in LAR form: the number of vertices and the characteristic matrices
+/// `M_1..M_n` (`M_0` is the identity).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Lar {
+    vertices: usize,
+    cells: Vec<SparseMatrix>,
+}
+
+impl Lar {
+    /// From characteristic matrices `cells[p - 1] = M_p`; each must have `vertices` columns.
+    pub fn from_cells(vertices: usize, cells: Vec<SparseMatrix>) -> Result<Lar, LarError> {
+        for (p, m) in cells.iter().enumerate() {
+            if m.cols() != vertices {
+                return Err(LarError::VertexOutOfRange { dim: p + 1, cell: 0, vertex: m.cols() as u32, vertices });
+            }
+        }
+        Ok(Lar { vertices, cells })
+    }
+
+    /// The vertex sets of the cells of a G-map: `M_p(c, v) = 1` when a dart of the p-cell
+    /// `c` lies in the 0-cell `v` (cells numbered as in `DenseMap::cells`). O(N n log N).
+    pub fn from_map(map: &DenseMap) -> Lar {
+        let n = map.dim();
+        let v = map.cells(0);
+        let mut cells = Vec::with_capacity(n);
+        for p in 1..=n {
+            let c = map.cells(p);
+            let mut rows: Vec<Vec<u32>> = vec![Vec::new(); c.len()];
+            for d in map.darts() {
+                rows[c.of[d.index()] as usize].push(v.of[d.index()]);
+            }
+            cells.push(characteristic_matrix(v.len(), &rows).expect("0-cell numbers are in range"));
+        }
+        Lar { vertices: v.len(), cells }
+    }
+
+    /// The dimension n.
+    pub fn dim(&self) -> usize {
+        self.cells.len()
+    }
+
+    /// The number of vertices.
+    pub fn vertices(&self) -> usize {
+        self.vertices
+    }
+
+    /// `M_p` (the identity for p = 0). Panics if `p > n`.
+    pub fn characteristic(&self, p: usize) -> SparseMatrix {
+        if p == 0 {
+            SparseMatrix::identity(self.vertices)
+        } else {
+            self.cells[p - 1].clone()
+        }
+    }
+
+    /// `M_{p-1,p} = M_{p-1} M_p^T`: entry (i, j) is the number of common vertices of the
+    /// (p-1)-cell i and the p-cell j. `1 <= p <= n`.
+    pub fn incidence(&self, p: usize) -> Result<SparseMatrix, LarError> {
+        if p == 0 || p > self.dim() {
+            return Err(LarError::NoSuchDimension { p, n: self.dim() });
+        }
+        mul(&self.characteristic(p - 1), &self.characteristic(p).transpose())
+    }
+
+    /// The unsigned boundary `[∂_p]` by the count rule: 1 where the p-cell holds every
+    /// vertex of the (p-1)-cell, i.e. `M_{p-1,p}(i, j) = #μ_i`. Rows: (p-1)-cells;
+    /// columns: p-cells. O(cost of the product).
+    pub fn unsigned_boundary(&self, p: usize) -> Result<SparseMatrix, LarError> {
+        let m = self.incidence(p)?;
+        let size = row_lengths(&self.characteristic(p - 1));
+        let mut col_ptr = vec![0usize];
+        let mut row_idx = Vec::new();
+        for j in 0..m.cols() {
+            let (r, v) = m.col(j);
+            row_idx.extend(r.iter().zip(v).filter(|&(&i, &x)| x == size[i as usize] as i64).map(|(&i, _)| i));
+            col_ptr.push(row_idx.len());
+        }
+        let vals = vec![1; row_idx.len()];
+        Ok(SparseMatrix::try_from_csc(m.rows(), m.cols(), col_ptr, row_idx, vals).expect("a subset of a valid matrix"))
+    }
+
+    /// One of the nine operators of LAR Table 1 (needs n >= 2; `M_2` is the 2-cells).
+    pub fn operator(&self, op: LarOp) -> Result<SparseMatrix, LarError> {
+        if self.dim() < 2 {
+            return Err(LarError::NoSuchDimension { p: 2, n: self.dim() });
+        }
+        let m1 = &self.cells[0];
+        let m2 = &self.cells[1];
+        Ok(match op {
+            LarOp::VV => mul(&m1.transpose(), m1)?,
+            LarOp::VE => m1.transpose(),
+            LarOp::VF => m2.transpose(),
+            LarOp::EV => m1.clone(),
+            LarOp::EE => mul(m1, &m1.transpose())?,
+            LarOp::EF => mul(m1, &m2.transpose())?,
+            LarOp::FV => m2.clone(),
+            LarOp::FE => mul(m2, &m1.transpose())?,
+            LarOp::FF => mul(m2, &m2.transpose())?,
+        })
+    }
+
+    /// The `.lar.json` text: `{"dimension": n, "vertices": k0, "cells": [CV_1, …, CV_n],
+    /// "boundary": [∂_1, …, ∂_n]}` where `CV_p` lists the vertex set of every p-cell and
+    /// `∂_p` lists, for every p-cell, the (p-1)-cells of its unsigned boundary.
+    pub fn to_json(&self) -> Result<String, LarError> {
+        let mut s = format!("{{\"dimension\": {}, \"vertices\": {},\n \"cells\": [", self.dim(), self.vertices);
+        // one list per column of `m`
+        let list = |s: &mut String, m: &SparseMatrix| {
+            s.push('[');
+            for i in 0..m.cols() {
+                if i > 0 {
+                    s.push_str(", ");
+                }
+                let (c, _) = m.col(i);
+                s.push('[');
+                for (k, j) in c.iter().enumerate() {
+                    let _ = write!(s, "{}{j}", if k == 0 { "" } else { ", " });
+                }
+                s.push(']');
+            }
+            s.push(']');
+        };
+        for (p, m) in self.cells.iter().enumerate() {
+            if p > 0 {
+                s.push_str(",\n  ");
+            }
+            list(&mut s, &m.transpose());
+        }
+        s.push_str("],\n \"boundary\": [");
+        for p in 1..=self.dim() {
+            if p > 1 {
+                s.push_str(",\n  ");
+            }
+            list(&mut s, &self.unsigned_boundary(p)?);
+        }
+        s.push_str("]}\n");
+        Ok(s)
+    }
+}

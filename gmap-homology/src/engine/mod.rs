@@ -1,0 +1,10 @@
+//! The homology engine: groups and generators of any chain complex over `Z` or `Z/p`, knowing nothing of where its cells came from.
+
+pub mod chain;
+pub mod generators;
+pub mod homology;
+pub(crate) mod morse;
+pub(crate) mod reduce;
+pub(crate) mod ring;
+pub(crate) mod snf;
+pub mod sparse;

@@ -1,0 +1,277 @@
+//! Legacy VTK unstructured grids (`.vtk`, write only; docs/FORMATS.md §2).
+//!
+//! ```text
+//! # vtk DataFile Version 3.0
+//! gmap: a 3-map, 8 vertices, 1 volume
+//! ASCII
+//! DATASET UNSTRUCTURED_GRID
+//! POINTS 8 double
+//! 0 0 0
+//! …
+//! CELLS 1 31
+//! 30 6 4 0 1 3 2 …          a polyhedron: its face stream
+//! CELL_TYPES 1
+//! 42
+//! CELL_DATA 1
+//! SCALARS dim int 1
+//! LOOKUP_TABLE default
+//! 3
+//! ```
+//!
+//! One point per 0-cell (numbered by the 0-cells' smallest darts), the point of a dart of the
+//! vertex ([`DenseMap::vertex_point`]). The cells are the map's top cells: a 3-map's volumes
+//! as polyhedra (`VTK_POLYHEDRON` 42, each cell the face stream `nFaces, nPts, ids…, …`), a
+//! 2-map's faces as polygons (`VTK_POLYGON` 7), a 1-map's edges as lines (`VTK_LINE` 3), a
+//! 0-map's vertices as `VTK_VERTEX` 1. The corners of a polygon follow `alpha_1 alpha_0`
+//! from a dart; the faces of a polyhedron are all walked from darts of one orientation class
+//! of the volume and reversed together when the volume's signed volume is negative, so an
+//! orientable volume has outward normals. `CELL_DATA` holds the cell dimension (`dim`).
+//! Maps of dimension above 3, maps without points, and points that are not finite are
+//! refused.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use gmap_core::{AlphaSet, Dart, DenseMap, Point};
+
+use super::{write_atomic, ExportError};
+
+const VTK_VERTEX: u8 = 1;
+const VTK_LINE: u8 = 3;
+const VTK_POLYGON: u8 = 7;
+const VTK_POLYHEDRON: u8 = 42;
+
+/// The corners (0-cell numbers) of the polygon walked by `alpha_1 alpha_0` from `d`.
+fn polygon(map: &DenseMap, vert: &[u32], d: Dart) -> Vec<u32> {
+    let mut corners = Vec::new();
+    let mut x = d;
+    loop {
+        corners.push(vert[x.index()]);
+        x = map.alpha(map.alpha(x, 0), 1);
+        if x == d {
+            return corners;
+        }
+    }
+}
+
+/// Six times the signed volume enclosed by the faces (each a fan of triangles).
+fn signed_volume6(faces: &[Vec<u32>], pts: &[Point]) -> f64 {
+    let mut v = 0.0;
+    for f in faces {
+        let a = pts[f[0] as usize];
+        for k in 1..f.len().saturating_sub(1) {
+            let (b, c) = (pts[f[k] as usize], pts[f[k + 1] as usize]);
+            v += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                + a[2] * (b[0] * c[1] - b[1] * c[0]);
+        }
+    }
+    v
+}
+
+/// The legacy VTK text of a map of dimension at most 3 with points (see the module
+/// documentation). O(N) plus the text.
+pub fn vtk_string(map: &DenseMap) -> Result<String, ExportError> {
+    let n = map.dim();
+    if n > 3 {
+        return Err(ExportError::DimensionAbove { format: ".vtk", max: 3, found: n });
+    }
+    if map.dart_count() > 0 && !map.has_points() {
+        return Err(ExportError::NoPoints { format: ".vtk" });
+    }
+    let verts = map.cells(0);
+    let mut pts: Vec<Point> = Vec::with_capacity(verts.len());
+    for &Dart(r) in &verts.reps {
+        let p =
+            map.vertex_point(Dart(r)).ok_or(ExportError::VertexPoint { format: ".vtk", dart: r, what: "no point" })?;
+        if !p.iter().all(|c| c.is_finite()) {
+            return Err(ExportError::VertexPoint { format: ".vtk", dart: r, what: "a point that is not finite" });
+        }
+        pts.push(p);
+    }
+    let vert = &verts.of;
+    // each top cell as its VTK connectivity list (without the leading count)
+    let mut cells: Vec<Vec<u32>> = Vec::new();
+    let kind = match n {
+        0 => {
+            cells.extend((0..verts.len() as u32).map(|v| vec![v]));
+            VTK_VERTEX
+        }
+        1 => {
+            for &d in &map.cells(1).reps {
+                cells.push(vec![vert[d.index()], vert[map.alpha(d, 0).index()]]);
+            }
+            VTK_LINE
+        }
+        2 => {
+            for &d in &map.cells(2).reps {
+                cells.push(polygon(map, vert, d));
+            }
+            VTK_POLYGON
+        }
+        _ => {
+            // orientation classes: parity of the number of involutions from the volume's
+            // smallest dart (BFS over alpha_0, alpha_1, alpha_2)
+            let vols = map.cells(3);
+            let faces = map.partition(AlphaSet::of(&[0, 1]));
+            let mut parity = vec![u8::MAX; map.dart_count()];
+            let mut face_done = vec![false; faces.len()];
+            for &r in &vols.reps {
+                let mut stack = vec![r];
+                parity[r.index()] = 0;
+                let mut polys: Vec<Vec<u32>> = Vec::new();
+                while let Some(d) = stack.pop() {
+                    let f = faces.of[d.index()] as usize;
+                    if parity[d.index()] == 0 && !face_done[f] {
+                        face_done[f] = true;
+                        polys.push(polygon(map, vert, d));
+                    }
+                    for i in 0..3 {
+                        let e = map.alpha(d, i);
+                        if parity[e.index()] == u8::MAX {
+                            parity[e.index()] = 1 - parity[d.index()];
+                            stack.push(e);
+                        }
+                    }
+                }
+                // outward normals for an orientable volume (its faces are walked consistently)
+                if signed_volume6(&polys, &pts) < 0.0 {
+                    for p in &mut polys {
+                        p.reverse();
+                    }
+                }
+                let mut stream = vec![polys.len() as u32];
+                for p in polys {
+                    stream.push(p.len() as u32);
+                    stream.extend(p);
+                }
+                cells.push(stream);
+            }
+            VTK_POLYHEDRON
+        }
+    };
+    let mut out = String::with_capacity(64 + pts.len() * 24 + cells.iter().map(|c| c.len() * 6).sum::<usize>());
+    let _ = writeln!(out, "# vtk DataFile Version 3.0");
+    let _ = writeln!(out, "gmap: a {n}-map, {} vertices, {} top cells", pts.len(), cells.len());
+    let _ = writeln!(out, "ASCII\nDATASET UNSTRUCTURED_GRID");
+    let _ = writeln!(out, "POINTS {} double", pts.len());
+    for p in &pts {
+        let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
+    }
+    let size: usize = cells.iter().map(|c| c.len() + 1).sum();
+    let _ = writeln!(out, "CELLS {} {size}", cells.len());
+    for c in &cells {
+        let _ = write!(out, "{}", c.len());
+        for v in c {
+            let _ = write!(out, " {v}");
+        }
+        out.push('\n');
+    }
+    let _ = writeln!(out, "CELL_TYPES {}", cells.len());
+    for _ in &cells {
+        let _ = writeln!(out, "{kind}");
+    }
+    let _ = writeln!(out, "CELL_DATA {}", cells.len());
+    let _ = writeln!(out, "SCALARS dim int 1\nLOOKUP_TABLE default");
+    for _ in &cells {
+        let _ = writeln!(out, "{n}");
+    }
+    Ok(out)
+}
+
+/// Writes a map as legacy VTK (see [`vtk_string`]); nothing is written when it is refused.
+pub fn write_vtk(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
+    write_atomic(path, vtk_string(map)?.as_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::build;
+
+    fn prism(k: usize) -> DenseMap {
+        build::extrude(&build::polygon(k).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn a_cube_is_one_hexahedral_polyhedron_with_outward_faces() {
+        let m = prism(4);
+        assert_eq!(m.dim(), 3);
+        let text = vtk_string(&m).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], "# vtk DataFile Version 3.0");
+        assert_eq!(lines[2], "ASCII");
+        assert_eq!(lines[3], "DATASET UNSTRUCTURED_GRID");
+        assert_eq!(lines[4], "POINTS 8 double");
+        assert_eq!(lines[13], "CELLS 1 32");
+        let cell: Vec<u32> = lines[14].split(' ').map(|x| x.parse().unwrap()).collect();
+        assert_eq!(cell[0], 31);
+        assert_eq!(cell[1], 6);
+        assert_eq!(&lines[15..17], &["CELL_TYPES 1", "42"]);
+        assert_eq!(&lines[17..], &["CELL_DATA 1", "SCALARS dim int 1", "LOOKUP_TABLE default", "3"]);
+        // six quadrilaterals, every point used by three of them, positive volume
+        let pts: Vec<Point> = lines[5..13]
+            .iter()
+            .map(|l| {
+                let v: Vec<f64> = l.split(' ').map(|x| x.parse().unwrap()).collect();
+                [v[0], v[1], v[2]]
+            })
+            .collect();
+        let mut faces = Vec::new();
+        let mut k = 2;
+        for _ in 0..6 {
+            assert_eq!(cell[k], 4);
+            faces.push(cell[k + 1..k + 5].to_vec());
+            k += 5;
+        }
+        for v in 0..8 {
+            assert_eq!(faces.iter().filter(|f| f.contains(&v)).count(), 3);
+        }
+        // the unit-circle square extruded by 1 has area 2 and volume 2
+        assert!((signed_volume6(&faces, &pts) / 6.0 - 2.0).abs() < 1e-9);
+        // each edge is used once in each direction (consistently oriented faces)
+        let mut dir_edges = Vec::new();
+        for f in &faces {
+            for j in 0..4 {
+                dir_edges.push((f[j], f[(j + 1) % 4]));
+            }
+        }
+        for &(a, b) in &dir_edges {
+            assert!(dir_edges.contains(&(b, a)));
+            assert_eq!(dir_edges.iter().filter(|&&e| e == (a, b)).count(), 1);
+        }
+    }
+
+    #[test]
+    fn polygons_lines_and_refusals() {
+        let sq = build::polygon(4).unwrap();
+        let text = vtk_string(&sq).unwrap();
+        assert!(text.contains("POINTS 4 double\n"));
+        assert!(text.contains("CELLS 1 5\n4 0 1 2 3\n") || text.contains("CELLS 1 5\n4 0 3 2 1\n"), "{text}");
+        assert!(text.contains("CELL_TYPES 1\n7\n"));
+        assert!(text.ends_with("SCALARS dim int 1\nLOOKUP_TABLE default\n2\n"));
+        let e = vtk_string(&build::cube(3).unwrap()).unwrap_err();
+        assert_eq!(e.to_string(), "the map has no points: .vtk needs coordinates for every vertex");
+        assert!(matches!(vtk_string(&DenseMap::new(4, 1)), Err(ExportError::DimensionAbove { .. })));
+        let mut half = sq.clone();
+        half.set_point(Dart(0), None);
+        half.set_point(Dart(7), None);
+        half.set_point(Dart(4), Some([f64::NAN, 0.0, 0.0]));
+        assert_eq!(
+            vtk_string(&half).unwrap_err().to_string(),
+            "the vertex of dart 0 has no point: .vtk needs finite coordinates for every vertex"
+        );
+        // a 1-map: the square's boundary
+        let mut c = DenseMap::new(1, 4);
+        for (a, b) in [(0, 1), (2, 3)] {
+            c.link(Dart(a), Dart(b), 0);
+        }
+        c.link(Dart(1), Dart(2), 1);
+        c.link(Dart(3), Dart(0), 1);
+        for d in 0..4 {
+            c.set_point(Dart(d), Some([d as f64, 0.0, 0.0]));
+        }
+        let text = vtk_string(&c).unwrap();
+        assert!(text.contains("POINTS 2 double\n"), "{text}");
+        assert!(text.contains("CELLS 2 6\n2 0 1\n2 1 0\nCELL_TYPES 2\n3\n3\n"), "{text}");
+    }
+}

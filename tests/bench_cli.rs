@@ -1,0 +1,179 @@
+//! `gmap bench` end to end: the JSON is one object whose groups are those of
+//! `gmap homology`, the CSV has a header and one line per row, folders are expanded sorted,
+//! an unreadable input is exit 1 and bad usage exit 2, and a route that does not apply is a
+//! row that says so.
+
+mod common;
+use common::{gmap, lutz, stderr};
+use std::path::PathBuf;
+use std::process::Command;
+
+use serde_json::Value;
+
+const FILES: [&str; 3] = ["Barnette_sphere.facets", "d2n12g6.facets", "B_3_9_18.facets"];
+
+fn homology(file: &str, method: &str) -> Value {
+    let o = gmap(&["homology", file, "--json", "--method", method]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn json_groups_are_those_of_homology() {
+    let files: Vec<String> = FILES.iter().map(|f| lutz(f)).collect();
+    let mut args = vec!["bench", "--json", "--no-gudhi"];
+    args.extend(files.iter().map(String::as_str));
+    let o = gmap(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(o.stderr.is_empty(), "stderr is not a terminal: silent ({})", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 2 * files.len());
+    for (k, f) in files.iter().enumerate() {
+        for (j, method) in ["cellular", "simplicial"].iter().enumerate() {
+            let r = &rows[2 * k + j];
+            assert_eq!(r["input"], f.as_str());
+            assert_eq!(r["route"], *method);
+            let h = homology(f, method);
+            assert_eq!(r["betti"], h["betti"], "{f} {method}");
+            assert_eq!(r["torsion"], h["torsion"], "{f} {method}");
+            assert_eq!(r["agree"], true);
+            assert_eq!(r["gudhi_ms"], Value::Null);
+            assert_eq!(r["ratio"], Value::Null);
+            let cells = r["cells"].as_array().unwrap();
+            assert_eq!(cells.len(), h["betti"].as_array().unwrap().len());
+            for key in ["read", "border", "reduction", "total"] {
+                assert!(r["times_ms"][key].as_f64().unwrap() >= 0.0, "{key}");
+            }
+        }
+    }
+    // the cellular cells of a .facets input are its simplices
+    assert_eq!(rows[0]["cells"], serde_json::json!([8, 27, 38, 19]));
+    assert_eq!(rows[2]["groups"], "(Z, Z^12, Z)");
+}
+
+#[test]
+fn csv_and_markdown_have_one_line_per_row() {
+    let f = lutz("Barnette_sphere.facets");
+    let o = gmap(&["bench", "--csv", "--no-gudhi", &f]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 3, "{text}");
+    assert!(lines[0].starts_with("input,route,cells,read_ms,"), "{text}");
+    assert!(lines[1].contains(",cellular,8 27 38 19,"), "{text}");
+    assert!(lines[1].contains("\"(Z, 0, 0, Z)\""), "{text}");
+    assert!(lines[2].contains(",simplicial,"), "{text}");
+    let o = gmap(&["bench", "--no-gudhi", &f]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(text.lines().count(), 4, "{text}");
+    assert!(text.starts_with("| input | route |"), "{text}");
+    assert!(text.contains("(Z, 0, 0, Z)"), "{text}");
+}
+
+#[test]
+fn a_folder_is_its_supported_files_sorted() {
+    let dir = tempfile::tempdir().unwrap();
+    for f in ["d2n12g6.facets", "Barnette_sphere.facets"] {
+        std::fs::copy(lutz(f), dir.path().join(f)).unwrap();
+    }
+    std::fs::write(dir.path().join("notes.txt"), "not an input").unwrap();
+    let m = gmap_ops::build::cube(3).unwrap();
+    gmap_core::io::write_gmap(&m, dir.path().join("cube.gmap")).unwrap();
+    let o = gmap(&["bench", "--json", "--no-gudhi", dir.path().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let inputs: Vec<PathBuf> =
+        v["rows"].as_array().unwrap().iter().map(|r| PathBuf::from(r["input"].as_str().unwrap())).collect();
+    let names: Vec<&str> = inputs.iter().map(|p| p.file_name().unwrap().to_str().unwrap()).collect();
+    assert_eq!(
+        names,
+        [
+            "Barnette_sphere.facets",
+            "Barnette_sphere.facets",
+            "cube.gmap",
+            "cube.gmap",
+            "d2n12g6.facets",
+            "d2n12g6.facets"
+        ]
+    );
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows[2]["groups"], "(Z, 0, 0, 0)");
+    assert_eq!(rows[2]["cells"], serde_json::json!([8, 12, 6, 1]));
+}
+
+#[test]
+fn a_route_that_does_not_apply_is_a_row() {
+    // a segment with a free end: a 1-map whose 0-cell fails C1 or C2... use a loose dart pair
+    let dir = tempfile::tempdir().unwrap();
+    let mut m = gmap_core::DenseMap::new(2, 2);
+    m.link(gmap_core::Dart(0), gmap_core::Dart(1), 1);
+    let p = dir.path().join("odd.gmap");
+    gmap_core::io::write_gmap(&m, &p).unwrap();
+    let cell = gmap(&["homology", p.to_str().unwrap()]);
+    let o = gmap(&["bench", "--json", p.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    if cell.status.success() {
+        assert_eq!(rows[0]["error"], Value::Null);
+    } else {
+        assert!(rows[0]["error"].as_str().unwrap().starts_with("does not apply"), "{v}");
+        assert_eq!(rows[0]["betti"], Value::Null);
+    }
+    assert_eq!(rows[1]["betti"], homology(p.to_str().unwrap(), "simplicial")["betti"]);
+}
+
+#[test]
+fn errors_and_usage() {
+    let dir = tempfile::tempdir().unwrap();
+    let missing = dir.path().join("missing.facets");
+    let o = gmap(&["bench", missing.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.is_empty());
+    assert!(stderr(&o).starts_with("error: "), "{}", stderr(&o));
+    let bad = dir.path().join("bad.facets");
+    std::fs::write(&bad, "1 2 x\n").unwrap();
+    let o = gmap(&["bench", "--json", &lutz("Barnette_sphere.facets"), bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.is_empty());
+    // in a folder, the unreadable file is a row and the others are run
+    let folder = tempfile::tempdir().unwrap();
+    std::fs::copy(&bad, folder.path().join("bad.facets")).unwrap();
+    std::fs::copy(lutz("Barnette_sphere.facets"), folder.path().join("a.facets")).unwrap();
+    let o = gmap(&["bench", "--json", "--no-gudhi", folder.path().to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert_eq!(rows[2]["route"], "read");
+    assert!(rows[2]["error"].as_str().unwrap().starts_with("cannot read: "), "{v}");
+    assert_eq!(rows[2]["betti"], Value::Null);
+    let empty = tempfile::tempdir().unwrap();
+    let o = gmap(&["bench", empty.path().to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(gmap(&["bench"]).status.code(), Some(2));
+    assert_eq!(gmap(&["bench", "--json", "--csv", &lutz("Barnette_sphere.facets")]).status.code(), Some(2));
+    assert_eq!(gmap(&["bench", "--max-darts", "x", &lutz("Barnette_sphere.facets")]).status.code(), Some(2));
+    let o = gmap(&["bench", "--max-darts", "10", &lutz("Barnette_sphere.facets")]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("--max-darts"), "{}", stderr(&o));
+}
+
+#[test]
+fn gudhi_column_when_available() {
+    let has_gudhi = Command::new("python3").args(["-c", "import gudhi"]).output().is_ok_and(|o| o.status.success());
+    let f = lutz("Barnette_sphere.facets");
+    let o = gmap(&["bench", "--json", &f]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let r = &v["rows"][0];
+    if has_gudhi {
+        assert!(r["gudhi_ms"].as_f64().unwrap() > 0.0, "{v}");
+        assert!(r["ratio"].as_f64().unwrap() > 0.0, "{v}");
+    } else {
+        assert_eq!(r["gudhi_ms"], Value::Null);
+    }
+    assert_eq!(v["rows"][1]["gudhi_ms"], Value::Null);
+}

@@ -1,0 +1,117 @@
+//! Cubical sets through the `gmap` binary: `.cub` and `.pbm`, `--periodic`, refusals.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn data(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/cubical").join(name).to_str().unwrap().to_string()
+}
+
+fn gmap(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Betti numbers and torsion of `gmap homology FILE --json EXTRA…`.
+fn betti(file: &str, extra: &[&str]) -> (Vec<u64>, serde_json::Value) {
+    let mut args = vec!["homology", file, "--json"];
+    args.extend_from_slice(extra);
+    let (code, out, err) = gmap(&args);
+    assert_eq!(code, 0, "{file}: {err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let b = v["betti"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect();
+    (b, v)
+}
+
+#[test]
+fn exact_groups() {
+    assert_eq!(betti(&data("square.cub"), &[]).0, vec![1, 0, 0]);
+    // negative coordinates, comments, `dimension` lines, a duplicate cube
+    assert_eq!(betti(&data("ring.cub"), &[]).0, vec![1, 1, 0]);
+    // closed squares touching at a corner: one component
+    assert_eq!(betti(&data("corner.cub"), &[]).0, vec![1, 0, 0]);
+    let (b, v) = betti(&data("shell.cub"), &[]);
+    assert_eq!(b, vec![1, 0, 1, 0]);
+    assert_eq!(v["dimension"], 3);
+    assert_eq!(v["euler_characteristic"], 2);
+    assert_eq!(betti(&data("box.cub"), &[]).0, vec![1, 0, 0]);
+    assert_eq!(betti(&data("box.cub"), &["--periodic"]).0, vec![1, 2, 1]);
+    assert_eq!(betti(&data("shell.cub"), &["--field", "2"]).0, vec![1, 0, 1, 0]);
+}
+
+#[test]
+fn pbm_p1_and_p4_agree() {
+    let (a, va) = betti(&data("annulus_p1.pbm"), &[]);
+    let (b, vb) = betti(&data("annulus_p4.pbm"), &[]);
+    assert_eq!(a, vec![1, 1, 0]);
+    assert_eq!(a, b);
+    assert_eq!(va, vb);
+    // the whole 5 x 4 image box glued into a torus
+    let (p, _) = betti(&data("annulus_p1.pbm"), &["--periodic"]);
+    let (q, _) = betti(&data("annulus_p4.pbm"), &["--periodic"]);
+    assert_eq!(p, q);
+}
+
+#[test]
+fn generators_name_cubical_cells() {
+    let (code, out, err) = gmap(&["homology", &data("ring.cub"), "--generators"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("H_1 = Z"), "{out}");
+    assert!(out.contains("generator of H_1 (Z):"), "{out}");
+    assert!(out.contains("x"), "{out}");
+}
+
+#[test]
+fn info_on_a_cubical_set() {
+    let (code, out, err) = gmap(&["info", &data("shell.cub"), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["kind"], "cubical set");
+    assert_eq!(v["cubes"], 26);
+    assert_eq!(v["cells"], serde_json::json!([64, 144, 108, 26]));
+    assert_eq!(v["euler_characteristic"], 2);
+    let (code, out, _) = gmap(&["info", &data("box.cub"), "--periodic"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("euler characteristic  0"), "{out}");
+}
+
+#[test]
+fn malformed_inputs_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let long = "9".repeat(500);
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        ("mixed.cub", b"(0,0)\n(1,2,3)\n".to_vec(), "line 2"),
+        ("word.cub", b"(0,0)\n(1,x)\n".to_vec(), "line 2"),
+        ("noparen.cub", b"0 0\n".to_vec(), "line 1"),
+        ("long.cub", format!("(0,{long})\n").into_bytes(), "line 1"),
+        ("empty.cub", b"; nothing\ndimension 2\n".to_vec(), "no cube"),
+        ("huge.cub", b"(0,0,0)\n(100000,100000,100000)\n".to_vec(), "bounding box"),
+        ("magic.pbm", b"P3\n1 1\n1\n".to_vec(), "magic"),
+        ("short1.pbm", b"P1\n3 2\n1 0 1\n0\n".to_vec(), "too short"),
+        ("short4.pbm", b"P4\n9 2\n\xff\xff\xff".to_vec(), "too short"),
+        ("header.pbm", b"P1\n3 -2\n".to_vec(), "height"),
+        ("pixel.pbm", b"P1\n2 1\n1 2\n".to_vec(), "pixel"),
+    ];
+    for (name, bytes, what) in cases {
+        let p = dir.path().join(name);
+        std::fs::write(&p, &bytes).unwrap();
+        let p = p.to_str().unwrap();
+        let (code, out, err) = gmap(&["homology", p]);
+        assert_eq!(code, 1, "{name}: {err}");
+        assert!(out.is_empty());
+        assert!(err.starts_with("error: "), "{name}: {err}");
+        assert!(err.contains(name), "{name}: {err}");
+        assert!(err.contains(what), "{name}: {err}");
+        assert!(err.len() < 300, "{name}: {err}");
+    }
+    // --periodic is for cubical sets only
+    let p = dir.path().join("t.facets");
+    std::fs::write(&p, "0 1 2\n").unwrap();
+    let (code, _, err) = gmap(&["homology", p.to_str().unwrap(), "--periodic"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("--periodic"), "{err}");
+}

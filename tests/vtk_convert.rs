@@ -1,0 +1,105 @@
+//! `gmap convert X.gmap OUT.vtk` end to end: legacy VTK unstructured grids of maps with
+//! points (polyhedra for 3-maps, polygons for 2-maps), refusals of maps without points, and
+//! a read-back of the polygons by meshio when python3 has it (its legacy reader has no
+//! polyhedra).
+
+mod common;
+use common::{gmap, p, stderr};
+use std::path::Path;
+use std::process::Command;
+
+/// The values after the line that starts with `key` (`CELLS 2 64` gives `[2, 64]`).
+fn header(text: &str, key: &str) -> Vec<String> {
+    let line = text.lines().find(|l| l.starts_with(key)).unwrap_or_else(|| panic!("no {key} in {text}"));
+    line[key.len()..].split_whitespace().map(str::to_string).collect()
+}
+
+#[test]
+fn a_cube_is_one_polyhedron() {
+    let dir = tempfile::tempdir().unwrap();
+    let cube = gmap_ops::build::extrude(&gmap_ops::build::polygon(4).unwrap()).unwrap();
+    let g = dir.path().join("cube.moka");
+    gmap_core::io::write_moka(&cube, &g).unwrap();
+    let out = dir.path().join("cube.vtk");
+    let o = gmap(&["convert", p(&g), p(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "# vtk DataFile Version 3.0");
+    assert_eq!(lines[2..4], ["ASCII", "DATASET UNSTRUCTURED_GRID"]);
+    assert_eq!(header(&text, "POINTS "), ["8", "double"]);
+    // one polyhedron: 6 faces of 4 points, its face stream 1 + 6 * 5 = 31 integers
+    assert_eq!(header(&text, "CELLS "), ["1", "32"]);
+    assert_eq!(header(&text, "CELL_TYPES "), ["1"]);
+    assert_eq!(header(&text, "CELL_DATA "), ["1"]);
+    assert!(text.contains("\nCELL_TYPES 1\n42\n"), "{text}");
+    assert!(text.ends_with("SCALARS dim int 1\nLOOKUP_TABLE default\n3\n"), "{text}");
+    // the face stream: 6 faces of 4 distinct points among the 8, each point in 3 faces
+    let stream: Vec<usize> = lines[lines.iter().position(|l| l.starts_with("CELLS ")).unwrap() + 1]
+        .split(' ')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert_eq!(stream[..2], [31, 6]);
+    let faces: Vec<&[usize]> = stream[2..].chunks(5).map(|f| &f[1..]).collect();
+    assert!(stream[2..].chunks(5).all(|f| f[0] == 4));
+    for v in 0..8 {
+        assert_eq!(faces.iter().filter(|f| f.contains(&v)).count(), 3);
+    }
+    // (meshio's legacy reader has no polyhedra: no read-back here)
+}
+
+#[test]
+fn a_prism_surface_is_polygons() {
+    let dir = tempfile::tempdir().unwrap();
+    // the surface of a cube, from an .off
+    let off = dir.path().join("box.off");
+    std::fs::write(
+        &off,
+        "OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n\
+         4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n",
+    )
+    .unwrap();
+    let out = dir.path().join("box.vtk");
+    let o = gmap(&["convert", p(&off), p(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(header(&text, "POINTS "), ["8", "double"]);
+    assert_eq!(header(&text, "CELLS "), ["6", "30"]);
+    let types: Vec<&str> = text.split("CELL_TYPES 6\n").nth(1).unwrap().lines().take(6).collect();
+    assert_eq!(types, ["7"; 6]);
+    assert!(text.ends_with("LOOKUP_TABLE default\n2\n2\n2\n2\n2\n2\n"), "{text}");
+    meshio_reads(&out, 8, &[("polygon", 6)]);
+}
+
+#[test]
+fn maps_without_points_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let g = dir.path().join("cube.gmap");
+    gmap_core::io::write_gmap(&gmap_ops::build::cube(3).unwrap(), &g).unwrap();
+    let out = dir.path().join("cube.vtk");
+    let o = gmap(&["convert", p(&g), p(&out)]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).starts_with("error: "), "{}", stderr(&o));
+    assert!(stderr(&o).contains("no points"), "{}", stderr(&o));
+    assert!(!out.exists());
+}
+
+/// Reads the file with meshio when python3 has it (nothing otherwise): the point count and
+/// the cell blocks (meshio names VTK type 7 `polygon`).
+fn meshio_reads(path: &Path, points: usize, blocks: &[(&str, usize)]) {
+    let has = Command::new("python3").args(["-c", "import meshio"]).output().is_ok_and(|o| o.status.success());
+    if !has {
+        return;
+    }
+    let script = "import sys, meshio\nm = meshio.read(sys.argv[1])\nprint(len(m.points))\n\
+                  print(' '.join(f'{c.type}:{len(c.data)}' for c in m.cells))";
+    let o = Command::new("python3").args(["-c", script, p(path)]).output().unwrap();
+    assert!(o.status.success(), "meshio: {}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next().unwrap(), points.to_string());
+    let got = lines.next().unwrap_or("");
+    for (kind, count) in blocks {
+        assert!(got.split(' ').any(|b| b.starts_with(kind) && b.ends_with(&format!(":{count}"))), "{got}");
+    }
+}
