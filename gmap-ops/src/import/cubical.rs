@@ -19,7 +19,7 @@ use std::path::Path;
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{FileError, ImportError};
+use super::{read_bytes, FileError, ImportError};
 
 /// The largest bounding box accepted, in unit cubes (one byte each in the bitmap).
 pub const MAX_BOX_CUBES: u64 = 1 << 30;
@@ -147,18 +147,6 @@ pub fn read_cub(path: &Path) -> Result<CubicalSet, FileError> {
 pub fn read_pbm(path: &Path) -> Result<CubicalSet, FileError> {
     let bytes = read_bytes(path)?;
     parse_pbm(&bytes).map_err(|e| FileError::new(path, e))
-}
-
-fn read_bytes(path: &Path) -> Result<Vec<u8>, FileError> {
-    use std::io::Read as _;
-    let mut f = std::fs::File::open(path).map_err(|e| FileError::new(path, e.into()))?;
-    let size = f.metadata().map(|m| m.len()).unwrap_or(0);
-    let mut bytes = Vec::new();
-    if bytes.try_reserve_exact(usize::try_from(size).unwrap_or(usize::MAX)).is_err() {
-        return Err(FileError::new(path, ImportError::OutOfMemory { what: "the file".into(), bytes: size }));
-    }
-    f.read_to_end(&mut bytes).map_err(|e| FileError::new(path, e.into()))?;
-    Ok(bytes)
 }
 
 fn syntax(line: usize, message: String) -> ImportError {

@@ -147,10 +147,9 @@ fn fmt_list<T: fmt::Display>(xs: &[T]) -> String {
     format!("[{}]", parts.join(", "))
 }
 
-/// Reads a whole text file: the buffer is reserved fallibly (a file larger than the memory to
-/// be had is an error naming its size, not an abort), and bytes that are not UTF-8 are an
-/// error naming the line.
-pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
+/// Reads a whole file into a buffer reserved fallibly: a file larger than the memory to be
+/// had is an error naming its size, not an abort.
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, FileError> {
     use std::io::Read as _;
     let mut f = std::fs::File::open(path).map_err(|e| FileError::new(path, e.into()))?;
     let size = f.metadata().map(|m| m.len()).unwrap_or(0);
@@ -159,6 +158,14 @@ pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
         return Err(FileError::new(path, ImportError::OutOfMemory { what: "the file".into(), bytes: size }));
     }
     f.read_to_end(&mut bytes).map_err(|e| FileError::new(path, e.into()))?;
+    Ok(bytes)
+}
+
+/// Reads a whole text file: the buffer is reserved fallibly (a file larger than the memory to
+/// be had is an error naming its size, not an abort), and bytes that are not UTF-8 are an
+/// error naming the line.
+pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
+    let bytes = read_bytes(path)?;
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
         let line = 1 + e.as_bytes()[..at].iter().filter(|&&b| b == b'\n').count();
