@@ -7,9 +7,9 @@ mod euler_common;
 
 use std::collections::HashMap;
 
-use euler_common::{cube_grid, polygon, thaw};
+use euler_common::{cube_grid, find_cut, polygon, thaw};
 use gmap_core::{DartId, GMap};
-use gmap_ops::euler::ops::{can_insert_edge, can_split_cell, try_insert_edge, try_insert_vertex};
+use gmap_ops::euler::ops::{can_insert_edge, try_insert_edge, try_insert_vertex};
 use gmap_ops::euler::strata::{apply_on_gmap, map_counts, EoArgs, EoOperator, StratifiedObject};
 
 /// The stratum of the i-cell of every dart of `g` in the object `from_map` reads.
@@ -123,25 +123,6 @@ fn mef_kef_on_a_square() {
     let e = g.alpha(d1, 1);
     let args = EoArgs::new().s(at(e, 2)).t(at(e, 1)).u(at(g.alpha(e, 2), 2));
     assert_eq!(both(&mut g, &mut o, "kef", &[e], args), (vec![4, 4, 1], vec![0, 0, 0], 1));
-}
-
-/// Four darts of a closed path of edges on the boundary of a volume, one per edge, each in
-/// the next face of the same side (as `euler_ops` finds them).
-fn find_cut(g: &GMap) -> Vec<DartId> {
-    for s in g.darts() {
-        let mut seeds = vec![s];
-        let mut x = s;
-        for _ in 0..3 {
-            let y = g.alpha(x, 0);
-            let z = g.alpha(g.alpha(y, 1), 2);
-            x = g.alpha(z, 1);
-            seeds.push(x);
-        }
-        if can_split_cell(g, &seeds, 3) {
-            return seeds;
-        }
-    }
-    panic!("no closed cut found");
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 mod euler_common;
 
-use euler_common::{counts, cube_grid, cycle, polygon, sphere_simplicial, thaw};
+use euler_common::{counts, cube_grid, cycle, find_cut, polygon, sphere_simplicial, thaw};
 use gmap_core::{DartId, GMap};
 use gmap_ops::euler::ops::*;
 use gmap_ops::euler::random::{attempt_at, Operator};
@@ -132,29 +132,6 @@ fn split_volume_by_a_face() {
     let op = try_remove_cell(&mut g, f, 2).unwrap();
     assert_eq!((op.name.as_str(), op.vector.dx()), ("kfs", &[0, 0, -1, -1][..]));
     assert_eq!(counts(&g), vec![12, 20, 10, 1]);
-}
-
-/// A set of seeds that `can_split_cell` accepts for i = 3: four darts, one per edge of a
-/// closed path, each reached from the previous one by turning into the next face of the
-/// same side; the first such path found from any dart.
-fn find_cut(g: &GMap) -> Vec<DartId> {
-    let ds: Vec<DartId> = g.darts().collect();
-    for &s in &ds {
-        // follow a cycle of edges through vertices of degree 4 in the boundary (inserted ones)
-        let mut seeds = vec![s];
-        let mut x = s;
-        for _ in 0..3 {
-            // go to the other end, turn into the next face of the same side
-            let y = g.alpha(x, 0);
-            let z = g.alpha(g.alpha(y, 1), 2);
-            x = g.alpha(z, 1);
-            seeds.push(x);
-        }
-        if can_split_cell(g, &seeds, 3) {
-            return seeds;
-        }
-    }
-    panic!("no closed cut found");
 }
 
 #[test]

@@ -4,7 +4,8 @@
 
 use std::collections::HashMap;
 
-use gmap_core::{Dart, DenseMap, GMap};
+use gmap_core::{Dart, DartId, DenseMap, GMap};
+use gmap_ops::euler::ops::can_split_cell;
 
 /// All permutations of `0..k` in lexicographic order.
 pub fn permutations(k: usize) -> Vec<Vec<usize>> {
@@ -158,4 +159,24 @@ pub fn counts(g: &GMap) -> Vec<usize> {
 /// The dense dart of index k.
 pub fn dart(k: u32) -> Dart {
     Dart(k)
+}
+
+/// Four darts of a closed path of edges on the boundary of a volume, one per edge: from each,
+/// go to the other end of its edge and turn into the next face of the same side. The first
+/// such path along which the volume can be split.
+pub fn find_cut(g: &GMap) -> Vec<DartId> {
+    for s in g.darts() {
+        let mut seeds = vec![s];
+        let mut x = s;
+        for _ in 0..3 {
+            let y = g.alpha(x, 0);
+            let z = g.alpha(g.alpha(y, 1), 2);
+            x = g.alpha(z, 1);
+            seeds.push(x);
+        }
+        if can_split_cell(g, &seeds, 3) {
+            return seeds;
+        }
+    }
+    panic!("no closed cut found");
 }
