@@ -135,16 +135,7 @@ fn random_sequences_reach_every_family() {
             }
         }
     }
-    for f in [
-        Family::GlobalHoleShaper,
-        Family::StratumSubdivider,
-        Family::LocalHoleShaper,
-        Family::StratumAttacher,
-        Family::UnfilledHoleShaper,
-        Family::StratumCompacter,
-        Family::LocalHoleCompacter,
-        Family::GlobalCompacter,
-    ] {
+    for f in Family::ALL {
         assert!(seen.get(&f).copied().unwrap_or(0) > 0, "no {f:?} applied: {seen:?}");
     }
 }

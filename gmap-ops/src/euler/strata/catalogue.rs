@@ -29,6 +29,20 @@ pub enum Family {
     GlobalCompacter,
 }
 
+impl Family {
+    /// The eight families, in the paper's order.
+    pub const ALL: [Family; 8] = [
+        Family::GlobalHoleShaper,
+        Family::StratumSubdivider,
+        Family::LocalHoleShaper,
+        Family::StratumAttacher,
+        Family::UnfilledHoleShaper,
+        Family::StratumCompacter,
+        Family::LocalHoleCompacter,
+        Family::GlobalCompacter,
+    ];
+}
+
 /// The dimension-independent operators of EO §3.2, in the paper's notation (`s^n` an
 /// n-stratum, `h^k_n` a k-hole of an n-stratum, `H^k` a global k-hole, `∞` boundary-
 /// incomplete). [`EoOperator::inverse`] selects the inverse of the form written here.
