@@ -510,7 +510,8 @@ impl<T: Clone> Cells<T> {
     }
 
     /// Checks the invariant of dimension `i` on every live dart: neighbours in the cell hold
-    /// the same handle, handles name live values, counts match.
+    /// the same handle, handles name live values, counts match, no value is held by two
+    /// cells. O(N n).
     pub(crate) fn check(&self, topo: &Topo, i: usize, darts: &[DartId]) -> Result<(), AttributeDefect> {
         if !self.active() {
             return Ok(());
@@ -547,6 +548,32 @@ impl<T: Clone> Cells<T> {
                 });
             }
         }
+        // one cell per value (the cells are uniform by now): the first dart met holding a
+        // value claims it for its cell; a dart of another cell holding it is a defect
+        let mut visited = bitvec::vec::BitVec::<usize>::repeat(false, topo.bound());
+        let mut owner: Vec<Option<DartId>> = vec![None; self.entries.len()];
+        let mut stack = Vec::new();
+        for &d in darts {
+            let h = self.handle(dart_index(d));
+            if h == NONE || visited[dart_index(d)] {
+                continue;
+            }
+            if let Some(other) = owner[h as usize] {
+                return Err(AttributeDefect::Shared { dim: i, attr: self.id(h), dart: d, other });
+            }
+            owner[h as usize] = Some(d);
+            visited.set(dart_index(d), true);
+            stack.push(d);
+            while let Some(x) = stack.pop() {
+                for j in (0..=topo.dim).filter(|&j| j != i) {
+                    let y = topo.alpha(x, j);
+                    if !visited[dart_index(y)] {
+                        visited.set(dart_index(y), true);
+                        stack.push(y);
+                    }
+                }
+            }
+        }
         Ok(())
     }
 }
@@ -578,6 +605,18 @@ pub enum AttributeDefect {
         /// a dart of the vertex
         dart: DartId,
         /// a neighbour of `dart` in the same vertex
+        other: DartId,
+    },
+    /// Two different cells hold the same value (a cell was cut without reconciling).
+    #[error("{dim}-attribute {attr:?} is held by dart {dart:?} and by dart {other:?} of another {dim}-cell")]
+    Shared {
+        /// the dimension
+        dim: usize,
+        /// the attribute
+        attr: AttrId,
+        /// a dart of one cell
+        dart: DartId,
+        /// a dart of another cell holding it
         other: DartId,
     },
     /// A dart holds a handle to a freed value.
@@ -1010,6 +1049,31 @@ mod tests {
         assert_eq!(m.attribute_by_id::<1>(id), None);
         assert_eq!(m.attribute_count::<1>(), 0);
         assert_eq!(m.point_count(), 0);
+    }
+
+    #[test]
+    fn check_covers_structure_and_attributes() {
+        let mut m: GMap<((), Cells<u8>)> = GMap::with_attributes(1);
+        let (a, b) = (m.create_dart(), m.create_dart());
+        assert!(m.needs_reconcile());
+        m.sew(a, b, 0);
+        m.set_attribute::<1>(a, 1);
+        assert_eq!(m.check(), Ok(()));
+        m.unlink(a, 0);
+        m.link(a, a, 0);
+        assert_eq!(
+            m.check(),
+            Err(crate::MapDefect::Attribute(AttributeDefect::Shared {
+                dim: 1,
+                attr: m.attribute_id::<1>(a).unwrap(),
+                dart: b,
+                other: a
+            }))
+        );
+        m.reconcile_attributes(&[a, b]);
+        assert_eq!(m.check(), Ok(()));
+        assert_eq!(m.attribute_count::<1>(), 2);
+        assert!(!GMap::new(1).needs_reconcile());
     }
 
     #[test]

@@ -97,6 +97,17 @@ pub enum SewError {
     },
 }
 
+/// What [`GMap::check`] finds wrong: the involutions, or the attributes.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum MapDefect {
+    /// BO Def. 1 fails (darts numbered as in [`GMap::to_dense`]).
+    #[error(transparent)]
+    Structure(#[from] crate::error::ValidityError),
+    /// A cell's darts disagree on its attribute or point, or a count is wrong.
+    #[error(transparent)]
+    Attribute(#[from] AttributeDefect),
+}
+
 /// The panic of the panicking forms, out of the hot paths.
 #[cold]
 #[inline(never)]
@@ -245,7 +256,7 @@ impl<A: Attributes> GMap<A> {
 
     /// Checks that `d` names a live dart and `i <= n`.
     #[inline]
-    fn check(&self, d: DartId, i: usize) -> Result<(), SewError> {
+    fn check_dart_index(&self, d: DartId, i: usize) -> Result<(), SewError> {
         if i > self.dim {
             return Err(SewError::BadIndex { alpha: i, dim: self.dim });
         }
@@ -261,13 +272,13 @@ impl<A: Attributes> GMap<A> {
     pub fn alpha(&self, d: DartId, i: usize) -> DartId {
         match self.darts.get(d).and_then(|x| x.alpha.get(i)) {
             Some(&e) => e,
-            None => refuse(self.check(d, i).expect_err("refused")),
+            None => refuse(self.check_dart_index(d, i).expect_err("refused")),
         }
     }
 
     /// `alpha_i(d)`, or an error for a stale handle or `i > n`.
     pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, SewError> {
-        self.check(d, i)?;
+        self.check_dart_index(d, i)?;
         Ok(self.darts[d].alpha[i])
     }
 
@@ -297,8 +308,8 @@ impl<A: Attributes> GMap<A> {
 
     /// [`GMap::link`], or an error (and no change) for a stale handle or `i > n`.
     pub fn try_link(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
-        self.check(d, i)?;
-        self.check(e, i)?;
+        self.check_dart_index(d, i)?;
+        self.check_dart_index(e, i)?;
         self.unlink_unchecked(d, i);
         self.unlink_unchecked(e, i);
         self.darts[d].alpha[i] = e;
@@ -320,7 +331,7 @@ impl<A: Attributes> GMap<A> {
 
     /// [`GMap::unlink`], or an error (and no change) for a stale handle or `i > n`.
     pub fn try_unlink(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
-        self.check(d, i)?;
+        self.check_dart_index(d, i)?;
         self.unlink_unchecked(d, i);
         Ok(())
     }
@@ -416,10 +427,20 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// Whether an edit must call [`GMap::reconcile_attributes`]: some slot may hold values.
+    /// Whether edits must call [`GMap::reconcile_attributes`]: `A` has a slot, or a point
+    /// was set. When false, an editing routine may skip collecting the darts it touched.
+    /// O(1).
     #[inline]
-    fn needs_reconcile(&self) -> bool {
+    pub fn needs_reconcile(&self) -> bool {
         !A::EMPTY || self.points.active()
+    }
+
+    /// Checks the whole map: BO Def. 1 ([`MapView::validate`]), then the attributes and
+    /// points ([`GMap::check_attributes`]). O(N n²).
+    pub fn check(&self) -> Result<(), MapDefect> {
+        MapView::validate(self)?;
+        self.check_attributes()?;
+        Ok(())
     }
 
     /// Checks the attributes and points (see [`crate::attr`]): every two darts of one cell
@@ -777,7 +798,7 @@ impl<A: Attributes> GMap<A> {
 
     /// [`GMap::unsew`], or an error (and no change) for a stale handle or `i > n`.
     pub fn try_unsew(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
-        self.check(d, i)?;
+        self.check_dart_index(d, i)?;
         if self.is_free(d, i) {
             return Ok(());
         }

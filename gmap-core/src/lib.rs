@@ -40,8 +40,10 @@
 //!
 //! ## Files and fixtures
 //!
-//! [`io`] reads and writes the native `.gmap` format and Moka's `.moka`, with errors naming
-//! the file and line; [`examples`] rebuilds the small maps drawn in the border-operator
+//! [`io`] reads and writes the native `.gmap` format (with vertex points and, through
+//! [`LabelledGMap`], named [`Labels`] on cells of every dimension) and Moka's `.moka`, with
+//! errors naming the file and line; [`walk`] iterates lazily over orbits and cells of a
+//! [`GMap`]; [`examples`] rebuilds the small maps drawn in the border-operator
 //! paper (BO Fig. 1, 2, 4(b)) for tests and documentation.
 //!
 //! ## Example
@@ -89,7 +91,7 @@ pub use alpha::{AlphaSet, MAX_DIM};
 pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
-pub use edit::{DartId, GMap, SewError};
+pub use edit::{DartId, GMap, MapDefect, SewError};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
 pub use labels::{LabelValue, LabelledGMap, Labels};
 pub use marks::{MarkId, Marks};

@@ -61,12 +61,17 @@ pub fn read_gmap(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
 
 /// [`read_gmap`] with options (a cap on the number of darts).
 pub fn read_gmap_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
-    let path = path.as_ref();
+    let (bytes, name) = gmap_bytes(path.as_ref(), opts)?;
+    parse_gmap_with(&bytes, &name, opts)
+}
+
+/// The bytes of a `.gmap` file and its name for errors, once the header's dart count is
+/// within the caller's limit (checked before the file is read whole).
+fn gmap_bytes(path: &Path, opts: &ReadOptions) -> Result<(Vec<u8>, String), ReadError> {
     if let Some(limit) = opts.max_darts {
         check_header_limit(path, limit)?;
     }
-    let bytes = read_bytes(path)?;
-    parse_gmap_with(&bytes, &path.display().to_string(), opts)
+    Ok((read_bytes(path)?, path.display().to_string()))
 }
 
 /// Refuses a file whose header announces more than `limit` darts, reading only up to the
@@ -398,12 +403,8 @@ pub fn read_labelled_gmap(path: impl AsRef<Path>) -> Result<LabelledGMap, ReadEr
 
 /// [`read_labelled_gmap`] with options.
 pub fn read_labelled_gmap_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<LabelledGMap, ReadError> {
-    let path = path.as_ref();
-    if let Some(limit) = opts.max_darts {
-        check_header_limit(path, limit)?;
-    }
-    let bytes = read_bytes(path)?;
-    parse_labelled_gmap_with(&bytes, &path.display().to_string(), opts)
+    let (bytes, name) = gmap_bytes(path.as_ref(), opts)?;
+    parse_labelled_gmap_with(&bytes, &name, opts)
 }
 
 /// Parses the bytes of a `.gmap` file into a [`LabelledGMap`]; `name` is the file name used
