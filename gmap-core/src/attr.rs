@@ -18,7 +18,8 @@
 //! slot's type, and asking for a dimension whose slot is `()` does not compile
 //! ([`AttributeAt`] gives the type of slot `I`). No `Box<dyn Any>`, no lookup by name.
 //! A slot beyond the map's dimension (a 4-tuple on a 2-map) is inert: nothing is ever stored
-//! in it and the operations that would refuse it ([`GMap::try_set_attribute`]).
+//! in it ([`GMap::try_set_attribute`] refuses it with [`SewError::NoSuchCells`]), so one
+//! attribute layout serves maps of several dimensions ([`crate::LabelledGMap`]).
 //!
 //! ## Storage
 //!
@@ -84,9 +85,9 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
-#[cfg(doc)]
-use crate::edit::GMap;
 use crate::edit::{dart_index, DartId};
+#[cfg(doc)]
+use crate::edit::{GMap, SewError};
 use crate::Point;
 
 /// The handle value of a dart without an attribute.

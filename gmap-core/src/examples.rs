@@ -20,8 +20,13 @@
 //! assert!(!k.is_orientable());
 //! assert!(k.check_cells_orientable().is_ok());
 //! ```
+//!
+//! [`add_simplex`] adds a free k-simplex to an editable map, the building block of the
+//! random maps of the property tests.
 
+use crate::attr::Attributes;
 use crate::dense::{Dart, DenseMap};
+use crate::edit::{DartId, GMap};
 
 /// Builds a map from involutions written as pairs of paper darts (numbered from 1);
 /// every dart not named in `pairs[i]` is i-free.
@@ -94,6 +99,51 @@ pub fn klein_bottle() -> DenseMap {
 /// orientable contrast to Fig. 4(b).
 pub fn torus() -> DenseMap {
     from_paper_pairs(2, 8, &[&SQUARE_A0, &SQUARE_A1, &[(1, 6), (2, 5), (3, 8), (4, 7)]])
+}
+
+/// All orderings of `0..=k`, in lexicographic order.
+fn orderings(k: usize) -> Vec<Vec<usize>> {
+    let mut out = vec![vec![]];
+    for _ in 0..=k {
+        let mut next = Vec::new();
+        for p in &out {
+            for v in (0..=k).filter(|v| !p.contains(v)) {
+                let mut q = p.clone();
+                q.push(v);
+                next.push(q);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+/// Adds a free k-simplex to `g` (precondition: `k <= g.dim()`) and returns its darts: one
+/// per ordering of its k + 1 vertices, in lexicographic order, `alpha_i` swapping positions
+/// i and i + 1 for `i < k`, every other involution free. (k + 1)! darts, built through
+/// [`GMap::link`] (no attribute is set).
+///
+/// ```
+/// use gmap_core::{examples::add_simplex, GMap, MapView};
+/// let mut g = GMap::new(3);
+/// assert_eq!(add_simplex(&mut g, 3).len(), 24);
+/// assert_eq!(MapView::cell_counts(&g), vec![4, 6, 4, 1]);
+/// ```
+pub fn add_simplex<A: Attributes>(g: &mut GMap<A>, k: usize) -> Vec<DartId> {
+    let perms = orderings(k);
+    let ids: Vec<DartId> = perms.iter().map(|_| g.create_dart()).collect();
+    for (a, p) in perms.iter().enumerate() {
+        for i in 0..k {
+            let mut q = p.clone();
+            q.swap(i, i + 1);
+            if let Ok(b) = perms.binary_search(&q) {
+                if a < b {
+                    g.link(ids[a], ids[b], i);
+                }
+            }
+        }
+    }
+    ids
 }
 
 #[cfg(test)]

@@ -13,45 +13,12 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
+use gmap_core::examples::add_simplex;
 use gmap_core::io::{format_labelled_gmap, parse_labelled_gmap};
-use gmap_core::{Attributes, Cells, DartId, GMap, LabelValue, LabelledGMap, Labels, Point};
+use gmap_core::{Cells, DartId, GMap, LabelValue, LabelledGMap, Labels, Point};
 use proptest::prelude::*;
 
 type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
-
-/// All orderings of `0..=k`.
-fn orderings(k: usize) -> Vec<Vec<usize>> {
-    let mut out = vec![vec![]];
-    for _ in 0..=k {
-        let mut next = Vec::new();
-        for p in &out {
-            for v in (0..=k).filter(|v| !p.contains(v)) {
-                let mut q = p.clone();
-                q.push(v);
-                next.push(q);
-            }
-        }
-        out = next;
-    }
-    out
-}
-
-/// Adds a k-simplex (darts: orderings of its vertices, `alpha_i` swaps positions i, i+1).
-fn add_simplex<A: Attributes>(g: &mut GMap<A>, k: usize) -> Vec<DartId> {
-    let perms = orderings(k);
-    let ids: Vec<DartId> = perms.iter().map(|_| g.create_dart()).collect();
-    for (a, p) in perms.iter().enumerate() {
-        for i in 0..k {
-            let mut q = p.clone();
-            q.swap(i, i + 1);
-            let b = perms.iter().position(|r| *r == q).expect("a permutation");
-            if a < b {
-                g.link(ids[a], ids[b], i);
-            }
-        }
-    }
-    ids
-}
 
 /// Counters of hook calls, per dimension.
 #[derive(Default)]

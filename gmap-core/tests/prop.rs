@@ -7,45 +7,10 @@
 //! darts, the dual, orientation, the fast kernels against plain references, and the
 //! `.gmap`/`.moka` round trips.
 
+use gmap_core::examples::add_simplex;
 use gmap_core::io::{format_gmap, format_moka, parse_gmap, parse_moka};
 use gmap_core::{AlphaSet, Dart, DenseMap, GMap};
 use proptest::prelude::*;
-
-/// All orderings of `0..=k`, in lexicographic order.
-fn orderings(k: usize) -> Vec<Vec<usize>> {
-    let mut out = vec![vec![]];
-    for _ in 0..=k {
-        let mut next = Vec::new();
-        for p in &out {
-            for v in 0..=k {
-                if !p.contains(&v) {
-                    let mut q = p.clone();
-                    q.push(v);
-                    next.push(q);
-                }
-            }
-        }
-        out = next;
-    }
-    out
-}
-
-/// Adds a k-simplex to `g` (k ≤ dim); returns its darts.
-fn add_simplex(g: &mut GMap, k: usize) -> Vec<gmap_core::DartId> {
-    let perms = orderings(k);
-    let ids: Vec<_> = perms.iter().map(|_| g.create_dart()).collect();
-    for (a, p) in perms.iter().enumerate() {
-        for i in 0..k {
-            let mut q = p.clone();
-            q.swap(i, i + 1);
-            let b = perms.iter().position(|r| *r == q).unwrap();
-            if a < b {
-                g.link(ids[a], ids[b], i);
-            }
-        }
-    }
-    ids
-}
 
 /// A random valid map: `pieces` simplex dimensions (reduced mod n + 1), then sews.
 fn build(n: usize, pieces: &[usize], sews: &[(usize, usize, usize)]) -> DenseMap {
