@@ -191,6 +191,74 @@ proptest! {
     }
 }
 
+/// The cell of each live dart for every dimension `0..=n`, from the snapshot.
+fn cells_by_dart(g: &Full, n: usize) -> Vec<std::collections::HashMap<DartId, u32>> {
+    let (dense, ids) = g.to_dense();
+    (0..=n).map(|j| ids.iter().copied().zip(dense.cells(j).of).collect()).collect()
+}
+
+/// Removes random darts one at a time, reconciling with their former neighbours (the
+/// editing pattern of the Euler operators): cells only split or vanish, the split hook runs
+/// once per extra piece, every surviving cell keeps exactly one attribute.
+fn run_removals(
+    n: usize,
+    pieces: &[usize],
+    sews: &[(usize, usize, usize)],
+    removals: &[usize],
+) -> Result<(), TestCaseError> {
+    let (mut g, darts) = attributed(n, pieces);
+    for &(a, b, i) in sews {
+        let _ = g.try_sew(darts[a % darts.len()], darts[b % darts.len()], i % (n + 1));
+    }
+    let hooks = Hooks::default();
+    hooks.install(&mut g);
+    for &r in removals {
+        let live: Vec<DartId> = g.darts().collect();
+        if live.is_empty() {
+            break;
+        }
+        let d = live[r % live.len()];
+        let before = cells_by_dart(&g, n);
+        let neighbours: Vec<DartId> = (0..=n).map(|j| g.alpha(d, j)).filter(|&x| x != d).collect();
+        let (m0, s0) = hooks.counts();
+        g.remove_dart(d);
+        g.reconcile_attributes(&neighbours);
+        let (m1, s1) = hooks.counts();
+        g.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let after = cells_by_dart(&g, n);
+        for j in 0..=n {
+            let survivors: Vec<DartId> = g.darts().collect();
+            let old: Vec<u32> = survivors.iter().map(|x| before[j][x]).collect();
+            let new: Vec<u32> = survivors.iter().map(|x| after[j][x]).collect();
+            let (merges, splits) = merges_and_splits(&old, &new);
+            prop_assert_eq!(merges, 0);
+            prop_assert_eq!(m1[j] - m0[j], 0);
+            prop_assert_eq!(s1[j] - s0[j], splits, "splits of {}-cells", j);
+            let cells = new.iter().collect::<std::collections::BTreeSet<_>>().len();
+            prop_assert_eq!(count(&g, j), cells);
+            for &x in &survivors {
+                prop_assert!(attr(&g, x, j).is_some());
+                prop_assert!(g.point(x).is_some());
+            }
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    #[test]
+    fn attributes_follow_dart_removals(
+        n in 1usize..4,
+        pieces in prop::collection::vec(0usize..4, 1..4),
+        sews in prop::collection::vec((any::<usize>(), any::<usize>(), 0usize..4), 0..10),
+        removals in prop::collection::vec(any::<usize>(), 0..20),
+    ) {
+        run_removals(n, &pieces, &sews, &removals)?;
+    }
+}
+
 fn label_value() -> impl Strategy<Value = LabelValue> {
     prop_oneof![
         any::<i64>().prop_map(LabelValue::Int),
