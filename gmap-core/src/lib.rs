@@ -67,6 +67,7 @@
 
 pub mod alpha;
 mod cells3;
+pub mod characteristics;
 pub mod compacted;
 pub mod dense;
 pub mod edit;
@@ -81,6 +82,7 @@ pub mod union_find;
 pub mod view;
 
 pub use alpha::{AlphaSet, MAX_DIM};
+pub use characteristics::Characteristics;
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, SewError};
