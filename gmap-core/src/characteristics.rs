@@ -14,7 +14,9 @@
 
 use std::fmt;
 
+use crate::attr::Attributes;
 use crate::dense::DenseMap;
+use crate::edit::GMap;
 use crate::view::MapView;
 
 /// Darts, cells per dimension, components, orientability and validity of a map, computed
@@ -51,6 +53,18 @@ impl Characteristics {
     /// ([`MapView::with_dense`]; for an editable map that is one extra O(N n) copy).
     pub fn of<M: MapView>(m: &M) -> Self {
         m.with_dense(Self::of_dense)
+    }
+}
+
+impl<A: Attributes> GMap<A> {
+    /// The characteristics of the map ([`Characteristics`]), its validity covering the
+    /// involutions (BO Def. 1) and the attributes and points
+    /// ([`GMap::check_attributes`]), as CGAL's `is_valid` covers both. O(N n) plus one
+    /// dense snapshot.
+    pub fn characteristics(&self) -> Characteristics {
+        let mut c = Characteristics::of(self);
+        c.valid = c.valid && self.check_attributes().is_ok();
+        c
     }
 }
 

@@ -7,6 +7,9 @@
 //! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
 //! [`GMap::to_dense`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.
+//!
+//! A `GMap<A>` carries cell attributes described by `A` (see [`crate::attr`]) and a point
+//! per vertex; `GMap` alone is `GMap<()>`, with no attribute and no per-dart cost for them.
 
 use rustc_hash::FxHashMap as HashMap;
 use slotmap::{new_key_type, Key, SlotMap};
@@ -14,6 +17,7 @@ use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
+use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
 use crate::dense::{Dart, DenseMap, Point};
 use crate::marks::{MarkId, Marks};
 use crate::view::MapView;
@@ -23,11 +27,16 @@ new_key_type! {
     pub struct DartId;
 }
 
-/// Per-dart storage: the involution images and an optional point.
+/// Per-dart storage: the involution images.
 #[derive(Clone, Debug)]
-struct DartData {
-    alpha: SmallVec<[DartId; 5]>,
-    point: Option<Point>,
+pub(crate) struct DartData {
+    pub(crate) alpha: SmallVec<[DartId; 5]>,
+}
+
+/// The dense index of a dart handle: its slot number (see [`GMap::dart_index`]).
+#[inline]
+pub(crate) fn dart_index(d: DartId) -> usize {
+    (d.data().as_ffi() & 0xffff_ffff) as usize
 }
 
 /// Why two darts cannot be i-sewn, or why an edit or a query of a [`GMap`] was refused: the
@@ -67,6 +76,14 @@ pub enum SewError {
         /// a dart where the pairing fails
         at: DartId,
     },
+    /// An attribute of i-cells was asked of a map without i-cells (`i > n`).
+    #[error("there are no {cell}-cells in a map of dimension {dim}")]
+    NoSuchCells {
+        /// the cell dimension asked for
+        cell: usize,
+        /// the map's dimension
+        dim: usize,
+    },
 }
 
 /// The panic of the panicking forms, out of the hot paths.
@@ -92,18 +109,38 @@ fn refuse(e: SewError) -> ! {
 /// let dense = m.to_dense().0;
 /// assert_eq!(dense.cell_counts(), vec![3, 3]);
 /// ```
+///
+/// `A` lists the attributes of each dimension ([`crate::attr`]); every map also has a point
+/// per vertex ([`GMap::point`]).
 #[derive(Clone, Debug)]
-pub struct GMap {
+pub struct GMap<A: Attributes = ()> {
     dim: usize,
     darts: SlotMap<DartId, DartData>,
     marks: Marks,
+    points: Points,
+    attrs: A,
 }
 
 impl GMap {
-    /// An empty map of dimension `dim`. Panics if `dim > MAX_DIM`.
+    /// An empty map of dimension `dim`, without attributes. Panics if `dim > MAX_DIM`.
+    /// [`GMap::with_attributes`] makes a map with attributes.
     pub fn new(dim: usize) -> Self {
+        Self::with_attributes(dim)
+    }
+
+    /// Thaws a dense map: the handle of dense dart `k` is `ids[k]`. O(N n).
+    /// [`GMap::from_dense_with_attributes`] makes a map with attributes.
+    pub fn from_dense(m: &DenseMap) -> (GMap, Vec<DartId>) {
+        Self::from_dense_with_attributes(m)
+    }
+}
+
+impl<A: Attributes> GMap<A> {
+    /// An empty map of dimension `dim` whose cells may carry the attributes `A` (none set
+    /// yet). Panics if `dim > MAX_DIM`. Slots of `A` beyond `dim` stay empty.
+    pub fn with_attributes(dim: usize) -> Self {
         assert!(dim <= MAX_DIM, "dimension {dim} exceeds MAX_DIM");
-        GMap { dim, darts: SlotMap::with_key(), marks: Marks::new(0) }
+        GMap { dim, darts: SlotMap::with_key(), marks: Marks::new(0), points: Points::default(), attrs: A::default() }
     }
 
     /// The dimension n.
@@ -129,18 +166,19 @@ impl GMap {
     /// A dense index for a live dart, stable while the dart lives, below [`GMap::index_bound`].
     /// Marks are stored by this index.
     pub fn dart_index(&self, d: DartId) -> usize {
-        (d.data().as_ffi() & 0xffff_ffff) as usize
+        dart_index(d)
     }
 
     /// An upper bound on [`GMap::dart_index`] of every live dart.
     pub fn index_bound(&self) -> usize {
-        self.darts.capacity()
+        // slot numbers start at 1; the capacity counts the usable slots
+        self.darts.capacity() + 1
     }
 
     /// Creates a dart free for every involution.
     pub fn create_dart(&mut self) -> DartId {
         let dim = self.dim;
-        let d = self.darts.insert_with_key(|k| DartData { alpha: SmallVec::from_elem(k, dim + 1), point: None });
+        let d = self.darts.insert_with_key(|k| DartData { alpha: SmallVec::from_elem(k, dim + 1) });
         let bound = self.dart_index(d) + 1;
         if self.marks.len() < bound {
             self.marks.resize(bound.max(self.marks.len() * 2));
@@ -150,6 +188,9 @@ impl GMap {
 
     /// Removes a dart, first making its partners free. Other handles stay valid.
     /// May leave the map invalid (a hole in an orbit); callers re-sew or remove whole cells.
+    /// The dart's attributes and point lose one user (a value no dart uses any more is
+    /// freed); the cells are not reconciled: a caller that removes darts of a cell that
+    /// stays calls [`GMap::reconcile_attributes`] with the former neighbours.
     ///
     /// # Panics
     /// If `d` is not a live dart (removed, or of another map); [`GMap::try_remove_dart`]
@@ -165,6 +206,11 @@ impl GMap {
     /// does not name a live dart.
     pub fn try_remove_dart(&mut self, d: DartId) -> Result<(), SewError> {
         self.live(d)?;
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        self.points.drop_dart(&topo, 0, d);
+        if !A::EMPTY {
+            self.attrs.drop_dart_all(&topo, d);
+        }
         for i in 0..=self.dim {
             self.unlink_unchecked(d, i);
         }
@@ -225,6 +271,8 @@ impl GMap {
 
     /// Low-level: `alpha_i(d) = e`, `alpha_i(e) = d`, freeing former partners. Keeps
     /// `alpha_i` an involution but may break the other conditions of BO Def. 1.
+    /// Attributes and points are not reconciled: call [`GMap::reconcile_attributes`] with
+    /// the darts whose links changed once the edit is complete.
     ///
     /// # Panics
     /// On a stale handle or `i > n` (nothing is changed then); [`GMap::try_link`] returns
@@ -248,6 +296,7 @@ impl GMap {
     }
 
     /// Low-level: makes `d` and its `alpha_i` partner i-free. May break validity.
+    /// Attributes and points are not reconciled (see [`GMap::link`]).
     ///
     /// # Panics
     /// On a stale handle or `i > n`; [`GMap::try_unlink`] returns the error.
@@ -276,28 +325,311 @@ impl GMap {
         }
     }
 
-    /// The point attached to `d`.
+    /// The point of the vertex (0-cell) of `d`, the same from every dart of the vertex. O(1).
     ///
     /// # Panics
-    /// On a stale handle.
+    /// On a stale handle; [`GMap::try_point`] returns the error.
     #[track_caller]
     pub fn point(&self, d: DartId) -> Option<Point> {
-        match self.darts.get(d) {
-            Some(x) => x.point,
-            None => refuse(SewError::NoSuchDart(d)),
+        match self.try_point(d) {
+            Ok(p) => p,
+            Err(e) => refuse(e),
         }
     }
 
-    /// Attaches a point to `d`.
+    /// [`GMap::point`], or [`SewError::NoSuchDart`] for a stale handle.
+    pub fn try_point(&self, d: DartId) -> Result<Option<Point>, SewError> {
+        self.live(d)?;
+        Ok(self.points.get_at(dart_index(d)).copied())
+    }
+
+    /// Sets (`Some`) or removes (`None`) the point of the vertex of `d`, for every dart of
+    /// the vertex. O(1) when the vertex has a point, O(vertex size · n) otherwise.
+    ///
+    /// A vertex keeps its point through edits: a sew joining two vertices keeps the point
+    /// of the first dart's vertex, an unsew splitting a vertex gives both parts the point.
+    ///
+    /// # Panics
+    /// On a stale handle; [`GMap::try_set_point`] returns the error.
+    #[track_caller]
+    pub fn set_point(&mut self, d: DartId, p: Option<Point>) {
+        if let Err(e) = self.try_set_point(d, p) {
+            refuse(e)
+        }
+    }
+
+    /// [`GMap::set_point`], or [`SewError::NoSuchDart`] (and no change) for a stale handle.
+    pub fn try_set_point(&mut self, d: DartId, p: Option<Point>) -> Result<(), SewError> {
+        self.live(d)?;
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        match p {
+            Some(p) => {
+                self.points.set(&topo, 0, d, p);
+            }
+            None => {
+                self.points.remove(&topo, 0, d);
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether some vertex has a point.
+    pub fn has_points(&self) -> bool {
+        !self.points.is_empty()
+    }
+
+    /// Number of vertices with a point.
+    pub fn point_count(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Repairs the attributes and points after an edit (the consistency routine of
+    /// [`crate::attr`]): for every slot in use, the cell of each dart of `touched` is
+    /// walked once; a cell holding several attributes keeps the first one met (from the
+    /// first dart of `touched`) and the merge hook folds the others into it; an attribute
+    /// held by several cells stays with the first and the split hook runs on a copy for
+    /// each other; darts without an attribute in a cell that has one inherit it.
+    ///
+    /// Precondition: `touched` holds every dart whose involutions changed since the last
+    /// reconciliation, and the surviving neighbours of removed darts (removed darts in it are
+    /// skipped). [`GMap::sew`] and [`GMap::unsew`] call it; edits through [`GMap::link`],
+    /// [`GMap::unlink`] and [`GMap::remove_dart`] need it afterwards.
+    ///
+    /// O(s · n) per slot in use, s the total size of the walked cells; nothing at all when
+    /// no point and no attribute was ever set.
+    pub fn reconcile_attributes(&mut self, touched: &[DartId]) {
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        self.points.reconcile(&topo, 0, touched);
+        if !A::EMPTY {
+            self.attrs.reconcile_all(&topo, touched);
+        }
+    }
+
+    /// Whether an edit must call [`GMap::reconcile_attributes`]: some slot may hold values.
+    #[inline]
+    fn needs_reconcile(&self) -> bool {
+        !A::EMPTY || self.points.active()
+    }
+
+    /// Checks the attributes and points (see [`crate::attr`]): every two darts of one cell
+    /// hold the same attribute (or both none), and every value's count of darts is exact.
+    /// Reports the first defect with the darts and dimension. O(N n) per slot in use.
+    pub fn check_attributes(&self) -> Result<(), AttributeDefect> {
+        let darts: Vec<DartId> = self.darts.keys().collect();
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        self.points.check(&topo, 0, &darts).map_err(|e| match e {
+            AttributeDefect::Disagree { dart, other, .. } => AttributeDefect::PointDisagree { dart, other },
+            e => e,
+        })?;
+        self.attrs.check_all(&topo, &darts)
+    }
+
+    /// Checks that the map has I-cells.
+    fn has_cells(&self, i: usize) -> Result<(), SewError> {
+        if i > self.dim {
+            Err(SewError::NoSuchCells { cell: i, dim: self.dim })
+        } else {
+            Ok(())
+        }
+    }
+
+    /// The attribute of the I-cell of `d`, if the cell has one. O(1).
+    ///
+    /// # Panics
+    /// On a stale handle; [`GMap::try_attribute`] returns the error.
+    #[track_caller]
+    pub fn attribute<const I: usize>(&self, d: DartId) -> Option<&<A as AttributeAt<I>>::Value>
+    where
+        A: AttributeAt<I>,
+    {
+        match self.try_attribute::<I>(d) {
+            Ok(v) => v,
+            Err(e) => refuse(e),
+        }
+    }
+
+    /// [`GMap::attribute`], or [`SewError::NoSuchDart`] for a stale handle.
+    pub fn try_attribute<const I: usize>(&self, d: DartId) -> Result<Option<&<A as AttributeAt<I>>::Value>, SewError>
+    where
+        A: AttributeAt<I>,
+    {
+        self.live(d)?;
+        Ok(self.attrs.cells().get_at(dart_index(d)))
+    }
+
+    /// The attribute of the I-cell of `d`, mutably. O(1).
+    ///
+    /// # Panics
+    /// On a stale handle; [`GMap::try_attribute_mut`] returns the error.
+    #[track_caller]
+    pub fn attribute_mut<const I: usize>(&mut self, d: DartId) -> Option<&mut <A as AttributeAt<I>>::Value>
+    where
+        A: AttributeAt<I>,
+    {
+        if let Err(e) = self.live(d) {
+            refuse(e)
+        }
+        self.attrs.cells_mut().get_at_mut(dart_index(d))
+    }
+
+    /// [`GMap::attribute_mut`], or [`SewError::NoSuchDart`] for a stale handle.
+    pub fn try_attribute_mut<const I: usize>(
+        &mut self,
+        d: DartId,
+    ) -> Result<Option<&mut <A as AttributeAt<I>>::Value>, SewError>
+    where
+        A: AttributeAt<I>,
+    {
+        self.live(d)?;
+        Ok(self.attrs.cells_mut().get_at_mut(dart_index(d)))
+    }
+
+    /// The id of the attribute of the I-cell of `d`, if it has one. O(1).
     ///
     /// # Panics
     /// On a stale handle.
     #[track_caller]
-    pub fn set_point(&mut self, d: DartId, p: Option<Point>) {
-        match self.darts.get_mut(d) {
-            Some(x) => x.point = p,
-            None => refuse(SewError::NoSuchDart(d)),
+    pub fn attribute_id<const I: usize>(&self, d: DartId) -> Option<AttrId>
+    where
+        A: AttributeAt<I>,
+    {
+        if let Err(e) = self.live(d) {
+            refuse(e)
         }
+        self.attrs.cells().id_at(dart_index(d))
+    }
+
+    /// The attribute with id `id`, or `None` when it was freed. O(1).
+    pub fn attribute_by_id<const I: usize>(&self, id: AttrId) -> Option<&<A as AttributeAt<I>>::Value>
+    where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells().get_id(id)
+    }
+
+    /// The attribute with id `id`, mutably, or `None` when it was freed. O(1).
+    pub fn attribute_by_id_mut<const I: usize>(&mut self, id: AttrId) -> Option<&mut <A as AttributeAt<I>>::Value>
+    where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells_mut().get_id_mut(id)
+    }
+
+    /// A dart of the cell of the attribute `id`, or `None` when it was freed (or when the
+    /// darts of its cell were removed without reconciling). O(1).
+    pub fn attribute_dart<const I: usize>(&self, id: AttrId) -> Option<DartId>
+    where
+        A: AttributeAt<I>,
+    {
+        let cells = self.attrs.cells();
+        cells.dart_of(id).filter(|&d| self.contains(d) && cells.id_at(dart_index(d)) == Some(id))
+    }
+
+    /// Sets the attribute of the I-cell of `d`, for every dart of the cell, replacing the
+    /// cell's value if it has one; returns its id (the same id when a value is replaced).
+    /// O(1) when the cell has a value, O(cell size · n) otherwise.
+    ///
+    /// # Panics
+    /// On a stale handle or `I > n`; [`GMap::try_set_attribute`] returns the error.
+    #[track_caller]
+    pub fn set_attribute<const I: usize>(&mut self, d: DartId, value: <A as AttributeAt<I>>::Value) -> AttrId
+    where
+        A: AttributeAt<I>,
+    {
+        match self.try_set_attribute::<I>(d, value) {
+            Ok(id) => id,
+            Err(e) => refuse(e),
+        }
+    }
+
+    /// [`GMap::set_attribute`], or an error (and no change) for a stale handle or `I > n`.
+    pub fn try_set_attribute<const I: usize>(
+        &mut self,
+        d: DartId,
+        value: <A as AttributeAt<I>>::Value,
+    ) -> Result<AttrId, SewError>
+    where
+        A: AttributeAt<I>,
+    {
+        self.has_cells(I)?;
+        self.live(d)?;
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        Ok(self.attrs.cells_mut().set(&topo, I, d, value))
+    }
+
+    /// Removes the attribute of the I-cell of `d` (from every dart of the cell) and returns
+    /// it. O(cell size · n).
+    ///
+    /// # Panics
+    /// On a stale handle; [`GMap::try_remove_attribute`] returns the error.
+    #[track_caller]
+    pub fn remove_attribute<const I: usize>(&mut self, d: DartId) -> Option<<A as AttributeAt<I>>::Value>
+    where
+        A: AttributeAt<I>,
+    {
+        match self.try_remove_attribute::<I>(d) {
+            Ok(v) => v,
+            Err(e) => refuse(e),
+        }
+    }
+
+    /// [`GMap::remove_attribute`], or [`SewError::NoSuchDart`] (and no change) for a stale
+    /// handle.
+    pub fn try_remove_attribute<const I: usize>(
+        &mut self,
+        d: DartId,
+    ) -> Result<Option<<A as AttributeAt<I>>::Value>, SewError>
+    where
+        A: AttributeAt<I>,
+    {
+        self.live(d)?;
+        if I > self.dim {
+            return Ok(None);
+        }
+        let topo = Topo { dim: self.dim, darts: &self.darts };
+        Ok(self.attrs.cells_mut().remove(&topo, I, d))
+    }
+
+    /// The attributes of the I-cells, with their ids, lazily (one per cell that has one; use
+    /// [`GMap::attribute_dart`] for a dart of each). O(capacity of the slot) in total.
+    pub fn attributes<const I: usize>(&self) -> impl Iterator<Item = (AttrId, &<A as AttributeAt<I>>::Value)> + '_
+    where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells().iter()
+    }
+
+    /// Number of I-cells with an attribute. O(1).
+    pub fn attribute_count<const I: usize>(&self) -> usize
+    where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells().len()
+    }
+
+    /// Sets the function called when two I-cells that both carry an attribute become one:
+    /// `f(kept, other)`, `kept` the attribute that stays (the first dart's, for a sew) and
+    /// `other` the one that disappears. Without it the kept value stays as it is.
+    /// The hook is shared by clones of the map.
+    pub fn set_on_merge<const I: usize>(
+        &mut self,
+        f: impl Fn(&mut <A as AttributeAt<I>>::Value, <A as AttributeAt<I>>::Value) + Send + Sync + 'static,
+    ) where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells_mut().set_on_merge(std::sync::Arc::new(f));
+    }
+
+    /// Sets the function called when an I-cell that carries an attribute becomes two:
+    /// `f(kept, copy)`, `copy` a clone of `kept` that goes to the new cell. Without it the
+    /// copy stays a plain clone. The hook is shared by clones of the map.
+    pub fn set_on_split<const I: usize>(
+        &mut self,
+        f: impl Fn(&mut <A as AttributeAt<I>>::Value, &mut <A as AttributeAt<I>>::Value) + Send + Sync + 'static,
+    ) where
+        A: AttributeAt<I>,
+    {
+        self.attrs.cells_mut().set_on_split(std::sync::Arc::new(f));
     }
 
     /// The orbit `<set>(d)` in breadth-first order from `d` ([`MapView::orbit`]).
@@ -390,12 +722,18 @@ impl GMap {
 
     /// i-sews `d` and `e` (CGAL's semantics): the sew orbits of `d` and `e` are paired
     /// one-to-one and each pair is linked by `alpha_i`. Keeps a valid map valid.
-    /// O(orbit size · n).
+    /// Attributes and points follow ([`GMap::reconcile_attributes`]): cells that become one
+    /// keep the attribute of the cell of `d` (the merge hook runs when both had one).
+    /// O(orbit size · n), plus the reconciliation when attributes or points are in use.
     pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
         let pairs = self.sew_pairs(d, e, i)?;
-        for (a, b) in pairs {
+        for &(a, b) in &pairs {
             self.darts[a].alpha[i] = b;
             self.darts[b].alpha[i] = a;
+        }
+        if self.needs_reconcile() {
+            let touched: Vec<DartId> = pairs.iter().map(|p| p.0).chain(pairs.iter().map(|p| p.1)).collect();
+            self.reconcile_attributes(&touched);
         }
         Ok(())
     }
@@ -412,7 +750,10 @@ impl GMap {
     }
 
     /// i-unsews `d`: every dart of its sew orbit becomes i-free. Keeps a valid map valid.
-    /// A no-op when `d` is already i-free.
+    /// A no-op when `d` is already i-free. Attributes and points follow
+    /// ([`GMap::reconcile_attributes`]): a cell cut in two keeps its attribute on the side of
+    /// `d` and a copy on the other (the split hook runs on it); a vertex keeps its point on
+    /// both sides.
     ///
     /// # Panics
     /// On a stale handle or `i > n`; [`GMap::try_unsew`] returns the error.
@@ -429,8 +770,16 @@ impl GMap {
         if self.is_free(d, i) {
             return Ok(());
         }
-        for x in self.orbit(d, self.sew_set(i)) {
+        let orbit = self.orbit(d, self.sew_set(i));
+        let partners: Vec<DartId> =
+            if self.needs_reconcile() { orbit.iter().map(|&x| self.darts[x].alpha[i]).collect() } else { Vec::new() };
+        for &x in &orbit {
             self.unlink_unchecked(x, i);
+        }
+        if self.needs_reconcile() {
+            let mut touched = orbit;
+            touched.extend(partners);
+            self.reconcile_attributes(&touched);
         }
         Ok(())
     }
@@ -451,17 +800,21 @@ impl GMap {
             }
         }
         let mut dense = DenseMap::from_flat_unchecked(self.dim, flat).expect("sizes checked on creation");
-        for (k, &d) in ids.iter().enumerate() {
-            if let Some(p) = self.darts[d].point {
-                dense.set_point(Dart(k as u32), Some(p));
+        if self.points.active() {
+            for (k, &d) in ids.iter().enumerate() {
+                if let Some(&p) = self.points.get_at(dart_index(d)) {
+                    dense.set_point(Dart(k as u32), Some(p));
+                }
             }
         }
         (dense, ids)
     }
 
-    /// Thaws a dense map: the handle of dense dart `k` is `ids[k]`. O(N n).
-    pub fn from_dense(m: &DenseMap) -> (GMap, Vec<DartId>) {
-        let mut g = GMap::new(m.dim());
+    /// Thaws a dense map into a map with attributes `A` (none set): the handle of dense dart
+    /// `k` is `ids[k]`. A vertex takes the point of its first dart (in dense order) that has
+    /// one. O(N n).
+    pub fn from_dense_with_attributes(m: &DenseMap) -> (Self, Vec<DartId>) {
+        let mut g = Self::with_attributes(m.dim());
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| g.create_dart()).collect();
         for d in m.darts() {
             let row = m.row(d);
@@ -469,7 +822,16 @@ impl GMap {
             for (i, &e) in row.iter().enumerate() {
                 data.alpha[i] = ids[e as usize];
             }
-            data.point = m.point(d);
+        }
+        if m.has_points() {
+            for d in m.darts() {
+                if let Some(p) = m.point(d) {
+                    let x = ids[d.index()];
+                    if g.points.get_at(dart_index(x)).is_none() {
+                        g.set_point(x, Some(p));
+                    }
+                }
+            }
         }
         (g, ids)
     }

@@ -13,7 +13,9 @@
 //! * [`GMap`] is the editable map. Darts live in a slotmap, so a [`DartId`] survives the
 //!   removal of other darts; [`GMap::sew`]/[`GMap::unsew`] follow CGAL's semantics and keep
 //!   the map valid, [`GMap::link`]/[`GMap::unlink`] are the low-level operations that may
-//!   not. Marks are reserved without a cap ([`Marks`]).
+//!   not. Marks are reserved without a cap ([`Marks`]). A `GMap<A>` carries typed attributes
+//!   on the cells of each dimension and a point per vertex, kept consistent through every
+//!   sew and unsew, with merge and split hooks ([`attr`]).
 //! * [`DenseMap`] is the read-only snapshot for analysis: darts `0..N`, involutions in one
 //!   flat `Vec<u32>`. Readers produce it directly (a file of millions of darts loads in one
 //!   pass), and whole-map algorithms run on it: [`DenseMap::validate`], orbit partitions
@@ -66,6 +68,7 @@
 #![warn(missing_docs)]
 
 pub mod alpha;
+pub mod attr;
 mod cells3;
 pub mod characteristics;
 pub mod compacted;
@@ -82,6 +85,7 @@ pub mod union_find;
 pub mod view;
 
 pub use alpha::{AlphaSet, MAX_DIM};
+pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};
 pub use characteristics::Characteristics;
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};

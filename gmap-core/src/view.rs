@@ -32,6 +32,7 @@ use std::hash::Hash;
 use rustc_hash::FxHashSet;
 
 use crate::alpha::AlphaSet;
+use crate::attr::Attributes;
 use crate::dense::{Dart, DenseMap};
 use crate::edit::{DartId, GMap};
 use crate::error::{BoundaryDefect, OrientationConflict, ValidityError};
@@ -151,7 +152,7 @@ impl MapView for DenseMap {
     }
 }
 
-impl MapView for GMap {
+impl<A: Attributes> MapView for GMap<A> {
     type Dart = DartId;
 
     fn dim(&self) -> usize {

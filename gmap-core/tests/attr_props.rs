@@ -1,0 +1,243 @@
+//! Property tests of cell attributes and vertex points on the editable map.
+//!
+//! Random maps of dimension 2 and 3 (a few simplices) get an attribute on every cell of
+//! every dimension and a point on every vertex; then random sews and unsews run. After each
+//! edit: every cell has exactly one attribute and the values count exactly the cells
+//! ([`GMap::check_attributes`]); the merge and split hooks ran exactly as many times as the
+//! cell partitions, computed independently before and after from the dense snapshot, say
+//! cells merged or split; a sew keeps the attributes and the point of the first dart's cells;
+//! an unsew changes no dart's attribute value nor point.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
+
+use gmap_core::{Cells, DartId, GMap, Point};
+use proptest::prelude::*;
+
+type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
+
+/// All orderings of `0..=k`.
+fn orderings(k: usize) -> Vec<Vec<usize>> {
+    let mut out = vec![vec![]];
+    for _ in 0..=k {
+        let mut next = Vec::new();
+        for p in &out {
+            for v in (0..=k).filter(|v| !p.contains(v)) {
+                let mut q = p.clone();
+                q.push(v);
+                next.push(q);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+/// Adds a k-simplex (darts: orderings of its vertices, `alpha_i` swaps positions i, i+1).
+fn add_simplex(g: &mut Full, k: usize) -> Vec<DartId> {
+    let perms = orderings(k);
+    let ids: Vec<DartId> = perms.iter().map(|_| g.create_dart()).collect();
+    for (a, p) in perms.iter().enumerate() {
+        for i in 0..k {
+            let mut q = p.clone();
+            q.swap(i, i + 1);
+            let b = perms.iter().position(|r| *r == q).expect("a permutation");
+            if a < b {
+                g.link(ids[a], ids[b], i);
+            }
+        }
+    }
+    ids
+}
+
+/// Counters of hook calls, per dimension.
+#[derive(Default)]
+struct Hooks {
+    merges: [Arc<AtomicUsize>; 4],
+    splits: [Arc<AtomicUsize>; 4],
+}
+
+impl Hooks {
+    fn install(&self, g: &mut Full) {
+        macro_rules! on {
+            ($i:literal) => {
+                let m = self.merges[$i].clone();
+                g.set_on_merge::<$i>(move |_, _| {
+                    m.fetch_add(1, Ordering::Relaxed);
+                });
+                let s = self.splits[$i].clone();
+                g.set_on_split::<$i>(move |_, _| {
+                    s.fetch_add(1, Ordering::Relaxed);
+                });
+            };
+        }
+        on!(0);
+        on!(1);
+        on!(2);
+        on!(3);
+    }
+
+    fn counts(&self) -> ([usize; 4], [usize; 4]) {
+        (
+            self.merges.each_ref().map(|c| c.load(Ordering::Relaxed)),
+            self.splits.each_ref().map(|c| c.load(Ordering::Relaxed)),
+        )
+    }
+}
+
+/// The cell of each dart (by position in `darts`) for dimension `i`, from the snapshot.
+fn partition(g: &Full, i: usize) -> Vec<u32> {
+    g.to_dense().0.cells(i).of
+}
+
+/// Merges and splits between two partitions of the same darts: a new cell meeting k old
+/// cells is k - 1 merges; an old cell meeting k new cells is k - 1 splits.
+fn merges_and_splits(old: &[u32], new: &[u32]) -> (usize, usize) {
+    use std::collections::{BTreeMap, BTreeSet};
+    let mut olds_of_new: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
+    let mut news_of_old: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
+    for (&o, &n) in old.iter().zip(new) {
+        olds_of_new.entry(n).or_default().insert(o);
+        news_of_old.entry(o).or_default().insert(n);
+    }
+    (olds_of_new.values().map(|s| s.len() - 1).sum(), news_of_old.values().map(|s| s.len() - 1).sum())
+}
+
+fn attr(g: &Full, d: DartId, i: usize) -> Option<u64> {
+    match i {
+        0 => g.attribute::<0>(d).copied(),
+        1 => g.attribute::<1>(d).copied(),
+        2 => g.attribute::<2>(d).copied(),
+        _ => g.attribute::<3>(d).copied(),
+    }
+}
+
+fn count(g: &Full, i: usize) -> usize {
+    [g.attribute_count::<0>(), g.attribute_count::<1>(), g.attribute_count::<2>(), g.attribute_count::<3>()][i]
+}
+
+/// A map of `pieces` simplices with a distinct value on every cell and a point per vertex.
+fn attributed(n: usize, pieces: &[usize]) -> (Full, Vec<DartId>) {
+    let mut g = Full::with_attributes(n);
+    let mut darts = Vec::new();
+    for &k in pieces {
+        darts.extend(add_simplex(&mut g, k % (n + 1)));
+    }
+    let mut next = 0u64;
+    for i in 0..=n {
+        for &d in &darts {
+            if attr(&g, d, i).is_none() {
+                next += 1;
+                match i {
+                    0 => g.set_attribute::<0>(d, next),
+                    1 => g.set_attribute::<1>(d, next),
+                    2 => g.set_attribute::<2>(d, next),
+                    _ => g.set_attribute::<3>(d, next),
+                };
+            }
+        }
+    }
+    for &d in &darts {
+        if g.point(d).is_none() {
+            next += 1;
+            g.set_point(d, Some([next as f64, 0.5, -1.0]));
+        }
+    }
+    (g, darts)
+}
+
+/// Runs the edits, checking every property after each; returns the number of edits that
+/// changed the map.
+fn run(n: usize, pieces: &[usize], edits: &[(bool, usize, usize, usize)]) -> Result<usize, TestCaseError> {
+    let (mut g, darts) = attributed(n, pieces);
+    let hooks = Hooks::default();
+    hooks.install(&mut g);
+    g.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
+    let mut changed = 0;
+    for &(sew, a, b, i) in edits {
+        let (d, e, i) = (darts[a % darts.len()], darts[b % darts.len()], i % (n + 1));
+        let before: Vec<Vec<u32>> = (0..=n).map(|j| partition(&g, j)).collect();
+        let values: Vec<Vec<Option<u64>>> = (0..=n).map(|j| darts.iter().map(|&x| attr(&g, x, j)).collect()).collect();
+        let points: Vec<Option<Point>> = darts.iter().map(|&x| g.point(x)).collect();
+        let (m0, s0) = hooks.counts();
+        let done = if sew { g.try_sew(d, e, i).is_ok() } else { !g.is_free(d, i) && g.try_unsew(d, i).is_ok() };
+        changed += done as usize;
+        let (m1, s1) = hooks.counts();
+        g.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
+        for j in 0..=n {
+            let after = partition(&g, j);
+            let (merges, splits) = merges_and_splits(&before[j], &after);
+            prop_assert_eq!(m1[j] - m0[j], merges, "merges of {}-cells", j);
+            prop_assert_eq!(s1[j] - s0[j], splits, "splits of {}-cells", j);
+            // exactly one attribute per cell
+            let cells = after.iter().copied().max().map_or(0, |m| m as usize + 1);
+            prop_assert_eq!(count(&g, j), cells);
+            for (k, &x) in darts.iter().enumerate() {
+                prop_assert!(attr(&g, x, j).is_some());
+                if !sew {
+                    prop_assert_eq!(attr(&g, x, j), values[j][k], "unsew changed a value");
+                }
+            }
+            if sew && done {
+                // the merged cells keep the first dart's value (the counting hooks keep it)
+                prop_assert_eq!(attr(&g, d, j), values[j][darts.iter().position(|&x| x == d).unwrap()]);
+            }
+        }
+        for (k, &x) in darts.iter().enumerate() {
+            prop_assert!(g.point(x).is_some(), "a vertex lost its point");
+            if !sew {
+                prop_assert_eq!(g.point(x), points[k]);
+            }
+        }
+        if sew && done {
+            // the vertex of d keeps its point; an i-sew with i >= 1 puts e in that vertex
+            let kept = points[darts.iter().position(|&x| x == d).unwrap()];
+            prop_assert_eq!(g.point(d), kept);
+            if i >= 1 {
+                prop_assert_eq!(g.point(e), kept);
+            }
+        }
+    }
+    Ok(changed)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+    #[test]
+    fn attributes_follow_sews_and_unsews_in_2d(
+        pieces in prop::collection::vec(0usize..3, 1..5),
+        edits in prop::collection::vec((any::<bool>(), any::<usize>(), any::<usize>(), 0usize..3), 0..30),
+    ) {
+        run(2, &pieces, &edits)?;
+    }
+
+    #[test]
+    fn attributes_follow_sews_and_unsews_in_3d(
+        pieces in prop::collection::vec(0usize..4, 1..4),
+        edits in prop::collection::vec((any::<bool>(), any::<usize>(), any::<usize>(), 0usize..4), 0..30),
+    ) {
+        run(3, &pieces, &edits)?;
+    }
+}
+
+/// A fixed sequence that merges and splits in every dimension: the property test above
+/// is not vacuous.
+#[test]
+fn a_known_sequence_merges_and_splits() {
+    // two triangles (2-simplices) in a 2-map, glued along an edge by alpha_2, then unglued
+    let (mut g, darts) = attributed(2, &[2, 2]);
+    let hooks = Hooks::default();
+    hooks.install(&mut g);
+    assert_eq!([count(&g, 0), count(&g, 1), count(&g, 2)], [6, 6, 2]);
+    // dart 0 of each triangle: vertex 0, edge 01, alpha_2 free
+    let (d, e) = (darts[0], darts[6]);
+    g.sew(d, e, 2);
+    assert_eq!(hooks.counts(), ([2, 1, 0, 0], [0; 4]));
+    assert_eq!([count(&g, 0), count(&g, 1), count(&g, 2)], [4, 5, 2]);
+    assert_eq!(run(2, &[2, 2], &[(true, 0, 6, 2), (false, 0, 0, 2)]).unwrap(), 2);
+    g.unsew(d, 2);
+    assert_eq!(hooks.counts(), ([2, 1, 0, 0], [2, 1, 0, 0]));
+    assert_eq!([count(&g, 0), count(&g, 1), count(&g, 2)], [6, 6, 2]);
+    g.check_attributes().unwrap();
+}
