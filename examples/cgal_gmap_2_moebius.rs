@@ -7,7 +7,7 @@
 use std::error::Error;
 use std::io::Write;
 
-use gmap::core::{Characteristics, GMap};
+use gmap::core::GMap;
 use gmap::ops::build;
 
 /// Builds the strip and writes its characteristics line to `out`.
@@ -19,7 +19,7 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     // opposite side: sewing there glues corner 0 to corner 2 and corner 1 to corner 3
     let opposite = [1, 0, 1, 0].iter().fold(d, |x, &i| g.alpha(x, i));
     g.try_sew(d, opposite, 2)?;
-    writeln!(out, "{}", Characteristics::of(&g))?;
+    writeln!(out, "{}", g.characteristics())?;
     Ok(())
 }
 

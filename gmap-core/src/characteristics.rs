@@ -108,6 +108,23 @@ mod tests {
     }
 
     #[test]
+    fn disagreeing_attributes_make_a_gmap_invalid() {
+        // two darts with different vertex labels, put on one vertex by a link that does
+        // not reconcile: the involutions are fine, the attributes are not
+        let mut g: GMap<(crate::Cells<i32>,)> = GMap::with_attributes(1);
+        let (a, b) = (g.create_dart(), g.create_dart());
+        g.set_attribute::<0>(a, 1);
+        g.set_attribute::<0>(b, 2);
+        assert!(g.characteristics().valid);
+        g.link(a, b, 1);
+        let c = g.characteristics();
+        assert_eq!(c.cells, vec![1, 2]);
+        assert!(!c.valid);
+        g.reconcile_attributes(&[a, b]);
+        assert!(g.characteristics().valid);
+    }
+
+    #[test]
     fn the_empty_map_has_no_cells() {
         let c = Characteristics::of(&DenseMap::new(1, 0));
         assert_eq!(c.to_string(), "#Darts=0, #0-cells=0, #1-cells=0, #ccs=0, orientable=true, valid=1");
