@@ -83,6 +83,7 @@ pub mod marks;
 pub mod parallel;
 pub mod union_find;
 pub mod view;
+pub mod walk;
 
 pub use alpha::{AlphaSet, MAX_DIM};
 pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};

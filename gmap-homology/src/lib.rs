@@ -72,7 +72,7 @@ pub use cellular::{border, incidence, precond, simplicial};
 pub use complex::{arch, cubical, dot, ep, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
-pub use border::{cellular_complex, CellularComplex};
+pub use border::{cellular_complex, gmap_homology, CellularComplex, GMapHomologyError};
 pub use chain::{ChainComplex, ChainError};
 pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
 pub use incidence::Incidence;
