@@ -68,6 +68,7 @@
 #![warn(missing_docs)]
 
 pub mod alpha;
+mod append;
 pub mod attr;
 mod cells3;
 pub mod characteristics;
