@@ -54,6 +54,33 @@ fn gmap_2_moebius() {
     check("gmap_2_moebius", gmap_2_moebius::run, 0, &[]);
 }
 
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_simple_example.rs"]
+mod gmap_3_simple_example;
+
+#[test]
+fn gmap_3_simple_example() {
+    check("gmap_3_simple_example", gmap_3_simple_example::run, 0, &[]);
+}
+
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_4_simple_example.rs"]
+mod gmap_4_simple_example;
+
+#[test]
+fn gmap_4_simple_example() {
+    check("gmap_4_simple_example", gmap_4_simple_example::run, 0, &[]);
+}
+
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_marks.rs"]
+mod gmap_3_marks;
+
+#[test]
+fn gmap_3_marks() {
+    check("gmap_3_marks", gmap_3_marks::run, 0, &[]);
+}
+
 #[test]
 fn sorted_items_ignore_order_and_keep_the_head() {
     assert_eq!(sorted_items("Volume 1 : 1 0 0; -1 0 0; "), sorted_items("Volume 1 : -1 0 0; 1 0 0;"));
