@@ -87,3 +87,12 @@ fn sorted_items_ignore_order_and_keep_the_head() {
     assert_ne!(sorted_items("Volume 1 : 1 0 0; "), sorted_items("Volume 2 : 1 0 0; "));
     assert_ne!(sorted_items("2; 7; "), sorted_items("2; 7; 7; "));
 }
+
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_operations.rs"]
+mod gmap_3_operations;
+
+#[test]
+fn gmap_3_operations() {
+    check("gmap_3_operations", gmap_3_operations::run, 0, &[]);
+}
