@@ -96,3 +96,12 @@ mod gmap_3_operations;
 fn gmap_3_operations() {
     check("gmap_3_operations", gmap_3_operations::run, 0, &[]);
 }
+
+#[allow(dead_code)]
+#[path = "../examples/cgal_linear_cell_complex_4.rs"]
+mod linear_cell_complex_4;
+
+#[test]
+fn linear_cell_complex_4() {
+    check("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]);
+}
