@@ -48,37 +48,38 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 #[allow(dead_code)]
 #[path = "../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
-
-#[test]
-fn gmap_2_moebius() {
-    check("gmap_2_moebius", gmap_2_moebius::run, 0, &[]);
-}
-
-#[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_simple_example.rs"]
-mod gmap_3_simple_example;
-
-#[test]
-fn gmap_3_simple_example() {
-    check("gmap_3_simple_example", gmap_3_simple_example::run, 0, &[]);
-}
-
-#[allow(dead_code)]
-#[path = "../examples/cgal_gmap_4_simple_example.rs"]
-mod gmap_4_simple_example;
-
-#[test]
-fn gmap_4_simple_example() {
-    check("gmap_4_simple_example", gmap_4_simple_example::run, 0, &[]);
-}
-
 #[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_marks.rs"]
 mod gmap_3_marks;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_operations.rs"]
+mod gmap_3_operations;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_simple_example.rs"]
+mod gmap_3_simple_example;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_4_simple_example.rs"]
+mod gmap_4_simple_example;
+#[allow(dead_code)]
+#[path = "../examples/cgal_linear_cell_complex_4.rs"]
+mod linear_cell_complex_4;
+
+/// Every port: CGAL's program name, the port's `run`, and `skip` and `unordered` as in
+/// [`check`].
+const PORTS: &[(&str, Run, usize, &[usize])] = &[
+    ("gmap_2_moebius", gmap_2_moebius::run, 0, &[]),
+    ("gmap_3_simple_example", gmap_3_simple_example::run, 0, &[]),
+    ("gmap_4_simple_example", gmap_4_simple_example::run, 0, &[]),
+    ("gmap_3_marks", gmap_3_marks::run, 0, &[]),
+    ("gmap_3_operations", gmap_3_operations::run, 0, &[]),
+    ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
+];
 
 #[test]
-fn gmap_3_marks() {
-    check("gmap_3_marks", gmap_3_marks::run, 0, &[]);
+fn every_port_prints_what_cgal_prints() {
+    for &(name, run, skip, unordered) in PORTS {
+        check(name, run, skip, unordered);
+    }
 }
 
 #[test]
@@ -86,22 +87,4 @@ fn sorted_items_ignore_order_and_keep_the_head() {
     assert_eq!(sorted_items("Volume 1 : 1 0 0; -1 0 0; "), sorted_items("Volume 1 : -1 0 0; 1 0 0;"));
     assert_ne!(sorted_items("Volume 1 : 1 0 0; "), sorted_items("Volume 2 : 1 0 0; "));
     assert_ne!(sorted_items("2; 7; "), sorted_items("2; 7; 7; "));
-}
-
-#[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_operations.rs"]
-mod gmap_3_operations;
-
-#[test]
-fn gmap_3_operations() {
-    check("gmap_3_operations", gmap_3_operations::run, 0, &[]);
-}
-
-#[allow(dead_code)]
-#[path = "../examples/cgal_linear_cell_complex_4.rs"]
-mod linear_cell_complex_4;
-
-#[test]
-fn linear_cell_complex_4() {
-    check("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]);
 }
