@@ -139,3 +139,34 @@ fn bad_inputs_exit_1_naming_the_place_and_write_nothing() {
         std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     assert!(names.iter().all(|n| !n.contains("tmp")), "{names:?}");
 }
+
+/// `.gmap` to `.gmap` keeps the points and the labels of every dimension; `.gmap` to `.moka`
+/// keeps the points.
+#[test]
+fn gmap_to_gmap_keeps_points_and_labels() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/labelled_segment.gmap");
+    let out = dir.path().join("copy.gmap");
+    let o = gmap(&["convert", p(&input), p(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(
+        text,
+        "gmap 1 2\n1 0\n0 1\npoints 2\n0 0.0 0.0 0.0\n1 2.5 0.0 -1.0\nlabels 0 1\n1 hits=3\nlabels 1 1\n0 name=\"main \\\"beam\\\"\" length=2.5\n"
+    );
+    let moka = dir.path().join("copy.moka");
+    let o = gmap(&["convert", p(&out), p(&moka)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let back = gmap_core::io::read_moka(&moka).unwrap();
+    assert_eq!(back.point(gmap_core::Dart(1)), Some([2.5, 0.0, -1.0]));
+    // a malformed section is refused with the file and line
+    let bad = dir.path().join("bad.gmap");
+    std::fs::write(&bad, "gmap 1 2\n1 0\n0 1\nlabels 1 1\n0 name=\"open\n").unwrap();
+    let o = gmap(&["convert", p(&bad), p(&dir.path().join("x.gmap"))]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("bad.gmap:5: labels of dart 0: column 8: the quoted text is not closed"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -6,12 +6,15 @@
 //! ([`GMap::check_attributes`]); the merge and split hooks ran exactly as many times as the
 //! cell partitions, computed independently before and after from the dense snapshot, say
 //! cells merged or split; a sew keeps the attributes and the point of the first dart's cells;
-//! an unsew changes no dart's attribute value nor point.
+//! an unsew changes no dart's attribute value nor point. Then `.gmap` files: a map with
+//! points and labels on every dimension (texts with spaces, quotes, newlines, any
+//! character) is read back identical.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
-use gmap_core::{Cells, DartId, GMap, Point};
+use gmap_core::io::{format_labelled_gmap, parse_labelled_gmap};
+use gmap_core::{Attributes, Cells, DartId, GMap, LabelValue, LabelledGMap, Labels, Point};
 use proptest::prelude::*;
 
 type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
@@ -34,7 +37,7 @@ fn orderings(k: usize) -> Vec<Vec<usize>> {
 }
 
 /// Adds a k-simplex (darts: orderings of its vertices, `alpha_i` swaps positions i, i+1).
-fn add_simplex(g: &mut Full, k: usize) -> Vec<DartId> {
+fn add_simplex<A: Attributes>(g: &mut GMap<A>, k: usize) -> Vec<DartId> {
     let perms = orderings(k);
     let ids: Vec<DartId> = perms.iter().map(|_| g.create_dart()).collect();
     for (a, p) in perms.iter().enumerate() {
@@ -218,6 +221,76 @@ proptest! {
         edits in prop::collection::vec((any::<bool>(), any::<usize>(), any::<usize>(), 0usize..4), 0..30),
     ) {
         run(3, &pieces, &edits)?;
+    }
+}
+
+fn label_value() -> impl Strategy<Value = LabelValue> {
+    prop_oneof![
+        any::<i64>().prop_map(LabelValue::Int),
+        any::<f64>().prop_filter("finite", |v| v.is_finite()).prop_map(LabelValue::Real),
+        any::<String>().prop_map(LabelValue::Text),
+        "[ a-z\"\\\n\t#=]{0,8}".prop_map(LabelValue::Text),
+    ]
+}
+
+fn labels() -> impl Strategy<Value = Labels> {
+    prop::collection::vec((prop_oneof!["[a-z_][a-z0-9_.-]{0,5}", any::<String>()], label_value()), 0..4)
+        .prop_map(|v| v.into_iter().collect())
+}
+
+fn labels_of(g: &LabelledGMap, i: usize, d: DartId) -> Option<&Labels> {
+    match i {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        _ => g.attribute::<3>(d),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    #[test]
+    fn labelled_maps_read_back_identical(
+        n in 1usize..4,
+        pieces in prop::collection::vec(0usize..4, 1..4),
+        sews in prop::collection::vec((any::<usize>(), any::<usize>(), 0usize..4), 0..8),
+        marks in prop::collection::vec((any::<usize>(), 0usize..4, labels()), 0..12),
+        points in prop::collection::vec((any::<usize>(), -1e9f64..1e9, -1e9f64..1e9, -1e9f64..1e9), 0..8),
+    ) {
+        let mut g = LabelledGMap::with_attributes(n);
+        let mut darts = Vec::new();
+        for &k in &pieces {
+            darts.extend(add_simplex(&mut g, k % (n + 1)));
+        }
+        for &(a, b, i) in &sews {
+            let _ = g.try_sew(darts[a % darts.len()], darts[b % darts.len()], i % (n + 1));
+        }
+        for (k, i, l) in marks {
+            let d = darts[k % darts.len()];
+            match i % (n + 1) {
+                0 => g.set_attribute::<0>(d, l),
+                1 => g.set_attribute::<1>(d, l),
+                2 => g.set_attribute::<2>(d, l),
+                _ => g.set_attribute::<3>(d, l),
+            };
+        }
+        for (k, x, y, z) in points {
+            g.set_point(darts[k % darts.len()], Some([x, y, z]));
+        }
+        let text = format_labelled_gmap(&g);
+        let back = parse_labelled_gmap(&text, "x.gmap").map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let (dense, ids) = g.to_dense();
+        let (dense_back, ids_back) = back.to_dense();
+        prop_assert_eq!(&dense_back, &dense);
+        back.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
+        for (&a, &b) in ids.iter().zip(&ids_back) {
+            prop_assert_eq!(back.point(b), g.point(a));
+            for i in 0..=n {
+                prop_assert_eq!(labels_of(&back, i, b), labels_of(&g, i, a));
+            }
+        }
+        prop_assert_eq!(format_labelled_gmap(&back), text);
     }
 }
 

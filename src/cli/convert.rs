@@ -1,6 +1,7 @@
 //! `gmap convert IN OUT`: read by the input's extension, write by the output's.
 //!
-//! Outputs: `.gmap` and `.moka` (gmap-core io), `.off` (2-maps with points), `.facets`
+//! Outputs: `.gmap` (with the points, and from a `.gmap` input the cell labels too) and
+//! `.moka` (gmap-core io), `.off` (2-maps with points), `.facets`
 //! (the barycentric subdivision: one simplex per dart) and `.vtk` (maps of dimension ≤ 3
 //! with points). Every writer goes through a
 //! temporary file and a rename, so a failure leaves no partial output.
@@ -15,7 +16,7 @@ use gmap_homology::json::write_json;
 use gmap_homology::lar::Lar;
 use gmap_ops::import::{FacePoset, PosetError};
 
-use super::load::{extension, load, split_lex_name, Loaded};
+use super::load::{extension, load, load_labelled_gmap, split_lex_name, Loaded};
 
 /// Runs `gmap convert`.
 pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
@@ -25,6 +26,12 @@ pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
             output.display(),
             input.display()
         );
+    }
+    if extension(input) == "gmap" && extension(output) == "gmap" {
+        // the dense map of `load` would drop the labels of the cells
+        let g = load_labelled_gmap(input, max_darts)?;
+        gmap_core::io::write_labelled_gmap(&g, output)?;
+        return Ok(());
     }
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),

@@ -29,18 +29,28 @@ pub fn extension(path: &Path) -> String {
 
 /// Reads `path` by its extension. A refusal for size gets the flag that raises the limit.
 pub fn load(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
-    load_any(path, max_darts).map_err(|e| {
-        let over_limit = e
-            .downcast_ref::<gmap_ops::import::FileError>()
-            .is_some_and(|f| matches!(f.error, gmap_ops::import::ImportError::TooManyDarts { .. }))
-            || e.downcast_ref::<gmap_core::io::ReadError>()
-                .is_some_and(|r| matches!(r.kind, gmap_core::io::ReadErrorKind::DartLimit { .. }));
-        if over_limit {
-            anyhow::anyhow!("{e:#}; raise the limit with --max-darts N")
-        } else {
-            e
-        }
-    })
+    load_any(path, max_darts).map_err(limit_hint)
+}
+
+/// Reads a `.gmap` file with its points and the labels of every dimension (what `load`
+/// drops), with the same hint as [`load`] for a refusal for size.
+pub fn load_labelled_gmap(path: &Path, max_darts: Option<u64>) -> Result<gmap_core::LabelledGMap> {
+    let opts = gmap_core::io::ReadOptions { max_darts };
+    gmap_core::io::read_labelled_gmap_with(path, &opts).map_err(|e| limit_hint(e.into()))
+}
+
+/// Adds the flag that raises the limit to a refusal for size.
+fn limit_hint(e: anyhow::Error) -> anyhow::Error {
+    let over_limit = e
+        .downcast_ref::<gmap_ops::import::FileError>()
+        .is_some_and(|f| matches!(f.error, gmap_ops::import::ImportError::TooManyDarts { .. }))
+        || e.downcast_ref::<gmap_core::io::ReadError>()
+            .is_some_and(|r| matches!(r.kind, gmap_core::io::ReadErrorKind::DartLimit { .. }));
+    if over_limit {
+        anyhow::anyhow!("{e:#}; raise the limit with --max-darts N")
+    } else {
+        e
+    }
 }
 
 fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {

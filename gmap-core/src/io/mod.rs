@@ -17,6 +17,7 @@
 //! | format | reader | writer | byte parser (fuzzing, tests) |
 //! | --- | --- | --- | --- |
 //! | native `.gmap` | [`read_gmap`] | [`write_gmap`] | [`parse_gmap`] |
+//! | `.gmap` with labels | [`read_labelled_gmap`] | [`write_labelled_gmap`] | [`parse_labelled_gmap`] |
 //! | Moka `.moka` | [`read_moka`] | [`write_moka`] | [`parse_moka`] |
 //!
 //! ```
@@ -46,7 +47,11 @@ mod native;
 pub use moka::{
     format_moka, parse_moka, parse_moka_with, read_moka, read_moka_with, write_moka, write_moka_to, MOKA_HEADER,
 };
-pub use native::{format_gmap, parse_gmap, parse_gmap_with, read_gmap, read_gmap_with, write_gmap, write_gmap_to};
+pub use native::{
+    format_gmap, format_labelled_gmap, parse_gmap, parse_gmap_with, parse_labelled_gmap, parse_labelled_gmap_with,
+    read_gmap, read_gmap_with, read_labelled_gmap, read_labelled_gmap_with, write_gmap, write_gmap_to,
+    write_labelled_gmap,
+};
 
 /// Options of the readers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -191,6 +196,68 @@ pub enum ReadErrorKind {
     /// The darts do not form a G-map (BO Def. 1).
     #[error("not a G-map (BO Def. 1): {0}")]
     Invalid(ValidityError),
+    /// A line after the dart lines that starts no known section of `.gmap`.
+    #[error("unknown section `{found}`: after the dart lines a `.gmap` file holds only `points <count>` and `labels <dim> <count>` sections")]
+    UnknownSection {
+        /// the line found (shortened)
+        found: String,
+    },
+    /// A section of `.gmap` ends before the number of lines its header announces.
+    #[error("truncated: the `{section}` section announces {expected} lines but the file ends after {found}")]
+    SectionTruncated {
+        /// the section's header
+        section: String,
+        /// lines announced
+        expected: u64,
+        /// lines found
+        found: u64,
+    },
+    /// A section of `.gmap` is followed by more lines than its header announces.
+    #[error("more lines than the {expected} the `{section}` section announces")]
+    ExtraSectionLines {
+        /// the section's header
+        section: String,
+        /// lines announced
+        expected: u64,
+    },
+    /// A section line names a dart the map does not have.
+    #[error("{what}: dart {dart} does not exist (the map has {darts} darts)")]
+    SectionDart {
+        /// which section
+        what: String,
+        /// the dart named
+        dart: u64,
+        /// the number of darts
+        darts: u64,
+    },
+    /// Two lines of a section give a value to the same cell.
+    #[error("{what}: dart {dart} is in the same cell as dart {other} of line {other_line}, which already has a value")]
+    DuplicateCell {
+        /// which section
+        what: String,
+        /// the dart of this line
+        dart: u64,
+        /// the dart of the earlier line
+        other: u64,
+        /// the earlier line
+        other_line: usize,
+    },
+    /// A label line is malformed.
+    #[error("{what}: {why}")]
+    BadLabels {
+        /// which line (e.g. `labels of dart 3`)
+        what: String,
+        /// what is wrong, at which character
+        why: String,
+    },
+    /// Labels on cells of a dimension the map (or the reader) cannot hold.
+    #[error("labels on {dim}-cells cannot be held here: the cells of dimension at most {max} can be labelled")]
+    LabelDimension {
+        /// the dimension of the section
+        dim: usize,
+        /// the largest dimension that can be labelled
+        max: usize,
+    },
     /// A `.moka` file records a dimension n < 3 (its last mark mask) that its darts do not
     /// have: some dart is linked along `alpha_k` for a k > n.
     #[error("the mark masks record dimension {recorded}, but dart {dart} is linked along alpha_{alpha}")]

@@ -9,10 +9,35 @@
 //! A value equal to the dart's own number is a fixed point. Values are separated by
 //! spaces or tabs; lines may end with `\r\n`. The reader also skips blank lines and
 //! comment lines after the header (they are not data lines: dart `k` is still the `k`-th
-//! data line). The format holds no points: a map written to `.gmap` loses its embedding
-//! (use `.moka` to keep it).
+//! data line).
 //!
-//! Reading is O(file size) plus the validation of BO Def. 1, O(N n²).
+//! ## Sections
+//!
+//! After the dart lines, optional sections carry vertex points and cell labels. Each
+//! starts with one header line naming its kind, (for labels) the cell dimension, and its
+//! number of lines; each line names one cell by one of its darts:
+//!
+//! ```text
+//! points <count>
+//! <dart> <x> <y> [<z>]                      one line per vertex with a point (z = 0 if absent)
+//! labels <dim> <count>
+//! <dart> <name>=<value> <name>=<value> ...  one line per <dim>-cell with labels
+//! ```
+//!
+//! Coordinates are finite reals. A label value is an integer (`-12`), a real (`1.5`,
+//! `2e-3`: a `.` or an exponent) or a text in double quotes with the escapes `\\`, `\"`,
+//! `\n`, `\r`, `\t` and `\u{hex}`, so a record is always one line; a name is
+//! `[A-Za-z_][A-Za-z0-9_.-]*` or quoted. Sections come in any order, `labels` once per
+//! dimension at most in what the writer produces; two lines giving a value to the same cell
+//! are refused. A file without sections reads exactly as before they existed.
+//!
+//! [`read_gmap`] gives a [`DenseMap`] with the points on every dart of their vertex and
+//! checks, then drops, the labels; [`read_labelled_gmap`] gives a [`LabelledGMap`] with
+//! both. The writers write the points when the map has some, and [`write_labelled_gmap`]
+//! the labels of every dimension.
+//!
+//! Reading is O(file size) plus the validation of BO Def. 1, O(N n²), plus O(N n) per
+//! section.
 
 use std::path::Path;
 
@@ -20,8 +45,10 @@ use super::{
     bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
     write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
-use crate::alpha::MAX_DIM;
-use crate::dense::{Dart, DenseMap};
+use crate::alpha::{AlphaSet, MAX_DIM};
+use crate::dense::{Dart, DenseMap, Point};
+use crate::edit::DartId;
+use crate::labels::{parse_labels, LabelledGMap, Labels, MAX_LABELLED_DIM};
 
 const HEADER: &str = "gmap <n> <number of darts>";
 
@@ -76,6 +103,79 @@ pub fn parse_gmap(bytes: &[u8], name: &str) -> Result<DenseMap, ReadError> {
 
 /// [`parse_gmap`] with options.
 pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
+    let (mut map, sections) = parse_parts(bytes, name, opts)?;
+    sections.check(&map, name, map.dim())?;
+    sections.apply_points(&mut map);
+    Ok(map)
+}
+
+/// The optional sections of a `.gmap` file, as read (each entry with its line).
+#[derive(Default)]
+struct Sections {
+    points: Vec<(u32, Point, usize)>,
+    labels: Vec<(usize, u32, Labels, usize)>,
+}
+
+impl Sections {
+    /// Refuses two lines for one cell, and labels above dimension `max_dim`.
+    fn check(&self, map: &DenseMap, name: &str, max_dim: usize) -> Result<(), ReadError> {
+        let err = |line: usize, kind| ReadError::new(name, Some(line), kind);
+        if !self.points.is_empty() {
+            first_per_cell(map, 0, self.points.iter().map(|&(d, _, l)| (d, l)), "points")
+                .map_err(|(l, k)| err(l, k))?;
+        }
+        for dim in 0..=map.dim() {
+            let lines = self.labels.iter().filter(|l| l.0 == dim).map(|l| (l.1, l.3));
+            first_per_cell(map, dim, lines, &format!("labels {dim}")).map_err(|(l, k)| err(l, k))?;
+        }
+        if let Some(&(dim, _, _, line)) = self.labels.iter().find(|l| l.0 > max_dim) {
+            return Err(err(line, ReadErrorKind::LabelDimension { dim, max: max_dim }));
+        }
+        Ok(())
+    }
+
+    /// Puts each point on every dart of its vertex. O(N n).
+    fn apply_points(&self, map: &mut DenseMap) {
+        for &(d, p, _) in &self.points {
+            for x in map.orbit(Dart(d), AlphaSet::cell(0, map.dim())) {
+                map.set_point(x, Some(p));
+            }
+        }
+    }
+}
+
+/// Checks that no two of `lines` (dart, line) name the same `dim`-cell. O(N n) when there
+/// is a line.
+fn first_per_cell(
+    map: &DenseMap,
+    dim: usize,
+    lines: impl Iterator<Item = (u32, usize)>,
+    what: &str,
+) -> Result<(), (usize, ReadErrorKind)> {
+    let mut lines = lines.peekable();
+    if lines.peek().is_none() {
+        return Ok(());
+    }
+    let cells = map.cells(dim);
+    let mut seen: Vec<Option<(u32, usize)>> = vec![None; cells.len()];
+    for (d, line) in lines {
+        let c = cells.cell_of(Dart(d)).index();
+        if let Some((other, other_line)) = seen[c] {
+            let kind = ReadErrorKind::DuplicateCell {
+                what: what.to_string(),
+                dart: d as u64,
+                other: other as u64,
+                other_line,
+            };
+            return Err((line, kind));
+        }
+        seen[c] = Some((d, line));
+    }
+    Ok(())
+}
+
+/// Reads the `.gmap` text into the map (validated) and its sections (syntax checked).
+fn parse_parts(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<(DenseMap, Sections), ReadError> {
     check_utf8(bytes, name)?;
     let err = |line: usize, kind| ReadError::new(name, Some(line), kind);
     let mut s = Scanner::new(bytes);
@@ -174,13 +274,214 @@ pub fn parse_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
         s.next_line();
     }
     s.skip_empty_lines();
+    let mut sections = Sections::default();
     if !s.at_end() {
-        return Err(err(s.line, ReadErrorKind::ExtraLines { expected: darts }));
+        let mut peek = Scanner { b: s.b, pos: s.pos, line: s.line };
+        peek.skip_blank();
+        if peek.b.get(peek.pos).is_some_and(u8::is_ascii_digit) {
+            return Err(err(s.line, ReadErrorKind::ExtraLines { expected: darts }));
+        }
+        read_sections(&mut s, name, dim, darts, &mut sections)?;
     }
     let map = DenseMap::from_flat_unchecked(dim, alpha)
         .map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
     map.validate().map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
-    Ok(map)
+    Ok((map, sections))
+}
+
+const POINTS_HEADER: &str = "points <count>";
+const LABELS_HEADER: &str = "labels <dim> <count>";
+
+/// Reads the sections after the dart lines, up to the end of the file.
+fn read_sections(s: &mut Scanner, name: &str, dim: usize, darts: u64, out: &mut Sections) -> Result<(), ReadError> {
+    let err = |line: usize, kind| ReadError::new(name, Some(line), kind);
+    let mut previous: Option<(String, u64)> = None;
+    while !s.at_end() {
+        let header_line = s.line;
+        s.skip_blank();
+        let found = s.rest_of_line();
+        if let (Some((section, expected)), true) = (&previous, found.first().is_some_and(u8::is_ascii_digit)) {
+            let kind = ReadErrorKind::ExtraSectionLines { section: section.clone(), expected: *expected };
+            return Err(err(header_line, kind));
+        }
+        let bad = |expected| err(header_line, ReadErrorKind::BadHeader { expected, found: shorten(found, 60) });
+        let (expected, cell_dim) = match s.token() {
+            Some(b"points") => (POINTS_HEADER, None),
+            Some(b"labels") => match s.number() {
+                Num::Value(v) if v <= dim as u64 => (LABELS_HEADER, Some(v as usize)),
+                Num::Value(v) => {
+                    let kind =
+                        ReadErrorKind::LabelDimension { dim: usize::try_from(v).unwrap_or(usize::MAX), max: dim };
+                    return Err(err(header_line, kind));
+                }
+                _ => return Err(bad(LABELS_HEADER)),
+            },
+            _ => return Err(err(header_line, ReadErrorKind::UnknownSection { found: shorten(found, 60) })),
+        };
+        let count = match s.number() {
+            Num::Value(v) => v,
+            _ => return Err(bad(expected)),
+        };
+        if s.token().is_some() {
+            return Err(bad(expected));
+        }
+        let section = shorten(found, 60);
+        previous = Some((section.clone(), count));
+        s.next_line();
+        for k in 0..count {
+            s.skip_empty_lines();
+            if s.at_end() {
+                let kind = ReadErrorKind::SectionTruncated { section, expected: count, found: k };
+                return Err(err(s.line, kind));
+            }
+            let line = s.line;
+            let line_start = s.pos;
+            let what = if cell_dim.is_some() { "labels" } else { "points" };
+            let d = match s.number() {
+                Num::Value(v) if v < darts => v as u32,
+                Num::Value(v) => {
+                    return Err(err(line, ReadErrorKind::SectionDart { what: what.into(), dart: v, darts }));
+                }
+                Num::Bad(tok) => return Err(err(line, bad_number(format!("{what}: dart"), tok))),
+                Num::Eol => return Err(err(line, bad_number(format!("{what}: dart"), b""))),
+            };
+            match cell_dim {
+                None => out.points.push((d, read_point(s, d).map_err(|k| err(line, k))?, line)),
+                Some(i) => {
+                    let rest = std::str::from_utf8(s.rest_of_line()).unwrap_or_default();
+                    // the columns before `rest` are ASCII (blanks and digits): bytes = characters
+                    let labels = parse_labels(rest, s.pos - line_start).map_err(|why| {
+                        err(line, ReadErrorKind::BadLabels { what: format!("labels of dart {d}"), why })
+                    })?;
+                    out.labels.push((i, d, labels, line));
+                }
+            }
+            s.next_line();
+        }
+        s.skip_empty_lines();
+    }
+    Ok(())
+}
+
+/// Reads `x y [z]` of the point of dart `d`, to the end of the line.
+fn read_point(s: &mut Scanner, d: u32) -> Result<Point, ReadErrorKind> {
+    let what = format!("point of dart {d}");
+    let mut p = [0.0; 3];
+    let mut k = 0;
+    while let Some(tok) = s.token() {
+        if k == 3 {
+            return Err(ReadErrorKind::WrongValueCount {
+                what,
+                expected: "2 or 3".into(),
+                found: 4 + s.count_tokens(),
+            });
+        }
+        let v = std::str::from_utf8(tok).ok().and_then(|t| t.parse::<f64>().ok()).filter(|v| v.is_finite());
+        match v {
+            Some(v) => p[k] = v,
+            None => return Err(ReadErrorKind::BadCoordinate { what, token: shorten(tok, 40) }),
+        }
+        k += 1;
+    }
+    if k < 2 {
+        return Err(ReadErrorKind::WrongValueCount { what, expected: "2 or 3".into(), found: k });
+    }
+    Ok(p)
+}
+
+/// Reads a `.gmap` file with its sections into a [`LabelledGMap`]: the points on their
+/// vertices, the labels on their cells (dimensions up to
+/// [`MAX_LABELLED_DIM`](crate::labels::MAX_LABELLED_DIM)). Errors name the file and line.
+pub fn read_labelled_gmap(path: impl AsRef<Path>) -> Result<LabelledGMap, ReadError> {
+    read_labelled_gmap_with(path, &ReadOptions::default())
+}
+
+/// [`read_labelled_gmap`] with options.
+pub fn read_labelled_gmap_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<LabelledGMap, ReadError> {
+    let path = path.as_ref();
+    if let Some(limit) = opts.max_darts {
+        check_header_limit(path, limit)?;
+    }
+    let bytes = read_bytes(path)?;
+    parse_labelled_gmap_with(&bytes, &path.display().to_string(), opts)
+}
+
+/// Parses the bytes of a `.gmap` file into a [`LabelledGMap`]; `name` is the file name used
+/// in errors. Never panics, whatever the bytes.
+pub fn parse_labelled_gmap(bytes: &[u8], name: &str) -> Result<LabelledGMap, ReadError> {
+    parse_labelled_gmap_with(bytes, name, &ReadOptions::default())
+}
+
+/// [`parse_labelled_gmap`] with options.
+pub fn parse_labelled_gmap_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<LabelledGMap, ReadError> {
+    let (mut map, sections) = parse_parts(bytes, name, opts)?;
+    sections.check(&map, name, map.dim().min(MAX_LABELLED_DIM))?;
+    sections.apply_points(&mut map);
+    let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&map);
+    for (dim, d, labels, _) in &sections.labels {
+        set_labels(&mut g, *dim, ids[*d as usize], labels.clone());
+    }
+    Ok(g)
+}
+
+/// Sets the labels of the `dim`-cell of `d` (`dim <= MAX_LABELLED_DIM` and `dim <= n`,
+/// checked by the caller).
+fn set_labels(g: &mut LabelledGMap, dim: usize, d: DartId, l: Labels) {
+    let _ = match dim {
+        0 => g.try_set_attribute::<0>(d, l),
+        1 => g.try_set_attribute::<1>(d, l),
+        2 => g.try_set_attribute::<2>(d, l),
+        3 => g.try_set_attribute::<3>(d, l),
+        4 => g.try_set_attribute::<4>(d, l),
+        _ => g.try_set_attribute::<5>(d, l),
+    };
+}
+
+/// The labels of the `dim`-cell of `d`.
+fn labels_of(g: &LabelledGMap, dim: usize, d: DartId) -> Option<&Labels> {
+    match dim {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        3 => g.attribute::<3>(d),
+        4 => g.attribute::<4>(d),
+        _ => g.attribute::<5>(d),
+    }
+}
+
+/// The `.gmap` text of a [`LabelledGMap`]: the darts in storage order, the points, then a
+/// `labels` section per dimension that has labels (each cell named by its first dart in
+/// storage order). O(N n).
+pub fn format_labelled_gmap(g: &LabelledGMap) -> Vec<u8> {
+    use std::fmt::Write as _;
+    let (dense, ids) = g.to_dense();
+    let mut out = format_gmap(&dense);
+    let mut index: slotmap::SecondaryMap<DartId, u32> = slotmap::SecondaryMap::with_capacity(ids.len());
+    for (k, &d) in ids.iter().enumerate() {
+        index.insert(d, k as u32);
+    }
+    for dim in 0..=g.dim().min(MAX_LABELLED_DIM) {
+        let mut lines = String::new();
+        let mut count = 0;
+        for d in g.one_dart_per_cell(dim) {
+            if let Some(l) = labels_of(g, dim, d) {
+                count += 1;
+                let _ =
+                    if l.is_empty() { writeln!(lines, "{}", index[d]) } else { writeln!(lines, "{} {l}", index[d]) };
+            }
+        }
+        if count > 0 {
+            out.extend_from_slice(format!("labels {dim} {count}\n").as_bytes());
+            out.extend_from_slice(lines.as_bytes());
+        }
+    }
+    out
+}
+
+/// Writes a [`LabelledGMap`] to `path` in the `.gmap` format with its sections, through a
+/// temporary file renamed over `path`.
+pub fn write_labelled_gmap(g: &LabelledGMap, path: impl AsRef<Path>) -> Result<(), WriteError> {
+    write_atomically(path.as_ref(), &format_labelled_gmap(g))
 }
 
 /// Parses a plain data line at `pos`: `w` decimal values below `darts` (at most 10 digits
@@ -217,7 +518,8 @@ fn fast_line(b: &[u8], pos: usize, w: usize, darts: u64, out: &mut Vec<u32>) -> 
     Some(p)
 }
 
-/// The `.gmap` text of a map (no comment line; points are not written). O(N n).
+/// The `.gmap` text of a map (no comment line): the dart lines, then a `points` section when
+/// some dart has a point (one line per vertex, from its first dart with a point). O(N n).
 pub fn format_gmap(map: &DenseMap) -> Vec<u8> {
     let w = map.dim() + 1;
     let mut out = Vec::with_capacity(32 + map.flat().len() * 8);
@@ -230,6 +532,21 @@ pub fn format_gmap(map: &DenseMap) -> Vec<u8> {
             push_u32(&mut out, v);
         }
         out.push(b'\n');
+    }
+    if map.has_points() {
+        let vertices = map.cells(0);
+        let mut first: Vec<Option<(u32, Point)>> = vec![None; vertices.len()];
+        for d in map.darts() {
+            let c = vertices.cell_of(d).index();
+            if first[c].is_none() {
+                first[c] = map.point(d).map(|p| (d.0, p));
+            }
+        }
+        let lines: Vec<(u32, Point)> = first.into_iter().flatten().collect();
+        out.extend_from_slice(format!("points {}\n", lines.len()).as_bytes());
+        for (d, p) in lines {
+            out.extend_from_slice(format!("{d} {:?} {:?} {:?}\n", p[0], p[1], p[2]).as_bytes());
+        }
     }
     out
 }
@@ -355,5 +672,104 @@ mod tests {
         assert!(e.to_string().starts_with(&format!("{}: cannot read the file: ", missing.display())));
         let e = write_gmap(&m, dir.path().join("no/such/dir/x.gmap")).unwrap_err();
         assert!(matches!(e, WriteError::Io { .. }));
+    }
+}
+
+#[cfg(test)]
+mod section_tests {
+    use super::*;
+    use crate::labels::LabelValue;
+    use crate::{examples, GMap};
+
+    fn msg(bytes: &[u8]) -> String {
+        parse_labelled_gmap(bytes, "f.gmap").unwrap_err().to_string()
+    }
+
+    /// A segment (1-map, 2 darts) with sections.
+    const SEGMENT: &str = "gmap 1 2\n1 0\n0 1\n";
+
+    #[test]
+    fn points_and_labels_read_and_write_back() {
+        let text = format!(
+            "{SEGMENT}points 2\n0 0 0 0\n1 1.5 -2\n# a comment between sections\nlabels 1 1\n1 name=\"a \\\"b\\\"\\nc\" n=3 x=0.25\nlabels 0 1\n0\n"
+        );
+        let g = parse_labelled_gmap(text.as_bytes(), "s.gmap").unwrap();
+        let d: Vec<_> = g.darts().collect();
+        assert_eq!(g.point(d[0]), Some([0.0, 0.0, 0.0]));
+        assert_eq!(g.point(d[1]), Some([1.5, -2.0, 0.0]));
+        let edge = g.attribute::<1>(d[0]).unwrap();
+        assert_eq!(edge.get("name"), Some(&LabelValue::Text("a \"b\"\nc".into())));
+        assert_eq!(edge.get("n"), Some(&LabelValue::Int(3)));
+        assert_eq!(edge.get("x"), Some(&LabelValue::Real(0.25)));
+        assert_eq!(g.attribute::<0>(d[0]), Some(&Labels::new()));
+        assert_eq!(g.attribute::<0>(d[1]), None);
+        let out = String::from_utf8(format_labelled_gmap(&g)).unwrap();
+        assert_eq!(
+            out,
+            "gmap 1 2\n1 0\n0 1\npoints 2\n0 0.0 0.0 0.0\n1 1.5 -2.0 0.0\nlabels 0 1\n0\nlabels 1 1\n0 name=\"a \\\"b\\\"\\nc\" n=3 x=0.25\n"
+        );
+        let back = parse_labelled_gmap(out.as_bytes(), "s.gmap").unwrap();
+        assert_eq!(format_labelled_gmap(&back), out.as_bytes());
+        // the dense reader keeps the points on every dart of the vertex, drops the labels
+        let dense = parse_gmap(text.as_bytes(), "s.gmap").unwrap();
+        assert_eq!(dense.point(Dart(1)), Some([1.5, -2.0, 0.0]));
+        assert_eq!(parse_gmap(&format_gmap(&dense), "x").unwrap(), dense);
+    }
+
+    #[test]
+    fn a_map_with_points_on_every_vertex_round_trips() {
+        let (mut g, ids) = GMap::from_dense(&examples::cylinder());
+        for (k, &d) in ids.iter().enumerate() {
+            if g.point(d).is_none() {
+                g.set_point(d, Some([k as f64, 0.1 * k as f64, -3.0]));
+            }
+        }
+        let dense = g.to_dense().0;
+        let text = format_gmap(&dense);
+        assert_eq!(parse_gmap(&text, "c.gmap").unwrap(), dense);
+    }
+
+    #[test]
+    fn malformed_sections_name_the_line() {
+        let m = |rest: &str| msg(format!("{SEGMENT}{rest}").as_bytes());
+        assert_eq!(m("  0 0\n"), "f.gmap:4: more dart lines than the 2 darts the header announces");
+        assert_eq!(m("colors 1\n"), "f.gmap:4: unknown section `colors 1`: after the dart lines a `.gmap` file holds only `points <count>` and `labels <dim> <count>` sections");
+        assert_eq!(m("points\n"), "f.gmap:4: bad header: expected `points <count>`, found `points`");
+        assert_eq!(m("points 1 2\n"), "f.gmap:4: bad header: expected `points <count>`, found `points 1 2`");
+        assert_eq!(m("labels x 1\n"), "f.gmap:4: bad header: expected `labels <dim> <count>`, found `labels x 1`");
+        assert_eq!(
+            m("labels 2 1\n0\n"),
+            "f.gmap:4: labels on 2-cells cannot be held here: the cells of dimension at most 1 can be labelled"
+        );
+        assert_eq!(
+            m("points 2\n0 0 0\n"),
+            "f.gmap:6: truncated: the `points 2` section announces 2 lines but the file ends after 1"
+        );
+        assert_eq!(m("points 1\n2 0 0\n"), "f.gmap:5: points: dart 2 does not exist (the map has 2 darts)");
+        assert_eq!(m("points 1\n-1 0 0\n"), "f.gmap:5: points: dart: `-1` is negative");
+        assert_eq!(m("points 1\n0 0\n"), "f.gmap:5: point of dart 0: expected 2 or 3 values, found 1");
+        assert_eq!(m("points 1\n0 0 0 0 0\n"), "f.gmap:5: point of dart 0: expected 2 or 3 values, found 4");
+        assert_eq!(m("points 1\n0 0 nan\n"), "f.gmap:5: point of dart 0: `nan` is not a finite number");
+        assert_eq!(
+            m("labels 1 2\n0 a=1\n1 a=2\n"),
+            "f.gmap:6: labels 1: dart 1 is in the same cell as dart 0 of line 5, which already has a value"
+        );
+        assert_eq!(m("labels 1 1\n0 a=\"x\n"), "f.gmap:5: labels of dart 0: column 5: the quoted text is not closed");
+        assert_eq!(m("points 1\n0 0 0\n9 9\n"), "f.gmap:6: more lines than the 1 the `points 1` section announces");
+        // the dense reader checks the sections too
+        assert!(parse_gmap(format!("{SEGMENT}points 1\n0 0 x\n").as_bytes(), "f").is_err());
+    }
+
+    #[test]
+    fn labels_above_the_labelled_dimensions_are_refused() {
+        let mut text = b"gmap 6 1\n0 0 0 0 0 0 0\nlabels 6 1\n0 a=1\n".to_vec();
+        assert_eq!(
+            msg(&text),
+            "f.gmap:4: labels on 6-cells cannot be held here: the cells of dimension at most 5 can be labelled"
+        );
+        // the dense reader takes them (and drops them)
+        assert!(parse_gmap(&text, "f").is_ok());
+        text = b"gmap 6 1\n0 0 0 0 0 0 0\nlabels 5 1\n0 a=1\n".to_vec();
+        assert!(parse_labelled_gmap(&text, "f").is_ok());
     }
 }
