@@ -70,8 +70,10 @@
 #![warn(missing_docs)]
 
 pub mod alpha;
+mod append;
 pub mod attr;
 mod cells3;
+pub mod characteristics;
 pub mod compacted;
 pub mod dense;
 pub mod edit;
@@ -89,6 +91,7 @@ pub mod walk;
 
 pub use alpha::{AlphaSet, MAX_DIM};
 pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};
+pub use characteristics::Characteristics;
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, MapDefect, SewError};

@@ -1,0 +1,248 @@
+//! The 40³ hexahedral grid built the way a modelling kernel builds it, to compare side by
+//! side with CGAL's `Linear_cell_complex_for_generalized_map<3>`
+//! (`benches/anchors/cgal_lcc_grid.cpp`, the same steps): each of the 64,000 hexahedra made
+//! on its own (a unit cube with its corner points, copied into the map at its place with
+//! [`GMap::append`]), then every pair of neighbours 3-sewn (187,200 sews). Three variants:
+//!
+//! * `no_attributes`: combinatorial hexahedra in a `GMap`;
+//! * `points`: hexahedra with their eight corner points (the sews merge the points that
+//!   meet: 512,000 points made, 68,921 left);
+//! * `points_and_labels`: the same with an integer label on every volume.
+//!
+//! Before the Criterion groups, each variant is timed (best of 3, building and sewing apart)
+//! and, when CGAL's headers and g++ are installed, CGAL's harness is run in the same sitting
+//! (`benches/anchors/run-cgal-lcc.sh 40 3`); the ratios ours / CGAL's are printed.
+//!
+//! `cargo bench --bench lcc`
+
+use std::collections::VecDeque;
+use std::process::Command;
+use std::time::Instant;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use gmap_core::{Attributes, Cells, DartId, DenseMap, GMap};
+use gmap_ops::build;
+
+mod common;
+
+const K: usize = 40;
+
+/// A map whose volumes carry an integer label.
+type Labelled = GMap<((), (), (), Cells<u32>)>;
+
+/// A path of alpha indices from the dart a constructor returns to another dart of the same
+/// hexahedron. Every hexahedron is laid out the same way, so a path found once on a
+/// prototype (from its geometry) names the same dart in every hexahedron.
+type Path = Vec<usize>;
+
+fn follow<A: Attributes>(g: &GMap<A>, d: DartId, path: &[usize]) -> DartId {
+    path.iter().fold(d, |x, &i| g.alpha(x, i))
+}
+
+/// The unit cube `[0,1]³` with a point on every corner: the builders' square (a 4-gon with
+/// its corners on the unit circle) turned by 45° and scaled onto `[0,1]²`, extruded along z.
+fn unit_cube() -> DenseMap {
+    let mut square = build::polygon(4).expect("a square");
+    for d in square.darts() {
+        if let Some([x, y, _]) = square.point(d) {
+            let p = [((x - y + 1.) / 2.).round(), ((x + y + 1.) / 2.).round(), 0.];
+            square.set_point(d, Some(p));
+        }
+    }
+    build::extrude(&square).expect("a cube")
+}
+
+/// Copies the unit cube moved to `at` into `g`, the way a modelling kernel makes a
+/// hexahedron from its eight corners: 48 new darts, 8 new vertex points. Returns the copy
+/// of the cube's first dart. `cube` is the unit cube, `moved` a scratch copy of it.
+fn hexahedron_at<A: Attributes>(g: &mut GMap<A>, cube: &DenseMap, moved: &mut DenseMap, at: [f64; 3]) -> DartId {
+    for d in cube.darts() {
+        let p = cube.point(d).map(|p| [p[0] + at[0], p[1] + at[1], p[2] + at[2]]);
+        moved.set_point(d, p);
+    }
+    g.append(moved)[0]
+}
+
+/// For each axis, the paths to the darts of a hexahedron's upper face (coordinate 1 on the
+/// axis) and lower face (coordinate 0) that meet when two neighbours along the axis are
+/// 3-sewn: on the corner at the origin of the face, on its edge along the next axis.
+struct SewPaths {
+    upper: [Path; 3],
+    lower: [Path; 3],
+}
+
+fn sew_paths(cube: &DenseMap) -> SewPaths {
+    let mut proto = GMap::new(3);
+    let d0 = proto.append(cube)[0];
+    // shortest alpha path from d0 to every dart of the hexahedron, breadth first
+    let mut paths: Vec<(DartId, Path)> = vec![(d0, Vec::new())];
+    let mut todo = VecDeque::from([0usize]);
+    while let Some(k) = todo.pop_front() {
+        let (d, path) = paths[k].clone();
+        for i in 0..=2 {
+            let e = proto.alpha(d, i);
+            if paths.iter().all(|(x, _)| *x != e) {
+                let mut p = path.clone();
+                p.push(i);
+                paths.push((e, p));
+                todo.push_back(paths.len() - 1);
+            }
+        }
+    }
+    let point = |d: DartId| proto.point(d).expect("every corner has a point");
+    let find = |axis: usize, side: f64| -> Path {
+        let (next, third) = ((axis + 1) % 3, (axis + 2) % 3);
+        let hit = paths.iter().find(|(d, _)| {
+            let (a, b) = (point(*d), point(proto.alpha(*d, 0)));
+            let c = point(follow(&proto, *d, &[0, 1, 0]));
+            a[axis] == side
+                && a[next] == 0.
+                && a[third] == 0.
+                && b[axis] == side
+                && b[next] == 1.
+                && b[third] == 0.
+                && c[axis] == side
+        });
+        hit.map(|(_, p)| p.clone()).expect("a hexahedron has a dart on every corner, edge and face")
+    };
+    SewPaths { upper: [0, 1, 2].map(|a| find(a, 1.)), lower: [0, 1, 2].map(|a| find(a, 0.)) }
+}
+
+/// Makes the `K³` hexahedra with `make` (given the cell's position and number), then 3-sews
+/// every pair of neighbours. Returns the map and the seconds spent building and sewing.
+fn grid<A: Attributes>(
+    paths: &SewPaths,
+    mut make: impl FnMut(&mut GMap<A>, [usize; 3], u32) -> DartId,
+) -> (GMap<A>, f64, f64) {
+    let mut g = GMap::with_attributes(3);
+    let t0 = Instant::now();
+    let mut hex = Vec::with_capacity(K * K * K);
+    for z in 0..K {
+        for y in 0..K {
+            for x in 0..K {
+                let label = hex.len() as u32;
+                hex.push(make(&mut g, [x, y, z], label));
+            }
+        }
+    }
+    let built = t0.elapsed().as_secs_f64();
+    let t1 = Instant::now();
+    let step = [1, K, K * K];
+    for z in 0..K {
+        for y in 0..K {
+            for x in 0..K {
+                let i = (z * K + y) * K + x;
+                for (axis, c) in [x, y, z].into_iter().enumerate() {
+                    if c + 1 < K {
+                        let a = follow(&g, hex[i], &paths.upper[axis]);
+                        let b = follow(&g, hex[i + step[axis]], &paths.lower[axis]);
+                        g.sew(a, b, 3);
+                    }
+                }
+            }
+        }
+    }
+    (g, built, t1.elapsed().as_secs_f64())
+}
+
+/// The unit cube with and without points, and the sew paths.
+struct Setup {
+    cube: DenseMap,
+    bare: DenseMap,
+    paths: SewPaths,
+}
+
+fn plain(s: &Setup) -> (GMap, f64, f64) {
+    grid(&s.paths, |g, _, _| g.append(&s.bare)[0])
+}
+
+fn with_points(s: &Setup) -> (GMap, f64, f64) {
+    let mut moved = s.cube.clone();
+    grid(&s.paths, |g, [x, y, z], _| hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]))
+}
+
+fn with_labels(s: &Setup) -> (Labelled, f64, f64) {
+    let mut moved = s.cube.clone();
+    grid(&s.paths, |g, [x, y, z], label| {
+        let d = hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]);
+        g.set_attribute::<3>(d, label);
+        d
+    })
+}
+
+/// Best of three `(build, sew)` seconds, and the map of the first run.
+fn best_of_3<M>(mut run: impl FnMut() -> (M, f64, f64)) -> (M, f64, f64) {
+    let (m, mut b, mut s) = run();
+    for _ in 0..2 {
+        let (_, b2, s2) = run();
+        b = b.min(b2);
+        s = s.min(s2);
+    }
+    (m, b, s)
+}
+
+/// CGAL's `(build, sew)` seconds for the three variants, from the anchor run in this
+/// sitting, or `None` when CGAL or g++ is missing or the harness fails.
+fn cgal_anchor() -> Option<Vec<(f64, f64)>> {
+    if !std::path::Path::new("/usr/include/CGAL/Linear_cell_complex_for_generalized_map.h").exists() {
+        return None;
+    }
+    let out =
+        Command::new("bash").arg(common::anchor("run-cgal-lcc.sh")).args([K.to_string(), "3".into()]).output().ok()?;
+    if !out.status.success() {
+        eprintln!("lcc bench: CGAL anchor failed: {}", String::from_utf8_lossy(&out.stderr).trim());
+        return None;
+    }
+    let text = String::from_utf8(out.stdout).ok()?;
+    text.lines()
+        .map(|l| {
+            let v: serde_json::Value = serde_json::from_str(l).ok()?;
+            Some((v["build_s"].as_f64()?, v["sew_s"].as_f64()?))
+        })
+        .collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let cube = unit_cube();
+    let mut bare = cube.clone();
+    for d in cube.darts() {
+        bare.set_point(d, None);
+    }
+    let s = Setup { paths: sew_paths(&cube), cube, bare };
+    let n = K * K * K;
+    let (g0, b0, s0) = best_of_3(|| plain(&s));
+    let (g1, b1, s1) = best_of_3(|| with_points(&s));
+    let (g2, b2, s2) = best_of_3(|| with_labels(&s));
+    // the three grids are the same complex: 41³ vertices, 3·40·41² edges, 3·40²·41 faces
+    for ch in [g0.characteristics(), g1.characteristics(), g2.characteristics()] {
+        assert_eq!(ch.cells, vec![68_921, 201_720, 196_800, 64_000], "{ch}");
+        assert!(ch.valid && ch.components == 1, "{ch}");
+    }
+    assert_eq!((g1.point_count(), g2.point_count(), g2.attribute_count::<3>()), (68_921, 68_921, n));
+    // the corner of the last cell, moved there with its cube
+    assert!(g1.darts().any(|d| g1.point(d) == Some([K as f64; 3])));
+    drop((g0, g1, g2));
+    let ours = [("no attributes", b0, s0), ("points", b1, s1), ("points and labels", b2, s2)];
+    let anchor = cgal_anchor();
+    for (k, (name, b, s)) in ours.iter().enumerate() {
+        match anchor.as_ref().and_then(|a| a.get(k)) {
+            Some(&(cb, cs)) => eprintln!(
+                "lcc bench grid{K}, {name}: ours build {b:.3} s + sew {s:.3} s = {:.3} s; CGAL {cb:.3} + {cs:.3} = {:.3} s; \
+                 ours / CGAL = {:.2}",
+                b + s,
+                cb + cs,
+                (b + s) / (cb + cs)
+            ),
+            None => eprintln!("lcc bench grid{K}, {name}: ours build {b:.3} s + sew {s:.3} s; CGAL anchor not run"),
+        }
+    }
+    let mut group = c.benchmark_group(format!("lcc{K}"));
+    group.sample_size(10);
+    group.bench_function("no_attributes", |b| b.iter(|| plain(&s).0.dart_count()));
+    group.bench_function("points", |b| b.iter(|| with_points(&s).0.dart_count()));
+    group.bench_function("points_and_labels", |b| b.iter(|| with_labels(&s).0.dart_count()));
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

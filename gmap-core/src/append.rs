@@ -1,0 +1,121 @@
+//! Copying a [`DenseMap`] into an editable [`GMap`] next to what it holds: a disjoint union,
+//! the way to put a builder's object (a simplex, a cube, a polygon, an imported mesh) into a
+//! map that is being edited.
+//!
+//! ```
+//! use gmap_core::{examples, GMap, MapView};
+//! let mut g = GMap::new(3);
+//! // the torus of the examples is a 2-map: in the 3-map its darts are 3-free
+//! let a = g.append(&examples::torus());
+//! let b = g.append(&examples::torus());
+//! assert_eq!(g.dart_count(), 16);
+//! assert!(g.is_free(a[0], 3));
+//! g.sew(a[0], b[0], 3);
+//! assert_eq!(MapView::component_count(&g), 1);
+//! ```
+
+use crate::attr::Attributes;
+use crate::dense::DenseMap;
+use crate::edit::{DartId, GMap, SewError};
+
+impl<A: Attributes> GMap<A> {
+    /// Copies `m` into this map as new darts, linked as in `m` and free for every `alpha_k`
+    /// with `k > m.dim()`, so `m`'s components become components of this map. Returns the
+    /// handles: dense dart `k` of `m` is `ids[k]`. A vertex of `m` with a point gets it
+    /// (the point of its first dart, in dense order, that has one); no attribute is set.
+    ///
+    /// Precondition: `m.dim() <= self.dim()` (else [`SewError::BadIndex`] names
+    /// `alpha_{m.dim()}`), and `m` is valid (BO Def. 1) so that the copy is. O(N n) for N
+    /// darts of `m`.
+    pub fn try_append(&mut self, m: &DenseMap) -> Result<Vec<DartId>, SewError> {
+        if m.dim() > self.dim() {
+            return Err(SewError::BadIndex { alpha: m.dim(), dim: self.dim() });
+        }
+        let ids: Vec<DartId> = (0..m.dart_count()).map(|_| self.create_dart()).collect();
+        for d in m.darts() {
+            for (i, &e) in m.row(d).iter().enumerate() {
+                // each link once, from its smaller end; a fixed point stays free
+                if (e as usize) > d.index() {
+                    self.try_link(ids[d.index()], ids[e as usize], i)?;
+                }
+            }
+        }
+        if m.has_points() {
+            for d in m.darts() {
+                let x = ids[d.index()];
+                if let (Some(p), None) = (m.point(d), self.point(x)) {
+                    self.set_point(x, Some(p));
+                }
+            }
+        }
+        Ok(ids)
+    }
+
+    /// Like [`GMap::try_append`], panicking when `m.dim() > self.dim()`.
+    #[track_caller]
+    pub fn append(&mut self, m: &DenseMap) -> Vec<DartId> {
+        match self.try_append(m) {
+            Ok(ids) => ids,
+            Err(e) => panic!("{e}"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{examples, Cells, Characteristics, GMap, MapView, SewError};
+
+    #[test]
+    fn two_copies_are_two_components_with_the_cells_of_both() {
+        let m = examples::klein_bottle();
+        let mut g = GMap::new(2);
+        let a = g.append(&m);
+        let b = g.append(&m);
+        assert_eq!(a.len(), m.dart_count());
+        assert!(a.iter().all(|x| !b.contains(x)));
+        let one = Characteristics::of(&m);
+        let two = g.characteristics();
+        assert_eq!(two.darts, 2 * one.darts);
+        assert_eq!(two.cells, one.cells.iter().map(|c| 2 * c).collect::<Vec<_>>());
+        assert_eq!(two.components, 2);
+        assert_eq!(two.orientable, one.orientable);
+        assert!(two.valid);
+    }
+
+    #[test]
+    fn the_copy_follows_the_dense_involutions() {
+        let m = examples::cylinder();
+        let mut g: GMap<((), (), Cells<u8>)> = GMap::with_attributes(3);
+        let ids = g.append(&m);
+        for d in m.darts() {
+            for i in 0..=2 {
+                assert_eq!(g.alpha(ids[d.index()], i), ids[m.alpha(d, i).index()]);
+            }
+            assert!(g.is_free(ids[d.index()], 3));
+        }
+        assert_eq!(MapView::cell_counts(&g), {
+            let mut c = m.cell_counts();
+            c.push(m.component_count());
+            c
+        });
+    }
+
+    #[test]
+    fn points_go_to_the_vertices() {
+        let mut m = crate::DenseMap::new(1, 2);
+        m.link(crate::Dart(0), crate::Dart(1), 0);
+        m.set_point(crate::Dart(0), Some([1.0, 2.0, 3.0]));
+        let mut g = GMap::new(1);
+        let ids = g.append(&m);
+        assert_eq!(g.point(ids[0]), Some([1.0, 2.0, 3.0]));
+        assert_eq!(g.point(ids[1]), None);
+        assert_eq!(g.point_count(), 1);
+    }
+
+    #[test]
+    fn a_map_of_higher_dimension_is_refused() {
+        let mut g = GMap::new(1);
+        assert_eq!(g.try_append(&examples::torus()), Err(SewError::BadIndex { alpha: 2, dim: 1 }));
+        assert_eq!(g.dart_count(), 0);
+    }
+}
