@@ -17,13 +17,14 @@
 
 use std::fmt;
 
-use num_bigint::BigInt;
 use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::reduce::{eliminate, Col, Mode};
 use crate::engine::ring::{Euclid, Ring, ZBig, Zi64, Zp};
 use crate::engine::snf::smith_diagonal;
+
+pub use crate::engine::natural::Natural;
 
 /// The coefficients of a homology computation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,8 +45,9 @@ impl fmt::Display for Coefficients {
 }
 
 /// Homology groups `H_0..H_n`: `H_k ≅ Z^betti[k] ⊕ Z/t_1 ⊕ … ⊕ Z/t_m` with
-/// `torsion[k] = [t_1, …, t_m]` the invariant factors (each > 1, each dividing the next).
-/// Over `Z/p`, `betti[k]` is the dimension of `H_k` and every `torsion[k]` is empty.
+/// `torsion[k] = [t_1, …, t_m]` the invariant factors (each > 1, each dividing the next),
+/// exact integers of any size ([`Natural`]). Over `Z/p`, `betti[k]` is the dimension of
+/// `H_k` and every `torsion[k]` is empty.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Homology {
     /// the coefficients used
@@ -53,7 +55,7 @@ pub struct Homology {
     /// rank (or dimension over `Z/p`) of each `H_k`
     pub betti: Vec<usize>,
     /// invariant factors of the torsion of each `H_k`, ascending
-    pub torsion: Vec<Vec<u64>>,
+    pub torsion: Vec<Vec<Natural>>,
 }
 
 impl Homology {
@@ -109,12 +111,6 @@ pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
     #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]
     NotPrime(u64),
-    /// A torsion coefficient does not fit in `u64`.
-    #[error("a torsion coefficient of H_{dim} exceeds 2^64")]
-    TorsionTooLarge {
-        /// the dimension of the group
-        dim: usize,
-    },
     /// The Euler–Poincaré formula failed: an internal error, reported rather than hidden.
     #[error("Euler–Poincaré check failed: cells give {cells}, Betti numbers give {betti}")]
     EulerPoincare {
@@ -294,7 +290,7 @@ fn assemble(
     coefficients: Coefficients,
     surviving: &[usize],
     rank: &[usize],
-    torsion: Vec<Vec<u64>>,
+    torsion: Vec<Vec<Natural>>,
 ) -> Result<Homology, HomologyError> {
     let n1 = surviving.len();
     let mut betti = Vec::with_capacity(n1);
@@ -331,13 +327,7 @@ fn integer_homology_with<R: Euclid>(
     let mut torsion = vec![Vec::new(); n1];
     for k in 0..n1 {
         if k + 1 < n1 {
-            let mut t = Vec::new();
-            for x in &r.diag[k + 1] {
-                match ring.abs_u64(x) {
-                    Some(v) => t.push(v),
-                    None => return Some(Err(HomologyError::TorsionTooLarge { dim: k })),
-                }
-            }
+            let mut t: Vec<Natural> = r.diag[k + 1].iter().map(|x| ring.abs_natural(x)).collect();
             t.sort_unstable();
             torsion[k] = t;
         }
@@ -397,12 +387,6 @@ pub fn homology_zp(c: &ChainComplex, p: u64) -> Result<Homology, HomologyError> 
         .ok_or(HomologyError::Internal("field reduction left a non-zero block"))?;
     let torsion = vec![Vec::new(); surviving.len()];
     assemble(c, Coefficients::Field(p), &surviving, &r.rank, torsion)
-}
-
-/// The integer of a big-integer torsion value, for callers that hold `BigInt`s.
-#[allow(dead_code)]
-pub(crate) fn big_to_u64(x: &BigInt) -> Option<u64> {
-    ZBig.abs_u64(x)
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@ pub mod chain;
 pub mod generators;
 pub mod homology;
 pub(crate) mod morse;
+pub mod natural;
 pub(crate) mod reduce;
 pub(crate) mod ring;
 pub(crate) mod snf;

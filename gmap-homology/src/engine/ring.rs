@@ -8,6 +8,8 @@ use std::cmp::Ordering;
 use std::fmt::Debug;
 
 use num_bigint::BigInt;
+
+use crate::engine::natural::Natural;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// The operations the sparse elimination needs from a coefficient ring.
@@ -38,6 +40,8 @@ pub(crate) trait Euclid: Ring {
     fn abs_u64(&self, a: &Self::E) -> Option<u64>;
     /// `a` as an `i64` (over `Z/p`: its representative in `0..p`), if it fits.
     fn to_i64(&self, a: &Self::E) -> Option<i64>;
+    /// `|a|` exactly (over `Z/p`: the representative in `0..p`).
+    fn abs_natural(&self, a: &Self::E) -> Natural;
 }
 
 /// `Z` with checked `i64` arithmetic.
@@ -79,6 +83,9 @@ impl Euclid for Zi64 {
     fn to_i64(&self, a: &i64) -> Option<i64> {
         Some(*a)
     }
+    fn abs_natural(&self, a: &i64) -> Natural {
+        Natural::from(a.unsigned_abs())
+    }
 }
 
 /// `Z` with arbitrary-precision integers.
@@ -119,6 +126,9 @@ impl Euclid for ZBig {
     }
     fn to_i64(&self, a: &BigInt) -> Option<i64> {
         a.to_i64()
+    }
+    fn abs_natural(&self, a: &BigInt) -> Natural {
+        Natural::abs_of(a)
     }
 }
 
@@ -184,6 +194,9 @@ impl Euclid for Zp {
     }
     fn to_i64(&self, a: &u64) -> Option<i64> {
         i64::try_from(*a).ok()
+    }
+    fn abs_natural(&self, a: &u64) -> Natural {
+        Natural::from(*a)
     }
 }
 
