@@ -52,3 +52,35 @@ fn repeated_keys_are_refused() {
     let o = gmap(&["homology", p(&fine), "--json"]);
     assert!(o.status.success(), "{}", stderr(&o));
 }
+
+/// The torus (one vertex, two edges, one square) as the boundary of one 3-cell: every
+/// dart 3-free. Its cells satisfy C1 but the 3-cell is not bounded by a sphere (C2).
+fn torus_bounded_cell() -> String {
+    let torus = gmap_core::examples::torus();
+    let mut text = format!("gmap 3 {}\n", torus.dart_count());
+    for d in torus.darts() {
+        let row: Vec<String> = torus.row(d).iter().map(u32::to_string).collect();
+        text.push_str(&format!("{} {}\n", row.join(" "), d.index()));
+    }
+    text
+}
+
+#[test]
+fn a_map_failing_c2_is_not_converted_to_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let map = write(dir.path(), "solid.gmap", &torus_bounded_cell());
+    let out = dir.path().join("solid.json");
+    refused(&gmap(&["convert", p(&map), p(&out)]), &["solid.json", "the 3-cell of dart 0", "condition C2"]);
+    assert!(!out.exists());
+    // the cellular method refuses the same cell; the map itself is read
+    refused(&gmap(&["homology", p(&map)]), &["the 3-cell of dart 0", "condition C2"]);
+    assert!(gmap(&["info", p(&map)]).status.success());
+    // the torus alone (C2 holds below dimension 3) converts and keeps its groups
+    let torus = dir.path().join("torus.gmap");
+    gmap_core::io::write_gmap(&gmap_core::examples::torus(), &torus).unwrap();
+    let json = dir.path().join("torus.json");
+    let o = gmap(&["convert", p(&torus), p(&json)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = gmap(&["homology", p(&json)]);
+    assert_eq!(common::stdout(&o), common::stdout(&gmap(&["homology", p(&torus)])));
+}
