@@ -22,7 +22,6 @@ use thiserror::Error;
 use crate::engine::chain::ChainComplex;
 use crate::engine::reduce::{eliminate, Col, Mode};
 use crate::engine::ring::{Euclid, Ring, ZBig, Zi64, Zp};
-use crate::engine::snf::smith_diagonal;
 
 pub use crate::engine::natural::Natural;
 
@@ -322,7 +321,7 @@ fn integer_homology_with<R: Euclid>(
 ) -> Option<Result<Homology, HomologyError>> {
     let s = if prereduce { survivors(ring, c)? } else { survivors_of(ring, c)? };
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
-    let r = ranks(ring, s, |block, cols| smith_diagonal(ring, block, cols))?;
+    let r = ranks(ring, s, |block, cols| ring.dense_smith(block, cols))?;
     let n1 = surviving.len();
     let mut torsion = vec![Vec::new(); n1];
     for k in 0..n1 {

@@ -8,4 +8,5 @@ pub mod natural;
 pub(crate) mod reduce;
 pub(crate) mod ring;
 pub(crate) mod snf;
+pub(crate) mod snf_modular;
 pub mod sparse;
