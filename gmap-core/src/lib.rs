@@ -77,6 +77,7 @@ pub mod io;
 mod kernels;
 pub mod marks;
 pub mod parallel;
+pub mod resources;
 pub mod union_find;
 pub mod view;
 

@@ -66,6 +66,9 @@ pub enum JsonError {
         /// 1-based column just after it
         column: usize,
     },
+    /// The file is too large for the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(gmap_core::resources::MemoryLimit),
     /// The file could not be read.
     #[error("cannot read: {0}")]
     Io(String),
@@ -196,7 +199,13 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
 }
 
 /// Reads and validates a `.json` file; errors name the file (and the line for syntax).
+///
+/// The file is refused before it is read when the text and what is built from it (about
+/// four times its size) would exceed the memory limit ([`gmap_core::resources`]).
 pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+    gmap_core::resources::check_memory("the file and its complex", size.checked_mul(4))
+        .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::MemoryLimit(e) })?;
     let text = std::fs::read_to_string(path)
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
     read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })

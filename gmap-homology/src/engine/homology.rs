@@ -131,6 +131,9 @@ pub enum HomologyError {
     /// The generator computation overflowed `i64`.
     #[error("a generator's coefficients overflow i64")]
     GeneratorOverflow,
+    /// The dense stage would take more than the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
     /// An internal consistency check failed (a bug, reported rather than a wrong group).
     #[error("internal error in the reduction: {0}")]
     Internal(&'static str),
@@ -254,34 +257,46 @@ fn survivors_of<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> 
     Some(Survivors { cells, d })
 }
 
-/// Stages 2 and 3: ranks and non-unit Smith diagonals of the surviving matrices.
+/// Stages 2 and 3: ranks and non-unit Smith diagonals of the surviving matrices (`None` on
+/// overflow). The dense block of each matrix is checked against the memory limit before it
+/// is allocated: its entries, a working copy and a residue per entry.
 fn ranks<R: Ring>(
     ring: &R,
     s: Survivors<R::E>,
     dense: impl Fn(Vec<Vec<R::E>>, usize) -> Option<Vec<R::E>>,
-) -> Option<Ranks<R::E>> {
+) -> Result<Option<Ranks<R::E>>, HomologyError> {
     let n1 = s.cells.len();
     let mut rank = vec![0usize; n1];
     let mut diag: Vec<Vec<R::E>> = vec![Vec::new(); n1];
     for (k, cols) in s.d.into_iter().enumerate().skip(1) {
         let rows = s.cells[k - 1].len();
-        let res = eliminate(ring, rows, cols, Mode::General)?;
+        let Some(res) = eliminate(ring, rows, cols, Mode::General) else { return Ok(None) };
         let mut row_ids: Vec<u32> = res.remaining.iter().flat_map(|(_, c)| c.iter().map(|(r, _)| *r)).collect();
         row_ids.sort_unstable();
         row_ids.dedup();
         let dense_cols: Vec<&Col<R::E>> = res.remaining.iter().map(|(_, c)| c).filter(|c| !c.is_empty()).collect();
+        let entry = 2 * std::mem::size_of::<R::E>() as u64 + 16;
+        let bytes = (row_ids.len() as u64).checked_mul(dense_cols.len() as u64).and_then(|e| e.checked_mul(entry));
+        gmap_core::resources::check_memory(&format!("the dense Smith form of ∂_{k}"), bytes)?;
         let mut block = vec![vec![ring.of_i64(0); dense_cols.len()]; row_ids.len()];
         for (j, c) in dense_cols.iter().enumerate() {
             for (r, v) in c.iter() {
-                let i = row_ids.binary_search(r).ok()?;
+                let Ok(i) = row_ids.binary_search(r) else { return Ok(None) };
                 block[i][j] = v.clone();
             }
         }
-        let d = if block.is_empty() { Vec::new() } else { dense(block, dense_cols.len())? };
+        let d = if block.is_empty() {
+            Vec::new()
+        } else {
+            match dense(block, dense_cols.len()) {
+                Some(d) => d,
+                None => return Ok(None),
+            }
+        };
         rank[k] = res.pivots.len() + d.len();
         diag[k] = d.into_iter().filter(|x| !ring.is_unit(x)).collect();
     }
-    Some(Ranks { rank, diag })
+    Ok(Some(Ranks { rank, diag }))
 }
 
 fn assemble(
@@ -321,7 +336,10 @@ fn integer_homology_with<R: Euclid>(
 ) -> Option<Result<Homology, HomologyError>> {
     let s = if prereduce { survivors(ring, c)? } else { survivors_of(ring, c)? };
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
-    let r = ranks(ring, s, |block, cols| ring.dense_smith(block, cols))?;
+    let r = match ranks(ring, s, |block, cols| ring.dense_smith(block, cols)) {
+        Ok(r) => r?,
+        Err(e) => return Some(Err(e)),
+    };
     let n1 = surviving.len();
     let mut torsion = vec![Vec::new(); n1];
     for k in 0..n1 {
@@ -382,7 +400,7 @@ pub fn homology_zp(c: &ChainComplex, p: u64) -> Result<Homology, HomologyError> 
     let s = survivors(&ring, c).ok_or(HomologyError::Internal("field reduction failed"))?;
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
     // over a field every non-zero entry is a unit, so stage 2 leaves nothing dense
-    let r = ranks(&ring, s, |block, _| if block.iter().flatten().all(|&x| x == 0) { Some(Vec::new()) } else { None })
+    let r = ranks(&ring, s, |block, _| if block.iter().flatten().all(|&x| x == 0) { Some(Vec::new()) } else { None })?
         .ok_or(HomologyError::Internal("field reduction left a non-zero block"))?;
     let torsion = vec![Vec::new(); surviving.len()];
     assemble(c, Coefficients::Field(p), &surviving, &r.rank, torsion)
