@@ -46,9 +46,9 @@ fn dense_json(dir: &Path, n: usize, d: &[i64], seed: u64) -> std::path::PathBuf 
     text.push_str(&regions.join(", "));
     text.push_str("], \"incidence\": [");
     let mut entries = Vec::with_capacity(n * n);
-    for i in 0..n {
+    for (i, li) in l.iter().enumerate() {
         for j in 0..n {
-            let a: i64 = (0..n).map(|k| l[i][k] * diag[k] * u[k][j]).sum();
+            let a: i64 = li.iter().zip(&diag).zip(&u).map(|((x, d), uk)| x * d * uk[j]).sum();
             entries.push(format!("{{\"from\": {}, \"to\": {i}, \"weight\": {a}}}", n + j));
         }
     }
