@@ -523,12 +523,16 @@ impl LexParser<'_> {
 }
 
 /// The dart limit of an import: `max_darts`, or the default ([`default_limit`]). Unless the
-/// complex is over an explicit `max_darts` (which [`SimplicialComplex::to_gmap`] reports),
+/// complex is over an explicit `max_darts` or has more darts than a map can index (both
+/// reported by [`SimplicialComplex::to_gmap`]),
 /// its [`SimplicialComplex::memory_estimate`] is first checked against the memory limit
 /// ([`gmap_core::resources::check_memory`]), so a refusal names the bytes and the limit.
 fn import_limit(sc: &SimplicialComplex, max_darts: Option<u64>) -> Result<u64, ImportError> {
+    // past the largest dart index no memory helps: the dart count is the refusal
+    let cap = u32::MAX as u64 - 1;
     match max_darts {
         Some(limit) if sc.dart_count().is_none_or(|d| d > limit) => Ok(limit),
+        None if sc.dart_count().is_none_or(|d| d > cap) => Ok(cap),
         _ => {
             gmap_core::resources::check_memory("the G-map of the facets", sc.memory_estimate())?;
             Ok(max_darts.unwrap_or_else(|| default_limit(sc)))
