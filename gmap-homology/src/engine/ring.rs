@@ -155,10 +155,12 @@ pub(crate) struct Zp {
 }
 
 impl Zp {
-    fn mul(&self, a: u64, b: u64) -> u64 {
+    /// `a b mod p` (any modulus `p >= 1`).
+    pub(crate) fn mul(&self, a: u64, b: u64) -> u64 {
         ((a as u128 * b as u128) % self.p as u128) as u64
     }
-    fn inv(&self, a: u64) -> u64 {
+    /// The inverse of `a` (not a multiple of the prime `p`).
+    pub(crate) fn inv(&self, a: u64) -> u64 {
         // Fermat: a^(p-2)
         let mut result = 1u64;
         let mut base = a % self.p;

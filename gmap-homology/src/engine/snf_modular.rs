@@ -24,6 +24,8 @@ use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
+use crate::engine::ring::Zp;
+
 /// The invariant factors `d_1 | … | d_r` (positive, units included) of a dense `rows × cols`
 /// matrix given row by row, `r` its rank. `None` only if an internal check fails.
 pub(crate) fn smith_diagonal_modular(a: &[Vec<BigInt>], cols: usize) -> Option<Vec<BigInt>> {
@@ -124,7 +126,7 @@ fn reduce_mod(a: &[Vec<BigInt>], cols: usize, p: u64) -> Vec<Vec<u64>> {
 }
 
 fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
-    ((a as u128 * b as u128) % p as u128) as u64
+    Zp { p }.mul(a, b)
 }
 
 fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
@@ -139,9 +141,8 @@ fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
     r
 }
 
-/// The inverse of a non-zero `a` modulo the prime `p`.
 fn inv_mod(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
+    Zp { p }.inv(a)
 }
 
 /// Whether `n` is prime: Miller–Rabin with the first twelve primes as bases, exact for
@@ -200,17 +201,7 @@ fn echelon_pivots(mut m: Vec<Vec<u64>>, cols: usize, p: u64) -> (Vec<usize>, Vec
         let Some(i) = (t..rows).find(|&i| m[i][j] != 0) else { continue };
         m.swap(t, i);
         order.swap(t, i);
-        let inv = inv_mod(m[t][j], p);
-        let (top, rest) = m.split_at_mut(t + 1);
-        let pivot = &top[t];
-        for row in rest.iter_mut() {
-            if row[j] != 0 {
-                let f = mul_mod(row[j], inv, p);
-                for c in j..cols {
-                    row[c] = (row[c] + p - mul_mod(f, pivot[c], p)) % p;
-                }
-            }
-        }
+        clear_below(&mut m, t, j, p);
         prow.push(order[t]);
         pcol.push(j);
         t += 1;
@@ -229,19 +220,25 @@ fn det_mod(mut m: Vec<Vec<u64>>, p: u64) -> u64 {
             det = (p - det) % p;
         }
         det = mul_mod(det, m[j][j], p);
-        let inv = inv_mod(m[j][j], p);
-        let (top, rest) = m.split_at_mut(j + 1);
-        let pivot = &top[j];
-        for row in rest.iter_mut() {
-            if row[j] != 0 {
-                let f = mul_mod(row[j], inv, p);
-                for c in j..n {
-                    row[c] = (row[c] + p - mul_mod(f, pivot[c], p)) % p;
-                }
+        clear_below(&mut m, j, j, p);
+    }
+    det
+}
+
+/// Subtracts multiples of row `t` (pivot in column `j`, non-zero) from the rows below it so
+/// that column `j` is zero there, modulo the prime `p`.
+fn clear_below(m: &mut [Vec<u64>], t: usize, j: usize, p: u64) {
+    let inv = inv_mod(m[t][j], p);
+    let (top, rest) = m.split_at_mut(t + 1);
+    let pivot = &top[t];
+    for row in rest.iter_mut() {
+        if row[j] != 0 {
+            let f = mul_mod(row[j], inv, p);
+            for (x, &y) in row.iter_mut().zip(pivot.iter()).skip(j) {
+                *x = (*x + p - mul_mod(f, y, p)) % p;
             }
         }
     }
-    det
 }
 
 /// Diagonalises `b` (entries in `0..m`) over `Z / m` by unimodular integer operations and
@@ -272,6 +269,34 @@ fn diagonalise_mod(b: &mut [Vec<BigInt>], cols: usize, m: &BigInt) -> Vec<BigInt
     diag
 }
 
+/// A unimodular operation on two lines (rows or columns) `p` (the pivot's) and `r` that
+/// makes the entry `y` of `r` zero against the entry `x` of `p`.
+enum Step {
+    /// `r -= q p` when `x` divides `y`
+    Sub(BigInt),
+    /// `[s u; -y/g x/g]` (determinant 1, `s x + u y = g`), sending `(x, y)` to `(g, 0)`
+    Gcd { s: BigInt, u: BigInt, xg: BigInt, yg: BigInt },
+}
+
+impl Step {
+    fn new(x: &BigInt, y: &BigInt) -> Step {
+        if (y % x).is_zero() {
+            Step::Sub(y / x)
+        } else {
+            let e = x.extended_gcd(y);
+            Step::Gcd { xg: x / &e.gcd, yg: y / &e.gcd, s: e.x, u: e.y }
+        }
+    }
+
+    /// The new entries of the two lines at one position, reduced modulo `m`.
+    fn apply(&self, p: &BigInt, r: &BigInt, m: &BigInt) -> (Option<BigInt>, BigInt) {
+        match self {
+            Step::Sub(q) => (None, (r - q * p).mod_floor(m)),
+            Step::Gcd { s, u, xg, yg } => (Some((s * p + u * r).mod_floor(m)), (xg * r - yg * p).mod_floor(m)),
+        }
+    }
+}
+
 /// Makes column `t` zero below the pivot by row operations; whether it was already zero.
 fn clear_column(b: &mut [Vec<BigInt>], t: usize, cols: usize, m: &BigInt) -> bool {
     let mut clean = true;
@@ -282,23 +307,13 @@ fn clear_column(b: &mut [Vec<BigInt>], t: usize, cols: usize, m: &BigInt) -> boo
         clean = false;
         let (top, rest) = b.split_at_mut(t + 1);
         let (pivot_row, row) = (&mut top[t], &mut rest[i - t - 1]);
-        let (x, y) = (pivot_row[t].clone(), row[t].clone());
-        if (&y % &x).is_zero() {
-            let q = &y / &x;
-            for c in t..cols {
-                row[c] = (&row[c] - &q * &pivot_row[c]).mod_floor(m);
-            }
-        } else {
-            // [s u; -y/g x/g] has determinant 1 and sends (x, y) to (g, 0)
-            let e = x.extended_gcd(&y);
-            let (xg, yg) = (&x / &e.gcd, &y / &e.gcd);
-            for c in t..cols {
-                let (p, r) = (&pivot_row[c], &row[c]);
-                let np = (&e.x * p + &e.y * r).mod_floor(m);
-                let nr = (&xg * r - &yg * p).mod_floor(m);
+        let step = Step::new(&pivot_row[t], &row[t]);
+        for c in t..cols {
+            let (np, nr) = step.apply(&pivot_row[c], &row[c], m);
+            if let Some(np) = np {
                 pivot_row[c] = np;
-                row[c] = nr;
             }
+            row[c] = nr;
         }
     }
     clean
@@ -312,23 +327,13 @@ fn clear_row(b: &mut [Vec<BigInt>], t: usize, cols: usize, m: &BigInt) -> bool {
             continue;
         }
         clean = false;
-        let (x, y) = (b[t][t].clone(), b[t][j].clone());
-        if (&y % &x).is_zero() {
-            let q = &y / &x;
-            for row in b.iter_mut().skip(t) {
-                let v = (&row[j] - &q * &row[t]).mod_floor(m);
-                row[j] = v;
-            }
-        } else {
-            let e = x.extended_gcd(&y);
-            let (xg, yg) = (&x / &e.gcd, &y / &e.gcd);
-            for row in b.iter_mut().skip(t) {
-                let (p, r) = (&row[t], &row[j]);
-                let np = (&e.x * p + &e.y * r).mod_floor(m);
-                let nr = (&xg * r - &yg * p).mod_floor(m);
+        let step = Step::new(&b[t][t], &b[t][j]);
+        for row in b.iter_mut().skip(t) {
+            let (np, nr) = step.apply(&row[t], &row[j], m);
+            if let Some(np) = np {
                 row[t] = np;
-                row[j] = nr;
             }
+            row[j] = nr;
         }
     }
     clean
