@@ -138,7 +138,8 @@ fn check_lutz(lo: u64, hi: u64) -> usize {
             continue;
         }
         // torsion of the README is written in prime powers; compare as multisets of factors
-        let mut got: Vec<Vec<u64>> = h.torsion.clone();
+        let mut got: Vec<Vec<u64>> =
+            h.torsion.iter().map(|t| t.iter().map(|x| x.to_u64().unwrap()).collect()).collect();
         let mut want = torsion.clone();
         for v in got.iter_mut().chain(want.iter_mut()) {
             v.sort_unstable();

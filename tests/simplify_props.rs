@@ -43,7 +43,8 @@ fn lens_space_keeps_its_torsion() {
     let m = lens_space(7, 3).unwrap();
     let (small, r) = simplify(&m);
     let h = cellular(&small).expect("C1/C2 after simplify");
-    assert_eq!((h.betti, h.torsion), (vec![1, 0, 0, 1], vec![vec![], vec![7], vec![], vec![]]));
+    assert_eq!(h.betti, vec![1, 0, 0, 1]);
+    assert_eq!(h.torsion, vec![vec![], vec![7], vec![], vec![]]);
     // already one cell per dimension: nothing to remove
     assert_eq!((r.darts_before, r.darts_after, r.cells_after), (28, 28, vec![1, 1, 1, 1]));
 }

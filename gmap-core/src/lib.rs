@@ -85,6 +85,7 @@ mod kernels;
 pub mod labels;
 pub mod marks;
 pub mod parallel;
+pub mod resources;
 pub mod union_find;
 pub mod view;
 pub mod walk;

@@ -74,7 +74,9 @@ pub use engine::{chain, generators, homology, sparse};
 
 pub use border::{cellular_complex, gmap_homology, CellularComplex, GMapHomologyError};
 pub use chain::{ChainComplex, ChainError};
-pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
+pub use homology::{
+    homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError, Natural,
+};
 pub use incidence::Incidence;
 pub use precond::{check_by_dimension, check_preconditions, oriented_cells, OrientedCells, PreconditionError};
 pub use simplicial::{simplicial_complex, simplicial_complex_with_simplices, Simplex, SimplicialComplex};

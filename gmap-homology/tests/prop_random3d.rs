@@ -258,7 +258,7 @@ fn groups(c: &ChainComplex) -> Result<Groups, TestCaseError> {
     prop_assert_eq!(z.euler_characteristic(), c.euler_characteristic(), "Euler–Poincaré over Z");
     for (p, h) in [(2u64, &z2), (3, &z3)] {
         prop_assert_eq!(h.euler_characteristic(), c.euler_characteristic(), "Euler–Poincaré over Z/{}", p);
-        let tors = |k: usize| z.torsion[k].iter().filter(|&&t| t % p == 0).count();
+        let tors = |k: usize| z.torsion[k].iter().filter(|t| t.is_multiple_of(p)).count();
         for k in 0..z.betti.len() {
             let want = z.betti[k] + tors(k) + if k > 0 { tors(k - 1) } else { 0 };
             prop_assert_eq!(h.betti[k], want, "universal coefficients, H_{} over Z/{}: Z gives {}", k, p, z);

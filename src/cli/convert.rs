@@ -104,8 +104,17 @@ pub fn write_complex(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> 
         "json" if !is_lar(output) => write_text(output, &write_json(x)),
         "dot" => write_text(output, &write_dot(x)),
         _ => {
-            let m = complex_to_map(x, max_darts).with_context(|| {
-                format!("{}: the complex is not the face poset of a regular cell complex", output.display())
+            let m = complex_to_map(x, max_darts).map_err(|e| match e {
+                PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
+                    anyhow::anyhow!(
+                        "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES",
+                        output.display()
+                    )
+                }
+                e => anyhow::Error::new(e).context(format!(
+                    "{}: the complex is not the face poset of a regular cell complex",
+                    output.display()
+                )),
             })?;
             write_map(&m, output)
         }

@@ -140,7 +140,7 @@ fn cellular<'a>(map: &DenseMap, file: &str, sc: Option<&'a SimplicialComplex>) -
 const SIMPLICIAL_WORK_LIMIT: u128 = 1 << 27;
 
 /// Refuses a map whose simplicial counterpart is too big to build (exponential in the
-/// dimension): `gmap 30 1` would ask for 2^31 simplices.
+/// dimension): `gmap 30 1` would ask for 2^31 simplices; then one over the memory limit.
 fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
     let n = map.dim() as u32;
     let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
@@ -153,6 +153,9 @@ fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
             map.dart_count().max(1)
         );
     }
+    // each simplex: its flag (dart and vertex set), its key and its n + 1 boundary entries
+    let bytes = work.checked_mul(24 + 12 * (n as u128 + 1)).and_then(|b| u64::try_from(b).ok());
+    gmap_core::resources::check_memory("the simplicial counterpart", bytes).with_context(|| file.to_string())?;
     Ok(())
 }
 

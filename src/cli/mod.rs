@@ -37,6 +37,15 @@ pub mod load;
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// the memory a command may use, in bytes with an optional K, M, G or T suffix (powers
+    /// of 1024); larger estimated costs are refused. Default: half the physical memory, at
+    /// most three quarters of the address-space limit (ulimit -v)
+    #[arg(long, global = true, value_parser = parse_max_memory)]
+    max_memory: Option<u64>,
+}
+
+fn parse_max_memory(text: &str) -> Result<u64, String> {
+    gmap_core::resources::parse_size(text).map_err(|e| e.to_string())
 }
 
 /// Which chain complex `gmap homology` reduces.
@@ -158,6 +167,9 @@ fn error_message(e: &anyhow::Error) -> String {
 /// Runs the command line; returns the process exit code.
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
+    if let Some(bytes) = cli.max_memory {
+        gmap_core::resources::set_max_memory(bytes);
+    }
     let result = match cli.command {
         Command::Demo => demo::run(),
         Command::Info { file, json, max_darts, periodic } => info::run(&file, json, max_darts, periodic),

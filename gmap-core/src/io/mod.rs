@@ -129,6 +129,11 @@ pub enum ReadErrorKind {
         /// the size of the file
         bytes: u64,
     },
+    /// The file and its map would take more than the memory limit
+    /// ([`crate::resources::max_memory`]): at most three times the file's size (every value
+    /// of at least two bytes becomes four).
+    #[error(transparent)]
+    MemoryLimit(#[from] crate::resources::MemoryLimit),
     /// The map has more darts than the caller allows ([`ReadOptions::max_darts`]).
     #[error("the map has more than {limit} darts (the limit set by the caller): {found}")]
     DartLimit {
@@ -311,6 +316,8 @@ fn read_bytes(path: &Path) -> Result<Vec<u8>, ReadError> {
         |e: std::io::Error| ReadError::new(&path.display().to_string(), None, ReadErrorKind::Io(e.to_string()));
     let mut f = fs::File::open(path).map_err(io_err)?;
     let size = f.metadata().map(|m| m.len()).unwrap_or(0);
+    crate::resources::check_memory("the file and its map", size.checked_mul(3))
+        .map_err(|e| ReadError::new(&path.display().to_string(), None, ReadErrorKind::MemoryLimit(e)))?;
     let mut bytes = Vec::new();
     let want = usize::try_from(size).unwrap_or(usize::MAX);
     if bytes.try_reserve_exact(want).is_err() {

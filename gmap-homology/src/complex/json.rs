@@ -11,7 +11,8 @@
 //! it, `weight` the signed incidence number (0 kept). [`read_json`] parses and validates the
 //! whole of AC Def. 3.1 through [`ArchComplex::try_new`]: a cycle, a dimension that does not
 //! decrease, a non-zero weight across a gap, duplicate ids or entries and `δ² ≠ 0` are each
-//! a distinct [`JsonError::Arch`] error naming the regions. `"dimension"` may be omitted
+//! a distinct [`JsonError::Arch`] error naming the regions; an object with the same key
+//! twice is [`JsonError::DuplicateKey`]. `"dimension"` may be omitted
 //! (then the largest region dimension, 0 for no region).
 //!
 //! ```
@@ -55,6 +56,19 @@ pub enum JsonError {
         /// what is wrong
         problem: String,
     },
+    /// An object holds the same key twice (JSON leaves the meaning open; readers differ).
+    #[error("line {line}, column {column}: the key \"{key}\" appears twice in one object")]
+    DuplicateKey {
+        /// the key (at most 80 characters of it)
+        key: String,
+        /// 1-based line of its second occurrence
+        line: usize,
+        /// 1-based column just after it
+        column: usize,
+    },
+    /// The file is too large for the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(gmap_core::resources::MemoryLimit),
     /// The file could not be read.
     #[error("cannot read: {0}")]
     Io(String),
@@ -127,6 +141,9 @@ struct Raw {
 /// Well-formed input is deserialised straight into typed records (no intermediate tree);
 /// anything else is parsed again as a JSON tree to say exactly which field is wrong.
 pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
+    if let Some(d) = crate::complex::unique_keys::find_duplicate(text) {
+        return Err(JsonError::DuplicateKey { key: d.key, line: d.line, column: d.column });
+    }
     let raw: Raw = match serde_json::from_str(text) {
         Ok(raw) => raw,
         Err(_) => return read_json_slow(text),
@@ -182,7 +199,13 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
 }
 
 /// Reads and validates a `.json` file; errors name the file (and the line for syntax).
+///
+/// The file is refused before it is read when the text and what is built from it (about
+/// four times its size) would exceed the memory limit ([`gmap_core::resources`]).
 pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+    gmap_core::resources::check_memory("the file and its complex", size.checked_mul(4))
+        .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::MemoryLimit(e) })?;
     let text = std::fs::read_to_string(path)
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
     read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })

@@ -8,3 +8,4 @@ pub mod json;
 pub mod lar;
 pub mod simplices;
 pub mod tm;
+mod unique_keys;

@@ -17,13 +17,13 @@
 
 use std::fmt;
 
-use num_bigint::BigInt;
 use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::reduce::{eliminate, Col, Mode};
 use crate::engine::ring::{Euclid, Ring, ZBig, Zi64, Zp};
-use crate::engine::snf::smith_diagonal;
+
+pub use crate::engine::natural::Natural;
 
 /// The coefficients of a homology computation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,8 +44,9 @@ impl fmt::Display for Coefficients {
 }
 
 /// Homology groups `H_0..H_n`: `H_k ≅ Z^betti[k] ⊕ Z/t_1 ⊕ … ⊕ Z/t_m` with
-/// `torsion[k] = [t_1, …, t_m]` the invariant factors (each > 1, each dividing the next).
-/// Over `Z/p`, `betti[k]` is the dimension of `H_k` and every `torsion[k]` is empty.
+/// `torsion[k] = [t_1, …, t_m]` the invariant factors (each > 1, each dividing the next),
+/// exact integers of any size ([`Natural`]). Over `Z/p`, `betti[k]` is the dimension of
+/// `H_k` and every `torsion[k]` is empty.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Homology {
     /// the coefficients used
@@ -53,7 +54,7 @@ pub struct Homology {
     /// rank (or dimension over `Z/p`) of each `H_k`
     pub betti: Vec<usize>,
     /// invariant factors of the torsion of each `H_k`, ascending
-    pub torsion: Vec<Vec<u64>>,
+    pub torsion: Vec<Vec<Natural>>,
 }
 
 impl Homology {
@@ -109,12 +110,6 @@ pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
     #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]
     NotPrime(u64),
-    /// A torsion coefficient does not fit in `u64`.
-    #[error("a torsion coefficient of H_{dim} exceeds 2^64")]
-    TorsionTooLarge {
-        /// the dimension of the group
-        dim: usize,
-    },
     /// The Euler–Poincaré formula failed: an internal error, reported rather than hidden.
     #[error("Euler–Poincaré check failed: cells give {cells}, Betti numbers give {betti}")]
     EulerPoincare {
@@ -136,6 +131,9 @@ pub enum HomologyError {
     /// The generator computation overflowed `i64`.
     #[error("a generator's coefficients overflow i64")]
     GeneratorOverflow,
+    /// The dense stage would take more than the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
     /// An internal consistency check failed (a bug, reported rather than a wrong group).
     #[error("internal error in the reduction: {0}")]
     Internal(&'static str),
@@ -259,34 +257,46 @@ fn survivors_of<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> 
     Some(Survivors { cells, d })
 }
 
-/// Stages 2 and 3: ranks and non-unit Smith diagonals of the surviving matrices.
+/// Stages 2 and 3: ranks and non-unit Smith diagonals of the surviving matrices (`None` on
+/// overflow). The dense block of each matrix is checked against the memory limit before it
+/// is allocated: its entries, a working copy and a residue per entry.
 fn ranks<R: Ring>(
     ring: &R,
     s: Survivors<R::E>,
     dense: impl Fn(Vec<Vec<R::E>>, usize) -> Option<Vec<R::E>>,
-) -> Option<Ranks<R::E>> {
+) -> Result<Option<Ranks<R::E>>, HomologyError> {
     let n1 = s.cells.len();
     let mut rank = vec![0usize; n1];
     let mut diag: Vec<Vec<R::E>> = vec![Vec::new(); n1];
     for (k, cols) in s.d.into_iter().enumerate().skip(1) {
         let rows = s.cells[k - 1].len();
-        let res = eliminate(ring, rows, cols, Mode::General)?;
+        let Some(res) = eliminate(ring, rows, cols, Mode::General) else { return Ok(None) };
         let mut row_ids: Vec<u32> = res.remaining.iter().flat_map(|(_, c)| c.iter().map(|(r, _)| *r)).collect();
         row_ids.sort_unstable();
         row_ids.dedup();
         let dense_cols: Vec<&Col<R::E>> = res.remaining.iter().map(|(_, c)| c).filter(|c| !c.is_empty()).collect();
+        let entry = 2 * std::mem::size_of::<R::E>() as u64 + 16;
+        let bytes = (row_ids.len() as u64).checked_mul(dense_cols.len() as u64).and_then(|e| e.checked_mul(entry));
+        gmap_core::resources::check_memory(&format!("the dense Smith form of ∂_{k}"), bytes)?;
         let mut block = vec![vec![ring.of_i64(0); dense_cols.len()]; row_ids.len()];
         for (j, c) in dense_cols.iter().enumerate() {
             for (r, v) in c.iter() {
-                let i = row_ids.binary_search(r).ok()?;
+                let Ok(i) = row_ids.binary_search(r) else { return Ok(None) };
                 block[i][j] = v.clone();
             }
         }
-        let d = if block.is_empty() { Vec::new() } else { dense(block, dense_cols.len())? };
+        let d = if block.is_empty() {
+            Vec::new()
+        } else {
+            match dense(block, dense_cols.len()) {
+                Some(d) => d,
+                None => return Ok(None),
+            }
+        };
         rank[k] = res.pivots.len() + d.len();
         diag[k] = d.into_iter().filter(|x| !ring.is_unit(x)).collect();
     }
-    Some(Ranks { rank, diag })
+    Ok(Some(Ranks { rank, diag }))
 }
 
 fn assemble(
@@ -294,7 +304,7 @@ fn assemble(
     coefficients: Coefficients,
     surviving: &[usize],
     rank: &[usize],
-    torsion: Vec<Vec<u64>>,
+    torsion: Vec<Vec<Natural>>,
 ) -> Result<Homology, HomologyError> {
     let n1 = surviving.len();
     let mut betti = Vec::with_capacity(n1);
@@ -326,18 +336,15 @@ fn integer_homology_with<R: Euclid>(
 ) -> Option<Result<Homology, HomologyError>> {
     let s = if prereduce { survivors(ring, c)? } else { survivors_of(ring, c)? };
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
-    let r = ranks(ring, s, |block, cols| smith_diagonal(ring, block, cols))?;
+    let r = match ranks(ring, s, |block, cols| ring.dense_smith(block, cols)) {
+        Ok(r) => r?,
+        Err(e) => return Some(Err(e)),
+    };
     let n1 = surviving.len();
     let mut torsion = vec![Vec::new(); n1];
     for k in 0..n1 {
         if k + 1 < n1 {
-            let mut t = Vec::new();
-            for x in &r.diag[k + 1] {
-                match ring.abs_u64(x) {
-                    Some(v) => t.push(v),
-                    None => return Some(Err(HomologyError::TorsionTooLarge { dim: k })),
-                }
-            }
+            let mut t: Vec<Natural> = r.diag[k + 1].iter().map(|x| ring.abs_natural(x)).collect();
             t.sort_unstable();
             torsion[k] = t;
         }
@@ -393,16 +400,10 @@ pub fn homology_zp(c: &ChainComplex, p: u64) -> Result<Homology, HomologyError> 
     let s = survivors(&ring, c).ok_or(HomologyError::Internal("field reduction failed"))?;
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
     // over a field every non-zero entry is a unit, so stage 2 leaves nothing dense
-    let r = ranks(&ring, s, |block, _| if block.iter().flatten().all(|&x| x == 0) { Some(Vec::new()) } else { None })
+    let r = ranks(&ring, s, |block, _| if block.iter().flatten().all(|&x| x == 0) { Some(Vec::new()) } else { None })?
         .ok_or(HomologyError::Internal("field reduction left a non-zero block"))?;
     let torsion = vec![Vec::new(); surviving.len()];
     assemble(c, Coefficients::Field(p), &surviving, &r.rank, torsion)
-}
-
-/// The integer of a big-integer torsion value, for callers that hold `BigInt`s.
-#[allow(dead_code)]
-pub(crate) fn big_to_u64(x: &BigInt) -> Option<u64> {
-    ZBig.abs_u64(x)
 }
 
 #[cfg(test)]

@@ -8,6 +8,10 @@ use std::cmp::Ordering;
 use std::fmt::Debug;
 
 use num_bigint::BigInt;
+
+use crate::engine::natural::Natural;
+use crate::engine::snf::smith_diagonal;
+use crate::engine::snf_modular::smith_diagonal_modular;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// The operations the sparse elimination needs from a coefficient ring.
@@ -38,6 +42,17 @@ pub(crate) trait Euclid: Ring {
     fn abs_u64(&self, a: &Self::E) -> Option<u64>;
     /// `a` as an `i64` (over `Z/p`: its representative in `0..p`), if it fits.
     fn to_i64(&self, a: &Self::E) -> Option<i64>;
+    /// `|a|` exactly (over `Z/p`: the representative in `0..p`).
+    fn abs_natural(&self, a: &Self::E) -> Natural;
+    /// The non-zero diagonal of the Smith normal form of a dense matrix given row by row
+    /// (`None` on overflow): elimination in the ring ([`smith_diagonal`]) unless the ring
+    /// has a better way.
+    fn dense_smith(&self, a: Vec<Vec<Self::E>>, cols: usize) -> Option<Vec<Self::E>>
+    where
+        Self: Sized,
+    {
+        smith_diagonal(self, a, cols)
+    }
 }
 
 /// `Z` with checked `i64` arithmetic.
@@ -78,6 +93,9 @@ impl Euclid for Zi64 {
     }
     fn to_i64(&self, a: &i64) -> Option<i64> {
         Some(*a)
+    }
+    fn abs_natural(&self, a: &i64) -> Natural {
+        Natural::from(a.unsigned_abs())
     }
 }
 
@@ -120,6 +138,14 @@ impl Euclid for ZBig {
     fn to_i64(&self, a: &BigInt) -> Option<i64> {
         a.to_i64()
     }
+    fn abs_natural(&self, a: &BigInt) -> Natural {
+        Natural::abs_of(a)
+    }
+    /// Modulo a multiple of the largest invariant factor, so no entry grows beyond it
+    /// (see `snf_modular`); elimination over `Z` lets a dense block's entries explode.
+    fn dense_smith(&self, a: Vec<Vec<BigInt>>, cols: usize) -> Option<Vec<BigInt>> {
+        smith_diagonal_modular(&a, cols)
+    }
 }
 
 /// The prime field `Z/p` (elements `0..p`).
@@ -129,10 +155,12 @@ pub(crate) struct Zp {
 }
 
 impl Zp {
-    fn mul(&self, a: u64, b: u64) -> u64 {
+    /// `a b mod p` (any modulus `p >= 1`).
+    pub(crate) fn mul(&self, a: u64, b: u64) -> u64 {
         ((a as u128 * b as u128) % self.p as u128) as u64
     }
-    fn inv(&self, a: u64) -> u64 {
+    /// The inverse of `a` (not a multiple of the prime `p`).
+    pub(crate) fn inv(&self, a: u64) -> u64 {
         // Fermat: a^(p-2)
         let mut result = 1u64;
         let mut base = a % self.p;
@@ -184,6 +212,9 @@ impl Euclid for Zp {
     }
     fn to_i64(&self, a: &u64) -> Option<i64> {
         i64::try_from(*a).ok()
+    }
+    fn abs_natural(&self, a: &u64) -> Natural {
+        Natural::from(*a)
     }
 }
 

@@ -104,6 +104,9 @@ pub enum ImportError {
         /// the estimate
         bytes: u64,
     },
+    /// An estimated cost over the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
     /// The same facet listed twice: a simplicial complex is a set of simplices.
     #[error("facet on line {second} repeats the facet on line {first} (a simplicial complex lists each facet once)")]
     RepeatedFacet {
@@ -153,6 +156,7 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, FileError> {
     use std::io::Read as _;
     let mut f = std::fs::File::open(path).map_err(|e| FileError::new(path, e.into()))?;
     let size = f.metadata().map(|m| m.len()).unwrap_or(0);
+    gmap_core::resources::check_memory("the file", Some(size)).map_err(|e| FileError::new(path, e.into()))?;
     let mut bytes = Vec::new();
     if bytes.try_reserve_exact(usize::try_from(size).unwrap_or(usize::MAX)).is_err() {
         return Err(FileError::new(path, ImportError::OutOfMemory { what: "the file".into(), bytes: size }));
@@ -176,9 +180,9 @@ pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
     })
 }
 
-/// The default dart limit for a map of dimension `dim`: what fits in the memory available
-/// now (`MemAvailable` of `/proc/meminfo`) at `bytes_per_dart(dim)` bytes each, capped at
-/// `u32::MAX - 1` (the largest dart index). Where `/proc/meminfo` cannot be read, the cap.
+/// The default dart limit for a map of dimension `dim`: what fits in the memory budget
+/// ([`gmap_core::resources::memory_budget`]) at `bytes_per_dart(dim)` bytes each, capped at
+/// `u32::MAX - 1` (the largest dart index).
 pub fn default_max_darts(dim: usize) -> u64 {
     let cap = u32::MAX as u64 - 1;
     match available_memory() {
@@ -189,7 +193,7 @@ pub fn default_max_darts(dim: usize) -> u64 {
 
 /// The default limit on the faces of a simplicial complex taken straight to its chain
 /// complex (counted with repetition, `2^(d+1) - 1` per d-facet): what fits in the memory
-/// available now at about `40 (dim + 2)` bytes a face (its key, its vertex list, its
+/// budget at about `40 (dim + 2)` bytes a face (its key, its vertex list, its
 /// boundary entries, the sort), capped at `u32::MAX - 1` (the largest cell index).
 pub fn default_max_faces(dim: usize) -> u64 {
     let cap = u32::MAX as u64 - 1;
@@ -199,15 +203,11 @@ pub fn default_max_faces(dim: usize) -> u64 {
     }
 }
 
-/// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
+/// The bytes an import may take: the workspace's memory budget
+/// ([`gmap_core::resources::memory_budget`]: the `--max-memory` limit, at most the memory
+/// available now).
 pub(crate) fn available_memory() -> Option<u64> {
-    std::fs::read_to_string(std::path::Path::new("/proc").join("meminfo")).ok().and_then(|s| {
-        s.lines()
-            .find(|l| l.starts_with("MemAvailable:"))
-            .and_then(|l| l.split_whitespace().nth(1))
-            .and_then(|kb| kb.parse::<u64>().ok())
-            .map(|kb| kb.saturating_mul(1024))
-    })
+    Some(gmap_core::resources::memory_budget())
 }
 
 /// Bytes counted per dart when importing an n-dimensional complex: the involution row

@@ -117,6 +117,9 @@ pub enum PosetError {
         /// the limit in force
         limit: u64,
     },
+    /// The flags would take more than the memory limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
 }
 
 /// The face poset of a cell complex: cells with dimensions and covering pairs (module docs).
@@ -257,6 +260,22 @@ impl FacePoset {
                 return Err(PosetError::Diamond { lower: a, upper: b, dim: db - 1, count });
             }
         }
+        // the maximal chains counted before they are listed: chains[c] is the number of chains
+        // from c down to a vertex (in increasing dimension, saturating), O(covers)
+        let mut by_dim: Vec<usize> = (0..m).collect();
+        by_dim.sort_by_key(|&c| self.dims[c]);
+        let mut chains = vec![0u64; m];
+        for &c in &by_dim {
+            chains[c] =
+                if self.dims[c] == 0 { 1 } else { down[c].iter().fold(0u64, |acc, &f| acc.saturating_add(chains[f])) };
+        }
+        let total = (0..m).filter(|&c| self.dims[c] == n).fold(0u64, |acc, c| acc.saturating_add(chains[c]));
+        if total > limit {
+            return Err(PosetError::TooManyDarts { limit });
+        }
+        // the flags, their index and the involutions: 4 (n + 1) bytes each, plus the index
+        let per_flag = 8 * (n as u64 + 1) + 32;
+        gmap_core::resources::check_memory("the flags of the face poset", total.checked_mul(per_flag))?;
         // depth-first enumeration of the maximal chains, from the top down
         let w = n + 1;
         let mut flags: Vec<u32> = Vec::new();

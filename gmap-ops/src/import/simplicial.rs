@@ -428,7 +428,7 @@ fn table_bytes_per_ordering(dim: usize) -> u64 {
     m + 4 * m.saturating_sub(1) + 4 * m
 }
 
-/// The default dart limit of an import: what fits in the memory available now at
+/// The default dart limit of an import: what fits in the memory budget at
 /// [`bytes_per_dart`] each, once the tables of orderings are counted (see
 /// [`SimplicialComplex::memory_estimate`]), and never more than [`default_max_darts`].
 fn default_limit(sc: &SimplicialComplex) -> u64 {
@@ -522,12 +522,30 @@ impl LexParser<'_> {
     }
 }
 
+/// The dart limit of an import: `max_darts`, or the default ([`default_limit`]). Unless the
+/// complex is over an explicit `max_darts` or has more darts than a map can index (both
+/// reported by [`SimplicialComplex::to_gmap`]),
+/// its [`SimplicialComplex::memory_estimate`] is first checked against the memory limit
+/// ([`gmap_core::resources::check_memory`]), so a refusal names the bytes and the limit.
+fn import_limit(sc: &SimplicialComplex, max_darts: Option<u64>) -> Result<u64, ImportError> {
+    // past the largest dart index no memory helps: the dart count is the refusal
+    let cap = u32::MAX as u64 - 1;
+    match max_darts {
+        Some(limit) if sc.dart_count().is_none_or(|d| d > limit) => Ok(limit),
+        None if sc.dart_count().is_none_or(|d| d > cap) => Ok(cap),
+        _ => {
+            gmap_core::resources::check_memory("the G-map of the facets", sc.memory_estimate())?;
+            Ok(max_darts.unwrap_or_else(|| default_limit(sc)))
+        }
+    }
+}
+
 /// Reads a `.facets` file into a G-map, refusing more than `max_darts` darts (default:
-/// [`default_max_darts`]) before allocating.
+/// [`default_max_darts`]) or more than the memory limit before allocating.
 pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
     let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
-    let limit = max_darts.unwrap_or_else(|| default_limit(&sc));
+    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
     sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
 }
 
@@ -549,7 +567,7 @@ pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialCom
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
     let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
-    let limit = max_darts.unwrap_or_else(|| default_limit(&sc));
+    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
     sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
 }
 

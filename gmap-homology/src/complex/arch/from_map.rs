@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use super::{ArchComplex, ArchError, Region, RegionId};
 use crate::cellular::incidence::incidence_terms;
-use crate::cellular::precond::{oriented_cells, OrientedCells};
+use crate::cellular::precond::{check_preconditions, oriented_cells, OrientedCells, PreconditionError};
 
 /// Why the cells of a G-map do not give an architectural complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -17,6 +17,19 @@ pub enum FromMapError {
     /// the incidences violate AC Def. 3.1 (δ² ≠ 0: a cell whose boundary is not a cycle)
     #[error(transparent)]
     Arch(#[from] ArchError),
+    /// a cell is not bounded by a homology sphere (condition C2): the signed incidences
+    /// exist but the complex they make has other homology groups than the map
+    #[error(transparent)]
+    NotCellular(PreconditionError),
+}
+
+impl From<PreconditionError> for FromMapError {
+    fn from(e: PreconditionError) -> FromMapError {
+        match e {
+            PreconditionError::C1(d) => FromMapError::Cell(d),
+            other => FromMapError::NotCellular(other),
+        }
+    }
 }
 
 /// Signed incidences of the i-cells on the (i-1)-cells of a G-map, split by sign: for
@@ -98,8 +111,10 @@ impl ArchComplex {
     /// The architectural complex of the cells of a G-map (AC Remark 3.3): one region per
     /// cell (ids: the 0-cells first, numbered as in `DenseMap::cells`, then the 1-cells, …),
     /// and one entry for each adherent pair of consecutive dimensions, weighted by the
-    /// signed incidence number — kept when it is 0 (the cylinder's seam). Needs condition
-    /// C1 for every dimension (see [`cell_incidences`]). O(N n (n + log N)).
+    /// signed incidence number — kept when it is 0 (the cylinder's seam). Needs conditions
+    /// C1 and C2 for every dimension ([`check_preconditions`]), under which the complex has
+    /// the homology of the map; a cell failing either is the error, named by its dart.
+    /// O(N n (n + log N)) below dimension 4 (C2 costs more above, see [`check_preconditions`]).
     pub fn from_map(map: &DenseMap) -> Result<ArchComplex, FromMapError> {
         let n = map.dim();
         let counts = map.cell_counts();
@@ -111,10 +126,10 @@ impl ArchComplex {
         for (k, &c) in counts.iter().enumerate() {
             regions.extend((0..c as u64).map(|j| Region { id: RegionId(offset[k] + j), dim: k }));
         }
+        let cells = check_preconditions(map)?;
         let mut entries = Vec::new();
-        for (k, list) in all_cell_incidences(map)?.into_iter().enumerate() {
-            let i = k + 1;
-            for ci in list {
+        for i in 1..=n {
+            for ci in counted_by_sign(map, &cells[i], &cells[i - 1]) {
                 entries.push((
                     RegionId(offset[i] + ci.upper as u64),
                     RegionId(offset[i - 1] + ci.lower as u64),

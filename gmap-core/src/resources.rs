@@ -1,0 +1,175 @@
+//! The one memory policy of the workspace: how many bytes a command may use, and the check
+//! made with a cost estimate before any large allocation.
+//!
+//! The limit in force is [`max_memory`]: the value given to [`set_max_memory`] (the
+//! `--max-memory` option of the `gmap` command), or else a default derived from the machine
+//! ([`default_max_memory`]): half the physical memory, and no more than three quarters of
+//! the process's address-space limit (`ulimit -v`) when one is set. An estimate above it is
+//! refused with a [`MemoryLimit`] error naming the estimate and the limit, before anything
+//! is allocated. Every reader, the simplicial counterpart, the face poset and the dense
+//! stage of the Smith normal form take their limits from here ([`memory_budget`]).
+//!
+//! The machine's figures are read from `/proc/meminfo` and `/proc/self/limits` (Linux);
+//! where they cannot be read, the default is [`FALLBACK_MAX_MEMORY`].
+
+use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use thiserror::Error;
+
+/// The default limit where the machine's memory cannot be read: 4 GiB.
+pub const FALLBACK_MAX_MEMORY: u64 = 4 << 30;
+
+/// The limit set by [`set_max_memory`]; 0 while unset.
+static MAX_MEMORY: AtomicU64 = AtomicU64::new(0);
+
+/// An estimated cost over the memory limit.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[error("{what} would take an estimated {} bytes, over the memory limit of {limit} bytes (--max-memory)",
+    estimate.map_or_else(|| "more than 2^64".to_string(), |e| e.to_string()))]
+pub struct MemoryLimit {
+    /// what the memory is for
+    pub what: String,
+    /// the estimate in bytes, `None` past `u64`
+    pub estimate: Option<u64>,
+    /// the limit in force
+    pub limit: u64,
+}
+
+/// A `--max-memory` value that is not a size.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[error("'{0}' is not a size in bytes: expected digits with an optional K, M, G or T suffix (powers of 1024), at least 1 and at most 2^64 - 1")]
+pub struct SizeError(pub String);
+
+/// Parses a size in bytes: digits with an optional suffix `K`, `M`, `G` or `T` (powers of
+/// 1024, either case, an optional trailing `B` or `iB`): `4096`, `512M`, `2G`, `1.5G` is
+/// refused (whole numbers only). The value must be at least 1.
+///
+/// ```
+/// use gmap_core::resources::parse_size;
+/// assert_eq!(parse_size("2G"), Ok(2 << 30));
+/// assert_eq!(parse_size("512m"), Ok(512 << 20));
+/// assert_eq!(parse_size("100"), Ok(100));
+/// assert!(parse_size("0").is_err() && parse_size("2X").is_err() && parse_size("99999999999T").is_err());
+/// ```
+pub fn parse_size(text: &str) -> Result<u64, SizeError> {
+    let err = || SizeError(crate::io::shorten(text.as_bytes(), 80));
+    let t = text.trim();
+    let t = t.strip_suffix("iB").or_else(|| t.strip_suffix("ib")).unwrap_or(t);
+    let digits_end = t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len());
+    let (digits, suffix) = t.split_at(digits_end);
+    let shift = match suffix.trim_end_matches(['B', 'b']) {
+        "" => 0,
+        "K" | "k" => 10,
+        "M" | "m" => 20,
+        "G" | "g" => 30,
+        "T" | "t" => 40,
+        _ => return Err(err()),
+    };
+    if suffix.len() > 1 && shift == 0 {
+        return Err(err());
+    }
+    let n: u64 = digits.parse().map_err(|_| err())?;
+    n.checked_mul(1 << shift).filter(|&v| v > 0).ok_or_else(err)
+}
+
+/// Sets the memory limit of this process (what `--max-memory` gives).
+pub fn set_max_memory(bytes: u64) {
+    MAX_MEMORY.store(bytes.max(1), Ordering::Relaxed);
+}
+
+/// The memory limit in force: the one set by [`set_max_memory`], else
+/// [`default_max_memory`].
+pub fn max_memory() -> u64 {
+    match MAX_MEMORY.load(Ordering::Relaxed) {
+        0 => default_max_memory(),
+        set => set,
+    }
+}
+
+/// The default limit: half the physical memory (`MemTotal`), and at most three quarters of
+/// the address-space limit (`ulimit -v`) when there is one (the rest is for the program,
+/// its input and the allocator). [`FALLBACK_MAX_MEMORY`] where neither can be read.
+pub fn default_max_memory() -> u64 {
+    let half = physical_memory().map(|b| b / 2);
+    let space = address_space_limit().map(|b| b / 4 * 3);
+    match (half, space) {
+        (Some(h), Some(s)) => h.min(s),
+        (Some(x), None) | (None, Some(x)) => x,
+        (None, None) => FALLBACK_MAX_MEMORY,
+    }
+}
+
+/// The bytes a large allocation may take now: [`max_memory`], and no more than the memory
+/// available (`MemAvailable`) when it can be read.
+pub fn memory_budget() -> u64 {
+    let limit = max_memory();
+    available_memory().map_or(limit, |a| a.min(limit))
+}
+
+/// Refuses an estimate over [`max_memory`] (`None`: past `u64`), naming `what`.
+///
+/// ```
+/// use gmap_core::resources::{check_memory, max_memory};
+/// assert!(check_memory("a small table", Some(1024)).is_ok());
+/// let e = check_memory("the orderings", None).unwrap_err();
+/// assert_eq!(e.limit, max_memory());
+/// assert!(e.to_string().starts_with("the orderings would take an estimated more than 2^64 bytes"));
+/// ```
+pub fn check_memory(what: &str, estimate: Option<u64>) -> Result<(), MemoryLimit> {
+    let limit = max_memory();
+    match estimate {
+        Some(e) if e <= limit => Ok(()),
+        _ => Err(MemoryLimit { what: what.to_string(), estimate, limit }),
+    }
+}
+
+/// `MemTotal` of `/proc/meminfo` in bytes, where it can be read.
+pub fn physical_memory() -> Option<u64> {
+    meminfo("MemTotal:")
+}
+
+/// `MemAvailable` of `/proc/meminfo` in bytes, where it can be read.
+pub fn available_memory() -> Option<u64> {
+    meminfo("MemAvailable:")
+}
+
+fn meminfo(key: &str) -> Option<u64> {
+    let text = std::fs::read_to_string(Path::new("/proc").join("meminfo")).ok()?;
+    let line = text.lines().find(|l| l.starts_with(key))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb.saturating_mul(1024))
+}
+
+/// The soft address-space limit of this process (`ulimit -v`, "Max address space" of
+/// `/proc/self/limits`) in bytes; `None` when unlimited or unreadable.
+pub fn address_space_limit() -> Option<u64> {
+    let text = std::fs::read_to_string(Path::new("/proc").join("self").join("limits")).ok()?;
+    let line = text.lines().find(|l| l.starts_with("Max address space"))?;
+    line["Max address space".len()..].split_whitespace().next()?.parse().ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes() {
+        assert_eq!(parse_size("1K"), Ok(1024));
+        assert_eq!(parse_size("3MB"), Ok(3 << 20));
+        assert_eq!(parse_size("1GiB"), Ok(1 << 30));
+        assert_eq!(parse_size("2T"), Ok(2 << 40));
+        for bad in ["", "G", "-1", "1.5G", "1KK", "16777216T", "1 G x"] {
+            assert!(parse_size(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn default_is_positive_and_bounded_by_the_machine() {
+        let d = default_max_memory();
+        assert!(d > 0);
+        if let Some(total) = physical_memory() {
+            assert!(d <= total / 2);
+        }
+    }
+}

@@ -1,0 +1,182 @@
+//! Small inputs that used to take minutes or gigabytes, rebuilt here: each run of `gmap`
+//! exits 0 with the right groups or 1 with one `error:` line, quickly and within 2 GB of
+//! address space. The full-size reproducers are `#[ignore]` tests (run with `--ignored`).
+
+mod common;
+use common::{p, stderr, stdout};
+
+use std::path::Path;
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+use gmap_ops::rng::SplitMix64;
+
+/// Runs `gmap ARGS` under `ulimit -v 2000000` (2 GB of address space), with its wall time.
+fn gmap_2gb(args: &[&str]) -> (Output, Duration) {
+    let quoted: Vec<String> = args.iter().map(|a| format!("'{a}'")).collect();
+    let script = format!("ulimit -v 2000000 && exec '{}' {}", env!("CARGO_BIN_EXE_gmap"), quoted.join(" "));
+    let t = Instant::now();
+    let o = Command::new("sh").arg("-c").arg(script).output().expect("run sh");
+    (o, t.elapsed())
+}
+
+/// A `.json` complex of `n` 1-regions and `n` 2-regions whose boundary matrix is the dense
+/// `L · diag(d) · U`, `L` unit lower and `U` unit upper triangular with random entries in
+/// `-1..=1`: its Smith form is `diag(d)` (made a divisibility chain), so `H_1` is
+/// `⊕ Z/d_i` and `H_2 = 0`.
+fn dense_json(dir: &Path, n: usize, d: &[i64], seed: u64) -> std::path::PathBuf {
+    let mut rng = SplitMix64::new(seed);
+    let mut tri = |lower: bool| -> Vec<Vec<i64>> {
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| match (i == j, (j < i) == lower) {
+                        (true, _) => 1,
+                        (false, true) => rng.below(3) as i64 - 1,
+                        (false, false) => 0,
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let (l, u) = (tri(true), tri(false));
+    let diag: Vec<i64> = (0..n).map(|k| if k + d.len() >= n { d[k + d.len() - n] } else { 1 }).collect();
+    let mut text = String::from("{\"dimension\": 2, \"regions\": [");
+    let regions: Vec<String> = (0..2 * n).map(|r| format!("{{\"id\": {r}, \"dim\": {}}}", 1 + r / n)).collect();
+    text.push_str(&regions.join(", "));
+    text.push_str("], \"incidence\": [");
+    let mut entries = Vec::with_capacity(n * n);
+    for (i, li) in l.iter().enumerate() {
+        for j in 0..n {
+            let a: i64 = li.iter().zip(&diag).zip(&u).map(|((x, d), uk)| x * d * uk[j]).sum();
+            entries.push(format!("{{\"from\": {}, \"to\": {i}, \"weight\": {a}}}", n + j));
+        }
+    }
+    text.push_str(&entries.join(",\n"));
+    text.push_str("]}\n");
+    let path = dir.join(format!("dense{n}.json"));
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Asserts a run exits 0 within `secs` seconds and prints `expected` for `H_1`.
+fn h1_is(path: &Path, expected: &str, secs: u64) {
+    let (o, t) = gmap_2gb(&["homology", p(path)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(t < Duration::from_secs(secs), "took {t:?}");
+    let out = stdout(&o);
+    assert!(out.contains(&format!("H_1 = {expected}\n")) && out.contains("H_2 = 0\n"), "{out}");
+}
+
+#[test]
+fn dense_json_boundary_matrix() {
+    let dir = tempfile::tempdir().unwrap();
+    // 3 · 2^40 = 3298534883328
+    let path = dense_json(dir.path(), 90, &[2, 6, 3 * (1 << 40)], 1);
+    h1_is(&path, "Z/2 + Z/6 + Z/3298534883328", 20);
+}
+
+/// The reproducer: a dense 240 × 240 boundary matrix (over 200 s before).
+#[test]
+#[ignore]
+fn dense_json_boundary_matrix_240() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dense_json(dir.path(), 240, &[4, 12, 7 * (1 << 50)], 2);
+    // diag(4, 12, 7 · 2^50) has the invariant factors 4, 4, 21 · 2^50
+    h1_is(&path, "Z/4 + Z/4 + Z/23643898043695104", 60);
+}
+
+/// Asserts exit code 1, one `error:` line containing each of `needles`, within 60 s.
+fn refused_in_time((o, t): (Output, Duration), needles: &[&str]) {
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.starts_with("error: ") && err.lines().count() == 1, "{err}");
+    for n in needles {
+        assert!(err.contains(n), "{err} should contain {n}");
+    }
+    assert!(t < Duration::from_secs(60), "took {t:?}");
+}
+
+/// One 11-vertex facet (23 bytes): its G-map has 11! darts and its tables of orderings as
+/// many again (6.4 GB); refused at once under 2 GB, while its homology by the direct route
+/// (2047 faces) is that of a point.
+#[test]
+fn one_eleven_vertex_facet() {
+    let dir = tempfile::tempdir().unwrap();
+    let one = dir.path().join("one.facets");
+    std::fs::write(&one, "0 1 2 3 4 5 6 7 8 9 10\n").unwrap();
+    assert_eq!(std::fs::metadata(&one).unwrap().len(), 23);
+    let needles = ["one.facets", "the G-map of the facets would take an estimated 6426605196 bytes", "--max-memory"];
+    refused_in_time(gmap_2gb(&["info", p(&one)]), &needles);
+    refused_in_time(gmap_2gb(&["convert", p(&one), p(&dir.path().join("one.gmap"))]), &needles);
+    let (o, _) = gmap_2gb(&["homology", p(&one)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains("H_0 = Z\n") && stdout(&o).contains("euler characteristic 1"), "{}", stdout(&o));
+    // seven of them, on disjoint vertices
+    let seven = dir.path().join("seven.facets");
+    let lines: Vec<String> =
+        (0..7).map(|f| (0..11).map(|v| (11 * f + v).to_string()).collect::<Vec<_>>().join(" ")).collect();
+    std::fs::write(&seven, lines.join("\n")).unwrap();
+    refused_in_time(gmap_2gb(&["info", p(&seven)]), &["seven.facets", "the G-map of the facets would take"]);
+    // an explicit limit below: the same refusal whatever the machine
+    let o = common::gmap(&["info", p(&one), "--max-memory", "100M"]);
+    refused_in_time((o, Duration::ZERO), &["over the memory limit of 104857600 bytes"]);
+}
+
+/// The face poset of the 10-simplex (2047 cells, 11! flags) as a `.json` complex: its
+/// homology is computed on the cells; converting it to a G-map is refused before the flags
+/// are listed.
+#[test]
+fn face_poset_of_a_ten_simplex() {
+    let dir = tempfile::tempdir().unwrap();
+    let faces: Vec<u32> = (1u32..1 << 11).collect();
+    let index = |f: u32| faces.binary_search(&f).unwrap();
+    let mut text = String::from("{\"regions\": [");
+    let regions: Vec<String> =
+        faces.iter().enumerate().map(|(i, f)| format!("{{\"id\": {i}, \"dim\": {}}}", f.count_ones() - 1)).collect();
+    text.push_str(&regions.join(", "));
+    text.push_str("], \"incidence\": [");
+    let mut entries = Vec::new();
+    for (i, &f) in faces.iter().enumerate() {
+        if f.count_ones() < 2 {
+            continue;
+        }
+        for (k, v) in (0..11).filter(|v| f & (1 << v) != 0).enumerate() {
+            let sign = if k % 2 == 0 { 1 } else { -1 };
+            entries.push(format!("{{\"from\": {i}, \"to\": {}, \"weight\": {sign}}}", index(f & !(1 << v))));
+        }
+    }
+    text.push_str(&entries.join(",\n"));
+    text.push_str("]}\n");
+    let poset = dir.path().join("simplex10.json");
+    std::fs::write(&poset, text).unwrap();
+    let (o, t) = gmap_2gb(&["homology", p(&poset)]);
+    assert!(o.status.success() && t < Duration::from_secs(60), "{}", stderr(&o));
+    assert!(stdout(&o).contains("H_0 = Z\nH_1 = 0\n"), "{}", stdout(&o));
+    let out = dir.path().join("simplex10.gmap");
+    refused_in_time(gmap_2gb(&["convert", p(&poset), p(&out)]), &["simplex10.gmap", "flags", "--max-memory"]);
+    assert!(!out.exists());
+    let o = common::gmap(&["convert", p(&poset), p(&out), "--max-darts", "100000000", "--max-memory", "1G"]);
+    refused_in_time(
+        (o, Duration::ZERO),
+        &["the flags of the face poset would take an estimated 4790016000 bytes, over the memory limit of 1073741824"],
+    );
+}
+
+/// The simplicial counterpart is estimated before it is built, and files before they are
+/// read; `--max-memory` takes sizes with suffixes and refuses anything else as bad usage.
+#[test]
+fn estimates_before_allocations() {
+    let dir = tempfile::tempdir().unwrap();
+    let one_dart = dir.path().join("one.gmap");
+    std::fs::write(&one_dart, format!("gmap 12 1\n{}\n", ["0"; 13].join(" "))).unwrap();
+    let o = common::gmap(&["homology", p(&one_dart), "--method", "simplicial", "--max-memory", "1M"]);
+    refused_in_time((o, Duration::ZERO), &["one.gmap", "the simplicial counterpart would take an estimated"]);
+    let o = common::gmap(&["info", p(&one_dart), "--max-memory", "16"]);
+    refused_in_time((o, Duration::ZERO), &["one.gmap", "the file and its map would take an estimated 108 bytes"]);
+    assert!(common::gmap(&["info", p(&one_dart), "--max-memory", "1k"]).status.success());
+    for bad in ["0", "2X", "1.5G", "-1"] {
+        let o = common::gmap(&["info", p(&one_dart), "--max-memory", bad]);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {}", stderr(&o));
+    }
+}
