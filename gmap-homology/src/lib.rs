@@ -76,6 +76,11 @@ pub use border::{cellular_complex, CellularComplex};
 pub use chain::{ChainComplex, ChainError};
 pub use homology::{homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError};
 pub use incidence::Incidence;
-pub use precond::{check_by_dimension, check_preconditions, check_self_bending, oriented_cells, OrientedCells, PreconditionError};
-pub use simplicial::{chain_map_tau, simplicial_complex, simplicial_complex_with_simplices, ChainMapTau, Simplex, SimplicialComplex, TauError};
+pub use precond::{
+    check_by_dimension, check_preconditions, check_self_bending, oriented_cells, OrientedCells, PreconditionError,
+};
+pub use simplicial::{
+    chain_map_tau, simplicial_complex, simplicial_complex_with_simplices, ChainMapTau, Simplex, SimplicialComplex,
+    TauError,
+};
 pub use sparse::{SparseError, SparseMatrix};

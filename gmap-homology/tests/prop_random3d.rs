@@ -40,8 +40,8 @@ use std::collections::{BTreeMap, HashMap};
 
 use gmap_core::{AlphaSet, BoundaryDefect, CellDefect, Dart, DenseMap, GMap};
 use gmap_homology::{
-    cellular_complex, chain_map_tau, check_by_dimension, check_preconditions, homology_z, homology_zp, simplicial_complex,
-    ChainComplex, Homology, PreconditionError,
+    cellular_complex, chain_map_tau, check_by_dimension, check_preconditions, homology_z, homology_zp,
+    simplicial_complex, ChainComplex, Homology, PreconditionError,
 };
 use gmap_ops::build;
 use gmap_ops::euler::ops;

@@ -214,8 +214,10 @@ impl ChainMapTau {
     /// they differ. O(nnz) per dimension.
     pub fn check_commutes(&self) -> Result<(), TauError> {
         for i in 1..self.tau.len() {
-            let left = self.tau[i - 1].checked_mul(self.cellular.chain.boundary(i)).ok_or(TauError::Overflow { dim: i })?;
-            let right = self.simplicial.chain.boundary(i).checked_mul(&self.tau[i]).ok_or(TauError::Overflow { dim: i })?;
+            let left =
+                self.tau[i - 1].checked_mul(self.cellular.chain.boundary(i)).ok_or(TauError::Overflow { dim: i })?;
+            let right =
+                self.simplicial.chain.boundary(i).checked_mul(&self.tau[i]).ok_or(TauError::Overflow { dim: i })?;
             let column = |m: &SparseMatrix, j: usize| {
                 let (r, v) = m.col(j);
                 let mut c: Vec<(u32, i64)> = r.iter().copied().zip(v.iter().copied()).filter(|e| e.1 != 0).collect();
