@@ -469,3 +469,46 @@ fn algorithm_8_16_refuses_when_ids_run_out() {
     let t = y.topological(ZeroWeightRule::Closed).unwrap();
     assert!(t.complex.index_of(RegionId(u64::MAX)).is_some());
 }
+
+/// AC Example 8.13 (n = 1): `-1 - X^2 = -X_0 - Y_0` removes the vertex of a circle's
+/// cw-complex; the Betti numbers change from (1, 1) to (0, 1), the topological ones stay
+/// (1, 1), which Algorithm 8.16 recovers.
+#[test]
+fn example_8_13_removing_the_vertex_of_a_circle() {
+    let circle = ArchComplex::try_from_ids(1, &[(1, 0), (2, 1)], &[(2, 1, 0)]).unwrap();
+    let line = ArchComplex::try_from_ids(1, &[(2, 1)], &[]).unwrap();
+    assert_eq!(betti(&circle), vec![1, 1]);
+    assert_eq!(betti(&line), vec![0, 1]);
+    let op = EpVector::try_new(vec![-1, 0], vec![-1, 0]).unwrap();
+    assert!(op.is_operator());
+    assert_eq!(gmap_homology::ep::EpPolynomial::to_poly(&op).coeffs(), &[-1, 0, -1]);
+    let conf = |x: &ArchComplex| {
+        let c: Vec<i64> = x.region_counts().iter().map(|&c| c as i64).collect();
+        EpVector::try_new(c, betti(x).iter().map(|&b| b as i64).collect()).unwrap()
+    };
+    assert_eq!(conf(&circle).try_add(&op).unwrap(), conf(&line));
+    for x in [&circle, &line] {
+        assert_eq!(betti(&x.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 1]);
+    }
+    // Remark 8.2: a 1-region is a loop or a segment, nothing else
+    assert!(ArchComplex::check_region_betti(1, &[1, 1]).is_ok());
+    assert!(ArchComplex::check_region_betti(1, &[1, 0]).is_ok());
+    assert!(ArchComplex::check_region_betti(1, &[1, 2]).is_err());
+}
+
+/// AC Remark 8.20: `X_{i-1} - Y_i = X^{i-1} (1 - X^{n+2})` is an Euler–Poincaré operator.
+#[test]
+fn remark_8_20_the_seam_operator() {
+    use gmap_homology::ep::{EpPolynomial, Poly};
+    for n in 2..=4 {
+        for i in 2..=n {
+            let v = EpVector::x_unit(n, i - 1).try_add_scaled(-1, &EpVector::y_unit(n, i)).unwrap();
+            assert!(v.is_operator(), "n = {n}, i = {i}");
+            let mut one_minus = vec![0i64; n + 3];
+            one_minus[0] = 1;
+            one_minus[n + 2] = -1;
+            let want = Poly::monomial(i - 1).try_mul(&Poly::new(one_minus)).unwrap();
+            assert_eq!(v.to_poly(), want, "n = {n}, i = {i}");
+        }
+    }
+}

@@ -1,10 +1,48 @@
-//! BO §6: the chain map τ from the cellular chains (BO Def. 10) to the chains of the
-//! simplicial counterpart, and `c∂ᶜτ = cτ∂ˢ` on the paper's figures (Fig. 1(a), 1(b), 2,
-//! 4(b)) and the torus. Random maps are covered in `prop_random3d.rs` (every map the
-//! cellular method accepts there is checked the same way).
+//! BO items with the paper's own values that the unit tests of the crates do not already
+//! cover: Property 2 and the argument of Property 4 (on the map of Fig. 1(b), the one
+//! Fig. 5 orients), and §6: the chain map τ from the cellular chains (BO Def. 10) to the
+//! chains of the simplicial counterpart, with `c∂ᶜτ = cτ∂ˢ` on the paper's figures
+//! (Fig. 1(a), 1(b), 2, 4(b)) and the torus. Random maps are covered in `prop_random3d.rs`
+//! (every map the cellular method accepts there is checked the same way).
 
-use gmap_core::{examples, AlphaSet, Dart, DenseMap};
-use gmap_homology::{chain_map_tau, ChainMapTau, SparseMatrix, TauError};
+use gmap_core::{examples, AlphaSet, CompactedCells, Dart, DenseMap};
+use gmap_homology::{chain_map_tau, oriented_cells, ChainMapTau, SparseMatrix, TauError};
+
+#[test]
+fn property_2_compacted_involutions_have_no_fixed_point() {
+    for (name, m) in [
+        ("Fig. 1(a)", examples::fig1_curve()),
+        ("Fig. 1(b)", examples::fig1_surface()),
+        ("Fig. 2", examples::cylinder()),
+        ("Fig. 4(b)", examples::klein_bottle()),
+    ] {
+        assert!(m.has_complete_boundaries(), "{name}");
+        for i in 1..=m.dim() {
+            let b = CompactedCells::new(&m, i);
+            for e in 0..b.len() as u32 {
+                for k in 0..i {
+                    assert_ne!(b.alpha(e, k), e, "{name}: alpha^{i}_{k} fixes an element of B_{i}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn property_4_the_two_paths_through_dart_2_cancel() {
+    // BO's argument for ∂∂ = 0 on Fig. 5(a): from the face of dart 2 to its vertex
+    // {2, 3, 9, 14}, the path through dart 2 (edge {1, 2}) and the path through
+    // dart 3 = alpha_1(2) (edge {3, 4, 9, 10}) carry opposite signs
+    let m = examples::fig1_surface();
+    let o: Vec<_> = (0..=2).map(|i| oriented_cells(&m, i).unwrap()).collect();
+    let path = |paper: u32| o[2].sign(paper - 1) * o[1].sign(paper - 1) * o[1].sign(paper - 1) * o[0].sign(paper - 1);
+    assert_eq!(m.alpha(Dart(1), 1), Dart(2));
+    assert_eq!(path(2), -path(3));
+    assert_eq!(path(2).abs(), 1);
+    // and the whole border of the border vanishes
+    let c = gmap_homology::cellular_complex(&m).unwrap();
+    assert!(c.chain.boundary(1).checked_mul(c.chain.boundary(2)).unwrap().iter().all(|e| e.2 == 0));
+}
 
 /// The entries of column `j` of `m`, as `(row, value)`, sorted.
 fn column(m: &SparseMatrix, j: usize) -> Vec<(usize, i64)> {
