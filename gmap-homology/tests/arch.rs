@@ -512,3 +512,20 @@ fn remark_8_20_the_seam_operator() {
         }
     }
 }
+
+/// AC Lemma 8.14: on the complex of a cw-complex (here the cells of a G-map, AC Remark 3.3)
+/// the homology is the topological one: Algorithm 8.16 has nothing to do.
+#[test]
+fn lemma_8_14_cw_complexes_are_left_alone() {
+    for (m, want) in [
+        (examples::torus(), vec![1, 2, 1]),
+        (examples::cylinder(), vec![1, 1, 0]),
+        (examples::klein_bottle(), vec![1, 1, 0]),
+    ] {
+        let x = ArchComplex::from_map(&m).unwrap();
+        let t = x.topological(ZeroWeightRule::Closed).unwrap();
+        assert!(t.operators.is_empty());
+        assert_eq!(t.complex, x);
+        assert_eq!(betti(&x), want);
+    }
+}
