@@ -702,7 +702,7 @@ impl DenseMap {
                     for &d in &order[start[g] as usize..start[g + 1] as usize] {
                         let slot = &mut first[down.of[d as usize] as usize];
                         if slot.0 == g as u32 {
-                            if found.map_or(true, |f| (slot.1, d) < f) {
+                            if found.is_none_or(|f| (slot.1, d) < f) {
                                 found = Some((slot.1, d));
                             }
                         } else {

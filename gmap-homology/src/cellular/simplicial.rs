@@ -196,7 +196,7 @@ pub fn chain_map_tau(map: &DenseMap) -> Result<ChainMapTau, PreconditionError> {
 /// `i + 1` in the order of [`simplicial_complex_with_simplices`].
 fn tau_matrix(map: &DenseMap, cells: &OrientedCells, rows: usize) -> SparseMatrix {
     let i = cells.dim;
-    let orient: i64 = if (i * (i + 1) / 2) % 2 == 0 { 1 } else { -1 };
+    let orient: i64 = if (i * (i + 1) / 2).is_multiple_of(2) { 1 } else { -1 };
     let b = map.partition(AlphaSet::above(i, map.dim()));
     let entries: Vec<(u32, u32, i64)> = b
         .reps

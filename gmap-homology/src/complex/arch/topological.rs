@@ -188,7 +188,7 @@ impl ArchComplex {
             }
             return Err(refuse("its boundary is not recorded, and only a ball's can be completed"));
         }
-        if i == 2 && betti[1] + 1 >= boundary && (betti[1] + 1 - boundary) % 2 == 0 {
+        if i == 2 && betti[1] + 1 >= boundary && (betti[1] + 1 - boundary).is_multiple_of(2) {
             // genus g with r boundary circles: b_1 = 2g + r - 1
             return Ok(Plan::Surface { genus: (betti[1] + 1 - boundary) / 2 });
         }
