@@ -167,6 +167,42 @@ fn homology_and_info_of_a_json_complex() {
     assert_eq!(v["euler_characteristic"], -1);
 }
 
+/// A torus region (AC Def. 8.1) through the command line: with its Betti numbers,
+/// `--topological` gives (1, 2, 1); a solid torus, which Algorithm 8.16 cannot cellulate
+/// from its numbers, is refused with the region named; never the sphere's (1, 0, 1).
+#[test]
+fn topological_homology_of_regions_with_their_own_betti_numbers() {
+    let dir = tempfile::tempdir().unwrap();
+    let torus =
+        write(dir.path(), "torus.json", r#"{"regions": [{"id": 7, "dim": 2, "betti": [1, 2, 1]}], "incidence": []}"#);
+    let out = gmap().args(["homology", "--json", "--topological"]).arg(&torus).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["betti"], serde_json::json!([1, 2, 1]));
+    // without --topological: the complex itself, one closed region
+    let out = gmap().args(["homology", "--json"]).arg(&torus).output().unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["betti"], serde_json::json!([0, 0, 1]));
+    let solid = write(
+        dir.path(),
+        "solid.json",
+        r#"{"regions": [{"id": 9, "dim": 3, "betti": [1, 1, 0, 0]}], "incidence": []}"#,
+    );
+    let out = gmap().args(["homology", "--topological"]).arg(&solid).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("Algorithm 8.16") && err.contains("region 9 (3-region with Betti numbers (1, 1, 0, 0)"),
+        "{err}"
+    );
+    let bad =
+        write(dir.path(), "bad.json", r#"{"regions": [{"id": 7, "dim": 2, "betti": [1, 1, 1]}], "incidence": []}"#);
+    let out = gmap().args(["info"]).arg(&bad).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr)
+        .contains("region 7 of dimension 2 cannot have the Betti numbers (1, 1, 1)"));
+}
+
 #[test]
 fn convert_gmap_to_json_dot_and_lar() {
     let dir = tempfile::tempdir().unwrap();

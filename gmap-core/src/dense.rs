@@ -617,7 +617,8 @@ impl DenseMap {
     }
 
     /// Checks BO Def. 6 (cells with complete boundary): no fixed point of `alpha_i` for
-    /// `i < n`, and no self-bending. O(N n log N).
+    /// `i < n` (the first free dart, in dart order, is named), and no self-bending
+    /// ([`DenseMap::check_no_self_bending`]). O(N n^2).
     pub fn check_complete_boundaries(&self) -> Result<(), BoundaryDefect> {
         let n = self.dim;
         for d in self.darts() {
@@ -627,19 +628,101 @@ impl DenseMap {
                 }
             }
         }
+        self.check_no_self_bending()
+    }
+
+    /// Checks the second part of BO Def. 6: no self-bending, that is, for every dart `d`
+    /// and every `i`, the orbits `<alpha_{i+1}..alpha_n>(d)` and `<alpha_0..alpha_{i-1}>(d)`
+    /// meet in `d` alone. Where they meet in a second dart, the i-cell of `d` is folded
+    /// onto itself (a square face of a volume sewn to itself by a half-turn, an edge sewn
+    /// to itself reversed); the error names the lowest such `i`, the smallest dart `d` with
+    /// a second dart in both orbits, that second dart (the smallest one), and the i-cell.
+    ///
+    /// Only `1 <= i <= n - 1` can fail (for `i = 0` and `i = n` one orbit is `{d}`). Where
+    /// one of the two orbits is a single involution's (`i = 1`: `{d, alpha_0(d)}`;
+    /// `i = n - 1`: `{d, alpha_n(d)}`), one partition decides; otherwise the darts are
+    /// grouped by their `<alpha_{i+1}..alpha_n>`-orbit and two darts of a group must lie
+    /// in different `<alpha_0..alpha_{i-1}>`-orbits. O(N n^2) (the partitions); no sort.
+    ///
+    /// ```
+    /// use gmap_core::{Dart, DenseMap};
+    /// // a square (8 darts, alpha_0 and alpha_1 alternating) as the face of a 3-map,
+    /// // sewn to itself by alpha_3 with a half-turn: dart d meets dart d + 4
+    /// let mut m = DenseMap::new(3, 8);
+    /// for d in (0..8).step_by(2) {
+    ///     m.link(Dart(d), Dart(d + 1), 0);
+    ///     m.link(Dart(d + 1), Dart((d + 2) % 8), 1);
+    /// }
+    /// assert!(m.check_no_self_bending().is_ok());
+    /// for d in 0..4 {
+    ///     m.link(Dart(d), Dart(d + 4), 3);
+    /// }
+    /// assert!(m.validate().is_ok());
+    /// let e = m.check_no_self_bending().unwrap_err();
+    /// assert!(e.to_string().starts_with("the 2-cell of dart 0 is folded onto itself"), "{e}");
+    /// ```
+    pub fn check_no_self_bending(&self) -> Result<(), BoundaryDefect> {
+        let n = self.dim;
+        let count = self.dart_count();
         for i in 1..n {
-            let up = self.partition(AlphaSet::above(i, n));
-            let down = self.partition(AlphaSet::below(i));
-            let mut pairs: Vec<(u64, u32)> =
-                (0..self.dart_count()).map(|d| (((up.of[d] as u64) << 32) | down.of[d] as u64, d as u32)).collect();
-            pairs.sort_unstable();
-            for win in pairs.windows(2) {
-                if win[0].0 == win[1].0 {
-                    return Err(BoundaryDefect::SelfBending { dart: Dart(win[0].1), i, other: Dart(win[1].1) });
+            // the smallest dart with a second dart in both orbits, and that second dart
+            let mut found: Option<(u32, u32)> = None;
+            if i == 1 || i == n - 1 {
+                // one side is `{d, alpha_j(d)}`: the pair meets again iff `alpha_j(d) != d`
+                // lies in the other side's orbit of `d`
+                let (j, other) = if i == 1 { (0, AlphaSet::above(1, n)) } else { (n, AlphaSet::below(n - 1)) };
+                let p = self.partition(other);
+                for d in 0..count {
+                    let e = self.alpha[d * (n + 1) + j] as usize;
+                    if e != d && p.of[d] == p.of[e] {
+                        found = Some((d.min(e) as u32, d.max(e) as u32));
+                        break;
+                    }
                 }
+            } else {
+                let up = self.partition(AlphaSet::above(i, n));
+                let down = self.partition(AlphaSet::below(i));
+                // darts grouped by up-orbit (a counting sort, dart order kept in each group)
+                let mut start = vec![0u32; up.len() + 1];
+                for &u in &up.of {
+                    start[u as usize + 1] += 1;
+                }
+                for k in 0..up.len() {
+                    start[k + 1] += start[k];
+                }
+                let mut next = start.clone();
+                let mut order = vec![0u32; count];
+                for (d, &u) in up.of.iter().enumerate() {
+                    order[next[u as usize] as usize] = d as u32;
+                    next[u as usize] += 1;
+                }
+                // first[down orbit] = (group, first dart of the group in that orbit)
+                let mut first = vec![(u32::MAX, 0u32); down.len()];
+                for g in 0..up.len() {
+                    for &d in &order[start[g] as usize..start[g + 1] as usize] {
+                        let slot = &mut first[down.of[d as usize] as usize];
+                        if slot.0 == g as u32 {
+                            if found.is_none_or(|f| (slot.1, d) < f) {
+                                found = Some((slot.1, d));
+                            }
+                        } else {
+                            *slot = (g as u32, d);
+                        }
+                    }
+                }
+            }
+            if let Some((d, other)) = found {
+                let cell = self.orbit(Dart(d), AlphaSet::cell(i, n)).into_iter().min().unwrap_or(Dart(d));
+                return Err(BoundaryDefect::SelfBending { dart: Dart(d), i, other: Dart(other), cell });
             }
         }
         Ok(())
+    }
+
+    /// Whether no cell is folded onto itself (BO Def. 6, part 2); see
+    /// [`DenseMap::check_no_self_bending`].
+    pub fn has_no_self_bending(&self) -> bool {
+        self.check_no_self_bending().is_ok()
     }
 
     /// Whether the map has cells with complete boundaries (BO Def. 6).

@@ -111,15 +111,18 @@ pub enum BoundaryDefect {
         /// the involution
         alpha: usize,
     },
-    /// `<alpha_{i+1..n}>(d)` and `<alpha_{0..i-1}>(d)` share a dart other than `d`.
-    #[error("a cell is folded onto itself at dart {dart}: its <alpha_{}..alpha_n> and <alpha_0..alpha_{}> orbits share dart {other} (Def. 6 of BO: no self-bending)", .i + 1, .i - 1)]
+    /// `<alpha_{i+1..n}>(d)` and `<alpha_{0..i-1}>(d)` share a dart other than `d`: the
+    /// i-cell of `d` is folded onto itself.
+    #[error("the {i}-cell of dart {cell} is folded onto itself: darts {dart} and {other} lie in the same <alpha_{}..alpha_n> orbit and the same <alpha_0..alpha_{}> orbit (Def. 6 of BO: no self-bending)", .i + 1, .i - 1)]
     SelfBending {
         /// the dart
         dart: Dart,
-        /// the dimension `i` at which the orbits meet
+        /// the dimension `i` of the folded cell, where the orbits meet
         i: usize,
         /// another dart in both orbits
         other: Dart,
+        /// the smallest dart of the folded i-cell
+        cell: Dart,
     },
 }
 

@@ -78,6 +78,11 @@ pub use homology::{
     homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError, Natural,
 };
 pub use incidence::Incidence;
-pub use precond::{check_by_dimension, check_preconditions, oriented_cells, OrientedCells, PreconditionError};
-pub use simplicial::{simplicial_complex, simplicial_complex_with_simplices, Simplex, SimplicialComplex};
+pub use precond::{
+    check_by_dimension, check_preconditions, check_self_bending, oriented_cells, OrientedCells, PreconditionError,
+};
+pub use simplicial::{
+    chain_map_tau, simplicial_complex, simplicial_complex_with_simplices, ChainMapTau, Simplex, SimplicialComplex,
+    TauError,
+};
 pub use sparse::{SparseError, SparseMatrix};

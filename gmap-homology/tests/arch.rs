@@ -182,33 +182,32 @@ fn algorithm_8_16_operators_are_exact() {
     assert_eq!(betti(&c.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 1, 0]);
 }
 
-/// AC Example 8.22: one 2-region A, lines l1..l12 (ids 1..12), 8 points (ids 21..28), with
-/// ∂A = -l1 + l2 - l3 + l12 + l4 - l5 + l6 - l10 + l7 - l8 + l9 - l11: the outer wall
-/// (4 corners) and two inner courts (2 points each; the figure is not in our copy, so the
-/// ends of the lines are ours), three boundary components.
+/// The wall cycles of AC Example 8.22, as the paper writes ∂A: `(line, weight in ∂A)`,
+/// one group per boundary component (the outer wall, court 1, court 2).
+const WALLS: [[(u64, i64); 4]; 3] =
+    [[(1, -1), (2, 1), (3, -1), (12, 1)], [(4, 1), (5, -1), (6, 1), (10, -1)], [(7, 1), (8, -1), (9, 1), (11, -1)]];
+
+/// AC Example 8.22 (Fig. 11) as a floor plan with two inner courts: the 2-region A (id 100),
+/// the lines l1..l12 (ids 1..12) with the paper's ∂A, each boundary component a wall of four
+/// lines closed by four corner points (ids 21..32). The paper counts 8 points, which no
+/// floor plan with two courts has: three disjoint closed walls of 4 lines each need 12
+/// corners (with 8, χ of the space would be 8 - 12 + 1 = -3 instead of a two-holed disk's
+/// -1), so the corners here are ours. Each line runs from one corner to the next one in the
+/// direction that its sign in ∂A asks for, so that ∂∂A = 0.
 fn floor_plan() -> ArchComplex {
     let mut regs = vec![(100u64, 2usize)];
     regs.extend((1..=12).map(|l| (l, 1)));
-    regs.extend((21..=28).map(|p| (p, 0)));
-    let line = |l: u64, from: u64, to: u64| [(l, from, -1i64), (l, to, 1)];
+    regs.extend((21..=32).map(|p| (p, 0)));
     let mut e: Vec<(u64, u64, i64)> = Vec::new();
-    // outer: P21 -> P22 -> P23 -> P24 -> P21, traversed as -l1, l2, -l3, l12
-    e.extend(line(1, 22, 21));
-    e.extend(line(2, 22, 23));
-    e.extend(line(3, 24, 23));
-    e.extend(line(12, 24, 21));
-    // court 1 between P25 and P26: l4, -l5, l6, -l10
-    for l in [4, 5, 6, 10] {
-        e.extend(line(l, 25, 26));
-    }
-    // court 2 between P27 and P28: l7, -l8, l9, -l11
-    for l in [7, 8, 9, 11] {
-        e.extend(line(l, 27, 28));
-    }
-    for (l, w) in
-        [(1, -1), (2, 1), (3, -1), (12, 1), (4, 1), (5, -1), (6, 1), (10, -1), (7, 1), (8, -1), (9, 1), (11, -1)]
-    {
-        e.push((100, l, w));
+    for (w, wall) in WALLS.iter().enumerate() {
+        let corner = |k: usize| 21 + 4 * w as u64 + (k % 4) as u64;
+        for (k, &(l, sign)) in wall.iter().enumerate() {
+            // walking the wall, line l goes from corner k to corner k + 1 when its sign is +1
+            let (from, to) = if sign > 0 { (corner(k), corner(k + 1)) } else { (corner(k + 1), corner(k)) };
+            e.push((l, from, -1));
+            e.push((l, to, 1));
+            e.push((100, l, sign));
+        }
     }
     ArchComplex::try_new(2, regions(&regs), e).unwrap()
 }
@@ -216,17 +215,156 @@ fn floor_plan() -> ArchComplex {
 #[test]
 fn example_8_22_floor_plan() {
     let x = floor_plan();
-    assert_eq!(x.region_counts(), vec![8, 12, 1]);
+    // the paper's counts: one 2-region, twelve lines, ∂A as printed, three boundary components
+    assert_eq!(x.region_counts(), vec![12, 12, 1]);
     let a = x.index_of(RegionId(100)).unwrap();
+    let mut boundary: Vec<(u64, i64)> = x.down(a).iter().map(|en| (x.region(en.to).id.0, en.weight)).collect();
+    boundary.sort_unstable();
+    let mut want: Vec<(u64, i64)> = WALLS.iter().flatten().copied().collect();
+    want.sort_unstable();
+    assert_eq!(boundary, want);
     assert_eq!(x.components_of(&x.boundary_regions(a)).len(), 3);
-    let t = x.topological(ZeroWeightRule::Closed).unwrap();
-    // two connecting edges, each joining two parts
-    assert_eq!(t.operators.len(), 2);
-    assert!(t.operators.iter().all(|o| o.step == Step::ConnectBoundary && o.vector == EpVector::a(2, 1)));
-    assert_eq!(betti(&x)[0], 3);
-    assert_eq!(betti(&t.complex)[0], 1);
-    let y = &t.complex;
-    assert_eq!(y.components_of(&y.boundary_regions(y.index_of(RegionId(100)).unwrap())).len(), 1);
+    assert_eq!(x.boundary_component_count(a), 3);
+    // A is a disk with two courts: the sphere with three holes, by default and as given
+    assert_eq!(x.region_betti(a), vec![1, 2, 0]);
+    // the complex itself: three separate walls, A bounding their sum
+    assert_eq!(betti(&x), vec![3, 2, 0]);
+    for y in [x.clone(), x.clone().with_region_betti(RegionId(100), vec![1, 2, 0]).unwrap()] {
+        let t = y.topological(ZeroWeightRule::Closed).unwrap();
+        // two connecting edges from the outer wall, each joining two parts (X_1 - Y_0)
+        assert_eq!(t.operators.len(), 2);
+        assert!(t.operators.iter().all(|o| o.step == Step::ConnectBoundary && o.vector == EpVector::a(2, 1)));
+        assert!(t.operators.iter().all(|o| o.region == RegionId(100)));
+        assert_eq!(t.operators[0].created, vec![RegionId(101)]);
+        assert_eq!(t.operators[1].created, vec![RegionId(102)]);
+        // the floor with two courts: one component, two loops, no cavity
+        assert_eq!(betti(&t.complex), vec![1, 2, 0]);
+        assert_eq!(t.complex.homology_z().unwrap().to_string(), "(Z, Z^2, 0)");
+        assert_eq!(t.complex.region_counts(), vec![12, 14, 1]);
+        assert_eq!(t.complex.euler_characteristic(), -1);
+        assert_eq!(t.total().unwrap(), EpVector::a(2, 1).try_add(&EpVector::a(2, 1)).unwrap());
+        let b = t.complex.index_of(RegionId(100)).unwrap();
+        assert_eq!(t.complex.components_of(&t.complex.boundary_regions(b)).len(), 1);
+    }
+    // numbers that contradict three boundary circles are refused, the region named
+    let e = x.clone().with_region_betti(RegionId(100), vec![1, 1, 0]).unwrap().topological(ZeroWeightRule::Closed);
+    assert!(matches!(e, Err(ArchError::RegionTopologyUnknown { id: RegionId(100), dim: 2, boundary: 3, .. })), "{e:?}");
+    // a floor of genus 1 with the same three walls: b_1 = 2g + r - 1 = 4, two more loops
+    let t = x.with_region_betti(RegionId(100), vec![1, 4, 0]).unwrap().topological(ZeroWeightRule::Closed).unwrap();
+    assert_eq!(betti(&t.complex), vec![1, 4, 0]);
+    let steps: Vec<Step> = t.operators.iter().map(|o| o.step).collect();
+    assert_eq!(steps, [Step::ConnectBoundary, Step::ConnectBoundary, Step::HandleLoop, Step::HandleLoop]);
+}
+
+/// A torus as a region (legal under AC Def. 8.1): by default a region without boundary is a
+/// sphere, and Algorithm 8.16 says (1, 0, 1); given the torus's Betti numbers it says
+/// (1, 2, 1) — never (1, 0, 1) for a region known to be a torus.
+#[test]
+fn a_torus_region_gets_its_own_betti_numbers() {
+    let x = ArchComplex::try_from_ids(2, &[(7, 2)], &[]).unwrap();
+    assert_eq!(x.region_betti(0), vec![1, 0, 1]);
+    assert!(!x.has_region_betti(0));
+    assert_eq!(betti(&x.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 0, 1]);
+    let torus = x.with_region_betti(RegionId(7), vec![1, 2, 1]).unwrap();
+    assert!(torus.has_region_betti(0));
+    for rule in [ZeroWeightRule::Closed, ZeroWeightRule::Seam] {
+        let t = torus.topological(rule).unwrap();
+        assert_eq!(betti(&t.complex), vec![1, 2, 1], "{rule:?}");
+        assert_eq!(t.complex.region_counts(), vec![1, 2, 1]);
+        let steps: Vec<Step> = t.operators.iter().map(|o| o.step).collect();
+        assert_eq!(steps, [Step::BaseVertex, Step::HandleLoop, Step::HandleLoop]);
+        // X_0 + Y_0, then X_1 + Y_1 twice: from (0, 0, 1; 0, 0, 1) to (1, 2, 1; 1, 2, 1)
+        let before = EpVector::try_new(vec![0, 0, 1], vec![0, 0, 1]).unwrap();
+        assert_eq!(
+            before.try_add(&t.total().unwrap()).unwrap(),
+            EpVector::try_new(vec![1, 2, 1], vec![1, 2, 1]).unwrap()
+        );
+        // Theorem 8.11: the complex's homology lies in the topological one (b_i ≤ b_i^top)
+        assert!(betti(&torus).iter().zip(betti(&t.complex)).all(|(a, b)| *a <= b));
+        // the output is a cw-complex: it carries no region topology
+        assert!((0..t.complex.regions().len()).all(|r| !t.complex.has_region_betti(r)));
+    }
+    // genus 2, and a torus touching a point with a zero entry: the loops sit at that point
+    let g2 = ArchComplex::try_from_ids(2, &[(7, 2)], &[]).unwrap().with_region_betti(RegionId(7), vec![1, 4, 1]);
+    assert_eq!(betti(&g2.unwrap().topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 4, 1]);
+    let touching = ArchComplex::try_from_ids(2, &[(1, 0), (7, 2)], &[(7, 1, 0)]).unwrap();
+    let t =
+        touching.with_region_betti(RegionId(7), vec![1, 2, 1]).unwrap().topological(ZeroWeightRule::Closed).unwrap();
+    assert_eq!(betti(&t.complex), vec![1, 2, 1]);
+    assert_eq!(t.complex.region_counts(), vec![1, 2, 1]);
+    // a torus with one hole, its boundary a loop wall at a point: (1, 2, 0)
+    let holed = ArchComplex::try_from_ids(2, &[(1, 0), (2, 1), (7, 2)], &[(2, 1, 0), (7, 2, 1)]).unwrap();
+    assert_eq!(betti(&holed.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 0, 0]);
+    let t = holed.with_region_betti(RegionId(7), vec![1, 2, 0]).unwrap().topological(ZeroWeightRule::Closed).unwrap();
+    assert_eq!(betti(&t.complex), vec![1, 2, 0]);
+}
+
+/// What Algorithm 8.16 cannot know it refuses, naming the region; what no region can be
+/// is refused when it is given.
+#[test]
+fn region_topology_refusals_name_the_region() {
+    // a solid torus whose boundary is not recorded, and one bounded by a recorded sphere
+    let x = ArchComplex::try_from_ids(3, &[(9, 3)], &[]).unwrap().with_region_betti(RegionId(9), vec![1, 1, 0, 0]);
+    let e = x.unwrap().topological(ZeroWeightRule::Closed).unwrap_err();
+    assert!(matches!(e, ArchError::RegionTopologyUnknown { id: RegionId(9), dim: 3, boundary: 0, .. }), "{e}");
+    assert!(
+        e.to_string().starts_with("region 9 (3-region with Betti numbers (1, 1, 0, 0) and 0 boundary component(s))"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("Algorithm 8.16 cannot cellulate it"), "{e}");
+    let s = ArchComplex::try_from_ids(3, &[(1, 2), (9, 3)], &[(9, 1, 1)]).unwrap();
+    assert_eq!(betti(&s.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 0, 0, 0]);
+    let e = s.with_region_betti(RegionId(9), vec![1, 1, 0, 0]).unwrap().topological(ZeroWeightRule::Closed);
+    assert!(matches!(e, Err(ArchError::RegionTopologyUnknown { id: RegionId(9), boundary: 1, .. })), "{e:?}");
+    // a closed 3-manifold other than the sphere: not determined by its Betti numbers
+    let t3 = ArchComplex::try_from_ids(3, &[(9, 3)], &[]).unwrap().with_region_betti(RegionId(9), vec![1, 3, 3, 1]);
+    assert!(t3.unwrap().topological(ZeroWeightRule::Closed).is_err());
+    // but a closed 3-sphere or a 3-ball without recorded boundary is fine
+    let s3 = ArchComplex::try_from_ids(3, &[(9, 3)], &[]).unwrap();
+    let t =
+        s3.clone().with_region_betti(RegionId(9), vec![1, 0, 0, 1]).unwrap().topological(ZeroWeightRule::Seam).unwrap();
+    assert_eq!(betti(&t.complex), vec![1, 0, 0, 1]);
+    let t = s3.with_region_betti(RegionId(9), vec![1, 0, 0, 0]).unwrap().topological(ZeroWeightRule::Closed).unwrap();
+    assert_eq!(betti(&t.complex), vec![1, 0, 0, 0]);
+    assert_eq!(t.operators[0].step, Step::CompleteSeam);
+    // a closed torus glued with a non-zero weight
+    let glued = ArchComplex::try_from_ids(2, &[(1, 0), (2, 1), (7, 2)], &[(2, 1, 0), (7, 2, 1)]).unwrap();
+    let e = glued.with_region_betti(RegionId(7), vec![1, 2, 1]).unwrap().topological(ZeroWeightRule::Closed);
+    assert!(matches!(e, Err(ArchError::RegionTopologyUnknown { id: RegionId(7), .. })), "{e:?}");
+    // numbers no region has
+    let x = ArchComplex::try_from_ids(2, &[(7, 2)], &[]).unwrap();
+    for (b, why) in [
+        (vec![1, 2], "one Betti number per dimension"),
+        (vec![2, 0, 0], "connected"),
+        (vec![1, 0, 2], "b_dim = 1 when closed"),
+        (vec![1, 1, 1], "b_1 = 2g"),
+    ] {
+        let e = x.clone().with_region_betti(RegionId(7), b.clone()).unwrap_err();
+        assert!(matches!(&e, ArchError::RegionBetti { id: RegionId(7), dim: 2, betti, .. } if *betti == b), "{e}");
+        assert!(e.to_string().contains(why) && e.to_string().ends_with("(AC Def. 8.1)"), "{e}");
+    }
+    let y = ArchComplex::try_from_ids(3, &[(9, 3)], &[]).unwrap();
+    let e = y.with_region_betti(RegionId(9), vec![1, 1, 0, 1]).unwrap_err();
+    assert!(e.to_string().contains("Poincaré duality"), "{e}");
+    assert!(matches!(x.with_region_betti(RegionId(8), vec![1, 0, 1]), Err(ArchError::UnknownRegion { .. })));
+}
+
+#[test]
+fn region_betti_numbers_in_json() {
+    let text = r#"{"dimension": 2, "regions": [{"id": 7, "dim": 2, "betti": [1, 2, 1]}], "incidence": []}"#;
+    let x = read_json(text).unwrap();
+    assert_eq!(x.region_betti(0), vec![1, 2, 1]);
+    assert_eq!(betti(&x.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 2, 1]);
+    // written back with its numbers; a region without them is written as before
+    let back = write_json(&x);
+    assert!(back.contains(r#"{"id": 7, "dim": 2, "betti": [1, 2, 1]}"#), "{back}");
+    assert_eq!(read_json(&back).unwrap(), x);
+    assert!(!write_json(&floor_plan()).contains("betti"));
+    // refusals: numbers no region has, and a malformed field, each with the region or path
+    let e = read_json(r#"{"regions": [{"id": 7, "dim": 2, "betti": [1, 1, 1]}], "incidence": []}"#).unwrap_err();
+    assert!(matches!(e, JsonError::Arch(ArchError::RegionBetti { id: RegionId(7), .. })), "{e}");
+    let e = read_json(r#"{"regions": [{"id": 7, "dim": 2, "betti": "torus"}], "incidence": []}"#).unwrap_err();
+    assert_eq!(e.to_string(), r#"regions[0].betti: expected an array of non-negative integers, found "torus""#);
 }
 
 #[test]
@@ -330,4 +468,64 @@ fn algorithm_8_16_refuses_when_ids_run_out() {
     let y = ArchComplex::try_from_ids(1, &[(u64::MAX - 1, 1)], &[]).unwrap();
     let t = y.topological(ZeroWeightRule::Closed).unwrap();
     assert!(t.complex.index_of(RegionId(u64::MAX)).is_some());
+}
+
+/// AC Example 8.13 (n = 1): `-1 - X^2 = -X_0 - Y_0` removes the vertex of a circle's
+/// cw-complex; the Betti numbers change from (1, 1) to (0, 1), the topological ones stay
+/// (1, 1), which Algorithm 8.16 recovers.
+#[test]
+fn example_8_13_removing_the_vertex_of_a_circle() {
+    let circle = ArchComplex::try_from_ids(1, &[(1, 0), (2, 1)], &[(2, 1, 0)]).unwrap();
+    let line = ArchComplex::try_from_ids(1, &[(2, 1)], &[]).unwrap();
+    assert_eq!(betti(&circle), vec![1, 1]);
+    assert_eq!(betti(&line), vec![0, 1]);
+    let op = EpVector::try_new(vec![-1, 0], vec![-1, 0]).unwrap();
+    assert!(op.is_operator());
+    assert_eq!(gmap_homology::ep::EpPolynomial::to_poly(&op).coeffs(), &[-1, 0, -1]);
+    let conf = |x: &ArchComplex| {
+        let c: Vec<i64> = x.region_counts().iter().map(|&c| c as i64).collect();
+        EpVector::try_new(c, betti(x).iter().map(|&b| b as i64).collect()).unwrap()
+    };
+    assert_eq!(conf(&circle).try_add(&op).unwrap(), conf(&line));
+    for x in [&circle, &line] {
+        assert_eq!(betti(&x.topological(ZeroWeightRule::Closed).unwrap().complex), vec![1, 1]);
+    }
+    // Remark 8.2: a 1-region is a loop or a segment, nothing else
+    assert!(ArchComplex::check_region_betti(1, &[1, 1]).is_ok());
+    assert!(ArchComplex::check_region_betti(1, &[1, 0]).is_ok());
+    assert!(ArchComplex::check_region_betti(1, &[1, 2]).is_err());
+}
+
+/// AC Remark 8.20: `X_{i-1} - Y_i = X^{i-1} (1 - X^{n+2})` is an Euler–Poincaré operator.
+#[test]
+fn remark_8_20_the_seam_operator() {
+    use gmap_homology::ep::{EpPolynomial, Poly};
+    for n in 2..=4 {
+        for i in 2..=n {
+            let v = EpVector::x_unit(n, i - 1).try_add_scaled(-1, &EpVector::y_unit(n, i)).unwrap();
+            assert!(v.is_operator(), "n = {n}, i = {i}");
+            let mut one_minus = vec![0i64; n + 3];
+            one_minus[0] = 1;
+            one_minus[n + 2] = -1;
+            let want = Poly::monomial(i - 1).try_mul(&Poly::new(one_minus)).unwrap();
+            assert_eq!(v.to_poly(), want, "n = {n}, i = {i}");
+        }
+    }
+}
+
+/// AC Lemma 8.14: on the complex of a cw-complex (here the cells of a G-map, AC Remark 3.3)
+/// the homology is the topological one: Algorithm 8.16 has nothing to do.
+#[test]
+fn lemma_8_14_cw_complexes_are_left_alone() {
+    for (m, want) in [
+        (examples::torus(), vec![1, 2, 1]),
+        (examples::cylinder(), vec![1, 1, 0]),
+        (examples::klein_bottle(), vec![1, 1, 0]),
+    ] {
+        let x = ArchComplex::from_map(&m).unwrap();
+        let t = x.topological(ZeroWeightRule::Closed).unwrap();
+        assert!(t.operators.is_empty());
+        assert_eq!(t.complex, x);
+        assert_eq!(betti(&x), want);
+    }
 }

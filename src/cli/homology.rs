@@ -433,6 +433,7 @@ pub fn demo_agreement(m: &DenseMap) -> String {
     match cellular_complex(m) {
         Err(gmap_homology::PreconditionError::C1(_)) => "n/a (C1)".to_string(),
         Err(gmap_homology::PreconditionError::C2 { .. }) => "n/a (C2)".to_string(),
+        Err(gmap_homology::PreconditionError::SelfBending(_)) => "n/a (self-bending)".to_string(),
         Ok(c) => match (homology_z(&c.chain), s) {
             (Ok(a), Ok(b)) if a == b => "yes".to_string(),
             _ => "NO".to_string(),

@@ -57,7 +57,7 @@ impl Progress {
 }
 
 /// Computes the characteristics of a valid map. O(N n) for the counts and orientation,
-/// O(N n log N) for the self-bending test of BO Def. 6.
+/// O(N n^2) for the self-bending test of BO Def. 6 (a few partitions, no sort).
 pub fn map_info(map: &DenseMap) -> MapInfo {
     let (cells, components) = map.cell_counts_and_components();
     let euler_characteristic =

@@ -9,11 +9,15 @@
 //!   itself for `i <= 2` (two ends; a polygon); for `i = 3` the compacted cell is a closed
 //!   orientable connected surface, a sphere exactly when its Euler characteristic is 2; for
 //!   `i >= 4` the homology of the compacted cell is computed by the simplicial method.
+//! * **No self-bending** (BO Def. 6, part 2): no cell is folded onto itself. C1 catches the
+//!   folds that reverse a cell's orientation; a fold that keeps it (a square face of a
+//!   volume sewn to itself by a half-turn) passes C1 and C2 and is refused by
+//!   [`check_self_bending`], run once C1 and C2 hold.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use bitvec::vec::BitVec;
-use gmap_core::{parallel, AlphaSet, CellDefect, CompactedCells, Dart, DenseMap, Partition};
+use gmap_core::{parallel, AlphaSet, BoundaryDefect, CellDefect, CompactedCells, Dart, DenseMap, Partition};
 use thiserror::Error;
 
 use crate::cellular::simplicial::simplicial_complex;
@@ -37,6 +41,10 @@ pub enum PreconditionError {
         /// or `no computable homology (…)`
         found: String,
     },
+    /// A cell is folded onto itself (BO Def. 6, part 2: no self-bending); the defect names
+    /// the cell, its dimension and the two darts where its orbits meet.
+    #[error(transparent)]
+    SelfBending(BoundaryDefect),
 }
 
 /// The i-cells of a map, oriented as compacted cells (condition C1).
@@ -198,7 +206,14 @@ fn is_sphere(h: &Homology, m: usize) -> bool {
         && h.betti.iter().enumerate().all(|(k, &b)| b == usize::from(k == 0 || k == m) + usize::from(m == 0 && k == 0))
 }
 
-/// Checks C1 and C2 for every dimension, returning the oriented cells of each dimension.
+/// Checks that no cell is folded onto itself (BO Def. 6, part 2), through
+/// [`DenseMap::check_no_self_bending`]. O(N n^2).
+pub fn check_self_bending(map: &DenseMap) -> Result<(), PreconditionError> {
+    map.check_no_self_bending().map_err(PreconditionError::SelfBending)
+}
+
+/// Checks C1 and C2 for every dimension, then that no cell is folded onto itself
+/// ([`check_self_bending`]), returning the oriented cells of each dimension.
 ///
 /// 3-maps go through [`DenseMap::oriented_cells_3d`] (rings inside volumes glued by
 /// `alpha_3`, C2 from the Euler characteristic of each volume); when that finds a cell of
@@ -216,13 +231,14 @@ pub fn check_preconditions(map: &DenseMap) -> Result<Vec<OrientedCells>, Precond
             .map(|(dim, (cells, positive))| OrientedCells { dim, cells, positive })
             .collect();
         check_chi(&all.euler, &cells[3])?;
+        check_self_bending(map)?;
         return Ok(cells);
     }
     check_by_dimension(map)
 }
 
 /// [`check_preconditions`] by one traversal per dimension ([`oriented_cells`] and
-/// [`check_c2`]), the reference for the ring walks of 3-maps.
+/// [`check_c2`]), then [`check_self_bending`]: the reference for the ring walks of 3-maps.
 ///
 /// The dimensions are checked as separate tasks on the threads `gmap_core::parallel` allows
 /// (maps of at least 65,536 darts); the error reported is the same as in order: the lowest
@@ -251,6 +267,7 @@ pub fn check_by_dimension(map: &DenseMap) -> Result<Vec<OrientedCells>, Precondi
     for r in results {
         out.push(r.expect("a dimension is skipped only above a failed one, reported before it")?);
     }
+    check_self_bending(map)?;
     Ok(out)
 }
 

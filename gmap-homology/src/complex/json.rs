@@ -13,7 +13,10 @@
 //! decrease, a non-zero weight across a gap, duplicate ids or entries and `δ² ≠ 0` are each
 //! a distinct [`JsonError::Arch`] error naming the regions; an object with the same key
 //! twice is [`JsonError::DuplicateKey`]. `"dimension"` may be omitted
-//! (then the largest region dimension, 0 for no region).
+//! (then the largest region dimension, 0 for no region). A region may carry its own
+//! topology, `"betti": [1, 2, 1]` (a torus 2-region; AC Def. 8.1), checked by
+//! [`ArchComplex::with_region_betti`] and used by Algorithm 8.16; without it a region is a
+//! cell (see [`ArchComplex::region_betti`]).
 //!
 //! ```
 //! use gmap_homology::json::{read_json, write_json};
@@ -120,6 +123,25 @@ fn check_dim(d: u64, path: impl FnOnce() -> String) -> Result<usize, JsonError> 
 struct RawRegion {
     id: u64,
     dim: u64,
+    /// the region's own Betti numbers (AC Def. 8.1), when it is not a cell
+    #[serde(default)]
+    betti: Option<Vec<u64>>,
+}
+
+/// The optional `"betti"` of region `index`, as counts.
+fn betti_counts(v: &[u64], index: usize) -> Result<Vec<usize>, JsonError> {
+    v.iter()
+        .map(|&b| usize::try_from(b).ok())
+        .collect::<Option<Vec<usize>>>()
+        .ok_or_else(|| schema(At { list: "regions", index }.path("betti"), "a Betti number is too large"))
+}
+
+/// The complex with the Betti numbers given to its regions (`(region id, numbers)`).
+fn with_betti(mut x: ArchComplex, betti: Vec<(RegionId, Vec<usize>)>) -> Result<ArchComplex, JsonError> {
+    for (id, b) in betti {
+        x = x.with_region_betti(id, b)?;
+    }
+    Ok(x)
 }
 
 #[derive(Deserialize)]
@@ -149,16 +171,20 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
         Err(_) => return read_json_slow(text),
     };
     let mut regions = Vec::with_capacity(raw.regions.len());
+    let mut betti = Vec::new();
     for (index, r) in raw.regions.iter().enumerate() {
         let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
         regions.push(Region { id: RegionId(r.id), dim });
+        if let Some(b) = &r.betti {
+            betti.push((RegionId(r.id), betti_counts(b, index)?));
+        }
     }
     let dim = match raw.dimension {
         Some(d) => check_dim(d, || "dimension".to_string())?,
         None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
     };
     let entries = raw.incidence.iter().map(|e| (RegionId(e.from), RegionId(e.to), e.weight)).collect();
-    Ok(ArchComplex::try_new(dim, regions, entries)?)
+    with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)
 }
 
 /// The tree-based reader, for its precise messages on malformed input.
@@ -174,11 +200,19 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
     let regs = obj.get("regions").ok_or_else(|| schema("regions", "missing"))?;
     let regs = regs.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
     let mut regions = Vec::with_capacity(regs.len());
+    let mut betti = Vec::new();
     for (index, r) in regs.iter().enumerate() {
         let at = At { list: "regions", index };
         let id = get_u64(r, at, "id")?;
         let dim = check_dim(get_u64(r, at, "dim")?, || at.path("dim"))?;
         regions.push(Region { id: RegionId(id), dim });
+        if let Some(v) = r.get("betti") {
+            let list =
+                v.as_array().and_then(|a| a.iter().map(Value::as_u64).collect::<Option<Vec<u64>>>()).ok_or_else(
+                    || schema(at.path("betti"), format!("expected an array of non-negative integers, found {v}")),
+                )?;
+            betti.push((RegionId(id), betti_counts(&list, index)?));
+        }
     }
     let dim = match obj.get("dimension") {
         Some(v) => {
@@ -195,7 +229,7 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
         let at = At { list: "incidence", index };
         entries.push((RegionId(get_u64(e, at, "from")?), RegionId(get_u64(e, at, "to")?), get_i64(e, at, "weight")?));
     }
-    Ok(ArchComplex::try_new(dim, regions, entries)?)
+    with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)
 }
 
 /// Reads and validates a `.json` file; errors name the file (and the line for syntax).
@@ -221,13 +255,19 @@ pub struct JsonFileError {
     pub error: JsonError,
 }
 
-/// Writes the complex in the `.json` format, one region or entry per line.
+/// Writes the complex in the `.json` format, one region or entry per line; a region given
+/// Betti numbers keeps them (`"betti"`).
 pub fn write_json(x: &ArchComplex) -> String {
     let mut s = String::with_capacity(32 * (x.regions().len() + x.entries().len()) + 64);
     let _ = write!(s, "{{\"dimension\": {},\n \"regions\": [", x.dim());
     for (k, r) in x.regions().iter().enumerate() {
         let sep = if k == 0 { "" } else { ",\n  " };
-        let _ = write!(s, "{sep}{{\"id\": {}, \"dim\": {}}}", r.id, r.dim);
+        let _ = write!(s, "{sep}{{\"id\": {}, \"dim\": {}", r.id, r.dim);
+        if x.has_region_betti(k) {
+            let b: Vec<String> = x.region_betti(k).iter().map(|b| b.to_string()).collect();
+            let _ = write!(s, ", \"betti\": [{}]", b.join(", "));
+        }
+        s.push('}');
     }
     s.push_str("],\n \"incidence\": [");
     for (k, (f, t, w)) in x.entry_ids().into_iter().enumerate() {

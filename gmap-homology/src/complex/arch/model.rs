@@ -137,6 +137,41 @@ pub enum ArchError {
         /// the upper region
         from: RegionId,
     },
+    /// Betti numbers given to a region that no topological region of its dimension has
+    /// (AC Def. 8.1: connected, orientable, bounded by closed orientable manifolds).
+    #[error(
+        "region {id} of dimension {dim} cannot have the Betti numbers ({}): {reason} (AC Def. 8.1)",
+        join_counts(betti)
+    )]
+    RegionBetti {
+        /// the region
+        id: RegionId,
+        /// its dimension
+        dim: usize,
+        /// the Betti numbers given
+        betti: Vec<usize>,
+        /// what rules them out
+        reason: &'static str,
+    },
+    /// Algorithm 8.16 cannot cellulate a region from what the complex and its Betti numbers
+    /// tell: the topological Betti numbers would be guessed, so none are given.
+    #[error("region {id} ({dim}-region with Betti numbers ({}) and {boundary} boundary component(s)): {reason}; Algorithm 8.16 cannot cellulate it (AC Def. 8.1, Theorem 8.11)", join_counts(betti))]
+    RegionTopologyUnknown {
+        /// the region
+        id: RegionId,
+        /// its dimension
+        dim: usize,
+        /// its Betti numbers (given, or the default)
+        betti: Vec<usize>,
+        /// the components of its boundary in the complex (of `Γ_b`; 0 for no entry)
+        boundary: usize,
+        /// why
+        reason: &'static str,
+    },
+}
+
+fn join_counts(v: &[usize]) -> String {
+    v.iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", ")
 }
 
 fn join(ids: &[RegionId]) -> String {
@@ -160,6 +195,9 @@ pub struct ArchComplex {
     pub(super) rank_in_dim: Vec<u32>,
     /// region indices per dimension
     pub(super) per_dim: Vec<Vec<u32>>,
+    /// the Betti numbers given to each region (`None`: the default, see
+    /// [`ArchComplex::region_betti`])
+    pub(super) betti: Vec<Option<Vec<usize>>>,
 }
 
 impl ArchComplex {
@@ -230,7 +268,110 @@ impl ArchComplex {
             rank_in_dim[k] = per_dim[r.dim].len() as u32;
             per_dim[r.dim].push(k as u32);
         }
-        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim }
+        let betti = vec![None; nr];
+        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim, betti }
+    }
+
+    /// The complex with region `id` given its own topology: the Betti numbers
+    /// `(b_0, …, b_dim)` of the region as a compact manifold with boundary (AC Def. 8.1), for
+    /// Algorithm 8.16 ([`ArchComplex::topological`]). A torus 2-region is `[1, 2, 1]`, an
+    /// annulus `[1, 1, 0]`, a solid torus `[1, 1, 0, 0]`. Fails with
+    /// [`ArchError::UnknownRegion`] (naming `id` as both ends) for an unknown id and with
+    /// [`ArchError::RegionBetti`] where [`ArchComplex::check_region_betti`] does. O(dim).
+    ///
+    /// ```
+    /// use gmap_homology::arch::{ArchComplex, RegionId, ZeroWeightRule};
+    /// // a torus region, alone: by default a sphere, (1, 0, 1); as a torus, (1, 2, 1)
+    /// let x = ArchComplex::try_from_ids(2, &[(7, 2)], &[]).unwrap();
+    /// assert_eq!(x.region_betti(0), vec![1, 0, 1]);
+    /// let t = x.with_region_betti(RegionId(7), vec![1, 2, 1]).unwrap();
+    /// let cw = t.topological(ZeroWeightRule::Closed).unwrap().complex;
+    /// assert_eq!(cw.homology_z().unwrap().betti, vec![1, 2, 1]);
+    /// ```
+    pub fn with_region_betti(mut self, id: RegionId, betti: Vec<usize>) -> Result<Self, ArchError> {
+        let r = self.index_of(id).ok_or(ArchError::UnknownRegion { from: id, to: id, missing: id })?;
+        let dim = self.regions[r].dim;
+        Self::check_region_betti(dim, &betti).map_err(|reason| ArchError::RegionBetti {
+            id,
+            dim,
+            betti: betti.clone(),
+            reason,
+        })?;
+        self.betti[r] = Some(betti);
+        Ok(self)
+    }
+
+    /// Whether `betti` can be the Betti numbers of a topological region of dimension `dim`
+    /// (AC Def. 8.1), as far as Betti numbers tell: one number per dimension `0..=dim`,
+    /// `b_0 = 1` (connected), `b_dim` 0 (a boundary) or 1 (closed), a closed region's
+    /// numbers symmetric (Poincaré duality) with an even middle number in dimensions
+    /// `4k + 2` (a closed surface has `b_1 = 2g`), a 1-region a segment `[1, 0]` or a loop
+    /// `[1, 1]`, a point `[1]`. Returns the reason otherwise. O(dim).
+    pub fn check_region_betti(dim: usize, betti: &[usize]) -> Result<(), &'static str> {
+        if betti.len() != dim + 1 {
+            return Err("one Betti number per dimension 0..=dim is needed");
+        }
+        if betti[0] != 1 {
+            return Err("a region is connected: b_0 = 1");
+        }
+        if dim == 0 {
+            return Ok(());
+        }
+        match betti[dim] {
+            0 => {}
+            1 => {
+                if (0..=dim).any(|k| betti[k] != betti[dim - k]) {
+                    return Err("a closed orientable manifold has symmetric Betti numbers (Poincaré duality)");
+                }
+                if dim % 4 == 2 && betti[dim / 2] % 2 == 1 {
+                    return Err("a closed orientable manifold of dimension 4k + 2 has an even middle Betti number (a closed surface: b_1 = 2g)");
+                }
+            }
+            _ => return Err("a connected region has b_dim = 1 when closed, 0 otherwise"),
+        }
+        Ok(())
+    }
+
+    /// The Betti numbers of region `index`: those given by
+    /// [`ArchComplex::with_region_betti`], or the default. The default is the region of the
+    /// cw case, an open cell glued along its recorded boundary: with `r >= 1` boundary
+    /// components (the components of `Γ_b`, as AC Example 8.22 counts them) the sphere with
+    /// `r` holes, `(1, 0, …, 0, r - 1, 0)`, a ball for `r = 1`; with no entry, a closed
+    /// region, the sphere `(1, 0, …, 0, 1)` (a loop for dimension 1), as
+    /// [`super::ZeroWeightRule::Closed`] reads it. O(size of the closure of the region).
+    pub fn region_betti(&self, index: usize) -> Vec<usize> {
+        if let Some(b) = &self.betti[index] {
+            return b.clone();
+        }
+        let dim = self.regions[index].dim;
+        let mut b = vec![0usize; dim + 1];
+        b[0] = 1;
+        if dim == 0 {
+            return b;
+        }
+        let r = self.boundary_component_count(index);
+        if r == 0 {
+            b[dim] += 1;
+        } else {
+            b[dim - 1] += r - 1;
+        }
+        b
+    }
+
+    /// Whether region `index` was given Betti numbers ([`ArchComplex::with_region_betti`]).
+    pub fn has_region_betti(&self, index: usize) -> bool {
+        self.betti[index].is_some()
+    }
+
+    /// The number of components of the boundary of region `index` as the complex records
+    /// it: 0 without entries, else the components of `Γ_b` (the closure of the region
+    /// without the region). O(size of the closure).
+    pub fn boundary_component_count(&self, index: usize) -> usize {
+        if self.down(index).is_empty() {
+            0
+        } else {
+            self.components_of(&self.boundary_regions(index)).len()
+        }
     }
 
     fn check_acyclic(&self) -> Result<(), ArchError> {
@@ -449,7 +590,8 @@ impl ArchComplex {
 
     /// The transposed complex of dimension n: region of dimension k becomes dimension
     /// `n - k`, every entry reversed. This is the incidence graph of the dual G-map (TM §IV,
-    /// Poincaré duality) up to signs; Def. 3.1 may fail for it, hence the `Result`.
+    /// Poincaré duality) up to signs; Def. 3.1 may fail for it, hence the `Result`. Betti
+    /// numbers given to regions are not carried over (a dual region is another space).
     pub fn transpose(&self) -> Result<ArchComplex, ArchError> {
         let regions = self.regions.iter().map(|r| Region { id: r.id, dim: self.dim - r.dim }).collect();
         let entries = self.entry_ids().into_iter().map(|(f, t, w)| (t, f, w)).collect();
