@@ -442,8 +442,12 @@ pub(crate) fn oriented_by<'a>(
 fn oriented_scan<const W: usize>(rows: &[[u32; W]], i: usize) -> Option<(Vec<u32>, Vec<Dart>, Vec<usize>)> {
     let n = rows.len();
     let mut uf = ParityUnionFind::new(n);
+    let mut sets = uf.view();
     for (d, row) in rows.iter().enumerate() {
         let d32 = d as u32;
+        // the root of d and d's parity to it, found at d's first link to a later dart and
+        // kept up to date as classes merge
+        let mut root: Option<(u32, bool)> = None;
         for (k, &e) in row.iter().enumerate() {
             if k == i {
                 continue;
@@ -452,9 +456,21 @@ fn oriented_scan<const W: usize>(rows: &[[u32; W]], i: usize) -> Option<(Vec<u32
                 if k < i {
                     return None;
                 }
-            } else if e > d32 && !uf.join(d32, e, k < i) {
-                return None;
+                continue;
             }
+            if e < d32 {
+                continue;
+            }
+            let (a, fa) = *root.get_or_insert_with(|| sets.find(d32));
+            let (b, fb) = sets.find(e);
+            let flip = k < i;
+            if a == b {
+                if fa ^ fb != flip {
+                    return None;
+                }
+                continue;
+            }
+            root = Some(sets.link_roots(a, b, fa ^ fb ^ flip, fa));
         }
     }
     let bits = usize::BITS as usize;

@@ -111,15 +111,22 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
     let n = map.dim();
     let w = n + 1;
     let a = map.flat();
-    // B_i: for i = n every dart is its own element; below, the <alpha_{i+1..n}>-orbits
-    let part = (i < n).then(|| map.partition(AlphaSet::above(i, n)));
-    let elem = |d: u32| part.as_ref().map_or(d, |p| p.of[d as usize]);
+    // B_i, the <alpha_{i+1..n}>-orbits: for i = n every dart is its own element, for
+    // i = n - 1 an alpha_n-pair named by its smaller dart; below, a partition
+    let part = (i + 1 < n).then(|| map.partition(AlphaSet::above(i, n)));
+    let elem = |d: u32| match &part {
+        Some(p) => p.of[d as usize],
+        None if i == n => d,
+        None => d.min(a[d as usize * w + n]),
+    };
     let rep = |e: u32| part.as_ref().map_or(e, |p| p.reps[e as usize].0);
     let size = part.as_ref().map_or(map.dart_count(), Partition::len);
     let mut local = vec![u32::MAX; size];
     let mut order: Vec<u32> = Vec::new();
     let mut code: Vec<u32> = Vec::new();
     let mut spheres: FxHashSet<Vec<u32>> = FxHashSet::default();
+    // the last class found a sphere: neighbouring cells are often of the same class
+    let mut last: Vec<u32> = Vec::new();
     for &Dart(r) in &cells.cells.reps {
         let start = elem(r);
         order.clear();
@@ -142,7 +149,11 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
         for &e in &order {
             local[e as usize] = u32::MAX;
         }
+        if code == last {
+            continue;
+        }
         if spheres.contains(&code) {
+            std::mem::swap(&mut last, &mut code);
             continue;
         }
         let fail = |found: String| PreconditionError::C2 { dim: i, dart: Dart(r), found };
@@ -160,7 +171,8 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
                 return Err(fail(format!("homology {h}")));
             }
         }
-        spheres.insert(std::mem::take(&mut code));
+        spheres.insert(code.clone());
+        std::mem::swap(&mut last, &mut code);
     }
     Ok(())
 }
