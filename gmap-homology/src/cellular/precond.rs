@@ -78,7 +78,7 @@ pub fn oriented_cells(map: &DenseMap, i: usize) -> Result<OrientedCells, CellDef
 
 /// Checks C2 for the i-cells of `map` (C1 assumed, as checked by [`oriented_cells`]).
 /// O(N) for a 3-map; in higher dimensions, one walk of `B_i` plus the homology of one
-/// compacted cell per isomorphism class (see [`c2_by_classes`]).
+/// compacted cell per isomorphism class (walked breadth-first from its smallest dart).
 pub fn check_c2(map: &DenseMap, cells: &OrientedCells) -> Result<(), PreconditionError> {
     let i = cells.dim;
     let n = map.dim();
