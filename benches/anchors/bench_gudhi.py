@@ -3,7 +3,7 @@
 #   bench_gudhi.py FILE.facets...
 # For each file, one JSON line on stdout: {"file": F, "ms": T, "betti": [...]} with T the
 # wall time in ms of GUDHI's SimplexTree built from the file's facets plus its Z/2
-# persistence (file parsing excluded, as in cmp_gudhi_facets.py), or {"file": F, "error": E}.
+# persistence (file parsing excluded, as in compare_gudhi.py), or {"file": F, "error": E}.
 import json, re, sys, time
 
 import gudhi

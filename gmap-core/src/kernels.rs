@@ -191,6 +191,29 @@ fn uf_scan<const W: usize>(rows: &[[u32; W]], mask: u32, uf: &mut UnionFind, mut
     roots
 }
 
+/// The `<mask>`-orbits by one union-find scan of the rows ([`uf_scan`]): each dart's orbit
+/// number, orbits numbered in order of smallest dart, and those smallest darts; `None` for
+/// the widths without a specialised path (the caller traverses). O(N |mask| α(N)).
+pub(crate) fn partition(a: &[u32], w: usize, mask: u32) -> Option<(Vec<u32>, Vec<Dart>)> {
+    with_width!(
+        a,
+        w,
+        |rows| {
+            let mut uf = UnionFind::new(rows.len());
+            uf_scan(rows, mask, &mut uf, rows.len());
+            let (of, k) = uf.labels();
+            let mut reps = Vec::with_capacity(k);
+            for (d, &c) in of.iter().enumerate() {
+                if c as usize == reps.len() {
+                    reps.push(Dart(d as u32));
+                }
+            }
+            Some((of, reps))
+        },
+        None
+    )
+}
+
 /// Number of orbits of the involution set `mask` (bits of indices `< w`).
 pub(crate) fn count_orbits(a: &[u32], w: usize, mask: u32) -> usize {
     with_width!(a, w, |rows| count_rows_uf(rows, mask), count_dyn(Dyn { a, w }, mask))
@@ -406,11 +429,74 @@ pub(crate) fn oriented_by<'a>(
     Ok((of, reps, pos))
 }
 
-/// [`oriented_by`] on the rows of the flat involution array, specialised by width.
+/// The i-cells oriented as compacted cells, as [`oriented_by`] gives them, by a union-find
+/// with parities over one sequential scan of the rows: every link `d -> alpha_k(d)`,
+/// `k != i`, to a later dart demands opposite colours for `k < i` and equal ones for
+/// `k > i`. The smaller root wins a merge, so the root of a class is its smallest dart;
+/// a second scan numbers the cells at their roots (in order of smallest dart) and colours
+/// each dart by its parity to the root (the root positive). Unlike a traversal, which
+/// follows every link of a dart wherever it leads, the scan reads the rows in order and
+/// most links (those inside one n-cell, stored together by the builders and importers)
+/// stay close by. `None` on a defect (a dart free for some `k < i`, a colouring
+/// conflict): the traversal then names it. O(N n α(N)).
+fn oriented_scan<const W: usize>(rows: &[[u32; W]], i: usize) -> Option<(Vec<u32>, Vec<Dart>, Vec<usize>)> {
+    let n = rows.len();
+    let mut uf = ParityUnionFind::new(n);
+    let mut sets = uf.view();
+    for (d, row) in rows.iter().enumerate() {
+        let d32 = d as u32;
+        // the root of d and d's parity to it, found at d's first link to a later dart and
+        // kept up to date as classes merge
+        let mut root: Option<(u32, bool)> = None;
+        for (k, &e) in row.iter().enumerate() {
+            if k == i {
+                continue;
+            }
+            if e == d32 {
+                if k < i {
+                    return None;
+                }
+                continue;
+            }
+            if e < d32 {
+                continue;
+            }
+            let (a, fa) = *root.get_or_insert_with(|| sets.find(d32));
+            let (b, fb) = sets.find(e);
+            let flip = k < i;
+            if a == b {
+                if fa ^ fb != flip {
+                    return None;
+                }
+                continue;
+            }
+            root = Some(sets.link_roots(a, b, fa ^ fb ^ flip, fa));
+        }
+    }
+    let bits = usize::BITS as usize;
+    let mut pos = vec![0usize; n.div_ceil(bits)];
+    let mut of = vec![0u32; n];
+    let mut reps: Vec<Dart> = Vec::new();
+    for d in 0..n {
+        let (root, flip) = uf.find(d as u32);
+        if root as usize == d {
+            of[d] = reps.len() as u32;
+            reps.push(Dart(root));
+        } else {
+            of[d] = of[root as usize];
+        }
+        pos[d / bits] |= usize::from(!flip) << (d % bits);
+    }
+    Some((of, reps, pos))
+}
+
+/// [`oriented_by`] on the rows of the flat involution array, specialised by width: the
+/// sequential scan of [`oriented_scan`] first, the traversal when it finds a defect (so the
+/// defect reported is the traversal's).
 #[allow(clippy::type_complexity)]
 pub(crate) fn oriented_cells(a: &[u32], w: usize, i: usize) -> Result<(Vec<u32>, Vec<Dart>, Vec<usize>), CellDefect> {
     let n = a.len() / w.max(1);
-    with_width!(a, w, |rows| oriented_by(n, |x| &rows[x][..], i), {
+    with_width!(a, w, |rows| oriented_scan(rows, i).map_or_else(|| oriented_by(n, |x| &rows[x][..], i), Ok), {
         let m = Dyn { a, w };
         oriented_by(n, |x| m.row(x), i)
     })

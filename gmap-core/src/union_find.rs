@@ -295,10 +295,21 @@ impl ParitySets<'_> {
         if a == b {
             return fa ^ fb == flip;
         }
+        self.link_roots(a, b, fa ^ fb ^ flip, false);
+        true
+    }
+
+    /// Merges the classes of the distinct roots `a` and `b`, whose parities must differ by
+    /// `flip`; the smaller root becomes the root. Returns the new root and the parity to it
+    /// of an item that had parity `f` to `a` (so a scan can keep its current item's root
+    /// without another [`find`](Self::find)).
+    #[inline]
+    pub fn link_roots(&mut self, a: u32, b: u32, flip: bool, f: bool) -> (u32, bool) {
+        debug_assert_ne!(a, b, "link_roots takes two distinct roots");
         let (lo, hi) = if a < b { (a, b) } else { (b, a) };
         self.parent[(hi - self.base) as usize] = lo;
-        self.flip[(hi - self.base) as usize] = fa ^ fb ^ flip;
-        true
+        self.flip[(hi - self.base) as usize] = flip;
+        (lo, if a == lo { f } else { f ^ flip })
     }
 }
 

@@ -28,7 +28,8 @@ pub struct CellularComplex {
 }
 
 /// Builds the border operator of `map` after checking C1 and C2 on every cell.
-/// O(N n^2) plus, for dimensions 4 and up, the C2 check of each compacted cell.
+/// O(N n^2) plus, for dimensions 4 and up, the homology of one compacted cell per
+/// isomorphism class (C2).
 ///
 /// ```
 /// use gmap_homology::{cellular_complex, homology_z};

@@ -15,7 +15,7 @@
 //! architectural complex of a map (`crate::complex::arch`) counts them by sign.
 
 use bitvec::vec::BitVec;
-use gmap_core::{AlphaSet, CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
+use gmap_core::{CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
 
 use crate::cellular::precond::{oriented_cells, OrientedCells};
 
@@ -89,18 +89,21 @@ impl Incidence {
 /// Summed per pair the terms are the signed incidence numbers, counted the unsigned ones;
 /// every adherent pair has a term (an i-cell meeting an (i-1)-cell meets each of its
 /// elements of `B_{i-1}`, since `alpha_0..alpha_{i-2}` carry these elements onto one
-/// another inside both cells). Both cells oriented as compacted cells (C1). O(N n).
+/// another inside both cells). Both cells oriented as compacted cells (C1). The elements
+/// of `B_i` are found inside each walked orbit, so no whole-map partition is needed.
+/// O(N n).
 pub fn incidence_terms(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let i = upper.dim;
     assert_eq!(lower.dim + 1, i, "incidences between consecutive dimensions");
     let n = map.dim();
     let w = n + 1;
     let a = map.flat();
+    // `seen`: darts of the orbit being walked; `met`: darts of the elements of B_i already
+    // counted in it. Both are cleared after each orbit, so every walk stays local.
     let mut seen: BitVec = BitVec::repeat(false, map.dart_count());
+    let mut met: BitVec = BitVec::repeat(false, map.dart_count());
     let mut orbit: Vec<u32> = Vec::new();
-    // B_i elements: a dart stands for its <alpha_{i+1..n}>-orbit
-    let b_rep: Option<Vec<u32>> = if i == n { None } else { Some(map.partition(AlphaSet::above(i, n)).of) };
-    let mut b_seen: Vec<bool> = if b_rep.is_some() { vec![false; map.dart_count()] } else { Vec::new() };
+    let mut element: Vec<u32> = Vec::new();
     let mut out = Vec::new();
     for (row, &Dart(d0)) in lower.cells.reps.iter().enumerate() {
         orbit.clear();
@@ -120,14 +123,28 @@ pub fn incidence_terms(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCe
         }
         let s = lower.sign(d0);
         for &x in &orbit {
-            seen.set(x as usize, false);
-            let first = match &b_rep {
-                None => true,
-                Some(of) => !std::mem::replace(&mut b_seen[of[x as usize] as usize], true),
-            };
-            if first {
-                out.push((row as u32, upper.cells.of[x as usize], upper.sign(x) * s));
+            if met[x as usize] {
+                continue;
             }
+            // x is the first dart of its element of B_i (a <alpha_{i+1..n}>-orbit, inside
+            // the walked one) in walk order: one term, then mark the element
+            out.push((row as u32, upper.cells.of[x as usize], upper.sign(x) * s));
+            element.clear();
+            element.push(x);
+            met.set(x as usize, true);
+            while let Some(z) = element.pop() {
+                for j in i + 1..w {
+                    let y = a[z as usize * w + j];
+                    if !met[y as usize] {
+                        met.set(y as usize, true);
+                        element.push(y);
+                    }
+                }
+            }
+        }
+        for &x in &orbit {
+            seen.set(x as usize, false);
+            met.set(x as usize, false);
         }
     }
     out

@@ -95,6 +95,9 @@ impl FaceComplex {
 
 /// Sorted, deduplicated k-faces of one dimension with a way to find a face's index.
 enum Faces {
+    /// faces of at most 64 bits packed: keys as in `Packed`, and `start[v]..start[v + 1]`
+    /// the range of the faces whose first vertex is `v` (a search looks only there)
+    Small { keys: Vec<u64>, bits: u32, start: Vec<u32> },
     /// packed keys, `bits` per vertex, first vertex in the high bits
     Packed { keys: Vec<u128>, bits: u32 },
     /// flat vertex lists (stride k + 1), sorted lexicographically
@@ -104,6 +107,7 @@ enum Faces {
 impl Faces {
     fn len(&self) -> usize {
         match self {
+            Faces::Small { keys, .. } => keys.len(),
             Faces::Packed { keys, .. } => keys.len(),
             Faces::Flat { flat, stride } => flat.len() / stride,
         }
@@ -111,6 +115,12 @@ impl Faces {
 
     fn find(&self, face: &[u32]) -> Option<usize> {
         match self {
+            Faces::Small { keys, bits, start } => {
+                let v = face[0] as usize;
+                let lo = start[v] as usize;
+                let range = &keys[lo..start[v + 1] as usize];
+                range.binary_search(&(pack(face, *bits) as u64)).ok().map(|k| lo + k)
+            }
             Faces::Packed { keys, bits } => keys.binary_search(&pack(face, *bits)).ok(),
             Faces::Flat { flat, stride } => {
                 let (mut lo, mut hi) = (0, flat.len() / stride);
@@ -131,18 +141,22 @@ impl Faces {
     fn to_flat(&self, stride: usize) -> Vec<u32> {
         match self {
             Faces::Flat { flat, .. } => flat.clone(),
-            Faces::Packed { keys, bits } => {
-                let mask = (1u128 << bits) - 1;
-                let mut out = Vec::with_capacity(keys.len() * stride);
-                for &key in keys {
-                    for i in (0..stride).rev() {
-                        out.push(((key >> (bits * i as u32)) & mask) as u32);
-                    }
-                }
-                out
-            }
+            Faces::Small { keys, bits, .. } => unpack(keys.iter().map(|&k| u128::from(k)), *bits, stride),
+            Faces::Packed { keys, bits } => unpack(keys.iter().copied(), *bits, stride),
         }
     }
+}
+
+/// The vertex lists of packed keys of `stride` vertices, `bits` each.
+fn unpack(keys: impl ExactSizeIterator<Item = u128>, bits: u32, stride: usize) -> Vec<u32> {
+    let mask = (1u128 << bits) - 1;
+    let mut out = Vec::with_capacity(keys.len() * stride);
+    for key in keys {
+        for i in (0..stride).rev() {
+            out.push(((key >> (bits * i as u32)) & mask) as u32);
+        }
+    }
+    out
 }
 
 fn pack(face: &[u32], bits: u32) -> u128 {
@@ -214,8 +228,24 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
     let mut faces: Vec<Faces> = Vec::with_capacity(top);
     let mut buf = Vec::new();
     for size in 1..=top {
-        let packed = bits as usize * size <= 128;
-        let f = if packed {
+        let f = if bits as usize * size <= 64 {
+            let mut keys: Vec<u64> = Vec::new();
+            for g in &local {
+                subsets(g, size, &mut buf, &mut |s| keys.push(pack(s, bits) as u64));
+            }
+            keys.sort_unstable();
+            keys.dedup();
+            // the first vertex is the top `bits` of the key's `bits * size`
+            let shift = bits * (size as u32 - 1);
+            let mut start = vec![0u32; vertices.len() + 1];
+            for &key in &keys {
+                start[(key >> shift) as usize + 1] += 1;
+            }
+            for v in 0..vertices.len() {
+                start[v + 1] += start[v];
+            }
+            Faces::Small { keys, bits, start }
+        } else if bits as usize * size <= 128 {
             let mut keys = Vec::new();
             for g in &local {
                 subsets(g, size, &mut buf, &mut |s| keys.push(pack(s, bits)));
