@@ -131,6 +131,18 @@ pub enum LarError {
         /// vertices of the complex
         vertices: usize,
     },
+    /// Two p-cells have the same vertex set, so the count rule cannot tell them apart
+    /// (a G-map whose cells are not determined by their vertices, e.g. two edges glued at
+    /// both ends only).
+    #[error("{dim}-cells {first} and {second} have the same vertices")]
+    SameVertices {
+        /// dimension of the cells
+        dim: usize,
+        /// the first cell
+        first: usize,
+        /// the second cell, with the same vertex set
+        second: usize,
+    },
     /// The signed matrices fail to form a chain complex (kept for completeness: the
     /// conventional orientation always gives `∂∂ = 0`).
     #[error("the signed boundaries are not a chain complex: {0}")]

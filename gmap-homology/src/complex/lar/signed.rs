@@ -26,10 +26,11 @@ impl Lar {
     /// `[∂_1], …, [∂_n]` with the first-facet convention (module docs). Rows of `∂_p` are
     /// (p-1)-cells, columns p-cells; every entry is `±1`.
     ///
-    /// Precondition ([`Lar::is_orientable`]): every edge has two vertices, and the facets of
+    /// Precondition ([`Lar::is_orientable`]): every edge has two vertices, no two p-cells
+    /// have the same vertex set ([`Lar::check_distinct`]), and the facets of
     /// every p-cell (`p >= 2`) form one connected closed orientable (p-1)-cycle: each
     /// (p-2)-cell of its boundary lies on exactly two of its facets. Errors name the cell:
-    /// [`LarError::EdgeVertices`], [`LarError::NoFacet`], [`LarError::OpenBoundary`],
+    /// [`LarError::EdgeVertices`], [`LarError::SameVertices`], [`LarError::NoFacet`], [`LarError::OpenBoundary`],
     /// [`LarError::DisconnectedBoundary`], [`LarError::NonOrientable`].
     /// O(Σ_p (cost of the count rule + nnz(∂_p) · facet size · log)).
     ///
@@ -51,8 +52,14 @@ impl Lar {
         for p in 1..=self.dim() {
             let d = match out.last() {
                 None => self.signed_edges()?,
-                Some(lower) => orient_cells(p, &self.unsigned_boundary(p)?, lower)?,
+                Some(lower) => {
+                    self.check_distinct(p)?;
+                    orient_cells(p, &self.unsigned_boundary(p)?, lower)?
+                }
             };
+            if p == 1 {
+                self.check_distinct(1)?;
+            }
             out.push(d);
         }
         Ok(out)
@@ -148,6 +155,22 @@ impl Lar {
             return Err(LarError::PointCount { points, vertices: self.vertices });
         }
         Ok(())
+    }
+
+    /// Whether the p-cells have pairwise distinct vertex sets: the condition for the count
+    /// rule to see a complex faithfully ([`LarError::SameVertices`] names two cells that
+    /// share theirs). O(nnz(M_p) log).
+    pub fn check_distinct(&self, p: usize) -> Result<(), LarError> {
+        if p == 0 || p > self.dim() {
+            return Err(LarError::NoSuchDimension { p, n: self.dim() });
+        }
+        let t = self.cells[p - 1].transpose();
+        let mut sets: Vec<(&[u32], usize)> = (0..t.cols()).map(|j| (t.col(j).0, j)).collect();
+        sets.sort_unstable();
+        match sets.windows(2).find(|w| w[0].0 == w[1].0) {
+            Some(w) => Err(LarError::SameVertices { dim: p, first: w[0].1, second: w[1].1 }),
+            None => Ok(()),
+        }
     }
 
     /// `[∂_1]`: edge `{a, b}`, `a < b`, has `-1` at `a` and `+1` at `b`.
