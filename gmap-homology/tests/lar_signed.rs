@@ -52,6 +52,13 @@ fn the_nine_operators_entry_by_entry() {
     assert_eq!(op(LarOp::FE), vec![vec![2, 2, 1, 1, 2], vec![1, 1, 2, 2, 2]]);
     // FF = M_2 M_2^T: three vertices each, two in common
     assert_eq!(op(LarOp::FF), vec![vec![3, 2], vec![2, 3]]);
+    // the unsigned boundary by the count rule: M_{1,2} = M_1 M_2^T = EF, kept where it is 2
+    assert_eq!(l.incidence(2).unwrap().to_dense(), op(LarOp::EF));
+    assert_eq!(
+        l.unsigned_boundary(2).unwrap().to_dense(),
+        vec![vec![1, 0], vec![1, 0], vec![0, 1], vec![0, 1], vec![1, 1]]
+    );
+    assert_eq!(l.unsigned_boundary(1).unwrap(), l.operator(LarOp::VE).unwrap());
     // the relations behind Table 2
     let rel = |o| l.relation(o).unwrap().to_dense();
     assert_eq!(rel(LarOp::VV), vec![vec![0, 1, 1, 1], vec![1, 0, 1, 0], vec![1, 1, 0, 1], vec![1, 0, 1, 0]]);
@@ -377,7 +384,7 @@ proptest! {
 
     #[test]
     fn random_cubical_sets_agree_with_the_border_operator(bits in prop::collection::vec(0u8..2, 27)) {
-        prop_assume!(bits.iter().any(|&b| b == 1));
+        prop_assume!(bits.contains(&1));
         let m = CubicalSet::new(vec![0; 3], vec![3; 3], bits).unwrap().gmap(false).unwrap();
         // cubes meeting along an edge only keep two copies of that edge in the map, with
         // the same two vertices when a ring of cubes joins them: LAR must refuse those

@@ -187,6 +187,11 @@ impl Arrangement {
     }
 }
 
+/// The coefficient of half-edge `h` on its edge: `+1` along the edge's orientation.
+fn sign(h: u32) -> i64 {
+    1 - 2 * i64::from(h & 1)
+}
+
 /// `b - a`, widened.
 fn sub(a: [i32; 2], b: [i32; 2]) -> [i64; 2] {
     [i64::from(b[0]) - i64::from(a[0]), i64::from(b[1]) - i64::from(a[1])]
@@ -318,7 +323,7 @@ impl PlanarGraph {
 
     /// The 1-chain of a set of half-edges, sorted by edge.
     fn chain_of(&self, hs: impl IntoIterator<Item = u32>) -> Vec<(u32, i64)> {
-        let mut c: Vec<(u32, i64)> = hs.into_iter().map(|h| (h / 2, if h % 2 == 0 { 1 } else { -1 })).collect();
+        let mut c: Vec<(u32, i64)> = hs.into_iter().map(|h| (h / 2, sign(h))).collect();
         c.sort_unstable();
         c
     }
@@ -391,7 +396,7 @@ impl PlanarGraph {
         let mut k = h;
         loop {
             seen[k as usize] = true;
-            steps.push((k / 2, if k % 2 == 0 { 1 } else { -1 }));
+            steps.push((k / 2, sign(k)));
             let (a, b) = (self.points[self.tail(k) as usize], self.points[self.head(k) as usize]);
             vertices.push(self.tail(k));
             // each term is below 2^63 in absolute value and there are fewer than 2^33 of them

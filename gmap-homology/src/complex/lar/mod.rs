@@ -6,7 +6,17 @@
 //! * `M_{p-1} M_p^T` counts the common vertices of a (p-1)-cell and a p-cell; the *count
 //!   rule* keeps a 1 where the count equals the size of the (p-1)-cell: the unsigned
 //!   boundary `[∂_p]` ([`Lar::unsigned_boundary`]);
-//! * the nine incidence/adjacency operators `VV … FF` of a 2-complex ([`LarOp`]).
+//! * the nine incidence/adjacency operators `VV … FF` of a 2-complex ([`LarOp`],
+//!   [`Lar::operator`]) and the relations they stand for, whose sizes are LAR Table 2
+//!   ([`Lar::relation`], [`Lar::cardinality`]);
+//! * the signed boundary and coboundary with the conventional orientation
+//!   ([`Lar::signed_boundaries`], [`Lar::signed_coboundary`], [`Lar::chain_complex`]; the
+//!   top cells by the sign of their area or volume: [`Lar::signed_boundary_planar`],
+//!   [`Lar::signed_boundary_solid`]);
+//! * cycle extraction: the 2-cells of a planar arrangement from its edges
+//!   ([`PlanarGraph::extract`], the paper's stripes: [`PlanarGraph::stripes`]).
+//!
+//! The item-by-item map of the lecture to this code and its tests is `docs/LAR.md`.
 //!
 //! From a G-map ([`Lar::from_map`]) a cell's vertex set is the set of 0-cells of its darts.
 //! On maps without multi-incidence (every unsigned incidence number 0 or 1) the unsigned
