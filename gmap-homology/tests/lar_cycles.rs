@@ -253,7 +253,7 @@ fn malformed_arrangements_are_refused() {
         ArrangementError::Disconnected { vertex: 2 }
     );
     let g = PlanarGraph::try_new(sq, vec![[0, 1], [1, 2], [2, 3], [0, 3]]).unwrap();
-    assert!(g.stripes(4, true).is_err());
+    assert_eq!(g.stripes(4, true), Err(ArrangementError::NoSuchEdge { edge: 4, edges: 4 }));
     assert_eq!(g.stripes(0, false).unwrap().last().unwrap().chain, vec![(0, -1), (1, -1), (2, -1), (3, 1)]);
 }
 

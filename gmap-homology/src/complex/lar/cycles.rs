@@ -94,6 +94,14 @@ pub enum ArrangementError {
         /// the edge
         edge: usize,
     },
+    /// An edge number asked for is out of range.
+    #[error("there is no edge {edge}: the graph has {edges} edges")]
+    NoSuchEdge {
+        /// the edge asked
+        edge: usize,
+        /// number of edges
+        edges: usize,
+    },
     /// The graph is not connected (an isolated vertex included): the face holding another
     /// component would have a hole, which needs a containment test this extraction does not
     /// make.
@@ -135,24 +143,29 @@ impl Cycle {
     /// The walk as a 1-chain: `(edge, coefficient)` sorted by edge, without zeros (an edge
     /// walked both ways, a bridge, cancels). O(k log k).
     pub fn chain(&self) -> Vec<(u32, i64)> {
-        let mut c = self.steps.clone();
-        c.sort_unstable();
-        let mut out: Vec<(u32, i64)> = Vec::with_capacity(c.len());
-        for (e, s) in c {
-            match out.last_mut() {
-                Some(last) if last.0 == e => last.1 += s,
-                _ => out.push((e, s)),
-            }
-        }
-        out.retain(|&(_, s)| s != 0);
-        out
+        combine(self.steps.clone())
     }
+}
+
+/// A chain from its terms `(cell, coefficient)`: sorted by cell, the coefficients of a
+/// cell added, zeros left out. O(k log k).
+fn combine(mut terms: Vec<(u32, i64)>) -> Vec<(u32, i64)> {
+    terms.sort_unstable();
+    let mut out: Vec<(u32, i64)> = Vec::with_capacity(terms.len());
+    for (c, s) in terms {
+        match out.last_mut() {
+            Some(last) if last.0 == c => last.1 += s,
+            _ => out.push((c, s)),
+        }
+    }
+    out.retain(|&(_, s)| s != 0);
+    out
 }
 
 /// One state of the stripe iteration: the chain `c` and its boundary `∂c`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Stripe {
-    /// `c`, as `(edge, ±1)` sorted by edge
+    /// `c`, as `(edge, ±1)` sorted by edge (an edge walked both ways left out)
     pub chain: Vec<(u32, i64)>,
     /// `∂c`, as `(vertex, coefficient)` sorted by vertex, zeros left out
     pub boundary: Vec<(u32, i64)>,
@@ -321,11 +334,9 @@ impl PlanarGraph {
         ring[(self.pos[h as usize] as usize + 1) % ring.len()] ^ 1
     }
 
-    /// The 1-chain of a set of half-edges, sorted by edge.
+    /// The 1-chain of a walk of half-edges, sorted by edge (an edge walked both ways cancels).
     fn chain_of(&self, hs: impl IntoIterator<Item = u32>) -> Vec<(u32, i64)> {
-        let mut c: Vec<(u32, i64)> = hs.into_iter().map(|h| (h / 2, sign(h))).collect();
-        c.sort_unstable();
-        c
+        combine(hs.into_iter().map(|h| (h / 2, sign(h))).collect())
     }
 
     /// `∂c` for a 1-chain `c`, sorted by vertex, zeros left out.
@@ -336,16 +347,7 @@ impl PlanarGraph {
             b.push((lo, -s));
             b.push((hi, s));
         }
-        b.sort_unstable();
-        let mut out: Vec<(u32, i64)> = Vec::with_capacity(b.len());
-        for (v, s) in b {
-            match out.last_mut() {
-                Some(last) if last.0 == v => last.1 += s,
-                _ => out.push((v, s)),
-            }
-        }
-        out.retain(|&(_, s)| s != 0);
-        out
+        combine(b)
     }
 
     /// The stripe iteration of the paper from edge `edge` (run along its orientation when
@@ -353,15 +355,11 @@ impl PlanarGraph {
     /// each stripe, until `∂c = 0`. Each stripe adds the next edge at the end of `c` and the
     /// previous edge at its start, once when both are the same edge. The last state is the
     /// chain of the face on the left of the starting half-edge. Fails with
-    /// [`ArrangementError::VertexOutOfRange`] if `edge` is out of range (the vertex field is
-    /// then the edge asked). O(k) stripes of O(k log k) for a face of k edges.
+    /// [`ArrangementError::NoSuchEdge`] if `edge` is out of range. O(k) stripes of
+    /// O(k log k) for a face of k edges.
     pub fn stripes(&self, edge: usize, forward: bool) -> Result<Vec<Stripe>, ArrangementError> {
         if edge >= self.edges.len() {
-            return Err(ArrangementError::VertexOutOfRange {
-                edge,
-                vertex: u32::try_from(edge).unwrap_or(u32::MAX),
-                vertices: self.edges.len(),
-            });
+            return Err(ArrangementError::NoSuchEdge { edge, edges: self.edges.len() });
         }
         let start = 2 * edge as u32 + u32::from(!forward);
         // the walk so far is the contiguous run first ..= last of the face's cycle

@@ -345,7 +345,8 @@ impl Lar {
     /// * `FF`: two distinct faces with a common boundary edge (off-diagonal support of
     ///   `[∂_2]^T [∂_2]`, unsigned).
     ///
-    /// On a closed polyhedral surface where two faces share at most one edge, the number
+    /// On a closed polyhedral surface whose faces are polygons without repeated vertices,
+    /// two of them sharing at most one edge, the number
     /// of entries ([`Lar::cardinality`]) is `2|E|` for all but `EE`, which has
     /// `Σ_v deg v (deg v - 1) >= 4|E|` when every vertex has degree at least 3 (Table 2).
     /// Needs `n >= 2`. O(cost of the product).
