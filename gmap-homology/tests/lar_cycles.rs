@@ -149,12 +149,13 @@ fn paper_worked_example_step_by_step() {
     let (points, edges) = figure3();
     let g = PlanarGraph::try_new(points, edges).unwrap();
     // (b): the coboundaries of the two ends of e12
-    let mut d12 = g.coboundary(12);
+    let mut d12 = g.coboundary(12).unwrap();
     d12.sort();
     assert_eq!(d12, vec![10, 11, 12, 13]);
-    let mut d11 = g.coboundary(11);
+    let mut d11 = g.coboundary(11).unwrap();
     d11.sort();
     assert_eq!(d11, vec![12, 14, 15, 16, 17]);
+    assert_eq!(g.coboundary(16), None);
     let steps = g.stripes(12, true).unwrap();
     assert_eq!(
         steps,

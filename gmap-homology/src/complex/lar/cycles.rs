@@ -300,9 +300,9 @@ impl PlanarGraph {
     }
 
     /// The edges at vertex `v` (its coboundary `δv`) in counter-clockwise order from the
-    /// positive x axis. Panics if `v >= vertices()`.
-    pub fn coboundary(&self, v: usize) -> Vec<u32> {
-        self.around[v].iter().map(|h| h / 2).collect()
+    /// positive x axis; `None` if `v >= vertices()`. O(degree).
+    pub fn coboundary(&self, v: usize) -> Option<Vec<u32>> {
+        Some(self.around.get(v)?.iter().map(|h| h / 2).collect())
     }
 
     /// The vertex half-edge `h` leaves.
