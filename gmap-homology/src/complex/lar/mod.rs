@@ -6,7 +6,17 @@
 //! * `M_{p-1} M_p^T` counts the common vertices of a (p-1)-cell and a p-cell; the *count
 //!   rule* keeps a 1 where the count equals the size of the (p-1)-cell: the unsigned
 //!   boundary `[∂_p]` ([`Lar::unsigned_boundary`]);
-//! * the nine incidence/adjacency operators `VV … FF` of a 2-complex ([`LarOp`]).
+//! * the nine incidence/adjacency operators `VV … FF` of a 2-complex ([`LarOp`],
+//!   [`Lar::operator`]) and the relations they stand for, whose sizes are LAR Table 2
+//!   ([`Lar::relation`], [`Lar::cardinality`]);
+//! * the signed boundary and coboundary with the conventional orientation
+//!   ([`Lar::signed_boundaries`], [`Lar::signed_coboundary`], [`Lar::chain_complex`]; the
+//!   top cells by the sign of their area or volume: [`Lar::signed_boundary_planar`],
+//!   [`Lar::signed_boundary_solid`]);
+//! * cycle extraction: the 2-cells of a planar arrangement from its edges
+//!   ([`PlanarGraph::extract`], the paper's stripes: [`PlanarGraph::stripes`]).
+//!
+//! The item-by-item map of the lecture to this code and its tests is `docs/LAR.md`.
 //!
 //! From a G-map ([`Lar::from_map`]) a cell's vertex set is the set of 0-cells of its darts.
 //! On maps without multi-incidence (every unsigned incidence number 0 or 1) the unsigned
@@ -31,7 +41,13 @@ use std::fmt::Write as _;
 use gmap_core::DenseMap;
 use thiserror::Error;
 
+use crate::engine::chain::ChainError;
 use crate::engine::sparse::SparseMatrix;
+
+mod cycles;
+mod signed;
+
+pub use cycles::{Arrangement, ArrangementError, Cycle, PlanarGraph, Stripe};
 
 /// Why LAR data is malformed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -59,6 +75,88 @@ pub enum LarError {
         /// the complex's dimension
         n: usize,
     },
+    /// An edge does not have exactly two vertices, so it has no conventional orientation.
+    #[error("edge {edge} has {count} vertices, an oriented edge needs 2")]
+    EdgeVertices {
+        /// the edge
+        edge: usize,
+        /// its number of vertices
+        count: usize,
+    },
+    /// A p-cell (p >= 2) has no facet by the count rule.
+    #[error("{dim}-cell {cell} has no ({}-dimensional) facet", .dim - 1)]
+    NoFacet {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+    },
+    /// The facets of a p-cell are not a closed (p-1)-cycle: a (p-2)-cell of its boundary
+    /// lies on `count != 2` of its facets.
+    #[error("{dim}-cell {cell}: ({}-cell) {ridge} lies on {count} of its facets, a closed boundary needs 2", .dim - 2)]
+    OpenBoundary {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+        /// the (p-2)-cell
+        ridge: usize,
+        /// on how many facets of the cell it lies
+        count: usize,
+    },
+    /// The boundary of a p-cell falls into several pieces, so orienting it from its first
+    /// facet leaves a piece without orientation.
+    #[error("{dim}-cell {cell}: its boundary is disconnected (facet {facet} is not reached from the first)")]
+    DisconnectedBoundary {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+        /// a facet not reached
+        facet: usize,
+    },
+    /// The facets of a p-cell cannot be signed so that their boundaries cancel.
+    #[error("{dim}-cell {cell}: its boundary is not orientable (conflict at ({}-cell) {ridge})", .dim - 2)]
+    NonOrientable {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+        /// the (p-2)-cell where two signs disagree
+        ridge: usize,
+    },
+    /// A top cell has zero oriented area (2D) or volume (3D), so its sign is undefined.
+    #[error("{dim}-cell {cell} has zero oriented measure")]
+    ZeroMeasure {
+        /// dimension of the cell
+        dim: usize,
+        /// the cell
+        cell: usize,
+    },
+    /// The number of points does not match the number of vertices.
+    #[error("{points} points given for {vertices} vertices")]
+    PointCount {
+        /// points given
+        points: usize,
+        /// vertices of the complex
+        vertices: usize,
+    },
+    /// Two p-cells have the same vertex set, so the count rule cannot tell them apart
+    /// (a G-map whose cells are not determined by their vertices, e.g. two edges glued at
+    /// both ends only).
+    #[error("{dim}-cells {first} and {second} have the same vertices")]
+    SameVertices {
+        /// dimension of the cells
+        dim: usize,
+        /// the first cell
+        first: usize,
+        /// the second cell, with the same vertex set
+        second: usize,
+    },
+    /// The signed matrices fail to form a chain complex (kept for completeness: the
+    /// conventional orientation always gives `∂∂ = 0`).
+    #[error("the signed boundaries are not a chain complex: {0}")]
+    Chain(#[from] ChainError),
 }
 
 /// The characteristic matrix of cells given by their vertex sets: row `i` has a 1 in the
@@ -98,6 +196,13 @@ fn row_lengths(m: &SparseMatrix) -> Vec<usize> {
         len[i] += 1;
     }
     len
+}
+
+/// The 0/1 matrix of the non-zero entries of `m` off its diagonal. O(nnz).
+fn off_diagonal_support(m: &SparseMatrix) -> SparseMatrix {
+    let columns: Vec<Vec<(u32, i64)>> =
+        (0..m.cols()).map(|j| m.col(j).0.iter().filter(|&&i| i as usize != j).map(|&i| (i, 1)).collect()).collect();
+    SparseMatrix::try_from_columns(m.rows(), &columns).expect("a subset of a valid matrix")
 }
 
 /// The nine incidence/adjacency operators of a 2-complex (LAR, Table 1).
@@ -228,6 +333,40 @@ impl Lar {
             LarOp::FE => mul(m2, &m1.transpose())?,
             LarOp::FF => mul(m2, &m2.transpose())?,
         })
+    }
+
+    /// The incidence or adjacency *relation* named by `op`, as a 0/1 matrix with the same
+    /// rows and columns as [`Lar::operator`] (LAR Tables 1 and 2):
+    /// * `VE`, `VF`, `EV`, `FV`: the characteristic matrices (a vertex of a cell);
+    /// * `EF`, `FE`: an edge on the boundary of a face, by the count rule
+    ///   ([`Lar::unsigned_boundary`]`(2)` and its transpose);
+    /// * `VV`: two distinct vertices of one edge (off-diagonal support of `M_1^T M_1`);
+    /// * `EE`: two distinct edges with a common vertex (off-diagonal support of `M_1 M_1^T`);
+    /// * `FF`: two distinct faces with a common boundary edge (off-diagonal support of
+    ///   `[∂_2]^T [∂_2]`, unsigned).
+    ///
+    /// On a closed polyhedral surface whose faces are polygons without repeated vertices,
+    /// two of them sharing at most one edge, the number
+    /// of entries ([`Lar::cardinality`]) is `2|E|` for all but `EE`, which has
+    /// `Σ_v deg v (deg v - 1) >= 4|E|` when every vertex has degree at least 3 (Table 2).
+    /// Needs `n >= 2`. O(cost of the product).
+    pub fn relation(&self, op: LarOp) -> Result<SparseMatrix, LarError> {
+        let m = self.operator(op)?;
+        Ok(match op {
+            LarOp::VE | LarOp::VF | LarOp::EV | LarOp::FV => m,
+            LarOp::EF => self.unsigned_boundary(2)?,
+            LarOp::FE => self.unsigned_boundary(2)?.transpose(),
+            LarOp::VV | LarOp::EE => off_diagonal_support(&m),
+            LarOp::FF => {
+                let b = self.unsigned_boundary(2)?;
+                off_diagonal_support(&mul(&b.transpose(), &b)?)
+            }
+        })
+    }
+
+    /// The number of pairs in [`Lar::relation`]`(op)`.
+    pub fn cardinality(&self, op: LarOp) -> Result<usize, LarError> {
+        Ok(self.relation(op)?.nnz())
     }
 
     /// The `.lar.json` text: `{"dimension": n, "vertices": k0, "cells": [CV_1, …, CV_n],
