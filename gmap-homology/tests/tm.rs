@@ -55,7 +55,7 @@ fn dangling_edge_is_named() {
     assert_eq!(t.edit_check(), Err(TmDefect::BoundaryNotCircuit { cell: 11, dim: 1, at: 11, plus: 1, minus: 0 }));
     assert_eq!(
         t.edit_check().unwrap_err().to_string(),
-        "the boundary of 1-cell 11 is not a circuit: cell 11 occurs +1/-0 times in its boundary"
+        "TM (7:5): the boundary of 1-cell 11 is not a circuit: cell 11 occurs +1/-0 times in its boundary"
     );
 }
 
