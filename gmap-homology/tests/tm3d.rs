@@ -441,3 +441,104 @@ fn model_errors_are_typed() {
     assert_eq!(point.try_close_with_exterior(2), Err(TmError::Pointless { what: "exterior cell" }));
     assert_eq!(point.try_sides(0), Err(TmError::Pointless { what: "sides of a cell" }));
 }
+
+/// The same two rooms as a 3-map: two unit cubes side by side (`build::grid`), the door
+/// carved into their common face by Euler operators: two vertices on its bottom edge
+/// (`mve` twice), an edge across the face between them (`mef`, the door becomes a digon),
+/// and two vertices on that edge (the door's upper corners).
+fn two_rooms_gmap() -> gmap_core::DenseMap {
+    use gmap_core::GMap;
+    use gmap_ops::euler::ops::{try_insert_edge, try_insert_vertex};
+    let grid = gmap_ops::build::grid(&[2, 1, 1], &[false, false, false]).unwrap();
+    let (mut g, _) = GMap::from_dense(&grid);
+    let d = g.darts().find(|&d| g.alpha(d, 3) != d).expect("a dart of the common face");
+    try_insert_vertex(&mut g, d).unwrap();
+    let x1 = g.alpha(d, 0);
+    let y = g.alpha(x1, 1);
+    try_insert_vertex(&mut g, y).unwrap();
+    let x2 = g.alpha(y, 0);
+    try_insert_edge(&mut g, x1, x2).unwrap();
+    let z = g.alpha(x1, 1);
+    try_insert_vertex(&mut g, z).unwrap();
+    let z2 = g.alpha(g.alpha(z, 0), 1);
+    try_insert_vertex(&mut g, z2).unwrap();
+    g.to_dense().0
+}
+
+#[test]
+fn two_rooms_from_a_gmap() {
+    let m = two_rooms_gmap();
+    assert_eq!(m.cell_counts(), vec![16, 25, 12, 2]);
+    let t = TmModel::from_map(&m).unwrap();
+    // the same defects as the model: the ten outer faces, one room each
+    let defects = t.edit_defects();
+    assert_eq!(defects.len(), 10);
+    for d in &defects {
+        let TmDefect::CoboundaryNotCocircuit { dim: 2, plus, minus, .. } = *d else { panic!("{d}") };
+        assert_eq!(plus + minus, 1);
+    }
+    let (closed, e) = t.try_close_with_exterior(1000).unwrap();
+    assert_eq!(closed.edit_check(), Ok(()));
+    assert_eq!(closed.bounding(e).len(), 10);
+    // the two inner faces: the wall (8 edges) and the door (4), each between the two rooms
+    let rooms = t.regions_of_dim(3).to_vec();
+    let mut inner: Vec<(usize, Sides)> = t
+        .regions_of_dim(2)
+        .iter()
+        .filter_map(|&f| t.try_sides(f).ok().filter(|s| s.near.is_some() && s.far.is_some()).map(|s| (f, s)))
+        .collect();
+    inner.sort_by_key(|&(f, _)| t.bounding(f).len());
+    assert_eq!(inner.iter().map(|&(f, _)| t.bounding(f).len()).collect::<Vec<_>>(), vec![4, 8]);
+    for (_, s) in &inner {
+        let mut pair = vec![s.near.unwrap(), s.far.unwrap()];
+        pair.sort();
+        assert_eq!(pair, rooms);
+    }
+    // the door's view: the door, 4 edges, 4 corners once with each sign
+    let door = inner[0].0;
+    let v = t.try_annotated_view(door).unwrap();
+    assert_eq!(v.cells.len(), 9);
+    assert_eq!(v.cells.iter().filter(|&(c, p, m)| t.cell_dim(c) == 0 && (p, m) == (1, 1)).count(), 4);
+    // its edges: the threshold on three faces (door and both floors), the jambs and the
+    // head on two (door and wall); every section has both rooms once with each sign
+    let mut cobounded: Vec<usize> = t.bounding(door).iter().map(|(e, _, _)| t.cobounding(e).len()).collect();
+    cobounded.sort();
+    assert_eq!(cobounded, vec![2, 2, 2, 3]);
+    for (edge, _, _) in t.bounding(door).iter() {
+        let s = t.try_annotated_section(edge).unwrap();
+        assert!(s.ends.from.is_some() && s.ends.to.is_some() && s.ends.from != s.ends.to);
+        for &r in &rooms {
+            assert_eq!(s.cells.get(r), (1, 1));
+        }
+    }
+}
+#[test]
+fn gmap_rooms_are_oriented_coherently_whatever_the_dart_numbering() {
+    // reversed dart numbering: each cell's smallest dart, which fixes its own orientation,
+    // changes; the model still orients both rooms by the map's orientation classes
+    let m = two_rooms_gmap();
+    let n = m.dart_count() as u32;
+    assert_ne!(n % 7, 0);
+    for perm in [(0..n).rev().collect::<Vec<u32>>(), (0..n).map(|k| (k * 7 + 3) % n).collect()] {
+        let p = m.permuted(&perm);
+        assert_eq!(p.cell_counts(), vec![16, 25, 12, 2]);
+        let t = TmModel::from_map(&p).unwrap();
+        assert_eq!(t.edit_defects().len(), 10);
+        let (closed, _) = t.try_close_with_exterior(1000).unwrap();
+        assert_eq!(closed.edit_check(), Ok(()));
+        let raw = TmModel::from_arch(&gmap_homology::arch::ArchComplex::from_map(&p).unwrap());
+        // with each room's own orientation (smallest dart positive) the two rooms land on
+        // the same side of the wall and of the door: two more defects, (7:6) on both
+        let extra: Vec<TmDefect> = raw
+            .edit_defects()
+            .into_iter()
+            .filter(|d| raw.cobounding(raw.index_of(d.cell()).unwrap()).len() == 2)
+            .collect();
+        assert_eq!(extra.len(), 2);
+        for d in extra {
+            let TmDefect::CoboundaryNotCocircuit { dim: 2, plus, minus, .. } = d else { panic!("{d}") };
+            assert!((plus, minus) == (2, 0) || (plus, minus) == (0, 2));
+        }
+        assert_eq!(raw.edit_defects().len(), 12);
+    }
+}
