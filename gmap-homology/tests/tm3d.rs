@@ -51,6 +51,16 @@ impl Fixture {
     }
 }
 
+/// Defect rows (condition, cell, at, +, -), sorted as [`Fixture::named`] sorts them.
+fn rows(v: &[(&'static str, &str, &str, u64, u64)]) -> Vec<(&'static str, String, String, u64, u64)> {
+    let mut out: Vec<_> = v.iter().map(|&(c, a, b, p, m)| (c, a.to_string(), b.to_string(), p, m)).collect();
+    out.sort();
+    out
+}
+
+/// The ten outer faces: floors, ceilings, the walls at y = 0, y = 3, x = 0 and x = 6.
+const OUTER: [&str; 10] = ["F1", "C1", "S1", "N1", "X0", "F2", "C2", "S2", "N2", "X6"];
+
 fn vname(p: P) -> String {
     match p {
         [3, 1, 0] => "d1".into(),
@@ -202,12 +212,8 @@ fn two_rooms_counts_and_open_defects() {
     // every boundary is a circuit (7:5); the ten outer faces have one room each (7:6)
     let defects = t.edit_defects();
     assert_eq!(defects.len(), 10);
-    let mut expected: Vec<_> = ["F1", "C1", "S1", "N1", "X0", "F2", "C2", "S2", "N2", "X6"]
-        .iter()
-        .map(|&n| ("(7:6)", n.to_string(), n.to_string(), 1u64, 0u64))
-        .collect();
-    expected.sort();
-    assert_eq!(f.named(&defects), expected);
+    let expected: Vec<_> = OUTER.iter().map(|&n| ("(7:6)", n, n, 1, 0)).collect();
+    assert_eq!(f.named(&defects), rows(&expected));
     assert!(defects.iter().all(|d| d.dim() == 2));
     assert_eq!(
         t.edit_check().unwrap_err().to_string(),
@@ -345,17 +351,16 @@ fn defect_missing_end_7_5_on_edges_faces_and_7_6_on_vertices() {
     let t = f.edited(|inc| inc.retain(|&(u, l, _, _)| !(u == thr && l == d2)));
     assert_eq!(t.try_ends(thr), Ok(Ends { from: Some(f.ix("d1")), to: None }));
     let defects = t.edit_defects();
-    let mut expected = vec![
+    let expected = rows(&[
         // (7:5), k = 1: the threshold has no "to" vertex
-        ("(7:5)", "d1-d2".to_string(), "d1-d2".to_string(), 0, 1),
+        ("(7:5)", "d1-d2", "d1-d2", 0, 1),
         // (7:5), k = 2: the faces on the threshold do not close up at d2
-        ("(7:5)", "D".into(), "d2".into(), 1, 0),
-        ("(7:5)", "F1".into(), "d2".into(), 1, 0),
-        ("(7:5)", "F2".into(), "d2".into(), 0, 1),
+        ("(7:5)", "D", "d2", 1, 0),
+        ("(7:5)", "F1", "d2", 1, 0),
+        ("(7:5)", "F2", "d2", 0, 1),
         // (7:6), k = 0: the same pairs seen from d2, first at F1
-        ("(7:6)", "d2".into(), "F1".into(), 1, 0),
-    ];
-    expected.sort();
+        ("(7:6)", "d2", "F1", 1, 0),
+    ]);
     assert_eq!(f.named(&defects), expected);
     // the first defect in check order: the threshold, (7:5)
     let first = t.edit_check().unwrap_err();
@@ -371,18 +376,17 @@ fn defect_missing_ceiling_7_5_on_a_room_and_7_6_on_edges_and_faces() {
     // the ceiling is anticlockwise seen from above: its edges at y = 0 and x = 3 run
     // forwards, those at y = 3 and x = 0 backwards; without it, R1 meets each ceiling
     // edge once, through the wall below it, with the opposite sign
-    let mut expected = vec![
+    let expected = rows(&[
         // (7:5), k = 3: room 1 is not closed (first at the first ceiling edge)
-        ("(7:5)", "R1".to_string(), "x0y0z3-x3y0z3".to_string(), 0, 1),
+        ("(7:5)", "R1", "x0y0z3-x3y0z3", 0, 1),
         // (7:6), k = 1: each ceiling edge sees room 1 once
-        ("(7:6)", "x0y0z3-x3y0z3".into(), "R1".into(), 0, 1),
-        ("(7:6)", "x3y0z3-x3y3z3".into(), "R1".into(), 0, 1),
-        ("(7:6)", "x0y3z3-x3y3z3".into(), "R1".into(), 1, 0),
-        ("(7:6)", "x0y0z3-x0y3z3".into(), "R1".into(), 1, 0),
+        ("(7:6)", "x0y0z3-x3y0z3", "R1", 0, 1),
+        ("(7:6)", "x3y0z3-x3y3z3", "R1", 0, 1),
+        ("(7:6)", "x0y3z3-x3y3z3", "R1", 1, 0),
+        ("(7:6)", "x0y0z3-x0y3z3", "R1", 1, 0),
         // (7:6), k = 2: the ceiling has the outside on its near side and nothing beyond
-        ("(7:6)", "C1".into(), "C1".into(), 0, 1),
-    ];
-    expected.sort();
+        ("(7:6)", "C1", "C1", 0, 1),
+    ]);
     assert_eq!(f.named(&t.edit_defects()), expected);
     assert_eq!(t.try_sides(c1), Ok(Sides { near: Some(f.ix("E")), far: None }));
 }
@@ -402,21 +406,18 @@ fn defect_door_twisted_7_6_on_the_door_and_closing_refused() {
     assert_eq!(t.try_close_with_exterior(99), Err(TmError::NotFree { id: f.id("D"), dim: 2, plus: 0, minus: 2 }));
     let mut expected = vec![
         // (7:5), k = 3: room 2 meets each door edge twice with one sign, first the threshold
-        ("(7:5)", "R2".to_string(), "d1-d2".to_string(), 2, 0),
+        ("(7:5)", "R2", "d1-d2", 2, 0),
         // (7:6), k = 2: both rooms on the near side of the door
-        ("(7:6)", "D".into(), "D".into(), 0, 2),
+        ("(7:6)", "D", "D", 0, 2),
         // (7:6), k = 1: each door edge sees room 2 twice with one sign
-        ("(7:6)", "d1-d2".into(), "R2".into(), 2, 0),
-        ("(7:6)", "d1-d4".into(), "R2".into(), 0, 2),
-        ("(7:6)", "d2-d3".into(), "R2".into(), 2, 0),
-        ("(7:6)", "d4-d3".into(), "R2".into(), 0, 2),
+        ("(7:6)", "d1-d2", "R2", 2, 0),
+        ("(7:6)", "d1-d4", "R2", 0, 2),
+        ("(7:6)", "d2-d3", "R2", 2, 0),
+        ("(7:6)", "d4-d3", "R2", 0, 2),
     ];
     // and the ten free faces of the open model, as before
-    for n in ["F1", "C1", "S1", "N1", "X0", "F2", "C2", "S2", "N2", "X6"] {
-        expected.push(("(7:6)", n.into(), n.into(), 1, 0));
-    }
-    expected.sort();
-    assert_eq!(f.named(&t.edit_defects()), expected);
+    expected.extend(OUTER.iter().map(|&n| ("(7:6)", n, n, 1, 0)));
+    assert_eq!(f.named(&t.edit_defects()), rows(&expected));
 }
 
 #[test]
