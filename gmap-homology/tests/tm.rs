@@ -3,7 +3,7 @@
 
 use gmap_core::examples;
 use gmap_homology::arch::ArchComplex;
-use gmap_homology::tm::{SignedSet, TmDefect, TmModel};
+use gmap_homology::tm::{SignedSet, TmDefect, TmModel, TmSet};
 
 #[test]
 fn cylinder_seam_occurs_with_both_signs() {
@@ -55,7 +55,7 @@ fn dangling_edge_is_named() {
     assert_eq!(t.edit_check(), Err(TmDefect::BoundaryNotCircuit { cell: 11, dim: 1, at: 11, plus: 1, minus: 0 }));
     assert_eq!(
         t.edit_check().unwrap_err().to_string(),
-        "the boundary of 1-cell 11 is not a circuit: cell 11 occurs +1/-0 times in its boundary"
+        "TM (7:5): the boundary of 1-cell 11 is not a circuit: cell 11 occurs +1/-0 times in its boundary"
     );
 }
 
@@ -95,5 +95,62 @@ fn poincare_duality_transposes_the_incidence_graph() {
         assert_eq!(td.regions_of_dim(0).len(), counts[n]);
         let f = t.regions_of_dim(n)[0];
         assert_eq!(td.coboundary(&SignedSet::cell(f)), t.boundary(&SignedSet::cell(f)));
+    }
+}
+
+/// A square disc as a 2-map: 4 vertices, 4 edges, 1 face.
+fn square() -> TmModel {
+    let mut m = gmap_core::DenseMap::new(2, 8);
+    for k in 0..4u32 {
+        m.link(gmap_core::Dart(2 * k), gmap_core::Dart(2 * k + 1), 0);
+        m.link(gmap_core::Dart(2 * k + 1), gmap_core::Dart((2 * k + 2) % 8), 1);
+    }
+    TmModel::from_map(&m).unwrap()
+}
+
+#[test]
+fn two_dimensional_file_layout_fig_3() {
+    let t = square();
+    // Fig. 3: three entry points; C^0 holds Y^1, C^2 holds Z^1, the self-dual C^1 both pairs
+    let shown: Vec<String> = t
+        .file_layout()
+        .iter()
+        .map(|(k, sets)| format!("{k}: {}", sets.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(", ")))
+        .collect();
+    assert_eq!(shown, vec!["C^0: Y^1", "C^1: Z^0, Y^2", "C^2: Z^1"]);
+    assert_eq!(TmSet::C(0).dual(2), TmSet::C(2));
+    assert_eq!(TmSet::Y(1).dual(2), TmSet::Z(1));
+    assert_eq!(TmSet::Z(0).dual(2), TmSet::Y(2));
+    let e = t.regions_of_dim(1)[0];
+    let rec = t.record(e);
+    assert_eq!(rec.iter().map(|r| r.0).collect::<Vec<_>>(), vec![TmSet::Z(0), TmSet::Y(2)]);
+    assert_eq!(rec[0].1.totals(), (1, 1)); // from and to
+    assert_eq!(rec[1].1.totals().0 + rec[1].1.totals().1, 1); // one face: a free edge
+                                                              // Z_B^0: 4 pairs of end vertices, Z_B^1: the face's boundary; Y_G^1: 4, Y_G^2: 4
+    assert_eq!((t.bounding_circuits(0).count(), t.bounding_circuits(1).count()), (4, 1));
+    assert_eq!((t.cobounding_cocircuits(1).count(), t.cobounding_cocircuits(2).count()), (4, 4));
+    assert_eq!(t.bounding_circuits(2).count() + t.cobounding_cocircuits(0).count(), 0);
+}
+
+#[test]
+fn closing_a_disc_gives_a_sphere_that_passes() {
+    let t = square();
+    let defects = t.edit_defects();
+    assert_eq!(defects.len(), 4); // the four free edges, (7:6)
+    assert!(defects.iter().all(|d| d.condition() == "(7:6)" && d.dim() == 1));
+    let (closed, e) = t.try_close_with_exterior(99).unwrap();
+    assert_eq!(closed.edit_check(), Ok(()));
+    assert_eq!((closed.regions_of_dim(2).len(), closed.bounding(e).len()), (2, 4)); // χ = 4 - 4 + 2
+    let face = t.regions_of_dim(2)[0];
+    for &edge in closed.regions_of_dim(1) {
+        // the face and the outside on the two sides of every edge
+        let s = closed.try_sides(edge).unwrap();
+        let mut pair = vec![s.near.unwrap(), s.far.unwrap()];
+        pair.sort();
+        assert_eq!(pair, vec![face, e]);
+        // the face lies left of (far side in TM's sign) the edges it takes positively
+        assert_eq!(s.far == Some(face), t.bounding(face).get(edge) == (1, 0));
+        let ends = closed.try_ends(edge).unwrap();
+        assert!(ends.from.is_some() && ends.to.is_some() && ends.from != ends.to);
     }
 }
