@@ -2,8 +2,8 @@
 //! whatever is accepted is a valid map within the dart limit.
 #![no_main]
 
-use libfuzzer_sys::fuzz_target;
 use gmap_ops::import::SimplicialComplex;
+use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else { return };
