@@ -86,7 +86,7 @@ pub fn check_set(s: &CubicalSet) {
     assert!(s.dim() >= 1);
     assert_eq!(s.min().len(), s.dim());
     let volume = s.shape().iter().try_fold(1u64, |v, &l| v.checked_mul(l as u64)).expect("the volume fits");
-    assert!(volume >= 1 && volume <= gmap_ops::import::cubical::MAX_BOX_CUBES);
+    assert!((1..=gmap_ops::import::cubical::MAX_BOX_CUBES).contains(&volume));
     assert_eq!(s.bits().len() as u64, volume);
     assert!(s.bits().iter().all(|&b| b <= 1));
     assert_eq!(s.cube_count(), s.bits().iter().filter(|&&b| b == 1).count());
