@@ -1,8 +1,8 @@
 //! Every reader the `gmap` command uses, on arbitrary bytes and on mutated valid files (the
 //! hostile-input audit): no panic, and every error names the file. The `.gmap`, `.moka`,
-//! `.off`, `.facets` and `.lex` readers have their own proptests in gmap-core and gmap-ops;
-//! here the `.json` reader of architectural complexes (gmap-homology) is fuzzed the same way,
-//! and the binary is run on a few mutated files of every format.
+//! `.off`, `.facets`, `.lex`, `.cub` and `.pbm` readers have their own proptests in gmap-core
+//! and gmap-ops; here the `.json` reader of architectural complexes (gmap-homology) is fuzzed
+//! the same way, and the binary is run on a few mutated files of every format.
 
 use std::path::Path;
 use std::process::Command;
@@ -13,13 +13,15 @@ const JSON: &str = r#"{"dimension": 2, "regions": [{"id": 0, "dim": 1}, {"id": 1
  "incidence": [{"from": 2, "to": 0, "weight": 1}, {"from": 2, "to": 1, "weight": 0}]}"#;
 
 /// Valid files of every input format, by extension.
-const SEEDS: [(&str, &str); 6] = [
+const SEEDS: [(&str, &str); 8] = [
     ("json", JSON),
     ("gmap", "gmap 2 8\n1 7 5\n0 2 4\n3 1 2\n2 4 3\n5 3 1\n4 6 0\n7 5 6\n6 0 7\n"),
     ("moka", "Moka file [ascii]\n0 0 0 0 0 0 0 0\n1 0 0 0 0 0 0 0 1 0 0 0\n0 1 1 1 0 0 0 0 0\n"),
     ("off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n"),
     ("facets", "1 2 3\n1 2 4\n1 3 4\n2 3 4\n"),
     ("lex", "circle=[[1,2],[2,3],[3,1]]\n"),
+    ("cub", "; a ring\n(0,0)\n(1,0)\n(2,0)\n(0,1)\n(2,1)\n(0,-1)\n(1,-1)\n(2,-1)\n"),
+    ("pbm", "P1\n3 3\n1 1 1\n1 0 1\n1 1 1\n"),
 ];
 
 fn mutate(seed: &str, edits: &[(prop::sample::Index, u8, u8)]) -> Vec<u8> {
@@ -74,7 +76,7 @@ proptest! {
     /// code 1 with one `error:` line naming the file; never a crash.
     #[test]
     fn the_command_on_mutated_files_never_crashes(
-        which in 0usize..6,
+        which in 0..SEEDS.len(),
         edits in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>(), 0u8..3), 1..4),
     ) {
         let (ext, seed) = SEEDS[which];

@@ -1,11 +1,15 @@
-//! Hostile inputs for the importers (`.off`, `.facets`, `.lex`), from the hostile-input
+//! Hostile inputs for the importers (`.off`, `.facets`, `.lex`, `.cub`, `.pbm`), from the hostile-input
 //! audit: each reproducer is refused with an error naming the file and the line, without a
 //! panic or an allocation the input does not justify; arbitrary and mutated bytes never make
 //! a reader panic.
 
 use std::path::{Path, PathBuf};
 
-use gmap_ops::import::{read_facets, read_lex, read_off, read_off_with, ImportError, PolygonMesh, SimplicialComplex};
+use gmap_ops::import::cubical::{parse_cub, parse_pbm, MAX_BOX_CUBES};
+use gmap_ops::import::{
+    read_cub, read_facets, read_lex, read_off, read_off_with, read_pbm, CubicalSet, ImportError, PolygonMesh,
+    SimplicialComplex,
+};
 use proptest::prelude::*;
 
 fn file(dir: &tempfile::TempDir, name: &str, bytes: &[u8]) -> PathBuf {
@@ -125,12 +129,32 @@ fn long_tokens_are_quoted_short() {
     }
 }
 
-/// Valid inputs to mutate: an `.off` square, an octahedron's `.facets`, a `.lex` circle.
-const SEEDS: [&str; 3] = [
-    "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n",
-    "1 2 3\n1 3 4\n1 4 5\n1 5 2\n6 2 3\n6 3 4\n6 4 5\n6 5 2\n",
-    "circle=[[1,2],[2,3],[3,1]]\nsphere=[[1,2,3],[1,2,4],[1,3,4],[2,3,4]]\n",
+/// Valid inputs to mutate: an `.off` square, an octahedron's `.facets`, a `.lex` circle, a
+/// `.cub` ring with negative coordinates and a duplicate, a P1 and a P4 bitmap.
+const SEEDS: [&[u8]; 6] = [
+    b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n",
+    b"1 2 3\n1 3 4\n1 4 5\n1 5 2\n6 2 3\n6 3 4\n6 4 5\n6 5 2\n",
+    b"circle=[[1,2],[2,3],[3,1]]\nsphere=[[1,2,3],[1,2,4],[1,3,4],[2,3,4]]\n",
+    b"; a ring\ndimension 2\n(-5, -7)\n(-5 -6)\n(-5,-5)\n(-4,-7)\n(-4,-5)\n(-3,-7)\n(-3,-6)\n(-3,-5)\n(-5 -7) ; again\n",
+    b"P1\n# an annulus and a dot\n5 4\n1 1 1 1 0\n1 0 0 1 0\n1 1 1 1 0\n0 0 0 0 1\n",
+    b"P4 5 4\n\xf0\x90\xf0\x08",
 ];
+
+/// What every accepted cubical set satisfies: a non-empty box within the limit, a 0/1 bitmap
+/// of its volume, the count of its ones.
+fn check_set(s: &CubicalSet) {
+    assert!(s.dim() >= 1 && s.min().len() == s.dim());
+    let volume = s.shape().iter().try_fold(1u64, |v, &l| v.checked_mul(l as u64)).unwrap();
+    assert!((1..=MAX_BOX_CUBES).contains(&volume));
+    assert_eq!(s.bits().len() as u64, volume);
+    assert!(s.bits().iter().all(|&b| b <= 1));
+    assert_eq!(s.cube_count(), s.bits().iter().filter(|&&b| b == 1).count());
+}
+
+/// The cubes of a set as `.cub` lines.
+fn cub_text(s: &CubicalSet) -> String {
+    s.cubes().map(|c| format!("({})\n", c.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(","))).collect()
+}
 
 /// Reads `bytes` with every importer; none may panic, every error names the file.
 fn check_all(bytes: &[u8]) {
@@ -140,6 +164,8 @@ fn check_all(bytes: &[u8]) {
         ("f.off", &(|p: &Path| read_off_with(p, limit).map(|_| ())) as &dyn Fn(&Path) -> Result<(), _>),
         ("f.facets", &|p: &Path| read_facets(p, limit).map(|_| ())),
         ("f.lex", &|p: &Path| read_lex(p, None, limit).map(|_| ())),
+        ("f.cub", &|p: &Path| read_cub(p).map(|_| ())),
+        ("f.pbm", &|p: &Path| read_pbm(p).map(|_| ())),
     ] {
         let p = file(&dir, name, bytes);
         if let Err(e) = read(&p) {
@@ -152,6 +178,17 @@ fn check_all(bytes: &[u8]) {
         if let Ok(mesh) = PolygonMesh::parse_limited(text, 100_000) {
             let _ = mesh.to_gmap();
         }
+    }
+    if let Ok(s) = parse_cub(bytes) {
+        check_set(&s);
+        assert!(s.cube_count() >= 1);
+        if s.bits().len() <= 1 << 16 {
+            assert_eq!(parse_cub(cub_text(&s).as_bytes()).unwrap(), s);
+        }
+    }
+    if let Ok(s) = parse_pbm(bytes) {
+        check_set(&s);
+        assert_eq!((s.dim(), s.min()), (2, &[0i64, 0][..]));
     }
 }
 
@@ -169,11 +206,23 @@ proptest! {
     }
 
     #[test]
+    fn arbitrary_cubes_never_panic(text in "(dimension|[0-9 ,()\\-;\\r\\n]){0,80}") {
+        check_all(text.as_bytes());
+    }
+
+    #[test]
+    fn arbitrary_bitmaps_never_panic(magic in "P[14]", text in "[0-9 #\\n\\t]{0,60}", tail in proptest::collection::vec(any::<u8>(), 0..16)) {
+        let mut bytes = format!("{magic}{text}").into_bytes();
+        bytes.extend_from_slice(&tail);
+        check_all(&bytes);
+    }
+
+    #[test]
     fn mutated_valid_files_never_panic(
-        which in 0usize..3,
+        which in 0..SEEDS.len(),
         edits in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>(), 0u8..3), 1..6),
     ) {
-        let mut bytes = SEEDS[which].as_bytes().to_vec();
+        let mut bytes = SEEDS[which].to_vec();
         for (at, byte, kind) in edits {
             if bytes.is_empty() {
                 bytes.push(byte);

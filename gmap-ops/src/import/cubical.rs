@@ -80,6 +80,29 @@ impl CubicalSet {
         self.count
     }
 
+    /// The minimal vertices of the cubes of the set in the input's coordinates, axis 0
+    /// fastest (the order of [`CubicalSet::bits`]). O(d) per cube, O(box) in all.
+    ///
+    /// ```
+    /// use gmap_ops::import::cubical::parse_cub;
+    /// let s = parse_cub(b"(5,-1)\n(4,0)\n").unwrap();
+    /// assert_eq!(s.cubes().collect::<Vec<_>>(), vec![vec![5, -1], vec![4, 0]]);
+    /// ```
+    pub fn cubes(&self) -> impl Iterator<Item = Vec<i64>> + '_ {
+        self.bits.iter().enumerate().filter(|(_, &b)| b != 0).map(|(mut i, _)| {
+            self.shape
+                .iter()
+                .zip(&self.min)
+                .map(|(&l, &m)| {
+                    // within the box: |m| ≤ 2^40 and the offset < 2^30
+                    let x = m + (i % l) as i64;
+                    i /= l;
+                    x
+                })
+                .collect()
+        })
+    }
+
     /// The G-map of the union: the grid of the box ([`crate::build::grid`], axes periodic
     /// with `periodic`) restricted to the cubes of the set, each cube one d-cell sewn to its
     /// neighbours of the set along shared facets, the other facets free. Its cells are those
