@@ -37,8 +37,9 @@
 //!   - [`arch`]: architectural complexes (AC §3), their topology, the complex of a G-map and
 //!     Algorithm 8.16.
 //!   - [`ep`]: Euler–Poincaré operators and their polynomial view (AC §4–7).
-//!   - [`lar`]: LAR's characteristic matrices and the count rule.
-//!   - [`tm`]: TM's boundary/coboundary model and its edit checks.
+//!   - [`lar`]: LAR's characteristic matrices, the signed boundary and coboundary, the nine
+//!     operators and cycle extraction of a planar arrangement.
+//!   - [`tm`]: TM's model in 2D and 3D: (6:1), views, sections, annotations, the edit check.
 //!   - [`simplices`]: any finite simplicial complex by its facets, every face a cell.
 //!   - [`json`]: the `.json` incidence-graph format; [`dot`]: Graphviz output.
 //!
