@@ -6,7 +6,7 @@ use common::{gmap, stderr, stdout};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use gmap_core::{DenseMap, GMap};
+use gmap_core::{examples::add_simplex, DenseMap, GMap};
 use proptest::prelude::*;
 
 /// Runs `gmap ARGS` under `ulimit LIMIT` (a shell builtin) in `dir`.
@@ -71,42 +71,12 @@ fn simplify_keeps_three_components() {
     assert_eq!(simp, plain);
 }
 
-/// All orderings of `0..=k`.
-fn orderings(k: usize) -> Vec<Vec<usize>> {
-    let mut out = vec![vec![]];
-    for _ in 0..=k {
-        out = out
-            .iter()
-            .flat_map(|p: &Vec<usize>| {
-                (0..=k).filter(|v| !p.contains(v)).map(|v| {
-                    let mut q = p.clone();
-                    q.push(v);
-                    q
-                })
-            })
-            .collect();
-    }
-    out
-}
-
 /// A random valid map: simplices of the given dimensions (mod n + 1), then sews that may fail.
 fn build(n: usize, pieces: &[usize], sews: &[(usize, usize, usize)]) -> DenseMap {
     let mut g = GMap::new(n);
     let mut darts = Vec::new();
     for &k in pieces {
-        let k = k % (n + 1);
-        let perms = orderings(k);
-        let ids: Vec<_> = perms.iter().map(|_| g.create_dart()).collect();
-        for (a, p) in perms.iter().enumerate() {
-            for i in 0..k {
-                let mut q = p.clone();
-                q.swap(i, i + 1);
-                let b = perms.iter().position(|r| *r == q).unwrap();
-                if a < b {
-                    g.link(ids[a], ids[b], i);
-                }
-            }
-        }
+        let ids = add_simplex(&mut g, k % (n + 1));
         darts.extend(ids);
     }
     for &(a, b, i) in sews {
