@@ -49,6 +49,9 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 #[path = "../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_insert.rs"]
+mod gmap_3_insert;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_marks.rs"]
 mod gmap_3_marks;
 #[allow(dead_code)]
@@ -72,6 +75,7 @@ const PORTS: &[(&str, Run, usize, &[usize])] = &[
     ("gmap_4_simple_example", gmap_4_simple_example::run, 0, &[]),
     ("gmap_3_marks", gmap_3_marks::run, 0, &[]),
     ("gmap_3_operations", gmap_3_operations::run, 0, &[]),
+    ("gmap_3_insert", gmap_3_insert::run, 0, &[]),
     ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
 ];
 

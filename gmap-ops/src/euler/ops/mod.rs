@@ -19,29 +19,40 @@
 //! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`); all are
 //! re-exported here.
 
+mod cgal;
 mod close;
 mod collapse;
+mod edges;
 mod error;
 mod split;
 
 use rustc_hash::FxHashSet as HashSet;
 
-use gmap_core::{DartId, GMap};
+use gmap_core::{Attributes, DartId, GMap, Point};
 
 use super::vector::cell_letter;
 
+pub use cgal::{
+    insert_cell_0_in_cell_1, insert_cell_1_between_two_cells_2, insert_cell_1_in_cell_2, insert_cell_2_in_cell_3,
+    insert_dangling_cell_1_in_cell_2, is_insertable_cell_0_in_cell_1, is_insertable_cell_1_between_two_cells_2,
+    is_insertable_cell_1_in_cell_2, is_insertable_cell_2_in_cell_3, is_insertable_dangling_cell_1_in_cell_2,
+};
 pub use close::{can_close, try_close, CloseReport};
 pub(crate) use collapse::Move;
 pub use collapse::{contract_cell, is_contractible, is_removable, remove_cell, try_contract_cell, try_remove_cell};
+pub use edges::{
+    can_insert_dangling_edge, can_insert_edge_between_faces, try_insert_dangling_edge, try_insert_dangling_edge_at,
+    try_insert_edge_between_faces, BridgeReport,
+};
 pub use error::EulerError;
 pub use split::{
-    can_insert_dangling_edge, can_insert_edge, can_insert_vertex, can_split_cell, split_cell, try_insert_dangling_edge,
-    try_insert_edge, try_insert_vertex, try_split_cell,
+    can_insert_edge, can_insert_vertex, can_split_cell, split_cell, try_insert_edge, try_insert_vertex,
+    try_insert_vertex_at, try_split_cell,
 };
 pub(crate) use split::{insert_edge_quietly, split_cell_quietly};
 
 /// `Ok` when `d` is a live dart of `g`.
-fn live(g: &GMap, d: DartId) -> Result<(), EulerError> {
+fn live<A: Attributes>(g: &GMap<A>, d: DartId) -> Result<(), EulerError> {
     if g.contains(d) {
         Ok(())
     } else {
@@ -51,7 +62,7 @@ fn live(g: &GMap, d: DartId) -> Result<(), EulerError> {
 
 /// Number of distinct k-cells (every k) meeting a set of live darts. O(total size of
 /// those cells · n).
-fn local_counts(g: &GMap, darts: &[DartId]) -> Vec<i64> {
+fn local_counts<A: Attributes>(g: &GMap<A>, darts: &[DartId]) -> Vec<i64> {
     let n = g.dim();
     let mut out = vec![0i64; n + 1];
     for (k, slot) in out.iter_mut().enumerate() {
@@ -67,14 +78,39 @@ fn local_counts(g: &GMap, darts: &[DartId]) -> Vec<i64> {
     out
 }
 
-/// In debug builds, panics when `g` is not a valid G-map (BO Def. 1).
-fn debug_check(g: &GMap) {
+/// In debug builds, panics when `g` is not a valid G-map (BO Def. 1) or when a cell's darts
+/// disagree on an attribute or a point ([`GMap::check_attributes`]).
+fn debug_check<A: Attributes>(g: &GMap<A>) {
     if cfg!(debug_assertions) {
         let (m, _) = g.to_dense();
         if let Err(e) = m.validate() {
             panic!("Euler operator broke validity: {e}");
         }
+        if let Err(e) = g.check_attributes() {
+            panic!("Euler operator broke the attributes: {e}");
+        }
     }
+}
+
+/// Repairs attributes and points after an operator's edit ([`GMap::reconcile_attributes`]),
+/// when the map uses any: `touched` lists the darts whose links changed, those of the
+/// side that keeps the original attributes first. O(size of the cells touched · n) per
+/// slot in use, nothing when none is.
+fn reconcile<A: Attributes>(g: &mut GMap<A>, touched: &[DartId]) {
+    if g.needs_reconcile() {
+        g.reconcile_attributes(touched);
+    }
+}
+
+/// The middle of the points of the vertices of `d` and `alpha_0(d)`, when `d` is not 0-free
+/// and both have one: where [`try_insert_vertex`] puts the vertex it makes. O(1).
+fn edge_middle<A: Attributes>(g: &GMap<A>, d: DartId) -> Option<Point> {
+    let e = g.alpha(d, 0);
+    if e == d {
+        return None;
+    }
+    let (p, q) = (g.point(d)?, g.point(e)?);
+    Some([0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])])
 }
 
 /// `after - before`, entry by entry.
