@@ -15,11 +15,34 @@
 //!
 //! [`EulerOp`]: crate::euler::EulerOp
 //!
-//! The operators are grouped by what they do: splits and insertions (`split`), removals and
-//! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`); all are
-//! re-exported here.
+//! # Attributes and points
+//!
+//! Every operator works on a [`GMap<A>`](GMap) with any attributes `A` (a plain `GMap` needs
+//! no annotation) and ends with the map's one repair routine,
+//! [`GMap::reconcile_attributes`], given the darts it re-linked: the merge hooks run
+//! exactly when cells carrying attributes become one (a removal, a contraction, an edge
+//! between two faces), the split hooks exactly when one becomes two (a split, an
+//! insertion), each cell holds one attribute afterwards, and every vertex that is not
+//! merged keeps its point. A new cell made of new darts only (the new edge of `mef`, the
+//! new face of `mfs`) has no attribute. An operator that makes a vertex gives it a point:
+//! [`try_insert_vertex`] the middle of the split edge when both ends have points,
+//! [`try_insert_vertex_at`] and [`try_insert_dangling_edge_at`] the point they are given.
+//! Each operator's doc says which cell keeps the original attribute.
+//!
+//! # CGAL's names
+//!
+//! The operators are also available under CGAL's names (`insert_cell_0_in_cell_1`,
+//! `insert_cell_1_in_cell_2`, `insert_dangling_cell_1_in_cell_2`,
+//! `insert_cell_1_between_two_cells_2`, `insert_cell_2_in_cell_3`, `remove_cell`,
+//! `contract_cell`), returning a dart of the new cell as CGAL's do; the table in [`cgal`]
+//! maps each CGAL operation to ours with its precondition and predicate.
+//!
+//! The operators are grouped by what they do: splits and insertions (`split`), edges hung
+//! at a corner (`edges`: dangling edges, edges between two faces), removals and
+//! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`), CGAL's
+//! names ([`cgal`]); all are re-exported here.
 
-mod cgal;
+pub mod cgal;
 mod close;
 mod collapse;
 mod edges;
