@@ -19,85 +19,17 @@
 //! Then every cell without an attribute (made of new darts) gets a fresh one and every
 //! vertex without a point a fresh point, so that the next step starts from a full map.
 
-use std::collections::{BTreeMap, BTreeSet, HashMap};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Arc;
+#[path = "../../gmap-core/tests/attr_common/mod.rs"]
+mod attr_common;
 
-use gmap_core::{Cells, DartId, GMap, Point};
+use std::collections::{BTreeSet, HashMap};
+
+use attr_common::{attr as value, cells_by_dart as cells_of, count, fill, merges_and_splits, Full, Hooks};
+use gmap_core::{DartId, Point};
 use gmap_ops::build;
 use gmap_ops::euler::ops::{self, EulerError};
 use gmap_ops::euler::random::{attempt, Operator};
 use proptest::prelude::*;
-
-type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
-
-/// The value on the j-cell of `d`.
-fn value(g: &Full, d: DartId, j: usize) -> Option<u64> {
-    match j {
-        0 => g.attribute::<0>(d).copied(),
-        1 => g.attribute::<1>(d).copied(),
-        2 => g.attribute::<2>(d).copied(),
-        _ => g.attribute::<3>(d).copied(),
-    }
-}
-
-/// Gives every cell without a value a fresh one and every vertex without a point a fresh
-/// point; `next` numbers them.
-fn fill(g: &mut Full, next: &mut u64) {
-    let darts: Vec<DartId> = g.darts().collect();
-    for j in 0..=g.dim() {
-        for &d in &darts {
-            if value(g, d, j).is_none() {
-                *next += 1;
-                match j {
-                    0 => g.set_attribute::<0>(d, *next),
-                    1 => g.set_attribute::<1>(d, *next),
-                    2 => g.set_attribute::<2>(d, *next),
-                    _ => g.set_attribute::<3>(d, *next),
-                };
-            }
-        }
-    }
-    for &d in &darts {
-        if g.point(d).is_none() {
-            *next += 1;
-            g.set_point(d, Some([*next as f64, 0.25, -2.0]));
-        }
-    }
-}
-
-/// Hook call counters, per dimension: (merges, splits).
-type Counters = [(Arc<AtomicUsize>, Arc<AtomicUsize>); 4];
-
-fn install(g: &mut Full) -> Counters {
-    let c: Counters = Default::default();
-    macro_rules! on {
-        ($j:literal) => {{
-            let (m, s) = (c[$j].0.clone(), c[$j].1.clone());
-            g.set_on_merge::<$j>(move |_, _| {
-                m.fetch_add(1, Ordering::Relaxed);
-            });
-            g.set_on_split::<$j>(move |_, _| {
-                s.fetch_add(1, Ordering::Relaxed);
-            });
-        }};
-    }
-    on!(0);
-    on!(1);
-    on!(2);
-    on!(3);
-    c
-}
-
-fn read(c: &Counters) -> [(usize, usize); 4] {
-    c.each_ref().map(|(m, s)| (m.load(Ordering::Relaxed), s.load(Ordering::Relaxed)))
-}
-
-/// The j-cell number of every live dart, for every j, from the dense snapshot.
-fn cells_of(g: &Full) -> Vec<HashMap<DartId, u32>> {
-    let (dense, ids) = g.to_dense();
-    (0..=g.dim()).map(|j| ids.iter().copied().zip(dense.cells(j).of).collect()).collect()
-}
 
 /// One random step; the numbers pick darts among the live ones.
 #[derive(Clone, Debug)]
@@ -200,17 +132,6 @@ fn apply(g: &mut Full, step: &Step, fresh: Point) -> Result<(bool, Option<Point>
     })
 }
 
-/// Merges and splits between the cells of the surviving darts before and after a step.
-fn merges_and_splits(survivors: &[DartId], old: &HashMap<DartId, u32>, new: &HashMap<DartId, u32>) -> (usize, usize) {
-    let mut olds_of_new: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
-    let mut news_of_old: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
-    for x in survivors {
-        olds_of_new.entry(new[x]).or_default().insert(old[x]);
-        news_of_old.entry(old[x]).or_default().insert(new[x]);
-    }
-    (olds_of_new.values().map(|s| s.len() - 1).sum(), news_of_old.values().map(|s| s.len() - 1).sum())
-}
-
 /// Builds the map of `pieces`, runs `steps`, checks every property after each; returns the
 /// number of steps that changed the map.
 fn run(n: usize, pieces: &[usize], steps: &[Step]) -> Result<usize, TestCaseError> {
@@ -227,38 +148,35 @@ fn run(n: usize, pieces: &[usize], steps: &[Step]) -> Result<usize, TestCaseErro
     }
     let mut next = 0;
     fill(&mut g, &mut next);
-    let counters = install(&mut g);
+    let hooks = Hooks::default();
+    hooks.install(&mut g);
     let mut changed = 0;
     for step in steps {
         let before = cells_of(&g);
         let values: HashMap<DartId, Vec<Option<u64>>> =
             g.darts().map(|x| (x, (0..=n).map(|j| value(&g, x, j)).collect())).collect();
         let points: HashMap<DartId, Option<Point>> = g.darts().map(|x| (x, g.point(x))).collect();
-        let hooks = read(&counters);
+        let (m0, s0) = hooks.counts();
         next += 1;
         let (done, made_point) = apply(&mut g, step, [next as f64, -1.0, 0.5])?;
         changed += done as usize;
         g.check().map_err(|e| TestCaseError::fail(format!("{step:?}: {e}")))?;
         let after = cells_of(&g);
-        let hooks_after = read(&counters);
+        let (m1, s1) = hooks.counts();
         let survivors: Vec<DartId> = g.darts().filter(|x| values.contains_key(x)).collect();
         if !done {
             prop_assert_eq!(survivors.len(), values.len(), "{:?} failed but removed darts", step);
             prop_assert_eq!(g.dart_count(), values.len(), "{:?} failed but made darts", step);
         }
         for j in 0..=n {
-            let (merges, splits) = merges_and_splits(&survivors, &before[j], &after[j]);
-            prop_assert_eq!(hooks_after[j].0 - hooks[j].0, merges, "merges of {}-cells in {:?}", j, step);
-            prop_assert_eq!(hooks_after[j].1 - hooks[j].1, splits, "splits of {}-cells in {:?}", j, step);
+            let old: Vec<u32> = survivors.iter().map(|x| before[j][x]).collect();
+            let new: Vec<u32> = survivors.iter().map(|x| after[j][x]).collect();
+            let (merges, splits) = merges_and_splits(&old, &new);
+            prop_assert_eq!(m1[j] - m0[j], merges, "merges of {}-cells in {:?}", j, step);
+            prop_assert_eq!(s1[j] - s0[j], splits, "splits of {}-cells in {:?}", j, step);
             // one value per cell that holds a dart from before; none on cells of new darts
             let kept: BTreeSet<u32> = survivors.iter().map(|x| after[j][x]).collect();
-            let count = [
-                g.attribute_count::<0>(),
-                g.attribute_count::<1>(),
-                g.attribute_count::<2>(),
-                g.attribute_count::<3>(),
-            ][j];
-            prop_assert_eq!(count, kept.len(), "{}-values after {:?}", j, step);
+            prop_assert_eq!(count(&g, j), kept.len(), "{}-values after {:?}", j, step);
             // the value of a surviving cell is one its darts had before
             let mut had: HashMap<u32, BTreeSet<Option<u64>>> = HashMap::new();
             for x in &survivors {
@@ -346,25 +264,26 @@ fn a_pillow_cut_and_merged_back() {
     }
     let mut next = 0;
     fill(&mut g, &mut next);
-    let c = install(&mut g);
+    let c = Hooks::default();
+    c.install(&mut g);
     let face = *g.attribute::<2>(d[0]).unwrap();
     // the diagonal from corner 0 to corner 2: the face splits once, the copy keeps the value
     let far = g.alpha(g.alpha(g.alpha(d[0], 0), 1), 0);
     ops::try_insert_edge(&mut g, d[0], far).unwrap();
-    assert_eq!(read(&c)[2], (0, 1));
+    assert_eq!((c.counts().0[2], c.counts().1[2]), (0, 1));
     assert_eq!(g.attribute_count::<2>(), 3);
     assert_eq!(g.attribute::<2>(d[0]), Some(&face));
     // the new edge has no value; removing it merges the faces back
     let diagonal = g.alpha(d[0], 1);
     assert_eq!(g.attribute::<1>(diagonal), None);
     ops::try_remove_cell(&mut g, diagonal, 1).unwrap();
-    assert_eq!(read(&c)[2], (1, 1));
+    assert_eq!((c.counts().0[2], c.counts().1[2]), (1, 1));
     assert_eq!(g.attribute_count::<2>(), 2);
     // a vertex in an edge at a given point; the edge's value is copied to both halves
     let edge = *g.attribute::<1>(d[0]).unwrap();
     ops::try_insert_vertex_at(&mut g, d[0], Some([9.0, 9.0, 9.0])).unwrap();
     assert_eq!(g.point(g.alpha(d[0], 0)), Some([9.0, 9.0, 9.0]));
-    assert_eq!(read(&c)[1], (0, 1));
+    assert_eq!((c.counts().0[1], c.counts().1[1]), (0, 1));
     let b = g.alpha(d[1], 0);
     assert_eq!(g.attribute::<1>(b), Some(&edge));
     assert_eq!(g.point(b), Some([9.0, 9.0, 9.0]));
@@ -373,7 +292,7 @@ fn a_pillow_cut_and_merged_back() {
     // with its point, and the merge hook of 0-cells runs once
     let (p, v) = (g.point(d[0]), *g.attribute::<0>(d[0]).unwrap());
     ops::try_contract_cell(&mut g, d[0], 1).unwrap_or_else(|e: EulerError| panic!("{e}"));
-    assert_eq!(read(&c)[0], (1, 0));
+    assert_eq!((c.counts().0[0], c.counts().1[0]), (1, 0));
     assert_eq!((g.point(b), g.attribute::<0>(b)), (p, Some(&v)));
     assert_eq!(g.point(d[7]), p);
     assert_eq!((g.dart_count(), g.attribute_count::<0>(), g.point_count()), (16, 4, 4));
