@@ -5,6 +5,9 @@ use gmap_core::{Cells, DartId, GMap};
 use gmap_ops::build;
 use gmap_ops::euler::ops::*;
 
+/// A 3-map with a small label on its edges, faces and volumes.
+type Labelled = GMap<((), Cells<u8>, Cells<u8>, Cells<u8>)>;
+
 /// `alpha_{w_k} ∘ … ∘ alpha_{w_1} (d)`.
 fn walk<A: gmap_core::Attributes>(g: &GMap<A>, d: DartId, word: &[usize]) -> DartId {
     word.iter().fold(d, |x, &i| g.alpha(x, i))
@@ -37,7 +40,7 @@ fn an_edge_between_two_faces_of_one_cube() {
 #[test]
 fn an_edge_between_two_volumes_merges_them() {
     // two cubes 3-sewn along a face; an edge between outer faces of the two
-    let mut g: GMap<((), (), Cells<u8>, Cells<u8>)> = GMap::with_attributes(3);
+    let mut g: Labelled = GMap::with_attributes(3);
     let a = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     let b = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     g.sew(a, b, 3);
@@ -112,7 +115,7 @@ fn edges_between_faces_are_refused_with_the_dart() {
 
 #[test]
 fn cgal_names_return_a_dart_of_the_new_cell() {
-    let mut g: GMap<((), Cells<u8>, Cells<u8>, Cells<u8>)> = GMap::with_attributes(3);
+    let mut g: Labelled = GMap::with_attributes(3);
     let d1 = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     g.set_attribute::<3>(d1, 7);
     // CGAL's gmap_3_operations: two diagonals in opposite faces, a face along the path
