@@ -230,15 +230,19 @@ fn apply_cut<A: Attributes>(g: &mut GMap<A>, cut: &Cut, i: usize, point: Option<
         new.push(ax);
         new.push(bx);
     }
-    // side A first, so that the split i-cell keeps its attribute there
-    let mut touched: Vec<DartId> = cut.darts.clone();
+    // side A first, so that the split i-cell keeps its attribute there (collected only
+    // when the map has attributes or points to repair)
+    let repair = g.needs_reconcile();
+    let mut touched: Vec<DartId> = if repair { cut.darts.clone() } else { Vec::new() };
     for &x in &cut.darts {
         let (ax, bx) = (a[&x], b[&x]);
         let w = g.alpha(x, i - 1);
         g.link(x, ax, i - 1);
         if w != x {
             g.link(w, bx, i - 1);
-            touched.push(w);
+            if repair {
+                touched.push(w);
+            }
         }
         g.link(ax, bx, i);
         for k in 0..=n {
@@ -256,8 +260,10 @@ fn apply_cut<A: Attributes>(g: &mut GMap<A>, cut: &Cut, i: usize, point: Option<
             g.link(bx, b[&z], i - 2);
         }
     }
-    touched.extend(new.iter().copied());
-    reconcile(g, &touched);
+    if repair {
+        touched.extend(new.iter().copied());
+        reconcile(g, &touched);
+    }
     if i == 1 && point.is_some() {
         g.set_point(new[0], point);
     }
