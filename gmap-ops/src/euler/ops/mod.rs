@@ -23,6 +23,7 @@ mod close;
 mod collapse;
 mod error;
 mod split;
+mod star;
 
 use rustc_hash::FxHashSet as HashSet;
 
@@ -39,6 +40,10 @@ pub use split::{
     try_insert_edge, try_insert_vertex, try_split_cell,
 };
 pub(crate) use split::{insert_edge_quietly, split_cell_quietly};
+pub use star::{
+    can_star_cell, can_star_face, insert_cell_0_in_cell_2, insert_point_in_cell, star_cell, star_face, try_star_cell,
+    try_star_face, Starred,
+};
 
 /// `Ok` when `d` is a live dart of `g`.
 fn live(g: &GMap, d: DartId) -> Result<(), EulerError> {
