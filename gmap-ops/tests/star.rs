@@ -238,47 +238,88 @@ fn a_halving_split_hook_runs_once_per_new_triangle_in_cgals_order() {
     g.check().unwrap();
 }
 
+/// A map with a `u32` on every cell of every dimension up to 4 and a point per vertex.
+type Full = GMap<(Cells<u32>, Cells<u32>, Cells<u32>, Cells<u32>, Cells<u32>)>;
+
+/// A copy of `m` with every cell labelled, every vertex given a point, and hooks that count
+/// the splits of each dimension and the merges of all.
+struct Labelled {
+    g: Full,
+    splits: Vec<Arc<AtomicUsize>>,
+    merges: Arc<AtomicUsize>,
+}
+
+impl Labelled {
+    fn new(m: &DenseMap) -> Self {
+        let mut g: Full = GMap::from_dense_with_attributes(m).0;
+        let splits: Vec<Arc<AtomicUsize>> = (0..5).map(|_| Arc::new(AtomicUsize::new(0))).collect();
+        let merges = Arc::new(AtomicUsize::new(0));
+        macro_rules! label {
+            ($($k:literal)+) => {$(
+                let s = splits[$k].clone();
+                g.set_on_split::<$k>(move |_, _| {
+                    s.fetch_add(1, Ordering::Relaxed);
+                });
+                let c = merges.clone();
+                g.set_on_merge::<$k>(move |_, _| {
+                    c.fetch_add(1, Ordering::Relaxed);
+                });
+                if $k <= g.dim() {
+                    for (n, x) in g.one_dart_per_cell($k).collect::<Vec<_>>().into_iter().enumerate() {
+                        g.set_attribute::<$k>(x, n as u32);
+                    }
+                }
+            )+};
+        }
+        label!(0 1 2 3 4);
+        for (n, x) in g.one_dart_per_cell(0).collect::<Vec<_>>().into_iter().enumerate() {
+            g.set_point(x, Some([n as f64, 0.0, 0.0]));
+        }
+        Labelled { g, splits, merges }
+    }
+
+    /// Split hook calls per dimension up to n.
+    fn splits(&self) -> Vec<usize> {
+        self.splits[..=self.g.dim()].iter().map(|s| s.load(Ordering::Relaxed)).collect()
+    }
+
+    /// Whether the i-cell of `d` carries an attribute.
+    fn has_attribute(&self, d: DartId, i: usize) -> bool {
+        let g = &self.g;
+        match i {
+            0 => g.attribute::<0>(d).is_some(),
+            1 => g.attribute::<1>(d).is_some(),
+            2 => g.attribute::<2>(d).is_some(),
+            3 => g.attribute::<3>(d).is_some(),
+            _ => g.attribute::<4>(d).is_some(),
+        }
+    }
+
+    /// Number of attributes per dimension up to n.
+    fn attribute_counts(&self) -> Vec<usize> {
+        let g = &self.g;
+        let all = [
+            g.attribute_count::<0>(),
+            g.attribute_count::<1>(),
+            g.attribute_count::<2>(),
+            g.attribute_count::<3>(),
+            g.attribute_count::<4>(),
+        ];
+        all[..=g.dim()].to_vec()
+    }
+}
+
 #[test]
 fn attributes_on_every_dimension_stay_one_per_cell() {
-    type Map = GMap<(Cells<u32>, Cells<u32>, Cells<u32>, Cells<u32>)>;
-    let mut g: Map = GMap::with_attributes(3);
-    let splits: Vec<Arc<AtomicUsize>> = (0..4).map(|_| Arc::new(AtomicUsize::new(0))).collect();
-    let merges = Arc::new(AtomicUsize::new(0));
-    macro_rules! hooks {
-        ($($k:literal)+) => {$(
-            let s = splits[$k].clone();
-            g.set_on_split::<$k>(move |_, _| {
-                s.fetch_add(1, Ordering::Relaxed);
-            });
-            let m = merges.clone();
-            g.set_on_merge::<$k>(move |_, _| {
-                m.fetch_add(1, Ordering::Relaxed);
-            });
-        )+};
-    }
-    hooks!(0 1 2 3);
-    let d = g.try_append(&cube(3).unwrap()).unwrap()[0];
-    macro_rules! label {
-        ($($k:literal)+) => {$(
-            for (n, x) in g.one_dart_per_cell($k).collect::<Vec<_>>().into_iter().enumerate() {
-                g.set_attribute::<$k>(x, n as u32);
-            }
-        )+};
-    }
-    label!(0 1 2 3);
-    for (n, x) in g.one_dart_per_cell(0).collect::<Vec<_>>().into_iter().enumerate() {
-        g.set_point(x, Some([n as f64, 0.0, 0.0]));
-    }
-    let points: Vec<(DartId, Option<[f64; 3]>)> = g.darts().map(|x| (x, g.point(x))).collect();
-    let st = try_star_cell(&mut g, d, 3, Some([0.5, 0.5, 0.5])).unwrap();
-    let calls: Vec<usize> = splits.iter().map(|s| s.load(Ordering::Relaxed)).collect();
-    assert_eq!(calls, vec![0, 0, 0, 5]);
-    assert_eq!(merges.load(Ordering::Relaxed), 0);
+    let mut l = Labelled::new(&cube(3).unwrap());
+    let d = l.g.darts().next().unwrap();
+    let points: Vec<(DartId, Option<[f64; 3]>)> = l.g.darts().map(|x| (x, l.g.point(x))).collect();
+    let st = try_star_cell(&mut l.g, d, 3, Some([0.5, 0.5, 0.5])).unwrap();
+    assert_eq!(l.splits(), vec![0, 0, 0, 5]);
+    assert_eq!(l.merges.load(Ordering::Relaxed), 0);
     // old cells keep theirs, the six pyramids have one each, the new cones none
-    assert_eq!(
-        [g.attribute_count::<0>(), g.attribute_count::<1>(), g.attribute_count::<2>(), g.attribute_count::<3>()],
-        [8, 12, 6, 6]
-    );
+    assert_eq!(l.attribute_counts(), vec![8, 12, 6, 6]);
+    let g = &l.g;
     assert_eq!(g.attribute::<0>(st.vertex), None);
     assert_eq!(g.attribute::<1>(st.vertex), None);
     assert_eq!(g.attribute::<3>(st.vertex), g.attribute::<3>(d));
@@ -337,5 +378,36 @@ proptest! {
         }
         prop_assert_eq!(MapView::euler_characteristic(&g), chi);
         prop_assert_eq!(MapView::is_orientable(&g), orientable);
+    }
+
+    /// The same with an attribute on every cell and a point on every vertex: on a cell with
+    /// an attribute the split hook of dimension i runs once per cone beyond the first and the
+    /// i-cells gain as many attributes (a cell made by an earlier star has none: nothing to
+    /// split); no other hook runs, the other dimensions gain no attribute, and every old
+    /// dart keeps the point it had.
+    #[test]
+    fn stars_keep_one_attribute_per_cell(kind in 0u8..8, picks in prop::collection::vec((0usize..10_000, 1usize..5), 1..4)) {
+        let mut l = Labelled::new(&object(kind));
+        let n = l.g.dim();
+        let mut splits = vec![0; n + 1];
+        let mut attrs = l.attribute_counts();
+        for (at, i) in picks {
+            let i = 1 + (i - 1) % n;
+            let d = l.g.darts().nth(at % l.g.dart_count()).unwrap();
+            let points: Vec<(DartId, Option<[f64; 3]>)> = l.g.darts().map(|x| (x, l.g.point(x))).collect();
+            let labelled = l.has_attribute(d, i);
+            let st = try_star_cell(&mut l.g, d, i, Some([-1.0, 0.0, 0.0])).unwrap();
+            if labelled {
+                let more = st.op.vector.dx()[i] as usize;
+                splits[i] += more;
+                attrs[i] += more;
+            }
+            prop_assert_eq!(l.splits(), splits.clone());
+            prop_assert_eq!(l.merges.load(Ordering::Relaxed), 0);
+            prop_assert_eq!(l.attribute_counts(), attrs.clone());
+            prop_assert!(points.iter().all(|&(x, p)| l.g.point(x) == p));
+            prop_assert_eq!(l.g.point(st.vertex), Some([-1.0, 0.0, 0.0]));
+            prop_assert_eq!(l.g.check(), Ok(()));
+        }
     }
 }
