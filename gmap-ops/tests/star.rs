@@ -89,6 +89,7 @@ fn a_hexahedron_becomes_six_pyramids() {
     for v in g.one_dart_per_cell(3).collect::<Vec<_>>() {
         assert_eq!(g.cell(v, 3).len(), 32);
     }
+    assert_eq!(s.vertex, g.alpha(g.alpha(g.alpha(d, 2), 1), 0));
     // the new vertex meets every volume, edge and face made
     assert_eq!(g.cell(s.vertex, 0).len(), 6 * 4 * 2);
     MapView::validate(&g).unwrap();

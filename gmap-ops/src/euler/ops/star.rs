@@ -56,7 +56,8 @@ use crate::euler::vector::{cell_letter, EpVector, EulerOp};
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Starred {
     /// A dart of the new vertex, on the new edge that joins it to the vertex of the dart
-    /// given (CGAL's return value). For a face, `alpha_0 alpha_1` of the dart given.
+    /// `d` given (CGAL's return value): `alpha_0(alpha_1(…alpha_{i-1}(d)))`, for a face
+    /// `alpha_0(alpha_1(d))`.
     pub vertex: DartId,
     /// The operator's name (`star_e`, `star_f`, `star_s`, `star_c4`, …) and its
     /// Euler–Poincaré vector: one vertex, one k-cell per (k-1)-cell occurrence on the
@@ -157,6 +158,27 @@ fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<Item = DartId
 ///   │   f   │  ─────>  │   w   │   one face becomes k triangles (here 4)
 ///   │       │          │ /   \ │
 ///   └───────┘          └───────┘
+/// ```
+///
+/// ```
+/// use gmap_core::{Cells, GMap, MapView};
+/// use gmap_ops::{build, euler::ops::try_star_cell};
+/// // a hexahedron whose volume carries a weight, split evenly on every split
+/// let mut g: GMap<((), (), (), Cells<f64>)> = GMap::with_attributes(3);
+/// let d = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
+/// g.set_attribute::<3>(d, 6.0);
+/// g.set_on_split::<3>(|kept, copy| {
+///     *kept /= 2.0;
+///     *copy = *kept;
+/// });
+/// let star = try_star_cell(&mut g, d, 3, Some([0.5, 0.5, 0.5])).unwrap();
+/// // six square pyramids around the centre: 8 + 1 vertices, 12 + 8 edges, 6 + 12 faces
+/// assert_eq!(MapView::cell_counts(&g), vec![9, 20, 18, 6]);
+/// assert_eq!(star.op.vector.dx(), &[1, 8, 12, 5]);
+/// assert_eq!(g.point(star.vertex), Some([0.5, 0.5, 0.5]));
+/// // five splits in turn: the pyramid of d kept 6 / 2^5
+/// assert_eq!(g.attribute::<3>(d), Some(&(6.0 / 32.0)));
+/// assert_eq!(g.attribute_count::<3>(), 6);
 /// ```
 ///
 /// `point` becomes the new vertex's point (`None`: no point). Attributes follow the rules
