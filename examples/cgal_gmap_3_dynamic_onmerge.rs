@@ -95,13 +95,15 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     flush(&log, out)?;
     display(&g, out)?;
 
-    let star = insert_cell_0_in_cell_2(&mut g, second, None)?;
+    let centre = insert_cell_0_in_cell_2(&mut g, second, None)?;
     flush(&log, out)?;
     display(&g, out)?;
 
     // without a merge hook the kept weight stays as it is
     g.set_on_merge::<2>(|_, _| {});
-    remove_edge(&mut g, star.vertex);
+    // the new edge at the corner of `second`: its triangle and the last one split off it
+    // merge, both weighing 0.25
+    remove_edge(&mut g, centre);
     flush(&log, out)?;
     display(&g, out)?;
     Ok(())

@@ -71,8 +71,9 @@ fn an_edge_gets_a_vertex() {
     assert_eq!(g.alpha(d, 0), s.vertex);
     assert_eq!(g.point(s.vertex), None);
     // as an insertion in an edge with insert_point_in_cell: the point is set
-    let s = insert_point_in_cell(&mut g, d, 1, [1.0, 2.0, 3.0]).unwrap();
-    assert_eq!(g.point(s.vertex), Some([1.0, 2.0, 3.0]));
+    let v = insert_point_in_cell(&mut g, d, 1, [1.0, 2.0, 3.0]).unwrap();
+    assert_eq!(g.point(v), Some([1.0, 2.0, 3.0]));
+    assert_eq!(v, g.alpha(d, 0));
     assert_eq!(counts(&g), vec![5, 5, 1]);
 }
 
@@ -184,6 +185,7 @@ fn refusals_name_the_dart_or_the_dimension() {
     let mut c = GMap::new(1);
     let x = c.create_dart();
     assert!(matches!(insert_cell_0_in_cell_2(&mut c, x, None), Err(EulerError::BadDimension { hi: 1, got: 2, .. })));
+    assert!(!is_insertable_cell_0_in_cell_2(&c, x));
     assert_eq!(c.dart_count(), 1);
     // nothing changed on refusal
     assert_eq!(counts(&g), vec![8, 12, 6, 1]);
@@ -227,13 +229,14 @@ fn a_halving_split_hook_runs_once_per_new_triangle_in_cgals_order() {
         let last = *sides.last().unwrap();
         sides.push(g.alpha(g.alpha(last, 0), 1));
     }
-    let st = insert_cell_0_in_cell_2(&mut g, b, None).unwrap();
+    assert!(is_insertable_cell_0_in_cell_2(&g, b));
+    let v = insert_cell_0_in_cell_2(&mut g, b, None).unwrap();
     assert_eq!((merges.load(Ordering::Relaxed), splits.load(Ordering::Relaxed)), (1, 3));
     // the triangle of b kept 20 / 2 / 2 / 2; the others in order: 10, 5, 2
     let values: Vec<i32> = sides.iter().map(|&x| *g.attribute::<2>(x).unwrap()).collect();
     assert_eq!(values, vec![2, 10, 5, 2]);
     // the last one is across the new edge at b's corner, the one CGAL's example removes
-    assert!(g.cell(g.alpha(st.vertex, 2), 2).contains(&sides[3]));
+    assert!(g.cell(g.alpha(v, 2), 2).contains(&sides[3]));
     assert_eq!(g.attribute_count::<2>(), 14);
     assert_eq!(counts(&g)[2], 14);
     g.check().unwrap();

@@ -282,24 +282,31 @@ pub fn star_face<A: Attributes>(g: &mut GMap<A>, d: DartId, point: Option<Point>
     try_star_face(g, d, point).unwrap_or_else(|e| panic!("star_face: {e}"))
 }
 
-/// CGAL's name for [`try_star_face`]: a vertex inserted in the face of `d`, the face split
-/// in triangles. The new vertex's dart is [`Starred::vertex`] (CGAL's return value).
+/// Whether [`insert_cell_0_in_cell_2`] would succeed ([`can_star_face`]). O(1).
+pub fn is_insertable_cell_0_in_cell_2<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {
+    can_star_face(g, d)
+}
+
+/// CGAL's `insert_cell_0_in_cell_2`: [`try_star_face`] on the face of `d`, the new vertex
+/// at `point`, returning CGAL's dart: [`Starred::vertex`], a dart of the new vertex.
+/// Precondition ([`is_insertable_cell_0_in_cell_2`]) and cost of [`try_star_face`].
 pub fn insert_cell_0_in_cell_2<A: Attributes>(
     g: &mut GMap<A>,
     d: DartId,
     point: Option<Point>,
-) -> Result<Starred, EulerError> {
-    try_star_face(g, d, point)
+) -> Result<DartId, EulerError> {
+    try_star_face(g, d, point).map(|s| s.vertex)
 }
 
 /// The linear-cell-complex form of [`try_star_cell`] (CGAL's `insert_point_in_cell`): a
 /// vertex at `p` inserted in the i-cell of `d`, for every `1 <= i <= n` (an edge, a face, a
-/// volume, …). Same precondition ([`can_star_cell`]) and cost.
+/// volume, …), returning [`Starred::vertex`], a dart of the new vertex. Precondition
+/// ([`can_star_cell`]) and cost of [`try_star_cell`].
 pub fn insert_point_in_cell<A: Attributes>(
     g: &mut GMap<A>,
     d: DartId,
     i: usize,
     p: Point,
-) -> Result<Starred, EulerError> {
-    try_star_cell(g, d, i, Some(p))
+) -> Result<DartId, EulerError> {
+    try_star_cell(g, d, i, Some(p)).map(|s| s.vertex)
 }
