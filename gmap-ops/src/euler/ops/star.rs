@@ -4,46 +4,7 @@
 //! one pyramid per face; [`insert_point_in_cell`] is the linear-cell-complex form that
 //! places the new vertex.
 //!
-//! # The construction, flag by flag
-//!
-//! A dart is a flag `(c_0, c_1, …, c_n)` of mutually incident cells. Starring the i-cell
-//! `C` from a new vertex `w` replaces `C` by the cones `w * c_{i-1}` over its (i-1)-cells,
-//! and adds the cones `w * c_k` over its lower cells. A flag of the new cells is an old
-//! flag `x` of `C` with a *level* `s` in `0..=i`:
-//!
-//! ```text
-//!   x_s = (c_0, …, c_{s-1},  w * c_{s-1}, …, w * c_{i-1},  c_{i+1}, …, c_n)
-//!          old cells below s  cones from level s on          cells above C
-//! ```
-//!
-//! (`w * c_{-1}` is `w` itself). Level `i` is the old dart itself, with `C` replaced by
-//! the cone over its (i-1)-cell, so each old dart of `C` gets `i` new companions and the
-//! i-cell grows from `|C|` to `(i + 1)|C|` darts. The involutions follow from the flags:
-//!
-//! | `alpha_j(x_s)` | |
-//! | --- | --- |
-//! | `j < s - 1` | `(alpha_j x)_s` |
-//! | `j = s - 1` | `x_{s-1}` |
-//! | `j = s < i` | `x_{s+1}` |
-//! | `s < j <= i` | `(alpha_{j-1} x)_s` |
-//! | `j > i`, or `j = s = i` | `(alpha_j x)_s` (the old link) |
-//!
-//! On the old darts only `alpha_{i-1}` changes. Nothing here asks more of `C` than being an
-//! i-cell: a face with a repeated vertex or edge (a face glued to itself, the one face of a
-//! torus), a face with a free boundary, a face shared by two volumes or lying in an n-map
-//! with copies across `alpha_3..alpha_n` — the cone is taken over every flag of the cell,
-//! so the new vertex is joined once to each *occurrence* of a boundary cell. The result is
-//! a subdivision of the same space: homology unchanged.
-//!
-//! # Attributes
-//!
-//! The cells of dimension other than i are neither split nor merged (an old cell gains
-//! darts, the new cones start without attributes, the new vertex gets the point given).
-//! The i-cell is split into its cones as CGAL does it: the cone of the dart given keeps
-//! the attribute, and each other cone in turn gets a copy after the split hook ran on
-//! `(kept, copy)`, so a hook that halves the kept value leaves `v/2^k, v/2, v/4, …,
-//! v/2^k` on `k + 1` cones. For a face the cones are taken in CGAL's order: around the
-//! face from the dart given, first across `alpha_0`.
+//! See [`try_star_cell`] for the construction and how attributes follow it.
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
@@ -116,7 +77,7 @@ fn face_ring<A: Attributes>(g: &GMap<A>, d: DartId) -> Vec<DartId> {
 }
 
 /// The darts of the i-cell of `d`, `d` first, in the order the cones are split off (see
-/// the [module docs](self)): for a face, its ring from `d` and then the other sides; else
+/// [`try_star_cell`]): for a face, its ring from `d` and then the other sides; else
 /// breadth-first from `d`. O(cell size · n).
 fn split_order<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> Vec<DartId> {
     if i != 2 {
@@ -182,14 +143,57 @@ fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<Item = DartId
 /// ```
 ///
 /// `point` becomes the new vertex's point (`None`: no point). Attributes follow the rules
-/// of the [module docs](self): the cone of `d` keeps the cell's attribute, the split hook
-/// of dimension i runs once per other cone, in CGAL's order; no other hook runs.
+/// below: the cone of `d` keeps the cell's attribute, the split hook of dimension i runs
+/// once per other cone, in CGAL's order; no other hook runs.
+///
+/// # Construction, flag by flag
+///
+/// A dart is a flag `(c_0, c_1, …, c_n)` of mutually incident cells. Starring the i-cell
+/// `C` from a new vertex `w` replaces `C` by the cones `w * c_{i-1}` over its (i-1)-cells,
+/// and adds the cones `w * c_k` over its lower cells. A flag of the new cells is an old
+/// flag `x` of `C` with a *level* `s` in `0..=i`:
+///
+/// ```text
+///   x_s = (c_0, …, c_{s-1},  w * c_{s-1}, …, w * c_{i-1},  c_{i+1}, …, c_n)
+///          old cells below s  cones from level s on          cells above C
+/// ```
+///
+/// (`w * c_{-1}` is `w` itself). Level `i` is the old dart itself, with `C` replaced by
+/// the cone over its (i-1)-cell, so each old dart of `C` gets `i` new companions and the
+/// i-cell grows from `|C|` to `(i + 1)|C|` darts. The involutions follow from the flags:
+///
+/// | `alpha_j(x_s)` | |
+/// | --- | --- |
+/// | `j < s - 1` | `(alpha_j x)_s` |
+/// | `j = s - 1` | `x_{s-1}` |
+/// | `j = s < i` | `x_{s+1}` |
+/// | `s < j <= i` | `(alpha_{j-1} x)_s` |
+/// | `j > i`, or `j = s = i` | `(alpha_j x)_s` (the old link) |
+///
+/// On the old darts only `alpha_{i-1}` changes. Nothing here asks more of `C` than being an
+/// i-cell: a face with a repeated vertex or edge (a face glued to itself, the one face of a
+/// torus), a face with a free boundary, a face shared by two volumes or lying in an n-map
+/// with copies across `alpha_3..alpha_n` — the cone is taken over every flag of the cell,
+/// so the new vertex is joined once to each *occurrence* of a boundary cell. The result is
+/// a subdivision of the same space: homology unchanged.
+///
+/// # Attributes
+///
+/// The cells of dimension other than i are neither split nor merged (an old cell gains
+/// darts, the new cones start without attributes, the new vertex gets the point given).
+/// The i-cell is split into its cones as CGAL does it: the cone of the dart given keeps
+/// the attribute, and each other cone in turn gets a copy after the split hook ran on
+/// `(kept, copy)`, so a hook that halves the kept value leaves `v/2^k, v/2, v/4, …,
+/// v/2^k` on `k + 1` cones. For a face the cones are taken in CGAL's order: around the
+/// face from the dart given, first across `alpha_0`.
+///
+/// # Precondition and cost
 ///
 /// Precondition ([`can_star_cell`]): `d` is a live dart and `1 <= i <= n`; `g` is a valid
 /// G-map (BO Def. 1), which the result then is. The cell may have free darts and repeated
-/// boundary cells (see the [module docs](self)). Effect: `|C| · i` new darts for an i-cell
-/// of `|C|` darts; one more vertex, for each `1 <= k <= i` one more k-cell per occurrence of
-/// a (k-1)-cell on the boundary, one i-cell less; homology unchanged. O(|C| · i · n) for
+/// boundary cells (see above). Effect: `|C| · i` new darts for an i-cell of `|C|` darts;
+/// one more vertex, for each `1 <= k <= i` one more k-cell per occurrence of a (k-1)-cell
+/// on the boundary, one i-cell less; homology unchanged. O(|C| · i · n) for
 /// the links, O(|C| · i² · n) for the count of cells in the returned vector.
 pub fn try_star_cell<A: Attributes>(
     g: &mut GMap<A>,
