@@ -49,6 +49,9 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 #[path = "../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_dynamic_onmerge.rs"]
+mod gmap_3_dynamic_onmerge;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_marks.rs"]
 mod gmap_3_marks;
 #[allow(dead_code)]
@@ -58,17 +61,14 @@ mod gmap_3_operations;
 #[path = "../examples/cgal_gmap_3_simple_example.rs"]
 mod gmap_3_simple_example;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_with_colored_facets.rs"]
+mod gmap_3_with_colored_facets;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
 #[allow(dead_code)]
 #[path = "../examples/cgal_linear_cell_complex_4.rs"]
 mod linear_cell_complex_4;
-#[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_with_colored_facets.rs"]
-mod gmap_3_with_colored_facets;
-#[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_dynamic_onmerge.rs"]
-mod gmap_3_dynamic_onmerge;
 
 /// Every port: CGAL's program name, the port's `run`, and `skip` and `unordered` as in
 /// [`check`].

@@ -78,6 +78,19 @@ fn an_edge_gets_a_vertex() {
 }
 
 #[test]
+fn the_star_of_an_edge_is_the_vertex_insertion() {
+    for m in [polygon(3).unwrap(), cube(3).unwrap(), grid(&[2, 2], &[true, false]).unwrap()] {
+        let mut a = thaw(&m);
+        let mut b = thaw(&m);
+        let (da, db) = (a.darts().nth(5).unwrap(), b.darts().nth(5).unwrap());
+        let star = try_star_cell(&mut a, da, 1, None).unwrap();
+        let mve = try_insert_vertex(&mut b, db).unwrap();
+        assert_eq!(star.op.vector, mve.vector);
+        assert!(gmap_ops::iso::are_isomorphic(&a.to_dense().0, &b.to_dense().0));
+    }
+}
+
+#[test]
 fn a_hexahedron_becomes_six_pyramids() {
     let mut g = thaw(&cube(3).unwrap());
     let d = g.darts().next().unwrap();
