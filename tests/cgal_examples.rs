@@ -49,6 +49,9 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 #[path = "../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_dynamic_onmerge.rs"]
+mod gmap_3_dynamic_onmerge;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_insert.rs"]
 mod gmap_3_insert;
 #[allow(dead_code)]
@@ -60,6 +63,9 @@ mod gmap_3_operations;
 #[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_simple_example.rs"]
 mod gmap_3_simple_example;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_with_colored_facets.rs"]
+mod gmap_3_with_colored_facets;
 #[allow(dead_code)]
 #[path = "../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
@@ -77,6 +83,8 @@ const PORTS: &[(&str, Run, usize, &[usize])] = &[
     ("gmap_3_operations", gmap_3_operations::run, 0, &[]),
     ("gmap_3_insert", gmap_3_insert::run, 0, &[]),
     ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
+    ("gmap_3_with_colored_facets", gmap_3_with_colored_facets::run, 0, &[1, 2]),
+    ("gmap_3_dynamic_onmerge", gmap_3_dynamic_onmerge::run, 0, &[2, 7, 9]),
 ];
 
 #[test]

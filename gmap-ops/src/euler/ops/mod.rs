@@ -48,6 +48,7 @@ mod collapse;
 mod edges;
 mod error;
 mod split;
+mod star;
 
 use rustc_hash::FxHashSet as HashSet;
 
@@ -73,6 +74,10 @@ pub use split::{
     try_insert_vertex_at, try_split_cell,
 };
 pub(crate) use split::{insert_edge_quietly, split_cell_quietly};
+pub use star::{
+    can_star_cell, can_star_face, insert_cell_0_in_cell_2, insert_point_in_cell, is_insertable_cell_0_in_cell_2,
+    star_cell, star_face, try_star_cell, try_star_face, Starred,
+};
 
 /// `Ok` when `d` is a live dart of `g`.
 fn live<A: Attributes>(g: &GMap<A>, d: DartId) -> Result<(), EulerError> {
