@@ -61,6 +61,12 @@ mod gmap_3_simple_example;
 #[path = "../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_linear_cell_complex_3.rs"]
+mod gmap_linear_cell_complex_3;
+#[allow(dead_code)]
+#[path = "../examples/cgal_linear_cell_complex_3_operations.rs"]
+mod linear_cell_complex_3_operations;
+#[allow(dead_code)]
 #[path = "../examples/cgal_linear_cell_complex_4.rs"]
 mod linear_cell_complex_4;
 
@@ -73,6 +79,8 @@ const PORTS: &[(&str, Run, usize, &[usize])] = &[
     ("gmap_3_marks", gmap_3_marks::run, 0, &[]),
     ("gmap_3_operations", gmap_3_operations::run, 0, &[]),
     ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
+    ("gmap_linear_cell_complex_3", gmap_linear_cell_complex_3::run, 0, &[1, 2, 3, 4, 5, 6, 7]),
+    ("linear_cell_complex_3_operations", linear_cell_complex_3_operations::run, 1, &[]),
 ];
 
 #[test]
