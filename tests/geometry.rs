@@ -7,6 +7,9 @@ use gmap::ops::geometry::grid_with_points;
 use gmap::ops::import::PolygonMesh;
 use proptest::prelude::*;
 
+mod common;
+use common::{gmap, p, stderr};
+
 fn close(p: Point, q: Point) -> bool {
     (0..3).all(|k| (p[k] - q[k]).abs() <= 1e-9 * (1.0 + p[k].abs().max(q[k].abs())))
 }
@@ -77,4 +80,22 @@ proptest! {
         prop_assert_eq!(text.lines().nth(1).unwrap().to_string(), format!("{} {} 0", counts[0], counts[2]));
         prop_assert_eq!(text.lines().count(), 2 + counts[0] + counts[2]);
     }
+}
+
+/// A 3-map with points written as `.off` through `gmap convert` is refused, not flattened to
+/// its faces (the 2-skeleton view is a library function, never a conversion); its faces are
+/// still available as that view.
+#[test]
+fn convert_refuses_a_solid_to_off() {
+    let dir = tempfile::tempdir().unwrap();
+    let cube = gmap::ops::geometry::cube_with_points(3).unwrap();
+    let src = dir.path().join("cube.gmap");
+    std::fs::write(&src, gmap::core::io::format_gmap(&cube)).unwrap();
+    let out = dir.path().join("cube.off");
+    let o = gmap(&["convert", p(&src), p(&out)]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("dimension 3"), "{}", stderr(&o));
+    assert!(!out.exists());
+    let (g, _) = GMap::from_dense(&cube);
+    assert_eq!(gmap_two_skeleton_off_string(&g).unwrap().lines().nth(1), Some("8 6 0"));
 }

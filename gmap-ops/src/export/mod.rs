@@ -132,6 +132,16 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
     if map.dim() != 2 {
         return Err(ExportError::Dimension { format: ".off", expected: 2, found: map.dim() });
     }
+    let (out, order) = off_text(map, &map.cells(2))?;
+    same_as_read_back(map, &out, &order)?;
+    Ok(out)
+}
+
+/// The OFF text of the polygons `faces` (one per class, walked by `alpha_0 alpha_1` from its
+/// representative) on the vertices of `map`, and the darts in the order the reader numbers
+/// them: per face, per corner, the dart at the corner and its `alpha_0` image at the next
+/// corner. Refuses a 0- or 1-free dart and a vertex without a finite point. O(N n).
+fn off_text(map: &DenseMap, faces: &Partition) -> Result<(String, Vec<Dart>), ExportError> {
     for d in map.darts() {
         for i in 0..2 {
             if map.is_free(d, i) {
@@ -140,7 +150,6 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
     }
     let verts = map.cells(0);
-    let faces = map.cells(2);
     let mut out = String::new();
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
     for &Dart(r) in &verts.reps {
@@ -150,8 +159,6 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
-    // the darts in the order the reader numbers them: per face, per corner, the dart at the
-    // corner and its alpha_0 image at the next corner
     let mut order: Vec<Dart> = Vec::with_capacity(map.dart_count());
     for &Dart(r) in &faces.reps {
         let mut corners = Vec::new();
@@ -175,8 +182,7 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
         out.push('\n');
     }
-    same_as_read_back(map, &out, &order)?;
-    Ok(out)
+    Ok((out, order))
 }
 
 /// Checks that the `.off` reader makes `text` into `map` again: the reader numbers the darts
@@ -267,46 +273,13 @@ pub fn write_gmap_off<A: Attributes>(g: &GMap<A>, path: &Path) -> Result<(), Exp
 ///
 /// Errors: dimension below 2 ([`ExportError::DimensionBelow`]), a 0- or 1-free dart
 /// ([`ExportError::OpenFace`]), a vertex without a finite point ([`ExportError::NoPoint`],
-/// [`ExportError::NonFinitePoint`]). O(N n).
+/// [`ExportError::NonFinitePoint`]), a face that is not one cycle (only in an invalid map,
+/// [`ExportError::NotAMesh`]). O(N n).
 pub fn two_skeleton_off_string(map: &DenseMap) -> Result<String, ExportError> {
     if map.dim() < 2 {
         return Err(ExportError::DimensionBelow { format: ".off of the 2-skeleton", min: 2, found: map.dim() });
     }
-    for d in map.darts() {
-        for i in 0..2 {
-            if map.is_free(d, i) {
-                return Err(ExportError::OpenFace { dart: d.0, alpha: i });
-            }
-        }
-    }
-    let verts = map.cells(0);
-    let faces = map.partition(AlphaSet::cell(2, map.dim()));
-    let mut out = String::new();
-    let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
-    for &Dart(r) in &verts.reps {
-        let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
-        if !p.iter().all(|c| c.is_finite()) {
-            return Err(ExportError::NonFinitePoint { dart: r });
-        }
-        let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
-    }
-    for &Dart(r) in &faces.reps {
-        let mut corners = Vec::new();
-        let mut d = Dart(r);
-        loop {
-            corners.push(verts.of[d.index()]);
-            d = map.alpha(map.alpha(d, 0), 1);
-            if d.0 == r || corners.len() > map.dart_count() {
-                break;
-            }
-        }
-        let _ = write!(out, "{}", corners.len());
-        for c in corners {
-            let _ = write!(out, " {c}");
-        }
-        out.push('\n');
-    }
-    Ok(out)
+    Ok(off_text(map, &map.partition(AlphaSet::cell(2, map.dim())))?.0)
 }
 
 /// [`two_skeleton_off_string`] of an editable map: its snapshot's, a vertex without a finite
@@ -498,23 +471,8 @@ mod tests {
 
     #[test]
     fn the_two_skeleton_lists_every_face_once() {
-        let p = [
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [0.0, 1.0, 1.0],
-            [0.0, 0.0, 1.0],
-            [1.0, 0.0, 1.0],
-            [1.0, 1.0, 1.0],
-        ];
-        let mut g = GMap::new(3);
-        let a = g.make_hexahedron(p);
-        let b = g.make_hexahedron(p.map(|q| [q[0] + 1.0, q[1], q[2]]));
-        // the face x = 1 of the first (the side p1 p6 p7 p2) against the face x = 1 of the second
-        // (its side p0 p5 p4 p3, reached from its dart at p0 on the edge to p5)
-        let side = g.alpha(g.alpha(g.alpha(g.alpha(a, 0), 1), 0), 2);
-        g.sew(side, g.alpha(b, 2), 3);
+        // two unit cubes sharing a face
+        let (g, _) = GMap::from_dense(&crate::geometry::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap());
         assert_eq!(g.characteristics().cells, vec![12, 20, 11, 2]);
         let text = gmap_two_skeleton_off_string(&g).unwrap();
         let mut lines = text.lines();
