@@ -456,7 +456,9 @@ impl<A: Attributes> GMap<A> {
     /// The barycentre of the i-cell of `d`: the mean of the points of its distinct vertices
     /// (each vertex counted once, however many darts of the cell it has), as CGAL's
     /// `barycenter<i>`. `None` when a vertex of the cell has no point. For `i = 0` it is the
-    /// vertex's point. O(cell size · n).
+    /// vertex's point. Vertices are told apart by the handles of their points, one per vertex
+    /// while the points are consistent ([`GMap::check_attributes`]), so no vertex orbit is
+    /// walked. O(cell size · n).
     ///
     /// # Panics
     /// On a stale handle or `i > n`; [`GMap::try_barycenter`] returns the error.
