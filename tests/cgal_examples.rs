@@ -70,6 +70,12 @@ mod gmap_3_with_colored_facets;
 #[path = "../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_linear_cell_complex_3.rs"]
+mod gmap_linear_cell_complex_3;
+#[allow(dead_code)]
+#[path = "../examples/cgal_linear_cell_complex_3_operations.rs"]
+mod linear_cell_complex_3_operations;
+#[allow(dead_code)]
 #[path = "../examples/cgal_linear_cell_complex_4.rs"]
 mod linear_cell_complex_4;
 
@@ -85,6 +91,8 @@ const PORTS: &[(&str, Run, usize, &[usize])] = &[
     ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
     ("gmap_3_with_colored_facets", gmap_3_with_colored_facets::run, 0, &[1, 2]),
     ("gmap_3_dynamic_onmerge", gmap_3_dynamic_onmerge::run, 0, &[2, 7, 9]),
+    ("gmap_linear_cell_complex_3", gmap_linear_cell_complex_3::run, 0, &[1, 2, 3, 4, 5, 6, 7]),
+    ("linear_cell_complex_3_operations", linear_cell_complex_3_operations::run, 1, &[]),
 ];
 
 #[test]
