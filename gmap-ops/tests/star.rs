@@ -430,3 +430,34 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn insert_barycenter_in_cell_places_the_vertex_at_the_mean_of_the_corners() {
+    let mut g = GMap::new(3);
+    let d = g.make_hexahedron([
+        [0.0, 0.0, 0.0],
+        [2.0, 0.0, 0.0],
+        [2.0, 2.0, 0.0],
+        [0.0, 2.0, 0.0],
+        [0.0, 2.0, 2.0],
+        [0.0, 0.0, 2.0],
+        [2.0, 0.0, 2.0],
+        [2.0, 2.0, 2.0],
+    ]);
+    assert!(is_insertable_barycenter_in_cell(&g, d, 3));
+    let v = insert_barycenter_in_cell(&mut g, d, 3).unwrap();
+    assert_eq!(g.point(v), Some([1.0, 1.0, 1.0]));
+    let c = g.characteristics();
+    assert_eq!((c.darts, c.cells.clone()), (192, vec![9, 20, 18, 6]));
+    g.check().unwrap();
+    // a face of the starred cube: a triangle with a corner at the centre
+    let f = insert_barycenter_in_cell(&mut g, v, 2).unwrap();
+    let p = g.point(f).unwrap();
+    assert!(p.iter().zip([1.0, 1.0, 1.0]).all(|(a, b)| (a - b).abs() < 1.0), "{p:?}");
+    // a map without points has no barycentre
+    let mut bare = GMap::new(3);
+    let e = bare.make_combinatorial_hexahedron();
+    assert!(!is_insertable_barycenter_in_cell(&bare, e, 3));
+    assert_eq!(insert_barycenter_in_cell(&mut bare, e, 3), Err(EulerError::NoPoint { dim: 3, dart: e }));
+    assert_eq!(bare.dart_count(), 48);
+}

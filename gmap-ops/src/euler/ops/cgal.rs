@@ -11,9 +11,9 @@
 //! | CGAL | here (CGAL's name) | ours | precondition / predicate |
 //! | --- | --- | --- | --- |
 //! | `insert_cell_0_in_cell_1(d)` | [`insert_cell_0_in_cell_1`] | [`try_insert_vertex`], [`try_insert_vertex_at`] | [`is_insertable_cell_0_in_cell_1`] = [`can_insert_vertex`]: `n >= 1`, the edge not folded onto itself |
-//! | LCC `insert_barycenter_in_cell<1>(d)` | [`insert_cell_0_in_cell_1`] (the new vertex at the middle when both ends have points) | [`try_insert_vertex`] | as above |
-//! | LCC `insert_point_in_cell<1>(d, p)` | — | [`try_insert_vertex_at`]`(g, d, Some(p))` | as above |
-//! | `insert_cell_0_in_cell_2(d)` | `star::insert_cell_0_in_cell_2` (starring a face from a new vertex) | — | see the `star` module |
+//! | LCC `insert_barycenter_in_cell<i>(d)` | [`insert_barycenter_in_cell`] (any `1 <= i <= n`; for `i = 1` also [`insert_cell_0_in_cell_1`], which puts the vertex at the middle when both ends have points) | [`try_star_cell`]`(g, d, i, g.barycenter(d, i))` | [`is_insertable_barycenter_in_cell`]: every vertex of the cell has a point |
+//! | LCC `insert_point_in_cell<i>(d, p)` | [`insert_point_in_cell`] (any `1 <= i <= n`) | [`try_star_cell`], [`try_insert_vertex_at`] for `i = 1` | [`can_star_cell`]: `1 <= i <= n` |
+//! | `insert_cell_0_in_cell_2(d)` | [`insert_cell_0_in_cell_2`] (a new vertex joined to every corner of the face) | [`try_star_face`] | [`is_insertable_cell_0_in_cell_2`] = [`can_star_face`] |
 //! | `insert_cell_1_in_cell_2(d1, d2)` | [`insert_cell_1_in_cell_2`] | [`try_insert_edge`] (`mef`) | [`is_insertable_cell_1_in_cell_2`] = [`can_insert_edge`]: `n >= 2`, `d2` at another corner of `d1`'s face |
 //! | `insert_dangling_cell_1_in_cell_2(d)` (LCC: `(d, p)`) | [`insert_dangling_cell_1_in_cell_2`] | [`try_insert_dangling_edge`], [`try_insert_dangling_edge_at`] (`mev`) | [`is_insertable_dangling_cell_1_in_cell_2`] = [`can_insert_dangling_edge`]: `n >= 2`, `d` not 1-free |
 //! | `insert_cell_1_between_two_cells_2(d1, d2)` (CGAL 6) | [`insert_cell_1_between_two_cells_2`] | [`try_insert_edge_between_faces`] | [`is_insertable_cell_1_between_two_cells_2`] = [`can_insert_edge_between_faces`]: `d1`, `d2` in different faces with matching corners |
@@ -21,8 +21,9 @@
 //! | `remove_cell<i>(d)` | [`remove_cell`] | [`try_remove_cell`] (`kve`, `kef`, `kfs`, `kev`) | [`is_removable`]: degree 2 and two distinct (i+1)-cells (stricter than CGAL: never changes the space) |
 //! | `contract_cell<i>(d)` | [`contract_cell`] | [`try_contract_cell`] | [`is_contractible`]: dual degree 2, two distinct (i-1)-cells, none on the boundary |
 //! | `close<i>()` | — | [`try_close`] | [`can_close`] |
-//! | `make_combinatorial_hexahedron()` | — | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::cube`](crate::build::cube)`(3)` | — |
-//! | `make_combinatorial_tetrahedron()` | — | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::simplex`](crate::build::simplex)`(3)` | — |
+//! | `make_combinatorial_hexahedron()` | [`GMap::make_combinatorial_hexahedron`](gmap_core::GMap::make_combinatorial_hexahedron) | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::cube`](crate::build::cube)`(3)` | — |
+//! | `make_combinatorial_tetrahedron()` | [`GMap::make_combinatorial_tetrahedron`](gmap_core::GMap::make_combinatorial_tetrahedron) | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::simplex`](crate::build::simplex)`(3)` | — |
+//! | LCC `make_hexahedron(p0, …, p7)`, `make_tetrahedron`, `make_triangle`, `make_quadrangle`, `make_segment` | [`GMap::make_hexahedron`](gmap_core::GMap::make_hexahedron) and the other constructors of [`gmap_core::geometry`] | — | — |
 //!
 //! `insert_cell_2_in_cell_3` takes the path as [`try_split_cell`] takes a cut for `i = 3`:
 //! the darts are one per edge of the path, all in faces on the same side of the new face;
@@ -55,6 +56,11 @@ use super::{
     can_split_cell, contract_cell, is_contractible, is_removable, remove_cell, try_close, try_contract_cell,
     try_insert_dangling_edge, try_insert_dangling_edge_at, try_insert_edge, try_insert_vertex, try_insert_vertex_at,
     try_remove_cell, try_split_cell,
+};
+#[cfg(doc)]
+use super::{
+    can_star_cell, can_star_face, insert_barycenter_in_cell, insert_cell_0_in_cell_2, insert_point_in_cell,
+    is_insertable_barycenter_in_cell, is_insertable_cell_0_in_cell_2, try_star_cell, try_star_face,
 };
 use super::{edge_middle, live, EulerError};
 

@@ -75,8 +75,9 @@ pub use split::{
 };
 pub(crate) use split::{insert_edge_quietly, split_cell_quietly};
 pub use star::{
-    can_star_cell, can_star_face, insert_cell_0_in_cell_2, insert_point_in_cell, is_insertable_cell_0_in_cell_2,
-    star_cell, star_face, try_star_cell, try_star_face, Starred,
+    can_star_cell, can_star_face, insert_barycenter_in_cell, insert_cell_0_in_cell_2, insert_point_in_cell,
+    is_insertable_barycenter_in_cell, is_insertable_cell_0_in_cell_2, star_cell, star_face, try_star_cell,
+    try_star_face, Starred,
 };
 
 /// `Ok` when `d` is a live dart of `g`.

@@ -314,3 +314,22 @@ pub fn insert_point_in_cell<A: Attributes>(
 ) -> Result<DartId, EulerError> {
     try_star_cell(g, d, i, Some(p)).map(|s| s.vertex)
 }
+
+/// Whether [`insert_barycenter_in_cell`] would succeed: the i-cell of `d` can be starred
+/// ([`can_star_cell`]) and every vertex of it has a point. O(size of the cell · n).
+pub fn is_insertable_barycenter_in_cell<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
+    can_star_cell(g, d, i) && g.barycenter(d, i).is_some()
+}
+
+/// CGAL's `insert_barycenter_in_cell`: [`insert_point_in_cell`] at the barycentre of the
+/// i-cell of `d` ([`GMap::barycenter`], the mean of its distinct vertex points), returning a
+/// dart of the new vertex. Refused with [`EulerError::NoPoint`] when a vertex of the cell
+/// has no point, and as [`try_star_cell`] otherwise. O(size of the cell · n) on top of the
+/// star.
+pub fn insert_barycenter_in_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Result<DartId, EulerError> {
+    if !can_star_cell(g, d, i) {
+        return try_star_cell(g, d, i, None).map(|s| s.vertex);
+    }
+    let p = g.barycenter(d, i).ok_or(EulerError::NoPoint { dim: i, dart: d })?;
+    insert_point_in_cell(g, d, i, p)
+}
