@@ -180,3 +180,43 @@ fn estimates_before_allocations() {
         assert_eq!(o.status.code(), Some(2), "{bad}: {}", stderr(&o));
     }
 }
+
+/// Tiny `.cub` and `.pbm` files whose bounding box is huge: refused from the box, before the
+/// bitmap is allocated, with the estimate (one byte a box cube and 9 per point of the doubled
+/// grid) named; `--periodic` and `--max-memory` take the same route.
+#[test]
+fn cubical_bounding_boxes_are_estimated_before_allocation() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: [(&str, &str, &str); 4] = [
+        // 2^30 cubes on a line: 2^30 + 9 (2^31 + 1) bytes
+        ("line.cub", "(0)\n(1073741823)\n", "the bounding box 1073741824 would take an estimated 20401094665 bytes"),
+        (
+            "corners.cub",
+            "(0,0)\n(32767,32767)",
+            "the bounding box 32768 × 32768 would take an estimated 39729627145 bytes",
+        ),
+        ("header.pbm", "P4 99999 99999\n", "the bounding box 99999 × 99999 would take an estimated 369996200010 bytes"),
+        ("header1.pbm", "P1 40000 40000\n", "the bounding box 40000 × 40000 would take an estimated 59201440009 bytes"),
+    ];
+    for (name, text, estimate) in cases {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        for args in [vec!["info", p(&path)], vec!["homology", p(&path)], vec!["homology", p(&path), "--periodic"]] {
+            refused_in_time(gmap_2gb(&args), &[name, estimate, "--max-memory"]);
+        }
+    }
+    assert_eq!(std::fs::metadata(dir.path().join("line.cub")).unwrap().len(), 17);
+    // a 3000 × 3000 box holding two cubes: 9 000 000 + 9 · 6001² bytes
+    let two = dir.path().join("two.cub");
+    std::fs::write(&two, "(0,0)\n(2999,2999)\n").unwrap();
+    let o = common::gmap(&["homology", p(&two), "--max-memory", "300M"]);
+    refused_in_time(
+        (o, Duration::ZERO),
+        &["would take an estimated 333108009 bytes, over the memory limit of 314572800"],
+    );
+    let (o, _) = gmap_2gb(&["homology", p(&two)]);
+    assert!(stdout(&o).contains("H_0 = Z^2\nH_1 = 0\n"), "{}", stderr(&o));
+    // on the torus the two cubes meet at a corner
+    let (o, _) = gmap_2gb(&["homology", p(&two), "--periodic"]);
+    assert!(stdout(&o).contains("H_0 = Z\nH_1 = 0\n"), "{}", stderr(&o));
+}

@@ -124,6 +124,44 @@ pub fn check_memory(what: &str, estimate: Option<u64>) -> Result<(), MemoryLimit
     }
 }
 
+/// Bytes a point of the doubled grid of a cubical set takes while its chain complex is
+/// built (`gmap_homology::cubical`): its state (1 byte), its entry on the collapse stack (4)
+/// and its cell number (4). The matrices of the cells left after the collapses are estimated
+/// apart, from their exact counts.
+pub const CUBICAL_BYTES_PER_POINT: u64 = 9;
+
+/// The points of the doubled grid of a box of `shape` unit cubes, one per cell of the closed
+/// box: `Π (2 L_a + 1)`, or `Π 2 L_a` when `periodic`; `None` past `u64`. O(d).
+///
+/// ```
+/// use gmap_core::resources::cubical_grid_points;
+/// assert_eq!(cubical_grid_points(&[3, 2], false), Some(35));
+/// assert_eq!(cubical_grid_points(&[3, 2], true), Some(24));
+/// assert_eq!(cubical_grid_points(&[1 << 40, 1 << 40], false), None);
+/// ```
+pub fn cubical_grid_points(shape: &[usize], periodic: bool) -> Option<u64> {
+    shape.iter().try_fold(1u64, |v, &l| {
+        let n = (l as u64).checked_mul(2)?.checked_add(u64::from(!periodic))?;
+        v.checked_mul(n)
+    })
+}
+
+/// The estimated bytes of a cubical set on a box of `shape` cubes and of the grid its
+/// chain complex is built on: one byte a box cube (the bitmap) and
+/// [`CUBICAL_BYTES_PER_POINT`] per point of the doubled grid (the larger, non-periodic one);
+/// `None` past `u64`. The readers of `.cub` and `.pbm` files check it from the bounding box
+/// before the bitmap is allocated. O(d).
+///
+/// ```
+/// use gmap_core::resources::cubical_set_estimate;
+/// // a 1 × 2^30 box: a 1 GiB bitmap and a grid of 3 × (2^31 + 1) points
+/// assert_eq!(cubical_set_estimate(&[1, 1 << 30]), Some((1 << 30) + 9 * 3 * ((1 << 31) + 1)));
+/// ```
+pub fn cubical_set_estimate(shape: &[usize]) -> Option<u64> {
+    let volume = shape.iter().try_fold(1u64, |v, &l| v.checked_mul(l as u64))?;
+    cubical_grid_points(shape, false)?.checked_mul(CUBICAL_BYTES_PER_POINT)?.checked_add(volume)
+}
+
 /// `MemTotal` of `/proc/meminfo` in bytes, where it can be read.
 pub fn physical_memory() -> Option<u64> {
     meminfo("MemTotal:")
