@@ -395,10 +395,10 @@ pub fn run(o: &Options) -> Result<()> {
         outln!("euler characteristic {}", h.euler_characteristic())?;
         if let Some(g) = &gens {
             for x in g {
-                let order = match (x.order, o.field) {
-                    (0, None) => "Z".to_string(),
-                    (0, Some(p)) => format!("Z/{p}"),
-                    (t, _) => format!("Z/{t}"),
+                let order = match (x.order.to_u64(), o.field) {
+                    (Some(0), None) => "Z".to_string(),
+                    (Some(0), Some(p)) => format!("Z/{p}"),
+                    _ => format!("Z/{}", x.order),
                 };
                 let terms: Vec<String> = x
                     .chain
