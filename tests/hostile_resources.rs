@@ -220,3 +220,59 @@ fn cubical_bounding_boxes_are_estimated_before_allocation() {
     let (o, _) = gmap_2gb(&["homology", p(&two), "--periodic"]);
     assert!(stdout(&o).contains("H_0 = Z\nH_1 = 0\n"), "{}", stderr(&o));
 }
+
+/// `--simplify` on the periodic G-map of a set of 20 cubes (960 darts, every cell meeting
+/// itself): the search past plateaus tried up to 400 splits per round, each checked on the
+/// whole map, for up to 4000 rounds (seconds); its work is now bounded by `2304 · search`
+/// darts plus one round, and the groups are kept.
+#[test]
+fn simplify_of_a_periodic_cube_set_is_bounded() {
+    let cubes = [
+        [0, 0, 0],
+        [1, 0, 0],
+        [2, 0, 0],
+        [0, 1, 0],
+        [1, 1, 0],
+        [1, 2, 0],
+        [2, 2, 0],
+        [0, 0, 1],
+        [2, 0, 1],
+        [1, 1, 1],
+        [2, 1, 1],
+        [2, 2, 1],
+        [0, 0, 2],
+        [1, 0, 2],
+        [2, 0, 2],
+        [1, 1, 2],
+        [2, 1, 2],
+        [0, 2, 2],
+        [1, 2, 2],
+        [2, 2, 2],
+    ];
+    let text: String = cubes.iter().map(|c| format!("({},{},{})\n", c[0], c[1], c[2])).collect();
+    let map = gmap_ops::import::cubical::parse_cub(text.as_bytes()).unwrap().gmap(true).unwrap();
+    assert_eq!(map.dart_count(), 960);
+    let groups = |m: &gmap_core::DenseMap| {
+        gmap_homology::homology_z(&gmap_homology::cellular_complex(m).unwrap().chain).unwrap().to_string()
+    };
+    let before = groups(&map);
+    assert_eq!(before, "(Z, Z^3, Z, 0)");
+    let options = gmap_ops::euler::SimplifyOptions::for_map(&map);
+    let (small, report) = gmap_ops::euler::simplify_with(&map, &options);
+    assert_eq!(groups(&small), before);
+    assert!(small.dart_count() < 100, "{}", small.dart_count());
+    // 2304 · 4000 darts, plus one round of at most 400 tries on a map of at most 1100 darts
+    assert!(report.search_work <= 2304 * 4000 + 400 * 1100 + 1100, "{}", report.search_work);
+    assert!(report.search_rounds < 4000, "{}", report.search_rounds);
+    // the same map from the command line
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cubes20.gmap");
+    gmap_core::io::write_gmap(&map, &path).unwrap();
+    let (plain, _) = gmap_2gb(&["homology", p(&path)]);
+    let (o, t) = gmap_2gb(&["homology", p(&path), "--simplify"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(t < Duration::from_secs(30), "took {t:?}");
+    let groups_of = |s: String| s.lines().filter(|l| l.starts_with("H_")).collect::<Vec<_>>().join("\n");
+    assert_eq!(groups_of(stdout(&o)), groups_of(stdout(&plain)));
+    assert_eq!(groups_of(stdout(&o)), "H_0 = Z\nH_1 = Z^3\nH_2 = Z\nH_3 = 0");
+}
