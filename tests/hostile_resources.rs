@@ -276,3 +276,86 @@ fn simplify_of_a_periodic_cube_set_is_bounded() {
     assert_eq!(groups_of(stdout(&o)), groups_of(stdout(&plain)));
     assert_eq!(groups_of(stdout(&o)), "H_0 = Z\nH_1 = Z^3\nH_2 = Z\nH_3 = 0");
 }
+
+/// The map of `base` (a `k`-map) lifted to a 14-map: its darts `base × {0,1}^(14-k)`, each
+/// `alpha_j`, `j > k`, swapping the two copies that differ in bit `j - k - 1` (the iterated
+/// suspension of `base`, cells of dimension above `k` in pairs), or free where `flip` says
+/// no. `2^(14-k)` times the darts of `base`.
+fn lifted_to_14(base: &gmap_core::DenseMap, flip: &[bool]) -> gmap_core::DenseMap {
+    let (k, b) = (base.dim(), base.dart_count());
+    let m = 14 - k;
+    let mut flat = Vec::with_capacity((b << m) * 15);
+    for c in 0..1usize << m {
+        for d in 0..b {
+            flat.extend(base.flat()[d * (k + 1)..(d + 1) * (k + 1)].iter().map(|&x| (c * b) as u32 + x));
+            flat.extend((0..m).map(|j| if flip[j] { ((c ^ (1 << j)) * b + d) as u32 } else { (c * b + d) as u32 }));
+        }
+    }
+    gmap_core::DenseMap::try_from_flat(14, flat).unwrap()
+}
+
+/// 14-maps of 2.8 MB and more (25,000 to 40,000 darts): the 14-sphere of two cells in every
+/// dimension (32,768 darts, the size of the reproducer), the suspensions of a triangle and of
+/// a torus, a lens space lifted with some involutions free, and a polygon of 30,000 darts
+/// (long orbits) with every other involution free. Each run answers with the right groups or
+/// refuses with `error:` (C1 or C2 failing), well within 60 s under 2 GB.
+#[test]
+fn fourteen_dimensional_maps() {
+    let dir = tempfile::tempdir().unwrap();
+    let polygon = |sides: u32| {
+        let n = 2 * sides;
+        let flat = (0..n).flat_map(|d| [d ^ 1, if d % 2 == 1 { (d + 1) % n } else { (d + n - 1) % n }]).collect();
+        gmap_core::DenseMap::try_from_flat(1, flat).unwrap()
+    };
+    let globe = lifted_to_14(&polygon(2), &[true; 13]);
+    let triangle = lifted_to_14(&polygon(3), &[true; 13]);
+    let torus = lifted_to_14(&gmap_core::examples::torus(), &[true; 12]);
+    let mut some = [true; 11];
+    some[4] = false;
+    let lens = lifted_to_14(&gmap_ops::build::lens_space(5, 1).unwrap(), &some);
+    let long = {
+        let p = polygon(15_000);
+        let flat: Vec<u32> = (0..30_000u32)
+            .flat_map(|d| p.flat()[2 * d as usize..2 * d as usize + 2].to_vec().into_iter().chain([d; 13]))
+            .collect();
+        gmap_core::DenseMap::try_from_flat(14, flat).unwrap()
+    };
+    assert_eq!(
+        [globe.dart_count(), triangle.dart_count(), torus.dart_count(), lens.dart_count(), long.dart_count()],
+        [32_768, 49_152, 32_768, 40_960, 30_000]
+    );
+    let sphere = "H_0 = Z\n".to_string() + &(1..14).map(|k| format!("H_{k} = 0\n")).collect::<String>() + "H_14 = Z\n";
+    let cases: [(&str, &gmap_core::DenseMap, Result<&str, &str>); 5] = [
+        ("globe", &globe, Ok(&sphere)),
+        ("triangle", &triangle, Ok(&sphere)),
+        ("torus", &torus, Err("the 3-cell of dart 0 is not bounded by a sphere")),
+        (
+            "lens",
+            &lens,
+            Err("the 4-cell of dart 0 is not bounded by a sphere: its boundary has homology (Z, Z/5, 0, Z)"),
+        ),
+        ("long", &long, Err("has no neighbour along alpha_2")),
+    ];
+    for (name, map, expected) in cases {
+        let path = dir.path().join(format!("{name}.gmap"));
+        gmap_core::io::write_gmap(map, &path).unwrap();
+        if name == "globe" {
+            assert_eq!(std::fs::metadata(&path).unwrap().len(), 2_782_484);
+        }
+        let (o, t) = gmap_2gb(&["info", p(&path)]);
+        assert!(o.status.success() && t < Duration::from_secs(30), "{name}: {} {t:?}", stderr(&o));
+        for extra in [None, Some("--simplify"), Some("--generators")] {
+            let mut args = vec!["homology", p(&path)];
+            args.extend(extra);
+            let (o, t) = gmap_2gb(&args);
+            match expected {
+                Ok(groups) => {
+                    assert!(o.status.success(), "{name} {extra:?}: {}", stderr(&o));
+                    assert!(stdout(&o).contains(groups), "{name} {extra:?}: {}", stdout(&o));
+                    assert!(t < Duration::from_secs(30), "{name} {extra:?} took {t:?}");
+                }
+                Err(why) => refused_in_time((o, t), &[name, why]),
+            }
+        }
+    }
+}
