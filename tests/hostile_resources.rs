@@ -359,3 +359,31 @@ fn fourteen_dimensional_maps() {
         }
     }
 }
+
+/// Whatever the memory limit, one 11-vertex facet (23 bytes) is refused at once: the default
+/// dart limit of the facets import is also what `2^30` dart visits can analyse
+/// (`gmap_core::resources::max_darts_for_work`: 8,873,899 darts in dimension 10, against
+/// 11! = 39,916,800); an explicit `--max-darts` is the way past it.
+#[test]
+fn eleven_vertex_facet_under_a_large_memory_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let one = dir.path().join("one.facets");
+    std::fs::write(&one, "0 1 2 3 4 5 6 7 8 9 10\n").unwrap();
+    assert_eq!(gmap_core::resources::max_darts_for_work(10), 8_873_899);
+    for cmd in ["info", "convert"] {
+        let out = dir.path().join("one.gmap");
+        let mut args = vec![cmd, p(&one)];
+        if cmd == "convert" {
+            args.push(p(&out));
+        }
+        args.extend(["--max-memory", "1T"]);
+        let t = Instant::now();
+        let o = common::gmap(&args);
+        refused_in_time(
+            (o, t.elapsed()),
+            &["one.facets", "1 facets of dimension 10 make 39916800 darts", "--max-darts"],
+        );
+        assert!(t.elapsed() < Duration::from_secs(10), "{:?}", t.elapsed());
+        assert!(!out.exists());
+    }
+}

@@ -9,6 +9,11 @@
 //! is allocated. Every reader, the simplicial counterpart, the face poset and the dense
 //! stage of the Smith normal form take their limits from here ([`memory_budget`]).
 //!
+//! Time is bounded the same way where a few bytes of input describe a large map: the
+//! default dart limit of the imports that build a map from facets, polygons or a face
+//! poset is also at most what [`DEFAULT_MAX_WORK`] dart visits can analyse
+//! ([`max_darts_for_work`]); `--max-darts` given explicitly replaces it.
+//!
 //! The machine's figures are read from `/proc/meminfo` and `/proc/self/limits` (Linux);
 //! where they cannot be read, the default is [`FALLBACK_MAX_MEMORY`].
 
@@ -122,6 +127,40 @@ pub fn check_memory(what: &str, estimate: Option<u64>) -> Result<(), MemoryLimit
         Some(e) if e <= limit => Ok(()),
         _ => Err(MemoryLimit { what: what.to_string(), estimate, limit }),
     }
+}
+
+/// The default work limit of a map built from a short description (the G-map of `.facets`,
+/// `.lex` or `.off` input, of a face poset): `2^30` dart visits, about 20 seconds of
+/// analysis. A file of a few bytes can describe a map whose memory fits the limit but whose
+/// cells, orientation and validity take minutes to compute (one 11-vertex facet: 11! darts in
+/// dimension 10); the default dart limit of those imports is therefore also at most
+/// [`max_darts_for_work`]. An explicit `--max-darts` replaces both.
+pub const DEFAULT_MAX_WORK: u64 = 1 << 30;
+
+/// The work of analysing an n-map of `darts` darts, in dart visits: `darts · (n + 1)²`
+/// (n + 1 cell partitions, each visiting every dart once per involution); `None` past `u64`.
+///
+/// ```
+/// use gmap_core::resources::map_work;
+/// assert_eq!(map_work(39_916_800, 10), Some(4_829_932_800)); // 11! darts: over 2^30
+/// assert_eq!(map_work(3_628_800, 9), Some(362_880_000)); // 10! darts: under
+/// ```
+pub fn map_work(darts: u64, dim: usize) -> Option<u64> {
+    let w = (dim as u64).checked_add(1)?;
+    darts.checked_mul(w.checked_mul(w)?)
+}
+
+/// The most darts an n-map built from a short description may have by default:
+/// [`DEFAULT_MAX_WORK`]` / (n + 1)²` (see [`map_work`]). O(1).
+///
+/// ```
+/// use gmap_core::resources::max_darts_for_work;
+/// assert_eq!(max_darts_for_work(10), 8_873_899);
+/// assert_eq!(max_darts_for_work(2), 119_304_647);
+/// ```
+pub fn max_darts_for_work(dim: usize) -> u64 {
+    let w = (dim as u64).saturating_add(1);
+    DEFAULT_MAX_WORK / w.saturating_mul(w)
 }
 
 /// Bytes a point of the doubled grid of a cubical set takes while its chain complex is
