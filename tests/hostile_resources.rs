@@ -387,3 +387,32 @@ fn eleven_vertex_facet_under_a_large_memory_limit() {
         assert!(!out.exists());
     }
 }
+
+/// The simplicial counterpart of a one-dart n-map is the full simplex on n + 1 vertices
+/// after subdivision: `2^(n+1) (n + 2)` simplices whose reduction costs about `(n + 1)^2`
+/// each. Held to the work limit of 2^30: n = 17 (1,613,758,464 steps, half a minute and more
+/// before) is refused at once, whatever the memory limit; n = 12 is answered.
+#[test]
+fn one_dart_maps_by_the_simplicial_method() {
+    let dir = tempfile::tempdir().unwrap();
+    let one = |n: usize| {
+        let path = dir.path().join(format!("one{n}.gmap"));
+        std::fs::write(&path, format!("gmap {n} 1\n{}\n", vec!["0"; n + 1].join(" "))).unwrap();
+        path
+    };
+    let p17 = one(17);
+    let t = Instant::now();
+    let o = common::gmap(&["homology", p(&p17), "--method", "simplicial", "--max-memory", "1T"]);
+    refused_in_time(
+        (o, t.elapsed()),
+        &["one17.gmap", "an estimated 1613758464 steps, over the work limit of 1073741824"],
+    );
+    assert!(t.elapsed() < Duration::from_secs(5));
+    let (o, t) = gmap_2gb(&["homology", p(&one(12)), "--method", "simplicial"]);
+    assert!(o.status.success() && t < Duration::from_secs(30), "{} {t:?}", stderr(&o));
+    assert!(
+        stdout(&o).contains("H_0 = Z\nH_1 = 0\n") && stdout(&o).contains("euler characteristic 1"),
+        "{}",
+        stdout(&o)
+    );
+}
