@@ -316,7 +316,7 @@ fn fourteen_dimensional_maps() {
     let long = {
         let p = polygon(15_000);
         let flat: Vec<u32> = (0..30_000u32)
-            .flat_map(|d| p.flat()[2 * d as usize..2 * d as usize + 2].to_vec().into_iter().chain([d; 13]))
+            .flat_map(|d| p.flat()[2 * d as usize..2 * d as usize + 2].iter().copied().chain([d; 13]))
             .collect();
         gmap_core::DenseMap::try_from_flat(14, flat).unwrap()
     };
