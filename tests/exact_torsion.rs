@@ -68,3 +68,32 @@ fn cli_prints_the_exact_digits() {
     let o = gmap(&["homology", path.to_str().unwrap(), "--json"]);
     assert!(stdout(&o).contains("\"torsion\":[[],[2],[],[]]"), "{}", stdout(&o));
 }
+
+/// The generator of the torsion summand carries the exact order, in the library, in the text
+/// form and as a JSON number.
+#[test]
+fn generators_of_torsion_beyond_two_to_the_64() {
+    let m = lens_union(&primes(53));
+    let c = cellular_complex(&m).unwrap();
+    let g = gmap_homology::generators::generators(&c.chain, None).unwrap();
+    let p53: Natural = P53.parse().unwrap();
+    let torsion: Vec<_> = g.iter().filter(|x| x.order != 0).map(|x| (x.dim, x.order.clone())).collect();
+    assert_eq!(torsion, vec![(1, p53)]);
+    assert_eq!(g.iter().filter(|x| x.order == 0).count(), 32);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lens53.gmap");
+    gmap_core::io::write_gmap(&m, &path).unwrap();
+    let file = path.to_str().unwrap();
+    let o = gmap(&["homology", file, "--generators"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert_eq!(out.matches(&format!("generator of H_1 (Z/{P53}): ")).count(), 1, "{out}");
+    let o = gmap(&["homology", file, "--generators", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains(&format!("\"order\":{P53}")), "{out}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let orders: Vec<String> = v["generators"].as_array().unwrap().iter().map(|x| x["order"].to_string()).collect();
+    assert_eq!(orders.iter().filter(|o| *o == P53).count(), 1);
+    assert_eq!(orders.iter().filter(|o| *o == "0").count(), 32);
+}

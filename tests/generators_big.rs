@@ -6,7 +6,7 @@ use gmap_homology::{cellular_complex, homology_z, simplicial_complex};
 use gmap_ops::build;
 
 fn orders(g: &[gmap_homology::generators::Generator], k: usize) -> Vec<u64> {
-    g.iter().filter(|x| x.dim == k).map(|x| x.order).collect()
+    g.iter().filter(|x| x.dim == k).map(|x| x.order.to_u64().expect("a small order")).collect()
 }
 
 #[test]

@@ -9,6 +9,11 @@
 //! is allocated. Every reader, the simplicial counterpart, the face poset and the dense
 //! stage of the Smith normal form take their limits from here ([`memory_budget`]).
 //!
+//! Time is bounded the same way where a few bytes of input describe a large map: the
+//! default dart limit of the imports that build a map from facets, polygons or a face
+//! poset is also at most what [`DEFAULT_MAX_WORK`] dart visits can analyse
+//! ([`max_darts_for_work`]); `--max-darts` given explicitly replaces it.
+//!
 //! The machine's figures are read from `/proc/meminfo` and `/proc/self/limits` (Linux);
 //! where they cannot be read, the default is [`FALLBACK_MAX_MEMORY`].
 
@@ -122,6 +127,78 @@ pub fn check_memory(what: &str, estimate: Option<u64>) -> Result<(), MemoryLimit
         Some(e) if e <= limit => Ok(()),
         _ => Err(MemoryLimit { what: what.to_string(), estimate, limit }),
     }
+}
+
+/// The default work limit of a map built from a short description (the G-map of `.facets`,
+/// `.lex` or `.off` input, of a face poset): `2^30` dart visits, about 20 seconds of
+/// analysis. A file of a few bytes can describe a map whose memory fits the limit but whose
+/// cells, orientation and validity take minutes to compute (one 11-vertex facet: 11! darts in
+/// dimension 10); the default dart limit of those imports is therefore also at most
+/// [`max_darts_for_work`]. An explicit `--max-darts` replaces both.
+pub const DEFAULT_MAX_WORK: u64 = 1 << 30;
+
+/// The work of analysing an n-map of `darts` darts, in dart visits: `darts · (n + 1)²`
+/// (n + 1 cell partitions, each visiting every dart once per involution); `None` past `u64`.
+///
+/// ```
+/// use gmap_core::resources::map_work;
+/// assert_eq!(map_work(39_916_800, 10), Some(4_829_932_800)); // 11! darts: over 2^30
+/// assert_eq!(map_work(3_628_800, 9), Some(362_880_000)); // 10! darts: under
+/// ```
+pub fn map_work(darts: u64, dim: usize) -> Option<u64> {
+    let w = (dim as u64).checked_add(1)?;
+    darts.checked_mul(w.checked_mul(w)?)
+}
+
+/// The most darts an n-map built from a short description may have by default:
+/// [`DEFAULT_MAX_WORK`]` / (n + 1)²` (see [`map_work`]). O(1).
+///
+/// ```
+/// use gmap_core::resources::max_darts_for_work;
+/// assert_eq!(max_darts_for_work(10), 8_873_899);
+/// assert_eq!(max_darts_for_work(2), 119_304_647);
+/// ```
+pub fn max_darts_for_work(dim: usize) -> u64 {
+    let w = (dim as u64).saturating_add(1);
+    DEFAULT_MAX_WORK / w.saturating_mul(w)
+}
+
+/// Bytes a point of the doubled grid of a cubical set takes while its chain complex is
+/// built (`gmap_homology::cubical`): its state (1 byte), its entry on the collapse stack (4)
+/// and its cell number (4). The matrices of the cells left after the collapses are estimated
+/// apart, from their exact counts.
+pub const CUBICAL_BYTES_PER_POINT: u64 = 9;
+
+/// The points of the doubled grid of a box of `shape` unit cubes, one per cell of the closed
+/// box: `Π (2 L_a + 1)`, or `Π 2 L_a` when `periodic`; `None` past `u64`. O(d).
+///
+/// ```
+/// use gmap_core::resources::cubical_grid_points;
+/// assert_eq!(cubical_grid_points(&[3, 2], false), Some(35));
+/// assert_eq!(cubical_grid_points(&[3, 2], true), Some(24));
+/// assert_eq!(cubical_grid_points(&[1 << 40, 1 << 40], false), None);
+/// ```
+pub fn cubical_grid_points(shape: &[usize], periodic: bool) -> Option<u64> {
+    shape.iter().try_fold(1u64, |v, &l| {
+        let n = (l as u64).checked_mul(2)?.checked_add(u64::from(!periodic))?;
+        v.checked_mul(n)
+    })
+}
+
+/// The estimated bytes of a cubical set on a box of `shape` cubes and of the grid its
+/// chain complex is built on: one byte a box cube (the bitmap) and
+/// [`CUBICAL_BYTES_PER_POINT`] per point of the doubled grid (the larger, non-periodic one);
+/// `None` past `u64`. The readers of `.cub` and `.pbm` files check it from the bounding box
+/// before the bitmap is allocated. O(d).
+///
+/// ```
+/// use gmap_core::resources::cubical_set_estimate;
+/// // a 1 × 2^30 box: a 1 GiB bitmap and a grid of 3 × (2^31 + 1) points
+/// assert_eq!(cubical_set_estimate(&[1, 1 << 30]), Some((1 << 30) + 9 * 3 * ((1 << 31) + 1)));
+/// ```
+pub fn cubical_set_estimate(shape: &[usize]) -> Option<u64> {
+    let volume = shape.iter().try_fold(1u64, |v, &l| v.checked_mul(l as u64))?;
+    cubical_grid_points(shape, false)?.checked_mul(CUBICAL_BYTES_PER_POINT)?.checked_add(volume)
 }
 
 /// `MemTotal` of `/proc/meminfo` in bytes, where it can be read.

@@ -134,23 +134,27 @@ fn cellular<'a>(map: &DenseMap, file: &str, sc: Option<&'a SimplicialComplex>) -
     Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
 }
 
-/// The most work [`simplicial`] takes on: the simplicial counterpart of an n-map of N darts
-/// has up to `2^(n+1) N` simplices, and building it visits the `2^(n+1)` vertex sets of a
-/// flag once per dimension even without darts.
-const SIMPLICIAL_WORK_LIMIT: u128 = 1 << 27;
-
 /// Refuses a map whose simplicial counterpart is too big to build (exponential in the
-/// dimension): `gmap 30 1` would ask for 2^31 simplices; then one over the memory limit.
+/// dimension): an n-map of N darts has up to `2^(n+1) (N + n + 1)` simplices (building it
+/// visits the `2^(n+1)` vertex sets of a flag once per dimension even without darts), and
+/// their reduction costs about `n + 1` squared per simplex (the faces of a simplex are
+/// many and dense); that product is held to the workspace's work limit
+/// ([`gmap_core::resources::DEFAULT_MAX_WORK`]: a one-dart 16-map is built in seconds, a
+/// one-dart 17-map is refused, `gmap 30 1` asks for 2^31 simplices); then the memory is
+/// checked against the memory limit.
 fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
     let n = map.dim() as u32;
     let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
-    if work > SIMPLICIAL_WORK_LIMIT {
+    let visits = work * (u128::from(n) + 1) * (u128::from(n) + 1);
+    if visits > u128::from(gmap_core::resources::DEFAULT_MAX_WORK) {
         bail!(
             "{file}: the simplicial counterpart of a {n}-map of {} darts has up to 2^{} x {} simplices, too many to \
-             build; the cellular method works on the cells themselves",
+             build (an estimated {visits} steps, over the work limit of {}); the cellular method works on the \
+             cells themselves",
             map.dart_count(),
             n + 1,
-            map.dart_count().max(1)
+            map.dart_count().max(1),
+            gmap_core::resources::DEFAULT_MAX_WORK
         );
     }
     // each simplex: its flag (dart and vertex set), its key and its n + 1 boundary entries
@@ -395,10 +399,10 @@ pub fn run(o: &Options) -> Result<()> {
         outln!("euler characteristic {}", h.euler_characteristic())?;
         if let Some(g) = &gens {
             for x in g {
-                let order = match (x.order, o.field) {
-                    (0, None) => "Z".to_string(),
-                    (0, Some(p)) => format!("Z/{p}"),
-                    (t, _) => format!("Z/{t}"),
+                let order = match (x.order.to_u64(), o.field) {
+                    (Some(0), None) => "Z".to_string(),
+                    (Some(0), Some(p)) => format!("Z/{p}"),
+                    _ => format!("Z/{}", x.order),
                 };
                 let terms: Vec<String> = x
                     .chain

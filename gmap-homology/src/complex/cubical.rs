@@ -41,6 +41,9 @@ pub enum CubicalError {
         /// the limit
         limit: u64,
     },
+    /// The estimated memory is over the limit (`--max-memory`).
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
     /// Memory could not be had.
     #[error("cannot allocate {bytes} bytes for {what}")]
     OutOfMemory {
@@ -170,6 +173,11 @@ pub fn cubical_complex_with(
             limit: MAX_GRID_POINTS,
         });
     };
+    // the grid, its collapse stack and its cell numbers, before any of them is allocated
+    gmap_core::resources::check_memory(
+        &format!("the cubical grid of {} points", n.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × ")),
+        len.checked_mul(gmap_core::resources::CUBICAL_BYTES_PER_POINT),
+    )?;
     let len = len as usize;
     let mut stride = vec![1usize; d];
     for a in 1..d {
@@ -309,6 +317,12 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
             coord[a] = 0;
         }
     }
+    // the matrices: per k-cell its grid point, its column pointer and 2k entries
+    let matrix_bytes = counts.iter().enumerate().try_fold(0u64, |sum, (k, &c)| {
+        let per = 16u64.checked_add((2 * k as u64).checked_mul(12)?)?;
+        sum.checked_add((c as u64).checked_mul(per)?)
+    });
+    gmap_core::resources::check_memory("the boundary matrices of the cubical complex", matrix_bytes)?;
     let mut col_ptr: Vec<Vec<usize>> = (0..=d).map(|k| Vec::with_capacity(counts[k] + 1)).collect();
     let mut rows: Vec<Vec<u32>> = (0..=d).map(|k| Vec::with_capacity(2 * k * counts[k])).collect();
     let mut vals: Vec<Vec<i64>> = (0..=d).map(|k| Vec::with_capacity(2 * k * counts[k])).collect();

@@ -23,7 +23,8 @@
 use crate::engine::chain::ChainComplex;
 use crate::engine::homology::{is_prime, HomologyError};
 use crate::engine::morse::{lift, prereduce};
-use crate::engine::ring::{Euclid, Zi64, Zp};
+use crate::engine::natural::Natural;
+use crate::engine::ring::{Euclid, ZBig, Zi64, Zp};
 use crate::engine::snf::smith_tracked;
 
 /// Largest number of cells in one dimension of the reduced complex for which generators are
@@ -35,8 +36,9 @@ pub const GENERATOR_CELL_LIMIT: usize = 2000;
 pub struct Generator {
     /// the dimension k of the homology group
     pub dim: usize,
-    /// the order of the summand: 0 for `Z` (or the field), `t > 1` for `Z/t`
-    pub order: u64,
+    /// the order of the summand: 0 for `Z` (or the field), `t > 1` for `Z/t`, exact at
+    /// any size
+    pub order: Natural,
     /// the cycle: `(k-cell index, coefficient)`, non-zero coefficients, increasing cells
     pub chain: Vec<(u32, i64)>,
 }
@@ -49,12 +51,17 @@ pub struct Generator {
 /// use gmap_homology::{cellular_complex, generators::generators};
 /// let c = cellular_complex(&gmap_core::examples::klein_bottle()).unwrap();
 /// let g = generators(&c.chain, None).unwrap();
-/// let orders: Vec<(usize, u64)> = g.iter().map(|x| (x.dim, x.order)).collect();
+/// let orders: Vec<(usize, u64)> = g.iter().map(|x| (x.dim, x.order.to_u64().unwrap())).collect();
 /// assert_eq!(orders, vec![(0, 0), (1, 0), (1, 2)]);
 /// ```
 pub fn generators(c: &ChainComplex, field: Option<u64>) -> Result<Vec<Generator>, HomologyError> {
     match field {
-        None => reduced_then_lifted(&Zi64, c),
+        // machine words first; big integers where they overflow (a torsion coefficient or an
+        // intermediate entry past `i64`)
+        None => match reduced_then_lifted(&Zi64, c) {
+            Err(HomologyError::GeneratorOverflow) => reduced_then_lifted(&ZBig, c),
+            other => other,
+        },
         Some(p) => {
             if !is_prime(p) || p >= 1 << 31 {
                 return Err(HomologyError::NotPrime(p));
@@ -211,17 +218,20 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
                     z[i] = v;
                 }
             }
-            out.push((k, 0u64, z));
+            out.push((k, Natural::from(0u64), z));
         }
         for (i, d) in diag.iter().enumerate() {
             if !ring.is_unit(d) {
-                out.push((k, ring.abs_u64(d)?, p[i].clone()));
+                out.push((k, ring.abs_natural(d), p[i].clone()));
             }
         }
     }
     // order: per dimension free generators first, then torsion (already so); check cycles
     let mut res = Vec::with_capacity(out.len());
-    for (k, order, z) in out {
+    for (k, order, mut z) in out {
+        if k + 1 < n1 {
+            reduce_by_single_boundaries(ring, c.boundary(k + 1), &mut z)?;
+        }
         if k >= 1 {
             let b = c.boundary(k);
             let mut v = vec![zero.clone(); b.rows()];
@@ -244,6 +254,29 @@ fn compute<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Vec<Generator
     Some(Ok(res))
 }
 
+/// Makes the coefficients of a cycle small without changing its class: where a column of
+/// `∂_{k+1}` is `m e_r` (one non-zero entry), `m e_r` is a boundary and the coefficient of
+/// `e_r` is reduced modulo `m`. The tracked Smith form gives a torsion generator of `Z/N`
+/// coefficients of the size of `N`; on a sum of cyclic summands (a union of lens spaces) this
+/// brings them back below the orders of the summands. O(entries of `∂_{k+1}`); `None` on
+/// overflow.
+fn reduce_by_single_boundaries<R: Euclid>(
+    ring: &R,
+    b: &crate::engine::sparse::SparseMatrix,
+    z: &mut [R::E],
+) -> Option<()> {
+    for j in 0..b.cols() {
+        let (ri, rv) = b.col(j);
+        if let ([r], [m]) = (ri, rv) {
+            let r = *r as usize;
+            if !ring.is_zero(&z[r]) {
+                z[r] = ring.div_rem(&z[r], &ring.of_i64(*m))?.1;
+            }
+        }
+    }
+    Some(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -259,7 +292,8 @@ mod tests {
             let g = generators(&c, None).unwrap();
             for k in 0..h.betti.len() {
                 let free = g.iter().filter(|x| x.dim == k && x.order == 0).count();
-                let tors: Vec<u64> = g.iter().filter(|x| x.dim == k && x.order > 0).map(|x| x.order).collect();
+                let tors: Vec<Natural> =
+                    g.iter().filter(|x| x.dim == k && x.order != 0).map(|x| x.order.clone()).collect();
                 assert_eq!(free, h.betti[k]);
                 assert_eq!(tors, h.torsion[k]);
             }

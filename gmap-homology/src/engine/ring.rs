@@ -38,8 +38,6 @@ pub(crate) trait Euclid: Ring {
     fn abs_cmp(&self, a: &Self::E, b: &Self::E) -> Ordering;
     /// `a + b`.
     fn add(&self, a: &Self::E, b: &Self::E) -> Option<Self::E>;
-    /// `|a|` as a `u64`, if it fits.
-    fn abs_u64(&self, a: &Self::E) -> Option<u64>;
     /// `a` as an `i64` (over `Z/p`: its representative in `0..p`), if it fits.
     fn to_i64(&self, a: &Self::E) -> Option<i64>;
     /// `|a|` exactly (over `Z/p`: the representative in `0..p`).
@@ -88,9 +86,6 @@ impl Euclid for Zi64 {
     fn add(&self, a: &i64, b: &i64) -> Option<i64> {
         a.checked_add(*b)
     }
-    fn abs_u64(&self, a: &i64) -> Option<u64> {
-        Some(a.unsigned_abs())
-    }
     fn to_i64(&self, a: &i64) -> Option<i64> {
         Some(*a)
     }
@@ -131,9 +126,6 @@ impl Euclid for ZBig {
     }
     fn add(&self, a: &BigInt, b: &BigInt) -> Option<BigInt> {
         Some(a + b)
-    }
-    fn abs_u64(&self, a: &BigInt) -> Option<u64> {
-        a.abs().to_u64()
     }
     fn to_i64(&self, a: &BigInt) -> Option<i64> {
         a.to_i64()
@@ -207,9 +199,6 @@ impl Euclid for Zp {
     fn add(&self, a: &u64, b: &u64) -> Option<u64> {
         Some((*a + *b) % self.p)
     }
-    fn abs_u64(&self, a: &u64) -> Option<u64> {
-        Some(*a)
-    }
     fn to_i64(&self, a: &u64) -> Option<i64> {
         i64::try_from(*a).ok()
     }
@@ -236,6 +225,6 @@ mod tests {
     fn checked_overflow() {
         assert_eq!(Zi64.sub_mul(&i64::MIN, &1, &1), None);
         assert_eq!(Zi64.sub_mul(&5, &2, &3), Some(-1));
-        assert_eq!(ZBig.abs_u64(&BigInt::from(-12)), Some(12));
+        assert_eq!(ZBig.abs_natural(&BigInt::from(-12)), 12);
     }
 }

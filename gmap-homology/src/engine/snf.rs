@@ -161,7 +161,8 @@ mod tests {
             smith_diagonal(&Zi64, vec![vec![2, 0], vec![0, 3]], 2).unwrap().iter().map(|x| x.unsigned_abs()).collect();
         assert_eq!(d, vec![1, 6]);
         let big = vec![vec![BigInt::from(4), BigInt::from(0)], vec![BigInt::from(0), BigInt::from(6)]];
-        let d: Vec<u64> = smith_diagonal(&ZBig, big, 2).unwrap().iter().map(|x| ZBig.abs_u64(x).unwrap()).collect();
+        let d: Vec<u64> =
+            smith_diagonal(&ZBig, big, 2).unwrap().iter().map(|x| ZBig.abs_natural(x).to_u64().unwrap()).collect();
         assert_eq!(d, vec![2, 12]);
     }
 }

@@ -21,7 +21,10 @@ use gmap_core::DenseMap;
 
 use super::{read_bytes, FileError, ImportError};
 
-/// The largest bounding box accepted, in unit cubes (one byte each in the bitmap).
+/// The largest bounding box accepted, in unit cubes (one byte each in the bitmap), whatever
+/// the memory limit: the cells of its closure are numbered with `u32`. Below it, a box is
+/// accepted when its estimate fits the memory limit
+/// ([`gmap_core::resources::cubical_set_estimate`], checked before the bitmap is allocated).
 pub const MAX_BOX_CUBES: u64 = 1 << 30;
 
 /// A full cubical set: the cubes of a box `min + [0, shape)` that belong to the set.
@@ -144,6 +147,18 @@ impl CubicalSet {
     }
 }
 
+/// Checks the memory a set on a box of `shape` cubes would take (its bitmap and the grid of
+/// its chain complex, [`gmap_core::resources::cubical_set_estimate`]) against the memory
+/// limit, before anything is allocated; then the box's size ([`box_volume`]).
+fn box_checked(shape: &[usize]) -> Result<u64, ImportError> {
+    let what = format!(
+        "the cubical set on the bounding box {}",
+        shape.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × ")
+    );
+    gmap_core::resources::check_memory(&what, gmap_core::resources::cubical_set_estimate(shape))?;
+    box_volume(shape)
+}
+
 fn box_volume(shape: &[usize]) -> Result<u64, ImportError> {
     let mut v: u64 = 1;
     for &s in shape {
@@ -236,7 +251,7 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         }
     }
     let shape: Vec<usize> = (0..dim).map(|a| (hi[a] - lo[a] + 1) as usize).collect();
-    let volume = box_volume(&shape)? as usize;
+    let volume = box_checked(&shape)? as usize;
     let mut bits = Vec::new();
     bits.try_reserve_exact(volume)
         .map_err(|_| ImportError::OutOfMemory { what: "the bitmap".into(), bytes: volume as u64 })?;
@@ -295,7 +310,7 @@ pub fn parse_pbm(bytes: &[u8]) -> Result<CubicalSet, ImportError> {
             .ok_or_else(|| fmt(format!("bad {what} '{}' in the PBM header", shorten(tok, 80))))?;
     }
     let [w, h] = header;
-    let volume = box_volume(&[w, h])? as usize;
+    let volume = box_checked(&[w, h])? as usize;
     let mut bits = Vec::new();
     bits.try_reserve_exact(volume)
         .map_err(|_| ImportError::OutOfMemory { what: "the bitmap".into(), bytes: volume as u64 })?;
@@ -370,7 +385,11 @@ mod tests {
         assert!(matches!(parse_cub(b"0,1\n"), Err(ImportError::Syntax { line: 1, .. })));
         assert!(matches!(parse_cub(b"()\n"), Err(ImportError::Syntax { line: 1, .. })));
         assert!(matches!(parse_cub(b"; nothing\n"), Err(ImportError::Format(_))));
-        assert!(matches!(parse_cub(b"(0,0,0)\n(2000,2000,2000)\n"), Err(ImportError::Format(_))));
+        // a box of 2001^3 cubes: estimated from the box, over any memory limit of this machine
+        match parse_cub(b"(0,0,0)\n(2000,2000,2000)\n") {
+            Err(ImportError::MemoryLimit(e)) => assert_eq!(e.estimate, Some(2001u64.pow(3) + 9 * 4003u64.pow(3))),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

@@ -181,10 +181,12 @@ pub(crate) fn read_text(path: &Path) -> Result<String, FileError> {
 }
 
 /// The default dart limit for a map of dimension `dim`: what fits in the memory budget
-/// ([`gmap_core::resources::memory_budget`]) at `bytes_per_dart(dim)` bytes each, capped at
-/// `u32::MAX - 1` (the largest dart index).
+/// ([`gmap_core::resources::memory_budget`]) at `bytes_per_dart(dim)` bytes each, and what
+/// the default work limit can analyse ([`gmap_core::resources::max_darts_for_work`]: one
+/// 11-vertex facet, 11! darts in dimension 10, is over it), capped at `u32::MAX - 1` (the
+/// largest dart index).
 pub fn default_max_darts(dim: usize) -> u64 {
-    let cap = u32::MAX as u64 - 1;
+    let cap = (u32::MAX as u64 - 1).min(gmap_core::resources::max_darts_for_work(dim));
     match available_memory() {
         Some(bytes) => (bytes / bytes_per_dart(dim)).min(cap),
         None => cap,

@@ -104,6 +104,10 @@ pub struct SimplifyReport {
     pub search_rounds: usize,
     /// darts the search removed beyond the greedy stage's result
     pub search_gain: usize,
+    /// the search's work, a measure of its time: darts walked by the splits it tried plus
+    /// darts of the split maps it simplified; at most `2304 · search` plus the last round's
+    /// (see [`SimplifyOptions::search`])
+    pub search_work: usize,
 }
 
 impl SimplifyReport {
@@ -134,7 +138,10 @@ pub struct SimplifyOptions {
     /// checks that every cell is still a ball, simplifies the result again (two greedy runs)
     /// and keeps it when it has at most as many darts. The splits move cells past each other
     /// where removals and contractions alone are stuck. The search stops after `search`
-    /// rounds or when the split maps it has simplified hold `256 · search` darts in all.
+    /// rounds, when the split maps it has simplified hold `256 · search` darts in all, or
+    /// when the placements it tried have walked `2048 · search` darts (a placement is checked
+    /// on its whole cell, so on maps whose cells meet themselves everywhere, where most
+    /// placements fail, the tries rather than the rounds make the time).
     /// Greedy results of more than 1,024 darts are not searched.
     pub search: usize,
 }
@@ -193,7 +200,7 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
     let out = best.work.compact();
     debug_assert!(out.validate().is_ok(), "simplify broke validity");
     let greedy = out.dart_count();
-    let (out, search_rounds) = search::search(out, options, &mut rng);
+    let (out, search_rounds, search_work) = search::search(out, options, &mut rng);
     let report = SimplifyReport {
         darts_before: map.dart_count(),
         darts_after: out.dart_count(),
@@ -204,6 +211,7 @@ pub fn simplify_with(map: &DenseMap, options: &SimplifyOptions) -> (DenseMap, Si
         rounds: best.rounds,
         search_rounds,
         search_gain: greedy - out.dart_count(),
+        search_work,
     };
     (out, report)
 }

@@ -18,7 +18,9 @@ fn cells_are_balls(map: &DenseMap) -> bool {
 
 /// Splits up to `count` random cells of `g` (faces across volumes with seven chances in
 /// ten, else edges across faces), trying at most 400 random placements; the number made.
-fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix64) -> usize {
+/// Each placement tried adds the darts of `g` to `work` (the check of a split walks the
+/// whole cell, up to the whole map).
+fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix64, work: &mut usize) -> usize {
     let mut made = 0;
     let mut darts: Vec<DartId> = g.darts().collect();
     for _ in 0..400 {
@@ -29,6 +31,7 @@ fn split_random_cells(g: &mut GMap, count: usize, rng: &mut SplitMix64) -> usize
             darts = g.darts().collect();
         }
         let darts = &darts;
+        *work = work.saturating_add(darts.len());
         let pick = |rng: &mut SplitMix64| darts[rng.below(darts.len())];
         if rng.below(10) < 7 {
             // a face across a volume along the closed path of one to three edge sides
@@ -73,31 +76,37 @@ const SEARCH_MAX_DARTS: usize = 1 << 10;
 /// chain starts (at most four) while the last one improved on the best map so far: chains
 /// that find their way down usually do so within a few hundred rounds, and one that does
 /// not sits on a plateau that more random splits rarely leave. Splits grow with the map:
-/// up to a third of its darts' count, between 3 and 40.
-pub(super) fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix64) -> (DenseMap, usize) {
+/// up to a third of its darts' count, between 3 and 40. The search also stops when the
+/// placements tried have walked `2048 · search` darts (each costs up to the map's size).
+/// Returns the map, the rounds made and the work done (darts walked by the placements tried
+/// and darts of the split maps simplified).
+pub(super) fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMix64) -> (DenseMap, usize, usize) {
     if map.dim() != 3
         || options.search == 0
         || map.dart_count() == 0
         || map.dart_count() > SEARCH_MAX_DARTS
         || !cells_are_balls(&map)
     {
-        return (map, 0);
+        return (map, 0, 0);
     }
     let inner = SimplifyOptions { tries: 2, seed: 0, search: 0 };
     let budget = options.search.saturating_mul(256);
+    // the placements tried: each walks its cell, up to the whole map, and most fail where
+    // the cells meet themselves often; without this bound a round could cost 400 N
+    let tries_budget = options.search.saturating_mul(2048);
     let patience = options.search.div_ceil(8);
     let mut best = map.clone();
-    let (mut spent, mut rounds) = (0usize, 0);
+    let (mut spent, mut rounds, mut tried) = (0usize, 0, 0usize);
     for _chain in 0..4 {
         let mut cur = map.clone();
         let mut since = 0;
-        while rounds < options.search && since < patience && spent < budget {
+        while rounds < options.search && since < patience && spent < budget && tried < tries_budget {
             rounds += 1;
             since += 1;
             let (mut g, _) = GMap::from_dense(&cur);
             let most = (cur.dart_count() / 3).clamp(3, 40);
             let kicks = 1 + rng.below(most);
-            if split_random_cells(&mut g, kicks, rng) == 0 {
+            if split_random_cells(&mut g, kicks, rng, &mut tried) == 0 {
                 continue;
             }
             let split = g.to_dense().0;
@@ -118,5 +127,5 @@ pub(super) fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMi
         }
         best = cur;
     }
-    (best, rounds)
+    (best, rounds, spent.saturating_add(tried))
 }
