@@ -20,7 +20,8 @@
 use std::fmt;
 
 use crate::attr::Cells;
-use crate::edit::GMap;
+use crate::dense::{Dart, DenseMap};
+use crate::edit::{DartId, GMap};
 
 /// The value of one label.
 #[derive(Clone, Debug, PartialEq)]
@@ -100,6 +101,59 @@ pub type LabelledGMap =
 
 /// The largest cell dimension a [`LabelledGMap`] labels.
 pub const MAX_LABELLED_DIM: usize = 5;
+
+/// The labels of the `dim`-cell of dart `d`, if that cell has a label slot set
+/// (`None` above [`MAX_LABELLED_DIM`] or the map's dimension). O(1).
+pub fn cell_labels(g: &LabelledGMap, dim: usize, d: DartId) -> Option<&Labels> {
+    if dim > g.dim() {
+        return None;
+    }
+    match dim {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        3 => g.attribute::<3>(d),
+        4 => g.attribute::<4>(d),
+        5 => g.attribute::<5>(d),
+        _ => None,
+    }
+}
+
+/// The labels of the cells of a dense map: `of[i][c]` are those of the `i`-cell numbered
+/// `c` in [`DenseMap::cells`]`(i)` (empty when the cell has none).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DenseLabels {
+    /// per dimension, per cell number
+    pub of: Vec<Vec<Labels>>,
+}
+
+impl DenseLabels {
+    /// The labels of `i`-cell `c`; empty for a dimension or cell it does not hold.
+    pub fn get(&self, i: usize, c: usize) -> &Labels {
+        static NONE: Labels = Labels(Vec::new());
+        self.of.get(i).and_then(|v| v.get(c)).unwrap_or(&NONE)
+    }
+
+    /// Whether no cell has a label.
+    pub fn is_empty(&self) -> bool {
+        self.of.iter().all(|v| v.iter().all(Labels::is_empty))
+    }
+}
+
+/// Freezes a labelled map ([`GMap::to_dense`]) and numbers its labels like the dense map's
+/// cells: `(dense map, labels, handle of each dense dart)`. O(N n²) (one cell partition
+/// per dimension).
+pub fn to_dense_labels(g: &LabelledGMap) -> (DenseMap, DenseLabels, Vec<DartId>) {
+    let (dense, ids) = g.to_dense();
+    let mut of = Vec::with_capacity(dense.dim() + 1);
+    for i in 0..=dense.dim().min(MAX_LABELLED_DIM) {
+        let cells = dense.cells(i);
+        of.push(
+            cells.reps.iter().map(|&Dart(r)| cell_labels(g, i, ids[r as usize]).cloned().unwrap_or_default()).collect(),
+        );
+    }
+    (dense, DenseLabels { of }, ids)
+}
 
 /// Whether `name` can be written bare: `[A-Za-z_][A-Za-z0-9_.-]*`.
 pub(crate) fn is_bare_name(name: &str) -> bool {

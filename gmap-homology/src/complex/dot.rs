@@ -1,6 +1,9 @@
 //! The incidence graph for Graphviz (`.dot`, docs/FORMATS.md §2): one node per region (cell)
 //! labelled with its dimension, one edge per defined entry, from the higher region to the
-//! lower one, labelled with its weight (the signed incidence number).
+//! lower one, labelled with its weight (the signed incidence number). A region with labels
+//! ([`ArchComplex::region_labels`]) shows its `name` label instead of its dimension and
+//! carries every other label as a quoted node attribute (`"material"="brick"`, numbers in
+//! their `.gmap` text form).
 //!
 //! ```
 //! use gmap_homology::arch::ArchComplex;
@@ -15,7 +18,24 @@
 
 use std::fmt::Write as _;
 
+use gmap_core::LabelValue;
+
 use crate::complex::arch::ArchComplex;
+
+/// Writes `t` as a Graphviz quoted string (`"` and `\` escaped, line breaks as `\n`).
+fn quote(s: &mut String, t: &str) {
+    s.push('"');
+    for c in t.chars() {
+        match c {
+            '"' => s.push_str("\\\""),
+            '\\' => s.push_str("\\\\"),
+            '\n' => s.push_str("\\n"),
+            '\r' => {}
+            c => s.push(c),
+        }
+    }
+    s.push('"');
+}
 
 /// The Graphviz text of the incidence graph; nodes are named `r<id>`, ranked by dimension
 /// (higher dimensions on top).
@@ -33,8 +53,26 @@ pub fn write_dot(x: &ArchComplex) -> String {
         }
         s.push_str(" }\n");
     }
-    for r in x.regions() {
-        let _ = writeln!(s, "  r{} [label=\"{}\"];", r.id, r.dim);
+    for (k, r) in x.regions().iter().enumerate() {
+        let labels = x.region_labels(k);
+        let _ = write!(s, "  r{} [label=", r.id);
+        match labels.get("name") {
+            Some(LabelValue::Text(t)) => quote(&mut s, t),
+            Some(v) => quote(&mut s, &v.to_string()),
+            None => {
+                let _ = write!(s, "\"{}\"", r.dim);
+            }
+        }
+        for (name, v) in labels.iter().filter(|(n, _)| *n != "name") {
+            s.push_str(", ");
+            quote(&mut s, name);
+            s.push('=');
+            match v {
+                LabelValue::Text(t) => quote(&mut s, t),
+                v => quote(&mut s, &v.to_string()),
+            }
+        }
+        s.push_str("];\n");
     }
     for (f, t, w) in x.entry_ids() {
         let _ = writeln!(s, "  r{f} -> r{t} [label=\"{w}\"];");
