@@ -130,9 +130,10 @@ fn room(c: [i64; 3]) -> &'static str {
 }
 
 /// The labels of a face of the grid, from the grid positions of its four corners: a face
-/// normal to `z` is the slab, the roof, or the floor between the storeys (the stair opening
-/// above the hall); a face normal to `x` or `y` is an outer wall, or lies between two rooms
-/// of a storey (a door or an inner wall).
+/// normal to `z` is the slab, the roof, or the floor between two rooms one above the other
+/// (the stair opening above the hall); a face normal to `x` or `y` is an outer wall, or
+/// lies between two rooms of a storey (a door or an inner wall). A face between two rooms
+/// names them (`between`).
 fn face_labels(corners: &[[i64; 3]]) -> Result<Labels, String> {
     let normal = (0..3)
         .find(|&a| corners.iter().all(|c| c[a] == corners[0][a]))
@@ -148,8 +149,14 @@ fn face_labels(corners: &[[i64; 3]]) -> Result<Labels, String> {
         match at {
             0 => ("slab", "concrete", None),
             2 => ("roof", "tiles", None),
-            _ if room([low[0], low[1], 0]) == "hall" => ("stair", "oak", Some(("hall", "landing"))),
-            _ => ("floor", "timber", None),
+            _ => {
+                let (below, above) = (room([low[0], low[1], 0]), room([low[0], low[1], 1]));
+                if below == "hall" {
+                    ("stair", "oak", Some((below, above)))
+                } else {
+                    ("floor", "timber", Some((below, above)))
+                }
+            }
         }
     } else if at == 0 || at == 2 {
         ("wall", "brick", None)
@@ -238,7 +245,7 @@ pub fn run(dir: &Path, out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
         let l = x.region_labels(k);
         match (r.dim, l.get("name"), l.get("kind"), l.get("between")) {
             (3, Some(LabelValue::Text(n)), _, _) => rooms.push(format!("{n} ({l})")),
-            (2, _, Some(LabelValue::Text(kind)), Some(LabelValue::Text(b))) if kind != "wall" => {
+            (2, _, Some(LabelValue::Text(kind)), Some(LabelValue::Text(b))) if kind == "door" || kind == "stair" => {
                 doors.push(format!("{kind} {b}"))
             }
             _ => {}

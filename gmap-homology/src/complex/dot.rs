@@ -80,3 +80,32 @@ pub fn write_dot(x: &ArchComplex) -> String {
     s.push_str("}\n");
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::complex::arch::RegionId;
+    use gmap_core::Labels;
+
+    #[test]
+    fn named_regions_show_their_name_and_carry_the_other_labels() {
+        let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 1), (2, 0)], &[(1, 0, 0)]).unwrap();
+        let l: Labels = [
+            ("kind", LabelValue::Text("door".into())),
+            ("name", LabelValue::Text("front \"door\"\\\n".into())),
+            ("width", LabelValue::Real(0.9)),
+        ]
+        .into_iter()
+        .collect();
+        let x = x.with_region_labels(RegionId(1), l).unwrap();
+        let numbered: Labels = [("name", LabelValue::Int(7))].into_iter().collect();
+        let x = x.with_region_labels(RegionId(2), numbered).unwrap();
+        let d = write_dot(&x);
+        assert!(d.contains("  r0 [label=\"0\"];\n"), "{d}");
+        assert!(
+            d.contains("  r1 [label=\"front \\\"door\\\"\\\\\\n\", \"kind\"=\"door\", \"width\"=\"0.9\"];\n"),
+            "{d}"
+        );
+        assert!(d.contains("  r2 [label=\"7\"];\n"), "{d}");
+    }
+}

@@ -382,3 +382,82 @@ pub fn write_json(x: &ArchComplex) -> String {
     s.push_str("]}\n");
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn labelled() -> ArchComplex {
+        let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 0), (2, 1)], &[(2, 0, 1), (2, 1, -1)]).unwrap();
+        let beam: Labels = [
+            ("name", LabelValue::Text("main \"beam\"\n\u{e9}".into())),
+            ("length", LabelValue::Real(2.0)),
+            ("count", LabelValue::Int(-7)),
+            ("big", LabelValue::Int(i64::MAX)),
+            ("tiny", LabelValue::Real(1e-300)),
+        ]
+        .into_iter()
+        .collect();
+        x.with_region_labels(RegionId(2), beam).unwrap()
+    }
+
+    #[test]
+    fn labels_round_trip_typed_and_in_order() {
+        let x = labelled();
+        let text = write_json(&x);
+        assert!(
+            text.contains(
+                r#"{"id": 2, "dim": 1, "labels": {"name": "main \"beam\"\né", "length": 2.0, "count": -7, "big": 9223372036854775807, "tiny": 1e-300}}"#
+            ),
+            "{text}"
+        );
+        assert!(text.contains(r#"{"id": 0, "dim": 0},"#), "{text}");
+        let back = read_json(&text).unwrap();
+        assert_eq!(back, x);
+        let names: Vec<&str> = back.region_labels(2).iter().map(|(n, _)| n).collect();
+        assert_eq!(names, ["name", "length", "count", "big", "tiny"]);
+        assert_eq!(back.region_labels(2).get("length"), Some(&LabelValue::Real(2.0)));
+        assert!(back.region_labels(0).is_empty());
+        // the tree-based reader (taken when the fast one fails) keeps them too
+        assert_eq!(read_json_slow(&text).unwrap().region_labels(2).get("count"), Some(&LabelValue::Int(-7)));
+    }
+
+    #[test]
+    fn bad_labels_are_refused_with_their_place() {
+        let with = |labels: &str| {
+            format!(
+                r#"{{"regions": [{{"id": 0, "dim": 0}}, {{"id": 5, "dim": 0, "labels": {labels}}}], "incidence": []}}"#
+            )
+        };
+        let err = |labels: &str| read_json(&with(labels)).unwrap_err().to_string();
+        assert_eq!(err(r#"{"a": true}"#), "regions[1].labels.a: expected an integer, a real or a text, found true");
+        assert_eq!(err(r#"{"a": null}"#), "regions[1].labels.a: expected an integer, a real or a text, found null");
+        assert_eq!(err(r#"{"a": [1]}"#), "regions[1].labels.a: expected an integer, a real or a text, found [1]");
+        assert_eq!(
+            err(r#"{"a": 9223372036854775808}"#),
+            "regions[1].labels.a: 9223372036854775808 does not fit a 64-bit integer"
+        );
+        assert_eq!(err(r#"[1, 2]"#), "regions[1].labels: expected an object of labels, found [1,2]");
+        assert_eq!(err(r#""kitchen""#), "regions[1].labels: expected an object of labels, found \"kitchen\"");
+        assert!(matches!(
+            read_json(&with(r#"{"name": "a", "name": "b"}"#)),
+            Err(JsonError::DuplicateKey { ref key, .. }) if key == "name"
+        ));
+        // an empty object is no label; a real written with an exponent is a real
+        let x = read_json(&with(r#"{}"#)).unwrap();
+        assert!(x.region_labels(1).is_empty());
+        let x = read_json(&with(r#"{"e": 1e2, "n": -0}"#)).unwrap();
+        assert_eq!(x.region_labels(1).get("e"), Some(&LabelValue::Real(100.0)));
+        assert_eq!(x.region_labels(1).get("n"), Some(&LabelValue::Int(0)));
+    }
+
+    #[test]
+    fn a_label_that_is_not_finite_is_refused() {
+        let x = ArchComplex::try_from_ids(0, &[(3, 0)], &[]).unwrap();
+        let l: Labels = [("w", LabelValue::Real(f64::NAN))].into_iter().collect();
+        assert_eq!(
+            x.with_region_labels(RegionId(3), l).unwrap_err().to_string(),
+            "region 3: the label `w` is not a finite real"
+        );
+    }
+}

@@ -356,6 +356,7 @@ pub fn write_vtk_with_labels(map: &DenseMap, labels: &DenseLabels, path: &Path) 
 mod tests {
     use super::*;
     use crate::build;
+    use gmap_core::Labels;
 
     fn prism(k: usize) -> DenseMap {
         build::extrude(&build::polygon(k).unwrap()).unwrap()
@@ -442,5 +443,36 @@ mod tests {
         let text = vtk_string(&c).unwrap();
         assert!(text.contains("POINTS 2 double\n"), "{text}");
         assert!(text.contains("CELLS 2 6\n2 0 1\n2 1 0\nCELL_TYPES 2\n3\n3\n"), "{text}");
+    }
+
+    #[test]
+    fn labels_become_cell_data_over_the_labelled_cells() {
+        let sq = build::polygon(4).unwrap();
+        // face 0 named, edge 2 with a wide integer and a real, vertex 1 with a mixed column
+        let mut labels = DenseLabels { of: vec![vec![Labels::new(); 4], vec![Labels::new(); 4], vec![Labels::new()]] };
+        labels.of[2][0].set("name", LabelValue::Text("a 100% \"square\"".into()));
+        labels.of[1][2].set("big", LabelValue::Int(1 << 40));
+        labels.of[1][2].set("w", LabelValue::Int(2));
+        labels.of[0][1].set("w", LabelValue::Real(0.5));
+        labels.of[0][1].set("name", LabelValue::Int(3));
+        let text = vtk_string_with_labels(&sq, &labels).unwrap();
+        let vert = sq.cells(0).of;
+        let e = sq.cells(1).reps[2];
+        let (a, b) = (vert[e.index()], vert[sq.alpha(e, 0).index()]);
+        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n7\n3\n1\n")), "{text}");
+        let data = text.split("CELL_DATA 3\n").nth(1).unwrap();
+        assert_eq!(
+            data,
+            "SCALARS dim int 1\nLOOKUP_TABLE default\n2\n1\n0\n\
+             FIELD labels 4\n\
+             name 1 3 string\na%20100%25%20\"square\"\n\n3\n\
+             name.id 1 3 int\n1\n-1\n0\n\
+             big 1 3 vtktypeint64\n-9223372036854775808\n1099511627776\n-9223372036854775808\n\
+             w 1 3 double\n-1.7976931348623157e308\n2.0\n0.5\n"
+        );
+        // no label: the text of `vtk_string`
+        let none = DenseLabels { of: vec![vec![Labels::new(); 4]] };
+        assert_eq!(vtk_string_with_labels(&sq, &none).unwrap(), vtk_string(&sq).unwrap());
+        assert_eq!(encode("é\t%"), "%C3%A9%09%25");
     }
 }
