@@ -114,7 +114,7 @@ fn the_files_keep_the_names() {
     // .dot: a node per room shown by its name, the doors as attributes
     let dot = std::fs::read_to_string(file("dot")).unwrap();
     for r in ROOMS {
-        assert_eq!(dot.matches(&format!("[label=\"{r}\", \"storey\"=")).count(), 1, "{r}");
+        assert_eq!(dot.matches(&format!("[label=\"{r}\\n3\", \"storey\"=")).count(), 1, "{r}");
     }
     assert_eq!(dot.matches("\"kind\"=\"door\", \"material\"=\"oak\"").count(), 6);
 

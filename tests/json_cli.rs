@@ -281,7 +281,7 @@ fn convert_keeps_the_cell_labels_of_a_gmap_in_json_and_dot() {
     assert_eq!(std::fs::read_to_string(&again).unwrap(), text);
     let d = std::fs::read_to_string(&dot).unwrap();
     assert!(d.contains("  r1 [label=\"0\", \"hits\"=\"3\"];\n"), "{d}");
-    assert!(d.contains("  r2 [label=\"main \\\"beam\\\"\", \"length\"=\"2.5\"];\n"), "{d}");
+    assert!(d.contains("  r2 [label=\"main \\\"beam\\\"\\n1\", \"length\"=\"2.5\"];\n"), "{d}");
     // a label of a kind JSON labels cannot hold is refused, naming it
     let bad = write(
         dir.path(),

@@ -1,9 +1,9 @@
 //! The incidence graph for Graphviz (`.dot`, docs/FORMATS.md §2): one node per region (cell)
 //! labelled with its dimension, one edge per defined entry, from the higher region to the
 //! lower one, labelled with its weight (the signed incidence number). A region with labels
-//! ([`ArchComplex::region_labels`]) shows its `name` label instead of its dimension and
-//! carries every other label as a quoted node attribute (`"material"="brick"`, numbers in
-//! their `.gmap` text form).
+//! ([`ArchComplex::region_labels`]) shows its `name` label on a line above its dimension
+//! (`label="kitchen\n3"`) and carries every other label as a quoted node attribute
+//! (`"material"="brick"`, numbers in their `.gmap` text form).
 //!
 //! ```
 //! use gmap_homology::arch::ArchComplex;
@@ -56,9 +56,10 @@ pub fn write_dot(x: &ArchComplex) -> String {
     for (k, r) in x.regions().iter().enumerate() {
         let labels = x.region_labels(k);
         let _ = write!(s, "  r{} [label=", r.id);
+        // the name, when there is one, on a line above the dimension
         match labels.get("name") {
-            Some(LabelValue::Text(t)) => quote(&mut s, t),
-            Some(v) => quote(&mut s, &v.to_string()),
+            Some(LabelValue::Text(t)) => quote(&mut s, &format!("{t}\n{}", r.dim)),
+            Some(v) => quote(&mut s, &format!("{v}\n{}", r.dim)),
             None => {
                 let _ = write!(s, "\"{}\"", r.dim);
             }
@@ -103,9 +104,9 @@ mod tests {
         let d = write_dot(&x);
         assert!(d.contains("  r0 [label=\"0\"];\n"), "{d}");
         assert!(
-            d.contains("  r1 [label=\"front \\\"door\\\"\\\\\\n\", \"kind\"=\"door\", \"width\"=\"0.9\"];\n"),
+            d.contains("  r1 [label=\"front \\\"door\\\"\\\\\\n\\n1\", \"kind\"=\"door\", \"width\"=\"0.9\"];\n"),
             "{d}"
         );
-        assert!(d.contains("  r2 [label=\"7\"];\n"), "{d}");
+        assert!(d.contains("  r2 [label=\"7\\n0\"];\n"), "{d}");
     }
 }
