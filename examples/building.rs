@@ -103,21 +103,13 @@ fn flags(m: &DenseMap) -> Result<Vec<Flag>, String> {
         }
     }
     let flags: Vec<Flag> = flag.into_iter().collect::<Option<_>>().ok_or("the grid is not connected")?;
-    let mut low = [i64::MAX; 3];
-    for f in &flags {
-        for a in 0..3 {
-            low[a] = low[a].min(f.vertex[a]);
-        }
-    }
-    Ok(flags
-        .into_iter()
-        .map(|mut f| {
-            for a in 0..3 {
-                f.vertex[a] -= low[a];
-            }
-            f
-        })
-        .collect())
+    let low = lowest(flags.iter().map(|f| f.vertex));
+    Ok(flags.into_iter().map(|f| Flag { vertex: [0, 1, 2].map(|a| f.vertex[a] - low[a]), ..f }).collect())
+}
+
+/// The lowest corner of the box around grid positions.
+fn lowest(positions: impl IntoIterator<Item = [i64; 3]>) -> [i64; 3] {
+    positions.into_iter().fold([i64::MAX; 3], |low, p| [0, 1, 2].map(|a| low[a].min(p[a])))
 }
 
 fn text(s: &str) -> LabelValue {
@@ -139,12 +131,7 @@ fn face_labels(corners: &[[i64; 3]]) -> Result<Labels, String> {
         .find(|&a| corners.iter().all(|c| c[a] == corners[0][a]))
         .ok_or_else(|| format!("the face {corners:?} is not normal to an axis"))?;
     let at = corners[0][normal];
-    let mut low = [i64::MAX; 3];
-    for c in corners {
-        for a in 0..3 {
-            low[a] = low[a].min(c[a]);
-        }
-    }
+    let low = lowest(corners.iter().copied());
     let (kind, material, between) = if normal == 2 {
         match at {
             0 => ("slab", "concrete", None),
@@ -197,12 +184,7 @@ pub fn building() -> Result<LabelledGMap, Box<dyn Error>> {
     let volumes = m.cells(3);
     for &r in &volumes.reps {
         let cell = (0..m.dart_count()).filter(|&k| volumes.of[k] == volumes.of[r.index()]);
-        let mut low = [i64::MAX; 3];
-        for k in cell {
-            for a in 0..3 {
-                low[a] = low[a].min(flags[k].vertex[a]);
-            }
-        }
+        let low = lowest(cell.map(|k| flags[k].vertex));
         let (x, y, z) = (low[0] as usize, low[1] as usize, low[2] as usize);
         let area = (LINES[0][x + 1] - LINES[0][x]) * (LINES[1][y + 1] - LINES[1][y]);
         let labels: Labels =
