@@ -407,4 +407,30 @@ mod tests {
         assert_eq!(l.remove("b"), Some(LabelValue::Int(3)));
         assert_eq!(l.len(), 1);
     }
+
+    #[test]
+    fn dense_labels_are_numbered_like_the_dense_cells() {
+        let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&crate::examples::torus());
+        let named = |n: &str| -> Labels { [("name", LabelValue::Text(n.into()))].into_iter().collect() };
+        g.set_attribute::<2>(ids[5], named("face"));
+        g.set_attribute::<0>(ids[7], named("vertex"));
+        let (dense, labels, back) = to_dense_labels(&g);
+        assert_eq!(dense.cell_counts(), crate::examples::torus().cell_counts());
+        for i in 0..=2 {
+            let cells = dense.cells(i);
+            assert_eq!(labels.of[i].len(), cells.len());
+            for k in 0..dense.dart_count() {
+                let want = match (i, g.attribute::<2>(back[k]), g.attribute::<0>(back[k])) {
+                    (2, Some(l), _) | (0, _, Some(l)) => l.clone(),
+                    _ => Labels::new(),
+                };
+                assert_eq!(labels.get(i, cells.of[k] as usize), &want, "dimension {i}, dart {k}");
+            }
+        }
+        assert_eq!(labels.of[2].iter().filter(|l| !l.is_empty()).count(), 1);
+        assert_eq!(labels.of[0].iter().filter(|l| !l.is_empty()).count(), 1);
+        assert!(labels.get(3, 0).is_empty() && labels.get(0, 1000).is_empty());
+        assert!(!labels.is_empty() && DenseLabels::default().is_empty());
+        assert_eq!(cell_labels(&g, 3, ids[0]), None);
+    }
 }
