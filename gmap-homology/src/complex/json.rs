@@ -460,4 +460,44 @@ mod tests {
             "region 3: the label `w` is not a finite real"
         );
     }
+
+    fn label_value() -> impl proptest::strategy::Strategy<Value = LabelValue> {
+        use proptest::prelude::*;
+        prop_oneof![
+            any::<i64>().prop_map(LabelValue::Int),
+            any::<f64>().prop_filter("finite", |x| x.is_finite()).prop_map(LabelValue::Real),
+            "\\PC{0,8}|[\"\\\\\n\t\u{0}-\u{1f}]{0,4}".prop_map(LabelValue::Text),
+        ]
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Any labels on the regions of a path of edges are written and read back as they
+        /// were, in order and typed; the `.dot` text keeps one node per line.
+        #[test]
+        fn labels_write_and_read_back(
+            labels in proptest::collection::vec(
+                proptest::collection::vec(("\\PC{0,6}", label_value()), 0..4),
+                1..6,
+            )
+        ) {
+            let n = labels.len() as u64;
+            let regions: Vec<(u64, usize)> = (0..n).map(|k| (k, 0)).chain((0..n - 1).map(|k| (n + k, 1))).collect();
+            let entries: Vec<(u64, u64, i64)> =
+                (0..n - 1).flat_map(|k| [(n + k, k, -1), (n + k, k + 1, 1)]).collect();
+            let mut x = ArchComplex::try_from_ids(1, &regions, &entries).unwrap();
+            for (k, l) in labels.into_iter().enumerate() {
+                let l: Labels = l.into_iter().collect();
+                x = x.with_region_labels(RegionId(k as u64), l).unwrap();
+            }
+            let text = write_json(&x);
+            let back = read_json(&text).unwrap();
+            proptest::prop_assert_eq!(&back, &x);
+            proptest::prop_assert_eq!(write_json(&back), text);
+            let dot = crate::complex::dot::write_dot(&x);
+            let nodes = dot.lines().filter(|l| l.starts_with("  r") && l.contains(" [label=") && !l.contains("->")).count();
+            proptest::prop_assert_eq!(nodes, x.regions().len());
+        }
+    }
 }
