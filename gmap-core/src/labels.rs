@@ -419,8 +419,8 @@ mod tests {
         for i in 0..=2 {
             let cells = dense.cells(i);
             assert_eq!(labels.of[i].len(), cells.len());
-            for k in 0..dense.dart_count() {
-                let want = match (i, g.attribute::<2>(back[k]), g.attribute::<0>(back[k])) {
+            for (k, &h) in back.iter().enumerate() {
+                let want = match (i, g.attribute::<2>(h), g.attribute::<0>(h)) {
                     (2, Some(l), _) | (0, _, Some(l)) => l.clone(),
                     _ => Labels::new(),
                 };
