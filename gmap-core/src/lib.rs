@@ -97,6 +97,9 @@ pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, MapDefect, SewError};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
-pub use labels::{cell_labels, to_dense_labels, DenseLabels, LabelValue, LabelledGMap, Labels};
+pub use labels::{LabelValue, LabelledGMap, Labels};
 pub use marks::{MarkId, Marks};
 pub use view::MapView;
+
+// labels numbered like the cells of a dense map
+pub use labels::{cell_labels, to_dense_labels, DenseLabels};
