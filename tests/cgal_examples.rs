@@ -49,6 +49,12 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 #[path = "../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_dynamic_onmerge.rs"]
+mod gmap_3_dynamic_onmerge;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_insert.rs"]
+mod gmap_3_insert;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_3_marks.rs"]
 mod gmap_3_marks;
 #[allow(dead_code)]
@@ -58,8 +64,17 @@ mod gmap_3_operations;
 #[path = "../examples/cgal_gmap_3_simple_example.rs"]
 mod gmap_3_simple_example;
 #[allow(dead_code)]
+#[path = "../examples/cgal_gmap_3_with_colored_facets.rs"]
+mod gmap_3_with_colored_facets;
+#[allow(dead_code)]
 #[path = "../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
+#[allow(dead_code)]
+#[path = "../examples/cgal_gmap_linear_cell_complex_3.rs"]
+mod gmap_linear_cell_complex_3;
+#[allow(dead_code)]
+#[path = "../examples/cgal_linear_cell_complex_3_operations.rs"]
+mod linear_cell_complex_3_operations;
 #[allow(dead_code)]
 #[path = "../examples/cgal_linear_cell_complex_4.rs"]
 mod linear_cell_complex_4;
@@ -72,7 +87,12 @@ const PORTS: &[(&str, Run, usize, &[usize])] = &[
     ("gmap_4_simple_example", gmap_4_simple_example::run, 0, &[]),
     ("gmap_3_marks", gmap_3_marks::run, 0, &[]),
     ("gmap_3_operations", gmap_3_operations::run, 0, &[]),
+    ("gmap_3_insert", gmap_3_insert::run, 0, &[]),
     ("linear_cell_complex_4", linear_cell_complex_4::run, 0, &[]),
+    ("gmap_3_with_colored_facets", gmap_3_with_colored_facets::run, 0, &[1, 2]),
+    ("gmap_3_dynamic_onmerge", gmap_3_dynamic_onmerge::run, 0, &[2, 7, 9]),
+    ("gmap_linear_cell_complex_3", gmap_linear_cell_complex_3::run, 0, &[1, 2, 3, 4, 5, 6, 7]),
+    ("linear_cell_complex_3_operations", linear_cell_complex_3_operations::run, 1, &[]),
 ];
 
 #[test]

@@ -405,6 +405,17 @@ impl<A: Attributes> GMap<A> {
         self.points.len()
     }
 
+    /// The handle of the point of the vertex of a live dart `d` (one handle per vertex while
+    /// the attributes are consistent), for the geometry routines. O(1).
+    pub(crate) fn point_id(&self, d: DartId) -> Option<AttrId> {
+        self.points.id_at(dart_index(d))
+    }
+
+    /// The point of a handle from [`GMap::point_id`], mutably. O(1).
+    pub(crate) fn point_by_id_mut(&mut self, id: AttrId) -> Option<&mut Point> {
+        self.points.get_id_mut(id)
+    }
+
     /// Repairs the attributes and points after an edit (the consistency routine of
     /// [`crate::attr`]): for every slot in use, the cell of each dart of `touched` is
     /// walked once; a cell holding several attributes keeps the first one met (from the

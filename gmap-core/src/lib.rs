@@ -43,7 +43,9 @@
 //! [`io`] reads and writes the native `.gmap` format (with vertex points and, through
 //! [`LabelledGMap`], named [`Labels`] on cells of every dimension) and Moka's `.moka`, with
 //! errors naming the file and line; [`walk`] iterates lazily over orbits and cells of a
-//! [`GMap`]; [`examples`] rebuilds the small maps drawn in the border-operator
+//! [`GMap`]; [`geometry`] makes the linear cell complex of a [`GMap`] with points (CGAL's
+//! constructors with coordinates, barycentres of cells, affine transformations);
+//! [`examples`] rebuilds the small maps drawn in the border-operator
 //! paper (BO Fig. 1, 2, 4(b)) for tests and documentation.
 //!
 //! ## Example
@@ -80,6 +82,7 @@ pub mod edit;
 pub mod ep;
 pub mod error;
 pub mod examples;
+pub mod geometry;
 pub mod io;
 mod kernels;
 pub mod labels;
@@ -97,6 +100,7 @@ pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
 pub use edit::{DartId, GMap, MapDefect, SewError};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
+pub use geometry::{Affine, IntoPoint, MakeError};
 pub use labels::{LabelValue, LabelledGMap, Labels};
 pub use marks::{MarkId, Marks};
 pub use view::MapView;

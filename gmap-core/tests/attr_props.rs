@@ -10,80 +10,17 @@
 //! points and labels on every dimension (texts with spaces, quotes, newlines, any
 //! character) is read back identical.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Arc;
+mod attr_common;
 
+use attr_common::{attr, cells_by_dart, count, fill, merges_and_splits, Full, Hooks};
 use gmap_core::examples::add_simplex;
 use gmap_core::io::{format_labelled_gmap, parse_labelled_gmap};
-use gmap_core::{Cells, DartId, GMap, LabelValue, LabelledGMap, Labels, Point};
+use gmap_core::{DartId, LabelValue, LabelledGMap, Labels, Point};
 use proptest::prelude::*;
-
-type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
-
-/// Counters of hook calls, per dimension.
-#[derive(Default)]
-struct Hooks {
-    merges: [Arc<AtomicUsize>; 4],
-    splits: [Arc<AtomicUsize>; 4],
-}
-
-impl Hooks {
-    fn install(&self, g: &mut Full) {
-        macro_rules! on {
-            ($i:literal) => {
-                let m = self.merges[$i].clone();
-                g.set_on_merge::<$i>(move |_, _| {
-                    m.fetch_add(1, Ordering::Relaxed);
-                });
-                let s = self.splits[$i].clone();
-                g.set_on_split::<$i>(move |_, _| {
-                    s.fetch_add(1, Ordering::Relaxed);
-                });
-            };
-        }
-        on!(0);
-        on!(1);
-        on!(2);
-        on!(3);
-    }
-
-    fn counts(&self) -> ([usize; 4], [usize; 4]) {
-        (
-            self.merges.each_ref().map(|c| c.load(Ordering::Relaxed)),
-            self.splits.each_ref().map(|c| c.load(Ordering::Relaxed)),
-        )
-    }
-}
 
 /// The cell of each dart (by position in `darts`) for dimension `i`, from the snapshot.
 fn partition(g: &Full, i: usize) -> Vec<u32> {
     g.to_dense().0.cells(i).of
-}
-
-/// Merges and splits between two partitions of the same darts: a new cell meeting k old
-/// cells is k - 1 merges; an old cell meeting k new cells is k - 1 splits.
-fn merges_and_splits(old: &[u32], new: &[u32]) -> (usize, usize) {
-    use std::collections::{BTreeMap, BTreeSet};
-    let mut olds_of_new: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
-    let mut news_of_old: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
-    for (&o, &n) in old.iter().zip(new) {
-        olds_of_new.entry(n).or_default().insert(o);
-        news_of_old.entry(o).or_default().insert(n);
-    }
-    (olds_of_new.values().map(|s| s.len() - 1).sum(), news_of_old.values().map(|s| s.len() - 1).sum())
-}
-
-fn attr(g: &Full, d: DartId, i: usize) -> Option<u64> {
-    match i {
-        0 => g.attribute::<0>(d).copied(),
-        1 => g.attribute::<1>(d).copied(),
-        2 => g.attribute::<2>(d).copied(),
-        _ => g.attribute::<3>(d).copied(),
-    }
-}
-
-fn count(g: &Full, i: usize) -> usize {
-    [g.attribute_count::<0>(), g.attribute_count::<1>(), g.attribute_count::<2>(), g.attribute_count::<3>()][i]
 }
 
 /// A map of `pieces` simplices with a distinct value on every cell and a point per vertex.
@@ -93,26 +30,7 @@ fn attributed(n: usize, pieces: &[usize]) -> (Full, Vec<DartId>) {
     for &k in pieces {
         darts.extend(add_simplex(&mut g, k % (n + 1)));
     }
-    let mut next = 0u64;
-    for i in 0..=n {
-        for &d in &darts {
-            if attr(&g, d, i).is_none() {
-                next += 1;
-                match i {
-                    0 => g.set_attribute::<0>(d, next),
-                    1 => g.set_attribute::<1>(d, next),
-                    2 => g.set_attribute::<2>(d, next),
-                    _ => g.set_attribute::<3>(d, next),
-                };
-            }
-        }
-    }
-    for &d in &darts {
-        if g.point(d).is_none() {
-            next += 1;
-            g.set_point(d, Some([next as f64, 0.5, -1.0]));
-        }
-    }
+    fill(&mut g, &mut 0);
     (g, darts)
 }
 
@@ -191,12 +109,6 @@ proptest! {
     }
 }
 
-/// The cell of each live dart for every dimension `0..=n`, from the snapshot.
-fn cells_by_dart(g: &Full, n: usize) -> Vec<std::collections::HashMap<DartId, u32>> {
-    let (dense, ids) = g.to_dense();
-    (0..=n).map(|j| ids.iter().copied().zip(dense.cells(j).of).collect()).collect()
-}
-
 /// Removes random darts one at a time, reconciling with their former neighbours (the
 /// editing pattern of the Euler operators): cells only split or vanish, the split hook runs
 /// once per extra piece, every surviving cell keeps exactly one attribute.
@@ -218,14 +130,14 @@ fn run_removals(
             break;
         }
         let d = live[r % live.len()];
-        let before = cells_by_dart(&g, n);
+        let before = cells_by_dart(&g);
         let neighbours: Vec<DartId> = (0..=n).map(|j| g.alpha(d, j)).filter(|&x| x != d).collect();
         let (m0, s0) = hooks.counts();
         g.remove_dart(d);
         g.reconcile_attributes(&neighbours);
         let (m1, s1) = hooks.counts();
         g.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
-        let after = cells_by_dart(&g, n);
+        let after = cells_by_dart(&g);
         for j in 0..=n {
             let survivors: Vec<DartId> = g.darts().collect();
             let old: Vec<u32> = survivors.iter().map(|x| before[j][x]).collect();

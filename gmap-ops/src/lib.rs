@@ -6,6 +6,7 @@
 //! * [`build`]: the classic objects — n-simplex, n-cube, k-gon, the product with an edge
 //!   (extrusion), cube grids in any dimension with any axes periodic (d-tori), surfaces
 //!   from polygonal schema words, the solid torus, lens spaces L(p, q);
+//! * [`geometry`]: the grid, the cube and the simplex with the points of their vertices;
 //! * [`import`]: pure simplicial complexes (`.facets`, `.lex`; one dart per flag of each
 //!   facet), polygon meshes (`.off`) and face posets of regular cell complexes (the flag
 //!   construction), each refusing what is not a G-map with an error that says where;
@@ -36,6 +37,7 @@
 pub mod build;
 pub mod euler;
 pub mod export;
+pub mod geometry;
 pub mod import;
 pub mod iso;
 mod perm;

@@ -4,8 +4,10 @@
 //! * [`vector`]: Euler–Poincaré vectors and their names in the basis of AC Prop. 5.2.
 //! * [`ops`]: cell operators on the editable [`gmap_core::GMap`] in any dimension —
 //!   split a cell (`mve`, also on an edge missing an end, `mef`, `mfs`, …), dangling edges, removal and contraction of
-//!   cells of degree 2, closing a boundary — each with a predicate, a `try_` form with a
-//!   typed error and its Euler–Poincaré vector.
+//!   cells of degree 2, closing a boundary, an edge between two faces — each with a
+//!   predicate, a `try_` form with a typed error and its Euler–Poincaré vector; on maps
+//!   with attributes of any kind, which follow every operator (merge and split hooks, vertex
+//!   points); also under CGAL's names ([`ops::cgal`]).
 //! * [`simplify`](mod@simplify): homology-preserving reduction of a
 //!   [`gmap_core::DenseMap`] by removals and contractions ([`simplify()`],
 //!   [`simplify_with`]), with a search past plateaus for 3-maps.

@@ -25,7 +25,7 @@
 //! assert_eq!(m.euler_characteristic(), 1); // still a ball
 //! ```
 
-use gmap_core::{AlphaSet, DartId, GMap};
+use gmap_core::{AlphaSet, Attributes, DartId, GMap};
 
 use super::ops::{self, EulerError};
 use super::vector::EulerOp;
@@ -81,7 +81,7 @@ impl Attempt {
 /// Tries `op` on `g` at the darts `d`, `e` and the cell dimension `i` (each operator reads
 /// what it needs, see [`Operator`]): asks its predicate, then calls its `try_` form.
 /// O(size of the cells touched · n).
-pub fn attempt(g: &mut GMap, op: Operator, d: DartId, e: DartId, i: usize) -> Attempt {
+pub fn attempt<A: Attributes>(g: &mut GMap<A>, op: Operator, d: DartId, e: DartId, i: usize) -> Attempt {
     let (allowed, result) = match op {
         Operator::InsertVertex => (ops::can_insert_vertex(g, d), ops::try_insert_vertex(g, d)),
         Operator::InsertEdge => (ops::can_insert_edge(g, d, e), ops::try_insert_edge(g, d, e)),
@@ -96,7 +96,13 @@ pub fn attempt(g: &mut GMap, op: Operator, d: DartId, e: DartId, i: usize) -> At
 /// [`attempt`] at a place given by plain numbers: `d` and `e` are the darts of ranks
 /// `pick % N` and `pick2 % N` in the order of [`GMap::darts`] (N darts), and
 /// `i = dim % (n + 1)`. `None` for a map without darts. O(N) on top of [`attempt`].
-pub fn attempt_at(g: &mut GMap, op: Operator, pick: usize, pick2: usize, dim: usize) -> Option<Attempt> {
+pub fn attempt_at<A: Attributes>(
+    g: &mut GMap<A>,
+    op: Operator,
+    pick: usize,
+    pick2: usize,
+    dim: usize,
+) -> Option<Attempt> {
     let darts: Vec<DartId> = g.darts().collect();
     if darts.is_empty() {
         return None;
@@ -116,14 +122,19 @@ pub fn attempt_at(g: &mut GMap, op: Operator, pick: usize, pick2: usize, dim: us
 /// # Panics
 /// If `choices` is empty, `g` has no dart, or a removal is drawn in a 0-map; and when an operator's predicate disagrees
 /// with its `try_` form (a bug of [`ops`]).
-pub fn random_steps(g: &mut GMap, steps: usize, choices: &[Operator], rng: &mut SplitMix64) -> Vec<String> {
+pub fn random_steps<A: Attributes>(
+    g: &mut GMap<A>,
+    steps: usize,
+    choices: &[Operator],
+    rng: &mut SplitMix64,
+) -> Vec<String> {
     let n = g.dim();
     let mut applied = Vec::new();
     for _ in 0..steps {
         let darts: Vec<DartId> = g.darts().collect();
         let d = darts[rng.below(darts.len())];
         let op = choices[rng.below(choices.len())];
-        let in_face = |g: &GMap, rng: &mut SplitMix64| {
+        let in_face = |g: &GMap<A>, rng: &mut SplitMix64| {
             let face = g.orbit(d, AlphaSet::of(&[0, 1]));
             face[rng.below(face.len())]
         };

@@ -1,4 +1,6 @@
-//! Exporters: `.off` polygon meshes (2-maps with points), `.facets` of the barycentric
+//! Exporters: `.off` polygon meshes (2-maps with points, [`off_string`], or an editable
+//! [`GMap`] directly, [`gmap_off_string`]; the 2-cells of a map of any dimension as a view,
+//! [`two_skeleton_off_string`]), `.facets` of the barycentric
 //! subdivision (any map) and legacy `.vtk` unstructured grids (maps of dimension ≤ 3 with
 //! points, [`vtk_string`]). Every writer goes through a temporary file in the target's
 //! directory and a rename, so a failure never leaves a partial file behind. The native
@@ -7,7 +9,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use gmap_core::{AlphaSet, Dart, DenseMap, Partition};
+use gmap_core::{AlphaSet, Attributes, Dart, DartId, DenseMap, GMap, Partition};
 use thiserror::Error;
 
 mod vtk;
@@ -87,6 +89,24 @@ pub enum ExportError {
         /// a dart of that vertex
         dart: u32,
     },
+    /// A vertex of an editable map without a finite point (`.off` needs coordinates).
+    #[error("the vertex of dart {dart:?} has {what}: .off needs finite coordinates for every vertex")]
+    VertexOfDart {
+        /// a dart of that vertex
+        dart: DartId,
+        /// `no point` or `a point that is not finite`
+        what: &'static str,
+    },
+    /// The format needs maps of at least a dimension.
+    #[error("{format} needs a map of dimension at least {min}, this map has dimension {found}")]
+    DimensionBelow {
+        /// the format
+        format: &'static str,
+        /// the smallest dimension written
+        min: usize,
+        /// the map's dimension
+        found: usize,
+    },
     /// Writing failed.
     #[error("{path}: {source}")]
     Io {
@@ -112,6 +132,16 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
     if map.dim() != 2 {
         return Err(ExportError::Dimension { format: ".off", expected: 2, found: map.dim() });
     }
+    let (out, order) = off_text(map, &map.cells(2))?;
+    same_as_read_back(map, &out, &order)?;
+    Ok(out)
+}
+
+/// The OFF text of the polygons `faces` (one per class, walked by `alpha_0 alpha_1` from its
+/// representative) on the vertices of `map`, and the darts in the order the reader numbers
+/// them: per face, per corner, the dart at the corner and its `alpha_0` image at the next
+/// corner. Refuses a 0- or 1-free dart and a vertex without a finite point. O(N n).
+fn off_text(map: &DenseMap, faces: &Partition) -> Result<(String, Vec<Dart>), ExportError> {
     for d in map.darts() {
         for i in 0..2 {
             if map.is_free(d, i) {
@@ -120,7 +150,6 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
     }
     let verts = map.cells(0);
-    let faces = map.cells(2);
     let mut out = String::new();
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
     for &Dart(r) in &verts.reps {
@@ -130,8 +159,6 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
-    // the darts in the order the reader numbers them: per face, per corner, the dart at the
-    // corner and its alpha_0 image at the next corner
     let mut order: Vec<Dart> = Vec::with_capacity(map.dart_count());
     for &Dart(r) in &faces.reps {
         let mut corners = Vec::new();
@@ -155,8 +182,7 @@ pub fn off_string(map: &DenseMap) -> Result<String, ExportError> {
         }
         out.push('\n');
     }
-    same_as_read_back(map, &out, &order)?;
-    Ok(out)
+    Ok((out, order))
 }
 
 /// Checks that the `.off` reader makes `text` into `map` again: the reader numbers the darts
@@ -194,6 +220,91 @@ fn same_as_read_back(map: &DenseMap, text: &str, order: &[Dart]) -> Result<(), E
 /// Writes a 2-map with points as `.off` (see [`off_string`]).
 pub fn write_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
     write_atomic(path, off_string(map)?.as_bytes())
+}
+
+/// Checks that every vertex of an editable map has a finite point, naming a dart of the
+/// first one that has not. O(N).
+fn check_gmap_points<A: Attributes>(g: &GMap<A>) -> Result<(), ExportError> {
+    for d in g.darts() {
+        match g.point(d) {
+            None => return Err(ExportError::VertexOfDart { dart: d, what: "no point" }),
+            Some(p) if !p.iter().all(|c| c.is_finite()) => {
+                return Err(ExportError::VertexOfDart { dart: d, what: "a point that is not finite" })
+            }
+            Some(_) => {}
+        }
+    }
+    Ok(())
+}
+
+/// The OFF text of an editable 2-map with points: [`off_string`] of its snapshot
+/// ([`GMap::to_dense`]), with the same checks, the read-back included. A vertex without a
+/// finite point is refused with [`ExportError::VertexOfDart`], naming a dart of the map;
+/// other errors name snapshot darts (dart `k` is the `k`-th of [`GMap::darts`]).
+/// O(N log N).
+///
+/// ```
+/// use gmap_core::GMap;
+/// let mut g = GMap::new(2);
+/// g.make_quadrangle([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// let text = gmap_ops::export::gmap_off_string(&g).unwrap();
+/// assert_eq!(text.lines().nth(1), Some("4 1 0"));
+/// ```
+pub fn gmap_off_string<A: Attributes>(g: &GMap<A>) -> Result<String, ExportError> {
+    if g.dim() != 2 {
+        return Err(ExportError::Dimension { format: ".off", expected: 2, found: g.dim() });
+    }
+    check_gmap_points(g)?;
+    off_string(&g.to_dense().0)
+}
+
+/// Writes an editable 2-map with points as `.off` (see [`gmap_off_string`]).
+pub fn write_gmap_off<A: Attributes>(g: &GMap<A>, path: &Path) -> Result<(), ExportError> {
+    write_atomic(path, gmap_off_string(g)?.as_bytes())
+}
+
+/// A *view* of a map of dimension `n >= 2` as a polygon soup, not a conversion: the OFF text
+/// of its 2-skeleton, one vertex per 0-cell and one polygon per 2-cell (whatever the
+/// dimension, inner faces of a 3-map included, each once), its corners in the cycle order of
+/// `alpha_0 alpha_1` from the face's smallest dart. Reading it back gives a surface, which in
+/// general has neither the dimension nor the homology of the map: this is for looking at the
+/// faces, and `gmap convert` never uses it. For a 2-map it is the text of [`off_string`]
+/// without the read-back check.
+///
+/// Errors: dimension below 2 ([`ExportError::DimensionBelow`]), a 0- or 1-free dart
+/// ([`ExportError::OpenFace`]), a vertex without a finite point ([`ExportError::NoPoint`],
+/// [`ExportError::NonFinitePoint`]), a face that is not one cycle (only in an invalid map,
+/// [`ExportError::NotAMesh`]). O(N n).
+pub fn two_skeleton_off_string(map: &DenseMap) -> Result<String, ExportError> {
+    if map.dim() < 2 {
+        return Err(ExportError::DimensionBelow { format: ".off of the 2-skeleton", min: 2, found: map.dim() });
+    }
+    Ok(off_text(map, &map.partition(AlphaSet::cell(2, map.dim())))?.0)
+}
+
+/// [`two_skeleton_off_string`] of an editable map: its snapshot's, a vertex without a finite
+/// point refused with [`ExportError::VertexOfDart`] naming a dart of the map. O(N n).
+///
+/// ```
+/// use gmap_core::GMap;
+/// let mut g = GMap::new(3);
+/// let p = [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.],
+///          [0., 1., 1.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.]];
+/// g.make_hexahedron(p);
+/// let text = gmap_ops::export::gmap_two_skeleton_off_string(&g).unwrap();
+/// assert_eq!(text.lines().nth(1), Some("8 6 0"));
+/// ```
+pub fn gmap_two_skeleton_off_string<A: Attributes>(g: &GMap<A>) -> Result<String, ExportError> {
+    if g.dim() < 2 {
+        return Err(ExportError::DimensionBelow { format: ".off of the 2-skeleton", min: 2, found: g.dim() });
+    }
+    check_gmap_points(g)?;
+    two_skeleton_off_string(&g.to_dense().0)
+}
+
+/// Writes the 2-skeleton of a map as `.off` (see [`two_skeleton_off_string`]).
+pub fn write_two_skeleton_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
+    write_atomic(path, two_skeleton_off_string(map)?.as_bytes())
 }
 
 /// The largest dimension [`barycentric_facets_string`] handles: its check visits the
@@ -338,6 +449,54 @@ mod tests {
         let torus = build::schema("a b A B").unwrap();
         assert!(matches!(off_string(&torus), Err(ExportError::NoPoint { dart: 0 })));
         assert!(matches!(off_string(&build::cube(3).unwrap()), Err(ExportError::Dimension { .. })));
+    }
+
+    #[test]
+    fn off_of_an_editable_map() {
+        let mut g = GMap::new(2);
+        let d = g.make_polygon(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0]]);
+        let text = gmap_off_string(&g).unwrap();
+        assert_eq!(text, "OFF\n3 1 0\n0 0 0\n2 0 0\n1 1 0\n3 0 1 2\n");
+        assert_eq!(text, off_string(&g.to_dense().0).unwrap());
+        // a vertex without a point is named by its dart
+        g.set_point(d, None);
+        assert!(matches!(gmap_off_string(&g), Err(ExportError::VertexOfDart { dart, what: "no point" }) if dart == d));
+        g.set_point(d, Some([f64::NAN, 0.0, 0.0]));
+        assert!(matches!(gmap_off_string(&g), Err(ExportError::VertexOfDart { dart, .. }) if dart == d));
+        // a 3-map is not a 2-map
+        let mut h = GMap::new(3);
+        h.make_combinatorial_tetrahedron();
+        assert!(matches!(gmap_off_string(&h), Err(ExportError::Dimension { expected: 2, found: 3, .. })));
+    }
+
+    #[test]
+    fn the_two_skeleton_lists_every_face_once() {
+        // two unit cubes sharing a face
+        let (g, _) = GMap::from_dense(&crate::geometry::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap());
+        assert_eq!(g.characteristics().cells, vec![12, 20, 11, 2]);
+        let text = gmap_two_skeleton_off_string(&g).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(lines.nth(1), Some("12 11 0"));
+        let polygons: Vec<&str> = text.lines().skip(2 + 12).collect();
+        assert_eq!(polygons.len(), 11);
+        assert!(polygons.iter().all(|l| l.starts_with("4 ")));
+        // the points are the twelve corners of the two cubes, each once
+        let mut pts: Vec<&str> = text.lines().skip(2).take(12).collect();
+        pts.sort();
+        pts.dedup();
+        assert_eq!(pts.len(), 12);
+        // the same as the text of the 2-map writer on a 2-map
+        let sq = build::polygon(4).unwrap();
+        assert_eq!(two_skeleton_off_string(&sq).unwrap(), off_string(&sq).unwrap());
+        assert!(matches!(
+            two_skeleton_off_string(&build::simplex(1).unwrap()),
+            Err(ExportError::DimensionBelow { min: 2, found: 1, .. })
+        ));
+        assert!(matches!(two_skeleton_off_string(&build::cube(3).unwrap()), Err(ExportError::NoPoint { .. })));
+        let mut h = GMap::new(3);
+        let t = h.make_combinatorial_tetrahedron();
+        assert!(matches!(gmap_two_skeleton_off_string(&h), Err(ExportError::VertexOfDart { .. })));
+        assert!(h.contains(t));
     }
 
     #[test]

@@ -3,9 +3,9 @@
 
 use rustc_hash::FxHashMap as HashMap;
 
-use gmap_core::{DartId, GMap};
+use gmap_core::{Attributes, DartId, GMap};
 
-use super::{debug_check, diff, EulerError};
+use super::{debug_check, diff, reconcile, EulerError};
 
 /// What [`try_close`] did: the darts added and the change of cells. The change of
 /// homology depends on the whole boundary being closed (a disc closes to a sphere, an
@@ -21,11 +21,11 @@ pub struct CloseReport {
 /// Whether [`try_close`] would succeed: `i <= n`, and around every i-free dart the walk
 /// alternating `alpha_{i-1}` and `alpha_i` reaches another i-free dart without meeting an
 /// (i-1)-free one.
-pub fn can_close(g: &GMap, i: usize) -> bool {
+pub fn can_close<A: Attributes>(g: &GMap<A>, i: usize) -> bool {
     close_plan(g, i).is_ok()
 }
 
-fn close_plan(g: &GMap, i: usize) -> Result<Vec<(DartId, Option<DartId>)>, EulerError> {
+fn close_plan<A: Attributes>(g: &GMap<A>, i: usize) -> Result<Vec<(DartId, Option<DartId>)>, EulerError> {
     let n = g.dim();
     if i > n {
         return Err(EulerError::BadDimension { what: "close", lo: 0, hi: n, got: i });
@@ -69,8 +69,14 @@ fn close_plan(g: &GMap, i: usize) -> Result<Vec<(DartId, Option<DartId>)>, Euler
 /// ```
 /// Precondition ([`can_close`]). Effect on cells: recounted over the whole map
 /// ([`CloseReport::dx`]); `close(n)` on a map with complete lower boundaries adds one n-cell
-/// per boundary component. O(N n).
-pub fn try_close(g: &mut GMap, i: usize) -> Result<CloseReport, EulerError> {
+/// per boundary component.
+///
+/// Attributes: the new i-cells have none; the new darts join the other cells of the
+/// darts they close and take their attributes and points (for `i >= 1` every new dart
+/// lies in the vertex of its partner; `close(0)` makes new vertices, without points).
+/// Should closing join cells that were apart, they merge as in a sew (the merge hook
+/// runs). O(N n).
+pub fn try_close<A: Attributes>(g: &mut GMap<A>, i: usize) -> Result<CloseReport, EulerError> {
     let plan = close_plan(g, i)?;
     let n = g.dim();
     let before = dense_counts(g);
@@ -93,11 +99,16 @@ pub fn try_close(g: &mut GMap, i: usize) -> Result<CloseReport, EulerError> {
             }
         }
     }
+    if g.needs_reconcile() {
+        let mut touched: Vec<DartId> = plan.iter().map(|&(d, _)| d).collect();
+        touched.extend(plan.iter().map(|(d, _)| new[d]));
+        reconcile(g, &touched);
+    }
     let after = dense_counts(g);
     debug_check(g);
     Ok(CloseReport { new_darts: plan.len(), dx: diff(&after, &before) })
 }
 
-fn dense_counts(g: &GMap) -> Vec<i64> {
+fn dense_counts<A: Attributes>(g: &GMap<A>) -> Vec<i64> {
     g.to_dense().0.cell_counts().into_iter().map(|c| c as i64).collect()
 }

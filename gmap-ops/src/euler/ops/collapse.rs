@@ -5,9 +5,9 @@
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::union_find::UnionFind;
-use gmap_core::{AlphaSet, DartId, GMap};
+use gmap_core::{AlphaSet, Attributes, DartId, GMap};
 
-use super::{debug_check, diff, live, local_counts, op_name, EulerError};
+use super::{debug_check, diff, live, local_counts, op_name, reconcile, EulerError};
 use crate::euler::vector::{EpVector, EulerOp};
 
 /// A removal of an i-cell, which merges the two (i+1)-cells on its sides, or a contraction,
@@ -50,7 +50,7 @@ enum Collapse {
 }
 
 /// The check of [`is_removable`] and [`is_contractible`].
-fn check_collapse(g: &GMap, d: DartId, i: usize, kind: Move) -> Result<Collapse, EulerError> {
+fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -> Result<Collapse, EulerError> {
     let remove = kind == Move::Remove;
     live(g, d)?;
     let n = g.dim();
@@ -136,7 +136,7 @@ fn check_collapse(g: &GMap, d: DartId, i: usize, kind: Move) -> Result<Collapse,
 /// appearances (orbits of the cell without alpha_i and alpha_k) must each join two distinct
 /// corners (orbits of every involution but alpha_nb and alpha_k), and these joins must
 /// form a forest; otherwise the k-cell would fall apart.
-fn check_corners(g: &GMap, cell: &[DartId], i: usize, nb: usize) -> Result<(), EulerError> {
+fn check_corners<A: Attributes>(g: &GMap<A>, cell: &[DartId], i: usize, nb: usize) -> Result<(), EulerError> {
     let n = g.dim();
     for k in (0..=n).filter(|&k| k != i && k != nb) {
         let app_set = AlphaSet::all(n).without(i).without(k);
@@ -186,19 +186,21 @@ fn check_corners(g: &GMap, cell: &[DartId], i: usize, nb: usize) -> Result<(), E
 }
 
 /// Whether the i-cell of `d` can be removed by [`try_remove_cell`].
-pub fn is_removable(g: &GMap, d: DartId, i: usize) -> bool {
+pub fn is_removable<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
     check_collapse(g, d, i, Move::Remove).is_ok()
 }
 
 /// Whether the i-cell of `d` can be contracted by [`try_contract_cell`].
-pub fn is_contractible(g: &GMap, d: DartId, i: usize) -> bool {
+pub fn is_contractible<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
     check_collapse(g, d, i, Move::Contract).is_ok()
 }
 
 /// Deletes the darts of `cell` after re-linking `alpha_i` around it: a dart `y` outside
 /// the cell linked to `x` inside gets the first dart outside reached by alternating
-/// `alpha_nb`, `alpha_i` from `x` (or becomes i-free).
-fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
+/// `alpha_nb`, `alpha_i` from `x` (or becomes i-free). Then reconciles the attributes from
+/// the re-linked darts, `alpha_i(cell[0])` first: the merged cells keep the attributes of
+/// its cells.
+fn collapse<A: Attributes>(g: &mut GMap<A>, cell: &[DartId], i: usize, nb: usize) {
     let set: HashSet<DartId> = cell.iter().copied().collect();
     let mut links: Vec<(DartId, DartId)> = Vec::new();
     for &x in cell {
@@ -220,18 +222,22 @@ fn collapse(g: &mut GMap, cell: &[DartId], i: usize, nb: usize) {
     for &x in cell {
         g.remove_dart(x);
     }
-    for (y, z) in links {
+    for &(y, z) in &links {
         if y == z {
             g.unlink(y, i);
         } else {
             g.link(y, z, i);
         }
     }
+    if g.needs_reconcile() {
+        let touched: Vec<DartId> = links.iter().flat_map(|&(y, z)| [y, z]).collect();
+        reconcile(g, &touched);
+    }
 }
 
 /// Applies a checked removal or contraction of the i-cell of `d` ([`collapse`]) and returns
 /// the change of cells, recounted on the cells around it.
-fn collapse_counted(g: &mut GMap, d: DartId, i: usize, kind: Move) -> Vec<i64> {
+fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: Move) -> Vec<i64> {
     let cell = g.cell(d, i);
     let mut touched: Vec<DartId> = cell.clone();
     touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
@@ -259,8 +265,13 @@ fn collapse_counted(g: &mut GMap, d: DartId, i: usize, kind: Move) -> Vec<i64> {
 /// is stricter than CGAL, which also removes cells with the same (i+1)-cell on both
 /// sides: that changes the space, and then no local rule gives the homology change.
 /// Effect: `-X_i - X_{i+1}` (space unchanged) or `-X_0 - X_1` (a whisker collapsed).
-/// O(size of the cells touched · n).
-pub fn try_remove_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+///
+/// Attributes: the two (i+1)-cells merge into the one of `d`, keeping its attribute (the
+/// merge hook of dimension i + 1 runs when both had one, as CGAL's `remove_cell` calls
+/// `on_merge`); the attribute of the removed cell goes with it, and so does the point of
+/// the free end of a removed dangling edge; every other cell keeps its attribute and every
+/// other vertex its point. O(size of the cells touched · n).
+pub fn try_remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
     let kind = check_collapse(g, d, i, Move::Remove)?;
     let dx = collapse_counted(g, d, i, Move::Remove);
     let name = match kind {
@@ -271,7 +282,7 @@ pub fn try_remove_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, Eul
 }
 
 /// Like [`try_remove_cell`], panicking when the precondition fails.
-pub fn remove_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
+pub fn remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
     try_remove_cell(g, d, i).unwrap_or_else(|e| panic!("remove_cell: {e}"))
 }
 
@@ -286,8 +297,13 @@ pub fn remove_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
 /// free; its darts meet exactly two distinct (i-1)-cells, neither with a free dart; its
 /// appearances in the other cells it touches join distinct corners without a cycle.
 /// Effect `-X_{i-1} - X_i`,
-/// homology unchanged. O(size of the cells touched · n).
-pub fn try_contract_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+/// homology unchanged.
+///
+/// Attributes: the two (i-1)-cells at its ends merge, keeping the attribute of the one
+/// holding `d` (the merge hook of dimension i - 1 runs when both had one); for an edge,
+/// the merged vertex keeps the point of `d`'s vertex. The contracted cell's attribute goes
+/// with it. O(size of the cells touched · n).
+pub fn try_contract_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
     check_collapse(g, d, i, Move::Contract)?;
     let dx = collapse_counted(g, d, i, Move::Contract);
     // an edge contracted is the classical kev (kill edge and vertex), as its dual removal is kve
@@ -296,6 +312,6 @@ pub fn try_contract_cell(g: &mut GMap, d: DartId, i: usize) -> Result<EulerOp, E
 }
 
 /// Like [`try_contract_cell`], panicking when the precondition fails.
-pub fn contract_cell(g: &mut GMap, d: DartId, i: usize) -> EulerOp {
+pub fn contract_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
     try_contract_cell(g, d, i).unwrap_or_else(|e| panic!("contract_cell: {e}"))
 }

@@ -63,4 +63,12 @@ pub enum EulerError {
         /// the reason
         why: &'static str,
     },
+    /// A vertex of the cell has no point, so the cell has no barycentre.
+    #[error("the {dim}-cell of dart {dart:?} has a vertex without a point")]
+    NoPoint {
+        /// the cell dimension
+        dim: usize,
+        /// a dart of the cell
+        dart: DartId,
+    },
 }

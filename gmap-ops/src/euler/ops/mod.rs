@@ -15,33 +15,73 @@
 //!
 //! [`EulerOp`]: crate::euler::EulerOp
 //!
-//! The operators are grouped by what they do: splits and insertions (`split`), removals and
-//! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`); all are
-//! re-exported here.
+//! # Attributes and points
+//!
+//! Every operator works on a [`GMap<A>`](GMap) with any attributes `A` (a plain `GMap` needs
+//! no annotation) and ends with the map's one repair routine,
+//! [`GMap::reconcile_attributes`], given the darts it re-linked: the merge hooks run
+//! exactly when cells carrying attributes become one (a removal, a contraction, an edge
+//! between two faces), the split hooks exactly when one becomes two (a split, an
+//! insertion), each cell holds one attribute afterwards, and every vertex that is not
+//! merged keeps its point. A new cell made of new darts only (the new edge of `mef`, the
+//! new face of `mfs`) has no attribute. An operator that makes a vertex gives it a point:
+//! [`try_insert_vertex`] the middle of the split edge when both ends have points,
+//! [`try_insert_vertex_at`] and [`try_insert_dangling_edge_at`] the point they are given.
+//! Each operator's doc says which cell keeps the original attribute.
+//!
+//! # CGAL's names
+//!
+//! The operators are also available under CGAL's names (`insert_cell_0_in_cell_1`,
+//! `insert_cell_1_in_cell_2`, `insert_dangling_cell_1_in_cell_2`,
+//! `insert_cell_1_between_two_cells_2`, `insert_cell_2_in_cell_3`, `remove_cell`,
+//! `contract_cell`), returning a dart of the new cell as CGAL's do; the table in [`cgal`]
+//! maps each CGAL operation to ours with its precondition and predicate.
+//!
+//! The operators are grouped by what they do: splits and insertions (`split`), edges hung
+//! at a corner (`edges`: dangling edges, edges between two faces), removals and
+//! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`), CGAL's
+//! names ([`cgal`]); all are re-exported here.
 
+pub mod cgal;
 mod close;
 mod collapse;
+mod edges;
 mod error;
 mod split;
+mod star;
 
 use rustc_hash::FxHashSet as HashSet;
 
-use gmap_core::{DartId, GMap};
+use gmap_core::{Attributes, DartId, GMap, Point};
 
 use super::vector::cell_letter;
 
+pub use cgal::{
+    insert_cell_0_in_cell_1, insert_cell_1_between_two_cells_2, insert_cell_1_in_cell_2, insert_cell_2_in_cell_3,
+    insert_dangling_cell_1_in_cell_2, is_insertable_cell_0_in_cell_1, is_insertable_cell_1_between_two_cells_2,
+    is_insertable_cell_1_in_cell_2, is_insertable_cell_2_in_cell_3, is_insertable_dangling_cell_1_in_cell_2,
+};
 pub use close::{can_close, try_close, CloseReport};
 pub(crate) use collapse::Move;
 pub use collapse::{contract_cell, is_contractible, is_removable, remove_cell, try_contract_cell, try_remove_cell};
+pub use edges::{
+    can_insert_dangling_edge, can_insert_edge_between_faces, try_insert_dangling_edge, try_insert_dangling_edge_at,
+    try_insert_edge_between_faces, BridgeReport,
+};
 pub use error::EulerError;
 pub use split::{
-    can_insert_dangling_edge, can_insert_edge, can_insert_vertex, can_split_cell, split_cell, try_insert_dangling_edge,
-    try_insert_edge, try_insert_vertex, try_split_cell,
+    can_insert_edge, can_insert_vertex, can_split_cell, split_cell, try_insert_edge, try_insert_vertex,
+    try_insert_vertex_at, try_split_cell,
 };
 pub(crate) use split::{insert_edge_quietly, split_cell_quietly};
+pub use star::{
+    can_star_cell, can_star_face, insert_barycenter_in_cell, insert_cell_0_in_cell_2, insert_point_in_cell,
+    is_insertable_barycenter_in_cell, is_insertable_cell_0_in_cell_2, star_cell, star_face, try_star_cell,
+    try_star_face, Starred,
+};
 
 /// `Ok` when `d` is a live dart of `g`.
-fn live(g: &GMap, d: DartId) -> Result<(), EulerError> {
+fn live<A: Attributes>(g: &GMap<A>, d: DartId) -> Result<(), EulerError> {
     if g.contains(d) {
         Ok(())
     } else {
@@ -51,7 +91,7 @@ fn live(g: &GMap, d: DartId) -> Result<(), EulerError> {
 
 /// Number of distinct k-cells (every k) meeting a set of live darts. O(total size of
 /// those cells · n).
-fn local_counts(g: &GMap, darts: &[DartId]) -> Vec<i64> {
+fn local_counts<A: Attributes>(g: &GMap<A>, darts: &[DartId]) -> Vec<i64> {
     let n = g.dim();
     let mut out = vec![0i64; n + 1];
     for (k, slot) in out.iter_mut().enumerate() {
@@ -67,14 +107,39 @@ fn local_counts(g: &GMap, darts: &[DartId]) -> Vec<i64> {
     out
 }
 
-/// In debug builds, panics when `g` is not a valid G-map (BO Def. 1).
-fn debug_check(g: &GMap) {
+/// In debug builds, panics when `g` is not a valid G-map (BO Def. 1) or when a cell's darts
+/// disagree on an attribute or a point ([`GMap::check_attributes`]).
+fn debug_check<A: Attributes>(g: &GMap<A>) {
     if cfg!(debug_assertions) {
         let (m, _) = g.to_dense();
         if let Err(e) = m.validate() {
             panic!("Euler operator broke validity: {e}");
         }
+        if let Err(e) = g.check_attributes() {
+            panic!("Euler operator broke the attributes: {e}");
+        }
     }
+}
+
+/// Repairs attributes and points after an operator's edit ([`GMap::reconcile_attributes`]),
+/// when the map uses any: `touched` lists the darts whose links changed, those of the
+/// side that keeps the original attributes first. O(size of the cells touched · n) per
+/// slot in use, nothing when none is.
+fn reconcile<A: Attributes>(g: &mut GMap<A>, touched: &[DartId]) {
+    if g.needs_reconcile() {
+        g.reconcile_attributes(touched);
+    }
+}
+
+/// The middle of the points of the vertices of `d` and `alpha_0(d)`, when `d` is not 0-free
+/// and both have one: where [`try_insert_vertex`] puts the vertex it makes. O(1).
+fn edge_middle<A: Attributes>(g: &GMap<A>, d: DartId) -> Option<Point> {
+    let e = g.alpha(d, 0);
+    if e == d {
+        return None;
+    }
+    let (p, q) = (g.point(d)?, g.point(e)?);
+    Some([0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])])
 }
 
 /// `after - before`, entry by entry.

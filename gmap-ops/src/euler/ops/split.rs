@@ -1,17 +1,16 @@
-//! Splits and insertions: an i-cell cut in two by a new (i-1)-cell ([`try_split_cell`],
-//! with [`try_insert_vertex`] and [`try_insert_edge`] as its cases i = 1, 2) and a dangling
-//! edge hung into a face ([`try_insert_dangling_edge`]).
+//! Splits: an i-cell cut in two by a new (i-1)-cell ([`try_split_cell`], with
+//! [`try_insert_vertex`] and [`try_insert_edge`] as its cases i = 1, 2).
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
-use gmap_core::{AlphaSet, DartId, GMap};
+use gmap_core::{AlphaSet, Attributes, DartId, GMap, Point};
 
-use super::{debug_check, diff, live, local_counts, op_name, EulerError};
+use super::{debug_check, diff, edge_middle, live, local_counts, op_name, reconcile, EulerError};
 use crate::euler::vector::{EpVector, EulerOp};
 
 /// The darts on side A of a cut of an i-cell: the closure of `seeds` under `alpha_k`
 /// for `k <= i - 3` and `k >= i + 1`.
-fn cut_closure(g: &GMap, seeds: &[DartId], i: usize) -> Vec<DartId> {
+fn cut_closure<A: Attributes>(g: &GMap<A>, seeds: &[DartId], i: usize) -> Vec<DartId> {
     let n = g.dim();
     let mut set = AlphaSet::EMPTY;
     for k in 0..=n {
@@ -36,7 +35,13 @@ fn cut_closure(g: &GMap, seeds: &[DartId], i: usize) -> Vec<DartId> {
 
 /// The `alpha_{i-2}` partner of a cut dart inside the new (i-1)-cell: walk from `x` by
 /// `alpha_{i-2}`, then alternately `alpha_{i-1}`, `alpha_{i-2}`, until a dart of the cut.
-fn cut_partner(g: &GMap, x: DartId, i: usize, cut: &HashSet<DartId>, limit: usize) -> Result<DartId, EulerError> {
+fn cut_partner<A: Attributes>(
+    g: &GMap<A>,
+    x: DartId,
+    i: usize,
+    cut: &HashSet<DartId>,
+    limit: usize,
+) -> Result<DartId, EulerError> {
     let mut y = g.alpha(x, i - 2);
     for _ in 0..limit {
         if cut.contains(&y) {
@@ -61,7 +66,7 @@ struct Cut {
     partner: HashMap<DartId, DartId>,
 }
 
-fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
+fn check_cut<A: Attributes>(g: &GMap<A>, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
     let n = g.dim();
     if i == 0 || i > n {
         return Err(EulerError::BadDimension { what: "cell split", lo: 1, hi: n, got: i });
@@ -135,7 +140,7 @@ fn check_cut(g: &GMap, seeds: &[DartId], i: usize) -> Result<Cut, EulerError> {
 }
 
 /// Whether [`try_split_cell`] would succeed for `seeds` and `i`.
-pub fn can_split_cell(g: &GMap, seeds: &[DartId], i: usize) -> bool {
+pub fn can_split_cell<A: Attributes>(g: &GMap<A>, seeds: &[DartId], i: usize) -> bool {
     check_cut(g, seeds, i).is_ok()
 }
 
@@ -155,30 +160,50 @@ pub fn can_split_cell(g: &GMap, seeds: &[DartId], i: usize) -> bool {
 /// Each crossing `x — w` gets two new darts, `a(x)` on side A and `b(x)` on side B,
 /// `alpha_i`-linked: they are the two sides of the new (i-1)-cell.
 ///
+/// Attributes ([`gmap_core::attr`]): the i-cell's attribute stays on side A and side B
+/// gets a copy (the split hook of dimension i runs once); the new (i-1)-cell has none; the
+/// new darts join the other cells they meet and take their attributes and points. For
+/// i = 1 the new vertex is placed as [`try_insert_vertex`] places it.
+///
 /// Precondition ([`can_split_cell`]): `1 <= i <= n`; the darts lie in one i-cell; none is
 /// `(i-1)`-free (except for `i = 1`: an edge with a missing end, whose darts are all 0-free,
-/// is cut between its one end and the missing one) and none is linked to another cut dart; the walk that turns around each
-/// (i-3)-cell of the cut closes up; the cut separates the cell. Effect: one more
-/// (i-1)-cell and one more i-cell, homology unchanged. O(size of the i-cell · n).
-pub fn try_split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> Result<EulerOp, EulerError> {
+/// is cut between its one end and the missing one) and none is linked to another cut dart;
+/// the walk that turns around each (i-3)-cell of the cut closes up; the cut separates the
+/// cell. Effect: one more (i-1)-cell and one more i-cell, homology unchanged. O(size of the
+/// i-cell · n).
+pub fn try_split_cell<A: Attributes>(g: &mut GMap<A>, seeds: &[DartId], i: usize) -> Result<EulerOp, EulerError> {
+    let point = if i == 1 { seeds.first().filter(|&&d| g.contains(d)).and_then(|&d| edge_middle(g, d)) } else { None };
+    split_counted(g, seeds, i, point).map(|(op, _)| op)
+}
+
+/// [`try_split_cell`] with the point of the new vertex when `i = 1` (ignored otherwise);
+/// returns the operator and `a(seeds[0])`, a dart of the new (i-1)-cell on side A.
+pub(super) fn split_counted<A: Attributes>(
+    g: &mut GMap<A>,
+    seeds: &[DartId],
+    i: usize,
+    point: Option<Point>,
+) -> Result<(EulerOp, DartId), EulerError> {
     let cut = check_cut(g, seeds, i)?;
     let mut touched: Vec<DartId> = cut.darts.clone();
     touched.extend(cut.darts.iter().map(|&x| g.alpha(x, i - 1)));
     let before = local_counts(g, &touched);
-    let new_darts = apply_cut(g, &cut, i);
+    let new_darts = apply_cut(g, &cut, i, point);
+    let first = new_darts[0];
     touched.extend(new_darts);
     let after = local_counts(g, &touched);
     debug_check(g);
-    Ok(EulerOp::new(op_name('m', i - 1), EpVector::from_cells(&diff(&after, &before))))
+    Ok((EulerOp::new(op_name('m', i - 1), EpVector::from_cells(&diff(&after, &before))), first))
 }
 
 /// [`try_split_cell`] without the Euler–Poincaré bookkeeping, for searches that split many
 /// cells and only keep the map: `false` (and `g` unchanged) when the precondition fails.
-/// O(size of the i-cell · n).
-pub(crate) fn split_cell_quietly(g: &mut GMap, seeds: &[DartId], i: usize) -> bool {
+/// Attributes and points follow as in [`try_split_cell`]. O(size of the i-cell · n).
+pub(crate) fn split_cell_quietly<A: Attributes>(g: &mut GMap<A>, seeds: &[DartId], i: usize) -> bool {
     match check_cut(g, seeds, i) {
         Ok(cut) => {
-            apply_cut(g, &cut, i);
+            let point = if i == 1 { edge_middle(g, cut.darts[0]) } else { None };
+            apply_cut(g, &cut, i, point);
             true
         }
         Err(_) => false,
@@ -186,26 +211,38 @@ pub(crate) fn split_cell_quietly(g: &mut GMap, seeds: &[DartId], i: usize) -> bo
 }
 
 /// [`try_insert_edge`] without the Euler–Poincaré bookkeeping (see [`split_cell_quietly`]).
-pub(crate) fn insert_edge_quietly(g: &mut GMap, d1: DartId, d2: DartId) -> bool {
+pub(crate) fn insert_edge_quietly<A: Attributes>(g: &mut GMap<A>, d1: DartId, d2: DartId) -> bool {
     edge_cut(g, d1, d2).is_ok_and(|c| split_cell_quietly(g, &c, 2))
 }
 
-/// Links the two new darts of every crossing of a checked cut (see [`try_split_cell`]);
-/// returns the new darts.
-fn apply_cut(g: &mut GMap, cut: &Cut, i: usize) -> Vec<DartId> {
+/// Links the two new darts of every crossing of a checked cut (see [`try_split_cell`]),
+/// reconciles the attributes and, for i = 1, gives the new vertex `point`. Returns the new
+/// darts: `a(x)` then `b(x)` for each cut dart `x` in the order of `cut.darts`.
+fn apply_cut<A: Attributes>(g: &mut GMap<A>, cut: &Cut, i: usize, point: Option<Point>) -> Vec<DartId> {
     let n = g.dim();
     let mut a: HashMap<DartId, DartId> = HashMap::default();
     let mut b: HashMap<DartId, DartId> = HashMap::default();
+    let mut new = Vec::with_capacity(2 * cut.darts.len());
     for &x in &cut.darts {
-        a.insert(x, g.create_dart());
-        b.insert(x, g.create_dart());
+        let (ax, bx) = (g.create_dart(), g.create_dart());
+        a.insert(x, ax);
+        b.insert(x, bx);
+        new.push(ax);
+        new.push(bx);
     }
+    // side A first, so that the split i-cell keeps its attribute there (collected only
+    // when the map has attributes or points to repair)
+    let repair = g.needs_reconcile();
+    let mut touched: Vec<DartId> = if repair { cut.darts.clone() } else { Vec::new() };
     for &x in &cut.darts {
         let (ax, bx) = (a[&x], b[&x]);
         let w = g.alpha(x, i - 1);
         g.link(x, ax, i - 1);
         if w != x {
             g.link(w, bx, i - 1);
+            if repair {
+                touched.push(w);
+            }
         }
         g.link(ax, bx, i);
         for k in 0..=n {
@@ -223,16 +260,23 @@ fn apply_cut(g: &mut GMap, cut: &Cut, i: usize) -> Vec<DartId> {
             g.link(bx, b[&z], i - 2);
         }
     }
-    a.into_values().chain(b.into_values()).collect()
+    if repair {
+        touched.extend(new.iter().copied());
+        reconcile(g, &touched);
+    }
+    if i == 1 && point.is_some() {
+        g.set_point(new[0], point);
+    }
+    new
 }
 
 /// Like [`try_split_cell`], panicking when the precondition fails.
-pub fn split_cell(g: &mut GMap, seeds: &[DartId], i: usize) -> EulerOp {
+pub fn split_cell<A: Attributes>(g: &mut GMap<A>, seeds: &[DartId], i: usize) -> EulerOp {
     try_split_cell(g, seeds, i).unwrap_or_else(|e| panic!("split_cell: {e}"))
 }
 
-/// Whether [`try_insert_vertex`] would succeed.
-pub fn can_insert_vertex(g: &GMap, d: DartId) -> bool {
+/// Whether [`try_insert_vertex`] (and [`try_insert_vertex_at`]) would succeed.
+pub fn can_insert_vertex<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {
     g.contains(d) && g.dim() >= 1 && can_split_cell(g, &[d], 1)
 }
 
@@ -250,17 +294,34 @@ pub fn can_insert_vertex(g: &GMap, d: DartId) -> bool {
 /// EO's `mve` on `e∞`, one more vertex, one more complete edge, the same number of
 /// incomplete ones.
 ///
+/// The point of `w`: the middle of the points of `u` and `v` when both have one (CGAL's
+/// `insert_barycenter_in_cell<1>`), else none; [`try_insert_vertex_at`] takes it instead.
+/// The edge's 1-attribute stays on the part `u w` and a copy goes to `w v` (the split hook
+/// runs once).
+///
 /// Precondition ([`can_insert_vertex`]): `n >= 1` and the edge is not folded onto itself.
 /// Effect `X_0 + X_1` (`B0 + A1`). O(edge size · n).
-pub fn try_insert_vertex(g: &mut GMap, d: DartId) -> Result<EulerOp, EulerError> {
+pub fn try_insert_vertex<A: Attributes>(g: &mut GMap<A>, d: DartId) -> Result<EulerOp, EulerError> {
     live(g, d)?;
     try_split_cell(g, &[d], 1)
+}
+
+/// [`try_insert_vertex`] with the point of the new vertex given: `Some(p)` places it at
+/// `p`, `None` leaves it without a point. Same precondition ([`can_insert_vertex`]), effect
+/// and cost.
+pub fn try_insert_vertex_at<A: Attributes>(
+    g: &mut GMap<A>,
+    d: DartId,
+    point: Option<Point>,
+) -> Result<EulerOp, EulerError> {
+    live(g, d)?;
+    split_counted(g, &[d], 1, point).map(|(op, _)| op)
 }
 
 /// The two corner darts that define an edge inserted between the vertices of `d1` and
 /// `d2` in their face: `d1`, and whichever of `d2`, `alpha_1(d2)` the face boundary
 /// reaches first walking from `d1` by `alpha_0`, `alpha_1`, ….
-fn edge_cut(g: &GMap, d1: DartId, d2: DartId) -> Result<[DartId; 2], EulerError> {
+pub(super) fn edge_cut<A: Attributes>(g: &GMap<A>, d1: DartId, d2: DartId) -> Result<[DartId; 2], EulerError> {
     live(g, d1)?;
     live(g, d2)?;
     if g.dim() < 2 {
@@ -296,7 +357,7 @@ fn edge_cut(g: &GMap, d1: DartId, d2: DartId) -> Result<[DartId; 2], EulerError>
 }
 
 /// Whether [`try_insert_edge`] would succeed.
-pub fn can_insert_edge(g: &GMap, d1: DartId, d2: DartId) -> bool {
+pub fn can_insert_edge<A: Attributes>(g: &GMap<A>, d1: DartId, d2: DartId) -> bool {
     edge_cut(g, d1, d2).map(|c| can_split_cell(g, &c, 2)).unwrap_or(false)
 }
 
@@ -310,73 +371,13 @@ pub fn can_insert_edge(g: &GMap, d1: DartId, d2: DartId) -> bool {
 ///   │       │          │   / f2│
 ///   └───────┘          └───────┘
 /// ```
+/// The face's 2-attribute stays on the part holding `d1` and a copy goes to the other part
+/// (the split hook runs once); the new edge has no 1-attribute.
+///
 /// Precondition ([`can_insert_edge`]): `n >= 2`; `d2` lies on the boundary of the face of
 /// `d1` at another corner; the face boundary between them has no free dart. Effect
 /// `X_1 + X_2` (`B1 + A2`). O(face size · n).
-pub fn try_insert_edge(g: &mut GMap, d1: DartId, d2: DartId) -> Result<EulerOp, EulerError> {
+pub fn try_insert_edge<A: Attributes>(g: &mut GMap<A>, d1: DartId, d2: DartId) -> Result<EulerOp, EulerError> {
     let cut = edge_cut(g, d1, d2)?;
     try_split_cell(g, &cut, 2)
-}
-
-/// Whether [`try_insert_dangling_edge`] would succeed.
-pub fn can_insert_dangling_edge(g: &GMap, d: DartId) -> bool {
-    g.contains(d) && g.dim() >= 2 && !g.is_free(d, 1)
-}
-
-/// Inserts a dangling edge in the face of `d`, hanging from the vertex of `d` between `d`
-/// and `alpha_1(d)` (`mev`, CGAL's `insert_dangling_cell_1_in_cell_2`).
-///
-/// ```text
-///   ┌───────┐          ┌───────┐
-///   │       │   mev    │       │
-///   │       │  ─────>  │   o   │   a new vertex o on a new edge, inside the face
-///   │       │          │   |   │
-///   └───────┘          └───┴───┘
-/// ```
-/// Precondition ([`can_insert_dangling_edge`]): `n >= 2` and `d` is not 1-free. Effect
-/// `X_0 + X_1` (`B0 + A1`). O(size of the cells touched · n).
-pub fn try_insert_dangling_edge(g: &mut GMap, d: DartId) -> Result<EulerOp, EulerError> {
-    live(g, d)?;
-    let n = g.dim();
-    if n < 2 {
-        return Err(EulerError::BadDimension { what: "dangling edge", lo: 2, hi: n, got: n });
-    }
-    if g.is_free(d, 1) {
-        return Err(EulerError::Free { dart: d, alpha: 1 });
-    }
-    // copies of the corner across alpha_3..alpha_n
-    let corners = g.orbit(d, AlphaSet::range(3, n));
-    let mut touched: Vec<DartId> = corners.clone();
-    touched.extend(corners.iter().map(|&x| g.alpha(x, 1)));
-    let before = local_counts(g, &touched);
-    // per corner copy: p (next to x), q (next to alpha_1 x), p2, q2 at the far end
-    let mut new: HashMap<DartId, [DartId; 4]> = HashMap::default();
-    for &x in &corners {
-        let ds = [g.create_dart(), g.create_dart(), g.create_dart(), g.create_dart()];
-        new.insert(x, ds);
-    }
-    for &x in &corners {
-        let [p, q, p2, q2] = new[&x];
-        let y = g.alpha(x, 1);
-        g.link(x, p, 1);
-        g.link(y, q, 1);
-        g.link(p, p2, 0);
-        g.link(q, q2, 0);
-        g.link(p, q, 2);
-        g.link(p2, q2, 2);
-        g.link(p2, q2, 1);
-        for k in 3..=n {
-            let z = g.alpha(x, k);
-            if z != x {
-                let o = new[&z];
-                for t in 0..4 {
-                    g.link(new[&x][t], o[t], k);
-                }
-            }
-        }
-    }
-    touched.extend(new.values().flatten());
-    let after = local_counts(g, &touched);
-    debug_check(g);
-    Ok(EulerOp::new("mev", EpVector::from_cells(&diff(&after, &before))))
 }
