@@ -255,3 +255,41 @@ fn json_back_to_a_gmap_by_the_flag_construction() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("not the face poset of a regular cell complex"));
     assert!(!tb.exists());
 }
+
+#[test]
+fn convert_keeps_the_cell_labels_of_a_gmap_in_json_and_dot() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/labelled_segment.gmap");
+    let json = dir.path().join("segment.json");
+    let dot = dir.path().join("segment.dot");
+    for dst in [&json, &dot] {
+        let out = gmap().arg("convert").arg(&src).arg(dst).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let text = std::fs::read_to_string(&json).unwrap();
+    assert_eq!(
+        text,
+        "{\"dimension\": 1,\n \"regions\": [{\"id\": 0, \"dim\": 0},\n  \
+         {\"id\": 1, \"dim\": 0, \"labels\": {\"hits\": 3}},\n  \
+         {\"id\": 2, \"dim\": 1, \"labels\": {\"name\": \"main \\\"beam\\\"\", \"length\": 2.5}}],\n \
+         \"incidence\": [{\"from\": 2, \"to\": 0, \"weight\": 1},\n  {\"from\": 2, \"to\": 1, \"weight\": -1}]}\n"
+    );
+    // read back by the CLI and written again: the same text
+    let again = dir.path().join("again.json");
+    let out = gmap().arg("convert").arg(&json).arg(&again).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(std::fs::read_to_string(&again).unwrap(), text);
+    let d = std::fs::read_to_string(&dot).unwrap();
+    assert!(d.contains("  r1 [label=\"0\", \"hits\"=\"3\"];\n"), "{d}");
+    assert!(d.contains("  r2 [label=\"main \\\"beam\\\"\\n1\", \"length\"=\"2.5\"];\n"), "{d}");
+    // a label of a kind JSON labels cannot hold is refused, naming it
+    let bad = write(
+        dir.path(),
+        "bad.json",
+        r#"{"regions": [{"id": 0, "dim": 0, "labels": {"ok": false}}], "incidence": []}"#,
+    );
+    let out = gmap().arg("info").arg(&bad).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("regions[0].labels.ok: expected an integer, a real or a text, found false"), "{err}");
+}

@@ -103,3 +103,42 @@ fn meshio_reads(path: &Path, points: usize, blocks: &[(&str, usize)]) {
         assert!(got.split(' ').any(|b| b.starts_with(kind) && b.ends_with(&format!(":{count}"))), "{got}");
     }
 }
+
+#[test]
+fn the_labels_of_a_gmap_become_cell_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/labelled_segment.gmap");
+    let out = dir.path().join("segment.vtk");
+    let o = gmap(&["convert", p(&src), p(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    // the edge (the top cell), then vertex 1, the only labelled lower cell
+    assert_eq!(header(&text, "CELLS "), ["2", "5"]);
+    assert!(text.contains("\nCELLS 2 5\n2 0 1\n1 1\nCELL_TYPES 2\n3\n1\n"), "{text}");
+    let data = text.split("CELL_DATA 2\n").nth(1).unwrap();
+    assert_eq!(
+        data,
+        "SCALARS dim int 1\nLOOKUP_TABLE default\n1\n0\nFIELD labels 4\n\
+         name 1 2 string\nmain%20\"beam\"\n\n\
+         name.id 1 2 int\n0\n-1\n\
+         length 1 2 double\n2.5\n-1.7976931348623157e308\n\
+         hits 1 2 int\n-2147483648\n3\n"
+    );
+}
+
+#[test]
+fn a_vtk_file_is_not_read_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/labelled_segment.gmap");
+    let vtk = dir.path().join("segment.vtk");
+    assert!(gmap(&["convert", p(&src), p(&vtk)]).status.success());
+    for args in [vec!["homology", p(&vtk)], vec!["info", p(&vtk)], vec!["convert", p(&vtk), "x.gmap"]] {
+        let o = gmap(&args);
+        assert_eq!(o.status.code(), Some(1), "{args:?}");
+        assert!(
+            stderr(&o).contains("unsupported input format '.vtk': it is written only, as a view"),
+            "{}",
+            stderr(&o)
+        );
+    }
+}

@@ -20,7 +20,8 @@
 use std::fmt;
 
 use crate::attr::Cells;
-use crate::edit::GMap;
+use crate::dense::{Dart, DenseMap};
+use crate::edit::{DartId, GMap};
 
 /// The value of one label.
 #[derive(Clone, Debug, PartialEq)]
@@ -100,6 +101,59 @@ pub type LabelledGMap =
 
 /// The largest cell dimension a [`LabelledGMap`] labels.
 pub const MAX_LABELLED_DIM: usize = 5;
+
+/// The labels of the `dim`-cell of dart `d`, if that cell has a label slot set
+/// (`None` above [`MAX_LABELLED_DIM`] or the map's dimension). O(1).
+pub fn cell_labels(g: &LabelledGMap, dim: usize, d: DartId) -> Option<&Labels> {
+    if dim > g.dim() {
+        return None;
+    }
+    match dim {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        3 => g.attribute::<3>(d),
+        4 => g.attribute::<4>(d),
+        5 => g.attribute::<5>(d),
+        _ => None,
+    }
+}
+
+/// The labels of the cells of a dense map: `of[i][c]` are those of the `i`-cell numbered
+/// `c` in [`DenseMap::cells`]`(i)` (empty when the cell has none).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DenseLabels {
+    /// per dimension, per cell number
+    pub of: Vec<Vec<Labels>>,
+}
+
+impl DenseLabels {
+    /// The labels of `i`-cell `c`; empty for a dimension or cell it does not hold.
+    pub fn get(&self, i: usize, c: usize) -> &Labels {
+        static NONE: Labels = Labels(Vec::new());
+        self.of.get(i).and_then(|v| v.get(c)).unwrap_or(&NONE)
+    }
+
+    /// Whether no cell has a label.
+    pub fn is_empty(&self) -> bool {
+        self.of.iter().all(|v| v.iter().all(Labels::is_empty))
+    }
+}
+
+/// Freezes a labelled map ([`GMap::to_dense`]) and numbers its labels like the dense map's
+/// cells: `(dense map, labels, handle of each dense dart)`. O(N n²) (one cell partition
+/// per dimension).
+pub fn to_dense_labels(g: &LabelledGMap) -> (DenseMap, DenseLabels, Vec<DartId>) {
+    let (dense, ids) = g.to_dense();
+    let mut of = Vec::with_capacity(dense.dim() + 1);
+    for i in 0..=dense.dim().min(MAX_LABELLED_DIM) {
+        let cells = dense.cells(i);
+        of.push(
+            cells.reps.iter().map(|&Dart(r)| cell_labels(g, i, ids[r as usize]).cloned().unwrap_or_default()).collect(),
+        );
+    }
+    (dense, DenseLabels { of }, ids)
+}
 
 /// Whether `name` can be written bare: `[A-Za-z_][A-Za-z0-9_.-]*`.
 pub(crate) fn is_bare_name(name: &str) -> bool {
@@ -352,5 +406,31 @@ mod tests {
         assert_eq!(l.iter().map(|(n, _)| n).collect::<Vec<_>>(), vec!["b", "a"]);
         assert_eq!(l.remove("b"), Some(LabelValue::Int(3)));
         assert_eq!(l.len(), 1);
+    }
+
+    #[test]
+    fn dense_labels_are_numbered_like_the_dense_cells() {
+        let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&crate::examples::torus());
+        let named = |n: &str| -> Labels { [("name", LabelValue::Text(n.into()))].into_iter().collect() };
+        g.set_attribute::<2>(ids[5], named("face"));
+        g.set_attribute::<0>(ids[7], named("vertex"));
+        let (dense, labels, back) = to_dense_labels(&g);
+        assert_eq!(dense.cell_counts(), crate::examples::torus().cell_counts());
+        for i in 0..=2 {
+            let cells = dense.cells(i);
+            assert_eq!(labels.of[i].len(), cells.len());
+            for (k, &h) in back.iter().enumerate() {
+                let want = match (i, g.attribute::<2>(h), g.attribute::<0>(h)) {
+                    (2, Some(l), _) | (0, _, Some(l)) => l.clone(),
+                    _ => Labels::new(),
+                };
+                assert_eq!(labels.get(i, cells.of[k] as usize), &want, "dimension {i}, dart {k}");
+            }
+        }
+        assert_eq!(labels.of[2].iter().filter(|l| !l.is_empty()).count(), 1);
+        assert_eq!(labels.of[0].iter().filter(|l| !l.is_empty()).count(), 1);
+        assert!(labels.get(3, 0).is_empty() && labels.get(0, 1000).is_empty());
+        assert!(!labels.is_empty() && DenseLabels::default().is_empty());
+        assert_eq!(cell_labels(&g, 3, ids[0]), None);
     }
 }

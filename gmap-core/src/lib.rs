@@ -104,3 +104,6 @@ pub use geometry::{Affine, IntoPoint, MakeError};
 pub use labels::{LabelValue, LabelledGMap, Labels};
 pub use marks::{MarkId, Marks};
 pub use view::MapView;
+
+// labels numbered like the cells of a dense map
+pub use labels::{cell_labels, to_dense_labels, DenseLabels};

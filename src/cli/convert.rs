@@ -2,8 +2,9 @@
 //!
 //! Outputs: `.gmap` (with the points, and from a `.gmap` input the cell labels too) and
 //! `.moka` (gmap-core io), `.off` (2-maps with points), `.facets`
-//! (the barycentric subdivision: one simplex per dart) and `.vtk` (maps of dimension ≤ 3
-//! with points). Every writer goes through a
+//! (the barycentric subdivision: one simplex per dart), `.vtk` (maps of dimension ≤ 3
+//! with points; from a `.gmap`, the cell labels as cell data) and the incidence graph as
+//! `.json` or `.dot` (from a `.gmap`, each region with the labels of its cell). Every writer goes through a
 //! temporary file and a rename, so a failure leaves no partial output.
 
 use std::path::Path;
@@ -27,11 +28,18 @@ pub fn run(input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
             input.display()
         );
     }
-    if extension(input) == "gmap" && extension(output) == "gmap" {
+    if extension(input) == "gmap" {
         // the dense map of `load` would drop the labels of the cells
-        let g = load_labelled_gmap(input, max_darts)?;
-        gmap_core::io::write_labelled_gmap(&g, output)?;
-        return Ok(());
+        match extension(output).as_str() {
+            "gmap" => {
+                let g = load_labelled_gmap(input, max_darts)?;
+                gmap_core::io::write_labelled_gmap(&g, output)?;
+                return Ok(());
+            }
+            "vtk" | "dot" => return write_labelled(&load_labelled_gmap(input, max_darts)?, output),
+            "json" if !is_lar(output) => return write_labelled(&load_labelled_gmap(input, max_darts)?, output),
+            _ => {}
+        }
     }
     match load(input, max_darts)? {
         Loaded::Map(m) => write_map(&m, output),
@@ -81,6 +89,21 @@ pub fn write_map(m: &DenseMap, output: &Path) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// Writes a labelled map as `.vtk` (labels as cell data) or as its incidence graph, `.json`
+/// or `.dot` (labels on the regions).
+fn write_labelled(g: &gmap_core::LabelledGMap, output: &Path) -> Result<()> {
+    let (m, labels, _) = gmap_core::to_dense_labels(g);
+    match extension(output).as_str() {
+        "vtk" => gmap_ops::export::write_vtk_with_labels(&m, &labels, output)
+            .with_context(|| format!("{}: cannot write", output.display())),
+        ext => {
+            let x = ArchComplex::from_map_with_labels(&m, &labels)
+                .with_context(|| format!("{}: cannot write the incidence graph", output.display()))?;
+            write_text(output, &if ext == "dot" { write_dot(&x) } else { write_json(&x) })
+        }
+    }
 }
 
 /// Whether the output is a LAR file (`.lar.json`) rather than an incidence graph.

@@ -68,6 +68,12 @@ fn load_any(path: &Path, max_darts: Option<u64>) -> Result<Loaded> {
         "json" => Ok(Loaded::Complex(gmap_homology::json::read_json_file(path)?)),
         "cub" => Ok(Loaded::Cubical(gmap_ops::import::read_cub(path)?)),
         "pbm" => Ok(Loaded::Cubical(gmap_ops::import::read_pbm(path)?)),
+        // views: what they hold (polyhedra, drawings) does not give back the map
+        "vtk" | "dot" => bail!(
+            "{}: unsupported input format '.{}': it is written only, as a view (read the .gmap it came from)",
+            path.display(),
+            extension(path)
+        ),
         other => {
             bail!("{}: unsupported input format '.{}'", path.display(), gmap_core::io::shorten(other.as_bytes(), 40))
         }

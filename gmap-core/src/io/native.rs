@@ -438,18 +438,6 @@ fn set_labels(g: &mut LabelledGMap, dim: usize, d: DartId, l: Labels) {
     };
 }
 
-/// The labels of the `dim`-cell of `d`.
-fn labels_of(g: &LabelledGMap, dim: usize, d: DartId) -> Option<&Labels> {
-    match dim {
-        0 => g.attribute::<0>(d),
-        1 => g.attribute::<1>(d),
-        2 => g.attribute::<2>(d),
-        3 => g.attribute::<3>(d),
-        4 => g.attribute::<4>(d),
-        _ => g.attribute::<5>(d),
-    }
-}
-
 /// The `.gmap` text of a [`LabelledGMap`]: the darts in storage order, the points, then a
 /// `labels` section per dimension that has labels (each cell named by its first dart in
 /// storage order). O(N n).
@@ -465,7 +453,7 @@ pub fn format_labelled_gmap(g: &LabelledGMap) -> Vec<u8> {
         let mut lines = String::new();
         let mut count = 0;
         for d in g.one_dart_per_cell(dim) {
-            if let Some(l) = labels_of(g, dim, d) {
+            if let Some(l) = crate::labels::cell_labels(g, dim, d) {
                 count += 1;
                 let _ =
                     if l.is_empty() { writeln!(lines, "{}", index[d]) } else { writeln!(lines, "{} {l}", index[d]) };

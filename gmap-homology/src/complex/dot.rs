@@ -1,6 +1,9 @@
 //! The incidence graph for Graphviz (`.dot`, docs/FORMATS.md §2): one node per region (cell)
 //! labelled with its dimension, one edge per defined entry, from the higher region to the
-//! lower one, labelled with its weight (the signed incidence number).
+//! lower one, labelled with its weight (the signed incidence number). A region with labels
+//! ([`ArchComplex::region_labels`]) shows its `name` label on a line above its dimension
+//! (`label="kitchen\n3"`) and carries every other label as a quoted node attribute
+//! (`"material"="brick"`, numbers in their `.gmap` text form).
 //!
 //! ```
 //! use gmap_homology::arch::ArchComplex;
@@ -15,7 +18,24 @@
 
 use std::fmt::Write as _;
 
+use gmap_core::LabelValue;
+
 use crate::complex::arch::ArchComplex;
+
+/// Writes `t` as a Graphviz quoted string (`"` and `\` escaped, line breaks as `\n`).
+fn quote(s: &mut String, t: &str) {
+    s.push('"');
+    for c in t.chars() {
+        match c {
+            '"' => s.push_str("\\\""),
+            '\\' => s.push_str("\\\\"),
+            '\n' => s.push_str("\\n"),
+            '\r' => {}
+            c => s.push(c),
+        }
+    }
+    s.push('"');
+}
 
 /// The Graphviz text of the incidence graph; nodes are named `r<id>`, ranked by dimension
 /// (higher dimensions on top).
@@ -33,12 +53,60 @@ pub fn write_dot(x: &ArchComplex) -> String {
         }
         s.push_str(" }\n");
     }
-    for r in x.regions() {
-        let _ = writeln!(s, "  r{} [label=\"{}\"];", r.id, r.dim);
+    for (k, r) in x.regions().iter().enumerate() {
+        let labels = x.region_labels(k);
+        let _ = write!(s, "  r{} [label=", r.id);
+        // the name, when there is one, on a line above the dimension
+        match labels.get("name") {
+            Some(LabelValue::Text(t)) => quote(&mut s, &format!("{t}\n{}", r.dim)),
+            Some(v) => quote(&mut s, &format!("{v}\n{}", r.dim)),
+            None => {
+                let _ = write!(s, "\"{}\"", r.dim);
+            }
+        }
+        for (name, v) in labels.iter().filter(|(n, _)| *n != "name") {
+            s.push_str(", ");
+            quote(&mut s, name);
+            s.push('=');
+            match v {
+                LabelValue::Text(t) => quote(&mut s, t),
+                v => quote(&mut s, &v.to_string()),
+            }
+        }
+        s.push_str("];\n");
     }
     for (f, t, w) in x.entry_ids() {
         let _ = writeln!(s, "  r{f} -> r{t} [label=\"{w}\"];");
     }
     s.push_str("}\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::complex::arch::RegionId;
+    use gmap_core::Labels;
+
+    #[test]
+    fn named_regions_show_their_name_and_carry_the_other_labels() {
+        let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 1), (2, 0)], &[(1, 0, 0)]).unwrap();
+        let l: Labels = [
+            ("kind", LabelValue::Text("door".into())),
+            ("name", LabelValue::Text("front \"door\"\\\n".into())),
+            ("width", LabelValue::Real(0.9)),
+        ]
+        .into_iter()
+        .collect();
+        let x = x.with_region_labels(RegionId(1), l).unwrap();
+        let numbered: Labels = [("name", LabelValue::Int(7))].into_iter().collect();
+        let x = x.with_region_labels(RegionId(2), numbered).unwrap();
+        let d = write_dot(&x);
+        assert!(d.contains("  r0 [label=\"0\"];\n"), "{d}");
+        assert!(
+            d.contains("  r1 [label=\"front \\\"door\\\"\\\\\\n\\n1\", \"kind\"=\"door\", \"width\"=\"0.9\"];\n"),
+            "{d}"
+        );
+        assert!(d.contains("  r2 [label=\"7\\n0\"];\n"), "{d}");
+    }
 }

@@ -16,7 +16,12 @@
 //! (then the largest region dimension, 0 for no region). A region may carry its own
 //! topology, `"betti": [1, 2, 1]` (a torus 2-region; AC Def. 8.1), checked by
 //! [`ArchComplex::with_region_betti`] and used by Algorithm 8.16; without it a region is a
-//! cell (see [`ArchComplex::region_betti`]).
+//! cell (see [`ArchComplex::region_betti`]). A region may carry labels, an object of named
+//! values, `"labels": {"name": "kitchen", "storey": 0, "area": 14.0}`: a JSON integer is an
+//! integer label (64 bits), any other number a real, a string a text; the order of the
+//! members is kept ([`ArchComplex::region_labels`]), a name given twice is
+//! [`JsonError::DuplicateKey`] like any repeated key, and any other value is a
+//! [`JsonError::Schema`] error naming `regions[i].labels.<name>`.
 //!
 //! ```
 //! use gmap_homology::json::{read_json, write_json};
@@ -35,6 +40,8 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use serde_json::Value;
 use thiserror::Error;
+
+use gmap_core::{LabelValue, Labels};
 
 use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
 
@@ -126,6 +133,65 @@ struct RawRegion {
     /// the region's own Betti numbers (AC Def. 8.1), when it is not a cell
     #[serde(default)]
     betti: Option<Vec<u64>>,
+    /// the region's labels, in the order of the file
+    #[serde(default)]
+    labels: Option<RawLabels>,
+}
+
+/// A `"labels"` object, its members in the order of the text.
+struct RawLabels(Vec<(String, Value)>);
+
+impl<'de> Deserialize<'de> for RawLabels {
+    fn deserialize<D: serde::Deserializer<'de>>(de: D) -> Result<Self, D::Error> {
+        struct Members;
+        impl<'de> serde::de::Visitor<'de> for Members {
+            type Value = RawLabels;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("an object of labels")
+            }
+            fn visit_map<M: serde::de::MapAccess<'de>>(self, mut m: M) -> Result<RawLabels, M::Error> {
+                let mut out = Vec::new();
+                while let Some((k, v)) = m.next_entry::<String, Value>()? {
+                    out.push((k, v));
+                }
+                Ok(RawLabels(out))
+            }
+        }
+        de.deserialize_map(Members)
+    }
+}
+
+/// The labels of region `index` from the members of its `"labels"` object: a JSON integer
+/// is an integer label (it must fit i64), another number a real, a string a text.
+fn region_labels(members: &[(String, Value)], index: usize) -> Result<Labels, JsonError> {
+    let mut out = Labels::new();
+    for (name, v) in members {
+        let at = || format!("regions[{index}].labels.{name}");
+        let value = match v {
+            Value::String(t) => LabelValue::Text(t.clone()),
+            Value::Number(x) => match x.as_i64() {
+                Some(i) => LabelValue::Int(i),
+                None if x.is_u64() || !x.to_string().contains(['.', 'e', 'E']) => {
+                    return Err(schema(at(), format!("{x} does not fit a 64-bit integer")))
+                }
+                None => match x.as_f64() {
+                    Some(r) if r.is_finite() => LabelValue::Real(r),
+                    _ => return Err(schema(at(), format!("{x} is not a finite real"))),
+                },
+            },
+            other => return Err(schema(at(), format!("expected an integer, a real or a text, found {other}"))),
+        };
+        out.set(name, value);
+    }
+    Ok(out)
+}
+
+/// The complex with the labels given to its regions (`(region id, labels)`).
+fn with_labels(mut x: ArchComplex, labels: Vec<(RegionId, Labels)>) -> Result<ArchComplex, JsonError> {
+    for (id, l) in labels {
+        x = x.with_region_labels(id, l)?;
+    }
+    Ok(x)
 }
 
 /// The optional `"betti"` of region `index`, as counts.
@@ -172,11 +238,15 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
     };
     let mut regions = Vec::with_capacity(raw.regions.len());
     let mut betti = Vec::new();
+    let mut labels = Vec::new();
     for (index, r) in raw.regions.iter().enumerate() {
         let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
         regions.push(Region { id: RegionId(r.id), dim });
         if let Some(b) = &r.betti {
             betti.push((RegionId(r.id), betti_counts(b, index)?));
+        }
+        if let Some(l) = &r.labels {
+            labels.push((RegionId(r.id), region_labels(&l.0, index)?));
         }
     }
     let dim = match raw.dimension {
@@ -184,7 +254,7 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
         None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
     };
     let entries = raw.incidence.iter().map(|e| (RegionId(e.from), RegionId(e.to), e.weight)).collect();
-    with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)
+    with_labels(with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)?, labels)
 }
 
 /// The tree-based reader, for its precise messages on malformed input.
@@ -201,6 +271,7 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
     let regs = regs.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
     let mut regions = Vec::with_capacity(regs.len());
     let mut betti = Vec::new();
+    let mut labels = Vec::new();
     for (index, r) in regs.iter().enumerate() {
         let at = At { list: "regions", index };
         let id = get_u64(r, at, "id")?;
@@ -212,6 +283,13 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
                     || schema(at.path("betti"), format!("expected an array of non-negative integers, found {v}")),
                 )?;
             betti.push((RegionId(id), betti_counts(&list, index)?));
+        }
+        if let Some(v) = r.get("labels") {
+            let members = v
+                .as_object()
+                .ok_or_else(|| schema(at.path("labels"), format!("expected an object of labels, found {v}")))?;
+            let members: Vec<(String, Value)> = members.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
+            labels.push((RegionId(id), region_labels(&members, index)?));
         }
     }
     let dim = match obj.get("dimension") {
@@ -229,7 +307,7 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
         let at = At { list: "incidence", index };
         entries.push((RegionId(get_u64(e, at, "from")?), RegionId(get_u64(e, at, "to")?), get_i64(e, at, "weight")?));
     }
-    with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)
+    with_labels(with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)?, labels)
 }
 
 /// Reads and validates a `.json` file; errors name the file (and the line for syntax).
@@ -255,8 +333,13 @@ pub struct JsonFileError {
     pub error: JsonError,
 }
 
+/// A JSON string literal of `t`.
+fn json_string(t: &str) -> String {
+    serde_json::Value::String(t.to_string()).to_string()
+}
+
 /// Writes the complex in the `.json` format, one region or entry per line; a region given
-/// Betti numbers keeps them (`"betti"`).
+/// Betti numbers keeps them (`"betti"`), a region with labels keeps them (`"labels"`).
 pub fn write_json(x: &ArchComplex) -> String {
     let mut s = String::with_capacity(32 * (x.regions().len() + x.entries().len()) + 64);
     let _ = write!(s, "{{\"dimension\": {},\n \"regions\": [", x.dim());
@@ -267,6 +350,28 @@ pub fn write_json(x: &ArchComplex) -> String {
             let b: Vec<String> = x.region_betti(k).iter().map(|b| b.to_string()).collect();
             let _ = write!(s, ", \"betti\": [{}]", b.join(", "));
         }
+        let labels = x.region_labels(k);
+        if !labels.is_empty() {
+            s.push_str(", \"labels\": {");
+            for (j, (name, v)) in labels.iter().enumerate() {
+                if j > 0 {
+                    s.push_str(", ");
+                }
+                s.push_str(&json_string(name));
+                s.push_str(": ");
+                match v {
+                    LabelValue::Int(i) => {
+                        let _ = write!(s, "{i}");
+                    }
+                    // `{:?}` always shows a `.` or an exponent, so the reader sees a real
+                    LabelValue::Real(r) => {
+                        let _ = write!(s, "{r:?}");
+                    }
+                    LabelValue::Text(t) => s.push_str(&json_string(t)),
+                }
+            }
+            s.push('}');
+        }
         s.push('}');
     }
     s.push_str("],\n \"incidence\": [");
@@ -276,4 +381,123 @@ pub fn write_json(x: &ArchComplex) -> String {
     }
     s.push_str("]}\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn labelled() -> ArchComplex {
+        let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 0), (2, 1)], &[(2, 0, 1), (2, 1, -1)]).unwrap();
+        let beam: Labels = [
+            ("name", LabelValue::Text("main \"beam\"\n\u{e9}".into())),
+            ("length", LabelValue::Real(2.0)),
+            ("count", LabelValue::Int(-7)),
+            ("big", LabelValue::Int(i64::MAX)),
+            ("tiny", LabelValue::Real(1e-300)),
+        ]
+        .into_iter()
+        .collect();
+        x.with_region_labels(RegionId(2), beam).unwrap()
+    }
+
+    #[test]
+    fn labels_round_trip_typed_and_in_order() {
+        let x = labelled();
+        let text = write_json(&x);
+        assert!(
+            text.contains(
+                r#"{"id": 2, "dim": 1, "labels": {"name": "main \"beam\"\né", "length": 2.0, "count": -7, "big": 9223372036854775807, "tiny": 1e-300}}"#
+            ),
+            "{text}"
+        );
+        assert!(text.contains(r#"{"id": 0, "dim": 0},"#), "{text}");
+        let back = read_json(&text).unwrap();
+        assert_eq!(back, x);
+        let names: Vec<&str> = back.region_labels(2).iter().map(|(n, _)| n).collect();
+        assert_eq!(names, ["name", "length", "count", "big", "tiny"]);
+        assert_eq!(back.region_labels(2).get("length"), Some(&LabelValue::Real(2.0)));
+        assert!(back.region_labels(0).is_empty());
+        // the tree-based reader (taken when the fast one fails) keeps them too
+        assert_eq!(read_json_slow(&text).unwrap().region_labels(2).get("count"), Some(&LabelValue::Int(-7)));
+    }
+
+    #[test]
+    fn bad_labels_are_refused_with_their_place() {
+        let with = |labels: &str| {
+            format!(
+                r#"{{"regions": [{{"id": 0, "dim": 0}}, {{"id": 5, "dim": 0, "labels": {labels}}}], "incidence": []}}"#
+            )
+        };
+        let err = |labels: &str| read_json(&with(labels)).unwrap_err().to_string();
+        assert_eq!(err(r#"{"a": true}"#), "regions[1].labels.a: expected an integer, a real or a text, found true");
+        assert_eq!(err(r#"{"a": null}"#), "regions[1].labels.a: expected an integer, a real or a text, found null");
+        assert_eq!(err(r#"{"a": [1]}"#), "regions[1].labels.a: expected an integer, a real or a text, found [1]");
+        assert_eq!(
+            err(r#"{"a": 9223372036854775808}"#),
+            "regions[1].labels.a: 9223372036854775808 does not fit a 64-bit integer"
+        );
+        assert_eq!(err(r#"[1, 2]"#), "regions[1].labels: expected an object of labels, found [1,2]");
+        assert_eq!(err(r#""kitchen""#), "regions[1].labels: expected an object of labels, found \"kitchen\"");
+        assert!(matches!(
+            read_json(&with(r#"{"name": "a", "name": "b"}"#)),
+            Err(JsonError::DuplicateKey { ref key, .. }) if key == "name"
+        ));
+        // an empty object is no label; a real written with an exponent is a real
+        let x = read_json(&with(r#"{}"#)).unwrap();
+        assert!(x.region_labels(1).is_empty());
+        let x = read_json(&with(r#"{"e": 1e2, "n": -0}"#)).unwrap();
+        assert_eq!(x.region_labels(1).get("e"), Some(&LabelValue::Real(100.0)));
+        assert_eq!(x.region_labels(1).get("n"), Some(&LabelValue::Int(0)));
+    }
+
+    #[test]
+    fn a_label_that_is_not_finite_is_refused() {
+        let x = ArchComplex::try_from_ids(0, &[(3, 0)], &[]).unwrap();
+        let l: Labels = [("w", LabelValue::Real(f64::NAN))].into_iter().collect();
+        assert_eq!(
+            x.with_region_labels(RegionId(3), l).unwrap_err().to_string(),
+            "region 3: the label `w` is not a finite real"
+        );
+    }
+
+    fn label_value() -> impl proptest::strategy::Strategy<Value = LabelValue> {
+        use proptest::prelude::*;
+        prop_oneof![
+            any::<i64>().prop_map(LabelValue::Int),
+            any::<f64>().prop_filter("finite", |x| x.is_finite()).prop_map(LabelValue::Real),
+            "\\PC{0,8}|[\"\\\\\n\t\u{0}-\u{1f}]{0,4}".prop_map(LabelValue::Text),
+        ]
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Any labels on the regions of a path of edges are written and read back as they
+        /// were, in order and typed; the `.dot` text keeps one node per line.
+        #[test]
+        fn labels_write_and_read_back(
+            labels in proptest::collection::vec(
+                proptest::collection::vec(("\\PC{0,6}", label_value()), 0..4),
+                1..6,
+            )
+        ) {
+            let n = labels.len() as u64;
+            let regions: Vec<(u64, usize)> = (0..n).map(|k| (k, 0)).chain((0..n - 1).map(|k| (n + k, 1))).collect();
+            let entries: Vec<(u64, u64, i64)> =
+                (0..n - 1).flat_map(|k| [(n + k, k, -1), (n + k, k + 1, 1)]).collect();
+            let mut x = ArchComplex::try_from_ids(1, &regions, &entries).unwrap();
+            for (k, l) in labels.into_iter().enumerate() {
+                let l: Labels = l.into_iter().collect();
+                x = x.with_region_labels(RegionId(k as u64), l).unwrap();
+            }
+            let text = write_json(&x);
+            let back = read_json(&text).unwrap();
+            proptest::prop_assert_eq!(&back, &x);
+            proptest::prop_assert_eq!(write_json(&back), text);
+            let dot = crate::complex::dot::write_dot(&x);
+            let nodes = dot.lines().filter(|l| l.starts_with("  r") && l.contains(" [label=") && !l.contains("->")).count();
+            proptest::prop_assert_eq!(nodes, x.regions().len());
+        }
+    }
 }

@@ -13,7 +13,7 @@ use gmap_core::{AlphaSet, Attributes, Dart, DartId, DenseMap, GMap, Partition};
 use thiserror::Error;
 
 mod vtk;
-pub use vtk::{vtk_string, write_vtk};
+pub use vtk::{vtk_string, vtk_string_with_labels, write_vtk, write_vtk_with_labels};
 
 /// Why a map could not be exported.
 #[derive(Debug, Error)]

@@ -28,11 +28,23 @@
 //! orientable volume has outward normals. `CELL_DATA` holds the cell dimension (`dim`).
 //! Maps of dimension above 3, maps without points, and points that are not finite are
 //! refused.
+//!
+//! With labels ([`vtk_string_with_labels`]), the lower cells that carry a label are written
+//! after the top cells (2-cells as polygons, 1-cells as lines, 0-cells as vertices; a
+//! viewer tells them apart by `dim`), and the cell data gains `FIELD labels K`: per label
+//! name, in order of first appearance, an array over all written cells — `int` when every
+//! value is an integer of 32 bits (missing: `-2147483648`), `vtktypeint64` for wider
+//! integers (missing: `-9223372036854775808`), `double` when a value is real (missing:
+//! `-1.7976931348623157e308`, as the legacy reader parses no NaN), and for texts a `string`
+//! array (one text per line, missing: empty) followed by an `int` array `<name>.id`, the
+//! rank of the text among the distinct texts of the column in byte order (missing: `-1`),
+//! for colouring. Names and texts are written with VTK's `%XX` escape for bytes outside
+//! `!`..`~` and for `%`.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
-use gmap_core::{AlphaSet, Dart, DenseMap, Point};
+use gmap_core::{AlphaSet, Dart, DenseLabels, DenseMap, LabelValue, Point};
 
 use super::{write_atomic, ExportError};
 
@@ -68,9 +80,201 @@ fn signed_volume6(faces: &[Vec<u32>], pts: &[Point]) -> f64 {
     v
 }
 
+/// One cell as written: its VTK type, its connectivity list (without the leading count),
+/// and which cell of the map it is (dimension, number in [`DenseMap::cells`]).
+struct Written {
+    kind: u8,
+    conn: Vec<u32>,
+    dim: usize,
+    cell: usize,
+}
+
+/// The face stream of every volume of a 3-map (`nFaces, nPts, ids…, …`), in the order of
+/// `map.cells(3)`.
+fn polyhedra(map: &DenseMap, vert: &[u32], pts: &[Point]) -> Vec<Vec<u32>> {
+    // orientation classes: parity of the number of involutions from the volume's smallest
+    // dart (BFS over alpha_0, alpha_1, alpha_2)
+    let vols = map.cells(3);
+    let faces = map.partition(AlphaSet::of(&[0, 1]));
+    let mut parity = vec![u8::MAX; map.dart_count()];
+    let mut face_done = vec![false; faces.len()];
+    let mut out = Vec::with_capacity(vols.len());
+    for &r in &vols.reps {
+        let mut stack = vec![r];
+        parity[r.index()] = 0;
+        let mut polys: Vec<Vec<u32>> = Vec::new();
+        while let Some(d) = stack.pop() {
+            let f = faces.of[d.index()] as usize;
+            if parity[d.index()] == 0 && !face_done[f] {
+                face_done[f] = true;
+                polys.push(polygon(map, vert, d));
+            }
+            for i in 0..3 {
+                let e = map.alpha(d, i);
+                if parity[e.index()] == u8::MAX {
+                    parity[e.index()] = 1 - parity[d.index()];
+                    stack.push(e);
+                }
+            }
+        }
+        // outward normals for an orientable volume (its faces are walked consistently)
+        if signed_volume6(&polys, pts) < 0.0 {
+            for p in &mut polys {
+                p.reverse();
+            }
+        }
+        let mut stream = vec![polys.len() as u32];
+        for p in polys {
+            stream.push(p.len() as u32);
+            stream.extend(p);
+        }
+        out.push(stream);
+    }
+    out
+}
+
+/// The `k`-cells whose number satisfies `keep`, as VTK cells (`k <= 2`; volumes go through
+/// [`polyhedra`]).
+fn low_cells(map: &DenseMap, vert: &[u32], k: usize, keep: impl Fn(usize) -> bool) -> Vec<Written> {
+    let reps = if k == 0 { Vec::new() } else { map.cells(k).reps };
+    let count = if k == 0 { vert.iter().map(|&v| v as usize + 1).max().unwrap_or(0) } else { reps.len() };
+    (0..count)
+        .filter(|&c| keep(c))
+        .map(|c| match k {
+            0 => Written { kind: VTK_VERTEX, conn: vec![c as u32], dim: 0, cell: c },
+            1 => {
+                let d = reps[c];
+                Written { kind: VTK_LINE, conn: vec![vert[d.index()], vert[map.alpha(d, 0).index()]], dim: 1, cell: c }
+            }
+            _ => Written { kind: VTK_POLYGON, conn: polygon(map, vert, reps[c]), dim: 2, cell: c },
+        })
+        .collect()
+}
+
+/// The type a label column is written with: the narrowest that holds all its values.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Column {
+    /// integers in the range of `i32`: `int`, missing `-2147483648`
+    Int,
+    /// integers beyond it: `vtktypeint64`, missing `-9223372036854775808`
+    Int64,
+    /// reals, or integers mixed with reals: `double`, missing `-1.7976931348623157e308`
+    Real,
+    /// texts (and numbers mixed with texts, in their text form): a `string` array (missing:
+    /// the empty text) and an `int` array `<name>.id` (the rank of the text among the
+    /// column's distinct texts in byte order, missing `-1`)
+    Text,
+}
+
+fn column_of(v: &LabelValue) -> Column {
+    match v {
+        LabelValue::Int(i) if i32::try_from(*i).is_ok() => Column::Int,
+        LabelValue::Int(_) => Column::Int64,
+        LabelValue::Real(_) => Column::Real,
+        LabelValue::Text(_) => Column::Text,
+    }
+}
+
+/// A name or text as the legacy reader decodes it: every byte outside `!`..`~`, and `%`,
+/// as `%XX` (so that a text is one word, or one line).
+fn encode(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for b in s.bytes() {
+        if b <= b' ' || b >= 0x7f || b == b'%' {
+            let _ = write!(out, "%{b:02X}");
+        } else {
+            out.push(b as char);
+        }
+    }
+    out
+}
+
+/// Writes the `FIELD labels` block of the cell data: one array per label name (see
+/// [`Column`]), the names in order of first appearance over the written cells.
+fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabels) {
+    let mut names: Vec<(&str, Column)> = Vec::new();
+    for w in written {
+        for (name, v) in labels.get(w.dim, w.cell).iter() {
+            let c = column_of(v);
+            match names.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, col)) => *col = (*col).max(c),
+                None => names.push((name, c)),
+            }
+        }
+    }
+    if names.is_empty() {
+        return;
+    }
+    let arrays = names.len() + names.iter().filter(|(_, c)| *c == Column::Text).count();
+    let n = written.len();
+    let _ = writeln!(out, "FIELD labels {arrays}");
+    for &(name, col) in &names {
+        let value = |w: &Written| labels.get(w.dim, w.cell).get(name);
+        let enc = encode(name);
+        match col {
+            Column::Int | Column::Int64 => {
+                let (ty, missing) =
+                    if col == Column::Int { ("int", i64::from(i32::MIN)) } else { ("vtktypeint64", i64::MIN) };
+                let _ = writeln!(out, "{enc} 1 {n} {ty}");
+                for w in written {
+                    let v = match value(w) {
+                        Some(LabelValue::Int(i)) => *i,
+                        _ => missing,
+                    };
+                    let _ = writeln!(out, "{v}");
+                }
+            }
+            Column::Real => {
+                let _ = writeln!(out, "{enc} 1 {n} double");
+                for w in written {
+                    let v = match value(w) {
+                        Some(LabelValue::Int(i)) => *i as f64,
+                        Some(LabelValue::Real(r)) => *r,
+                        _ => f64::MIN,
+                    };
+                    let _ = writeln!(out, "{v:?}");
+                }
+            }
+            Column::Text => {
+                let text = |v: &LabelValue| match v {
+                    LabelValue::Text(s) => s.clone(),
+                    LabelValue::Int(i) => i.to_string(),
+                    LabelValue::Real(r) => format!("{r:?}"),
+                };
+                let texts: Vec<Option<String>> = written.iter().map(|w| value(w).map(text)).collect();
+                let mut distinct: Vec<&str> = texts.iter().flatten().map(String::as_str).collect();
+                distinct.sort_unstable();
+                distinct.dedup();
+                let _ = writeln!(out, "{enc} 1 {n} string");
+                for t in &texts {
+                    let _ = writeln!(out, "{}", encode(t.as_deref().unwrap_or("")));
+                }
+                let _ = writeln!(out, "{enc}.id 1 {n} int");
+                for t in &texts {
+                    let id = match t {
+                        Some(t) => distinct.binary_search(&t.as_str()).map_or(-1, |k| k as i64),
+                        None => -1,
+                    };
+                    let _ = writeln!(out, "{id}");
+                }
+            }
+        }
+    }
+}
+
 /// The legacy VTK text of a map of dimension at most 3 with points (see the module
-/// documentation). O(N) plus the text.
+/// documentation), without cell labels. O(N) plus the text.
 pub fn vtk_string(map: &DenseMap) -> Result<String, ExportError> {
+    vtk_string_with_labels(map, &DenseLabels::default())
+}
+
+/// The legacy VTK text of a map of dimension at most 3 with points and the labels of its
+/// cells (`labels.get(i, c)`: those of `i`-cell `c` of [`DenseMap::cells`]`(i)`, as
+/// [`gmap_core::to_dense_labels`] numbers them). Written cells: every top cell, then the
+/// cells of each lower dimension (from the highest) that carry at least one label; the cell
+/// data holds `dim` and one array per label name (see the module documentation). A map
+/// without labels gives exactly [`vtk_string`]. O(N n) plus the text.
+pub fn vtk_string_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<String, ExportError> {
     let n = map.dim();
     if n > 3 {
         return Err(ExportError::DimensionAbove { format: ".vtk", max: 3, found: n });
@@ -89,92 +293,51 @@ pub fn vtk_string(map: &DenseMap) -> Result<String, ExportError> {
         pts.push(p);
     }
     let vert = &verts.of;
-    // each top cell as its VTK connectivity list (without the leading count)
-    let mut cells: Vec<Vec<u32>> = Vec::new();
-    let kind = match n {
-        0 => {
-            cells.extend((0..verts.len() as u32).map(|v| vec![v]));
-            VTK_VERTEX
-        }
-        1 => {
-            for &d in &map.cells(1).reps {
-                cells.push(vec![vert[d.index()], vert[map.alpha(d, 0).index()]]);
-            }
-            VTK_LINE
-        }
-        2 => {
-            for &d in &map.cells(2).reps {
-                cells.push(polygon(map, vert, d));
-            }
-            VTK_POLYGON
-        }
-        _ => {
-            // orientation classes: parity of the number of involutions from the volume's
-            // smallest dart (BFS over alpha_0, alpha_1, alpha_2)
-            let vols = map.cells(3);
-            let faces = map.partition(AlphaSet::of(&[0, 1]));
-            let mut parity = vec![u8::MAX; map.dart_count()];
-            let mut face_done = vec![false; faces.len()];
-            for &r in &vols.reps {
-                let mut stack = vec![r];
-                parity[r.index()] = 0;
-                let mut polys: Vec<Vec<u32>> = Vec::new();
-                while let Some(d) = stack.pop() {
-                    let f = faces.of[d.index()] as usize;
-                    if parity[d.index()] == 0 && !face_done[f] {
-                        face_done[f] = true;
-                        polys.push(polygon(map, vert, d));
-                    }
-                    for i in 0..3 {
-                        let e = map.alpha(d, i);
-                        if parity[e.index()] == u8::MAX {
-                            parity[e.index()] = 1 - parity[d.index()];
-                            stack.push(e);
-                        }
-                    }
-                }
-                // outward normals for an orientable volume (its faces are walked consistently)
-                if signed_volume6(&polys, &pts) < 0.0 {
-                    for p in &mut polys {
-                        p.reverse();
-                    }
-                }
-                let mut stream = vec![polys.len() as u32];
-                for p in polys {
-                    stream.push(p.len() as u32);
-                    stream.extend(p);
-                }
-                cells.push(stream);
-            }
-            VTK_POLYHEDRON
-        }
+    let mut cells: Vec<Written> = if n == 3 {
+        polyhedra(map, vert, &pts)
+            .into_iter()
+            .enumerate()
+            .map(|(c, conn)| Written { kind: VTK_POLYHEDRON, conn, dim: 3, cell: c })
+            .collect()
+    } else {
+        low_cells(map, vert, n, |_| true)
     };
-    let mut out = String::with_capacity(64 + pts.len() * 24 + cells.iter().map(|c| c.len() * 6).sum::<usize>());
+    let top = cells.len();
+    for k in (0..n).rev() {
+        if labels.of.get(k).is_some_and(|v| v.iter().any(|l| !l.is_empty())) {
+            cells.extend(low_cells(map, vert, k, |c| !labels.get(k, c).is_empty()));
+        }
+    }
+    let mut out = String::with_capacity(64 + pts.len() * 24 + cells.iter().map(|c| c.conn.len() * 6).sum::<usize>());
     let _ = writeln!(out, "# vtk DataFile Version 3.0");
-    let _ = writeln!(out, "gmap: a {n}-map, {} vertices, {} top cells", pts.len(), cells.len());
-    let _ = writeln!(out, "ASCII\nDATASET UNSTRUCTURED_GRID");
+    let _ = write!(out, "gmap: a {n}-map, {} vertices, {top} top cells", pts.len());
+    if cells.len() > top {
+        let _ = write!(out, ", {} labelled lower cells", cells.len() - top);
+    }
+    let _ = writeln!(out, "\nASCII\nDATASET UNSTRUCTURED_GRID");
     let _ = writeln!(out, "POINTS {} double", pts.len());
     for p in &pts {
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
-    let size: usize = cells.iter().map(|c| c.len() + 1).sum();
+    let size: usize = cells.iter().map(|c| c.conn.len() + 1).sum();
     let _ = writeln!(out, "CELLS {} {size}", cells.len());
     for c in &cells {
-        let _ = write!(out, "{}", c.len());
-        for v in c {
+        let _ = write!(out, "{}", c.conn.len());
+        for v in &c.conn {
             let _ = write!(out, " {v}");
         }
         out.push('\n');
     }
     let _ = writeln!(out, "CELL_TYPES {}", cells.len());
-    for _ in &cells {
-        let _ = writeln!(out, "{kind}");
+    for c in &cells {
+        let _ = writeln!(out, "{}", c.kind);
     }
     let _ = writeln!(out, "CELL_DATA {}", cells.len());
     let _ = writeln!(out, "SCALARS dim int 1\nLOOKUP_TABLE default");
-    for _ in &cells {
-        let _ = writeln!(out, "{n}");
+    for c in &cells {
+        let _ = writeln!(out, "{}", c.dim);
     }
+    write_label_arrays(&mut out, &cells, labels);
     Ok(out)
 }
 
@@ -183,10 +346,17 @@ pub fn write_vtk(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
     write_atomic(path, vtk_string(map)?.as_bytes())
 }
 
+/// Writes a map and the labels of its cells as legacy VTK (see [`vtk_string_with_labels`]);
+/// nothing is written when it is refused.
+pub fn write_vtk_with_labels(map: &DenseMap, labels: &DenseLabels, path: &Path) -> Result<(), ExportError> {
+    write_atomic(path, vtk_string_with_labels(map, labels)?.as_bytes())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::build;
+    use gmap_core::Labels;
 
     fn prism(k: usize) -> DenseMap {
         build::extrude(&build::polygon(k).unwrap()).unwrap()
@@ -273,5 +443,36 @@ mod tests {
         let text = vtk_string(&c).unwrap();
         assert!(text.contains("POINTS 2 double\n"), "{text}");
         assert!(text.contains("CELLS 2 6\n2 0 1\n2 1 0\nCELL_TYPES 2\n3\n3\n"), "{text}");
+    }
+
+    #[test]
+    fn labels_become_cell_data_over_the_labelled_cells() {
+        let sq = build::polygon(4).unwrap();
+        // face 0 named, edge 2 with a wide integer and a real, vertex 1 with a mixed column
+        let mut labels = DenseLabels { of: vec![vec![Labels::new(); 4], vec![Labels::new(); 4], vec![Labels::new()]] };
+        labels.of[2][0].set("name", LabelValue::Text("a 100% \"square\"".into()));
+        labels.of[1][2].set("big", LabelValue::Int(1 << 40));
+        labels.of[1][2].set("w", LabelValue::Int(2));
+        labels.of[0][1].set("w", LabelValue::Real(0.5));
+        labels.of[0][1].set("name", LabelValue::Int(3));
+        let text = vtk_string_with_labels(&sq, &labels).unwrap();
+        let vert = sq.cells(0).of;
+        let e = sq.cells(1).reps[2];
+        let (a, b) = (vert[e.index()], vert[sq.alpha(e, 0).index()]);
+        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n7\n3\n1\n")), "{text}");
+        let data = text.split("CELL_DATA 3\n").nth(1).unwrap();
+        assert_eq!(
+            data,
+            "SCALARS dim int 1\nLOOKUP_TABLE default\n2\n1\n0\n\
+             FIELD labels 4\n\
+             name 1 3 string\na%20100%25%20\"square\"\n\n3\n\
+             name.id 1 3 int\n1\n-1\n0\n\
+             big 1 3 vtktypeint64\n-9223372036854775808\n1099511627776\n-9223372036854775808\n\
+             w 1 3 double\n-1.7976931348623157e308\n2.0\n0.5\n"
+        );
+        // no label: the text of `vtk_string`
+        let none = DenseLabels { of: vec![vec![Labels::new(); 4]] };
+        assert_eq!(vtk_string_with_labels(&sq, &none).unwrap(), vtk_string(&sq).unwrap());
+        assert_eq!(encode("é\t%"), "%C3%A9%09%25");
     }
 }

@@ -1,7 +1,7 @@
 //! The architectural complex of a G-map's cells (AC Remark 3.3), weighted by signed
 //! incidence numbers (BO Def. 9).
 
-use gmap_core::{CellDefect, DenseMap};
+use gmap_core::{to_dense_labels, CellDefect, DenseLabels, DenseMap, LabelledGMap};
 use thiserror::Error;
 
 use super::{ArchComplex, ArchError, Region, RegionId};
@@ -138,5 +138,48 @@ impl ArchComplex {
             }
         }
         Ok(ArchComplex::try_new(n, regions, entries)?)
+    }
+
+    /// [`ArchComplex::from_map`] with the labels of the cells kept on their regions:
+    /// `labels.get(k, c)` (the labels of `k`-cell `c` of `map.cells(k)`, as
+    /// [`gmap_core::to_dense_labels`] numbers them) become those of the region of that cell
+    /// ([`ArchComplex::region_labels`]). A real label that is not finite is
+    /// [`ArchError::LabelNotFinite`]. O(from_map + number of labels).
+    pub fn from_map_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<ArchComplex, FromMapError> {
+        let mut x = ArchComplex::from_map(map)?;
+        let mut id = 0u64;
+        for k in 0..=map.dim() {
+            let count = x.regions_of_dim(k).len();
+            for c in 0..count {
+                let l = labels.get(k, c);
+                if !l.is_empty() {
+                    x = x.with_region_labels(RegionId(id + c as u64), l.clone())?;
+                }
+            }
+            id += count as u64;
+        }
+        Ok(x)
+    }
+
+    /// The architectural complex of the cells of a labelled map, each region carrying the
+    /// labels of its cell ([`ArchComplex::from_map_with_labels`] on
+    /// [`gmap_core::to_dense_labels`]). Region ids number the cells as `from_map` does on
+    /// the map's dense form. O(from_map + number of labels).
+    ///
+    /// ```
+    /// use gmap_core::{LabelValue, LabelledGMap};
+    /// use gmap_homology::arch::ArchComplex;
+    /// // one edge with two free ends, named
+    /// let mut m = LabelledGMap::with_attributes(1);
+    /// let (a, b) = (m.create_dart(), m.create_dart());
+    /// m.link(a, b, 0);
+    /// m.set_attribute::<1>(a, [("name", LabelValue::Text("beam".into()))].into_iter().collect());
+    /// let x = ArchComplex::from_labelled_map(&m).unwrap();
+    /// assert_eq!(x.region_counts(), vec![2, 1]);
+    /// assert_eq!(x.region_labels(2).get("name"), Some(&LabelValue::Text("beam".into())));
+    /// ```
+    pub fn from_labelled_map(g: &LabelledGMap) -> Result<ArchComplex, FromMapError> {
+        let (dense, labels, _) = to_dense_labels(g);
+        ArchComplex::from_map_with_labels(&dense, &labels)
     }
 }

@@ -3,6 +3,7 @@
 
 use std::collections::HashMap;
 
+use gmap_core::{LabelValue, Labels};
 use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
@@ -168,6 +169,14 @@ pub enum ArchError {
         /// why
         reason: &'static str,
     },
+    /// A region label whose value is a real that is not finite.
+    #[error("region {id}: the label `{name}` is not a finite real")]
+    LabelNotFinite {
+        /// the region
+        id: RegionId,
+        /// the label's name
+        name: String,
+    },
 }
 
 fn join_counts(v: &[usize]) -> String {
@@ -179,7 +188,10 @@ fn join(ids: &[RegionId]) -> String {
 }
 
 /// An architectural complex (AC Def. 3.1). Immutable once built; see the module docs.
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// Two complexes are equal when their regions, entries, given Betti numbers and region
+/// labels are equal.
+#[derive(Clone, Debug, PartialEq)]
 pub struct ArchComplex {
     pub(super) dim: usize,
     pub(super) regions: Vec<Region>,
@@ -198,7 +210,13 @@ pub struct ArchComplex {
     /// the Betti numbers given to each region (`None`: the default, see
     /// [`ArchComplex::region_betti`])
     pub(super) betti: Vec<Option<Vec<usize>>>,
+    /// the labels of each region (empty: none), e.g. a room's name
+    pub(super) labels: Vec<Labels>,
 }
+
+/// Equality is an equivalence: the only reals a complex holds are region labels, and
+/// [`ArchComplex::with_region_labels`] refuses those that are not finite (NaN among them).
+impl Eq for ArchComplex {}
 
 impl ArchComplex {
     /// Builds and validates a complex of dimension `dim` from regions and entries given as
@@ -269,7 +287,8 @@ impl ArchComplex {
             per_dim[r.dim].push(k as u32);
         }
         let betti = vec![None; nr];
-        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim, betti }
+        let labels = vec![Labels::new(); nr];
+        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim, betti, labels }
     }
 
     /// The complex with region `id` given its own topology: the Betti numbers
@@ -299,6 +318,35 @@ impl ArchComplex {
         })?;
         self.betti[r] = Some(betti);
         Ok(self)
+    }
+
+    /// The complex with region `id` given `labels` (its name, kind, material, …), replacing
+    /// any it had. Labels take no part in the topology; they travel with the region through
+    /// the `.json` and `.dot` writers. Fails with [`ArchError::UnknownRegion`] (naming `id`
+    /// as both ends) for an unknown id and with [`ArchError::LabelNotFinite`] for a real
+    /// value that is not finite. O(number of labels).
+    ///
+    /// ```
+    /// use gmap_core::{LabelValue, Labels};
+    /// use gmap_homology::arch::{ArchComplex, RegionId};
+    /// let x = ArchComplex::try_from_ids(0, &[(7, 0)], &[]).unwrap();
+    /// let room: Labels = [("name", LabelValue::Text("kitchen".into()))].into_iter().collect();
+    /// let x = x.with_region_labels(RegionId(7), room.clone()).unwrap();
+    /// assert_eq!(x.region_labels(0), &room);
+    /// assert!(x.with_region_labels(RegionId(8), room).is_err());
+    /// ```
+    pub fn with_region_labels(mut self, id: RegionId, labels: Labels) -> Result<Self, ArchError> {
+        let r = self.index_of(id).ok_or(ArchError::UnknownRegion { from: id, to: id, missing: id })?;
+        if let Some((name, _)) = labels.iter().find(|(_, v)| matches!(v, LabelValue::Real(x) if !x.is_finite())) {
+            return Err(ArchError::LabelNotFinite { id, name: name.to_string() });
+        }
+        self.labels[r] = labels;
+        Ok(self)
+    }
+
+    /// The labels of region `index` (empty when it has none). O(1).
+    pub fn region_labels(&self, index: usize) -> &Labels {
+        &self.labels[index]
     }
 
     /// Whether `betti` can be the Betti numbers of a topological region of dimension `dim`
