@@ -31,12 +31,17 @@ impl<A: Attributes> GMap<A> {
         if m.dim() > self.dim() {
             return Err(SewError::BadIndex { alpha: m.dim(), dim: self.dim() });
         }
+        self.reserve_darts(m.dart_count());
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| self.create_dart()).collect();
-        for d in m.darts() {
-            for (i, &e) in m.row(d).iter().enumerate() {
-                // each link once, from its smaller end; a fixed point stays free
-                if (e as usize) > d.index() {
-                    self.try_link(ids[d.index()], ids[e as usize], i)?;
+        if !self.link_copy(m, &ids) {
+            // `m` is not involutive: link as `link` does, each link once from its smaller
+            // end (a later link frees the partners of an earlier one); a fixed point stays
+            // free
+            for d in m.darts() {
+                for (i, &e) in m.row(d).iter().enumerate() {
+                    if (e as usize) > d.index() {
+                        self.try_link(ids[d.index()], ids[e as usize], i)?;
+                    }
                 }
             }
         }
@@ -49,6 +54,30 @@ impl<A: Attributes> GMap<A> {
             }
         }
         Ok(ids)
+    }
+
+    /// Links the new darts `ids` (all free) as the darts of `m` are linked, in one pass
+    /// that also checks that every `alpha_i` of `m` is an involution. Returns false, with
+    /// the new darts free again, when one is not. O(N n).
+    fn link_copy(&mut self, m: &DenseMap, ids: &[DartId]) -> bool {
+        let n = m.dart_count();
+        for d in m.darts() {
+            for (i, &e) in m.row(d).iter().enumerate() {
+                let e = e as usize;
+                if e >= n || m.row(crate::dense::Dart(e as u32))[i] != d.0 {
+                    for &x in ids {
+                        for j in 0..=m.dim() {
+                            self.link_free(x, x, j);
+                        }
+                    }
+                    return false;
+                }
+                if e > d.index() {
+                    self.link_free(ids[d.index()], ids[e], i);
+                }
+            }
+        }
+        true
     }
 
     /// Like [`GMap::try_append`], panicking when `m.dim() > self.dim()`.
@@ -110,6 +139,17 @@ mod tests {
         assert_eq!(g.point(ids[0]), Some([1.0, 2.0, 3.0]));
         assert_eq!(g.point(ids[1]), None);
         assert_eq!(g.point_count(), 1);
+    }
+
+    #[test]
+    fn a_map_that_is_not_involutive_is_linked_link_by_link() {
+        // alpha_0 a 3-cycle 0 -> 1 -> 2 -> 0: linking 0-1 then 1-2 frees 0 again
+        let m = crate::DenseMap::from_flat_unchecked(0, vec![1, 2, 0]).unwrap();
+        let mut g = GMap::new(0);
+        let ids = g.append(&m);
+        assert!(g.is_free(ids[0], 0));
+        assert_eq!(g.alpha(ids[1], 0), ids[2]);
+        assert_eq!(g.alpha(ids[2], 0), ids[1]);
     }
 
     #[test]
