@@ -44,14 +44,16 @@ impl<A: Attributes> GMap<A> {
                     }
                 }
             }
-        }
-        if m.has_points() {
-            for d in m.darts() {
-                let x = ids[d.index()];
-                if let (Some(p), None) = (m.point(d), self.point(x)) {
-                    self.set_point(x, Some(p));
+            if m.has_points() {
+                for d in m.darts() {
+                    let x = ids[d.index()];
+                    if let (Some(p), None) = (m.point(d), self.point(x)) {
+                        self.set_point(x, Some(p));
+                    }
                 }
             }
+        } else if m.has_points() {
+            self.copy_points(m, &ids);
         }
         Ok(ids)
     }
@@ -78,6 +80,39 @@ impl<A: Attributes> GMap<A> {
             }
         }
         true
+    }
+
+    /// Gives each vertex of the copy `ids` of `m` (linked as `m` is) the point of its first
+    /// dart of `m`, in dense order, that has one. The vertices are found in `m`, whose rows
+    /// are contiguous: the copy's vertices are the same sets of darts, the new darts being
+    /// free for every `alpha_k` with `k > m.dim()`. O(N n).
+    fn copy_points(&mut self, m: &DenseMap, ids: &[DartId]) {
+        let mut seen = vec![false; m.dart_count()];
+        let mut vertex: Vec<DartId> = Vec::new();
+        let mut queue: Vec<u32> = Vec::new();
+        for d in m.darts() {
+            let Some(p) = m.point(d) else { continue };
+            if seen[d.index()] {
+                continue;
+            }
+            seen[d.index()] = true;
+            queue.clear();
+            queue.push(d.0);
+            let mut k = 0;
+            while k < queue.len() {
+                let row = m.row(crate::dense::Dart(queue[k]));
+                k += 1;
+                for &y in &row[1..] {
+                    if !seen[y as usize] {
+                        seen[y as usize] = true;
+                        queue.push(y);
+                    }
+                }
+            }
+            vertex.clear();
+            vertex.extend(queue.iter().map(|&x| ids[x as usize]));
+            self.set_fresh_point(&vertex, p);
+        }
     }
 
     /// Like [`GMap::try_append`], panicking when `m.dim() > self.dim()`.
@@ -139,6 +174,29 @@ mod tests {
         assert_eq!(g.point(ids[0]), Some([1.0, 2.0, 3.0]));
         assert_eq!(g.point(ids[1]), None);
         assert_eq!(g.point_count(), 1);
+    }
+
+    #[test]
+    fn a_vertex_takes_the_point_of_its_first_dart_that_has_one() {
+        // a path of two edges: 0-1 and 2-3 by alpha_0, the vertex {1, 2} by alpha_1
+        let mut m = crate::DenseMap::new(1, 4);
+        m.link(crate::Dart(0), crate::Dart(1), 0);
+        m.link(crate::Dart(1), crate::Dart(2), 1);
+        m.link(crate::Dart(2), crate::Dart(3), 0);
+        m.set_point(crate::Dart(2), Some([2.0; 3]));
+        m.set_point(crate::Dart(3), Some([3.0; 3]));
+        let mut g = GMap::new(2);
+        let ids = g.append(&m);
+        assert_eq!(
+            ids.iter().map(|&x| g.point(x)).collect::<Vec<_>>(),
+            vec![None, Some([2.0; 3]), Some([2.0; 3]), Some([3.0; 3])]
+        );
+        assert_eq!(g.point_count(), 2);
+        m.set_point(crate::Dart(1), Some([1.0; 3]));
+        let ids = g.append(&m);
+        assert_eq!(g.point(ids[2]), Some([1.0; 3]));
+        assert_eq!(g.point_count(), 4);
+        g.check_attributes().unwrap();
     }
 
     #[test]

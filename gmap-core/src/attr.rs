@@ -375,6 +375,19 @@ impl<T: Clone> Cells<T> {
         }
     }
 
+    /// Gives a new value to the i-cell whose darts are exactly `cell`, none of them holding a
+    /// value (the caller's precondition: a cell just made), without walking it. `bound` is
+    /// [`Topo::bound`]. O(|cell|).
+    pub(crate) fn set_fresh(&mut self, bound: usize, cell: &[DartId], value: T) -> AttrId {
+        self.ensure(bound);
+        let h = self.alloc(value, cell[0]);
+        for &x in cell {
+            self.handles[dart_index(x)] = h;
+        }
+        self.entries[h as usize].refs = cell.len() as u32;
+        self.id(h)
+    }
+
     /// Drops one use of a handle, freeing it when no dart uses it.
     fn unref(&mut self, h: u32) {
         if let Some(e) = self.entries.get_mut(h as usize) {

@@ -267,6 +267,14 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
+    /// Gives the point `p` to the vertex whose darts are exactly `vertex`, live darts none
+    /// of which has a point (the caller's precondition: a vertex just made), without walking
+    /// it. O(|vertex|).
+    pub(crate) fn set_fresh_point(&mut self, vertex: &[DartId], p: Point) {
+        let bound = self.index_bound();
+        self.points.set_fresh(bound, vertex, p);
+    }
+
     /// `alpha_i(d) = e`, `alpha_i(e) = d` for live darts `d`, `e` that are both i-free and
     /// `i <= n` (the caller's precondition): [`GMap::link`] without its checks. O(1).
     pub(crate) fn link_free(&mut self, d: DartId, e: DartId, i: usize) {
