@@ -55,6 +55,12 @@
 //! O(s · n) per slot in use, s the total size of the walked cells: proportional to the
 //! cells the edit touched, never to the map.
 //!
+//! A sew reaches the same result, hooks included, from the pairs of darts it links rather
+//! than by walking the merged cells: the cells of the sewn dimension do not change, the
+//! others only merge, and the handles on the paired darts tell which cells merge. Two
+//! cells that both carry a value cost a walk of the one whose value disappears; other
+//! cases go through the routine above. An unsew skips the dimension it does not change.
+//!
 //! [`GMap::sew`] and [`GMap::unsew`] reconcile (a sew keeps the attributes of the first
 //! dart's cells); [`GMap::link`] and [`GMap::unlink`] are low level and do not: a caller
 //! that edits through them calls [`GMap::reconcile_attributes`] afterwards.
