@@ -1161,32 +1161,27 @@ mod tests {
             .collect()
     }
 
-    /// A map of simplices with a value on the cells `keep` lets through and a point on some
-    /// vertices.
+    /// A map of simplices with a value on the cells `keep` lets through (cell by cell, in
+    /// the order of the darts, dimension after dimension) and a point on some vertices.
     fn attributed(n: usize, pieces: &[usize], keep: &[bool]) -> (Full, Vec<DartId>) {
         let mut g = Full::with_attributes(n);
-        let mut darts = Vec::new();
-        for &k in pieces {
-            darts.extend(add_simplex(&mut g, k % (n + 1)));
-        }
-        let mut next = 0u64;
-        for i in 0..=n {
-            for &d in &darts {
-                next += 1;
-                if !keep[next as usize % keep.len()] {
-                    continue;
-                }
-                match i {
-                    0 if g.attribute::<0>(d).is_none() => drop(g.set_attribute::<0>(d, next)),
-                    1 if g.attribute::<1>(d).is_none() => drop(g.set_attribute::<1>(d, next)),
-                    2 if g.attribute::<2>(d).is_none() => drop(g.set_attribute::<2>(d, next)),
-                    3 if g.attribute::<3>(d).is_none() => drop(g.set_attribute::<3>(d, next)),
-                    _ => {}
-                }
-            }
-        }
+        let darts: Vec<DartId> = pieces.iter().flat_map(|&k| add_simplex(&mut g, k % (n + 1))).collect();
+        let mask = |k: usize| keep[k % keep.len()];
         for (k, &d) in darts.iter().enumerate() {
-            if keep[k % keep.len()] && g.point(d).is_none() {
+            let v = k as u64 + 1;
+            if mask(k) && g.attribute::<0>(d).is_none() {
+                g.set_attribute::<0>(d, v);
+            }
+            if mask(k + 1) && g.attribute::<1>(d).is_none() {
+                g.set_attribute::<1>(d, 1000 + v);
+            }
+            if mask(k + 2) && g.attribute::<2>(d).is_none() {
+                g.set_attribute::<2>(d, 2000 + v);
+            }
+            if n == 3 && mask(k + 3) && g.attribute::<3>(d).is_none() {
+                g.set_attribute::<3>(d, 3000 + v);
+            }
+            if mask(k + 4) && g.point(d).is_none() {
                 g.set_point(d, Some([k as f64, 0.0, 1.0]));
             }
         }
