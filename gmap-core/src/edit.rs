@@ -1188,6 +1188,31 @@ mod tests {
         (g, darts)
     }
 
+    /// A k-gon face in a 3-map: 2k darts, `d[2j], d[2j+1]` one side.
+    fn polygon(g: &mut GMap, k: usize) -> Vec<DartId> {
+        let d: Vec<DartId> = (0..2 * k).map(|_| g.create_dart()).collect();
+        for j in 0..k {
+            g.sew(d[2 * j], d[2 * j + 1], 0);
+            g.sew(d[2 * j + 1], d[(2 * j + 2) % (2 * k)], 1);
+        }
+        d
+    }
+
+    #[test]
+    fn large_sew_orbits_pair_through_the_hash_maps() {
+        // a 20-gon has a 3-sew orbit of 40 darts, beyond Pairing::LINEAR
+        let mut g = GMap::new(3);
+        let (a, b, c) = (polygon(&mut g, 20), polygon(&mut g, 20), polygon(&mut g, 21));
+        assert!(a.len() > Pairing::LINEAR);
+        assert_eq!(g.sew_pairs(a[0], b[0], 3).map(|p| p.len()), Ok(40));
+        assert!(matches!(g.try_sew(a[0], c[0], 3), Err(SewError::NotIsomorphic { .. })));
+        g.sew(a[0], b[0], 3);
+        assert!(a.iter().zip(&b).all(|(&x, &y)| g.alpha(x, 3) == y));
+        assert_eq!(g.try_sew(a[1], c[0], 3), Err(SewError::NotFree { dart: a[1], alpha: 3 }));
+        // the two 20-gons are one face now, each still its own volume
+        assert_eq!(MapView::cell_counts(&g), vec![41, 41, 2, 3]);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(256))]
         /// A sew reconciles from its pairing exactly as `reconcile_attributes` does on the
