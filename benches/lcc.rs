@@ -9,9 +9,10 @@
 //!   meet: 512,000 points made, 68,921 left);
 //! * `points_and_labels`: the same with an integer label on every volume.
 //!
-//! Before the Criterion groups, each variant is timed (best of 3, building and sewing apart)
-//! and, when CGAL's headers and g++ are installed, CGAL's harness is run in the same sitting
-//! (`benches/anchors/run-cgal-lcc.sh 40 3`); the ratios ours / CGAL's are printed.
+//! Before the Criterion groups, each variant is timed (best of 5 interleaved rounds, building
+//! and sewing apart) and, when CGAL's headers and g++ are installed, CGAL's harness is run in
+//! the same sitting (`benches/anchors/run-cgal-lcc.sh 40 5`, best of 5 too); the ratios
+//! ours / CGAL's are printed.
 //!
 //! `cargo bench --bench lcc`
 
@@ -108,13 +109,32 @@ fn sew_paths(cube: &DenseMap) -> SewPaths {
     SewPaths { upper: [0, 1, 2].map(|a| find(a, 1.)), lower: [0, 1, 2].map(|a| find(a, 0.)) }
 }
 
+/// The CPU time of the calling thread in seconds, from `/proc/thread-self/schedstat` (its
+/// first field, nanoseconds on a CPU); `None` where that file does not exist. CGAL's
+/// harness reads the same clock (`CLOCK_THREAD_CPUTIME_ID`).
+fn thread_cpu() -> Option<f64> {
+    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    let ns: f64 = text.split_whitespace().next()?.parse().ok()?;
+    Some(ns * 1e-9)
+}
+
+/// Seconds spent building and sewing one grid: `(build, sew)` in wall-clock time, and in
+/// the thread's CPU time when it can be read (on a shared machine the time spent waiting
+/// for a core is in the first and not in the second).
+#[derive(Clone, Copy)]
+struct Times {
+    wall: (f64, f64),
+    cpu: Option<(f64, f64)>,
+}
+
 /// Makes the `K³` hexahedra with `make` (given the cell's position and number), then 3-sews
-/// every pair of neighbours. Returns the map and the seconds spent building and sewing.
+/// every pair of neighbours. Returns the map and the time spent building and sewing.
 fn grid<A: Attributes>(
     paths: &SewPaths,
     mut make: impl FnMut(&mut GMap<A>, [usize; 3], u32) -> DartId,
-) -> (GMap<A>, f64, f64) {
+) -> (GMap<A>, Times) {
     let mut g = GMap::with_attributes(3);
+    let c0 = thread_cpu();
     let t0 = Instant::now();
     let mut hex = Vec::with_capacity(K * K * K);
     for z in 0..K {
@@ -126,6 +146,7 @@ fn grid<A: Attributes>(
         }
     }
     let built = t0.elapsed().as_secs_f64();
+    let c1 = thread_cpu();
     let t1 = Instant::now();
     let step = [1, K, K * K];
     for z in 0..K {
@@ -142,7 +163,10 @@ fn grid<A: Attributes>(
             }
         }
     }
-    (g, built, t1.elapsed().as_secs_f64())
+    let sewn = t1.elapsed().as_secs_f64();
+    let c2 = thread_cpu();
+    let cpu = c0.zip(c1).zip(c2).map(|((c0, c1), c2)| (c1 - c0, c2 - c1));
+    (g, Times { wall: (built, sewn), cpu })
 }
 
 /// The unit cube with and without points, and the sew paths.
@@ -152,16 +176,16 @@ struct Setup {
     paths: SewPaths,
 }
 
-fn plain(s: &Setup) -> (GMap, f64, f64) {
+fn plain(s: &Setup) -> (GMap, Times) {
     grid(&s.paths, |g, _, _| g.append(&s.bare)[0])
 }
 
-fn with_points(s: &Setup) -> (GMap, f64, f64) {
+fn with_points(s: &Setup) -> (GMap, Times) {
     let mut moved = s.cube.clone();
     grid(&s.paths, |g, [x, y, z], _| hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]))
 }
 
-fn with_labels(s: &Setup) -> (Labelled, f64, f64) {
+fn with_labels(s: &Setup) -> (Labelled, Times) {
     let mut moved = s.cube.clone();
     grid(&s.paths, |g, [x, y, z], label| {
         let d = hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]);
@@ -170,25 +194,53 @@ fn with_labels(s: &Setup) -> (Labelled, f64, f64) {
     })
 }
 
-/// Best of three `(build, sew)` seconds, and the map of the first run.
-fn best_of_3<M>(mut run: impl FnMut() -> (M, f64, f64)) -> (M, f64, f64) {
-    let (m, mut b, mut s) = run();
-    for _ in 0..2 {
-        let (_, b2, s2) = run();
-        b = b.min(b2);
-        s = s.min(s2);
-    }
-    (m, b, s)
+/// Runs of each variant, ours and CGAL's: the machine is shared, so the best of several
+/// runs is the steadier figure.
+const REPS: usize = 5;
+
+/// The smallest building and sewing times seen, wall clock and CPU apart.
+#[derive(Clone, Copy)]
+struct Best {
+    wall: (f64, f64),
+    cpu: Option<(f64, f64)>,
 }
 
-/// CGAL's `(build, sew)` seconds for the three variants, from the anchor run in this
-/// sitting, or `None` when CGAL or g++ is missing or the harness fails.
-fn cgal_anchor() -> Option<Vec<(f64, f64)>> {
+impl Best {
+    fn new() -> Self {
+        Best { wall: (f64::INFINITY, f64::INFINITY), cpu: Some((f64::INFINITY, f64::INFINITY)) }
+    }
+
+    /// Lowers each figure to the run's where it is smaller.
+    fn keep(&mut self, t: Times) {
+        let min = |a: (f64, f64), b: (f64, f64)| (a.0.min(b.0), a.1.min(b.1));
+        self.wall = min(self.wall, t.wall);
+        self.cpu = self.cpu.zip(t.cpu).map(|(a, b)| min(a, b));
+    }
+}
+
+/// Checks the three grids of one round: the same complex (41³ vertices, 3·40·41² edges,
+/// 3·40²·41 faces, 40³ volumes), every grid vertex with one point, every volume labelled.
+fn check_grids(g0: &GMap, g1: &GMap, g2: &Labelled) {
+    for ch in [g0.characteristics(), g1.characteristics(), g2.characteristics()] {
+        assert_eq!(ch.cells, vec![68_921, 201_720, 196_800, 64_000], "{ch}");
+        assert!(ch.valid && ch.components == 1, "{ch}");
+    }
+    assert_eq!((g1.point_count(), g2.point_count(), g2.attribute_count::<3>()), (68_921, 68_921, K * K * K));
+    // the corner of the last cell, moved there with its cube
+    assert!(g1.darts().any(|d| g1.point(d) == Some([K as f64; 3])));
+}
+
+/// CGAL's times for the three variants, from the anchor run in this sitting, or `None` when
+/// CGAL or g++ is missing or the harness fails.
+fn cgal_anchor() -> Option<Vec<Best>> {
     if !std::path::Path::new("/usr/include/CGAL/Linear_cell_complex_for_generalized_map.h").exists() {
         return None;
     }
-    let out =
-        Command::new("bash").arg(common::anchor("run-cgal-lcc.sh")).args([K.to_string(), "3".into()]).output().ok()?;
+    let out = Command::new("bash")
+        .arg(common::anchor("run-cgal-lcc.sh"))
+        .args([K.to_string(), REPS.to_string()])
+        .output()
+        .ok()?;
     if !out.status.success() {
         eprintln!("lcc bench: CGAL anchor failed: {}", String::from_utf8_lossy(&out.stderr).trim());
         return None;
@@ -197,7 +249,8 @@ fn cgal_anchor() -> Option<Vec<(f64, f64)>> {
     text.lines()
         .map(|l| {
             let v: serde_json::Value = serde_json::from_str(l).ok()?;
-            Some((v["build_s"].as_f64()?, v["sew_s"].as_f64()?))
+            let cpu = v["cpu_build_s"].as_f64().zip(v["cpu_sew_s"].as_f64());
+            Some(Best { wall: (v["build_s"].as_f64()?, v["sew_s"].as_f64()?), cpu })
         })
         .collect()
 }
@@ -209,30 +262,46 @@ fn bench(c: &mut Criterion) {
         bare.set_point(d, None);
     }
     let s = Setup { paths: sew_paths(&cube), cube, bare };
-    let n = K * K * K;
-    let (g0, b0, s0) = best_of_3(|| plain(&s));
-    let (g1, b1, s1) = best_of_3(|| with_points(&s));
-    let (g2, b2, s2) = best_of_3(|| with_labels(&s));
-    // the three grids are the same complex: 41³ vertices, 3·40·41² edges, 3·40²·41 faces
-    for ch in [g0.characteristics(), g1.characteristics(), g2.characteristics()] {
-        assert_eq!(ch.cells, vec![68_921, 201_720, 196_800, 64_000], "{ch}");
-        assert!(ch.valid && ch.components == 1, "{ch}");
+    // REPS rounds of the three variants, interleaved so that a change in the machine's
+    // load weighs on all three alike; the first round's grids are checked
+    let mut best = [Best::new(); 3];
+    for round in 0..REPS {
+        let (g0, t) = plain(&s);
+        best[0].keep(t);
+        let (g1, t) = with_points(&s);
+        best[1].keep(t);
+        let (g2, t) = with_labels(&s);
+        best[2].keep(t);
+        if round == 0 {
+            check_grids(&g0, &g1, &g2);
+        }
     }
-    assert_eq!((g1.point_count(), g2.point_count(), g2.attribute_count::<3>()), (68_921, 68_921, n));
-    // the corner of the last cell, moved there with its cube
-    assert!(g1.darts().any(|d| g1.point(d) == Some([K as f64; 3])));
-    drop((g0, g1, g2));
-    let ours = [("no attributes", b0, s0), ("points", b1, s1), ("points and labels", b2, s2)];
     let anchor = cgal_anchor();
-    for (k, (name, b, s)) in ours.iter().enumerate() {
+    let names = ["no attributes", "points", "points and labels"];
+    for (k, (name, ours)) in names.iter().zip(best).enumerate() {
+        let (b, s) = ours.wall;
         match anchor.as_ref().and_then(|a| a.get(k)) {
-            Some(&(cb, cs)) => eprintln!(
-                "lcc bench grid{K}, {name}: ours build {b:.3} s + sew {s:.3} s = {:.3} s; CGAL {cb:.3} + {cs:.3} = {:.3} s; \
-                 ours / CGAL = {:.2}",
-                b + s,
-                cb + cs,
-                (b + s) / (cb + cs)
-            ),
+            Some(cgal) => {
+                let (cb, cs) = cgal.wall;
+                eprintln!(
+                    "lcc bench grid{K}, {name}: wall: ours build {b:.3} s + sew {s:.3} s = {:.3} s; \
+                     CGAL {cb:.3} + {cs:.3} = {:.3} s; ours / CGAL = {:.2}",
+                    b + s,
+                    cb + cs,
+                    (b + s) / (cb + cs)
+                );
+                if let (Some((b, s)), Some((cb, cs))) = (ours.cpu, cgal.cpu) {
+                    eprintln!(
+                        "lcc bench grid{K}, {name}: CPU: ours build {b:.3} s + sew {s:.3} s = {:.3} s; \
+                         CGAL {cb:.3} + {cs:.3} = {:.3} s; ours / CGAL = {:.2} (build {:.2}, sew {:.2})",
+                        b + s,
+                        cb + cs,
+                        (b + s) / (cb + cs),
+                        b / cb,
+                        s / cs
+                    );
+                }
+            }
             None => eprintln!("lcc bench grid{K}, {name}: ours build {b:.3} s + sew {s:.3} s; CGAL anchor not run"),
         }
     }

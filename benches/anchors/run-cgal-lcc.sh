@@ -6,5 +6,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 k=${1:-40}; reps=${2:-3}
 [ -f /usr/include/CGAL/Linear_cell_complex_for_generalized_map.h ] || { apt-get update -qq && apt-get install -y -qq libcgal-dev >/dev/null; }
 bin="${TMPDIR:-/tmp}/cgal_lcc_grid"
-[ -x "$bin" ] || g++ -O3 -DNDEBUG -DCGAL_NDEBUG -std=c++17 "$here/cgal_lcc_grid.cpp" -o "$bin" -lgmp -lmpfr
+# (re)build when the binary is missing or older than its source
+[ "$bin" -nt "$here/cgal_lcc_grid.cpp" ] || g++ -O3 -DNDEBUG -DCGAL_NDEBUG -std=c++17 "$here/cgal_lcc_grid.cpp" -o "$bin" -lgmp -lmpfr
 exec "$bin" "$k" "$reps"

@@ -31,24 +31,88 @@ impl<A: Attributes> GMap<A> {
         if m.dim() > self.dim() {
             return Err(SewError::BadIndex { alpha: m.dim(), dim: self.dim() });
         }
+        self.reserve_darts(m.dart_count());
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| self.create_dart()).collect();
-        for d in m.darts() {
-            for (i, &e) in m.row(d).iter().enumerate() {
-                // each link once, from its smaller end; a fixed point stays free
-                if (e as usize) > d.index() {
-                    self.try_link(ids[d.index()], ids[e as usize], i)?;
-                }
-            }
-        }
-        if m.has_points() {
+        if !self.link_copy(m, &ids) {
+            // `m` is not involutive: link as `link` does, each link once from its smaller
+            // end (a later link frees the partners of an earlier one); a fixed point stays
+            // free
             for d in m.darts() {
-                let x = ids[d.index()];
-                if let (Some(p), None) = (m.point(d), self.point(x)) {
-                    self.set_point(x, Some(p));
+                for (i, &e) in m.row(d).iter().enumerate() {
+                    if (e as usize) > d.index() {
+                        self.try_link(ids[d.index()], ids[e as usize], i)?;
+                    }
                 }
             }
+            if m.has_points() {
+                for d in m.darts() {
+                    let x = ids[d.index()];
+                    if let (Some(p), None) = (m.point(d), self.point(x)) {
+                        self.set_point(x, Some(p));
+                    }
+                }
+            }
+        } else if m.has_points() {
+            self.copy_points(m, &ids);
         }
         Ok(ids)
+    }
+
+    /// Links the new darts `ids` (all free) as the darts of `m` are linked, in one pass
+    /// that also checks that every `alpha_i` of `m` is an involution. Returns false, with
+    /// the new darts free again, when one is not. O(N n).
+    fn link_copy(&mut self, m: &DenseMap, ids: &[DartId]) -> bool {
+        let n = m.dart_count();
+        for d in m.darts() {
+            for (i, &e) in m.row(d).iter().enumerate() {
+                let e = e as usize;
+                if e >= n || m.row(crate::dense::Dart(e as u32))[i] != d.0 {
+                    for &x in ids {
+                        for j in 0..=m.dim() {
+                            self.link_free(x, x, j);
+                        }
+                    }
+                    return false;
+                }
+                if e > d.index() {
+                    self.link_free(ids[d.index()], ids[e], i);
+                }
+            }
+        }
+        true
+    }
+
+    /// Gives each vertex of the copy `ids` of `m` (linked as `m` is) the point of its first
+    /// dart of `m`, in dense order, that has one. The vertices are found in `m`, whose rows
+    /// are contiguous: the copy's vertices are the same sets of darts, the new darts being
+    /// free for every `alpha_k` with `k > m.dim()`. O(N n).
+    fn copy_points(&mut self, m: &DenseMap, ids: &[DartId]) {
+        let mut seen = vec![false; m.dart_count()];
+        let mut vertex: Vec<DartId> = Vec::new();
+        let mut queue: Vec<u32> = Vec::new();
+        for d in m.darts() {
+            let Some(p) = m.point(d) else { continue };
+            if seen[d.index()] {
+                continue;
+            }
+            seen[d.index()] = true;
+            queue.clear();
+            queue.push(d.0);
+            let mut k = 0;
+            while k < queue.len() {
+                let row = m.row(crate::dense::Dart(queue[k]));
+                k += 1;
+                for &y in &row[1..] {
+                    if !seen[y as usize] {
+                        seen[y as usize] = true;
+                        queue.push(y);
+                    }
+                }
+            }
+            vertex.clear();
+            vertex.extend(queue.iter().map(|&x| ids[x as usize]));
+            self.set_fresh_point(&vertex, p);
+        }
     }
 
     /// Like [`GMap::try_append`], panicking when `m.dim() > self.dim()`.
@@ -110,6 +174,40 @@ mod tests {
         assert_eq!(g.point(ids[0]), Some([1.0, 2.0, 3.0]));
         assert_eq!(g.point(ids[1]), None);
         assert_eq!(g.point_count(), 1);
+    }
+
+    #[test]
+    fn a_vertex_takes_the_point_of_its_first_dart_that_has_one() {
+        // a path of two edges: 0-1 and 2-3 by alpha_0, the vertex {1, 2} by alpha_1
+        let mut m = crate::DenseMap::new(1, 4);
+        m.link(crate::Dart(0), crate::Dart(1), 0);
+        m.link(crate::Dart(1), crate::Dart(2), 1);
+        m.link(crate::Dart(2), crate::Dart(3), 0);
+        m.set_point(crate::Dart(2), Some([2.0; 3]));
+        m.set_point(crate::Dart(3), Some([3.0; 3]));
+        let mut g = GMap::new(2);
+        let ids = g.append(&m);
+        assert_eq!(
+            ids.iter().map(|&x| g.point(x)).collect::<Vec<_>>(),
+            vec![None, Some([2.0; 3]), Some([2.0; 3]), Some([3.0; 3])]
+        );
+        assert_eq!(g.point_count(), 2);
+        m.set_point(crate::Dart(1), Some([1.0; 3]));
+        let ids = g.append(&m);
+        assert_eq!(g.point(ids[2]), Some([1.0; 3]));
+        assert_eq!(g.point_count(), 4);
+        g.check_attributes().unwrap();
+    }
+
+    #[test]
+    fn a_map_that_is_not_involutive_is_linked_link_by_link() {
+        // alpha_0 a 3-cycle 0 -> 1 -> 2 -> 0: linking 0-1 then 1-2 frees 0 again
+        let m = crate::DenseMap::from_flat_unchecked(0, vec![1, 2, 0]).unwrap();
+        let mut g = GMap::new(0);
+        let ids = g.append(&m);
+        assert!(g.is_free(ids[0], 0));
+        assert_eq!(g.alpha(ids[1], 0), ids[2]);
+        assert_eq!(g.alpha(ids[2], 0), ids[1]);
     }
 
     #[test]

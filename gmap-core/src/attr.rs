@@ -55,6 +55,12 @@
 //! O(s · n) per slot in use, s the total size of the walked cells: proportional to the
 //! cells the edit touched, never to the map.
 //!
+//! A sew reaches the same result, hooks included, from the pairs of darts it links rather
+//! than by walking the merged cells: the cells of the sewn dimension do not change, the
+//! others only merge, and the handles on the paired darts tell which cells merge. Two
+//! cells that both carry a value cost a walk of the one whose value disappears; other
+//! cases go through the routine above. An unsew skips the dimension it does not change.
+//!
 //! [`GMap::sew`] and [`GMap::unsew`] reconcile (a sew keeps the attributes of the first
 //! dart's cells); [`GMap::link`] and [`GMap::unlink`] are low level and do not: a caller
 //! that edits through them calls [`GMap::reconcile_attributes`] afterwards.
@@ -138,6 +144,8 @@ pub struct Cells<T> {
     /// scratch for cell walks: `stamp[k] == epoch` marks dart index `k` as visited
     stamp: Vec<u32>,
     epoch: u32,
+    /// reusable list of darts for cell walks (kept between calls to avoid allocating)
+    scratch: Vec<DartId>,
 }
 
 impl<T> Default for Cells<T> {
@@ -151,6 +159,7 @@ impl<T> Default for Cells<T> {
             on_split: None,
             stamp: Vec::new(),
             epoch: 0,
+            scratch: Vec::new(),
         }
     }
 }
@@ -166,6 +175,7 @@ impl<T: Clone> Clone for Cells<T> {
             on_split: self.on_split.clone(),
             stamp: Vec::new(),
             epoch: 0,
+            scratch: Vec::new(),
         }
     }
 }
@@ -348,7 +358,8 @@ impl<T: Clone> Cells<T> {
             NONE => {
                 let h = self.alloc(value, d);
                 self.next_epoch(topo.bound());
-                let mut cell = Vec::new();
+                let mut cell = std::mem::take(&mut self.scratch);
+                cell.clear();
                 self.walk(topo, i, d, &mut cell);
                 for &x in &cell {
                     let old = self.handles[dart_index(x)];
@@ -360,6 +371,7 @@ impl<T: Clone> Cells<T> {
                     self.handles[dart_index(x)] = h;
                 }
                 self.entries[h as usize].refs = cell.len() as u32;
+                self.scratch = cell;
                 self.id(h)
             }
             h => {
@@ -367,6 +379,19 @@ impl<T: Clone> Cells<T> {
                 self.id(h)
             }
         }
+    }
+
+    /// Gives a new value to the i-cell whose darts are exactly `cell`, none of them holding a
+    /// value (the caller's precondition: a cell just made), without walking it. `bound` is
+    /// [`Topo::bound`]. O(|cell|).
+    pub(crate) fn set_fresh(&mut self, bound: usize, cell: &[DartId], value: T) -> AttrId {
+        self.ensure(bound);
+        let h = self.alloc(value, cell[0]);
+        for &x in cell {
+            self.handles[dart_index(x)] = h;
+        }
+        self.entries[h as usize].refs = cell.len() as u32;
+        self.id(h)
     }
 
     /// Drops one use of a handle, freeing it when no dart uses it.
@@ -388,7 +413,8 @@ impl<T: Clone> Cells<T> {
             return None;
         }
         self.next_epoch(topo.bound());
-        let mut cell = Vec::new();
+        let mut cell = std::mem::take(&mut self.scratch);
+        cell.clear();
         self.walk(topo, i, d, &mut cell);
         for &x in &cell {
             let k = dart_index(x);
@@ -396,6 +422,7 @@ impl<T: Clone> Cells<T> {
                 self.handles[k] = NONE;
             }
         }
+        self.scratch = cell;
         self.release(h)
     }
 
@@ -427,8 +454,9 @@ impl<T: Clone> Cells<T> {
         }
         self.ensure(topo.bound());
         self.next_epoch(topo.bound());
-        let mut darts: Vec<DartId> = Vec::new();
-        let mut starts: Vec<usize> = Vec::new();
+        let mut darts = std::mem::take(&mut self.scratch);
+        darts.clear();
+        let mut starts: SmallVec<[usize; 16]> = SmallVec::new();
         for &t in touched {
             if topo.live(t) {
                 let before = darts.len();
@@ -507,6 +535,121 @@ impl<T: Clone> Cells<T> {
                     f(kept, v);
                 }
             }
+        }
+        self.scratch = darts;
+    }
+
+    /// The consistency routine for dimension `i` after a sew of index `s != i` that linked
+    /// the darts of each pair of `pairs` by `alpha_s`, on a map whose i-cells were consistent
+    /// before. Gives the result of [`Cells::reconcile`] on the darts of the pairs (first
+    /// sides, then second sides), with the same hook calls in the same order, but uses the
+    /// known pairing: a sew only merges cells, and every old cell of a merged cell holds a
+    /// dart of the pairs, so the handles on the pairs tell which cells merge without walking
+    /// them. When each merged cell joins at most two cells that both carry an attribute,
+    /// only the darts of the cell whose value disappears are relabelled; other cases (a
+    /// cell without attribute meeting one with, three or more cells becoming one) go to
+    /// [`Cells::reconcile`]. O(p²) for p pairs plus O(r · n) for the r darts relabelled.
+    pub(crate) fn reconcile_sewn(&mut self, topo: &Topo, i: usize, pairs: &[(DartId, DartId)]) {
+        if !self.active() {
+            return;
+        }
+        self.ensure(topo.bound());
+        match self.sew_merges(pairs) {
+            Some(merges) => {
+                for (kept, other, from) in merges {
+                    self.fold(topo, i, kept, other, from);
+                }
+            }
+            None => {
+                let touched: Vec<DartId> = pairs.iter().map(|p| p.0).chain(pairs.iter().map(|p| p.1)).collect();
+                self.reconcile(topo, i, &touched);
+            }
+        }
+    }
+
+    /// Whether `h` names a live value.
+    #[inline]
+    fn is_live(&self, h: u32) -> bool {
+        h != NONE && self.entries.get(h as usize).is_some_and(|e| e.value.is_some())
+    }
+
+    /// The merges a sew of `pairs` causes, as `(kept, other, a dart holding other)` in the
+    /// order [`Cells::reconcile`] runs their hooks, or `None` when the sew is not the simple
+    /// case of [`Cells::reconcile_sewn`].
+    ///
+    /// Every paired dart holding a live handle, the handles are the nodes of a graph whose
+    /// edges are the pairs with different handles; a connected set of nodes is one merged
+    /// cell. The general routine keeps the handle of the first paired dart (first sides
+    /// come first) of each merged cell and runs the hooks cell by cell in that order. The
+    /// simple case: every merged cell joins two cells, the kept one holding the first side
+    /// of the pair that joins them, and the merges come in the order of their first pairs.
+    fn sew_merges(&self, pairs: &[(DartId, DartId)]) -> Option<SmallVec<[(u32, u32, DartId); 4]>> {
+        // the handles of the first sides in order of first appearance: a merged cell's
+        // first paired dart is always a first side (its partner is in the same cell)
+        let mut order: SmallVec<[u32; 16]> = SmallVec::new();
+        for &(a, _) in pairs {
+            let h = self.handle(dart_index(a));
+            if !self.is_live(h) {
+                return None;
+            }
+            if !order.contains(&h) {
+                order.push(h);
+            }
+        }
+        let rank = |h: u32| order.iter().position(|&x| x == h).unwrap_or(usize::MAX);
+        let mut merges: SmallVec<[(u32, u32, DartId); 4]> = SmallVec::new();
+        for &(a, b) in pairs {
+            let (ha, hb) = (self.handle(dart_index(a)), self.handle(dart_index(b)));
+            if !self.is_live(hb) {
+                return None;
+            }
+            if ha == hb || merges.iter().any(|m| (m.0, m.1) == (ha, hb)) {
+                continue;
+            }
+            let simple = rank(ha) < rank(hb)
+                && merges.iter().all(|m| m.0 != ha && m.1 != ha && m.0 != hb && m.1 != hb)
+                && merges.last().is_none_or(|m| rank(m.0) < rank(ha));
+            if !simple {
+                // the second side's value kept, three or more cells becoming one, or hooks
+                // out of the order of the pairs
+                return None;
+            }
+            merges.push((ha, hb, b));
+        }
+        Some(merges)
+    }
+
+    /// Folds the cell holding `other` (reached from its dart `from`) into the value `kept`:
+    /// relabels its darts, moves the counts, frees `other` once no dart holds it and runs the
+    /// merge hook on (kept, other). The darts holding `other` are connected by links that
+    /// a sew leaves in place, so the walk from `from` through them finds them all. O(r · n)
+    /// for the r darts relabelled.
+    fn fold(&mut self, topo: &Topo, i: usize, kept: u32, other: u32, from: DartId) {
+        let mut stack = std::mem::take(&mut self.scratch);
+        stack.clear();
+        self.handles[dart_index(from)] = kept;
+        stack.push(from);
+        let mut moved: u32 = 1;
+        while let Some(x) = stack.pop() {
+            for j in (0..=topo.dim).filter(|&j| j != i) {
+                let y = topo.alpha(x, j);
+                let k = dart_index(y);
+                if self.handles[k] == other {
+                    self.handles[k] = kept;
+                    moved += 1;
+                    stack.push(y);
+                }
+            }
+        }
+        self.scratch = stack;
+        self.entries[kept as usize].refs += moved;
+        let e = &mut self.entries[other as usize];
+        e.refs = e.refs.saturating_sub(moved);
+        let v =
+            if e.refs == 0 { self.release(other).expect("live handle") } else { e.value.clone().expect("live handle") };
+        let kept = self.entries[kept as usize].value.as_mut().expect("live handle");
+        if let Some(f) = &self.on_merge {
+            f(kept, v);
         }
     }
 
@@ -679,6 +822,7 @@ mod sealed {
     pub trait SlotOps {
         const PRESENT: bool;
         fn reconcile_slot(&mut self, topo: &Topo, i: usize, touched: &[DartId]);
+        fn reconcile_sewn_slot(&mut self, topo: &Topo, i: usize, pairs: &[(DartId, DartId)]);
         fn drop_dart_slot(&mut self, topo: &Topo, i: usize, d: DartId);
         fn check_slot(&self, topo: &Topo, i: usize, darts: &[DartId]) -> Result<(), AttributeDefect>;
     }
@@ -686,6 +830,11 @@ mod sealed {
     /// The whole-tuple operations, hidden from users.
     pub trait AttributesOps {
         fn reconcile_all(&mut self, topo: &Topo, touched: &[DartId]);
+        /// Reconciles every slot but `skip` (the index of the involution that changed: the
+        /// cells of that dimension do not change).
+        fn reconcile_except_all(&mut self, topo: &Topo, skip: usize, touched: &[DartId]);
+        /// Reconciles every slot but `s` after an `s`-sew of `pairs`.
+        fn reconcile_sewn_all(&mut self, topo: &Topo, s: usize, pairs: &[(DartId, DartId)]);
         fn drop_dart_all(&mut self, topo: &Topo, d: DartId);
         fn check_all(&self, topo: &Topo, darts: &[DartId]) -> Result<(), AttributeDefect>;
     }
@@ -701,6 +850,7 @@ pub trait Slot: SlotOps + Default {}
 impl SlotOps for () {
     const PRESENT: bool = false;
     fn reconcile_slot(&mut self, _: &Topo, _: usize, _: &[DartId]) {}
+    fn reconcile_sewn_slot(&mut self, _: &Topo, _: usize, _: &[(DartId, DartId)]) {}
     fn drop_dart_slot(&mut self, _: &Topo, _: usize, _: DartId) {}
     fn check_slot(&self, _: &Topo, _: usize, _: &[DartId]) -> Result<(), AttributeDefect> {
         Ok(())
@@ -712,6 +862,9 @@ impl<T: Clone + 'static> SlotOps for Cells<T> {
     const PRESENT: bool = true;
     fn reconcile_slot(&mut self, topo: &Topo, i: usize, touched: &[DartId]) {
         self.reconcile(topo, i, touched)
+    }
+    fn reconcile_sewn_slot(&mut self, topo: &Topo, i: usize, pairs: &[(DartId, DartId)]) {
+        self.reconcile_sewn(topo, i, pairs)
     }
     fn drop_dart_slot(&mut self, topo: &Topo, i: usize, d: DartId) {
         self.drop_dart(topo, i, d)
@@ -732,6 +885,8 @@ pub trait Attributes: AttributesOps + Default {
 
 impl AttributesOps for () {
     fn reconcile_all(&mut self, _: &Topo, _: &[DartId]) {}
+    fn reconcile_except_all(&mut self, _: &Topo, _: usize, _: &[DartId]) {}
+    fn reconcile_sewn_all(&mut self, _: &Topo, _: usize, _: &[(DartId, DartId)]) {}
     fn drop_dart_all(&mut self, _: &Topo, _: DartId) {}
     fn check_all(&self, _: &Topo, _: &[DartId]) -> Result<(), AttributeDefect> {
         Ok(())
@@ -749,6 +904,16 @@ macro_rules! tuple_attributes {
             fn reconcile_all(&mut self, topo: &Topo, touched: &[DartId]) {
                 $(if $S::PRESENT && $k <= topo.dim {
                     self.$k.reconcile_slot(topo, $k, touched);
+                })+
+            }
+            fn reconcile_except_all(&mut self, topo: &Topo, skip: usize, touched: &[DartId]) {
+                $(if $S::PRESENT && $k <= topo.dim && $k != skip {
+                    self.$k.reconcile_slot(topo, $k, touched);
+                })+
+            }
+            fn reconcile_sewn_all(&mut self, topo: &Topo, s: usize, pairs: &[(DartId, DartId)]) {
+                $(if $S::PRESENT && $k <= topo.dim && $k != s {
+                    self.$k.reconcile_sewn_slot(topo, $k, pairs);
                 })+
             }
             fn drop_dart_all(&mut self, topo: &Topo, d: DartId) {

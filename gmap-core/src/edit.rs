@@ -108,6 +108,55 @@ pub enum MapDefect {
     Attribute(#[from] AttributeDefect),
 }
 
+/// The dart pairs a sew links, in the order of the parallel traversal (the given pair first).
+type Pairs = SmallVec<[(DartId, DartId); 16]>;
+
+/// The pairing of two sew orbits while it is built: the pairs in traversal order, looked
+/// up by a linear scan while they are few (sew orbits of surfaces and volumes have a few
+/// darts) and through two hash maps beyond [`Pairing::LINEAR`] pairs.
+#[derive(Default)]
+struct Pairing {
+    pairs: Pairs,
+    index: Option<(HashMap<DartId, DartId>, HashMap<DartId, DartId>)>,
+}
+
+impl Pairing {
+    /// The number of pairs up to which lookups scan the list.
+    const LINEAR: usize = 32;
+
+    /// Adds the pair `(a, b)`.
+    fn push(&mut self, a: DartId, b: DartId) {
+        self.pairs.push((a, b));
+        match &mut self.index {
+            Some((fwd, bwd)) => {
+                fwd.insert(a, b);
+                bwd.insert(b, a);
+            }
+            None if self.pairs.len() > Self::LINEAR => {
+                self.index =
+                    Some((self.pairs.iter().copied().collect(), self.pairs.iter().map(|&(a, b)| (b, a)).collect()));
+            }
+            None => {}
+        }
+    }
+
+    /// The partner of a first-side dart `a`.
+    fn forward(&self, a: DartId) -> Option<DartId> {
+        match &self.index {
+            Some((fwd, _)) => fwd.get(&a).copied(),
+            None => self.pairs.iter().find(|p| p.0 == a).map(|p| p.1),
+        }
+    }
+
+    /// The partner of a second-side dart `b`.
+    fn backward(&self, b: DartId) -> Option<DartId> {
+        match &self.index {
+            Some((_, bwd)) => bwd.get(&b).copied(),
+            None => self.pairs.iter().find(|p| p.1 == b).map(|p| p.0),
+        }
+    }
+}
+
 /// The panic of the panicking forms, out of the hot paths.
 #[cold]
 #[inline(never)]
@@ -206,6 +255,31 @@ impl<A: Attributes> GMap<A> {
             self.marks.resize(bound.max(self.marks.len() * 2));
         }
         d
+    }
+
+    /// Makes room for `n` more darts, so that creating them does not reallocate. O(N) when
+    /// the storage grows.
+    pub(crate) fn reserve_darts(&mut self, n: usize) {
+        self.darts.reserve(n);
+        let bound = self.index_bound();
+        if self.marks.len() < bound {
+            self.marks.resize(bound.max(self.marks.len() * 2));
+        }
+    }
+
+    /// Gives the point `p` to the vertex whose darts are exactly `vertex`, live darts none
+    /// of which has a point (the caller's precondition: a vertex just made), without walking
+    /// it. O(|vertex|).
+    pub(crate) fn set_fresh_point(&mut self, vertex: &[DartId], p: Point) {
+        let bound = self.index_bound();
+        self.points.set_fresh(bound, vertex, p);
+    }
+
+    /// `alpha_i(d) = e`, `alpha_i(e) = d` for live darts `d`, `e` that are both i-free and
+    /// `i <= n` (the caller's precondition): [`GMap::link`] without its checks. O(1).
+    pub(crate) fn link_free(&mut self, d: DartId, e: DartId, i: usize) {
+        self.darts[d].alpha[i] = e;
+        self.darts[e].alpha[i] = d;
     }
 
     /// Removes a dart, first making its partners free. Other handles stay valid.
@@ -697,8 +771,10 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// Pairs the sew orbits of `d` and `e` by parallel traversal, checking that both
-    /// are i-free throughout and that the pairing is one-to-one.
-    fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Vec<(DartId, DartId)>, SewError> {
+    /// are i-free throughout and that the pairing is one-to-one. O(s · n) for orbits of
+    /// s darts up to [`Pairing::LINEAR`] (no allocation below 16 pairs), O(s · n) expected
+    /// beyond.
+    fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Pairs, SewError> {
         if i > self.dim {
             return Err(SewError::BadIndex { alpha: i, dim: self.dim });
         }
@@ -708,15 +784,12 @@ impl<A: Attributes> GMap<A> {
             }
         }
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
-        let mut fwd: HashMap<DartId, DartId> = HashMap::default();
-        let mut bwd: HashMap<DartId, DartId> = HashMap::default();
         let conflict = |at| SewError::NotIsomorphic { first: d, second: e, alpha: i, at };
-        let mut pairs = vec![(d, e)];
-        fwd.insert(d, e);
-        bwd.insert(e, d);
+        let mut pairing = Pairing::default();
+        pairing.push(d, e);
         let mut k = 0;
-        while k < pairs.len() {
-            let (a, b) = pairs[k];
+        while k < pairing.pairs.len() {
+            let (a, b) = pairing.pairs[k];
             k += 1;
             if a == b {
                 return Err(conflict(a));
@@ -731,29 +804,25 @@ impl<A: Attributes> GMap<A> {
                 if (a2 == a) != (b2 == b) {
                     return Err(conflict(a));
                 }
-                match (fwd.get(&a2), bwd.get(&b2)) {
-                    (Some(&x), _) if x != b2 => return Err(conflict(a2)),
-                    (_, Some(&y)) if y != a2 => return Err(conflict(b2)),
+                match (pairing.forward(a2), pairing.backward(b2)) {
+                    (Some(x), _) if x != b2 => return Err(conflict(a2)),
+                    (_, Some(y)) if y != a2 => return Err(conflict(b2)),
                     (Some(_), Some(_)) => {}
-                    (None, None) => {
-                        fwd.insert(a2, b2);
-                        bwd.insert(b2, a2);
-                        pairs.push((a2, b2));
-                    }
+                    (None, None) => pairing.push(a2, b2),
                     _ => return Err(conflict(a2)),
                 }
             }
         }
         // a dart may appear on both sides (sewing an orbit to itself): then the pairing
         // must be symmetric, or alpha_i would not be an involution
-        for (&a, &b) in &fwd {
-            if let Some(&c) = fwd.get(&b) {
+        for &(a, b) in &pairing.pairs {
+            if let Some(c) = pairing.forward(b) {
                 if c != a {
                     return Err(conflict(b));
                 }
             }
         }
-        Ok(pairs)
+        Ok(pairing.pairs)
     }
 
     /// Whether `d` and `e` can be i-sewn: both sew orbits (see [`GMap::sew_set`]) are
@@ -775,8 +844,16 @@ impl<A: Attributes> GMap<A> {
             self.darts[b].alpha[i] = a;
         }
         if self.needs_reconcile() {
-            let touched: Vec<DartId> = pairs.iter().map(|p| p.0).chain(pairs.iter().map(|p| p.1)).collect();
-            self.reconcile_attributes(&touched);
+            // the same result as `reconcile_attributes` on the first sides then the second
+            // sides of the pairs, from the pairing: the i-cells do not change, and the
+            // other cells only merge
+            let topo = Topo { dim: self.dim, darts: &self.darts };
+            if i != 0 {
+                self.points.reconcile_sewn(&topo, 0, &pairs);
+            }
+            if !A::EMPTY {
+                self.attrs.reconcile_sewn_all(&topo, i, &pairs);
+            }
         }
         Ok(())
     }
@@ -822,7 +899,14 @@ impl<A: Attributes> GMap<A> {
         if self.needs_reconcile() {
             let mut touched = orbit;
             touched.extend(partners);
-            self.reconcile_attributes(&touched);
+            // the i-cells do not change: only the other dimensions can split
+            let topo = Topo { dim: self.dim, darts: &self.darts };
+            if i != 0 {
+                self.points.reconcile(&topo, 0, &touched);
+            }
+            if !A::EMPTY {
+                self.attrs.reconcile_except_all(&topo, i, &touched);
+            }
         }
         Ok(())
     }
@@ -1027,6 +1111,147 @@ impl<A: Attributes> GMap<A> {
     pub fn mark_orbit(&mut self, m: MarkId, d: DartId, set: AlphaSet) {
         for x in self.orbit(d, set) {
             self.mark(m, x);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::{Arc, Mutex};
+
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::attr::Cells;
+    use crate::examples::add_simplex;
+
+    type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
+
+    /// Every hook call as `(merge?, dimension, kept, other)`, in order.
+    type Log = Arc<Mutex<Vec<(bool, usize, u64, u64)>>>;
+
+    fn log_hooks(g: &mut Full) -> Log {
+        let log: Log = Arc::default();
+        macro_rules! on {
+            ($i:literal) => {
+                let l = log.clone();
+                g.set_on_merge::<$i>(move |kept, other| {
+                    l.lock().unwrap().push((true, $i, *kept, other));
+                    *kept = kept.wrapping_mul(31).wrapping_add(other);
+                });
+                let l = log.clone();
+                g.set_on_split::<$i>(move |kept, copy| {
+                    l.lock().unwrap().push((false, $i, *kept, *copy));
+                    *copy = copy.wrapping_add(7);
+                });
+            };
+        }
+        on!(0);
+        on!(1);
+        on!(2);
+        on!(3);
+        log
+    }
+
+    /// The attribute (id and value) of each dimension and the point, of one dart.
+    type DartState = (Vec<Option<(AttrId, u64)>>, Option<Point>);
+
+    /// Everything the attributes and points of a map say, dart by dart.
+    fn state(g: &Full, darts: &[DartId]) -> Vec<DartState> {
+        darts
+            .iter()
+            .map(|&d| {
+                let a = vec![
+                    g.attribute_id::<0>(d).zip(g.attribute::<0>(d).copied()),
+                    g.attribute_id::<1>(d).zip(g.attribute::<1>(d).copied()),
+                    g.attribute_id::<2>(d).zip(g.attribute::<2>(d).copied()),
+                    g.attribute_id::<3>(d).zip(g.attribute::<3>(d).copied()),
+                ];
+                (a, g.point(d))
+            })
+            .collect()
+    }
+
+    /// A map of simplices with a value on the cells `keep` lets through (cell by cell, in
+    /// the order of the darts, dimension after dimension) and a point on some vertices.
+    fn attributed(n: usize, pieces: &[usize], keep: &[bool]) -> (Full, Vec<DartId>) {
+        let mut g = Full::with_attributes(n);
+        let darts: Vec<DartId> = pieces.iter().flat_map(|&k| add_simplex(&mut g, k % (n + 1))).collect();
+        let mask = |k: usize| keep[k % keep.len()];
+        for (k, &d) in darts.iter().enumerate() {
+            let v = k as u64 + 1;
+            if mask(k) && g.attribute::<0>(d).is_none() {
+                g.set_attribute::<0>(d, v);
+            }
+            if mask(k + 1) && g.attribute::<1>(d).is_none() {
+                g.set_attribute::<1>(d, 1000 + v);
+            }
+            if mask(k + 2) && g.attribute::<2>(d).is_none() {
+                g.set_attribute::<2>(d, 2000 + v);
+            }
+            if n == 3 && mask(k + 3) && g.attribute::<3>(d).is_none() {
+                g.set_attribute::<3>(d, 3000 + v);
+            }
+            if mask(k + 4) && g.point(d).is_none() {
+                g.set_point(d, Some([k as f64, 0.0, 1.0]));
+            }
+        }
+        (g, darts)
+    }
+
+    /// A k-gon face in a 3-map: 2k darts, `d[2j], d[2j+1]` one side.
+    fn polygon(g: &mut GMap, k: usize) -> Vec<DartId> {
+        let d: Vec<DartId> = (0..2 * k).map(|_| g.create_dart()).collect();
+        for j in 0..k {
+            g.sew(d[2 * j], d[2 * j + 1], 0);
+            g.sew(d[2 * j + 1], d[(2 * j + 2) % (2 * k)], 1);
+        }
+        d
+    }
+
+    #[test]
+    fn large_sew_orbits_pair_through_the_hash_maps() {
+        // a 20-gon has a 3-sew orbit of 40 darts, beyond Pairing::LINEAR
+        let mut g = GMap::new(3);
+        let (a, b, c) = (polygon(&mut g, 20), polygon(&mut g, 20), polygon(&mut g, 21));
+        assert!(a.len() > Pairing::LINEAR);
+        assert_eq!(g.sew_pairs(a[0], b[0], 3).map(|p| p.len()), Ok(40));
+        assert!(matches!(g.try_sew(a[0], c[0], 3), Err(SewError::NotIsomorphic { .. })));
+        g.sew(a[0], b[0], 3);
+        assert!(a.iter().zip(&b).all(|(&x, &y)| g.alpha(x, 3) == y));
+        assert_eq!(g.try_sew(a[1], c[0], 3), Err(SewError::NotFree { dart: a[1], alpha: 3 }));
+        // the two 20-gons are one face now, each still its own volume
+        assert_eq!(MapView::cell_counts(&g), vec![41, 41, 2, 3]);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// A sew reconciles from its pairing exactly as `reconcile_attributes` does on the
+        /// darts of the pairs (first sides, then second sides): same values, same ids, same
+        /// hook calls in the same order.
+        #[test]
+        fn sew_reconciles_like_the_general_routine(
+            n in 2usize..=3,
+            pieces in proptest::collection::vec(0usize..4, 2..6),
+            keep in proptest::collection::vec(prop::bool::weighted(0.85), 1..9),
+            sews in proptest::collection::vec((0usize..200, 0usize..200, 0usize..4), 1..40),
+        ) {
+            let (mut g, darts) = attributed(n, &pieces, &keep);
+            for (a, b, i) in sews {
+                let (d, e, i) = (darts[a % darts.len()], darts[b % darts.len()], i % (n + 1));
+                let Ok(pairs) = g.sew_pairs(d, e, i) else { continue };
+                let mut h = g.clone();
+                let (fast, general) = (log_hooks(&mut g), log_hooks(&mut h));
+                g.sew(d, e, i);
+                for &(x, y) in &pairs {
+                    h.link_free(x, y, i);
+                }
+                let touched: Vec<DartId> = pairs.iter().map(|p| p.0).chain(pairs.iter().map(|p| p.1)).collect();
+                h.reconcile_attributes(&touched);
+                prop_assert_eq!(state(&g, &darts), state(&h, &darts));
+                prop_assert_eq!(&*fast.lock().unwrap(), &*general.lock().unwrap());
+                prop_assert!(g.check_attributes().is_ok());
+            }
         }
     }
 }
