@@ -141,7 +141,7 @@ const SIMPLICIAL_WORK_LIMIT: u128 = 1 << 27;
 
 /// Refuses a map whose simplicial counterpart is too big to build (exponential in the
 /// dimension): `gmap 30 1` would ask for 2^31 simplices; then one over the memory limit.
-fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
+pub(super) fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
     let n = map.dim() as u32;
     let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
     if work > SIMPLICIAL_WORK_LIMIT {
