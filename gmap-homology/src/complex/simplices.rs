@@ -244,16 +244,31 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         Some(e) if e <= limit => {}
         _ => return Err(FaceError::TooManyFaces { estimate, limit }),
     }
-    // renumber the labels 0..V
+    // renumber the labels 0..V: by a table when the labels are small (the usual 1..V), else
+    // by binary search among the sorted labels
     let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
+    let entries = vertices.len();
     vertices.sort_unstable();
     vertices.dedup();
+    let largest = vertices.last().copied().unwrap_or(0);
+    let table: Option<Vec<u32>> = (largest < 2 * entries as u64 + 1024).then(|| {
+        let mut t = vec![0u32; largest as usize + 1];
+        for (i, &v) in vertices.iter().enumerate() {
+            t[v as usize] = i as u32;
+        }
+        t
+    });
+    let index_of = |v: &u64| match &table {
+        Some(t) => t[*v as usize],
+        None => vertices.binary_search(v).expect("label collected above") as u32,
+    };
     let mut local: Vec<Vec<u32>> = Vec::with_capacity(facets.len());
     let mut top = 0;
     for (i, f) in facets.iter().enumerate() {
-        let mut g: Vec<u32> =
-            f.as_ref().iter().map(|v| vertices.binary_search(v).expect("label collected above") as u32).collect();
-        g.sort_unstable();
+        let mut g: Vec<u32> = f.as_ref().iter().map(index_of).collect();
+        if !g.is_sorted() {
+            g.sort_unstable();
+        }
         if let Some(w) = g.windows(2).find(|w| w[0] == w[1]) {
             return Err(FaceError::RepeatedVertex { facet: i, vertex: vertices[w[0] as usize] });
         }
@@ -262,9 +277,6 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         }
         top = top.max(g.len());
         local.push(g);
-    }
-    if top == 0 {
-        return Err(FaceError::Empty);
     }
     let bits = (32 - (vertices.len().saturating_sub(1) as u32).leading_zeros()).max(1);
     let (counts, boundaries, faces) = if bits as usize * top <= 64 {
