@@ -152,7 +152,7 @@ impl FaceKey for Box<[u32]> {
     }
 }
 
-/// The faces and boundary matrices of facets given as increasing vertex indices, `top` the
+/// The chain complex and the faces (flat, as in [`FaceComplex`]) of facets given as increasing vertex indices, `top` the
 /// largest facet size (module docs). One pass per dimension, from the top down: the cells of
 /// size `s` are the faces found from the cells of size `s + 1` followed by the facets of size
 /// `s` not seen yet; dropping each vertex of each of them in turn gives its boundary column
@@ -161,7 +161,7 @@ fn enumerate<K: FaceKey>(
     local: &[Vec<u32>],
     top: usize,
     bits: u32,
-) -> Result<(Vec<usize>, Vec<SparseMatrix>, Vec<Vec<u32>>), FaceError> {
+) -> Result<(ChainComplex, Vec<Vec<u32>>), FaceError> {
     let mut by_size: Vec<Vec<&[u32]>> = vec![Vec::new(); top + 1];
     for g in local {
         by_size[g.len()].push(g);
@@ -227,7 +227,8 @@ fn enumerate<K: FaceKey>(
             .map_err(|e| FaceError::Matrix(e.to_string()))?;
         boundaries.push(m);
     }
-    Ok((counts, boundaries, flat))
+    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| FaceError::Matrix(e.to_string()))?;
+    Ok((chain, flat))
 }
 
 /// The chain complex of all faces of the given facets (module docs). Each facet's labels may
@@ -279,14 +280,13 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         local.push(g);
     }
     let bits = (32 - (vertices.len().saturating_sub(1) as u32).leading_zeros()).max(1);
-    let (counts, boundaries, faces) = if bits as usize * top <= 64 {
+    let (chain, faces) = if bits as usize * top <= 64 {
         enumerate::<u64>(&local, top, bits)?
     } else if bits as usize * top <= 128 {
         enumerate::<u128>(&local, top, bits)?
     } else {
         enumerate::<Box<[u32]>>(&local, top, bits)?
     };
-    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| FaceError::Matrix(e.to_string()))?;
     Ok(FaceComplex { chain, vertices, faces })
 }
 
