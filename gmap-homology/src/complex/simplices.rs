@@ -167,6 +167,7 @@ fn enumerate<K: FaceKey>(
         by_size[g.len()].push(g);
     }
     let mut index: FxHashMap<K, u32> = FxHashMap::default();
+    index.reserve(by_size[top].len());
     let mut keys: Vec<K> = Vec::new();
     let mut columns = Vec::with_capacity(top - 1);
     let mut flat: Vec<Vec<u32>> = vec![Vec::new(); top];
@@ -247,18 +248,30 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
     }
     // renumber the labels 0..V: by a table when the labels are small (the usual 1..V), else
     // by binary search among the sorted labels
-    let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
-    let entries = vertices.len();
-    vertices.sort_unstable();
-    vertices.dedup();
-    let largest = vertices.last().copied().unwrap_or(0);
-    let table: Option<Vec<u32>> = (largest < 2 * entries as u64 + 1024).then(|| {
-        let mut t = vec![0u32; largest as usize + 1];
-        for (i, &v) in vertices.iter().enumerate() {
-            t[v as usize] = i as u32;
+    let entries: usize = facets.iter().map(|f| f.as_ref().len()).sum();
+    let largest = facets.iter().flat_map(|f| f.as_ref().iter().copied()).max().unwrap_or(0);
+    let (vertices, table) = if largest < 2 * entries as u64 + 1024 {
+        // mark the labels present, then number them in increasing order: no sort
+        let mut table = vec![u32::MAX; largest as usize + 1];
+        for f in facets {
+            for &v in f.as_ref() {
+                table[v as usize] = 0;
+            }
         }
-        t
-    });
+        let mut vertices = Vec::new();
+        for (v, slot) in table.iter_mut().enumerate() {
+            if *slot == 0 {
+                *slot = vertices.len() as u32;
+                vertices.push(v as u64);
+            }
+        }
+        (vertices, Some(table))
+    } else {
+        let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
+        vertices.sort_unstable();
+        vertices.dedup();
+        (vertices, None)
+    };
     let index_of = |v: &u64| match &table {
         Some(t) => t[*v as usize],
         None => vertices.binary_search(v).expect("label collected above") as u32,
