@@ -360,6 +360,29 @@ mod tests {
     }
 
     #[test]
+    fn packed_keys_drop_each_vertex_at_full_width() {
+        // 8 vertices of 8 bits fill a u64; 16 of 8 bits fill a u128: dropping the first
+        // vertex shifts by the whole width
+        let face: Vec<u32> = (0..8).map(|i| 200 + i).collect();
+        let wide: Vec<u32> = (0..16).map(|i| 100 + 9 * i).collect();
+        for p in 0..8 {
+            let want: Vec<u32> = face.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
+            let mut got = Vec::new();
+            <u64 as FaceKey>::pack(&face, 8).without(p, 8, 8).unpack_into(7, 8, &mut got);
+            assert_eq!(got, want, "u64, p = {p}");
+        }
+        for p in 0..16 {
+            let want: Vec<u32> = wide.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
+            let mut got = Vec::new();
+            <u128 as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut got);
+            assert_eq!(got, want, "u128, p = {p}");
+            let mut flat = Vec::new();
+            <Box<[u32]> as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut flat);
+            assert_eq!(flat, want, "list, p = {p}");
+        }
+    }
+
+    #[test]
     fn wide_labels_take_the_flat_path() {
         // the boundary of a 12-simplex on labels far apart: a sphere S^11
         let big: Vec<u64> = (0..13).map(|i| i * 1_000_003).collect();
