@@ -177,3 +177,29 @@ fn gudhi_column_when_available() {
     }
     assert_eq!(v["rows"][1]["gudhi_ms"], Value::Null);
 }
+
+#[test]
+fn a_route_over_the_memory_policy_is_skipped_with_its_reason() {
+    // Barnette's sphere as a 3-map has 456 darts (11 kB of involutions); its simplicial
+    // counterpart is estimated at 2^4 (456 + 4) simplices of 72 bytes, 530 kB: over 100 kB
+    let f = lutz("Barnette_sphere.facets");
+    let o = gmap(&["bench", "--json", "--no-gudhi", "--max-memory", "100K", &f]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 2, "{v}");
+    assert_eq!(rows[0]["route"], "cellular");
+    assert_eq!(rows[0]["groups"], "(Z, 0, 0, Z)");
+    assert_eq!(rows[1]["route"], "simplicial");
+    assert_eq!(rows[1]["betti"], Value::Null);
+    assert_eq!(rows[1]["cells"], serde_json::json!([]));
+    let why = rows[1]["error"].as_str().unwrap();
+    assert!(why.starts_with("skipped: "), "{why}");
+    assert!(why.contains("over the memory limit of 102400 bytes"), "{why}");
+    // the skipped route takes no part in the agreement
+    assert_eq!(rows[0]["agree"], true);
+    // with the default policy the same route runs
+    let o = gmap(&["bench", "--json", "--no-gudhi", &f]);
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["rows"][1]["groups"], "(Z, 0, 0, Z)");
+}

@@ -95,7 +95,16 @@ pub fn max_memory() -> u64 {
 /// The default limit: half the physical memory (`MemTotal`), and at most three quarters of
 /// the address-space limit (`ulimit -v`) when there is one (the rest is for the program,
 /// its input and the allocator). [`FALLBACK_MAX_MEMORY`] where neither can be read.
+///
+/// Both figures are fixed for the life of the process, so they are read once (the first
+/// call) and remembered: a command checks its estimates many times.
 pub fn default_max_memory() -> u64 {
+    static DEFAULT: std::sync::OnceLock<u64> = std::sync::OnceLock::new();
+    *DEFAULT.get_or_init(machine_max_memory)
+}
+
+/// [`default_max_memory`] read from the machine now.
+fn machine_max_memory() -> u64 {
     let half = physical_memory().map(|b| b / 2);
     let space = address_space_limit().map(|b| b / 4 * 3);
     match (half, space) {

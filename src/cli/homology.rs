@@ -142,7 +142,7 @@ fn cellular<'a>(map: &DenseMap, file: &str, sc: Option<&'a SimplicialComplex>) -
 /// ([`gmap_core::resources::DEFAULT_MAX_WORK`]: a one-dart 16-map is built in seconds, a
 /// one-dart 17-map is refused, `gmap 30 1` asks for 2^31 simplices); then the memory is
 /// checked against the memory limit.
-fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
+pub(super) fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
     let n = map.dim() as u32;
     let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
     let visits = work * (u128::from(n) + 1) * (u128::from(n) + 1);

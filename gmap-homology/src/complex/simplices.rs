@@ -7,11 +7,15 @@
 //! faces, so [`face_estimate`] counts them first (checked arithmetic) and
 //! [`face_complex`] refuses an input over its limit before enumerating anything.
 //!
-//! Faces are found by sort-based deduplication per dimension: labels are renumbered
-//! `0..V`, a k-face is packed into one `u128` when `(k + 1) ⌈log2 V⌉ <= 128` (else kept as
-//! a slice of `u32`), the faces of each dimension are sorted and deduplicated, and each
-//! boundary entry is a binary search among the faces one dimension down. Cells come out in
-//! lexicographic order of their labels.
+//! Faces are found by hashing, one dimension at a time from the top down: labels are
+//! renumbered `0..V`, a face is packed into one `u64` (or `u128`) when its vertices fit at
+//! `⌈log2 V⌉` bits each (else kept as a list of `u32`), and each cell's boundary column comes
+//! from dropping each of its vertices in turn and looking the face up in a hash table of the
+//! dimension below, which numbers new faces on first sight. So the boundary matrices are
+//! built column by column in one pass, with no sort and no search, and only faces of the
+//! facets are ever generated. Cells are numbered in that order of discovery: the facets of
+//! the top dimension in input order (repeats dropped), then, in each dimension, the faces of
+//! the cells above followed by the facets of that dimension not met yet.
 //!
 //! ```
 //! use gmap_homology::{homology_z, simplices::face_complex};
@@ -19,9 +23,11 @@
 //! let fc = face_complex(&[vec![1, 2], vec![2, 3], vec![1, 3], vec![7]], u64::MAX).unwrap();
 //! assert_eq!(fc.chain.counts(), &[4, 3]);
 //! assert_eq!(homology_z(&fc.chain).unwrap().to_string(), "(Z^2, Z)");
-//! assert_eq!(fc.labels(1, 1), vec![1, 3]); // edges in lexicographic order: [1,2], [1,3], [2,3]
+//! // the edges in the order found: those of the facets as listed
+//! assert_eq!((0..3).map(|j| fc.labels(1, j)).collect::<Vec<_>>(), [[1, 2], [2, 3], [1, 3]]);
 //! ```
 
+use rustc_hash::FxHashMap;
 use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
@@ -73,7 +79,7 @@ pub fn face_estimate<'a, I: IntoIterator<Item = &'a [u64]>>(facets: I) -> Option
 /// A simplicial complex as a chain complex, with the labels of every cell.
 #[derive(Clone, Debug)]
 pub struct FaceComplex {
-    /// the chain complex: k-cells are the k-faces, in lexicographic order of labels
+    /// the chain complex: k-cells are the k-faces, numbered in order of discovery (module docs)
     pub chain: ChainComplex,
     /// the vertex labels, sorted: vertex index `i` is label `vertices[i]`
     pub vertices: Vec<u64>,
@@ -93,106 +99,144 @@ impl FaceComplex {
     }
 }
 
-/// Sorted, deduplicated k-faces of one dimension with a way to find a face's index.
-enum Faces {
-    /// faces of at most 64 bits packed: keys as in `Packed`, and `start[v]..start[v + 1]`
-    /// the range of the faces whose first vertex is `v` (a search looks only there)
-    Small { keys: Vec<u64>, bits: u32, start: Vec<u32> },
-    /// packed keys, `bits` per vertex, first vertex in the high bits
-    Packed { keys: Vec<u128>, bits: u32 },
-    /// flat vertex lists (stride k + 1), sorted lexicographically
-    Flat { flat: Vec<u32>, stride: usize },
+/// A face as a hash key: its vertex indices (increasing) packed `bits` per vertex with the
+/// first vertex in the high bits (`u64`, `u128`), or the list itself when no integer holds it.
+trait FaceKey: Clone + Eq + std::hash::Hash {
+    /// The key of `face` (increasing vertex indices).
+    fn pack(face: &[u32], bits: u32) -> Self;
+    /// The key of the face of `size` vertices without the vertex at position `p` (from 0,
+    /// the first and smallest vertex).
+    fn without(&self, p: usize, size: usize, bits: u32) -> Self;
+    /// Appends the `size` vertex indices of the key to `out`, increasing.
+    fn unpack_into(&self, size: usize, bits: u32, out: &mut Vec<u32>);
 }
 
-impl Faces {
-    fn len(&self) -> usize {
-        match self {
-            Faces::Small { keys, .. } => keys.len(),
-            Faces::Packed { keys, .. } => keys.len(),
-            Faces::Flat { flat, stride } => flat.len() / stride,
-        }
-    }
-
-    fn find(&self, face: &[u32]) -> Option<usize> {
-        match self {
-            Faces::Small { keys, bits, start } => {
-                let v = face[0] as usize;
-                let lo = start[v] as usize;
-                let range = &keys[lo..start[v + 1] as usize];
-                range.binary_search(&(pack(face, *bits) as u64)).ok().map(|k| lo + k)
+macro_rules! packed_key {
+    ($t:ty) => {
+        impl FaceKey for $t {
+            fn pack(face: &[u32], bits: u32) -> Self {
+                face.iter().fold(0, |acc: $t, &v| (acc << bits) | <$t>::from(v))
             }
-            Faces::Packed { keys, bits } => keys.binary_search(&pack(face, *bits)).ok(),
-            Faces::Flat { flat, stride } => {
-                let (mut lo, mut hi) = (0, flat.len() / stride);
-                while lo < hi {
-                    let mid = (lo + hi) / 2;
-                    match flat[mid * stride..(mid + 1) * stride].cmp(face) {
-                        std::cmp::Ordering::Less => lo = mid + 1,
-                        std::cmp::Ordering::Greater => hi = mid,
-                        std::cmp::Ordering::Equal => return Some(mid),
-                    }
+
+            fn without(&self, p: usize, size: usize, bits: u32) -> Self {
+                // the vertices after position p sit in the low (size - 1 - p) * bits bits
+                let low_bits = (size - 1 - p) as u32 * bits;
+                let low = *self & <$t>::MAX.checked_shr(<$t>::BITS - low_bits).unwrap_or(0);
+                let high = self.checked_shr(low_bits + bits).unwrap_or(0);
+                high.checked_shl(low_bits).unwrap_or(0) | low
+            }
+
+            fn unpack_into(&self, size: usize, bits: u32, out: &mut Vec<u32>) {
+                let mask = <$t>::MAX >> (<$t>::BITS - bits);
+                for i in (0..size as u32).rev() {
+                    out.push(((*self >> (bits * i)) & mask) as u32);
                 }
-                None
             }
         }
+    };
+}
+packed_key!(u64);
+packed_key!(u128);
+
+impl FaceKey for Box<[u32]> {
+    fn pack(face: &[u32], _: u32) -> Self {
+        face.into()
     }
 
-    /// The flat vertex lists.
-    fn to_flat(&self, stride: usize) -> Vec<u32> {
-        match self {
-            Faces::Flat { flat, .. } => flat.clone(),
-            Faces::Small { keys, bits, .. } => unpack(keys.iter().map(|&k| u128::from(k)), *bits, stride),
-            Faces::Packed { keys, bits } => unpack(keys.iter().copied(), *bits, stride),
-        }
+    fn without(&self, p: usize, _: usize, _: u32) -> Self {
+        self.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect()
+    }
+
+    fn unpack_into(&self, _: usize, _: u32, out: &mut Vec<u32>) {
+        out.extend_from_slice(self);
     }
 }
 
-/// The vertex lists of packed keys of `stride` vertices, `bits` each.
-fn unpack(keys: impl ExactSizeIterator<Item = u128>, bits: u32, stride: usize) -> Vec<u32> {
-    let mask = (1u128 << bits) - 1;
-    let mut out = Vec::with_capacity(keys.len() * stride);
-    for key in keys {
-        for i in (0..stride).rev() {
-            out.push(((key >> (bits * i as u32)) & mask) as u32);
-        }
+/// The chain complex and the faces (flat, as in [`FaceComplex`]) of facets given as increasing vertex indices, `top` the
+/// largest facet size (module docs). One pass per dimension, from the top down: the cells of
+/// size `s` are the faces found from the cells of size `s + 1` followed by the facets of size
+/// `s` not seen yet; dropping each vertex of each of them in turn gives its boundary column
+/// and numbers the new faces of size `s - 1` on first sight.
+fn enumerate<K: FaceKey>(
+    local: &[Vec<u32>],
+    top: usize,
+    bits: u32,
+) -> Result<(ChainComplex, Vec<Vec<u32>>), FaceError> {
+    let mut by_size: Vec<Vec<&[u32]>> = vec![Vec::new(); top + 1];
+    for g in local {
+        by_size[g.len()].push(g);
     }
-    out
-}
-
-fn pack(face: &[u32], bits: u32) -> u128 {
-    face.iter().fold(0u128, |acc, &v| (acc << bits) | v as u128)
-}
-
-/// Calls `f` on every `size`-subset of `vs` (increasing, in lexicographic order).
-fn subsets(vs: &[u32], size: usize, buf: &mut Vec<u32>, f: &mut impl FnMut(&[u32])) {
-    let n = vs.len();
-    if size == 0 || size > n {
-        return;
+    let mut index: FxHashMap<K, u32> = FxHashMap::default();
+    index.reserve(by_size[top].len());
+    let mut keys: Vec<K> = Vec::new();
+    let mut columns = Vec::with_capacity(top - 1);
+    let mut flat: Vec<Vec<u32>> = vec![Vec::new(); top];
+    let mut counts = vec![0; top];
+    let mut column: Vec<(u32, i64)> = Vec::with_capacity(top);
+    for size in (1..=top).rev() {
+        for g in &by_size[size] {
+            let key = K::pack(g, bits);
+            if !index.contains_key(&key) {
+                index.insert(key.clone(), keys.len() as u32);
+                keys.push(key);
+            }
+        }
+        let cells = std::mem::take(&mut keys);
+        counts[size - 1] = cells.len();
+        let out = &mut flat[size - 1];
+        out.reserve(cells.len() * size);
+        for key in &cells {
+            key.unpack_into(size, bits, out);
+        }
+        if size == 1 {
+            break;
+        }
+        // the faces one size down, numbered on first sight
+        let mut below: FxHashMap<K, u32> = FxHashMap::default();
+        below.reserve(cells.len() * size / 2);
+        keys.reserve(cells.len() * size / 2);
+        let mut col_ptr = Vec::with_capacity(cells.len() + 1);
+        let mut row_idx = Vec::with_capacity(cells.len() * size);
+        let mut vals = Vec::with_capacity(cells.len() * size);
+        col_ptr.push(0);
+        for key in &cells {
+            column.clear();
+            for p in 0..size {
+                let face = key.without(p, size, bits);
+                let next = keys.len() as u32;
+                let row = *below.entry(face).or_insert_with_key(|f| {
+                    keys.push(f.clone());
+                    next
+                });
+                column.push((row, if p % 2 == 0 { 1 } else { -1 }));
+            }
+            column.sort_unstable_by_key(|&(r, _)| r);
+            row_idx.extend(column.iter().map(|&(r, _)| r));
+            vals.extend(column.iter().map(|&(_, v)| v));
+            col_ptr.push(row_idx.len());
+        }
+        if keys.len() > u32::MAX as usize {
+            return Err(FaceError::Matrix(format!("{} faces of {} vertices, past u32 indices", keys.len(), size - 1)));
+        }
+        // the rows are known once the facets of size `size - 1` join, at the next step
+        columns.push((cells.len(), col_ptr, row_idx, vals));
+        index = below;
     }
-    let mut idx: Vec<usize> = (0..size).collect();
-    loop {
-        buf.clear();
-        buf.extend(idx.iter().map(|&i| vs[i]));
-        f(buf);
-        // the rightmost position that can still move right
-        let mut i = size;
-        while i > 0 && idx[i - 1] == i - 1 + n - size {
-            i -= 1;
-        }
-        if i == 0 {
-            return;
-        }
-        idx[i - 1] += 1;
-        for j in i..size {
-            idx[j] = idx[j - 1] + 1;
-        }
+    let mut boundaries = Vec::with_capacity(top - 1);
+    for (k, (cols, col_ptr, row_idx, vals)) in columns.into_iter().rev().enumerate() {
+        let m = SparseMatrix::try_from_csc(counts[k], cols, col_ptr, row_idx, vals)
+            .map_err(|e| FaceError::Matrix(e.to_string()))?;
+        boundaries.push(m);
     }
+    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| FaceError::Matrix(e.to_string()))?;
+    Ok((chain, flat))
 }
 
 /// The chain complex of all faces of the given facets (module docs). Each facet's labels may
 /// come in any order; a facet repeating a label is refused, and so is an input whose
 /// [`face_estimate`] exceeds `limit` (before anything is enumerated). Facets listed twice or
-/// contained in others are harmless. O(E log E) for E faces counted with repetition.
+/// contained in others are harmless. Expected O(E · d) for E faces counted with repetition
+/// and facets of at most d + 1 vertices (one hash look-up per boundary entry).
 pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceComplex, FaceError> {
     if facets.is_empty() {
         return Err(FaceError::Empty);
@@ -202,16 +246,43 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         Some(e) if e <= limit => {}
         _ => return Err(FaceError::TooManyFaces { estimate, limit }),
     }
-    // renumber the labels 0..V
-    let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
-    vertices.sort_unstable();
-    vertices.dedup();
+    // renumber the labels 0..V: by a table when the labels are small (the usual 1..V), else
+    // by binary search among the sorted labels
+    let entries: usize = facets.iter().map(|f| f.as_ref().len()).sum();
+    let largest = facets.iter().flat_map(|f| f.as_ref().iter().copied()).max().unwrap_or(0);
+    let (vertices, table) = if largest < 2 * entries as u64 + 1024 {
+        // mark the labels present, then number them in increasing order: no sort
+        let mut table = vec![u32::MAX; largest as usize + 1];
+        for f in facets {
+            for &v in f.as_ref() {
+                table[v as usize] = 0;
+            }
+        }
+        let mut vertices = Vec::new();
+        for (v, slot) in table.iter_mut().enumerate() {
+            if *slot == 0 {
+                *slot = vertices.len() as u32;
+                vertices.push(v as u64);
+            }
+        }
+        (vertices, Some(table))
+    } else {
+        let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
+        vertices.sort_unstable();
+        vertices.dedup();
+        (vertices, None)
+    };
+    let index_of = |v: &u64| match &table {
+        Some(t) => t[*v as usize],
+        None => vertices.binary_search(v).expect("label collected above") as u32,
+    };
     let mut local: Vec<Vec<u32>> = Vec::with_capacity(facets.len());
     let mut top = 0;
     for (i, f) in facets.iter().enumerate() {
-        let mut g: Vec<u32> =
-            f.as_ref().iter().map(|v| vertices.binary_search(v).expect("label collected above") as u32).collect();
-        g.sort_unstable();
+        let mut g: Vec<u32> = f.as_ref().iter().map(index_of).collect();
+        if !g.is_sorted() {
+            g.sort_unstable();
+        }
         if let Some(w) = g.windows(2).find(|w| w[0] == w[1]) {
             return Err(FaceError::RepeatedVertex { facet: i, vertex: vertices[w[0] as usize] });
         }
@@ -221,74 +292,15 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         top = top.max(g.len());
         local.push(g);
     }
-    if top == 0 {
-        return Err(FaceError::Empty);
-    }
     let bits = (32 - (vertices.len().saturating_sub(1) as u32).leading_zeros()).max(1);
-    let mut faces: Vec<Faces> = Vec::with_capacity(top);
-    let mut buf = Vec::new();
-    for size in 1..=top {
-        let f = if bits as usize * size <= 64 {
-            let mut keys: Vec<u64> = Vec::new();
-            for g in &local {
-                subsets(g, size, &mut buf, &mut |s| keys.push(pack(s, bits) as u64));
-            }
-            keys.sort_unstable();
-            keys.dedup();
-            // the first vertex is the top `bits` of the key's `bits * size`
-            let shift = bits * (size as u32 - 1);
-            let mut start = vec![0u32; vertices.len() + 1];
-            for &key in &keys {
-                start[(key >> shift) as usize + 1] += 1;
-            }
-            for v in 0..vertices.len() {
-                start[v + 1] += start[v];
-            }
-            Faces::Small { keys, bits, start }
-        } else if bits as usize * size <= 128 {
-            let mut keys = Vec::new();
-            for g in &local {
-                subsets(g, size, &mut buf, &mut |s| keys.push(pack(s, bits)));
-            }
-            keys.sort_unstable();
-            keys.dedup();
-            Faces::Packed { keys, bits }
-        } else {
-            let mut all: Vec<u32> = Vec::new();
-            for g in &local {
-                subsets(g, size, &mut buf, &mut |s| all.extend_from_slice(s));
-            }
-            let mut order: Vec<usize> = (0..all.len() / size).collect();
-            order.sort_unstable_by(|&a, &b| all[a * size..(a + 1) * size].cmp(&all[b * size..(b + 1) * size]));
-            order.dedup_by(|a, b| all[*a * size..(*a + 1) * size] == all[*b * size..(*b + 1) * size]);
-            let mut flat = Vec::with_capacity(order.len() * size);
-            for j in order {
-                flat.extend_from_slice(&all[j * size..(j + 1) * size]);
-            }
-            Faces::Flat { flat, stride: size }
-        };
-        faces.push(f);
-    }
-    let counts: Vec<usize> = faces.iter().map(Faces::len).collect();
-    let flat: Vec<Vec<u32>> = faces.iter().enumerate().map(|(k, f)| f.to_flat(k + 1)).collect();
-    let mut boundaries = Vec::with_capacity(top - 1);
-    let mut face = Vec::new();
-    for k in 1..top {
-        let mut entries: Vec<(u32, u32, i64)> = Vec::with_capacity(counts[k] * (k + 1));
-        for (j, s) in flat[k].chunks_exact(k + 1).enumerate() {
-            for i in 0..=k {
-                face.clear();
-                face.extend(s.iter().enumerate().filter(|&(x, _)| x != i).map(|(_, &v)| v));
-                let row = faces[k - 1].find(&face).expect("every face of a face was enumerated");
-                entries.push((row as u32, j as u32, if i % 2 == 0 { 1 } else { -1 }));
-            }
-        }
-        let m = SparseMatrix::try_from_entries(counts[k - 1], counts[k], &entries)
-            .map_err(|e| FaceError::Matrix(e.to_string()))?;
-        boundaries.push(m);
-    }
-    let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| FaceError::Matrix(e.to_string()))?;
-    Ok(FaceComplex { chain, vertices, faces: flat })
+    let (chain, faces) = if bits as usize * top <= 64 {
+        enumerate::<u64>(&local, top, bits)?
+    } else if bits as usize * top <= 128 {
+        enumerate::<u128>(&local, top, bits)?
+    } else {
+        enumerate::<Box<[u32]>>(&local, top, bits)?
+    };
+    Ok(FaceComplex { chain, vertices, faces })
 }
 
 #[cfg(test)]
@@ -345,6 +357,29 @@ mod tests {
             FaceError::TooManyFaces { estimate: Some(7), limit: 6 }
         );
         assert_eq!(face_estimate([&[0u64; 64][..]]), None);
+    }
+
+    #[test]
+    fn packed_keys_drop_each_vertex_at_full_width() {
+        // 8 vertices of 8 bits fill a u64; 16 of 8 bits fill a u128: dropping the first
+        // vertex shifts by the whole width
+        let face: Vec<u32> = (0..8).map(|i| 200 + i).collect();
+        let wide: Vec<u32> = (0..16).map(|i| 100 + 9 * i).collect();
+        for p in 0..8 {
+            let want: Vec<u32> = face.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
+            let mut got = Vec::new();
+            <u64 as FaceKey>::pack(&face, 8).without(p, 8, 8).unpack_into(7, 8, &mut got);
+            assert_eq!(got, want, "u64, p = {p}");
+        }
+        for p in 0..16 {
+            let want: Vec<u32> = wide.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
+            let mut got = Vec::new();
+            <u128 as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut got);
+            assert_eq!(got, want, "u128, p = {p}");
+            let mut flat = Vec::new();
+            <Box<[u32]> as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut flat);
+            assert_eq!(flat, want, "list, p = {p}");
+        }
     }
 
     #[test]
