@@ -28,15 +28,16 @@ fn json_groups_are_those_of_homology() {
     assert!(o.stderr.is_empty(), "stderr is not a terminal: silent ({})", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let rows = v["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 2 * files.len());
+    assert_eq!(rows.len(), 3 * files.len());
     for (k, f) in files.iter().enumerate() {
-        for (j, method) in ["cellular", "simplicial"].iter().enumerate() {
-            let r = &rows[2 * k + j];
+        for (j, route) in ["direct", "cellular", "simplicial"].iter().enumerate() {
+            let r = &rows[3 * k + j];
             assert_eq!(r["input"], f.as_str());
-            assert_eq!(r["route"], *method);
+            assert_eq!(r["route"], *route);
+            let method = if *route == "simplicial" { "simplicial" } else { "cellular" };
             let h = homology(f, method);
-            assert_eq!(r["betti"], h["betti"], "{f} {method}");
-            assert_eq!(r["torsion"], h["torsion"], "{f} {method}");
+            assert_eq!(r["betti"], h["betti"], "{f} {route}");
+            assert_eq!(r["torsion"], h["torsion"], "{f} {route}");
             assert_eq!(r["agree"], true);
             assert_eq!(r["gudhi_ms"], Value::Null);
             assert_eq!(r["ratio"], Value::Null);
@@ -47,9 +48,10 @@ fn json_groups_are_those_of_homology() {
             }
         }
     }
-    // the cellular cells of a .facets input are its simplices
+    // the direct route's cells and the G-map's cells of a .facets input are its simplices
     assert_eq!(rows[0]["cells"], serde_json::json!([8, 27, 38, 19]));
-    assert_eq!(rows[2]["groups"], "(Z, Z^12, Z)");
+    assert_eq!(rows[1]["cells"], serde_json::json!([8, 27, 38, 19]));
+    assert_eq!(rows[3]["groups"], "(Z, Z^12, Z)");
 }
 
 #[test]
@@ -59,14 +61,15 @@ fn csv_and_markdown_have_one_line_per_row() {
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout).unwrap();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines.len(), 3, "{text}");
+    assert_eq!(lines.len(), 4, "{text}");
     assert!(lines[0].starts_with("input,route,cells,read_ms,"), "{text}");
-    assert!(lines[1].contains(",cellular,8 27 38 19,"), "{text}");
-    assert!(lines[1].contains("\"(Z, 0, 0, Z)\""), "{text}");
-    assert!(lines[2].contains(",simplicial,"), "{text}");
+    assert!(lines[1].contains(",direct,8 27 38 19,"), "{text}");
+    assert!(lines[2].contains(",cellular,8 27 38 19,"), "{text}");
+    assert!(lines[2].contains("\"(Z, 0, 0, Z)\""), "{text}");
+    assert!(lines[3].contains(",simplicial,"), "{text}");
     let o = gmap(&["bench", "--no-gudhi", &f]);
     let text = String::from_utf8(o.stdout).unwrap();
-    assert_eq!(text.lines().count(), 4, "{text}");
+    assert_eq!(text.lines().count(), 5, "{text}");
     assert!(text.starts_with("| input | route |"), "{text}");
     assert!(text.contains("(Z, 0, 0, Z)"), "{text}");
 }
@@ -91,15 +94,17 @@ fn a_folder_is_its_supported_files_sorted() {
         [
             "Barnette_sphere.facets",
             "Barnette_sphere.facets",
+            "Barnette_sphere.facets",
             "cube.gmap",
             "cube.gmap",
+            "d2n12g6.facets",
             "d2n12g6.facets",
             "d2n12g6.facets"
         ]
     );
     let rows = v["rows"].as_array().unwrap();
-    assert_eq!(rows[2]["groups"], "(Z, 0, 0, 0)");
-    assert_eq!(rows[2]["cells"], serde_json::json!([8, 12, 6, 1]));
+    assert_eq!(rows[3]["groups"], "(Z, 0, 0, 0)");
+    assert_eq!(rows[3]["cells"], serde_json::json!([8, 12, 6, 1]));
 }
 
 #[test]
@@ -146,10 +151,10 @@ fn errors_and_usage() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let rows = v["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 3);
-    assert_eq!(rows[2]["route"], "read");
-    assert!(rows[2]["error"].as_str().unwrap().starts_with("cannot read: "), "{v}");
-    assert_eq!(rows[2]["betti"], Value::Null);
+    assert_eq!(rows.len(), 4);
+    assert_eq!(rows[3]["route"], "read");
+    assert!(rows[3]["error"].as_str().unwrap().starts_with("cannot read: "), "{v}");
+    assert_eq!(rows[3]["betti"], Value::Null);
     let empty = tempfile::tempdir().unwrap();
     let o = gmap(&["bench", empty.path().to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
@@ -187,13 +192,14 @@ fn a_route_over_the_memory_policy_is_skipped_with_its_reason() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let rows = v["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 2, "{v}");
-    assert_eq!(rows[0]["route"], "cellular");
-    assert_eq!(rows[0]["groups"], "(Z, 0, 0, Z)");
-    assert_eq!(rows[1]["route"], "simplicial");
-    assert_eq!(rows[1]["betti"], Value::Null);
-    assert_eq!(rows[1]["cells"], serde_json::json!([]));
-    let why = rows[1]["error"].as_str().unwrap();
+    assert_eq!(rows.len(), 3, "{v}");
+    assert_eq!(rows[0]["route"], "direct");
+    assert_eq!(rows[1]["route"], "cellular");
+    assert_eq!(rows[1]["groups"], "(Z, 0, 0, Z)");
+    assert_eq!(rows[2]["route"], "simplicial");
+    assert_eq!(rows[2]["betti"], Value::Null);
+    assert_eq!(rows[2]["cells"], serde_json::json!([]));
+    let why = rows[2]["error"].as_str().unwrap();
     assert!(why.starts_with("skipped: "), "{why}");
     assert!(why.contains("over the memory limit of 102400 bytes"), "{why}");
     // the skipped route takes no part in the agreement
@@ -201,5 +207,25 @@ fn a_route_over_the_memory_policy_is_skipped_with_its_reason() {
     // with the default policy the same route runs
     let o = gmap(&["bench", "--json", "--no-gudhi", &f]);
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(v["rows"][1]["groups"], "(Z, 0, 0, Z)");
+    assert_eq!(v["rows"][2]["groups"], "(Z, 0, 0, Z)");
+}
+
+#[test]
+fn a_complex_without_a_gmap_has_a_direct_row() {
+    // the dunce hat: a ridge in three facets, so no G-map; the direct route gives its groups
+    let f = lutz("dunce_hat.facets");
+    let o = gmap(&["bench", "--json", "--no-gudhi", &f]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3, "{v}");
+    assert_eq!(rows[0]["route"], "direct");
+    assert_eq!(rows[0]["cells"], serde_json::json!([8, 24, 17]));
+    assert_eq!(rows[0]["groups"], "(Z, 0, 0)");
+    assert_eq!(rows[0]["agree"], true);
+    for r in &rows[1..] {
+        assert_eq!(r["betti"], Value::Null);
+        let why = r["error"].as_str().unwrap();
+        assert!(why.starts_with("does not apply: ") && why.contains("not a pseudo-manifold"), "{why}");
+    }
 }

@@ -2,7 +2,10 @@
 //! benchmarking (docs/FORMATS.md §1, `gmap bench`).
 //!
 //! Each input (a folder stands for its supported files, sorted) is read once, then each route
-//! that `gmap homology` has for it is run and timed by stage: for a G-map the cellular route
+//! that `gmap homology` has for it is run and timed by stage: for a simplicial complex
+//! (`.facets`, `.lex`) the direct route (every face of every facet a cell), then the two
+//! routes of its G-map, which say why they do not apply when the complex has none; for a
+//! G-map the cellular route
 //! (cells and the C1/C2 checks, border operator, reduction) and the simplicial counterpart
 //! (building the complex, reduction); for an architectural complex (`.json`) the completion
 //! by zero of its boundary matrix. A route that does not apply gives a row with its reason,
@@ -15,12 +18,13 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use gmap_homology::border::border_from_oriented;
+use gmap_homology::simplices::{face_complex, FaceError};
 use gmap_homology::{check_preconditions, homology_z, simplicial_complex, ChainComplex, Homology};
 use serde_json::{json, Value};
 
-use super::load::{extension, load, Loaded, INPUT_EXTENSIONS};
+use super::load::{extension, load, load_simplicial, Loaded, INPUT_EXTENSIONS};
 
 /// The output shape of `gmap bench`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,9 +149,6 @@ pub fn run(o: &Options) -> Result<()> {
 /// The rows of one input, one per route.
 fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
     let input = path.display().to_string();
-    let t = Instant::now();
-    let loaded = load(path, max_darts)?;
-    let read = ms(t);
     let mut rows = Vec::new();
     let row = |route, cells: Vec<usize>, times, result| Row {
         input: input.clone(),
@@ -158,6 +159,40 @@ fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
         agree: true,
         gudhi_ms: None,
     };
+    // a simplicial complex: the direct route first (every face of every facet a cell, as
+    // `gmap homology` does by default); it applies to any complex, so a complex that has no
+    // G-map still gets its groups, and the two G-map routes say why they do not apply
+    let simplicial = if matches!(extension(path).as_str(), "facets" | "lex") {
+        let t = Instant::now();
+        let sc = load_simplicial(path)?.with_context(|| format!("{input}: not a simplicial complex"))?;
+        let mut times = Times { read: ms(t), ..Times::default() };
+        let facets = sc.all_facets();
+        let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
+        let t = Instant::now();
+        let fc = face_complex(&facets, limit).map_err(|e| match e {
+            FaceError::TooManyFaces { .. } => anyhow!("{input}: {e}; raise the limit with --max-darts N"),
+            e => anyhow!("{input}: {e}"),
+        })?;
+        times.border = Some(ms(t));
+        let (cells, r) = reduce(&fc.chain, &mut times);
+        rows.push(row("direct", cells, times, r));
+        true
+    } else {
+        false
+    };
+    let t = Instant::now();
+    let loaded = match load(path, max_darts) {
+        Ok(loaded) => loaded,
+        Err(e) if simplicial => {
+            let why = format!("does not apply: {}", super::error_message(&e));
+            let times = Times { read: ms(t), ..Times::default() };
+            rows.push(row("cellular", Vec::new(), times.clone(), Err(why.clone())));
+            rows.push(row("simplicial", Vec::new(), times, Err(why)));
+            return Ok(rows);
+        }
+        Err(e) => return Err(e),
+    };
+    let read = ms(t);
     match loaded {
         Loaded::Map(map) => {
             // cellular: cells and C1/C2 checks, border, reduction
@@ -234,7 +269,7 @@ fn reduce(c: &ChainComplex, times: &mut Times) -> (Vec<usize>, Result<Homology, 
     (c.counts().to_vec(), h)
 }
 
-/// Fills the GUDHI column of the cellular rows of `.facets` inputs (the same simplices),
+/// Fills the GUDHI column of the direct rows of `.facets` inputs (the same simplices),
 /// when `python3` can import `gudhi`; leaves it empty otherwise.
 fn add_gudhi(rows: &mut [Row], files: &[PathBuf]) {
     let facets: Vec<&PathBuf> = files.iter().filter(|f| extension(f) == "facets").collect();
@@ -253,7 +288,7 @@ fn add_gudhi(rows: &mut [Row], files: &[PathBuf]) {
     for line in String::from_utf8_lossy(&out.stdout).lines() {
         let Ok(v) = serde_json::from_str::<Value>(line) else { continue };
         let (Some(file), Some(t)) = (v["file"].as_str(), v["ms"].as_f64()) else { continue };
-        for r in rows.iter_mut().filter(|r| r.input == file && r.route == "cellular") {
+        for r in rows.iter_mut().filter(|r| r.input == file && r.route == "direct") {
             r.gudhi_ms = Some(t);
         }
     }
