@@ -43,7 +43,7 @@ fn json_groups_are_those_of_homology() {
             assert_eq!(r["ratio"], Value::Null);
             let cells = r["cells"].as_array().unwrap();
             assert_eq!(cells.len(), h["betti"].as_array().unwrap().len());
-            for key in ["read", "border", "reduction", "total"] {
+            for key in ["read", "border", "reduction", "smith", "total"] {
                 assert!(r["times_ms"][key].as_f64().unwrap() >= 0.0, "{key}");
             }
         }

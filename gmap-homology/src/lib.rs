@@ -76,7 +76,8 @@ pub use engine::{chain, generators, homology, sparse};
 pub use border::{cellular_complex, gmap_homology, CellularComplex, GMapHomologyError};
 pub use chain::{ChainComplex, ChainError};
 pub use homology::{
-    homology_z, homology_z_bigint, homology_zp, is_prime, Coefficients, Homology, HomologyError, Natural,
+    homology_z, homology_z_bigint, homology_z_staged, homology_zp, is_prime, Coefficients, Homology, HomologyError,
+    Natural, Stages,
 };
 pub use incidence::Incidence;
 pub use precond::{

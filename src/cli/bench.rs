@@ -21,7 +21,7 @@ use std::time::Instant;
 use anyhow::{anyhow, bail, Context, Result};
 use gmap_homology::border::border_from_oriented;
 use gmap_homology::simplices::{face_complex, FaceError};
-use gmap_homology::{check_preconditions, homology_z, simplicial_complex, ChainComplex, Homology};
+use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, ChainComplex, Homology};
 use serde_json::{json, Value};
 
 use super::load::{extension, load, load_simplicial, Loaded, INPUT_EXTENSIONS};
@@ -52,11 +52,16 @@ struct Times {
     cells: Option<f64>,
     border: Option<f64>,
     reduction: Option<f64>,
+    smith: Option<f64>,
 }
 
 impl Times {
     fn total(&self) -> f64 {
-        self.read + self.cells.unwrap_or(0.0) + self.border.unwrap_or(0.0) + self.reduction.unwrap_or(0.0)
+        self.read
+            + self.cells.unwrap_or(0.0)
+            + self.border.unwrap_or(0.0)
+            + self.reduction.unwrap_or(0.0)
+            + self.smith.unwrap_or(0.0)
     }
 }
 
@@ -262,11 +267,12 @@ fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
     Ok(rows)
 }
 
+/// Integer homology of `c`, its sparse reduction and its Smith form timed apart.
 fn reduce(c: &ChainComplex, times: &mut Times) -> (Vec<usize>, Result<Homology, String>) {
-    let t = Instant::now();
-    let h = homology_z(c).map_err(|e| e.to_string());
-    times.reduction = Some(ms(t));
-    (c.counts().to_vec(), h)
+    let (h, stages) = homology_z_staged(c);
+    times.reduction = Some(stages.reduction.as_secs_f64() * 1e3);
+    times.smith = Some(stages.smith.as_secs_f64() * 1e3);
+    (c.counts().to_vec(), h.map_err(|e| e.to_string()))
 }
 
 /// Fills the GUDHI column of the direct rows of `.facets` inputs (the same simplices),
@@ -318,6 +324,7 @@ fn print_json(rows: &[Row]) -> Result<()> {
                     "cells": opt(r.times.cells),
                     "border": opt(r.times.border),
                     "reduction": opt(r.times.reduction),
+                    "smith": opt(r.times.smith),
                     "total": r.times.total(),
                 },
                 "agree": r.agree,
@@ -364,7 +371,7 @@ fn cells_text(r: &Row) -> String {
 
 fn print_csv(rows: &[Row]) -> Result<()> {
     outln!(
-        "input,route,cells,read_ms,cells_ms,border_ms,reduction_ms,total_ms,groups,betti,torsion,agree,gudhi_ms,ratio"
+        "input,route,cells,read_ms,cells_ms,border_ms,reduction_ms,smith_ms,total_ms,groups,betti,torsion,agree,gudhi_ms,ratio"
     )?;
     for r in rows {
         let (betti, torsion) = match &r.result {
@@ -379,6 +386,7 @@ fn print_csv(rows: &[Row]) -> Result<()> {
             num(r.times.cells),
             num(r.times.border),
             num(r.times.reduction),
+            num(r.times.smith),
             num(Some(r.times.total())),
             groups(r),
             betti,
@@ -395,11 +403,11 @@ fn print_csv(rows: &[Row]) -> Result<()> {
 
 fn print_markdown(rows: &[Row]) -> Result<()> {
     let dash = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.2}"));
-    outln!("| input | route | cells | read ms | cells+checks ms | border ms | reduction ms | total ms | homology | agree | GUDHI ms | ratio |")?;
-    outln!("|---|---|---|---:|---:|---:|---:|---:|---|---|---:|---:|")?;
+    outln!("| input | route | cells | read ms | cells+checks ms | border ms | reduction ms | Smith ms | total ms | homology | agree | GUDHI ms | ratio |")?;
+    outln!("|---|---|---|---:|---:|---:|---:|---:|---:|---|---|---:|---:|")?;
     for r in rows {
         outln!(
-            "| {} | {} | {} | {:.2} | {} | {} | {} | {:.2} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.2} | {} | {} | {} | {} |",
             r.input.replace('|', "\\|"),
             r.route,
             cells_text(r),
@@ -407,6 +415,7 @@ fn print_markdown(rows: &[Row]) -> Result<()> {
             dash(r.times.cells),
             dash(r.times.border),
             dash(r.times.reduction),
+            dash(r.times.smith),
             r.times.total(),
             groups(r).replace('|', "\\|"),
             if r.agree { "yes" } else { "NO" },

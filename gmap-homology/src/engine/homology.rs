@@ -324,7 +324,19 @@ fn assemble(
 }
 
 fn integer_homology<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Homology, HomologyError>> {
-    integer_homology_with(ring, c, true)
+    integer_homology_with(ring, c, true, &mut Stages::default())
+}
+
+/// Where [`homology_z_staged`] spent its time: the sparse reduction (the fill-free pass and
+/// the elimination that leaves the cells whose boundaries still interact) and the Smith
+/// normal form of the dense blocks that survive it. A run that overflows `i64` and starts
+/// again with big integers counts both attempts.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stages {
+    /// the sparse reduction
+    pub reduction: std::time::Duration,
+    /// the Smith normal form of what survives the reduction
+    pub smith: std::time::Duration,
 }
 
 /// [`integer_homology`], optionally without the fill-free pass (to test that pass).
@@ -333,10 +345,17 @@ fn integer_homology_with<R: Euclid>(
     ring: &R,
     c: &ChainComplex,
     prereduce: bool,
+    stages: &mut Stages,
 ) -> Option<Result<Homology, HomologyError>> {
-    let s = if prereduce { survivors(ring, c)? } else { survivors_of(ring, c)? };
+    let t = std::time::Instant::now();
+    let s = if prereduce { survivors(ring, c) } else { survivors_of(ring, c) };
+    stages.reduction += t.elapsed();
+    let s = s?;
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();
-    let r = match ranks(ring, s, |block, cols| ring.dense_smith(block, cols)) {
+    let t = std::time::Instant::now();
+    let r = ranks(ring, s, |block, cols| ring.dense_smith(block, cols));
+    stages.smith += t.elapsed();
+    let r = match r {
         Ok(r) => r?,
         Err(e) => return Some(Err(e)),
     };
@@ -374,6 +393,26 @@ pub fn homology_z(c: &ChainComplex) -> Result<Homology, HomologyError> {
         return r;
     }
     integer_homology(&ZBig, c).unwrap_or(Err(HomologyError::Internal("big-integer reduction failed")))
+}
+
+/// [`homology_z`], with the time of its two stages ([`Stages`]): what `gmap bench` reports.
+///
+/// ```
+/// use gmap_homology::{homology_z_staged, ChainComplex, SparseMatrix};
+/// let d1 = SparseMatrix::zeros(1, 1);
+/// let d2 = SparseMatrix::try_from_triplets(1, 1, &[(0, 0, 2)]).unwrap();
+/// let c = ChainComplex::try_new(vec![1, 1, 1], vec![d1, d2]).unwrap();
+/// let (h, _stages) = homology_z_staged(&c);
+/// assert_eq!(h.unwrap().to_string(), "(Z, Z/2, 0)");
+/// ```
+pub fn homology_z_staged(c: &ChainComplex) -> (Result<Homology, HomologyError>, Stages) {
+    let mut stages = Stages::default();
+    let h = match integer_homology_with(&Zi64, c, true, &mut stages) {
+        Some(r) => r,
+        None => integer_homology_with(&ZBig, c, true, &mut stages)
+            .unwrap_or(Err(HomologyError::Internal("big-integer reduction failed"))),
+    };
+    (h, stages)
 }
 
 /// Integer homology computed with big integers throughout (slow; for tests of the fall-back).
@@ -461,8 +500,8 @@ pub(crate) mod tests {
         #[test]
         fn prereduction_keeps_the_groups(tris in proptest::collection::vec((0u32..7, 0u32..7, 0u32..7), 0..18)) {
             let c = random_complex(&tris);
-            let with = integer_homology_with(&Zi64, &c, true).unwrap().unwrap();
-            let without = integer_homology_with(&Zi64, &c, false).unwrap().unwrap();
+            let with = integer_homology_with(&Zi64, &c, true, &mut Stages::default()).unwrap().unwrap();
+            let without = integer_homology_with(&Zi64, &c, false, &mut Stages::default()).unwrap().unwrap();
             proptest::prop_assert_eq!(with, without);
         }
     }
