@@ -115,3 +115,16 @@ fn characteristic_matrix_products() {
     assert_eq!(v["cells"][0].as_array().unwrap().len(), 6);
     assert_eq!(v["boundary"][1].as_array().unwrap().len(), 2);
 }
+
+#[test]
+fn characteristic_beyond_the_dimension_is_an_error() {
+    let lar = Lar::from_map(&examples::fig1_surface());
+    assert_eq!(lar.dim(), 2);
+    assert_eq!(lar.try_characteristic(0).unwrap().rows(), lar.vertices());
+    assert_eq!(lar.try_characteristic(2).unwrap(), lar.characteristic(2));
+    assert_eq!(
+        lar.try_characteristic(3).unwrap_err().to_string(),
+        gmap_homology::lar::LarError::NoSuchDimension { p: 3, n: 2 }.to_string()
+    );
+    assert!(lar.try_characteristic(usize::MAX).is_err());
+}

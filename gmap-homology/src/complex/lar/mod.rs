@@ -280,12 +280,19 @@ impl Lar {
         self.vertices
     }
 
-    /// `M_p` (the identity for p = 0). Panics if `p > n`.
+    /// `M_p` (the identity for p = 0). Panics if `p > n`; [`Lar::try_characteristic`] is
+    /// the fallible form.
+    #[track_caller]
     pub fn characteristic(&self, p: usize) -> SparseMatrix {
-        if p == 0 {
-            SparseMatrix::identity(self.vertices)
-        } else {
-            self.cells[p - 1].clone()
+        self.try_characteristic(p).unwrap_or_else(|e| panic!("Lar::characteristic: {e}"))
+    }
+
+    /// `M_p` (the identity for p = 0), or [`LarError::NoSuchDimension`] when `p > n`.
+    /// O(nnz of `M_p`) for the copy.
+    pub fn try_characteristic(&self, p: usize) -> Result<SparseMatrix, LarError> {
+        match p {
+            0 => Ok(SparseMatrix::identity(self.vertices)),
+            _ => self.cells.get(p - 1).cloned().ok_or(LarError::NoSuchDimension { p, n: self.dim() }),
         }
     }
 
