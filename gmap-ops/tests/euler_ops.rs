@@ -245,3 +245,25 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn an_edge_alone_at_both_ends_is_not_a_dangling_edge() {
+    // a segment in a 2-map folded onto itself by alpha_2: its two ends make one vertex, a
+    // circle (Z, Z); removing the edge would leave nothing (found by euler_attr_props)
+    let mut g = GMap::new(2);
+    let (a, b) = (g.create_dart(), g.create_dart());
+    g.sew(a, b, 0);
+    g.sew(a, b, 2);
+    assert!(!is_removable(&g, a, 1));
+    assert!(matches!(try_remove_cell(&mut g, a, 1), Err(EulerError::WouldChangeTopology { dim: 1, .. })));
+    assert_eq!(g.dart_count(), 2);
+    // an edge doubled by alpha_2 with both ends free of anything else: a whole component
+    let mut g = GMap::new(2);
+    let d: Vec<DartId> = (0..4).map(|_| g.create_dart()).collect();
+    g.sew(d[0], d[1], 0);
+    g.sew(d[2], d[3], 0);
+    g.sew(d[0], d[2], 2);
+    assert!(!is_removable(&g, d[0], 1));
+    assert!(try_remove_cell(&mut g, d[0], 1).is_err());
+    assert_eq!(g.dart_count(), 4);
+}

@@ -117,10 +117,14 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
         // a dangling edge: at one of its ends the vertex is that end alone (alpha_1 keeps
         // the end), a vertex of degree one. Asking only that the vertex be made of the edge's
         // darts would take the loop of a one-vertex, one-edge map (L(1,0), L(2,1)) for one.
+        // The other end must be a vertex with more than the edge at it: when both ends
+        // are alone (an isolated edge, or an edge folded onto itself by alpha_2 whose two
+        // ends make one vertex), removing the edge would remove its whole component.
         let above = AlphaSet::above(1, n);
+        let alone = |x: DartId| g.cell(x, 0).len() == g.orbit(x, above).len();
         for &x in &cell {
             // the end <alpha_2..alpha_n>(x) lies inside the vertex: equal sizes, equal sets
-            if g.cell(x, 0).len() == g.orbit(x, above).len() {
+            if alone(x) && !alone(g.alpha(x, 0)) {
                 return Ok(Collapse::Dangling);
             }
         }
