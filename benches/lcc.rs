@@ -36,10 +36,6 @@ type Labelled = GMap<((), (), (), Cells<u32>)>;
 /// prototype (from its geometry) names the same dart in every hexahedron.
 type Path = Vec<usize>;
 
-fn follow<A: Attributes>(g: &GMap<A>, d: DartId, path: &[usize]) -> DartId {
-    path.iter().fold(d, |x, &i| g.alpha(x, i))
-}
-
 /// The unit cube `[0,1]³` with a point on every corner: the builders' square (a 4-gon with
 /// its corners on the unit circle) turned by 45° and scaled onto `[0,1]²`, extruded along z.
 fn unit_cube() -> DenseMap {
@@ -95,7 +91,7 @@ fn sew_paths(cube: &DenseMap) -> SewPaths {
         let (next, third) = ((axis + 1) % 3, (axis + 2) % 3);
         let hit = paths.iter().find(|(d, _)| {
             let (a, b) = (point(*d), point(proto.alpha(*d, 0)));
-            let c = point(follow(&proto, *d, &[0, 1, 0]));
+            let c = point(proto.alpha_word(*d, &[0, 1, 0]));
             a[axis] == side
                 && a[next] == 0.
                 && a[third] == 0.
@@ -155,8 +151,8 @@ fn grid<A: Attributes>(
                 let i = (z * K + y) * K + x;
                 for (axis, c) in [x, y, z].into_iter().enumerate() {
                     if c + 1 < K {
-                        let a = follow(&g, hex[i], &paths.upper[axis]);
-                        let b = follow(&g, hex[i + step[axis]], &paths.lower[axis]);
+                        let a = g.alpha_word(hex[i], &paths.upper[axis]);
+                        let b = g.alpha_word(hex[i + step[axis]], &paths.lower[axis]);
                         g.sew(a, b, 3);
                     }
                 }

@@ -17,7 +17,7 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     let d = darts[0];
     // alpha_1 alpha_0 alpha_1 alpha_0 walks back round the corner of d to the far end of the
     // opposite side: sewing there glues corner 0 to corner 2 and corner 1 to corner 3
-    let opposite = [1, 0, 1, 0].iter().fold(d, |x, &i| g.alpha(x, i));
+    let opposite = g.alpha_word(d, &[1, 0, 1, 0]);
     g.try_sew(d, opposite, 2)?;
     writeln!(out, "{}", g.characteristics())?;
     Ok(())

@@ -15,37 +15,37 @@
 use std::error::Error;
 use std::io::Write;
 
-use gmap::core::{DartId, GMap};
+use gmap::core::GMap;
 use gmap::ops::build;
 use gmap::ops::euler::ops::{try_insert_edge, try_remove_cell, try_split_cell};
-
-/// `alpha_{w_k} ∘ … ∘ alpha_{w_1} (d)`: the word applied from its first letter.
-fn walk(g: &GMap, d: DartId, word: &[usize]) -> DartId {
-    word.iter().fold(d, |x, &i| g.alpha(x, i))
-}
 
 /// Runs the example and writes its two lines to `out`.
 pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     let mut g = GMap::new(3);
     let d1 = g.try_append(&build::cube(3)?)?[0];
     // a diagonal across the face of d1, from its corner to the opposite corner
-    let far = walk(&g, d1, &[0, 1, 0]);
+    let far = g.alpha_word(d1, &[0, 1, 0]);
     try_insert_edge(&mut g, d1, far)?;
     // the same across the opposite face, from the corner above d1's
-    let d2 = walk(&g, d1, &[2, 1, 0, 1, 2]);
-    let far = walk(&g, d2, &[0, 1, 0]);
+    let d2 = g.alpha_word(d1, &[2, 1, 0, 1, 2]);
+    let far = g.alpha_word(d2, &[0, 1, 0]);
     try_insert_edge(&mut g, d2, far)?;
     // one dart per edge of the closed path: the two diagonals and the two edges joining
     // their ends, all in faces on the same side of the cut
-    let path = [walk(&g, d1, &[1]), walk(&g, d1, &[1, 0, 1, 2, 1]), walk(&g, d2, &[1, 0]), walk(&g, d2, &[2, 1])];
+    let path = [
+        g.alpha_word(d1, &[1]),
+        g.alpha_word(d1, &[1, 0, 1, 2, 1]),
+        g.alpha_word(d2, &[1, 0]),
+        g.alpha_word(d2, &[2, 1]),
+    ];
     try_split_cell(&mut g, &path, 3)?;
-    let d3 = walk(&g, path[0], &[2]);
+    let d3 = g.alpha_word(path[0], &[2]);
     writeln!(out, "{}", g.characteristics())?;
 
     try_remove_cell(&mut g, d3, 2)?;
-    let diagonal = walk(&g, d1, &[1]);
+    let diagonal = g.alpha_word(d1, &[1]);
     try_remove_cell(&mut g, diagonal, 1)?;
-    let diagonal = walk(&g, d2, &[1]);
+    let diagonal = g.alpha_word(d2, &[1]);
     try_remove_cell(&mut g, diagonal, 1)?;
     writeln!(out, "{}", g.characteristics())?;
     Ok(())

@@ -17,13 +17,8 @@
 use std::error::Error;
 use std::io::Write;
 
-use gmap::core::{DartId, GMap};
+use gmap::core::GMap;
 use gmap::ops::euler::ops::{try_insert_edge, try_split_cell};
-
-/// `alpha_{w_k} ∘ … ∘ alpha_{w_1} (d)`: the word applied from its first letter.
-fn walk(g: &GMap, d: DartId, word: &[usize]) -> DartId {
-    word.iter().fold(d, |x, &i| g.alpha(x, i))
-}
 
 /// CGAL's `next`, `previous`, `opposite<2>` and `other_orientation` as words.
 const NEXT: [usize; 2] = [0, 1];
@@ -71,28 +66,28 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     ])?;
 
     // the face of d1 against the face of the second hexahedron opposite d2's
-    let e = walk(&g, d2, &word(&[&OPPOSITE_2, &NEXT, &NEXT, &OPPOSITE_2, &OTHER_ORIENTATION]));
+    let e = g.alpha_word(d2, &word(&[&OPPOSITE_2, &NEXT, &NEXT, &OPPOSITE_2, &OTHER_ORIENTATION]));
     g.try_sew(d1, e, 3)?;
     // the face next to it against a face of the third hexahedron
-    let f1 = walk(&g, d1, &word(&[&NEXT, &OPPOSITE_2]));
-    let f3 = walk(&g, d3, &word(&[&PREVIOUS, &OPPOSITE_2, &OTHER_ORIENTATION]));
+    let f1 = g.alpha_word(d1, &word(&[&NEXT, &OPPOSITE_2]));
+    let f3 = g.alpha_word(d3, &word(&[&PREVIOUS, &OPPOSITE_2, &OTHER_ORIENTATION]));
     g.try_sew(f1, f3, 3)?;
 
     // an edge across the face of d1 (shared with the second hexahedron: both sides split)
-    let from = walk(&g, d1, &NEXT);
-    let to = walk(&g, d1, &word(&[&PREVIOUS, &[1]]));
+    let from = g.alpha_word(d1, &NEXT);
+    let to = g.alpha_word(d1, &word(&[&PREVIOUS, &[1]]));
     try_insert_edge(&mut g, from, to)?;
     // an edge across the opposite face of the first hexahedron (3-free)
-    let d2 = walk(&g, d1, &word(&[&OPPOSITE_2, &NEXT, &NEXT, &OPPOSITE_2]));
-    let to = walk(&g, d2, &word(&[&NEXT, &NEXT, &[1]]));
+    let d2 = g.alpha_word(d1, &word(&[&OPPOSITE_2, &NEXT, &NEXT, &OPPOSITE_2]));
+    let to = g.alpha_word(d2, &word(&[&NEXT, &NEXT, &[1]]));
     try_insert_edge(&mut g, d2, to)?;
 
     // a face along the two new edges and two edges of the hexahedron joining their ends
     let path = [
-        walk(&g, d1, &NEXT),
-        walk(&g, d1, &word(&[&PREVIOUS, &OPPOSITE_2, &NEXT])),
-        walk(&g, d2, &PREVIOUS),
-        walk(&g, d2, &word(&[&OPPOSITE_2, &NEXT])),
+        g.alpha_word(d1, &NEXT),
+        g.alpha_word(d1, &word(&[&PREVIOUS, &OPPOSITE_2, &NEXT])),
+        g.alpha_word(d2, &PREVIOUS),
+        g.alpha_word(d2, &word(&[&OPPOSITE_2, &NEXT])),
     ];
     try_split_cell(&mut g, &path, 3)?;
 

@@ -12,14 +12,9 @@
 use std::error::Error;
 use std::io::Write;
 
-use gmap::core::{DartId, GMap};
+use gmap::core::GMap;
 use gmap::ops::build;
 use gmap::ops::euler::ops::{try_insert_edge, try_insert_vertex, try_remove_cell};
-
-/// `alpha_{w_k} ∘ … ∘ alpha_{w_1} (d)`: the word applied from its first letter.
-fn walk(g: &GMap, d: DartId, word: &[usize]) -> DartId {
-    word.iter().fold(d, |x, &i| g.alpha(x, i))
-}
 
 /// Runs the example and writes its five lines to `out`.
 pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
@@ -39,7 +34,7 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
 
     // an edge from the new vertex to the corner of d1's face opposite d1's edge; the new
     // edge's dart at d3's corner is alpha_1(d3)
-    let corner = walk(&g, d1, &[1, 0, 1]);
+    let corner = g.alpha_word(d1, &[1, 0, 1]);
     try_insert_edge(&mut g, d3, corner)?;
     let d4 = g.alpha(d3, 1);
     writeln!(out, "{}", g.characteristics())?;

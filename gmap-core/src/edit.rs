@@ -356,6 +356,22 @@ impl<A: Attributes> GMap<A> {
         Ok(self.darts[d].alpha[i])
     }
 
+    /// The dart reached from `d` by applying the involutions of `word` in order, first
+    /// letter first: `alpha_word(d, &[0, 1])` is `alpha_1(alpha_0(d))` (CGAL's
+    /// `alpha<0, 1>(d)`). O(|word|).
+    ///
+    /// # Panics
+    /// Like [`GMap::alpha`]; [`GMap::try_alpha_word`] returns the error.
+    #[track_caller]
+    pub fn alpha_word(&self, d: DartId, word: &[usize]) -> DartId {
+        word.iter().fold(d, |x, &i| self.alpha(x, i))
+    }
+
+    /// [`GMap::alpha_word`], or an error for a stale handle or a letter above n.
+    pub fn try_alpha_word(&self, d: DartId, word: &[usize]) -> Result<DartId, SewError> {
+        word.iter().try_fold(d, |x, &i| self.try_alpha(x, i))
+    }
+
     /// Whether `d` is i-free.
     ///
     /// # Panics
@@ -1126,6 +1142,19 @@ mod tests {
     use crate::examples::add_simplex;
 
     type Full = GMap<(Cells<u64>, Cells<u64>, Cells<u64>, Cells<u64>)>;
+
+    #[test]
+    fn alpha_word_applies_its_letters_first_to_last() {
+        let mut g: GMap = GMap::new(2);
+        let d: Vec<DartId> = (0..3).map(|_| g.create_dart()).collect();
+        g.sew(d[0], d[1], 0);
+        g.sew(d[1], d[2], 1);
+        assert_eq!(g.alpha_word(d[0], &[0, 1]), d[2]);
+        assert_eq!(g.alpha_word(d[0], &[1, 0]), d[1]);
+        assert_eq!(g.alpha_word(d[0], &[]), d[0]);
+        assert_eq!(g.try_alpha_word(d[0], &[0, 1, 1]), Ok(d[1]));
+        assert!(g.try_alpha_word(d[0], &[0, 3]).is_err());
+    }
 
     /// Every hook call as `(merge?, dimension, kept, other)`, in order.
     type Log = Arc<Mutex<Vec<(bool, usize, u64, u64)>>>;

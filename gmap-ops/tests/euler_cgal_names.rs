@@ -8,11 +8,6 @@ use gmap_ops::euler::ops::*;
 /// A 3-map with a small label on its edges, faces and volumes.
 type Labelled = GMap<((), Cells<u8>, Cells<u8>, Cells<u8>)>;
 
-/// `alpha_{w_k} ∘ … ∘ alpha_{w_1} (d)`.
-fn walk<A: gmap_core::Attributes>(g: &GMap<A>, d: DartId, word: &[usize]) -> DartId {
-    word.iter().fold(d, |x, &i| g.alpha(x, i))
-}
-
 /// Darts, cells of every dimension, components and validity.
 fn summary<A: gmap_core::Attributes>(g: &GMap<A>) -> (usize, Vec<usize>, usize, bool) {
     let c = g.characteristics();
@@ -24,7 +19,7 @@ fn an_edge_between_two_faces_of_one_cube() {
     let mut g = GMap::new(3);
     let d = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     // the face opposite to d's: across the cube through the edge at d
-    let opposite = walk(&g, d, &[1, 0, 1, 2]);
+    let opposite = g.alpha_word(d, &[1, 0, 1, 2]);
     assert!(!g.cell(d, 2).contains(&opposite));
     assert!(can_insert_edge_between_faces(&g, d, opposite));
     let r = try_insert_edge_between_faces(&mut g, d, opposite).unwrap();
@@ -46,7 +41,7 @@ fn an_edge_between_two_volumes_merges_them() {
     g.sew(a, b, 3);
     g.set_attribute::<3>(a, 1);
     g.set_attribute::<3>(b, 2);
-    let (fa, fb) = (walk(&g, a, &[2]), walk(&g, b, &[2]));
+    let (fa, fb) = (g.alpha_word(a, &[2]), g.alpha_word(b, &[2]));
     g.set_attribute::<2>(fa, 10);
     g.set_attribute::<2>(fb, 20);
     assert_eq!(summary(&g).1, vec![12, 20, 11, 2]);
@@ -89,7 +84,7 @@ fn edges_between_faces_are_refused_with_the_dart() {
     let inner = *d.iter().find(|&&x| !g.is_free(x, 3)).unwrap();
     let outer = *d.iter().find(|&&x| g.is_free(x, 3)).unwrap();
     // the same face
-    let same = walk(&g, outer, &[0, 1]);
+    let same = g.alpha_word(outer, &[0, 1]);
     assert_eq!(
         try_insert_edge_between_faces(&mut g, outer, same),
         Err(EulerError::Misplaced { dart: same, what: "a face other than the face of d1" })
@@ -119,21 +114,26 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     let d1 = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     g.set_attribute::<3>(d1, 7);
     // CGAL's gmap_3_operations: two diagonals in opposite faces, a face along the path
-    assert!(is_insertable_cell_1_in_cell_2(&g, d1, walk(&g, d1, &[0, 1, 0])));
-    let far = walk(&g, d1, &[0, 1, 0]);
+    assert!(is_insertable_cell_1_in_cell_2(&g, d1, g.alpha_word(d1, &[0, 1, 0])));
+    let far = g.alpha_word(d1, &[0, 1, 0]);
     let e1 = insert_cell_1_in_cell_2(&mut g, d1, far).unwrap();
     assert_eq!((g.alpha(e1, 1), g.cell(e1, 1).len(), g.attribute::<1>(e1)), (d1, 4, None));
-    let d2 = walk(&g, d1, &[2, 1, 0, 1, 2]);
-    let far = walk(&g, d2, &[0, 1, 0]);
+    let d2 = g.alpha_word(d1, &[2, 1, 0, 1, 2]);
+    let far = g.alpha_word(d2, &[0, 1, 0]);
     insert_cell_1_in_cell_2(&mut g, d2, far).unwrap();
-    let path = [walk(&g, d1, &[1]), walk(&g, d1, &[1, 0, 1, 2, 1]), walk(&g, d2, &[1, 0]), walk(&g, d2, &[2, 1])];
+    let path = [
+        g.alpha_word(d1, &[1]),
+        g.alpha_word(d1, &[1, 0, 1, 2, 1]),
+        g.alpha_word(d2, &[1, 0]),
+        g.alpha_word(d2, &[2, 1]),
+    ];
     assert!(is_insertable_cell_2_in_cell_3(&g, &path));
     let f = insert_cell_2_in_cell_3(&mut g, &path).unwrap();
     assert_eq!(g.alpha(f, 2), path[0]);
     assert_eq!((g.cell(f, 2).len(), g.attribute::<2>(f)), (16, None));
     assert_eq!(summary(&g), (72, vec![8, 14, 9, 2], 1, true));
     // the volume split: both halves carry 7
-    assert_eq!((g.attribute_count::<3>(), g.attribute::<3>(walk(&g, f, &[3]))), (2, Some(&7)));
+    assert_eq!((g.attribute_count::<3>(), g.attribute::<3>(g.alpha_word(f, &[3]))), (2, Some(&7)));
     // a vertex in an edge, a dangling edge with its point
     assert!(is_insertable_cell_0_in_cell_1(&g, d1));
     let v = insert_cell_0_in_cell_1(&mut g, d1).unwrap();
@@ -141,7 +141,7 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     assert!(is_insertable_dangling_cell_1_in_cell_2(&g, v));
     let tip = insert_dangling_cell_1_in_cell_2(&mut g, v, Some([1.0, 2.0, 3.0])).unwrap();
     assert_eq!((g.point(tip), g.cell(tip, 0).len()), (Some([1.0, 2.0, 3.0]), 2));
-    assert_eq!(g.alpha(walk(&g, tip, &[0]), 1), v);
+    assert_eq!(g.alpha(g.alpha_word(tip, &[0]), 1), v);
     assert_eq!(summary(&g), (72 + 4 + 4, vec![10, 16, 9, 2], 1, true));
     // CGAL's remove_cell under the same name (contract_cell refuses here: the cube's
     // boundary is 3-free, and contracting an edge on a boundary would pinch it)
