@@ -89,22 +89,24 @@ fn live<A: Attributes>(g: &GMap<A>, d: DartId) -> Result<(), EulerError> {
     }
 }
 
-/// Number of distinct k-cells (every k) meeting a set of live darts. O(total size of
-/// those cells · n).
+/// Number of distinct k-cells (every k) meeting a set of darts (dead ones skipped).
+/// O(total size of those cells · n).
 fn local_counts<A: Attributes>(g: &GMap<A>, darts: &[DartId]) -> Vec<i64> {
-    let n = g.dim();
-    let mut out = vec![0i64; n + 1];
-    for (k, slot) in out.iter_mut().enumerate() {
-        let mut seen: HashSet<DartId> = HashSet::default();
-        for &d in darts {
-            if !g.contains(d) || seen.contains(&d) {
-                continue;
-            }
-            *slot += 1;
-            seen.extend(g.cell(d, k));
+    (0..=g.dim()).map(|k| distinct_cells(g, darts.iter().copied(), k) as i64).collect()
+}
+
+/// Number of distinct k-cells meeting `darts` (dead ones skipped). O(total size of those
+/// cells · n).
+fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<Item = DartId>, k: usize) -> usize {
+    let mut seen: HashSet<DartId> = HashSet::default();
+    let mut count = 0;
+    for x in darts {
+        if g.contains(x) && seen.insert(x) {
+            count += 1;
+            seen.extend(g.cell(x, k));
         }
     }
-    out
+    count
 }
 
 /// In debug builds, panics when `g` is not a valid G-map (BO Def. 1) or when a cell's darts

@@ -10,7 +10,7 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::{Attributes, DartId, GMap, MapView, Point};
 
-use super::EulerError;
+use super::{distinct_cells, EulerError};
 use crate::euler::vector::{cell_letter, EpVector, EulerOp};
 
 /// What [`try_star_cell`] did: where the new vertex is and the change of cells.
@@ -91,19 +91,6 @@ fn split_order<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> Vec<DartId> {
         }
     }
     out
-}
-
-/// Number of distinct k-cells meeting `darts`. O(total size of those cells · n).
-fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<Item = DartId>, k: usize) -> usize {
-    let mut seen: HashSet<DartId> = HashSet::default();
-    let mut count = 0;
-    for x in darts {
-        if seen.insert(x) {
-            count += 1;
-            seen.extend(g.cell(x, k));
-        }
-    }
-    count
 }
 
 /// Stars the i-cell of `d` (stellar subdivision): a new vertex inside the cell, joined by
