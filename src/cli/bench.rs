@@ -18,13 +18,12 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{bail, Context, Result};
 use gmap_homology::border::border_from_oriented;
-use gmap_homology::simplices::{face_complex, FaceError};
 use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, ChainComplex, Homology};
 use serde_json::{json, Value};
 
-use super::load::{extension, load, load_simplicial, Loaded, INPUT_EXTENSIONS};
+use super::load::{extension, face_complex_within, load, load_simplicial, Loaded, INPUT_EXTENSIONS};
 
 /// The output shape of `gmap bench`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -171,13 +170,8 @@ fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
         let t = Instant::now();
         let sc = load_simplicial(path)?.with_context(|| format!("{input}: not a simplicial complex"))?;
         let mut times = Times { read: ms(t), ..Times::default() };
-        let facets = sc.all_facets();
-        let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
         let t = Instant::now();
-        let fc = face_complex(&facets, limit).map_err(|e| match e {
-            FaceError::TooManyFaces { .. } => anyhow!("{input}: {e}; raise the limit with --max-darts N"),
-            e => anyhow!("{input}: {e}"),
-        })?;
+        let fc = face_complex_within(&sc.all_facets(), sc.dim(), max_darts, &input)?;
         times.border = Some(ms(t));
         let (cells, r) = reduce(&fc.chain, &mut times);
         rows.push(row("direct", cells, times, r));

@@ -11,7 +11,7 @@ use gmap_homology::{
 };
 use serde_json::json;
 
-use gmap_homology::simplices::{face_complex, face_estimate, FaceComplex, FaceError};
+use gmap_homology::simplices::{face_estimate, FaceComplex};
 use gmap_ops::import::SimplicialComplex;
 
 use super::load::{load, Loaded};
@@ -186,16 +186,12 @@ fn simplicial(map: &DenseMap) -> Named<'static> {
 /// `--max-darts` (default: what the available memory holds).
 fn direct(sc: &SimplicialComplex, o: &Options, file: &str) -> Result<(usize, Named<'static>)> {
     let facets = sc.all_facets();
-    let limit = o.max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
     progress(&format!(
         "enumerating the faces of {} facets (at most {})",
         facets.len(),
         face_estimate(facets.iter().copied()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
     ));
-    let fc = face_complex(&facets, limit).map_err(|e| match e {
-        FaceError::TooManyFaces { .. } => anyhow::anyhow!("{file}: {e}; raise the limit with --max-darts N"),
-        e => anyhow::anyhow!("{file}: {e}"),
-    })?;
+    let fc = super::load::face_complex_within(&facets, sc.dim(), o.max_darts, file)?;
     let FaceComplex { chain, vertices, faces } = fc;
     let dim = chain.dim();
     let name = Box::new(move |k: usize, j: u32| {

@@ -266,9 +266,7 @@ fn simplicial_run(file: &Path, json: bool, max_darts: Option<u64>, why: String) 
     let sc = super::load::load_simplicial(file)?
         .ok_or_else(|| anyhow::anyhow!("{}: not a simplicial complex", file.display()))?;
     let facets = sc.all_facets();
-    let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
-    let fc = gmap_homology::simplices::face_complex(&facets, limit)
-        .map_err(|e| anyhow::anyhow!("{}: {e}; raise the limit with --max-darts N", file.display()))?;
+    let fc = super::load::face_complex_within(&facets, sc.dim(), max_darts, &file.display().to_string())?;
     // components: union-find over the vertices, joined along each facet
     let mut parent: Vec<u32> = (0..fc.vertices.len() as u32).collect();
     fn root(p: &mut [u32], mut x: u32) -> u32 {
