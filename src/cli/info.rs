@@ -267,24 +267,15 @@ fn simplicial_run(file: &Path, json: bool, max_darts: Option<u64>, why: String) 
         .ok_or_else(|| anyhow::anyhow!("{}: not a simplicial complex", file.display()))?;
     let facets = sc.all_facets();
     let fc = super::load::face_complex_within(&facets, sc.dim(), max_darts, &file.display().to_string())?;
-    // components: union-find over the vertices, joined along each facet
-    let mut parent: Vec<u32> = (0..fc.vertices.len() as u32).collect();
-    fn root(p: &mut [u32], mut x: u32) -> u32 {
-        while p[x as usize] != x {
-            p[x as usize] = p[p[x as usize] as usize];
-            x = p[x as usize];
-        }
-        x
-    }
+    // components: the vertices' classes, joined along each facet
+    let mut classes = gmap_core::union_find::UnionFind::new(fc.vertices.len());
+    let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;
     for f in &facets {
-        let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;
-        let a = root(&mut parent, idx(&f[0]));
         for v in &f[1..] {
-            let b = root(&mut parent, idx(v));
-            parent[b as usize] = a;
+            classes.union(idx(&f[0]), idx(v));
         }
     }
-    let components = (0..parent.len() as u32).filter(|&x| root(&mut parent, x) == x).count();
+    let components = (0..fc.vertices.len() as u32).filter(|&x| classes.find(x) == x).count();
     let info = SimplicialInfo {
         dimension: fc.dim(),
         darts: 0,
