@@ -27,7 +27,6 @@
 //! assert_eq!((0..3).map(|j| fc.labels(1, j)).collect::<Vec<_>>(), [[1, 2], [2, 3], [1, 3]]);
 //! ```
 
-use rustc_hash::FxHashMap;
 use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
@@ -99,37 +98,122 @@ impl FaceComplex {
     }
 }
 
+/// An odd constant near `2^64 / φ`: multiplying by it spreads consecutive keys over the
+/// high bits (Fibonacci hashing).
+const HASH_MULTIPLIER: u64 = 0x9e37_79b9_7f4a_7c15;
+
+/// The numbers of the faces of one size, by key: an open-addressing table (linear probing)
+/// of face numbers, the keys themselves held in the caller's vector in numbering order, so a
+/// slot is 4 bytes. Kept at most half full.
+struct FaceIndex {
+    /// a face number per slot, [`FaceIndex::EMPTY`] for none; the length is a power of two
+    slots: Vec<u32>,
+    /// `64 - log2(slots.len())`: a hash's high bits pick the slot
+    shift: u32,
+}
+
+impl FaceIndex {
+    const EMPTY: u32 = u32::MAX;
+
+    fn new() -> Self {
+        FaceIndex { slots: vec![Self::EMPTY; 16], shift: 60 }
+    }
+
+    /// Empties the table, sized for about `n` keys (the memory is reused when it suffices).
+    fn reset(&mut self, n: usize) {
+        let want = (2 * n).next_power_of_two().max(16);
+        if want > self.slots.len() {
+            self.slots = vec![Self::EMPTY; want];
+        } else {
+            self.slots.fill(Self::EMPTY);
+        }
+        self.shift = 64 - self.slots.len().trailing_zeros();
+    }
+
+    /// The number of `key` among `keys` (whose entries are exactly the table's), pushing it
+    /// as a new face when absent. Expected O(1).
+    #[inline]
+    fn find_or_insert<K: FaceKey>(&mut self, key: K, keys: &mut Vec<K>) -> u32 {
+        let mask = self.slots.len() - 1;
+        let mut i = (key.hash64() >> self.shift) as usize;
+        loop {
+            let s = self.slots[i];
+            if s == Self::EMPTY {
+                let n = keys.len() as u32;
+                self.slots[i] = n;
+                keys.push(key);
+                if 2 * keys.len() > self.slots.len() {
+                    self.grow(keys);
+                }
+                return n;
+            }
+            if keys[s as usize] == key {
+                return s;
+            }
+            i = (i + 1) & mask;
+        }
+    }
+
+    /// Doubles the table and re-enters every key.
+    fn grow<K: FaceKey>(&mut self, keys: &[K]) {
+        self.slots = vec![Self::EMPTY; 2 * self.slots.len()];
+        self.shift -= 1;
+        let mask = self.slots.len() - 1;
+        for (n, key) in keys.iter().enumerate() {
+            let mut i = (key.hash64() >> self.shift) as usize;
+            while self.slots[i] != Self::EMPTY {
+                i = (i + 1) & mask;
+            }
+            self.slots[i] = n as u32;
+        }
+    }
+}
+
 /// A face as a hash key: its vertex indices (increasing) packed `bits` per vertex with the
 /// first vertex in the high bits (`u64`, `u128`), or the list itself when no integer holds it.
-trait FaceKey: Clone + Eq + std::hash::Hash {
+trait FaceKey: Clone + Eq {
+    /// A 64-bit hash of the key (its high bits are used).
+    fn hash64(&self) -> u64;
     /// The key of `face` (increasing vertex indices).
     fn pack(face: &[u32], bits: u32) -> Self;
-    /// The key of the face of `size` vertices without the vertex at position `p` (from 0,
-    /// the first and smallest vertex).
-    fn without(&self, p: usize, size: usize, bits: u32) -> Self;
-    /// Appends the `size` vertex indices of the key to `out`, increasing.
-    fn unpack_into(&self, size: usize, bits: u32, out: &mut Vec<u32>);
+    /// Calls `f(p, face)` for each position `p` of the key's `size` vertices (from 0, the
+    /// first and smallest vertex), with the key of the face without that vertex.
+    fn for_each_face(&self, size: usize, bits: u32, f: impl FnMut(usize, Self));
+    /// Writes the vertex indices of the key to `out` (as many as `out` holds), increasing.
+    fn unpack_into(&self, bits: u32, out: &mut [u32]);
 }
 
 macro_rules! packed_key {
     ($t:ty) => {
         impl FaceKey for $t {
+            fn hash64(&self) -> u64 {
+                // fold to 64 bits, then a multiplicative hash whose high bits mix all of them
+                let x = *self as u128;
+                ((x >> 64) as u64 ^ x as u64).wrapping_mul(HASH_MULTIPLIER)
+            }
+
             fn pack(face: &[u32], bits: u32) -> Self {
                 face.iter().fold(0, |acc: $t, &v| (acc << bits) | <$t>::from(v))
             }
 
-            fn without(&self, p: usize, size: usize, bits: u32) -> Self {
-                // the vertices after position p sit in the low (size - 1 - p) * bits bits
-                let low_bits = (size - 1 - p) as u32 * bits;
-                let low = *self & <$t>::MAX.checked_shr(<$t>::BITS - low_bits).unwrap_or(0);
-                let high = self.checked_shr(low_bits + bits).unwrap_or(0);
-                high.checked_shl(low_bits).unwrap_or(0) | low
+            fn for_each_face(&self, size: usize, bits: u32, mut f: impl FnMut(usize, Self)) {
+                // dropping the vertex at p keeps the bits below its field and moves those
+                // above it down by one field: `(key & low) | ((key >> bits) & !low)`, where
+                // `low` covers the (size - 1 - p) fields after p
+                let shifted = *self >> bits;
+                let mut low = <$t>::MAX.checked_shr(<$t>::BITS - (size as u32 - 1) * bits).unwrap_or(0);
+                for p in 0..size {
+                    f(p, (*self & low) | (shifted & !low));
+                    low >>= bits;
+                }
             }
 
-            fn unpack_into(&self, size: usize, bits: u32, out: &mut Vec<u32>) {
+            fn unpack_into(&self, bits: u32, out: &mut [u32]) {
                 let mask = <$t>::MAX >> (<$t>::BITS - bits);
-                for i in (0..size as u32).rev() {
-                    out.push(((*self >> (bits * i)) & mask) as u32);
+                let mut key = *self;
+                for slot in out.iter_mut().rev() {
+                    *slot = (key & mask) as u32;
+                    key = key.checked_shr(bits).unwrap_or(0);
                 }
             }
         }
@@ -139,94 +223,117 @@ packed_key!(u64);
 packed_key!(u128);
 
 impl FaceKey for Box<[u32]> {
+    fn hash64(&self) -> u64 {
+        self.iter().fold(0u64, |h, &v| (h.rotate_left(5) ^ u64::from(v)).wrapping_mul(HASH_MULTIPLIER))
+    }
+
     fn pack(face: &[u32], _: u32) -> Self {
         face.into()
     }
 
-    fn without(&self, p: usize, _: usize, _: u32) -> Self {
-        self.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect()
+    fn for_each_face(&self, size: usize, _: u32, mut f: impl FnMut(usize, Self)) {
+        for p in 0..size {
+            f(p, self.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect());
+        }
     }
 
-    fn unpack_into(&self, _: usize, _: u32, out: &mut Vec<u32>) {
-        out.extend_from_slice(self);
+    fn unpack_into(&self, _: u32, out: &mut [u32]) {
+        out.copy_from_slice(self);
     }
 }
 
-/// The chain complex and the faces (flat, as in [`FaceComplex`]) of facets given as increasing vertex indices, `top` the
-/// largest facet size (module docs). One pass per dimension, from the top down: the cells of
-/// size `s` are the faces found from the cells of size `s + 1` followed by the facets of size
-/// `s` not seen yet; dropping each vertex of each of them in turn gives its boundary column
-/// and numbers the new faces of size `s - 1` on first sight.
+/// Refuses `n` faces of `size` vertices when face numbers (`u32`, one value kept for "none")
+/// might not hold them.
+fn fits_u32(n: usize, size: usize) -> Result<(), FaceError> {
+    if n < u32::MAX as usize {
+        Ok(())
+    } else {
+        Err(FaceError::Matrix(format!("up to {n} faces of {size} vertices, past u32 indices")))
+    }
+}
+
+/// The chain complex and the faces (flat, as in [`FaceComplex`]) of facets grouped by size
+/// (`groups[s]`: the facets of `s` vertices, `s` increasing vertex indices each, end to end),
+/// `top` the largest size (module docs). One pass per dimension, from the top down: the cells
+/// of size `s` are the faces found from the cells of size `s + 1` followed by the facets of
+/// size `s` not seen yet; dropping each vertex of each of them in turn gives its boundary
+/// column and numbers the new faces of size `s - 1` on first sight.
 fn enumerate<K: FaceKey>(
-    local: &[Vec<u32>],
+    groups: &[Vec<u32>],
     top: usize,
     bits: u32,
 ) -> Result<(ChainComplex, Vec<Vec<u32>>), FaceError> {
-    let mut by_size: Vec<Vec<&[u32]>> = vec![Vec::new(); top + 1];
-    for g in local {
-        by_size[g.len()].push(g);
-    }
-    let mut index: FxHashMap<K, u32> = FxHashMap::default();
-    index.reserve(by_size[top].len());
+    // the faces of the current size by key (to join the facets of that size), and a second
+    // table for the faces one size down: the two swap at each step, so their memory is reused
+    let mut index = FaceIndex::new();
+    let mut below = FaceIndex::new();
+    // the cells of the current size and the faces found one size down, in order: they swap too
+    let mut cells: Vec<K> = Vec::new();
     let mut keys: Vec<K> = Vec::new();
     let mut columns = Vec::with_capacity(top - 1);
     let mut flat: Vec<Vec<u32>> = vec![Vec::new(); top];
     let mut counts = vec![0; top];
-    let mut column: Vec<(u32, i64)> = Vec::with_capacity(top);
+    // cofaces per face, to size the table of the faces one size down: a ridge of the top
+    // cells lies in two of them inside a pseudo-manifold and in one on its boundary; lower
+    // faces have more cofaces, so the ratio a step finds overestimates the next step's faces
+    // (the table grows if an estimate falls short)
+    let mut share = (3.0, 2.0);
     for size in (1..=top).rev() {
-        for g in &by_size[size] {
-            let key = K::pack(g, bits);
-            if !index.contains_key(&key) {
-                index.insert(key.clone(), keys.len() as u32);
-                keys.push(key);
+        let joining = groups[size].len() / size;
+        if joining > 0 {
+            fits_u32(keys.len() + joining, size)?;
+            if size == top {
+                index.reset(joining);
+            }
+            for g in groups[size].chunks_exact(size) {
+                index.find_or_insert(K::pack(g, bits), &mut keys);
             }
         }
-        let cells = std::mem::take(&mut keys);
+        std::mem::swap(&mut cells, &mut keys);
+        keys.clear();
         counts[size - 1] = cells.len();
         let out = &mut flat[size - 1];
-        out.reserve(cells.len() * size);
-        for key in &cells {
-            key.unpack_into(size, bits, out);
+        out.resize(cells.len() * size, 0);
+        for (key, slot) in cells.iter().zip(out.chunks_exact_mut(size)) {
+            key.unpack_into(bits, slot);
         }
         if size == 1 {
             break;
         }
         // the faces one size down, numbered on first sight
-        let mut below: FxHashMap<K, u32> = FxHashMap::default();
-        below.reserve(cells.len() * size / 2);
-        keys.reserve(cells.len() * size / 2);
-        let mut col_ptr = Vec::with_capacity(cells.len() + 1);
-        let mut row_idx = Vec::with_capacity(cells.len() * size);
-        let mut vals = Vec::with_capacity(cells.len() * size);
-        col_ptr.push(0);
-        for key in &cells {
-            column.clear();
-            for p in 0..size {
-                let face = key.without(p, size, bits);
-                let next = keys.len() as u32;
-                let row = *below.entry(face).or_insert_with_key(|f| {
-                    keys.push(f.clone());
-                    next
-                });
-                column.push((row, if p % 2 == 0 { 1 } else { -1 }));
-            }
-            column.sort_unstable_by_key(|&(r, _)| r);
-            row_idx.extend(column.iter().map(|&(r, _)| r));
-            vals.extend(column.iter().map(|&(_, v)| v));
-            col_ptr.push(row_idx.len());
+        let expected = ((cells.len() * size) as f64 * share.1 / share.0) as usize;
+        fits_u32(cells.len() * size, size - 1)?;
+        below.reset(expected);
+        keys.reserve(expected);
+        // each column holds exactly `size` entries: the faces of a simplex are distinct
+        let col_ptr: Vec<usize> = (0..=cells.len()).map(|j| j * size).collect();
+        let mut row_idx = vec![0u32; cells.len() * size];
+        let mut vals = vec![0i64; cells.len() * size];
+        for ((key, rows), signs) in cells.iter().zip(row_idx.chunks_exact_mut(size)).zip(vals.chunks_exact_mut(size)) {
+            key.for_each_face(size, bits, |p, face| {
+                let row = below.find_or_insert(face, &mut keys);
+                // insertion into the sorted column
+                let mut at = p;
+                while at > 0 && rows[at - 1] > row {
+                    rows[at] = rows[at - 1];
+                    signs[at] = signs[at - 1];
+                    at -= 1;
+                }
+                rows[at] = row;
+                signs[at] = if p % 2 == 0 { 1 } else { -1 };
+            });
         }
-        if keys.len() > u32::MAX as usize {
-            return Err(FaceError::Matrix(format!("{} faces of {} vertices, past u32 indices", keys.len(), size - 1)));
-        }
+        // cofaces per face at this step, as a fraction (entries, faces)
+        share = ((cells.len() * size) as f64, keys.len().max(1) as f64);
         // the rows are known once the facets of size `size - 1` join, at the next step
         columns.push((cells.len(), col_ptr, row_idx, vals));
-        index = below;
+        std::mem::swap(&mut index, &mut below);
     }
     let mut boundaries = Vec::with_capacity(top - 1);
     for (k, (cols, col_ptr, row_idx, vals)) in columns.into_iter().rev().enumerate() {
-        let m = SparseMatrix::try_from_csc(counts[k], cols, col_ptr, row_idx, vals)
-            .map_err(|e| FaceError::Matrix(e.to_string()))?;
-        boundaries.push(m);
+        // rows strictly increasing per column (distinct faces, sorted), below the number of
+        // faces found, values ±1
+        boundaries.push(SparseMatrix::from_csc_trusted(counts[k], cols, col_ptr, row_idx, vals));
     }
     let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries).map_err(|e| FaceError::Matrix(e.to_string()))?;
     Ok((chain, flat))
@@ -276,10 +383,23 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         Some(t) => t[*v as usize],
         None => vertices.binary_search(v).expect("label collected above") as u32,
     };
-    let mut local: Vec<Vec<u32>> = Vec::with_capacity(facets.len());
+    // the facets grouped by size, as increasing vertex indices end to end
+    let mut sizes = vec![0usize; 2];
+    for f in facets {
+        let m = f.as_ref().len();
+        if m >= sizes.len() {
+            sizes.resize(m + 1, 0);
+        }
+        sizes[m] += m;
+    }
+    let mut groups: Vec<Vec<u32>> = sizes.iter().map(|&n| Vec::with_capacity(n)).collect();
     let mut top = 0;
     for (i, f) in facets.iter().enumerate() {
-        let mut g: Vec<u32> = f.as_ref().iter().map(index_of).collect();
+        let f = f.as_ref();
+        let g = &mut groups[f.len()];
+        let start = g.len();
+        g.extend(f.iter().map(index_of));
+        let g = &mut g[start..];
         if !g.is_sorted() {
             g.sort_unstable();
         }
@@ -290,15 +410,18 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
             return Err(FaceError::FacetTooLarge(g.len()));
         }
         top = top.max(g.len());
-        local.push(g);
+    }
+    if top == 0 {
+        // only empty facets: no face at all
+        return Err(FaceError::Empty);
     }
     let bits = (32 - (vertices.len().saturating_sub(1) as u32).leading_zeros()).max(1);
     let (chain, faces) = if bits as usize * top <= 64 {
-        enumerate::<u64>(&local, top, bits)?
+        enumerate::<u64>(&groups, top, bits)?
     } else if bits as usize * top <= 128 {
-        enumerate::<u128>(&local, top, bits)?
+        enumerate::<u128>(&groups, top, bits)?
     } else {
-        enumerate::<Box<[u32]>>(&local, top, bits)?
+        enumerate::<Box<[u32]>>(&groups, top, bits)?
     };
     Ok(FaceComplex { chain, vertices, faces })
 }
@@ -359,6 +482,17 @@ mod tests {
         assert_eq!(face_estimate([&[0u64; 64][..]]), None);
     }
 
+    /// The key of `face` without its vertex at position `p`, through `for_each_face`.
+    fn face_at<K: FaceKey>(face: &[u32], p: usize, bits: u32) -> K {
+        let mut out = None;
+        K::pack(face, bits).for_each_face(face.len(), bits, |q, f| {
+            if q == p {
+                out = Some(f);
+            }
+        });
+        out.unwrap()
+    }
+
     #[test]
     fn packed_keys_drop_each_vertex_at_full_width() {
         // 8 vertices of 8 bits fill a u64; 16 of 8 bits fill a u128: dropping the first
@@ -367,17 +501,17 @@ mod tests {
         let wide: Vec<u32> = (0..16).map(|i| 100 + 9 * i).collect();
         for p in 0..8 {
             let want: Vec<u32> = face.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
-            let mut got = Vec::new();
-            <u64 as FaceKey>::pack(&face, 8).without(p, 8, 8).unpack_into(7, 8, &mut got);
+            let mut got = vec![0; 7];
+            face_at::<u64>(&face, p, 8).unpack_into(8, &mut got);
             assert_eq!(got, want, "u64, p = {p}");
         }
         for p in 0..16 {
             let want: Vec<u32> = wide.iter().enumerate().filter(|&(i, _)| i != p).map(|(_, &v)| v).collect();
-            let mut got = Vec::new();
-            <u128 as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut got);
+            let mut got = vec![0; 15];
+            face_at::<u128>(&wide, p, 8).unpack_into(8, &mut got);
             assert_eq!(got, want, "u128, p = {p}");
-            let mut flat = Vec::new();
-            <Box<[u32]> as FaceKey>::pack(&wide, 8).without(p, 16, 8).unpack_into(15, 8, &mut flat);
+            let mut flat = vec![0; 15];
+            face_at::<Box<[u32]>>(&wide, p, 8).unpack_into(8, &mut flat);
             assert_eq!(flat, want, "list, p = {p}");
         }
     }

@@ -155,6 +155,23 @@ impl SparseMatrix {
         Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
     }
 
+    /// A matrix from CSC parts that hold the invariants by construction (a caller in this
+    /// crate that builds them so, e.g. the faces of simplices); checked in debug builds only.
+    /// O(1).
+    pub(crate) fn from_csc_trusted(
+        rows: usize,
+        cols: usize,
+        col_ptr: Vec<usize>,
+        row_idx: Vec<u32>,
+        vals: Vec<i64>,
+    ) -> Self {
+        debug_assert_eq!(
+            Self::try_from_csc(rows, cols, col_ptr.clone(), row_idx.clone(), vals.clone()).map(|_| ()),
+            Ok(())
+        );
+        SparseMatrix { rows, cols, col_ptr, row_idx, vals }
+    }
+
     /// A matrix from `(row, col, value)` triplets in any order; duplicates are summed
     /// (with overflow checked) and zero sums dropped. O(nnz log nnz).
     pub fn try_from_triplets(rows: usize, cols: usize, triplets: &[(usize, usize, i64)]) -> Result<Self, SparseError> {
