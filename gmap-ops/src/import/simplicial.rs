@@ -53,9 +53,15 @@ impl SimplicialComplex {
     where
         I: IntoIterator<Item = (usize, Vec<u64>)>,
     {
+        let facets = facets.into_iter();
         let mut flat = FlatFacets::default();
+        // room for as many facets as the iterator promises, of the size of the first
+        let _ = flat.lines.try_reserve(facets.size_hint().0);
         for (line, f) in facets {
             let start = flat.labels.len();
+            if start == 0 {
+                let _ = flat.labels.try_reserve(flat.lines.capacity().saturating_mul(f.len()));
+            }
             flat.labels.extend_from_slice(&f);
             flat.end_facet(start, line);
             if let Some((line, vertex)) = flat.repeat {
@@ -103,23 +109,18 @@ impl SimplicialComplex {
             let c = b[i];
             let d = c.wrapping_sub(b'0');
             if d <= 9 {
-                // the common case inline: digits, then a space, a newline or the end; anything
-                // else (a sign, 20 digits or more, other separators) goes to `label_at`
-                let first = i;
-                let mut v = u64::from(d);
-                i += 1;
-                while i < b.len() {
-                    let d = b[i].wrapping_sub(b'0');
-                    if d > 9 {
-                        break;
-                    }
-                    v = v.wrapping_mul(10).wrapping_add(u64::from(d));
-                    i += 1;
+                // the common case inline: at most 19 digits, then a space, a newline or the
+                // end; anything else (more digits, other separators, a bad token) goes to
+                // `label_at`
+                let (v, end) = digits_at(b, i + 1, u64::from(d));
+                if end - i <= 19 && (end == b.len() || b[end] == b' ' || b[end] == b'\n') {
+                    flat.labels.push(v);
+                    i = end;
+                } else {
+                    let (v, end) = label_at(text, i).ok_or_else(|| bad_label(text, i, line))?;
+                    flat.labels.push(v);
+                    i = end;
                 }
-                if i - first > 19 || (i < b.len() && b[i] != b' ' && b[i] != b'\n') {
-                    (v, i) = label_at(text, first).ok_or_else(|| bad_label(text, first, line))?;
-                }
-                flat.labels.push(v);
                 continue;
             }
             match c {
@@ -601,7 +602,7 @@ impl FlatFacets {
     /// Ends the facet made of `labels[start..]`, read on `line`: sorts it, remembers it if
     /// it is the first to repeat a vertex, and notes whether it comes after the facet
     /// before it. O(n) for sorted labels, O(n log n) otherwise.
-    #[inline]
+    #[inline(always)]
     fn end_facet(&mut self, start: usize, line: usize) {
         if let Some(vertex) = sort_facet(&mut self.labels[start..]) {
             self.repeat.get_or_insert((line, vertex));
@@ -610,8 +611,8 @@ impl FlatFacets {
         if self.lines.is_empty() {
             self.width = len;
         } else {
-            if !self.unordered && self.labels[self.last..start] >= self.labels[start..] {
-                self.unordered = true;
+            if !self.unordered {
+                self.unordered = !increasing(&self.labels[self.last..start], &self.labels[start..]);
             }
             if !self.mixed && len != self.width {
                 self.mixed = true;
@@ -682,6 +683,15 @@ impl FlatFacets {
     }
 }
 
+/// Whether facet `b` comes strictly after facet `a` in lexicographic order. O(n).
+#[inline(always)]
+fn increasing(a: &[u64], b: &[u64]) -> bool {
+    match a.iter().zip(b).find(|(x, y)| x != y) {
+        Some((x, y)) => x < y,
+        None => a.len() < b.len(),
+    }
+}
+
 /// Sorts the labels of a facet and returns its smallest repeated label, if any. O(n) for
 /// labels already in strictly increasing order, O(n log n) otherwise.
 #[inline]
@@ -693,22 +703,40 @@ fn sort_facet(f: &mut [u64]) -> Option<u64> {
     f.windows(2).find(|w| w[0] == w[1]).map(|w| w[0])
 }
 
-/// The value of the decimal digits of `text` from byte `start` on (`None` past
-/// `u64::MAX`, with any number of leading zeros) and the byte after the last digit (`start`
-/// itself when there is none). O(digits).
-fn decimal_at(text: &str, start: usize) -> (Option<u64>, usize) {
-    let b = text.as_bytes();
+/// The end of the decimal digits of `b` from byte `start` on (`start` itself when there
+/// is none) and the value of `v` followed by these digits, modulo 2^64: exact for up to 19
+/// digits in all (10^19 < 2^64). O(digits).
+#[inline(always)]
+fn digits_at(b: &[u8], start: usize, mut v: u64) -> (u64, usize) {
     let mut end = start;
-    let mut v: u64 = 0;
-    while let Some(d) = b.get(end).map(|c| c.wrapping_sub(b'0')).filter(|&d| d <= 9) {
-        // 19 digits stay below 10^19 < 2^64: no overflow until the check below
+    while end < b.len() {
+        let d = b[end].wrapping_sub(b'0');
+        if d > 9 {
+            break;
+        }
         v = v.wrapping_mul(10).wrapping_add(u64::from(d));
         end += 1;
     }
+    (v, end)
+}
+
+/// The value of the decimal digits of `text` from byte `start` on (`None` past
+/// `u64::MAX`, with any number of leading zeros) and the byte after the last digit (`start`
+/// itself when there is none). O(digits).
+#[inline(always)]
+fn decimal_at(text: &str, start: usize) -> (Option<u64>, usize) {
+    let (v, end) = digits_at(text.as_bytes(), start, 0);
     if end - start > 19 {
-        return (text[start..end].parse().ok(), end);
+        return (long_decimal(&text[start..end]), end);
     }
     (Some(v), end)
+}
+
+/// The value of 20 digits or more, `None` past `u64::MAX` (the rare case of
+/// [`decimal_at`], kept out of its loop).
+#[cold]
+fn long_decimal(digits: &str) -> Option<u64> {
+    digits.parse().ok()
 }
 
 /// The vertex label of a `.facets` text at byte `i` and the byte after it: what
