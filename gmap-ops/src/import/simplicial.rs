@@ -9,7 +9,10 @@
 //! `alpha_n` free there (the boundary); a ridge on three or more facets cannot be a G-map
 //! and is refused (BO §6 uses the same flags for the simplicial counterpart).
 
+use std::hash::BuildHasher;
 use std::path::Path;
+
+use rustc_hash::FxBuildHasher;
 
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
@@ -628,12 +631,20 @@ impl FlatFacets {
 
     /// The lines [`ImportError::RepeatedFacet`] names: the two smallest lines of the
     /// smallest facet listed twice, or `None`. O(1) when the facets came in strictly
-    /// increasing order (then none repeats), O(F n log F) otherwise.
+    /// increasing order (then none repeats). Otherwise a sort of the facets' 64-bit hashes
+    /// tells, in O(F n + F log F), whether two facets may be equal; only then are the facets
+    /// themselves sorted, with their lines, in O(F n log F), which also settles a mere
+    /// collision of hashes.
     fn repeated_facet(&self) -> Option<(usize, usize)> {
         if !self.unordered {
             return None;
         }
         let count = self.len();
+        let mut hashes: Vec<u64> = (0..count).map(|k| FxBuildHasher.hash_one(self.facet(k))).collect();
+        hashes.sort_unstable();
+        if hashes.windows(2).all(|w| w[0] != w[1]) {
+            return None;
+        }
         let mut order: Vec<usize> = (0..count).collect();
         order.sort_unstable_by(|&a, &b| self.facet(a).cmp(self.facet(b)).then(self.lines[a].cmp(&self.lines[b])));
         order.windows(2).find(|w| self.facet(w[0]) == self.facet(w[1])).map(|w| (self.lines[w[0]], self.lines[w[1]]))
