@@ -112,13 +112,13 @@ impl SimplicialComplex {
             let c = b[i];
             let d = c.wrapping_sub(b'0');
             if d <= 9 {
-                // the common case inline: at most 19 digits, then a space, a newline or the
-                // end; anything else (more digits, other separators, a bad token) goes to
-                // `label_at`
-                let (v, end) = digits_at(b, i + 1, u64::from(d));
-                if end - i <= 19 && (end == b.len() || b[end] == b' ' || b[end] == b'\n') {
+                // the common case inline: at most 19 digits, then a space (skipped at once), a
+                // newline or the end; anything else (more digits, other separators, a bad
+                // token) goes to `label_at`
+                let (v, end, next) = digits_at(b, i + 1, u64::from(d));
+                if end - i <= 19 && (next == b' ' || next == b'\n') {
                     flat.labels.push(v);
-                    i = end;
+                    i = end + usize::from(next == b' ');
                 } else {
                     let (v, end) = label_at(text, i).ok_or_else(|| bad_label(text, i, line))?;
                     flat.labels.push(v);
@@ -715,20 +715,21 @@ fn sort_facet(f: &mut [u64]) -> Option<u64> {
 }
 
 /// The end of the decimal digits of `b` from byte `start` on (`start` itself when there
-/// is none) and the value of `v` followed by these digits, modulo 2^64: exact for up to 19
-/// digits in all (10^19 < 2^64). O(digits).
+/// is none), the value of `v` followed by these digits, modulo 2^64 (exact for up to 19
+/// digits in all: 10^19 < 2^64), and the byte after the digits (`b'\n'` at the end of `b`,
+/// which ends a line as well). O(digits).
 #[inline(always)]
-fn digits_at(b: &[u8], start: usize, mut v: u64) -> (u64, usize) {
+fn digits_at(b: &[u8], start: usize, mut v: u64) -> (u64, usize, u8) {
     let mut end = start;
-    while end < b.len() {
-        let d = b[end].wrapping_sub(b'0');
+    while let Some(&c) = b.get(end) {
+        let d = c.wrapping_sub(b'0');
         if d > 9 {
-            break;
+            return (v, end, c);
         }
         v = v.wrapping_mul(10).wrapping_add(u64::from(d));
         end += 1;
     }
-    (v, end)
+    (v, end, b'\n')
 }
 
 /// The value of the decimal digits of `text` from byte `start` on (`None` past
@@ -736,7 +737,7 @@ fn digits_at(b: &[u8], start: usize, mut v: u64) -> (u64, usize) {
 /// itself when there is none). O(digits).
 #[inline(always)]
 fn decimal_at(text: &str, start: usize) -> (Option<u64>, usize) {
-    let (v, end) = digits_at(text.as_bytes(), start, 0);
+    let (v, end, _) = digits_at(text.as_bytes(), start, 0);
     if end - start > 19 {
         return (long_decimal(&text[start..end]), end);
     }
