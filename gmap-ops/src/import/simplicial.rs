@@ -105,8 +105,9 @@ impl SimplicialComplex {
         let b = text.as_bytes();
         let mut flat = FlatFacets::default();
         let mut line = 1;
-        // where the labels of the current line's facet begin
+        // where the labels of the current line's facet begin, and where its text begins
         let mut start = 0;
+        let mut line_start = 0;
         let mut i = 0;
         while i < b.len() {
             let c = b[i];
@@ -129,11 +130,15 @@ impl SimplicialComplex {
             match c {
                 b'\n' => {
                     if flat.labels.len() > start {
+                        if flat.len() == 0 {
+                            flat.reserve_like_first(b.len() - line_start, i + 1 - line_start);
+                        }
                         flat.end_facet(start, line);
                     }
                     line += 1;
                     start = flat.labels.len();
                     i += 1;
+                    line_start = i;
                 }
                 b' ' | b',' | b'\t' | b'\r' | 0x0b | 0x0c => i += 1,
                 b'+' => {
@@ -600,6 +605,19 @@ impl FlatFacets {
         } else {
             &self.labels[k * self.width..(k + 1) * self.width]
         }
+    }
+
+    /// Before the first facet ends, whose `labels` are read from a line of `first` bytes:
+    /// reserves room for the facets of `rest` bytes of text (that line included) if their
+    /// lines are about as long, and a quarter more. Room never written costs address space,
+    /// not memory, whereas growing the buffers copies them and touches both copies; a wrong
+    /// guess only means growing. O(1).
+    fn reserve_like_first(&mut self, rest: usize, first: usize) {
+        let facets = rest / first.max(1);
+        let facets = facets.saturating_add(facets / 4 + 1);
+        // a reservation that cannot be had is left to the buffers' growth to report
+        let _ = self.lines.try_reserve(facets);
+        let _ = self.labels.try_reserve(facets.saturating_mul(self.labels.len()));
     }
 
     /// Ends the facet made of `labels[start..]`, read on `line`: sorts it, remembers it if
