@@ -51,7 +51,9 @@ impl SimplicialComplex {
     /// [`ImportError::RepeatedFacet`] for the smallest repeated facet (lexicographically, as
     /// sorted label lists), naming its two smallest lines; [`ImportError::Empty`] when no
     /// facet has a vertex. O(F n) when the sorted facets come in strictly increasing
-    /// lexicographic order (as in the Lutz library), O(F n log F) otherwise.
+    /// lexicographic order (as in the Lutz library); otherwise O(F n + F log F) for a sort
+    /// of the facets' 64-bit hashes, and O(F n log F) for a sort of the facets themselves
+    /// when two hashes are equal.
     pub fn from_facets_with_lines<I>(facets: I) -> Result<Self, ImportError>
     where
         I: IntoIterator<Item = (usize, Vec<u64>)>,
@@ -99,8 +101,9 @@ impl SimplicialComplex {
     /// [`ImportError::Syntax`] naming its line, even after a facet with a repeated vertex;
     /// the other errors are those of [`SimplicialComplex::from_facets_with_lines`].
     ///
-    /// One pass over the bytes into one flat buffer of labels. O(size of the text) when
-    /// the facets come in increasing order, plus O(F n log F) otherwise.
+    /// One pass over the bytes into one flat buffer of labels, sized from the first facet
+    /// line: O(size of the text), plus the check for a repeated facet when the facets are
+    /// not in increasing order (see [`SimplicialComplex::from_facets_with_lines`]).
     pub fn parse_facets(text: &str) -> Result<Self, ImportError> {
         let b = text.as_bytes();
         let mut flat = FlatFacets::default();
@@ -609,15 +612,17 @@ impl FlatFacets {
 
     /// Before the first facet ends, whose `labels` are read from a line of `first` bytes:
     /// reserves room for the facets of `rest` bytes of text (that line included) if their
-    /// lines are about as long, and a quarter more. Room never written costs address space,
-    /// not memory, whereas growing the buffers copies them and touches both copies; a wrong
-    /// guess only means growing. O(1).
+    /// lines are about as long, and a quarter more, but never more than the text can hold
+    /// (a label or a facet line takes two bytes at least). Room never written costs address
+    /// space, not memory, whereas growing the buffers copies them and touches both copies;
+    /// a wrong guess only means growing. O(1).
     fn reserve_like_first(&mut self, rest: usize, first: usize) {
+        let most = rest / 2 + 1;
         let facets = rest / first.max(1);
-        let facets = facets.saturating_add(facets / 4 + 1);
+        let facets = facets.saturating_add(facets / 4 + 1).min(most);
         // a reservation that cannot be had is left to the buffers' growth to report
         let _ = self.lines.try_reserve(facets);
-        let _ = self.labels.try_reserve(facets.saturating_mul(self.labels.len()));
+        let _ = self.labels.try_reserve(facets.saturating_mul(self.labels.len()).min(most));
     }
 
     /// Ends the facet made of `labels[start..]`, read on `line`: sorts it, remembers it if
