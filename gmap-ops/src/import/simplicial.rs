@@ -498,15 +498,23 @@ impl LexParser<'_> {
         }
     }
 
+    /// Skips white space and the byte `c`, or names what stands there instead.
+    #[inline]
     fn expect(&mut self, c: u8) -> Result<(), ImportError> {
         self.skip_ws();
-        if self.pos < self.bytes.len() && self.bytes[self.pos] == c {
+        if self.bytes.get(self.pos) == Some(&c) {
             self.pos += 1;
             Ok(())
         } else {
-            let found = self.bytes.get(self.pos).map_or("end of file".to_string(), |&b| format!("'{}'", b as char));
-            Err(ImportError::Syntax { line: self.line, message: format!("expected '{}', found {found}", c as char) })
+            Err(self.unexpected(c))
         }
+    }
+
+    /// The error of [`LexParser::expect`] (out of its way, which is taken once per facet).
+    #[cold]
+    fn unexpected(&self, c: u8) -> ImportError {
+        let found = self.bytes.get(self.pos).map_or("end of file".to_string(), |&b| format!("'{}'", b as char));
+        ImportError::Syntax { line: self.line, message: format!("expected '{}', found {found}", c as char) }
     }
 
     fn peek(&mut self) -> Option<u8> {
@@ -524,6 +532,8 @@ impl LexParser<'_> {
             return Ok(());
         }
         loop {
+            self.skip_ws();
+            let open = self.pos;
             self.expect(b'[')?;
             let line = self.line;
             let start = out.labels.len();
@@ -547,6 +557,9 @@ impl LexParser<'_> {
                     }
                     _ => return Err(ImportError::Syntax { line: self.line, message: "expected ',' or ']'".into() }),
                 }
+            }
+            if out.len() == 0 {
+                out.reserve_like_first(self.bytes.len() - open, self.pos + 1 - open);
             }
             out.end_facet(start, line);
             match self.peek() {
