@@ -9,7 +9,10 @@
 //! `alpha_n` free there (the boundary); a ridge on three or more facets cannot be a G-map
 //! and is refused (BO §6 uses the same flags for the simplicial counterpart).
 
+use std::hash::BuildHasher;
 use std::path::Path;
+
+use rustc_hash::FxBuildHasher;
 
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
@@ -42,42 +45,35 @@ impl SimplicialComplex {
     /// facet is refused with [`ImportError::RepeatedFacet`], naming both lines, rather than
     /// read as two simplices glued along their whole boundary); facets smaller than the
     /// largest are counted and the first one is remembered (see the type's docs).
-    /// O(F n log F).
+    ///
+    /// Errors, in this order: [`ImportError::RepeatedVertex`] for the first facet (in the
+    /// order given) that repeats a vertex, naming its smallest repeated label;
+    /// [`ImportError::RepeatedFacet`] for the smallest repeated facet (lexicographically, as
+    /// sorted label lists), naming its two smallest lines; [`ImportError::Empty`] when no
+    /// facet has a vertex. O(F n) when the sorted facets come in strictly increasing
+    /// lexicographic order (as in the Lutz library); otherwise O(F n + F log F) for a sort
+    /// of the facets' 64-bit hashes, and O(F n log F) for a sort of the facets themselves
+    /// when two hashes are equal.
     pub fn from_facets_with_lines<I>(facets: I) -> Result<Self, ImportError>
     where
         I: IntoIterator<Item = (usize, Vec<u64>)>,
     {
-        let mut all = Vec::new();
-        for (line, mut f) in facets {
-            f.sort_unstable();
-            if let Some(w) = f.windows(2).find(|w| w[0] == w[1]) {
-                return Err(ImportError::RepeatedVertex { line, vertex: w[0] });
+        let facets = facets.into_iter();
+        let mut flat = FlatFacets::default();
+        // room for as many facets as the iterator promises, of the size of the first
+        let _ = flat.lines.try_reserve(facets.size_hint().0);
+        for (line, f) in facets {
+            let start = flat.labels.len();
+            if start == 0 {
+                let _ = flat.labels.try_reserve(flat.lines.capacity().saturating_mul(f.len()));
             }
-            all.push((line, f));
-        }
-        let mut order: Vec<usize> = (0..all.len()).collect();
-        order.sort_unstable_by(|&a, &b| all[a].1.cmp(&all[b].1).then(all[a].0.cmp(&all[b].0)));
-        if let Some(w) = order.windows(2).find(|w| all[w[0]].1 == all[w[1]].1) {
-            return Err(ImportError::RepeatedFacet { first: all[w[0]].0, second: all[w[1]].0 });
-        }
-        let m = all.iter().map(|(_, f)| f.len()).max().unwrap_or(0);
-        if m == 0 {
-            return Err(ImportError::Empty);
-        }
-        let smaller = all.iter().find(|(_, f)| f.len() < m).map(|(l, f)| (*l, f.len()));
-        let mut vertices = Vec::new();
-        let mut lines = Vec::new();
-        let total = all.len();
-        let mut others = Vec::new();
-        for (line, f) in all {
-            if f.len() == m {
-                vertices.extend_from_slice(&f);
-                lines.push(line);
-            } else {
-                others.push((line, f));
+            flat.labels.extend_from_slice(&f);
+            flat.end_facet(start, line);
+            if let Some((line, vertex)) = flat.repeat {
+                return Err(ImportError::RepeatedVertex { line, vertex });
             }
         }
-        Ok(SimplicialComplex { dim: m - 1, vertices, lines, total, smaller, others })
+        flat.finish()
     }
 
     /// Every facet, of every dimension, with its vertices sorted: the n-facets first, then
@@ -100,36 +96,80 @@ impl SimplicialComplex {
 
     /// Parses the `.facets` format (CONTRACT §2): one facet per line, vertex labels as
     /// non-negative integers separated by white space or commas, `#` starts a comment,
-    /// blank lines skipped. O(size of the text).
+    /// blank lines skipped. A label is what `str::parse::<u64>` takes: decimal digits with an
+    /// optional leading `+`, at most `u64::MAX`. The first token that is not a label is an
+    /// [`ImportError::Syntax`] naming its line, even after a facet with a repeated vertex;
+    /// the other errors are those of [`SimplicialComplex::from_facets_with_lines`].
+    ///
+    /// One pass over the bytes into one flat buffer of labels, sized from the first facet
+    /// line: O(size of the text), plus the check for a repeated facet when the facets are
+    /// not in increasing order (see [`SimplicialComplex::from_facets_with_lines`]).
     pub fn parse_facets(text: &str) -> Result<Self, ImportError> {
-        let mut facets = Vec::new();
-        for (k, raw) in text.lines().enumerate() {
-            let line = k + 1;
-            let body = raw.split('#').next().unwrap_or("");
-            let mut f = Vec::new();
-            for tok in body.split(|c: char| c.is_whitespace() || c == ',').filter(|t| !t.is_empty()) {
-                let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
-                    line,
-                    message: format!(
-                        "'{}' is not a vertex label (a non-negative integer)",
-                        shorten(tok.as_bytes(), 40)
-                    ),
-                })?;
-                f.push(v);
+        let b = text.as_bytes();
+        let mut flat = FlatFacets::default();
+        let mut line = 1;
+        // where the labels of the current line's facet begin, and where its text begins
+        let mut start = 0;
+        let mut line_start = 0;
+        let mut i = 0;
+        while i < b.len() {
+            let c = b[i];
+            let d = c.wrapping_sub(b'0');
+            if d <= 9 {
+                // the common case inline: at most 19 digits, then a space (skipped at once), a
+                // newline or the end; anything else (more digits, other separators, a bad
+                // token) goes to `label_at`
+                let (v, end, next) = digits_at(b, i + 1, u64::from(d));
+                if end - i <= 19 && (next == b' ' || next == b'\n') {
+                    flat.labels.push(v);
+                    i = end + usize::from(next == b' ');
+                } else {
+                    let (v, end) = label_at(text, i).ok_or_else(|| bad_label(text, i, line))?;
+                    flat.labels.push(v);
+                    i = end;
+                }
+                continue;
             }
-            if !f.is_empty() {
-                facets.push((line, f));
+            match c {
+                b'\n' => {
+                    if flat.labels.len() > start {
+                        if flat.len() == 0 {
+                            flat.reserve_like_first(b.len() - line_start, i + 1 - line_start);
+                        }
+                        flat.end_facet(start, line);
+                    }
+                    line += 1;
+                    start = flat.labels.len();
+                    i += 1;
+                    line_start = i;
+                }
+                b' ' | b',' | b'\t' | b'\r' | 0x0b | 0x0c => i += 1,
+                b'+' => {
+                    let (v, end) = label_at(text, i).ok_or_else(|| bad_label(text, i, line))?;
+                    flat.labels.push(v);
+                    i = end;
+                }
+                b'#' => i = b[i..].iter().position(|&x| x == b'\n').map_or(b.len(), |p| i + p),
+                0x80.. => match text[i..].chars().next() {
+                    Some(ch) if ch.is_whitespace() => i += ch.len_utf8(),
+                    _ => return Err(bad_label(text, i, line)),
+                },
+                _ => return Err(bad_label(text, i, line)),
             }
         }
-        Self::from_facets_with_lines(facets)
+        if flat.labels.len() > start {
+            flat.end_facet(start, line);
+        }
+        flat.finish()
     }
 
     /// Parses Lutz's `.lex` format: `name=[[1,2,3],[1,2,4],...]`, possibly over several lines
     /// and several complexes per file. Picks the complex called `name`, or the first one.
     /// The line of a facet is the line where its `[` stands.
     pub fn parse_lex(text: &str, name: Option<&str>) -> Result<Self, ImportError> {
-        let mut p = LexParser { bytes: text.as_bytes(), pos: 0, line: 1 };
+        let mut p = LexParser { text, bytes: text.as_bytes(), pos: 0, line: 1 };
         let mut first_name = None;
+        let mut flat = FlatFacets::default();
         loop {
             p.skip_ws();
             if p.pos >= p.bytes.len() {
@@ -148,7 +188,7 @@ impl SimplicialComplex {
             }
             let this = String::from_utf8_lossy(&p.bytes[start..p.pos]).trim().to_string();
             p.pos += 1;
-            let facets = p.list()?;
+            p.list(&mut flat)?;
             let wanted = match name {
                 Some(n) => n == this,
                 None => first_name.is_none(),
@@ -157,7 +197,7 @@ impl SimplicialComplex {
                 first_name = Some(this);
             }
             if wanted {
-                return Self::from_facets_with_lines(facets);
+                return flat.finish();
             }
             p.skip_ws();
             if p.pos < p.bytes.len() && p.bytes[p.pos] == b',' {
@@ -442,6 +482,7 @@ fn default_limit(sc: &SimplicialComplex) -> u64 {
 }
 
 struct LexParser<'a> {
+    text: &'a str,
     bytes: &'a [u8],
     pos: usize,
     line: usize,
@@ -457,15 +498,23 @@ impl LexParser<'_> {
         }
     }
 
+    /// Skips white space and the byte `c`, or names what stands there instead.
+    #[inline]
     fn expect(&mut self, c: u8) -> Result<(), ImportError> {
         self.skip_ws();
-        if self.pos < self.bytes.len() && self.bytes[self.pos] == c {
+        if self.bytes.get(self.pos) == Some(&c) {
             self.pos += 1;
             Ok(())
         } else {
-            let found = self.bytes.get(self.pos).map_or("end of file".to_string(), |&b| format!("'{}'", b as char));
-            Err(ImportError::Syntax { line: self.line, message: format!("expected '{}', found {found}", c as char) })
+            Err(self.unexpected(c))
         }
+    }
+
+    /// The error of [`LexParser::expect`] (out of its way, which is taken once per facet).
+    #[cold]
+    fn unexpected(&self, c: u8) -> ImportError {
+        let found = self.bytes.get(self.pos).map_or("end of file".to_string(), |&b| format!("'{}'", b as char));
+        ImportError::Syntax { line: self.line, message: format!("expected '{}', found {found}", c as char) }
     }
 
     fn peek(&mut self) -> Option<u8> {
@@ -473,33 +522,33 @@ impl LexParser<'_> {
         self.bytes.get(self.pos).copied()
     }
 
-    /// `[[1,2,3],[1,2,4]]` → facets with the line of their opening bracket.
-    fn list(&mut self) -> Result<Vec<(usize, Vec<u64>)>, ImportError> {
+    /// `[[1,2,3],[1,2,4]]` → the facets, sorted, into `out` (emptied first), each with the
+    /// line of its opening bracket.
+    fn list(&mut self, out: &mut FlatFacets) -> Result<(), ImportError> {
+        out.clear();
         self.expect(b'[')?;
-        let mut out = Vec::new();
         if self.peek() == Some(b']') {
             self.pos += 1;
-            return Ok(out);
+            return Ok(());
         }
         loop {
+            self.skip_ws();
+            let open = self.pos;
             self.expect(b'[')?;
             let line = self.line;
-            let mut f = Vec::new();
+            let start = out.labels.len();
             loop {
                 self.skip_ws();
-                let start = self.pos;
-                while self.pos < self.bytes.len() && self.bytes[self.pos].is_ascii_digit() {
-                    self.pos += 1;
-                }
-                if start == self.pos {
+                let (v, end) = decimal_at(self.text, self.pos);
+                if end == self.pos {
                     return Err(ImportError::Syntax { line: self.line, message: "expected a vertex label".into() });
                 }
-                let tok = std::str::from_utf8(&self.bytes[start..self.pos]).unwrap_or("");
-                let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
+                let v = v.ok_or_else(|| ImportError::Syntax {
                     line: self.line,
-                    message: format!("vertex label '{}' is too large", shorten(tok.as_bytes(), 40)),
+                    message: format!("vertex label '{}' is too large", shorten(&self.bytes[self.pos..end], 40)),
                 })?;
-                f.push(v);
+                self.pos = end;
+                out.labels.push(v);
                 match self.peek() {
                     Some(b',') => self.pos += 1,
                     Some(b']') => {
@@ -509,16 +558,263 @@ impl LexParser<'_> {
                     _ => return Err(ImportError::Syntax { line: self.line, message: "expected ',' or ']'".into() }),
                 }
             }
-            out.push((line, f));
+            if out.len() == 0 {
+                out.reserve_like_first(self.bytes.len() - open, self.pos + 1 - open);
+            }
+            out.end_facet(start, line);
             match self.peek() {
                 Some(b',') => self.pos += 1,
                 Some(b']') => {
                     self.pos += 1;
-                    return Ok(out);
+                    return Ok(());
                 }
                 _ => return Err(ImportError::Syntax { line: self.line, message: "expected ',' or ']'".into() }),
             }
         }
+    }
+}
+
+/// Facets read into one flat buffer of labels, each facet sorted, with the line it came
+/// from. While every facet has the same number of labels (a pure complex) facet `k` is
+/// `labels[k * width..][..width]` and no offsets are kept; from the first facet of another
+/// length on, `ends[k]` is where facet `k` ends.
+#[derive(Default)]
+struct FlatFacets {
+    labels: Vec<u64>,
+    lines: Vec<usize>,
+    /// the number of labels of the first facet
+    width: usize,
+    /// whether two facets of different lengths have been seen (`ends` is kept only then)
+    mixed: bool,
+    ends: Vec<usize>,
+    /// the first facet that repeats a vertex: its line and its smallest repeated label
+    repeat: Option<(usize, u64)>,
+    /// where the last facet begins in `labels`
+    last: usize,
+    /// whether some facet is not lexicographically greater than the one before it (only
+    /// then can a facet repeat, and only then does [`FlatFacets::repeated_facet`] sort)
+    unordered: bool,
+}
+
+impl FlatFacets {
+    /// Empties the buffers, keeping their memory.
+    fn clear(&mut self) {
+        self.labels.clear();
+        self.lines.clear();
+        self.ends.clear();
+        self.mixed = false;
+        self.repeat = None;
+        self.last = 0;
+        self.unordered = false;
+    }
+
+    /// The number of facets. O(1).
+    fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// The labels of facet `k` (`k < len()`). O(1).
+    fn facet(&self, k: usize) -> &[u64] {
+        if self.mixed {
+            let s = if k == 0 { 0 } else { self.ends[k - 1] };
+            &self.labels[s..self.ends[k]]
+        } else {
+            &self.labels[k * self.width..(k + 1) * self.width]
+        }
+    }
+
+    /// Before the first facet ends, whose `labels` are read from a line of `first` bytes:
+    /// reserves room for the facets of `rest` bytes of text (that line included) if their
+    /// lines are about as long, and a quarter more, but never more than the text can hold
+    /// (a label or a facet line takes two bytes at least). Room never written costs address
+    /// space, not memory, whereas growing the buffers copies them and touches both copies;
+    /// a wrong guess only means growing. O(1).
+    fn reserve_like_first(&mut self, rest: usize, first: usize) {
+        let most = rest / 2 + 1;
+        let facets = rest / first.max(1);
+        let facets = facets.saturating_add(facets / 4 + 1).min(most);
+        // a reservation that cannot be had is left to the buffers' growth to report
+        let _ = self.lines.try_reserve(facets);
+        let _ = self.labels.try_reserve(facets.saturating_mul(self.labels.len()).min(most));
+    }
+
+    /// Ends the facet made of `labels[start..]`, read on `line`: sorts it, remembers it if
+    /// it is the first to repeat a vertex, and notes whether it comes after the facet
+    /// before it. O(n) for sorted labels, O(n log n) otherwise.
+    #[inline(always)]
+    fn end_facet(&mut self, start: usize, line: usize) {
+        if let Some(vertex) = sort_facet(&mut self.labels[start..]) {
+            self.repeat.get_or_insert((line, vertex));
+        }
+        let len = self.labels.len() - start;
+        if self.lines.is_empty() {
+            self.width = len;
+        } else {
+            if !self.unordered {
+                self.unordered = !increasing(&self.labels[self.last..start], &self.labels[start..]);
+            }
+            if !self.mixed && len != self.width {
+                self.mixed = true;
+                self.ends = (1..=self.lines.len()).map(|k| k * self.width).collect();
+            }
+        }
+        if self.mixed {
+            self.ends.push(self.labels.len());
+        }
+        self.last = start;
+        self.lines.push(line);
+    }
+
+    /// The lines [`ImportError::RepeatedFacet`] names: the two smallest lines of the
+    /// smallest facet listed twice, or `None`. O(1) when the facets came in strictly
+    /// increasing order (then none repeats). Otherwise a sort of the facets' 64-bit hashes
+    /// tells, in O(F n + F log F), whether two facets may be equal; only then are the facets
+    /// themselves sorted, with their lines, in O(F n log F), which also settles a mere
+    /// collision of hashes.
+    fn repeated_facet(&self) -> Option<(usize, usize)> {
+        if !self.unordered {
+            return None;
+        }
+        let count = self.len();
+        let mut hashes: Vec<u64> = (0..count).map(|k| FxBuildHasher.hash_one(self.facet(k))).collect();
+        hashes.sort_unstable();
+        if hashes.windows(2).all(|w| w[0] != w[1]) {
+            return None;
+        }
+        let mut order: Vec<usize> = (0..count).collect();
+        order.sort_unstable_by(|&a, &b| self.facet(a).cmp(self.facet(b)).then(self.lines[a].cmp(&self.lines[b])));
+        order.windows(2).find(|w| self.facet(w[0]) == self.facet(w[1])).map(|w| (self.lines[w[0]], self.lines[w[1]]))
+    }
+
+    /// The complex of the facets read, or the first error in the order of
+    /// [`SimplicialComplex::from_facets_with_lines`]. A pure complex keeps the buffers
+    /// as they are; a mixed one moves its smaller facets apart. O(F n) plus
+    /// [`FlatFacets::repeated_facet`].
+    fn finish(self) -> Result<SimplicialComplex, ImportError> {
+        if let Some((line, vertex)) = self.repeat {
+            return Err(ImportError::RepeatedVertex { line, vertex });
+        }
+        if let Some((first, second)) = self.repeated_facet() {
+            return Err(ImportError::RepeatedFacet { first, second });
+        }
+        let total = self.len();
+        let m = if self.mixed { (0..total).map(|k| self.facet(k).len()).max().unwrap_or(0) } else { self.width };
+        if total == 0 || m == 0 {
+            return Err(ImportError::Empty);
+        }
+        if !self.mixed {
+            let FlatFacets { labels, lines, .. } = self;
+            return Ok(SimplicialComplex {
+                dim: m - 1,
+                vertices: labels,
+                lines,
+                total,
+                smaller: None,
+                others: Vec::new(),
+            });
+        }
+        let mut vertices = Vec::new();
+        let mut lines = Vec::new();
+        let mut others = Vec::new();
+        for (k, &line) in self.lines.iter().enumerate() {
+            let f = self.facet(k);
+            if f.len() == m {
+                vertices.extend_from_slice(f);
+                lines.push(line);
+            } else {
+                others.push((line, f.to_vec()));
+            }
+        }
+        let smaller = others.first().map(|(line, f): &(usize, Vec<u64>)| (*line, f.len()));
+        Ok(SimplicialComplex { dim: m - 1, vertices, lines, total, smaller, others })
+    }
+}
+
+/// Whether facet `b` comes strictly after facet `a` in lexicographic order. O(n).
+#[inline(always)]
+fn increasing(a: &[u64], b: &[u64]) -> bool {
+    match a.iter().zip(b).find(|(x, y)| x != y) {
+        Some((x, y)) => x < y,
+        None => a.len() < b.len(),
+    }
+}
+
+/// Sorts the labels of a facet and returns its smallest repeated label, if any. O(n) for
+/// labels already in strictly increasing order, O(n log n) otherwise.
+#[inline]
+fn sort_facet(f: &mut [u64]) -> Option<u64> {
+    if f.windows(2).all(|w| w[0] < w[1]) {
+        return None;
+    }
+    f.sort_unstable();
+    f.windows(2).find(|w| w[0] == w[1]).map(|w| w[0])
+}
+
+/// The end of the decimal digits of `b` from byte `start` on (`start` itself when there
+/// is none), the value of `v` followed by these digits, modulo 2^64 (exact for up to 19
+/// digits in all: 10^19 < 2^64), and the byte after the digits (`b'\n'` at the end of `b`,
+/// which ends a line as well). O(digits).
+#[inline(always)]
+fn digits_at(b: &[u8], start: usize, mut v: u64) -> (u64, usize, u8) {
+    let mut end = start;
+    while let Some(&c) = b.get(end) {
+        let d = c.wrapping_sub(b'0');
+        if d > 9 {
+            return (v, end, c);
+        }
+        v = v.wrapping_mul(10).wrapping_add(u64::from(d));
+        end += 1;
+    }
+    (v, end, b'\n')
+}
+
+/// The value of the decimal digits of `text` from byte `start` on (`None` past
+/// `u64::MAX`, with any number of leading zeros) and the byte after the last digit (`start`
+/// itself when there is none). O(digits).
+#[inline(always)]
+fn decimal_at(text: &str, start: usize) -> (Option<u64>, usize) {
+    let (v, end, _) = digits_at(text.as_bytes(), start, 0);
+    if end - start > 19 {
+        return (long_decimal(&text[start..end]), end);
+    }
+    (Some(v), end)
+}
+
+/// The value of 20 digits or more, `None` past `u64::MAX` (the rare case of
+/// [`decimal_at`], kept out of its loop).
+#[cold]
+fn long_decimal(digits: &str) -> Option<u64> {
+    digits.parse().ok()
+}
+
+/// The vertex label of a `.facets` text at byte `i` and the byte after it: what
+/// `str::parse::<u64>` takes (an optional `+`, then digits, at most `u64::MAX`), ended by a
+/// separator (white space, a comma), a `#` or the end of the text. `None` when the token at
+/// `i` is not one. O(length of the label).
+fn label_at(text: &str, i: usize) -> Option<(u64, usize)> {
+    let b = text.as_bytes();
+    let digits = i + usize::from(b[i] == b'+');
+    let (v, end) = decimal_at(text, digits);
+    let ends_token = match b.get(end) {
+        None => true,
+        Some(&c) if c < 0x80 => matches!(c, b' ' | b',' | b'#' | b'\t'..=b'\r'),
+        Some(_) => text[end..].chars().next().is_some_and(char::is_whitespace),
+    };
+    if end == digits || !ends_token {
+        return None;
+    }
+    v.map(|v| (v, end))
+}
+
+/// The error for the token of a `.facets` text starting at byte `i` on `line`, which is not
+/// a vertex label: the token runs to the next white space, comma or `#`, and is shown cut
+/// to 40 characters.
+fn bad_label(text: &str, i: usize, line: usize) -> ImportError {
+    let rest = &text[i..];
+    let token = rest.find(|c: char| c.is_whitespace() || c == ',' || c == '#').map_or(rest, |e| &rest[..e]);
+    ImportError::Syntax {
+        line,
+        message: format!("'{}' is not a vertex label (a non-negative integer)", shorten(token.as_bytes(), 40)),
     }
 }
 
