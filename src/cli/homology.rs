@@ -185,13 +185,12 @@ fn simplicial(map: &DenseMap) -> Named<'static> {
 /// (`gmap_homology::simplices`), no G-map. The faces are counted first and refused past
 /// `--max-darts` (default: what the available memory holds).
 fn direct(sc: &SimplicialComplex, o: &Options, file: &str) -> Result<(usize, Named<'static>)> {
-    let facets = sc.all_facets();
     progress(&format!(
         "enumerating the faces of {} facets (at most {})",
-        facets.len(),
-        face_estimate(facets.iter().copied()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
+        sc.facets().count(),
+        face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
     ));
-    let fc = super::load::face_complex_within(&facets, sc.dim(), o.max_darts, file)?;
+    let fc = super::load::face_complex_within(sc, o.max_darts, file)?;
     let FaceComplex { chain, vertices, faces } = fc;
     let dim = chain.dim();
     let name = Box::new(move |k: usize, j: u32| {

@@ -345,23 +345,36 @@ fn enumerate<K: FaceKey>(
 /// contained in others are harmless. Expected O(E · d) for E faces counted with repetition
 /// and facets of at most d + 1 vertices (one hash look-up per boundary entry).
 pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceComplex, FaceError> {
-    if facets.is_empty() {
+    face_complex_of(facets.iter().map(AsRef::as_ref), limit)
+}
+
+/// [`face_complex`] of facets given by an iterator, which is walked a few times (so a
+/// complex that holds its facets end to end needs no list of them). Same errors; a facet's
+/// number is its position in the iteration.
+pub fn face_complex_of<'a, I>(facets: I, limit: u64) -> Result<FaceComplex, FaceError>
+where
+    I: Iterator<Item = &'a [u64]> + Clone,
+{
+    let estimate = face_estimate(facets.clone());
+    if facets.clone().next().is_none() {
         return Err(FaceError::Empty);
     }
-    let estimate = face_estimate(facets.iter().map(AsRef::as_ref));
     match estimate {
         Some(e) if e <= limit => {}
         _ => return Err(FaceError::TooManyFaces { estimate, limit }),
     }
     // renumber the labels 0..V: by a table when the labels are small (the usual 1..V), else
     // by binary search among the sorted labels
-    let entries: usize = facets.iter().map(|f| f.as_ref().len()).sum();
-    let largest = facets.iter().flat_map(|f| f.as_ref().iter().copied()).max().unwrap_or(0);
+    let (mut entries, mut largest) = (0usize, 0u64);
+    for f in facets.clone() {
+        entries += f.len();
+        largest = f.iter().copied().fold(largest, u64::max);
+    }
     let (vertices, table) = if largest < 2 * entries as u64 + 1024 {
         // mark the labels present, then number them in increasing order: no sort
         let mut table = vec![u32::MAX; largest as usize + 1];
-        for f in facets {
-            for &v in f.as_ref() {
+        for f in facets.clone() {
+            for &v in f {
                 table[v as usize] = 0;
             }
         }
@@ -374,7 +387,7 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
         }
         (vertices, Some(table))
     } else {
-        let mut vertices: Vec<u64> = facets.iter().flat_map(|f| f.as_ref().iter().copied()).collect();
+        let mut vertices: Vec<u64> = facets.clone().flat_map(|f| f.iter().copied()).collect();
         vertices.sort_unstable();
         vertices.dedup();
         (vertices, None)
@@ -385,8 +398,8 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
     };
     // the facets grouped by size, as increasing vertex indices end to end
     let mut sizes = vec![0usize; 2];
-    for f in facets {
-        let m = f.as_ref().len();
+    for f in facets.clone() {
+        let m = f.len();
         if m >= sizes.len() {
             sizes.resize(m + 1, 0);
         }
@@ -394,8 +407,7 @@ pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceCom
     }
     let mut groups: Vec<Vec<u32>> = sizes.iter().map(|&n| Vec::with_capacity(n)).collect();
     let mut top = 0;
-    for (i, f) in facets.iter().enumerate() {
-        let f = f.as_ref();
+    for (i, f) in facets.enumerate() {
         let g = &mut groups[f.len()];
         let start = g.len();
         g.extend(f.iter().map(index_of));

@@ -79,9 +79,14 @@ impl SimplicialComplex {
     /// Every facet, of every dimension, with its vertices sorted: the n-facets first, then
     /// the smaller ones in input order.
     pub fn all_facets(&self) -> Vec<&[u64]> {
-        let mut out: Vec<&[u64]> = (0..self.facet_count()).map(|f| self.facet(f)).collect();
-        out.extend(self.others.iter().map(|(_, f)| f.as_slice()));
-        out
+        self.facets().collect()
+    }
+
+    /// [`SimplicialComplex::all_facets`] without collecting them: the n-facets, then the
+    /// smaller ones in input order. The iterator is cheap to clone (a pass over the facets
+    /// costs no allocation).
+    pub fn facets(&self) -> impl Iterator<Item = &[u64]> + Clone + '_ {
+        self.vertices.chunks_exact(self.dim + 1).chain(self.others.iter().map(|(_, f)| f.as_slice()))
     }
 
     /// Whether every facet has dimension n (only then is there a G-map).
