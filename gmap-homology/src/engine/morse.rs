@@ -30,9 +30,10 @@
 //! the arrays nearly in order. On manifolds, cube grids and the simplicial counterparts of
 //! G-maps what survives is a handful of cells.
 
-use std::collections::HashMap;
+use std::borrow::Cow;
 
 use gmap_core::union_find::UnionFind;
+use rustc_hash::FxHashMap;
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::ring::{Euclid, Ring};
@@ -52,16 +53,9 @@ enum State {
     Critical,
 }
 
-/// bit 31 of a link: the entry is a unit
-const UNIT: u32 = 1 << 31;
-/// cells and entries are numbered in 31 bits
-const LIMIT: usize = 1 << 31;
-
-/// The cell of a link (its global number, without the [`UNIT`] bit).
-#[inline]
-fn cell(link: u32) -> usize {
-    (link & !UNIT) as usize
-}
+/// Cells and entries are numbered in 32 bits: a complex with more of either is handed on
+/// as it is.
+const LIMIT: usize = u32::MAX as usize;
 
 /// The complex left by [`prereduce`]: the surviving cells and the boundary between them.
 #[derive(Debug)]
@@ -88,116 +82,132 @@ impl Restricted {
 /// a cell of the lowest dimension left **critical** and goes on: the cell stays in the output
 /// and the later coreductions add fill in its row only (the frozen rows of
 /// [`crate::engine::reduce`]), so the output is the restriction of the input plus those rows.
-/// `None` when the fill overflows. O(entries + cells + fill in the critical rows).
+/// `None` when the fill overflows.
+///
+/// O(entries + cells + fill in the critical rows); besides the input it touches one byte and
+/// two `u32` counts per cell, the transposed boundaries (a `u32` per entry and per cell) and
+/// the log of pairs.
 pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
     let total: usize = counts.iter().sum();
-    let nnz: usize = (1..counts.len()).map(|k| c.boundary(k).nnz()).sum();
+    let nnz: usize = c.boundaries().iter().map(SparseMatrix::nnz).sum();
     if total >= LIMIT || nnz >= LIMIT {
-        // beyond 31-bit numbers: hand the complex on as it is
+        // beyond 32-bit numbers: hand the complex on as it is
         let ids = counts.iter().map(|&m| (0..m as u32).collect()).collect();
         return Some(Restricted { chain: c.clone(), ids, log: Vec::new(), off: Vec::new() });
     }
-    let mut sweep = Sweep::new(ring, c, Links::new(ring, c, nnz));
+    let c = nonzero_part(ring, c);
+    let mut sweep = Sweep::new(ring, &c, nnz);
     sweep.set_aside_base_vertices();
     sweep.queue_ready();
     sweep.run(freeze)?;
-    sweep.restricted()
+    sweep.restricted(freeze)
+}
+
+/// `c` without its entries that are zero in `ring` (`c` itself when it has none, always the
+/// case over `Z`). O(entries).
+fn nonzero_part<'c, R: Ring>(ring: &R, c: &'c ChainComplex) -> Cow<'c, ChainComplex> {
+    let zero = |v: i64| ring.is_zero(&ring.of_i64(v));
+    let has_zero = |m: &SparseMatrix| (0..m.cols()).any(|j| m.col(j).1.iter().any(|&v| zero(v)));
+    if ring.keeps_nonzero_integers() || !c.boundaries().iter().any(has_zero) {
+        return Cow::Borrowed(c);
+    }
+    let mats = c
+        .boundaries()
+        .iter()
+        .map(|m| {
+            let cols: Vec<Vec<(u32, i64)>> = (0..m.cols())
+                .map(|j| {
+                    let (ri, rv) = m.col(j);
+                    ri.iter().zip(rv).filter(|&(_, &v)| !zero(v)).map(|(&r, &v)| (r, v)).collect()
+                })
+                .collect();
+            SparseMatrix::try_from_columns(m.rows(), &cols).expect("the entries of a valid matrix stay valid")
+        })
+        .collect();
+    Cow::Owned(ChainComplex::try_new_unchecked_dd(c.counts().to_vec(), mats).expect("the shapes are kept"))
 }
 
 /// Global cell numbers: `off[k]` is the number of the first k-cell, `off[n + 1]` the number
 /// of cells.
-fn offsets(counts: &[usize]) -> Vec<u32> {
+fn offsets(counts: &[usize]) -> Vec<usize> {
     let mut off = Vec::with_capacity(counts.len() + 1);
-    let mut acc = 0u32;
+    let mut acc = 0;
     for &m in counts {
         off.push(acc);
-        acc += m as u32;
+        acc += m;
     }
     off.push(acc);
     off
 }
 
-/// The faces and cofaces of every cell through its ring-nonzero entries, as links (global
-/// cell numbers, [`UNIT`] set for a unit entry): the boundary in compressed rows per cell,
-/// and its transpose.
-struct Links {
-    /// `off[k]`: global number of the first k-cell
-    off: Vec<u32>,
-    fptr: Vec<u32>,
-    faces: Vec<u32>,
-    cptr: Vec<u32>,
-    cofaces: Vec<u32>,
+/// The cofaces of every cell: the boundary matrices transposed, each list holding the
+/// numbers of the cofaces among the cells of the dimension above, increasing. (The faces are
+/// read from the boundary matrices themselves.)
+struct Cofaces {
+    /// `ptr[x]..ptr[x + 1]`: the range of global cell `x` in `list`
+    ptr: Vec<u32>,
+    list: Vec<u32>,
 }
 
-impl Links {
-    fn new<R: Euclid>(ring: &R, c: &ChainComplex, nnz: usize) -> Self {
-        let counts = c.counts();
-        let off = offsets(counts);
-        let total = off[counts.len()] as usize;
-        let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
-        let mut faces: Vec<u32> = Vec::with_capacity(nnz);
-        fptr.extend(std::iter::repeat_n(0, counts.first().copied().unwrap_or(0) + 1));
-        for k in 1..counts.len() {
-            let m = c.boundary(k);
-            let base = off[k - 1];
+impl Cofaces {
+    /// The transposed boundaries, with the number of cofaces of each cell. O(entries + cells).
+    fn new(c: &ChainComplex, off: &[usize], nnz: usize) -> (Self, Vec<u32>) {
+        let total = off[off.len() - 1];
+        let mut count = vec![0u32; total];
+        for (m, &base) in c.boundaries().iter().zip(off) {
+            let rows = &mut count[base..base + m.rows()];
             for j in 0..m.cols() {
-                let (ri, rv) = m.col(j);
-                for (&r, &v) in ri.iter().zip(rv) {
-                    let x = ring.of_i64(v);
-                    if !ring.is_zero(&x) {
-                        faces.push((base + r) | if ring.is_unit(&x) { UNIT } else { 0 });
-                    }
+                for &r in m.col(j).0 {
+                    rows[r as usize] += 1;
                 }
-                fptr.push(faces.len() as u32);
             }
         }
-        let mut cptr = vec![0u32; total + 1];
-        for &r in &faces {
-            cptr[cell(r) + 1] += 1;
+        // `ptr[x + 1]` starts as the first slot of `x` and moves along while `x`'s list is
+        // filled, ending as the first slot of `x + 1`
+        let mut ptr = Vec::with_capacity(total + 1);
+        ptr.push(0u32);
+        let mut acc = 0u32;
+        for &n in &count {
+            ptr.push(acc);
+            acc += n;
         }
-        for i in 0..total {
-            cptr[i + 1] += cptr[i];
-        }
-        let mut cofaces = vec![0u32; faces.len()];
-        let mut fill = cptr.clone();
-        for col in 0..total {
-            for &r in &faces[fptr[col] as usize..fptr[col + 1] as usize] {
-                let slot = &mut fill[cell(r)];
-                cofaces[*slot as usize] = col as u32 | (r & UNIT);
-                *slot += 1;
+        let mut list = vec![0u32; nnz];
+        for (m, &base) in c.boundaries().iter().zip(off) {
+            let slots = &mut ptr[base + 1..base + 1 + m.rows()];
+            for j in 0..m.cols() {
+                for &r in m.col(j).0 {
+                    let s = &mut slots[r as usize];
+                    list[*s as usize] = j as u32;
+                    *s += 1;
+                }
             }
         }
-        Links { off, fptr, faces, cptr, cofaces }
+        (Cofaces { ptr, list }, count)
     }
 
-    fn total(&self) -> usize {
-        self.fptr.len() - 1
-    }
-
+    /// The cofaces of global cell `x`, numbered among the cells of the dimension above.
     #[inline]
-    fn faces(&self, x: usize) -> &[u32] {
-        &self.faces[self.fptr[x] as usize..self.fptr[x + 1] as usize]
-    }
-
-    #[inline]
-    fn cofaces(&self, x: usize) -> &[u32] {
-        &self.cofaces[self.cptr[x] as usize..self.cptr[x + 1] as usize]
+    fn of(&self, x: usize) -> &[u32] {
+        &self.list[self.ptr[x] as usize..self.ptr[x + 1] as usize]
     }
 }
 
 /// The pass in progress: per cell its state and its numbers of surviving faces (`nb`) and
 /// cofaces (`nc`), the cells waiting to be looked at, the pairs eliminated so far, and the
-/// entries of the critical rows.
+/// entries of the critical rows. Cells are named by global number (`off[k] + j`) in the
+/// per-cell arrays, the log and the critical rows, and by dimension and number `(k, j)`
+/// everywhere else.
 struct Sweep<'a, R: Euclid> {
     ring: &'a R,
     c: &'a ChainComplex,
-    links: Links,
+    off: Vec<usize>,
+    co: Cofaces,
     state: Vec<State>,
     nb: Vec<u32>,
     nc: Vec<u32>,
     /// entries of alive or critical cells in critical rows: (row, value), rows increasing
-    extra: HashMap<u32, Vec<(u32, R::E)>>,
+    extra: FxHashMap<u32, Vec<(u32, R::E)>>,
     log: Vec<(u32, u32)>,
     /// lowest cell number first: the sweep then moves through the complex in numbering
     /// order, which keeps its memory accesses close together (a stack gets stuck far
@@ -205,34 +215,47 @@ struct Sweep<'a, R: Euclid> {
     work: Ready,
     /// per dimension, the first cell that may still be alive (critical cells are taken in order)
     cursor: Vec<usize>,
+    /// the cells set aside or made critical (global numbers): with `freeze`, the survivors
+    kept: Vec<u32>,
 }
 
 impl<'a, R: Euclid> Sweep<'a, R> {
-    fn new(ring: &'a R, c: &'a ChainComplex, links: Links) -> Self {
-        let total = links.total();
-        let nb = links.fptr.windows(2).map(|w| w[1] - w[0]).collect();
-        let nc = links.cptr.windows(2).map(|w| w[1] - w[0]).collect();
-        let work = Ready::new(&links.off);
-        let cursor = links.off[..c.counts().len()].iter().map(|&o| o as usize).collect();
+    fn new(ring: &'a R, c: &'a ChainComplex, nnz: usize) -> Self {
+        let off = offsets(c.counts());
+        let total = off[off.len() - 1];
+        let (co, nc) = Cofaces::new(c, &off, nnz);
+        let mut nb = Vec::with_capacity(total);
+        nb.resize(c.count(0), 0);
+        for m in c.boundaries() {
+            nb.extend(m.col_ptr().windows(2).map(|w| (w[1] - w[0]) as u32));
+        }
+        let work = Ready::new(c.counts());
+        let cursor = off[..c.counts().len()].to_vec();
         Sweep {
             ring,
             c,
-            links,
+            off,
+            co,
             state: vec![State::Alive; total],
             nb,
             nc,
-            extra: HashMap::new(),
+            extra: FxHashMap::default(),
             log: Vec::with_capacity(total / 2),
             work,
             cursor,
+            kept: Vec::new(),
         }
     }
 
-    /// `⟨∂x, y⟩` from the input, for a k-cell `x` and a (k-1)-cell `y` (global numbers).
-    fn value(&self, x: usize, y: usize) -> R::E {
-        let off = &self.links.off;
-        let k = off.partition_point(|&o| o as usize <= x) - 1;
-        self.ring.of_i64(self.c.boundary(k).get(y - off[k - 1] as usize, x - off[k] as usize))
+    /// `∂_k`, for `k >= 1`.
+    #[inline]
+    fn bd(&self, k: usize) -> &'a SparseMatrix {
+        &self.c.boundaries()[k - 1]
+    }
+
+    /// `⟨∂x, y⟩` from the input, for k-cell `x` and (k-1)-cell `y`.
+    fn value(&self, k: usize, x: u32, y: u32) -> R::E {
+        self.ring.of_i64(self.bd(k).get(y as usize, x as usize))
     }
 
     /// When `∂_1` is made of `v - w` columns, sets aside the smallest vertex of each
@@ -252,11 +275,13 @@ impl<'a, R: Euclid> Sweep<'a, R> {
                 uf.union(ri[0], ri[1]);
             }
         }
+        let edges = self.off[1];
         for v in 0..nv as u32 {
             if uf.find(v) == v {
                 self.state[v as usize] = State::SetAside;
-                for &e in self.links.cofaces(v as usize) {
-                    self.nb[cell(e)] -= 1;
+                self.kept.push(v);
+                for &e in self.co.of(v as usize) {
+                    self.nb[edges + e as usize] -= 1;
                 }
             }
         }
@@ -264,9 +289,11 @@ impl<'a, R: Euclid> Sweep<'a, R> {
 
     /// Queues every alive cell with a single surviving face or coface.
     fn queue_ready(&mut self) {
-        for x in 0..self.state.len() {
-            if self.state[x] == State::Alive && (self.nb[x] == 1 || self.nc[x] == 1) {
-                self.work.push(x as u32);
+        for k in 0..self.c.counts().len() {
+            for x in self.off[k]..self.off[k + 1] {
+                if self.state[x] == State::Alive && (self.nb[x] == 1 || self.nc[x] == 1) {
+                    self.work.push(k, (x - self.off[k]) as u32);
+                }
             }
         }
     }
@@ -276,18 +303,17 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// fill of the critical rows overflows.
     fn run(&mut self, freeze: bool) -> Option<()> {
         loop {
-            let Some(x) = self.work.pop() else {
+            let Some((k, j)) = self.work.pop() else {
                 if freeze && self.make_critical() {
                     continue;
                 }
                 return Some(());
             };
-            let x = x as usize;
-            if self.state[x] != State::Alive {
+            if self.state[self.off[k] + j as usize] != State::Alive {
                 continue;
             }
-            if let Some((a, b, coreduction)) = self.pair_of(x) {
-                self.eliminate(a, b, coreduction)?;
+            if let Some((k, a, b, coreduction)) = self.pair_of(k, j) {
+                self.eliminate(k, a, b, coreduction)?;
             }
         }
     }
@@ -296,116 +322,169 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// alive. The cell has no alive face, so only its cofaces change: their entries in its
     /// row move to the critical rows.
     fn make_critical(&mut self) -> bool {
-        let off = &self.links.off;
         let mut pick = None;
         for k in 0..self.cursor.len() {
-            let end = off[k + 1] as usize;
+            let end = self.off[k + 1];
             while self.cursor[k] < end && self.state[self.cursor[k]] != State::Alive {
                 self.cursor[k] += 1;
             }
             if self.cursor[k] < end {
-                pick = Some(self.cursor[k]);
+                pick = Some((k, self.cursor[k]));
                 break;
             }
         }
-        let Some(x) = pick else { return false };
+        let Some((k, x)) = pick else { return false };
         self.state[x] = State::Critical;
-        for &e in self.links.cofaces(x) {
-            let y = cell(e);
-            if self.state[y] == State::Alive {
-                let v = self.value(y, x);
-                let list = self.extra.entry(y as u32).or_default();
+        self.kept.push(x as u32);
+        let j = (x - self.off[k]) as u32;
+        let above = self.off[k + 1];
+        for i in self.co.ptr[x] as usize..self.co.ptr[x + 1] as usize {
+            let y = self.co.list[i];
+            let gy = above + y as usize;
+            if self.state[gy] == State::Alive {
+                let v = self.value(k + 1, y, j);
+                let list = self.extra.entry(gy as u32).or_default();
                 let pos = list.partition_point(|(r, _)| (*r as usize) < x);
                 list.insert(pos, (x as u32, v));
-                self.nb[y] -= 1;
-                if self.nb[y] == 1 {
-                    self.work.push(y as u32);
+                self.nb[gy] -= 1;
+                if self.nb[gy] == 1 {
+                    self.work.push(k + 1, y);
                 }
             }
         }
         true
     }
 
-    /// The pair `(a, b, coreduction)` that alive cell `x` makes: with its only surviving face
-    /// (a coreduction) or its only surviving coface (a collapse), through a unit entry.
-    fn pair_of(&self, x: usize) -> Option<(usize, usize, bool)> {
-        let alive = |e: &&u32| self.state[cell(**e)] == State::Alive;
+    /// The pair `(k, a, b, coreduction)` — `a` a (k-1)-cell, `b` a k-cell — that alive
+    /// cell `j` of dimension `k0` makes: with its only surviving face (a coreduction) or its
+    /// only surviving coface (a collapse), through a unit entry.
+    fn pair_of(&self, k0: usize, j: u32) -> Option<(usize, u32, u32, bool)> {
+        let x = self.off[k0] + j as usize;
         if self.nb[x] == 1 {
-            if let Some(&e) = self.links.faces(x).iter().find(alive) {
-                if e & UNIT != 0 {
-                    return Some((cell(e), x, true));
+            // a cell with a face is of dimension 1 or more
+            let base = self.off[k0 - 1];
+            let (ri, rv) = self.bd(k0).col(j as usize);
+            if let Some(p) = ri.iter().position(|&r| self.state[base + r as usize] == State::Alive) {
+                if self.ring.is_unit(&self.ring.of_i64(rv[p])) {
+                    return Some((k0, ri[p], j, true));
                 }
             }
         }
         if self.nc[x] == 1 {
-            if let Some(&e) = self.links.cofaces(x).iter().find(alive) {
-                if e & UNIT != 0 {
-                    return Some((x, cell(e), false));
+            let base = self.off[k0 + 1];
+            if let Some(&y) = self.co.of(x).iter().find(|&&y| self.state[base + y as usize] == State::Alive) {
+                if self.ring.is_unit(&self.value(k0 + 1, y, j)) {
+                    return Some((k0 + 1, j, y, false));
                 }
             }
         }
         None
     }
 
-    /// Eliminates the pair `(a, b)`: logs it, moves the critical-row entries of `b` onto the
-    /// other cofaces of `a` after a coreduction (a collapse changes no other column), and
-    /// updates the counts of the neighbours. `None` when the fill overflows.
-    fn eliminate(&mut self, a: usize, b: usize, coreduction: bool) -> Option<()> {
-        self.state[a] = State::Paired;
-        self.state[b] = State::Paired;
-        self.log.push((a as u32, b as u32));
-        self.extra.remove(&(a as u32));
-        if let Some(fill) = self.extra.remove(&(b as u32)) {
-            if coreduction {
-                let eps = self.value(b, a);
-                for &e in self.links.cofaces(a) {
-                    let y = cell(e);
-                    if self.state[y] != State::Alive {
-                        continue;
-                    }
-                    let lambda = self.ring.div_unit(&self.value(y, a), &eps)?;
-                    let list = self.extra.entry(y as u32).or_default();
-                    *list = axpy(self.ring, list, &lambda, &fill)?;
-                    if list.is_empty() {
-                        self.extra.remove(&(y as u32));
-                    }
+    /// Eliminates the pair of (k-1)-cell `a` and k-cell `b`: logs it, moves the
+    /// critical-row entries of `b` onto the other cofaces of `a` after a coreduction (a
+    /// collapse changes no other column), and updates the counts of the neighbours. `None`
+    /// when the fill overflows.
+    fn eliminate(&mut self, k: usize, a: u32, b: u32, coreduction: bool) -> Option<()> {
+        let ga = self.off[k - 1] + a as usize;
+        let gb = self.off[k] + b as usize;
+        self.state[ga] = State::Paired;
+        self.state[gb] = State::Paired;
+        self.log.push((ga as u32, gb as u32));
+        if !self.extra.is_empty() {
+            self.extra.remove(&(ga as u32));
+            if let Some(fill) = self.extra.remove(&(gb as u32)) {
+                if coreduction {
+                    self.move_fill(k, a, b, &fill)?;
                 }
             }
         }
-        self.release(a);
-        self.release(b);
+        // the neighbours of the pair lose it; the other faces of `b` after a coreduction,
+        // and the other cofaces of `a` after a collapse, are not alive
+        if coreduction {
+            self.release_cofaces(k - 1, a);
+        } else {
+            self.release_faces(k, b);
+        }
+        if k >= 2 {
+            self.release_faces(k - 1, a);
+        }
+        self.release_cofaces(k, b);
         Some(())
     }
 
-    /// A cell `z` leaves: its alive cofaces lose a face and its alive faces a coface; those
-    /// left with one are queued.
-    #[inline]
-    fn release(&mut self, z: usize) {
-        let Sweep { links, state, nb, nc, work, .. } = self;
-        lose_one(links.cofaces(z), state, nb, work);
-        lose_one(links.faces(z), state, nc, work);
+    /// After the coreduction of (k-1)-cell `a` with k-cell `b`, whose critical rows hold
+    /// `fill`: each other alive coface `y` of `a` becomes `y - (⟨∂y, a⟩ / ⟨∂b, a⟩) b` in
+    /// those rows. `None` on overflow.
+    fn move_fill(&mut self, k: usize, a: u32, b: u32, fill: &[(u32, R::E)]) -> Option<()> {
+        let eps = self.value(k, b, a);
+        let ga = self.off[k - 1] + a as usize;
+        let base = self.off[k];
+        for i in self.co.ptr[ga] as usize..self.co.ptr[ga + 1] as usize {
+            let y = self.co.list[i];
+            let gy = (base + y as usize) as u32;
+            if self.state[gy as usize] != State::Alive {
+                continue;
+            }
+            let lambda = self.ring.div_unit(&self.value(k, y, a), &eps)?;
+            let list = self.extra.entry(gy).or_default();
+            *list = axpy(self.ring, list, &lambda, fill)?;
+            if list.is_empty() {
+                self.extra.remove(&gy);
+            }
+        }
+        Some(())
+    }
+
+    /// k-cell `z` leaves: its alive cofaces lose a face; those left with one are queued.
+    #[inline(always)]
+    fn release_cofaces(&mut self, k: usize, z: u32) {
+        let gz = self.off[k] + z as usize;
+        let Sweep { off, co, state, nb, work, .. } = self;
+        lose_one(co.of(gz), k + 1, off[k + 1], state, nb, work);
+    }
+
+    /// k-cell `z` (k >= 1) leaves: its alive faces lose a coface; those left with one are
+    /// queued.
+    #[inline(always)]
+    fn release_faces(&mut self, k: usize, z: u32) {
+        let Sweep { c, off, state, nc, work, .. } = self;
+        let faces = c.boundaries()[k - 1].col(z as usize).0;
+        lose_one(faces, k - 1, off[k - 1], state, nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
-    /// rows. `None` when an entry of a critical row does not fit `i64`.
-    fn restricted(self) -> Option<Restricted> {
-        let Sweep { ring, c, links, state, extra, log, .. } = self;
-        let off = links.off;
+    /// rows. With `freeze` the survivors are the cells set aside or made critical, and the
+    /// cost is in their number and their entries only. `None` when an entry of a critical
+    /// row does not fit `i64`.
+    fn restricted(self, freeze: bool) -> Option<Restricted> {
+        let Sweep { ring, c, off, state, mut nb, extra, log, mut kept, .. } = self;
         let counts = c.counts();
         let n1 = counts.len();
-        let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
-        let mut local = vec![u32::MAX; state.len()];
-        for k in 0..n1 {
-            let mut v = Vec::new();
-            for j in 0..counts[k] {
-                let g = off[k] as usize + j;
-                if state[g] != State::Paired {
-                    local[g] = v.len() as u32;
-                    v.push(j as u32);
+        let mut ids: Vec<Vec<u32>> = vec![Vec::new(); n1];
+        if freeze {
+            // no cell is left alive
+            kept.sort_unstable();
+            let mut k = 0;
+            for &g in &kept {
+                while g as usize >= off[k + 1] {
+                    k += 1;
                 }
+                ids[k].push((g as usize - off[k]) as u32);
             }
-            ids.push(v);
+        } else {
+            for (k, v) in ids.iter_mut().enumerate() {
+                v.extend((0..counts[k] as u32).filter(|&j| state[off[k] + j as usize] != State::Paired));
+            }
         }
+        // the number of a survivor among the survivors of its dimension, in the place of
+        // its count of faces (no longer needed)
+        for (k, v) in ids.iter().enumerate() {
+            for (i, &j) in v.iter().enumerate() {
+                nb[off[k] + j as usize] = i as u32;
+            }
+        }
+        let local = nb;
         let mut mats = Vec::with_capacity(n1.saturating_sub(1));
         let mut col: Vec<(u32, i64)> = Vec::new();
         for k in 1..n1 {
@@ -416,14 +495,16 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             let mut vals = Vec::new();
             for &j in &ids[k] {
                 col.clear();
-                let (ri, rv) = m.col(j as usize);
-                for (&r, &v) in ri.iter().zip(rv) {
-                    let g = (off[k - 1] + r) as usize;
-                    if state[g] == State::Alive && !ring.is_zero(&ring.of_i64(v)) {
-                        col.push((local[g], v));
+                if !freeze {
+                    let (ri, rv) = m.col(j as usize);
+                    for (&r, &v) in ri.iter().zip(rv) {
+                        let g = off[k - 1] + r as usize;
+                        if state[g] == State::Alive {
+                            col.push((local[g], v));
+                        }
                     }
                 }
-                if let Some(list) = extra.get(&(off[k] + j)) {
+                if let Some(list) = extra.get(&((off[k] + j as usize) as u32)) {
                     for (r, v) in list {
                         col.push((local[*r as usize], ring.to_i64(v)?));
                     }
@@ -441,84 +522,83 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         }
         let new_counts = ids.iter().map(Vec::len).collect();
         let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
+        let off = off.iter().map(|&o| o as u32).collect();
         Some(Restricted { chain, ids, log, off })
     }
 }
 
-/// Each alive cell of `linked` has one neighbour less in `count`; those left with one are
-/// queued.
-#[inline]
-fn lose_one(linked: &[u32], state: &[State], count: &mut [u32], work: &mut Ready) {
-    for &e in linked {
-        let y = cell(e);
+/// Each alive cell among `linked` (cells `j` of dimension `k`, global numbers `base + j`)
+/// has one neighbour less in `count`; those left with one are queued.
+#[inline(always)]
+fn lose_one(linked: &[u32], k: usize, base: usize, state: &[State], count: &mut [u32], work: &mut Ready) {
+    for &j in linked {
+        let y = base + j as usize;
         if state[y] == State::Alive {
             count[y] -= 1;
             if count[y] == 1 {
-                work.push(y as u32);
+                work.push(k, j);
             }
         }
     }
 }
 
 /// The cells waiting to be looked at, taken lowest number first (lowest dimension, then
-/// order of smallest dart): a bit per cell and, per dimension, a count and the first word
-/// that may hold a bit. Taking cells in numbering order keeps the sweep's memory accesses
-/// close together.
+/// order of smallest dart): per dimension a bit per cell, a count, and the first word that
+/// may hold a bit; and the lowest dimension that may hold one. Taking cells in numbering
+/// order keeps the sweep's memory accesses close together. Push and pop are O(1) but for
+/// the scans over empty words and dimensions, which the cursors make amortised O(1).
 struct Ready {
     /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
-    /// per dimension: its first word, its past-the-end word, the first word that may hold
-    /// a bit, the number of bits set, and its first global cell number
+    /// per dimension: its first word, the first word that may hold a bit, and the number
+    /// of bits set
     lo: Vec<usize>,
-    hi: Vec<usize>,
     cursor: Vec<usize>,
-    count: Vec<usize>,
-    start: Vec<u32>,
+    count: Vec<u32>,
+    /// no dimension below it holds a bit
+    low: usize,
 }
 
 impl Ready {
-    fn new(off: &[u32]) -> Self {
-        let dims = off.len() - 1;
-        let mut lo = Vec::with_capacity(dims);
-        let mut hi = Vec::with_capacity(dims);
-        let mut start = Vec::with_capacity(dims);
+    fn new(counts: &[usize]) -> Self {
+        let mut lo = Vec::with_capacity(counts.len());
         let mut words = 0;
-        for k in 0..dims {
-            let m = (off[k + 1] - off[k]) as usize;
+        for &m in counts {
             lo.push(words);
-            start.push(off[k]);
             words += m.div_ceil(64);
-            hi.push(words);
         }
-        Ready { bits: vec![0; words], cursor: lo.clone(), lo, hi, count: vec![0; dims], start }
+        Ready { bits: vec![0; words], cursor: lo.clone(), lo, count: vec![0; counts.len()], low: counts.len() }
     }
 
-    #[inline]
-    fn push(&mut self, x: u32) {
-        let k = self.start.partition_point(|&s| s <= x) - 1;
-        let i = (x - self.start[k]) as usize;
-        let w = self.lo[k] + i / 64;
-        let b = 1u64 << (i % 64);
+    /// Queues cell `j` of dimension `k` (once, however often it is pushed before it is popped).
+    #[inline(always)]
+    fn push(&mut self, k: usize, j: u32) {
+        let w = self.lo[k] + j as usize / 64;
+        let b = 1u64 << (j % 64);
         if self.bits[w] & b == 0 {
             self.bits[w] |= b;
             self.count[k] += 1;
             self.cursor[k] = self.cursor[k].min(w);
+            self.low = self.low.min(k);
         }
     }
 
+    /// The waiting cell of the lowest dimension and, in it, the lowest number, as `(k, j)`.
     #[inline]
-    fn pop(&mut self) -> Option<u32> {
-        let k = self.count.iter().position(|&c| c > 0)?;
+    fn pop(&mut self) -> Option<(usize, u32)> {
+        while *self.count.get(self.low)? == 0 {
+            self.low += 1;
+        }
+        let k = self.low;
         let mut w = self.cursor[k];
         while self.bits[w] == 0 {
             w += 1;
         }
-        debug_assert!(w < self.hi[k]);
         self.cursor[k] = w;
         let b = self.bits[w].trailing_zeros();
         self.bits[w] &= self.bits[w] - 1;
         self.count[k] -= 1;
-        Some(self.start[k] + ((w - self.lo[k]) * 64) as u32 + b)
+        Some((k, ((w - self.lo[k]) * 64) as u32 + b))
     }
 }
 
