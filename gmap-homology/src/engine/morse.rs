@@ -57,6 +57,11 @@ enum State {
 /// as it is.
 const LIMIT: usize = u32::MAX as usize;
 
+/// The counts of a cell that is no longer alive: decreasing them never reaches 1 before
+/// far more than a cell's neighbours are gone, so the releases need not look at the state
+/// of the cell (and a wrapped count would only queue a cell that the sweep then skips).
+const GONE: u32 = 1 << 31;
+
 /// The complex left by [`prereduce`]: the surviving cells and the boundary between them.
 #[derive(Debug)]
 pub(crate) struct Restricted {
@@ -278,7 +283,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let edges = self.off[1];
         for v in 0..nv as u32 {
             if uf.find(v) == v {
-                self.state[v as usize] = State::SetAside;
+                self.leave(v as usize, State::SetAside);
                 self.kept.push(v);
                 for &e in self.co.of(v as usize) {
                     self.nb[edges + e as usize] -= 1;
@@ -287,11 +292,20 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         }
     }
 
+    /// Global cell `x` is no longer alive: it takes `state` and its counts are [`GONE`].
+    #[inline(always)]
+    fn leave(&mut self, x: usize, state: State) {
+        self.state[x] = state;
+        self.nb[x] = GONE;
+        self.nc[x] = GONE;
+    }
+
     /// Queues every alive cell with a single surviving face or coface.
     fn queue_ready(&mut self) {
         for k in 0..self.c.counts().len() {
             for x in self.off[k]..self.off[k + 1] {
-                if self.state[x] == State::Alive && (self.nb[x] == 1 || self.nc[x] == 1) {
+                // only the set-aside vertices are not alive, and their counts are GONE
+                if self.nb[x] == 1 || self.nc[x] == 1 {
                     self.work.push(k, (x - self.off[k]) as u32);
                 }
             }
@@ -334,7 +348,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             }
         }
         let Some((k, x)) = pick else { return false };
-        self.state[x] = State::Critical;
+        self.leave(x, State::Critical);
         self.kept.push(x as u32);
         let j = (x - self.off[k]) as u32;
         let above = self.off[k + 1];
@@ -388,8 +402,8 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     fn eliminate(&mut self, k: usize, a: u32, b: u32, coreduction: bool) -> Option<()> {
         let ga = self.off[k - 1] + a as usize;
         let gb = self.off[k] + b as usize;
-        self.state[ga] = State::Paired;
-        self.state[gb] = State::Paired;
+        self.leave(ga, State::Paired);
+        self.leave(gb, State::Paired);
         self.log.push((ga as u32, gb as u32));
         if !self.extra.is_empty() {
             self.extra.remove(&(ga as u32));
@@ -440,17 +454,17 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     #[inline(always)]
     fn release_cofaces(&mut self, k: usize, z: u32) {
         let gz = self.off[k] + z as usize;
-        let Sweep { off, co, state, nb, work, .. } = self;
-        lose_one(co.of(gz), k + 1, off[k + 1], state, nb, work);
+        let Sweep { off, co, nb, work, .. } = self;
+        lose_one(co.of(gz), k + 1, off[k + 1], nb, work);
     }
 
     /// k-cell `z` (k >= 1) leaves: its alive faces lose a coface; those left with one are
     /// queued.
     #[inline(always)]
     fn release_faces(&mut self, k: usize, z: u32) {
-        let Sweep { c, off, state, nc, work, .. } = self;
+        let Sweep { c, off, nc, work, .. } = self;
         let faces = c.boundaries()[k - 1].col(z as usize).0;
-        lose_one(faces, k - 1, off[k - 1], state, nc, work);
+        lose_one(faces, k - 1, off[k - 1], nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
@@ -527,17 +541,16 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     }
 }
 
-/// Each alive cell among `linked` (cells `j` of dimension `k`, global numbers `base + j`)
-/// has one neighbour less in `count`; those left with one are queued.
+/// Each cell among `linked` (cells `j` of dimension `k`, global numbers `base + j`) has one
+/// neighbour less in `count`; those left with one are queued. The counts of cells no longer
+/// alive start at [`GONE`], so they are never queued.
 #[inline(always)]
-fn lose_one(linked: &[u32], k: usize, base: usize, state: &[State], count: &mut [u32], work: &mut Ready) {
+fn lose_one(linked: &[u32], k: usize, base: usize, count: &mut [u32], work: &mut Ready) {
     for &j in linked {
-        let y = base + j as usize;
-        if state[y] == State::Alive {
-            count[y] -= 1;
-            if count[y] == 1 {
-                work.push(k, j);
-            }
+        let n = &mut count[base + j as usize];
+        *n = n.wrapping_sub(1);
+        if *n == 1 {
+            work.push(k, j);
         }
     }
 }
