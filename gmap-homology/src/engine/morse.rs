@@ -146,55 +146,64 @@ fn offsets(counts: &[usize]) -> Vec<usize> {
     off
 }
 
-/// The cofaces of every cell: the boundary matrices transposed, each list holding the
-/// numbers of the cofaces among the cells of the dimension above, increasing. (The faces are
-/// read from the boundary matrices themselves.)
+/// The cofaces of every cell, as a list per cell threaded through the entries of the
+/// boundary matrices: one pass over the matrices builds it (a transposed copy would take a
+/// counting pass more), and the lists hold the numbers of the cofaces among the cells of the
+/// dimension above, decreasing. (The faces are read from the boundary matrices themselves.)
 struct Cofaces {
-    /// `ptr[x]..ptr[x + 1]`: the range of global cell `x` in `list`
-    ptr: Vec<u32>,
-    list: Vec<u32>,
+    /// per global cell: its last entry in `node`, or [`END`]
+    head: Vec<u32>,
+    /// per entry, in the matrices' order: the next entry of the same face (or [`END`]) and
+    /// the coface's number
+    node: Vec<(u32, u32)>,
 }
 
+/// The end of a list of cofaces.
+const END: u32 = u32::MAX;
+
 impl Cofaces {
-    /// The transposed boundaries, with the number of cofaces of each cell. O(entries + cells).
+    /// The lists, with the number of cofaces of each cell. O(entries + cells).
     fn new(c: &ChainComplex, off: &[usize], nnz: usize) -> (Self, Vec<u32>) {
         let total = off[off.len() - 1];
         let mut count = vec![0u32; total];
+        let mut head = vec![END; total];
+        let mut node = Vec::with_capacity(nnz);
         for (m, &base) in c.boundaries().iter().zip(off) {
-            let rows = &mut count[base..base + m.rows()];
+            let heads = &mut head[base..base + m.rows()];
+            let counts = &mut count[base..base + m.rows()];
             for j in 0..m.cols() {
                 for &r in m.col(j).0 {
-                    rows[r as usize] += 1;
+                    let h = &mut heads[r as usize];
+                    node.push((*h, j as u32));
+                    *h = (node.len() - 1) as u32;
+                    counts[r as usize] += 1;
                 }
             }
         }
-        // `ptr[x + 1]` starts as the first slot of `x` and moves along while `x`'s list is
-        // filled, ending as the first slot of `x + 1`
-        let mut ptr = Vec::with_capacity(total + 1);
-        ptr.push(0u32);
-        let mut acc = 0u32;
-        for &n in &count {
-            ptr.push(acc);
-            acc += n;
-        }
-        let mut list = vec![0u32; nnz];
-        for (m, &base) in c.boundaries().iter().zip(off) {
-            let slots = &mut ptr[base + 1..base + 1 + m.rows()];
-            for j in 0..m.cols() {
-                for &r in m.col(j).0 {
-                    let s = &mut slots[r as usize];
-                    list[*s as usize] = j as u32;
-                    *s += 1;
-                }
-            }
-        }
-        (Cofaces { ptr, list }, count)
+        (Cofaces { head, node }, count)
     }
 
     /// The cofaces of global cell `x`, numbered among the cells of the dimension above.
-    #[inline]
-    fn of(&self, x: usize) -> &[u32] {
-        &self.list[self.ptr[x] as usize..self.ptr[x + 1] as usize]
+    #[inline(always)]
+    fn of(&self, x: usize) -> Walk<'_> {
+        Walk { node: &self.node, at: self.head[x] }
+    }
+}
+
+/// The cofaces of one cell ([`Cofaces::of`]).
+struct Walk<'a> {
+    node: &'a [(u32, u32)],
+    at: u32,
+}
+
+impl Iterator for Walk<'_> {
+    type Item = u32;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<u32> {
+        let &(next, y) = self.node.get(self.at as usize)?;
+        self.at = next;
+        Some(y)
     }
 }
 
@@ -285,7 +294,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             if uf.find(v) == v {
                 self.leave(v as usize, State::SetAside);
                 self.kept.push(v);
-                for &e in self.co.of(v as usize) {
+                for e in self.co.of(v as usize) {
                     self.nb[edges + e as usize] -= 1;
                 }
             }
@@ -352,8 +361,9 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         self.kept.push(x as u32);
         let j = (x - self.off[k]) as u32;
         let above = self.off[k + 1];
-        for i in self.co.ptr[x] as usize..self.co.ptr[x + 1] as usize {
-            let y = self.co.list[i];
+        let mut at = self.co.head[x];
+        while let Some(&(next, y)) = self.co.node.get(at as usize) {
+            at = next;
             let gy = above + y as usize;
             if self.state[gy] == State::Alive {
                 let v = self.value(k + 1, y, j);
@@ -386,7 +396,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         }
         if self.nc[x] == 1 {
             let base = self.off[k0 + 1];
-            if let Some(&y) = self.co.of(x).iter().find(|&&y| self.state[base + y as usize] == State::Alive) {
+            if let Some(y) = self.co.of(x).find(|&y| self.state[base + y as usize] == State::Alive) {
                 if self.ring.is_unit(&self.value(k0 + 1, y, j)) {
                     return Some((k0 + 1, j, y, false));
                 }
@@ -434,8 +444,9 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let eps = self.value(k, b, a);
         let ga = self.off[k - 1] + a as usize;
         let base = self.off[k];
-        for i in self.co.ptr[ga] as usize..self.co.ptr[ga + 1] as usize {
-            let y = self.co.list[i];
+        let mut at = self.co.head[ga];
+        while let Some(&(next, y)) = self.co.node.get(at as usize) {
+            at = next;
             let gy = (base + y as usize) as u32;
             if self.state[gy as usize] != State::Alive {
                 continue;
@@ -464,7 +475,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     fn release_faces(&mut self, k: usize, z: u32) {
         let Sweep { c, off, nc, work, .. } = self;
         let faces = c.boundaries()[k - 1].col(z as usize).0;
-        lose_one(faces, k - 1, off[k - 1], nc, work);
+        lose_one(faces.iter().copied(), k - 1, off[k - 1], nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
@@ -545,8 +556,8 @@ impl<'a, R: Euclid> Sweep<'a, R> {
 /// neighbour less in `count`; those left with one are queued. The counts of cells no longer
 /// alive start at [`GONE`], so they are never queued.
 #[inline(always)]
-fn lose_one(linked: &[u32], k: usize, base: usize, count: &mut [u32], work: &mut Ready) {
-    for &j in linked {
+fn lose_one(linked: impl Iterator<Item = u32>, k: usize, base: usize, count: &mut [u32], work: &mut Ready) {
+    for j in linked {
         let n = &mut count[base + j as usize];
         *n = n.wrapping_sub(1);
         if *n == 1 {
