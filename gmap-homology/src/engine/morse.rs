@@ -277,16 +277,20 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// relative complex is the restriction to the other cells.
     fn set_aside_base_vertices(&mut self) {
         let c = self.c;
-        if c.counts().len() < 2 || !edges_are_differences(c.boundary(1)) {
+        if c.counts().len() < 2 {
             return;
         }
         let nv = c.count(0);
         let mut uf = UnionFind::new(nv);
         let m = c.boundary(1);
         for j in 0..m.cols() {
-            let (ri, _) = m.col(j);
-            if ri.len() == 2 {
-                uf.union(ri[0], ri[1]);
+            match m.col(j) {
+                (&[v, w], &[x, y]) if x.unsigned_abs() == 1 && y == -x => {
+                    uf.union(v, w);
+                }
+                (&[], _) => {}
+                // an edge that is not `v - w`: no vertex is set aside
+                _ => return,
             }
         }
         let edges = self.off[1];
@@ -705,14 +709,6 @@ pub(crate) fn lift<R: Ring>(
         }
     }
     Some(z.into_iter().enumerate().filter(|(_, v)| !ring.is_zero(v)).map(|(i, v)| (i as u32, v)).collect())
-}
-
-/// Whether every column of `∂_1` is empty or `v - w` (entries `1` and `-1`).
-fn edges_are_differences(m: &SparseMatrix) -> bool {
-    (0..m.cols()).all(|j| {
-        let (_, v) = m.col(j);
-        v.is_empty() || (v.len() == 2 && v[0] + v[1] == 0 && v[0].abs() == 1)
-    })
 }
 
 #[cfg(test)]
