@@ -167,16 +167,18 @@ impl Cofaces {
         let total = off[off.len() - 1];
         let mut count = vec![0u32; total];
         let mut head = vec![END; total];
-        let mut node = Vec::with_capacity(nnz);
+        let mut node = vec![(END, 0u32); nnz];
+        let mut e = 0usize;
         for (m, &base) in c.boundaries().iter().zip(off) {
             let heads = &mut head[base..base + m.rows()];
             let counts = &mut count[base..base + m.rows()];
             for j in 0..m.cols() {
                 for &r in m.col(j).0 {
                     let h = &mut heads[r as usize];
-                    node.push((*h, j as u32));
-                    *h = (node.len() - 1) as u32;
+                    node[e] = (*h, j as u32);
+                    *h = e as u32;
                     counts[r as usize] += 1;
+                    e += 1;
                 }
             }
         }
@@ -316,10 +318,12 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// Queues every alive cell with a single surviving face or coface.
     fn queue_ready(&mut self) {
         for k in 0..self.c.counts().len() {
-            for x in self.off[k]..self.off[k + 1] {
+            let cells = self.off[k]..self.off[k + 1];
+            let counts = self.nb[cells.clone()].iter().zip(&self.nc[cells]);
+            for (j, (&nb, &nc)) in counts.enumerate() {
                 // only the set-aside vertices are not alive, and their counts are GONE
-                if self.nb[x] == 1 || self.nc[x] == 1 {
-                    self.work.push(k, (x - self.off[k]) as u32);
+                if nb == 1 || nc == 1 {
+                    self.work.push(k, j as u32);
                 }
             }
         }
@@ -330,16 +334,16 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// fill of the critical rows overflows.
     fn run(&mut self, freeze: bool) -> Option<()> {
         loop {
-            let Some((k, j)) = self.work.pop() else {
+            let Some((k, j, x)) = self.work.pop() else {
                 if freeze && self.make_critical() {
                     continue;
                 }
                 return Some(());
             };
-            if self.state[self.off[k] + j as usize] != State::Alive {
+            if self.state[x] != State::Alive {
                 continue;
             }
-            if let Some((k, a, b, coreduction)) = self.pair_of(k, j) {
+            if let Some((k, a, b, coreduction)) = self.pair_of(k, j, x) {
                 self.eliminate(k, a, b, coreduction)?;
             }
         }
@@ -384,10 +388,9 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     }
 
     /// The pair `(k, a, b, coreduction)` — `a` a (k-1)-cell, `b` a k-cell — that alive
-    /// cell `j` of dimension `k0` makes: with its only surviving face (a coreduction) or its
+    /// cell `j` of dimension `k0` (global number `x`) makes: with its only surviving face (a coreduction) or its
     /// only surviving coface (a collapse), through a unit entry.
-    fn pair_of(&self, k0: usize, j: u32) -> Option<(usize, u32, u32, bool)> {
-        let x = self.off[k0] + j as usize;
+    fn pair_of(&self, k0: usize, j: u32, x: usize) -> Option<(usize, u32, u32, bool)> {
         if self.nb[x] == 1 {
             // a cell with a face is of dimension 1 or more
             let base = self.off[k0 - 1];
@@ -578,55 +581,70 @@ fn lose_one(linked: impl Iterator<Item = u32>, k: usize, base: usize, count: &mu
 struct Ready {
     /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
-    /// per dimension: its first word, the first word that may hold a bit, and the number
-    /// of bits set
-    lo: Vec<usize>,
-    cursor: Vec<usize>,
-    count: Vec<u32>,
+    /// per dimension: where its bits are, and how many are set
+    dims: Vec<Queue>,
     /// no dimension below it holds a bit
     low: usize,
 }
 
+/// The bits of one dimension in [`Ready`].
+#[derive(Clone, Copy)]
+struct Queue {
+    /// the first word
+    lo: usize,
+    /// the first word that may hold a bit
+    cursor: usize,
+    /// the number of bits set
+    count: u32,
+    /// the global number of the first cell
+    start: usize,
+}
+
 impl Ready {
     fn new(counts: &[usize]) -> Self {
-        let mut lo = Vec::with_capacity(counts.len());
-        let mut words = 0;
+        let mut dims = Vec::with_capacity(counts.len());
+        let (mut words, mut start) = (0, 0);
         for &m in counts {
-            lo.push(words);
+            dims.push(Queue { lo: words, cursor: words, count: 0, start });
             words += m.div_ceil(64);
+            start += m;
         }
-        Ready { bits: vec![0; words], cursor: lo.clone(), lo, count: vec![0; counts.len()], low: counts.len() }
+        Ready { bits: vec![0; words], dims, low: counts.len() }
     }
 
     /// Queues cell `j` of dimension `k` (once, however often it is pushed before it is popped).
     #[inline(always)]
     fn push(&mut self, k: usize, j: u32) {
-        let w = self.lo[k] + j as usize / 64;
+        let q = &mut self.dims[k];
+        let w = q.lo + j as usize / 64;
         let b = 1u64 << (j % 64);
-        if self.bits[w] & b == 0 {
-            self.bits[w] |= b;
-            self.count[k] += 1;
-            self.cursor[k] = self.cursor[k].min(w);
+        let word = &mut self.bits[w];
+        if *word & b == 0 {
+            *word |= b;
+            q.count += 1;
+            q.cursor = q.cursor.min(w);
             self.low = self.low.min(k);
         }
     }
 
-    /// The waiting cell of the lowest dimension and, in it, the lowest number, as `(k, j)`.
-    #[inline]
-    fn pop(&mut self) -> Option<(usize, u32)> {
-        while *self.count.get(self.low)? == 0 {
+    /// The waiting cell of the lowest dimension and, in it, the lowest number, as `(k, j,
+    /// global number)`.
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(usize, u32, usize)> {
+        while self.dims.get(self.low)?.count == 0 {
             self.low += 1;
         }
         let k = self.low;
-        let mut w = self.cursor[k];
-        while self.bits[w] == 0 {
-            w += 1;
-        }
-        self.cursor[k] = w;
-        let b = self.bits[w].trailing_zeros();
-        self.bits[w] &= self.bits[w] - 1;
-        self.count[k] -= 1;
-        Some((k, ((w - self.lo[k]) * 64) as u32 + b))
+        let q = &mut self.dims[k];
+        // a set bit lies at or after the cursor, as the count says
+        let w = q.cursor + self.bits[q.cursor..].iter().position(|&b| b != 0)?;
+        q.cursor = w;
+        let word = &mut self.bits[w];
+        let b = word.trailing_zeros();
+        *word &= *word - 1;
+        q.count -= 1;
+        let j = ((w - q.lo) * 64) as u32 + b;
+        Some((k, j, q.start + j as usize))
     }
 }
 
