@@ -151,8 +151,6 @@ fn offsets(counts: &[usize]) -> Vec<usize> {
 /// counting pass more), and the lists hold the numbers of the cofaces among the cells of the
 /// dimension above, decreasing. (The faces are read from the boundary matrices themselves.)
 struct Cofaces {
-    /// per global cell: its last entry in `node`, or [`END`]
-    head: Vec<u32>,
     /// per entry, in the matrices' order: the next entry of the same face (or [`END`]) and
     /// the coface's number
     node: Vec<(u32, u32)>,
@@ -162,34 +160,42 @@ struct Cofaces {
 const END: u32 = u32::MAX;
 
 impl Cofaces {
-    /// The lists, with the number of cofaces of each cell. O(entries + cells).
-    fn new(c: &ChainComplex, off: &[usize], nnz: usize) -> (Self, Vec<u32>) {
-        let total = off[off.len() - 1];
-        let mut count = vec![0u32; total];
-        let mut head = vec![END; total];
+    /// The lists, their heads and the number of cofaces written into `cells` (which start
+    /// with no coface). O(entries + cells).
+    fn new(c: &ChainComplex, off: &[usize], nnz: usize, cells: &mut [Cell]) -> Self {
         let mut node = vec![(END, 0u32); nnz];
         let mut e = 0usize;
         for (m, &base) in c.boundaries().iter().zip(off) {
-            let heads = &mut head[base..base + m.rows()];
-            let counts = &mut count[base..base + m.rows()];
+            let faces = &mut cells[base..base + m.rows()];
             for j in 0..m.cols() {
                 for &r in m.col(j).0 {
-                    let h = &mut heads[r as usize];
-                    node[e] = (*h, j as u32);
-                    *h = e as u32;
-                    counts[r as usize] += 1;
+                    let face = &mut faces[r as usize];
+                    node[e] = (face.head, j as u32);
+                    face.head = e as u32;
+                    face.nc += 1;
                     e += 1;
                 }
             }
         }
-        (Cofaces { head, node }, count)
+        Cofaces { node }
     }
 
-    /// The cofaces of global cell `x`, numbered among the cells of the dimension above.
+    /// The cofaces of a cell whose list starts at `head`, numbered among the cells of the
+    /// dimension above.
     #[inline(always)]
-    fn of(&self, x: usize) -> Walk<'_> {
-        Walk { node: &self.node, at: self.head[x] }
+    fn of(&self, head: u32) -> Walk<'_> {
+        Walk { node: &self.node, at: head }
     }
+}
+
+/// What the sweep keeps of a cell: its numbers of surviving faces (`nb`) and cofaces (`nc`),
+/// the head of its list of cofaces in [`Cofaces`], and its state.
+#[derive(Clone, Copy)]
+struct Cell {
+    nb: u32,
+    nc: u32,
+    head: u32,
+    state: State,
 }
 
 /// The cofaces of one cell ([`Cofaces::of`]).
@@ -219,9 +225,7 @@ struct Sweep<'a, R: Euclid> {
     c: &'a ChainComplex,
     off: Vec<usize>,
     co: Cofaces,
-    state: Vec<State>,
-    nb: Vec<u32>,
-    nc: Vec<u32>,
+    cells: Vec<Cell>,
     /// entries of alive or critical cells in critical rows: (row, value), rows increasing
     extra: FxHashMap<u32, Vec<(u32, R::E)>>,
     log: Vec<(u32, u32)>,
@@ -239,12 +243,13 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     fn new(ring: &'a R, c: &'a ChainComplex, nnz: usize) -> Self {
         let off = offsets(c.counts());
         let total = off[off.len() - 1];
-        let (co, nc) = Cofaces::new(c, &off, nnz);
-        let mut nb = Vec::with_capacity(total);
-        nb.resize(c.count(0), 0);
+        let mut cells = Vec::with_capacity(total);
+        let fresh = |nb: usize| Cell { nb: nb as u32, nc: 0, head: END, state: State::Alive };
+        cells.resize(c.count(0), fresh(0));
         for m in c.boundaries() {
-            nb.extend(m.col_ptr().windows(2).map(|w| (w[1] - w[0]) as u32));
+            cells.extend(m.col_ptr().windows(2).map(|w| fresh(w[1] - w[0])));
         }
+        let co = Cofaces::new(c, &off, nnz, &mut cells);
         let work = Ready::new(c.counts());
         let cursor = off[..c.counts().len()].to_vec();
         Sweep {
@@ -252,9 +257,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             c,
             off,
             co,
-            state: vec![State::Alive; total],
-            nb,
-            nc,
+            cells,
             extra: FxHashMap::default(),
             log: Vec::with_capacity(total / 2),
             work,
@@ -298,10 +301,11 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let edges = self.off[1];
         for v in 0..nv as u32 {
             if uf.find(v) == v {
+                let head = self.cells[v as usize].head;
                 self.leave(v as usize, State::SetAside);
                 self.kept.push(v);
-                for e in self.co.of(v as usize) {
-                    self.nb[edges + e as usize] -= 1;
+                for e in self.co.of(head) {
+                    self.cells[edges + e as usize].nb -= 1;
                 }
             }
         }
@@ -310,19 +314,18 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// Global cell `x` is no longer alive: it takes `state` and its counts are [`GONE`].
     #[inline(always)]
     fn leave(&mut self, x: usize, state: State) {
-        self.state[x] = state;
-        self.nb[x] = GONE;
-        self.nc[x] = GONE;
+        let cell = &mut self.cells[x];
+        cell.state = state;
+        cell.nb = GONE;
+        cell.nc = GONE;
     }
 
     /// Queues every alive cell with a single surviving face or coface.
     fn queue_ready(&mut self) {
         for k in 0..self.c.counts().len() {
-            let cells = self.off[k]..self.off[k + 1];
-            let counts = self.nb[cells.clone()].iter().zip(&self.nc[cells]);
-            for (j, (&nb, &nc)) in counts.enumerate() {
+            for (j, cell) in self.cells[self.off[k]..self.off[k + 1]].iter().enumerate() {
                 // only the set-aside vertices are not alive, and their counts are GONE
-                if nb == 1 || nc == 1 {
+                if cell.nb == 1 || cell.nc == 1 {
                     self.work.push(k, j as u32);
                 }
             }
@@ -340,10 +343,11 @@ impl<'a, R: Euclid> Sweep<'a, R> {
                 }
                 return Some(());
             };
-            if self.state[x] != State::Alive {
+            let cell = self.cells[x];
+            if cell.state != State::Alive {
                 continue;
             }
-            if let Some((k, a, b, coreduction)) = self.pair_of(k, j, x) {
+            if let Some((k, a, b, coreduction)) = self.pair_of(k, j, cell) {
                 self.eliminate(k, a, b, coreduction)?;
             }
         }
@@ -356,7 +360,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let mut pick = None;
         for k in 0..self.cursor.len() {
             let end = self.off[k + 1];
-            while self.cursor[k] < end && self.state[self.cursor[k]] != State::Alive {
+            while self.cursor[k] < end && self.cells[self.cursor[k]].state != State::Alive {
                 self.cursor[k] += 1;
             }
             if self.cursor[k] < end {
@@ -365,21 +369,22 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             }
         }
         let Some((k, x)) = pick else { return false };
+        let mut at = self.cells[x].head;
         self.leave(x, State::Critical);
         self.kept.push(x as u32);
         let j = (x - self.off[k]) as u32;
         let above = self.off[k + 1];
-        let mut at = self.co.head[x];
         while let Some(&(next, y)) = self.co.node.get(at as usize) {
             at = next;
             let gy = above + y as usize;
-            if self.state[gy] == State::Alive {
+            if self.cells[gy].state == State::Alive {
                 let v = self.value(k + 1, y, j);
                 let list = self.extra.entry(gy as u32).or_default();
                 let pos = list.partition_point(|(r, _)| (*r as usize) < x);
                 list.insert(pos, (x as u32, v));
-                self.nb[gy] -= 1;
-                if self.nb[gy] == 1 {
+                let coface = &mut self.cells[gy];
+                coface.nb -= 1;
+                if coface.nb == 1 {
                     self.work.push(k + 1, y);
                 }
             }
@@ -388,22 +393,22 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     }
 
     /// The pair `(k, a, b, coreduction)` — `a` a (k-1)-cell, `b` a k-cell — that alive
-    /// cell `j` of dimension `k0` (global number `x`) makes: with its only surviving face (a coreduction) or its
+    /// cell `j` of dimension `k0` makes: with its only surviving face (a coreduction) or its
     /// only surviving coface (a collapse), through a unit entry.
-    fn pair_of(&self, k0: usize, j: u32, x: usize) -> Option<(usize, u32, u32, bool)> {
-        if self.nb[x] == 1 {
+    fn pair_of(&self, k0: usize, j: u32, cell: Cell) -> Option<(usize, u32, u32, bool)> {
+        if cell.nb == 1 {
             // a cell with a face is of dimension 1 or more
             let base = self.off[k0 - 1];
             let (ri, rv) = self.bd(k0).col(j as usize);
-            if let Some(p) = ri.iter().position(|&r| self.state[base + r as usize] == State::Alive) {
+            if let Some(p) = ri.iter().position(|&r| self.cells[base + r as usize].state == State::Alive) {
                 if self.ring.is_unit(&self.ring.of_i64(rv[p])) {
                     return Some((k0, ri[p], j, true));
                 }
             }
         }
-        if self.nc[x] == 1 {
+        if cell.nc == 1 {
             let base = self.off[k0 + 1];
-            if let Some(y) = self.co.of(x).find(|&y| self.state[base + y as usize] == State::Alive) {
+            if let Some(y) = self.co.of(cell.head).find(|&y| self.cells[base + y as usize].state == State::Alive) {
                 if self.ring.is_unit(&self.value(k0 + 1, y, j)) {
                     return Some((k0 + 1, j, y, false));
                 }
@@ -419,6 +424,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     fn eliminate(&mut self, k: usize, a: u32, b: u32, coreduction: bool) -> Option<()> {
         let ga = self.off[k - 1] + a as usize;
         let gb = self.off[k] + b as usize;
+        let (head_a, head_b) = (self.cells[ga].head, self.cells[gb].head);
         self.leave(ga, State::Paired);
         self.leave(gb, State::Paired);
         self.log.push((ga as u32, gb as u32));
@@ -426,36 +432,35 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             self.extra.remove(&(ga as u32));
             if let Some(fill) = self.extra.remove(&(gb as u32)) {
                 if coreduction {
-                    self.move_fill(k, a, b, &fill)?;
+                    self.move_fill(k, a, b, head_a, &fill)?;
                 }
             }
         }
         // the neighbours of the pair lose it; the other faces of `b` after a coreduction,
         // and the other cofaces of `a` after a collapse, are not alive
         if coreduction {
-            self.release_cofaces(k - 1, a);
+            self.release_cofaces(k, head_a);
         } else {
             self.release_faces(k, b);
         }
         if k >= 2 {
             self.release_faces(k - 1, a);
         }
-        self.release_cofaces(k, b);
+        self.release_cofaces(k + 1, head_b);
         Some(())
     }
 
     /// After the coreduction of (k-1)-cell `a` with k-cell `b`, whose critical rows hold
-    /// `fill`: each other alive coface `y` of `a` becomes `y - (⟨∂y, a⟩ / ⟨∂b, a⟩) b` in
-    /// those rows. `None` on overflow.
-    fn move_fill(&mut self, k: usize, a: u32, b: u32, fill: &[(u32, R::E)]) -> Option<()> {
+    /// `fill`: each other alive coface `y` of `a` (whose list of cofaces starts at `head`)
+    /// becomes `y - (⟨∂y, a⟩ / ⟨∂b, a⟩) b` in those rows. `None` on overflow.
+    fn move_fill(&mut self, k: usize, a: u32, b: u32, head: u32, fill: &[(u32, R::E)]) -> Option<()> {
         let eps = self.value(k, b, a);
-        let ga = self.off[k - 1] + a as usize;
         let base = self.off[k];
-        let mut at = self.co.head[ga];
+        let mut at = head;
         while let Some(&(next, y)) = self.co.node.get(at as usize) {
             at = next;
             let gy = (base + y as usize) as u32;
-            if self.state[gy as usize] != State::Alive {
+            if self.cells[gy as usize].state != State::Alive {
                 continue;
             }
             let lambda = self.ring.div_unit(&self.value(k, y, a), &eps)?;
@@ -468,21 +473,21 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         Some(())
     }
 
-    /// k-cell `z` leaves: its alive cofaces lose a face; those left with one are queued.
+    /// A cell whose cofaces, of dimension `k`, are listed from `head` leaves: its alive
+    /// cofaces lose a face; those left with one are queued.
     #[inline(always)]
-    fn release_cofaces(&mut self, k: usize, z: u32) {
-        let gz = self.off[k] + z as usize;
-        let Sweep { off, co, nb, work, .. } = self;
-        lose_one(co.of(gz), k + 1, off[k + 1], nb, work);
+    fn release_cofaces(&mut self, k: usize, head: u32) {
+        let Sweep { off, co, cells, work, .. } = self;
+        lose_one(co.of(head), k, off[k], cells, |c| &mut c.nb, work);
     }
 
     /// k-cell `z` (k >= 1) leaves: its alive faces lose a coface; those left with one are
     /// queued.
     #[inline(always)]
     fn release_faces(&mut self, k: usize, z: u32) {
-        let Sweep { c, off, nc, work, .. } = self;
+        let Sweep { c, off, cells, work, .. } = self;
         let faces = c.boundaries()[k - 1].col(z as usize).0;
-        lose_one(faces.iter().copied(), k - 1, off[k - 1], nc, work);
+        lose_one(faces.iter().copied(), k - 1, off[k - 1], cells, |c| &mut c.nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
@@ -490,7 +495,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// cost is in their number and their entries only. `None` when an entry of a critical
     /// row does not fit `i64`.
     fn restricted(self, freeze: bool) -> Option<Restricted> {
-        let Sweep { ring, c, off, state, mut nb, extra, log, mut kept, .. } = self;
+        let Sweep { ring, c, off, mut cells, extra, log, mut kept, .. } = self;
         let counts = c.counts();
         let n1 = counts.len();
         let mut ids: Vec<Vec<u32>> = vec![Vec::new(); n1];
@@ -506,17 +511,16 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             }
         } else {
             for (k, v) in ids.iter_mut().enumerate() {
-                v.extend((0..counts[k] as u32).filter(|&j| state[off[k] + j as usize] != State::Paired));
+                v.extend((0..counts[k] as u32).filter(|&j| cells[off[k] + j as usize].state != State::Paired));
             }
         }
         // the number of a survivor among the survivors of its dimension, in the place of
         // its count of faces (no longer needed)
         for (k, v) in ids.iter().enumerate() {
             for (i, &j) in v.iter().enumerate() {
-                nb[off[k] + j as usize] = i as u32;
+                cells[off[k] + j as usize].nb = i as u32;
             }
         }
-        let local = nb;
         let mut mats = Vec::with_capacity(n1.saturating_sub(1));
         let mut col: Vec<(u32, i64)> = Vec::new();
         for k in 1..n1 {
@@ -531,14 +535,14 @@ impl<'a, R: Euclid> Sweep<'a, R> {
                     let (ri, rv) = m.col(j as usize);
                     for (&r, &v) in ri.iter().zip(rv) {
                         let g = off[k - 1] + r as usize;
-                        if state[g] == State::Alive {
-                            col.push((local[g], v));
+                        if cells[g].state == State::Alive {
+                            col.push((cells[g].nb, v));
                         }
                     }
                 }
                 if let Some(list) = extra.get(&((off[k] + j as usize) as u32)) {
                     for (r, v) in list {
-                        col.push((local[*r as usize], ring.to_i64(v)?));
+                        col.push((cells[*r as usize].nb, ring.to_i64(v)?));
                     }
                     col.sort_unstable_by_key(|e| e.0);
                 }
@@ -560,12 +564,19 @@ impl<'a, R: Euclid> Sweep<'a, R> {
 }
 
 /// Each cell among `linked` (cells `j` of dimension `k`, global numbers `base + j`) has one
-/// neighbour less in `count`; those left with one are queued. The counts of cells no longer
-/// alive start at [`GONE`], so they are never queued.
+/// neighbour less in its `count` (`nb` or `nc`); those left with one are queued. The counts
+/// of cells no longer alive start at [`GONE`], so they are never queued.
 #[inline(always)]
-fn lose_one(linked: impl Iterator<Item = u32>, k: usize, base: usize, count: &mut [u32], work: &mut Ready) {
+fn lose_one(
+    linked: impl Iterator<Item = u32>,
+    k: usize,
+    base: usize,
+    cells: &mut [Cell],
+    count: impl Fn(&mut Cell) -> &mut u32,
+    work: &mut Ready,
+) {
     for j in linked {
-        let n = &mut count[base + j as usize];
+        let n = count(&mut cells[base + j as usize]);
         *n = n.wrapping_sub(1);
         if *n == 1 {
             work.push(k, j);
