@@ -189,13 +189,15 @@ impl Cofaces {
 }
 
 /// What the sweep keeps of a cell: its numbers of surviving faces (`nb`) and cofaces (`nc`),
-/// the head of its list of cofaces in [`Cofaces`], and its state.
+/// the head of its list of cofaces in [`Cofaces`], its state, and whether it has entries in
+/// the critical rows (so that most pairs look up no critical row at all).
 #[derive(Clone, Copy)]
 struct Cell {
     nb: u32,
     nc: u32,
     head: u32,
     state: State,
+    filled: bool,
 }
 
 /// The cofaces of one cell ([`Cofaces::of`]).
@@ -228,6 +230,8 @@ struct Sweep<'a, R: Euclid> {
     cells: Vec<Cell>,
     /// entries of alive or critical cells in critical rows: (row, value), rows increasing
     extra: FxHashMap<u32, Vec<(u32, R::E)>>,
+    /// a buffer for the updates of the critical rows
+    scratch: Vec<(u32, R::E)>,
     log: Vec<(u32, u32)>,
     /// lowest cell number first: the sweep then moves through the complex in numbering
     /// order, which keeps its memory accesses close together (a stack gets stuck far
@@ -244,7 +248,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         let off = offsets(c.counts());
         let total = off[off.len() - 1];
         let mut cells = Vec::with_capacity(total);
-        let fresh = |nb: usize| Cell { nb: nb as u32, nc: 0, head: END, state: State::Alive };
+        let fresh = |nb: usize| Cell { nb: nb as u32, nc: 0, head: END, state: State::Alive, filled: false };
         cells.resize(c.count(0), fresh(0));
         for m in c.boundaries() {
             cells.extend(m.col_ptr().windows(2).map(|w| fresh(w[1] - w[0])));
@@ -259,6 +263,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             co,
             cells,
             extra: FxHashMap::default(),
+            scratch: Vec::new(),
             log: Vec::with_capacity(total / 2),
             work,
             cursor,
@@ -383,6 +388,7 @@ impl<'a, R: Euclid> Sweep<'a, R> {
                 let pos = list.partition_point(|(r, _)| (*r as usize) < x);
                 list.insert(pos, (x as u32, v));
                 let coface = &mut self.cells[gy];
+                coface.filled = true;
                 coface.nb -= 1;
                 if coface.nb == 1 {
                     self.work.push(k + 1, y);
@@ -424,12 +430,15 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     fn eliminate(&mut self, k: usize, a: u32, b: u32, coreduction: bool) -> Option<()> {
         let ga = self.off[k - 1] + a as usize;
         let gb = self.off[k] + b as usize;
-        let (head_a, head_b) = (self.cells[ga].head, self.cells[gb].head);
+        let (head_a, filled_a) = (self.cells[ga].head, self.cells[ga].filled);
+        let (head_b, filled_b) = (self.cells[gb].head, self.cells[gb].filled);
         self.leave(ga, State::Paired);
         self.leave(gb, State::Paired);
         self.log.push((ga as u32, gb as u32));
-        if !self.extra.is_empty() {
+        if filled_a {
             self.extra.remove(&(ga as u32));
+        }
+        if filled_b {
             if let Some(fill) = self.extra.remove(&(gb as u32)) {
                 if coreduction {
                     self.move_fill(k, a, b, head_a, &fill)?;
@@ -465,10 +474,14 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             }
             let lambda = self.ring.div_unit(&self.value(k, y, a), &eps)?;
             let list = self.extra.entry(gy).or_default();
-            *list = axpy(self.ring, list, &lambda, fill)?;
-            if list.is_empty() {
+            axpy(self.ring, list, &lambda, fill, &mut self.scratch)?;
+            // the updated row takes the buffer, and the old row becomes the buffer
+            std::mem::swap(list, &mut self.scratch);
+            let empty = list.is_empty();
+            if empty {
                 self.extra.remove(&gy);
             }
+            self.cells[gy as usize].filled = !empty;
         }
         Some(())
     }
@@ -659,10 +672,17 @@ impl Ready {
     }
 }
 
-/// `list - lambda * fill` for sorted sparse rows; zeros dropped.
-fn axpy<R: Ring>(ring: &R, list: &[(u32, R::E)], lambda: &R::E, fill: &[(u32, R::E)]) -> Option<Vec<(u32, R::E)>> {
+/// `out = list - lambda * fill` for sorted sparse rows; zeros dropped.
+fn axpy<R: Ring>(
+    ring: &R,
+    list: &[(u32, R::E)],
+    lambda: &R::E,
+    fill: &[(u32, R::E)],
+    out: &mut Vec<(u32, R::E)>,
+) -> Option<()> {
     let zero = ring.of_i64(0);
-    let mut out = Vec::with_capacity(list.len() + fill.len());
+    out.clear();
+    out.reserve(list.len() + fill.len());
     let (mut i, mut j) = (0, 0);
     while i < list.len() || j < fill.len() {
         if j == fill.len() || (i < list.len() && list[i].0 < fill[j].0) {
@@ -683,7 +703,7 @@ fn axpy<R: Ring>(ring: &R, list: &[(u32, R::E)], lambda: &R::E, fill: &[(u32, R:
             j += 1;
         }
     }
-    Some(out)
+    Some(())
 }
 
 /// Lifts a k-chain of the reduced complex (numbered as in `pre.chain`) to a k-chain of the
