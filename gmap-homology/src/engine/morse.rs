@@ -29,6 +29,14 @@
 //! lowest number first (lowest dimension, then order of smallest dart), so the sweep walks
 //! the arrays nearly in order. On manifolds, cube grids and the simplicial counterparts of
 //! G-maps what survives is a handful of cells.
+//!
+//! ## Memory
+//!
+//! The faces of a cell are read from the input's boundary matrices. Besides them the pass
+//! keeps 16 bytes per cell (its two counts, the head of its list of cofaces, its state and
+//! whether it has entries in critical rows), 8 bytes per entry (the lists of cofaces,
+//! threaded through the entries in one pass over the matrices), a bit per cell for the
+//! waiting cells, and the log of pairs.
 
 use std::borrow::Cow;
 
@@ -89,9 +97,8 @@ impl Restricted {
 /// [`crate::engine::reduce`]), so the output is the restriction of the input plus those rows.
 /// `None` when the fill overflows.
 ///
-/// O(entries + cells + fill in the critical rows); besides the input it touches one byte and
-/// two `u32` counts per cell, the transposed boundaries (a `u32` per entry and per cell) and
-/// the log of pairs.
+/// O(entries + cells + fill in the critical rows); for the memory it touches besides the
+/// input, see the module documentation.
 pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
     let total: usize = counts.iter().sum();
