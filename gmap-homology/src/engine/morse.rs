@@ -292,33 +292,45 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// When `∂_1` is made of `v - w` columns, sets aside the smallest vertex of each
     /// component of the 1-skeleton: `H(X) = H(X, {v_1..v_c}) ⊕ Z^c` in degree 0, and the
     /// relative complex is the restriction to the other cells.
+    ///
+    /// When every vertex but the first has an edge to a smaller one, the 1-skeleton is
+    /// connected (each vertex reaches vertex 0 through smaller ones) and vertex 0 is the
+    /// only one set aside; otherwise a union-find of the edges finds the components.
     fn set_aside_base_vertices(&mut self) {
         let c = self.c;
         if c.counts().len() < 2 {
             return;
         }
         let nv = c.count(0);
-        let mut uf = UnionFind::new(nv);
         let m = c.boundary(1);
+        let mut smaller_neighbour = vec![false; nv];
         for j in 0..m.cols() {
             match m.col(j) {
-                (&[v, w], &[x, y]) if x.unsigned_abs() == 1 && y == -x => {
-                    uf.union(v, w);
-                }
+                // rows increase: `v < w`
+                (&[_, w], &[x, y]) if x.unsigned_abs() == 1 && y == -x => smaller_neighbour[w as usize] = true,
                 (&[], _) => {}
                 // an edge that is not `v - w`: no vertex is set aside
                 _ => return,
             }
         }
-        let edges = self.off[1];
-        for v in 0..nv as u32 {
-            if uf.find(v) == v {
-                let head = self.cells[v as usize].head;
-                self.leave(v as usize, State::SetAside);
-                self.kept.push(v);
-                for e in self.co.of(head) {
-                    self.cells[edges + e as usize].nb -= 1;
+        let roots: Vec<u32> = if smaller_neighbour.iter().skip(1).all(|&s| s) {
+            (0..nv.min(1) as u32).collect()
+        } else {
+            let mut uf = UnionFind::new(nv);
+            for j in 0..m.cols() {
+                if let (&[v, w], _) = m.col(j) {
+                    uf.union(v, w);
                 }
+            }
+            (0..nv as u32).filter(|&v| uf.find(v) == v).collect()
+        };
+        let edges = self.off[1];
+        for v in roots {
+            let head = self.cells[v as usize].head;
+            self.leave(v as usize, State::SetAside);
+            self.kept.push(v);
+            for e in self.co.of(head) {
+                self.cells[edges + e as usize].nb -= 1;
             }
         }
     }
