@@ -810,6 +810,26 @@ mod tests {
     }
 
     #[test]
+    fn one_vertex_per_component_is_set_aside() {
+        // two filled triangles, on vertices 0 1 2 and 3 4 5: the smallest vertex of each stays
+        let tri = |o: usize, e: usize| {
+            vec![(o, e, -1), (o + 1, e, 1), (o + 1, e + 1, -1), (o + 2, e + 1, 1), (o, e + 2, -1), (o + 2, e + 2, 1)]
+        };
+        let mut d1 = tri(0, 0);
+        d1.extend(tri(3, 3));
+        let d2 = vec![(0, 0, 1), (1, 0, 1), (2, 0, -1), (3, 1, 1), (4, 1, 1), (5, 1, -1)];
+        let r = prereduce(&Zi64, &complex(vec![6, 6, 2], vec![d1, d2]), true).unwrap();
+        assert_eq!(r.chain.counts(), &[2, 0, 0]);
+        assert_eq!(r.ids[0], vec![0, 3]);
+        // the path 0 - 2 - 1: vertex 1 has no smaller neighbour, yet one component
+        let c = complex(vec![3, 2], vec![vec![(0, 0, -1), (2, 0, 1), (1, 1, -1), (2, 1, 1)]]);
+        let r = prereduce(&Zi64, &c, true).unwrap();
+        assert_eq!(r.chain.counts(), &[1, 0]);
+        assert_eq!(r.ids[0], vec![0]);
+        assert_eq!(r.log.len(), 2);
+    }
+
+    #[test]
     fn non_unit_entries_are_not_paired() {
         // the projective plane: one vertex, one edge (a loop), one face with ∂ = 2a
         let c = complex(vec![1, 1, 1], vec![vec![], vec![(0, 0, 2)]]);
