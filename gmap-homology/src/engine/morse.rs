@@ -29,10 +29,19 @@
 //! lowest number first (lowest dimension, then order of smallest dart), so the sweep walks
 //! the arrays nearly in order. On manifolds, cube grids and the simplicial counterparts of
 //! G-maps what survives is a handful of cells.
+//!
+//! ## Memory
+//!
+//! The faces of a cell are read from the input's boundary matrices. Besides them the pass
+//! keeps 16 bytes per cell (its two counts, the head of its list of cofaces, its state and
+//! whether it has entries in critical rows), 8 bytes per entry (the lists of cofaces,
+//! threaded through the entries in one pass over the matrices), a bit per cell for the
+//! waiting cells, and the log of pairs.
 
-use std::collections::HashMap;
+use std::borrow::Cow;
 
 use gmap_core::union_find::UnionFind;
+use rustc_hash::FxHashMap;
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::ring::{Euclid, Ring};
@@ -52,16 +61,14 @@ enum State {
     Critical,
 }
 
-/// bit 31 of a link: the entry is a unit
-const UNIT: u32 = 1 << 31;
-/// cells and entries are numbered in 31 bits
-const LIMIT: usize = 1 << 31;
+/// Cells and entries are numbered in 32 bits: a complex with more of either is handed on
+/// as it is.
+const LIMIT: usize = u32::MAX as usize;
 
-/// The cell of a link (its global number, without the [`UNIT`] bit).
-#[inline]
-fn cell(link: u32) -> usize {
-    (link & !UNIT) as usize
-}
+/// The counts of a cell that is no longer alive: decreasing them never reaches 1 before
+/// far more than a cell's neighbours are gone, so the releases need not look at the state
+/// of the cell (and a wrapped count would only queue a cell that the sweep then skips).
+const GONE: u32 = 1 << 31;
 
 /// The complex left by [`prereduce`]: the surviving cells and the boundary between them.
 #[derive(Debug)]
@@ -88,116 +95,150 @@ impl Restricted {
 /// a cell of the lowest dimension left **critical** and goes on: the cell stays in the output
 /// and the later coreductions add fill in its row only (the frozen rows of
 /// [`crate::engine::reduce`]), so the output is the restriction of the input plus those rows.
-/// `None` when the fill overflows. O(entries + cells + fill in the critical rows).
+/// `None` when the fill overflows.
+///
+/// O(entries + cells + fill in the critical rows); for the memory it touches besides the
+/// input, see the module documentation.
 pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> Option<Restricted> {
     let counts = c.counts();
     let total: usize = counts.iter().sum();
-    let nnz: usize = (1..counts.len()).map(|k| c.boundary(k).nnz()).sum();
+    let nnz: usize = c.boundaries().iter().map(SparseMatrix::nnz).sum();
     if total >= LIMIT || nnz >= LIMIT {
-        // beyond 31-bit numbers: hand the complex on as it is
+        // beyond 32-bit numbers: hand the complex on as it is
         let ids = counts.iter().map(|&m| (0..m as u32).collect()).collect();
         return Some(Restricted { chain: c.clone(), ids, log: Vec::new(), off: Vec::new() });
     }
-    let mut sweep = Sweep::new(ring, c, Links::new(ring, c, nnz));
+    let c = nonzero_part(ring, c);
+    let mut sweep = Sweep::new(ring, &c, nnz);
     sweep.set_aside_base_vertices();
     sweep.queue_ready();
     sweep.run(freeze)?;
-    sweep.restricted()
+    sweep.restricted(freeze)
+}
+
+/// `c` without its entries that are zero in `ring` (`c` itself when it has none, always the
+/// case over `Z`). O(entries).
+fn nonzero_part<'c, R: Ring>(ring: &R, c: &'c ChainComplex) -> Cow<'c, ChainComplex> {
+    let zero = |v: i64| ring.is_zero(&ring.of_i64(v));
+    let has_zero = |m: &SparseMatrix| (0..m.cols()).any(|j| m.col(j).1.iter().any(|&v| zero(v)));
+    if ring.keeps_nonzero_integers() || !c.boundaries().iter().any(has_zero) {
+        return Cow::Borrowed(c);
+    }
+    let mats = c
+        .boundaries()
+        .iter()
+        .map(|m| {
+            let cols: Vec<Vec<(u32, i64)>> = (0..m.cols())
+                .map(|j| {
+                    let (ri, rv) = m.col(j);
+                    ri.iter().zip(rv).filter(|&(_, &v)| !zero(v)).map(|(&r, &v)| (r, v)).collect()
+                })
+                .collect();
+            SparseMatrix::try_from_columns(m.rows(), &cols).expect("the entries of a valid matrix stay valid")
+        })
+        .collect();
+    Cow::Owned(ChainComplex::try_new_unchecked_dd(c.counts().to_vec(), mats).expect("the shapes are kept"))
 }
 
 /// Global cell numbers: `off[k]` is the number of the first k-cell, `off[n + 1]` the number
 /// of cells.
-fn offsets(counts: &[usize]) -> Vec<u32> {
+fn offsets(counts: &[usize]) -> Vec<usize> {
     let mut off = Vec::with_capacity(counts.len() + 1);
-    let mut acc = 0u32;
+    let mut acc = 0;
     for &m in counts {
         off.push(acc);
-        acc += m as u32;
+        acc += m;
     }
     off.push(acc);
     off
 }
 
-/// The faces and cofaces of every cell through its ring-nonzero entries, as links (global
-/// cell numbers, [`UNIT`] set for a unit entry): the boundary in compressed rows per cell,
-/// and its transpose.
-struct Links {
-    /// `off[k]`: global number of the first k-cell
-    off: Vec<u32>,
-    fptr: Vec<u32>,
-    faces: Vec<u32>,
-    cptr: Vec<u32>,
-    cofaces: Vec<u32>,
+/// The cofaces of every cell, as a list per cell threaded through the entries of the
+/// boundary matrices: one pass over the matrices builds it (a transposed copy would take a
+/// counting pass more), and the lists hold the numbers of the cofaces among the cells of the
+/// dimension above, decreasing. (The faces are read from the boundary matrices themselves.)
+struct Cofaces {
+    /// per entry, in the matrices' order: the next entry of the same face (or [`END`]) and
+    /// the coface's number
+    node: Vec<(u32, u32)>,
 }
 
-impl Links {
-    fn new<R: Euclid>(ring: &R, c: &ChainComplex, nnz: usize) -> Self {
-        let counts = c.counts();
-        let off = offsets(counts);
-        let total = off[counts.len()] as usize;
-        let mut fptr: Vec<u32> = Vec::with_capacity(total + 1);
-        let mut faces: Vec<u32> = Vec::with_capacity(nnz);
-        fptr.extend(std::iter::repeat_n(0, counts.first().copied().unwrap_or(0) + 1));
-        for k in 1..counts.len() {
-            let m = c.boundary(k);
-            let base = off[k - 1];
+/// The end of a list of cofaces.
+const END: u32 = u32::MAX;
+
+impl Cofaces {
+    /// The lists, their heads and the number of cofaces written into `cells` (which start
+    /// with no coface). O(entries + cells).
+    fn new(c: &ChainComplex, off: &[usize], nnz: usize, cells: &mut [Cell]) -> Self {
+        let mut node = vec![(END, 0u32); nnz];
+        let mut e = 0usize;
+        for (m, &base) in c.boundaries().iter().zip(off) {
+            let faces = &mut cells[base..base + m.rows()];
             for j in 0..m.cols() {
-                let (ri, rv) = m.col(j);
-                for (&r, &v) in ri.iter().zip(rv) {
-                    let x = ring.of_i64(v);
-                    if !ring.is_zero(&x) {
-                        faces.push((base + r) | if ring.is_unit(&x) { UNIT } else { 0 });
-                    }
+                for &r in m.col(j).0 {
+                    let face = &mut faces[r as usize];
+                    node[e] = (face.head, j as u32);
+                    face.head = e as u32;
+                    face.nc += 1;
+                    e += 1;
                 }
-                fptr.push(faces.len() as u32);
             }
         }
-        let mut cptr = vec![0u32; total + 1];
-        for &r in &faces {
-            cptr[cell(r) + 1] += 1;
-        }
-        for i in 0..total {
-            cptr[i + 1] += cptr[i];
-        }
-        let mut cofaces = vec![0u32; faces.len()];
-        let mut fill = cptr.clone();
-        for col in 0..total {
-            for &r in &faces[fptr[col] as usize..fptr[col + 1] as usize] {
-                let slot = &mut fill[cell(r)];
-                cofaces[*slot as usize] = col as u32 | (r & UNIT);
-                *slot += 1;
-            }
-        }
-        Links { off, fptr, faces, cptr, cofaces }
+        Cofaces { node }
     }
 
-    fn total(&self) -> usize {
-        self.fptr.len() - 1
+    /// The cofaces of a cell whose list starts at `head`, numbered among the cells of the
+    /// dimension above.
+    #[inline(always)]
+    fn of(&self, head: u32) -> Walk<'_> {
+        Walk { node: &self.node, at: head }
     }
+}
 
-    #[inline]
-    fn faces(&self, x: usize) -> &[u32] {
-        &self.faces[self.fptr[x] as usize..self.fptr[x + 1] as usize]
-    }
+/// What the sweep keeps of a cell: its numbers of surviving faces (`nb`) and cofaces (`nc`),
+/// the head of its list of cofaces in [`Cofaces`], its state, and whether it has entries in
+/// the critical rows (so that most pairs look up no critical row at all).
+#[derive(Clone, Copy)]
+struct Cell {
+    nb: u32,
+    nc: u32,
+    head: u32,
+    state: State,
+    filled: bool,
+}
 
-    #[inline]
-    fn cofaces(&self, x: usize) -> &[u32] {
-        &self.cofaces[self.cptr[x] as usize..self.cptr[x + 1] as usize]
+/// The cofaces of one cell ([`Cofaces::of`]).
+struct Walk<'a> {
+    node: &'a [(u32, u32)],
+    at: u32,
+}
+
+impl Iterator for Walk<'_> {
+    type Item = u32;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<u32> {
+        let &(next, y) = self.node.get(self.at as usize)?;
+        self.at = next;
+        Some(y)
     }
 }
 
 /// The pass in progress: per cell its state and its numbers of surviving faces (`nb`) and
 /// cofaces (`nc`), the cells waiting to be looked at, the pairs eliminated so far, and the
-/// entries of the critical rows.
+/// entries of the critical rows. Cells are named by global number (`off[k] + j`) in the
+/// per-cell arrays, the log and the critical rows, and by dimension and number `(k, j)`
+/// everywhere else.
 struct Sweep<'a, R: Euclid> {
     ring: &'a R,
     c: &'a ChainComplex,
-    links: Links,
-    state: Vec<State>,
-    nb: Vec<u32>,
-    nc: Vec<u32>,
+    off: Vec<usize>,
+    co: Cofaces,
+    cells: Vec<Cell>,
     /// entries of alive or critical cells in critical rows: (row, value), rows increasing
-    extra: HashMap<u32, Vec<(u32, R::E)>>,
+    extra: FxHashMap<u32, Vec<(u32, R::E)>>,
+    /// a buffer for the updates of the critical rows
+    scratch: Vec<(u32, R::E)>,
     log: Vec<(u32, u32)>,
     /// lowest cell number first: the sweep then moves through the complex in numbering
     /// order, which keeps its memory accesses close together (a stack gets stuck far
@@ -205,68 +246,112 @@ struct Sweep<'a, R: Euclid> {
     work: Ready,
     /// per dimension, the first cell that may still be alive (critical cells are taken in order)
     cursor: Vec<usize>,
+    /// the cells set aside or made critical (global numbers): with `freeze`, the survivors
+    kept: Vec<u32>,
 }
 
 impl<'a, R: Euclid> Sweep<'a, R> {
-    fn new(ring: &'a R, c: &'a ChainComplex, links: Links) -> Self {
-        let total = links.total();
-        let nb = links.fptr.windows(2).map(|w| w[1] - w[0]).collect();
-        let nc = links.cptr.windows(2).map(|w| w[1] - w[0]).collect();
-        let work = Ready::new(&links.off);
-        let cursor = links.off[..c.counts().len()].iter().map(|&o| o as usize).collect();
+    fn new(ring: &'a R, c: &'a ChainComplex, nnz: usize) -> Self {
+        let off = offsets(c.counts());
+        let total = off[off.len() - 1];
+        let mut cells = Vec::with_capacity(total);
+        let fresh = |nb: usize| Cell { nb: nb as u32, nc: 0, head: END, state: State::Alive, filled: false };
+        cells.resize(c.count(0), fresh(0));
+        for m in c.boundaries() {
+            cells.extend(m.col_ptr().windows(2).map(|w| fresh(w[1] - w[0])));
+        }
+        let co = Cofaces::new(c, &off, nnz, &mut cells);
+        let work = Ready::new(c.counts());
+        let cursor = off[..c.counts().len()].to_vec();
         Sweep {
             ring,
             c,
-            links,
-            state: vec![State::Alive; total],
-            nb,
-            nc,
-            extra: HashMap::new(),
+            off,
+            co,
+            cells,
+            extra: FxHashMap::default(),
+            scratch: Vec::new(),
             log: Vec::with_capacity(total / 2),
             work,
             cursor,
+            kept: Vec::new(),
         }
     }
 
-    /// `⟨∂x, y⟩` from the input, for a k-cell `x` and a (k-1)-cell `y` (global numbers).
-    fn value(&self, x: usize, y: usize) -> R::E {
-        let off = &self.links.off;
-        let k = off.partition_point(|&o| o as usize <= x) - 1;
-        self.ring.of_i64(self.c.boundary(k).get(y - off[k - 1] as usize, x - off[k] as usize))
+    /// `∂_k`, for `k >= 1`.
+    #[inline]
+    fn bd(&self, k: usize) -> &'a SparseMatrix {
+        &self.c.boundaries()[k - 1]
+    }
+
+    /// `⟨∂x, y⟩` from the input, for k-cell `x` and (k-1)-cell `y`.
+    fn value(&self, k: usize, x: u32, y: u32) -> R::E {
+        self.ring.of_i64(self.bd(k).get(y as usize, x as usize))
     }
 
     /// When `∂_1` is made of `v - w` columns, sets aside the smallest vertex of each
     /// component of the 1-skeleton: `H(X) = H(X, {v_1..v_c}) ⊕ Z^c` in degree 0, and the
     /// relative complex is the restriction to the other cells.
+    ///
+    /// When every vertex but the first has an edge to a smaller one, the 1-skeleton is
+    /// connected (each vertex reaches vertex 0 through smaller ones) and vertex 0 is the
+    /// only one set aside; otherwise a union-find of the edges finds the components.
     fn set_aside_base_vertices(&mut self) {
         let c = self.c;
-        if c.counts().len() < 2 || !edges_are_differences(c.boundary(1)) {
+        if c.counts().len() < 2 {
             return;
         }
         let nv = c.count(0);
-        let mut uf = UnionFind::new(nv);
         let m = c.boundary(1);
+        let mut smaller_neighbour = vec![false; nv];
         for j in 0..m.cols() {
-            let (ri, _) = m.col(j);
-            if ri.len() == 2 {
-                uf.union(ri[0], ri[1]);
+            match m.col(j) {
+                // rows increase: `v < w`
+                (&[_, w], &[x, y]) if x.unsigned_abs() == 1 && y == -x => smaller_neighbour[w as usize] = true,
+                (&[], _) => {}
+                // an edge that is not `v - w`: no vertex is set aside
+                _ => return,
             }
         }
-        for v in 0..nv as u32 {
-            if uf.find(v) == v {
-                self.state[v as usize] = State::SetAside;
-                for &e in self.links.cofaces(v as usize) {
-                    self.nb[cell(e)] -= 1;
+        let roots: Vec<u32> = if smaller_neighbour.iter().skip(1).all(|&s| s) {
+            (0..nv.min(1) as u32).collect()
+        } else {
+            let mut uf = UnionFind::new(nv);
+            for j in 0..m.cols() {
+                if let (&[v, w], _) = m.col(j) {
+                    uf.union(v, w);
                 }
+            }
+            (0..nv as u32).filter(|&v| uf.find(v) == v).collect()
+        };
+        let edges = self.off[1];
+        for v in roots {
+            let head = self.cells[v as usize].head;
+            self.leave(v as usize, State::SetAside);
+            self.kept.push(v);
+            for e in self.co.of(head) {
+                self.cells[edges + e as usize].nb -= 1;
             }
         }
     }
 
+    /// Global cell `x` is no longer alive: it takes `state` and its counts are [`GONE`].
+    #[inline(always)]
+    fn leave(&mut self, x: usize, state: State) {
+        let cell = &mut self.cells[x];
+        cell.state = state;
+        cell.nb = GONE;
+        cell.nc = GONE;
+    }
+
     /// Queues every alive cell with a single surviving face or coface.
     fn queue_ready(&mut self) {
-        for x in 0..self.state.len() {
-            if self.state[x] == State::Alive && (self.nb[x] == 1 || self.nc[x] == 1) {
-                self.work.push(x as u32);
+        for k in 0..self.c.counts().len() {
+            for (j, cell) in self.cells[self.off[k]..self.off[k + 1]].iter().enumerate() {
+                // only the set-aside vertices are not alive, and their counts are GONE
+                if cell.nb == 1 || cell.nc == 1 {
+                    self.work.push(k, j as u32);
+                }
             }
         }
     }
@@ -276,18 +361,18 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// fill of the critical rows overflows.
     fn run(&mut self, freeze: bool) -> Option<()> {
         loop {
-            let Some(x) = self.work.pop() else {
+            let Some((k, j, x)) = self.work.pop() else {
                 if freeze && self.make_critical() {
                     continue;
                 }
                 return Some(());
             };
-            let x = x as usize;
-            if self.state[x] != State::Alive {
+            let cell = self.cells[x];
+            if cell.state != State::Alive {
                 continue;
             }
-            if let Some((a, b, coreduction)) = self.pair_of(x) {
-                self.eliminate(a, b, coreduction)?;
+            if let Some((k, a, b, coreduction)) = self.pair_of(k, j, cell) {
+                self.eliminate(k, a, b, coreduction)?;
             }
         }
     }
@@ -296,115 +381,177 @@ impl<'a, R: Euclid> Sweep<'a, R> {
     /// alive. The cell has no alive face, so only its cofaces change: their entries in its
     /// row move to the critical rows.
     fn make_critical(&mut self) -> bool {
-        let off = &self.links.off;
         let mut pick = None;
         for k in 0..self.cursor.len() {
-            let end = off[k + 1] as usize;
-            while self.cursor[k] < end && self.state[self.cursor[k]] != State::Alive {
+            let end = self.off[k + 1];
+            while self.cursor[k] < end && self.cells[self.cursor[k]].state != State::Alive {
                 self.cursor[k] += 1;
             }
             if self.cursor[k] < end {
-                pick = Some(self.cursor[k]);
+                pick = Some((k, self.cursor[k]));
                 break;
             }
         }
-        let Some(x) = pick else { return false };
-        self.state[x] = State::Critical;
-        for &e in self.links.cofaces(x) {
-            let y = cell(e);
-            if self.state[y] == State::Alive {
-                let v = self.value(y, x);
-                let list = self.extra.entry(y as u32).or_default();
+        let Some((k, x)) = pick else { return false };
+        let mut at = self.cells[x].head;
+        self.leave(x, State::Critical);
+        self.kept.push(x as u32);
+        let j = (x - self.off[k]) as u32;
+        let above = self.off[k + 1];
+        while let Some(&(next, y)) = self.co.node.get(at as usize) {
+            at = next;
+            let gy = above + y as usize;
+            if self.cells[gy].state == State::Alive {
+                let v = self.value(k + 1, y, j);
+                let list = self.extra.entry(gy as u32).or_default();
                 let pos = list.partition_point(|(r, _)| (*r as usize) < x);
                 list.insert(pos, (x as u32, v));
-                self.nb[y] -= 1;
-                if self.nb[y] == 1 {
-                    self.work.push(y as u32);
+                let coface = &mut self.cells[gy];
+                coface.filled = true;
+                coface.nb -= 1;
+                if coface.nb == 1 {
+                    self.work.push(k + 1, y);
                 }
             }
         }
         true
     }
 
-    /// The pair `(a, b, coreduction)` that alive cell `x` makes: with its only surviving face
-    /// (a coreduction) or its only surviving coface (a collapse), through a unit entry.
-    fn pair_of(&self, x: usize) -> Option<(usize, usize, bool)> {
-        let alive = |e: &&u32| self.state[cell(**e)] == State::Alive;
-        if self.nb[x] == 1 {
-            if let Some(&e) = self.links.faces(x).iter().find(alive) {
-                if e & UNIT != 0 {
-                    return Some((cell(e), x, true));
+    /// The pair `(k, a, b, coreduction)` — `a` a (k-1)-cell, `b` a k-cell — that alive
+    /// cell `j` of dimension `k0` makes: with its only surviving face (a coreduction) or its
+    /// only surviving coface (a collapse), through a unit entry.
+    fn pair_of(&self, k0: usize, j: u32, cell: Cell) -> Option<(usize, u32, u32, bool)> {
+        if cell.nb == 1 {
+            // a cell with a face is of dimension 1 or more
+            let base = self.off[k0 - 1];
+            let (ri, rv) = self.bd(k0).col(j as usize);
+            if let Some(p) = ri.iter().position(|&r| self.cells[base + r as usize].state == State::Alive) {
+                if self.ring.is_unit(&self.ring.of_i64(rv[p])) {
+                    return Some((k0, ri[p], j, true));
                 }
             }
         }
-        if self.nc[x] == 1 {
-            if let Some(&e) = self.links.cofaces(x).iter().find(alive) {
-                if e & UNIT != 0 {
-                    return Some((x, cell(e), false));
+        if cell.nc == 1 {
+            let base = self.off[k0 + 1];
+            if let Some(y) = self.co.of(cell.head).find(|&y| self.cells[base + y as usize].state == State::Alive) {
+                if self.ring.is_unit(&self.value(k0 + 1, y, j)) {
+                    return Some((k0 + 1, j, y, false));
                 }
             }
         }
         None
     }
 
-    /// Eliminates the pair `(a, b)`: logs it, moves the critical-row entries of `b` onto the
-    /// other cofaces of `a` after a coreduction (a collapse changes no other column), and
-    /// updates the counts of the neighbours. `None` when the fill overflows.
-    fn eliminate(&mut self, a: usize, b: usize, coreduction: bool) -> Option<()> {
-        self.state[a] = State::Paired;
-        self.state[b] = State::Paired;
-        self.log.push((a as u32, b as u32));
-        self.extra.remove(&(a as u32));
-        if let Some(fill) = self.extra.remove(&(b as u32)) {
-            if coreduction {
-                let eps = self.value(b, a);
-                for &e in self.links.cofaces(a) {
-                    let y = cell(e);
-                    if self.state[y] != State::Alive {
-                        continue;
-                    }
-                    let lambda = self.ring.div_unit(&self.value(y, a), &eps)?;
-                    let list = self.extra.entry(y as u32).or_default();
-                    *list = axpy(self.ring, list, &lambda, &fill)?;
-                    if list.is_empty() {
-                        self.extra.remove(&(y as u32));
-                    }
+    /// Eliminates the pair of (k-1)-cell `a` and k-cell `b`: logs it, moves the
+    /// critical-row entries of `b` onto the other cofaces of `a` after a coreduction (a
+    /// collapse changes no other column), and updates the counts of the neighbours. `None`
+    /// when the fill overflows.
+    fn eliminate(&mut self, k: usize, a: u32, b: u32, coreduction: bool) -> Option<()> {
+        let ga = self.off[k - 1] + a as usize;
+        let gb = self.off[k] + b as usize;
+        let (head_a, filled_a) = (self.cells[ga].head, self.cells[ga].filled);
+        let (head_b, filled_b) = (self.cells[gb].head, self.cells[gb].filled);
+        self.leave(ga, State::Paired);
+        self.leave(gb, State::Paired);
+        self.log.push((ga as u32, gb as u32));
+        if filled_a {
+            self.extra.remove(&(ga as u32));
+        }
+        if filled_b {
+            if let Some(fill) = self.extra.remove(&(gb as u32)) {
+                if coreduction {
+                    self.move_fill(k, a, b, head_a, &fill)?;
                 }
             }
         }
-        self.release(a);
-        self.release(b);
+        // the neighbours of the pair lose it; the other faces of `b` after a coreduction,
+        // and the other cofaces of `a` after a collapse, are not alive
+        if coreduction {
+            self.release_cofaces(k, head_a);
+        } else {
+            self.release_faces(k, b);
+        }
+        if k >= 2 {
+            self.release_faces(k - 1, a);
+        }
+        self.release_cofaces(k + 1, head_b);
         Some(())
     }
 
-    /// A cell `z` leaves: its alive cofaces lose a face and its alive faces a coface; those
-    /// left with one are queued.
-    #[inline]
-    fn release(&mut self, z: usize) {
-        let Sweep { links, state, nb, nc, work, .. } = self;
-        lose_one(links.cofaces(z), state, nb, work);
-        lose_one(links.faces(z), state, nc, work);
+    /// After the coreduction of (k-1)-cell `a` with k-cell `b`, whose critical rows hold
+    /// `fill`: each other alive coface `y` of `a` (whose list of cofaces starts at `head`)
+    /// becomes `y - (⟨∂y, a⟩ / ⟨∂b, a⟩) b` in those rows. `None` on overflow.
+    fn move_fill(&mut self, k: usize, a: u32, b: u32, head: u32, fill: &[(u32, R::E)]) -> Option<()> {
+        let eps = self.value(k, b, a);
+        let base = self.off[k];
+        let mut at = head;
+        while let Some(&(next, y)) = self.co.node.get(at as usize) {
+            at = next;
+            let gy = (base + y as usize) as u32;
+            if self.cells[gy as usize].state != State::Alive {
+                continue;
+            }
+            let lambda = self.ring.div_unit(&self.value(k, y, a), &eps)?;
+            let list = self.extra.entry(gy).or_default();
+            axpy(self.ring, list, &lambda, fill, &mut self.scratch)?;
+            // the updated row takes the buffer, and the old row becomes the buffer
+            std::mem::swap(list, &mut self.scratch);
+            let empty = list.is_empty();
+            if empty {
+                self.extra.remove(&gy);
+            }
+            self.cells[gy as usize].filled = !empty;
+        }
+        Some(())
+    }
+
+    /// A cell whose cofaces, of dimension `k`, are listed from `head` leaves: its alive
+    /// cofaces lose a face; those left with one are queued.
+    #[inline(always)]
+    fn release_cofaces(&mut self, k: usize, head: u32) {
+        let Sweep { off, co, cells, work, .. } = self;
+        lose_one(co.of(head), k, off[k], cells, |c| &mut c.nb, work);
+    }
+
+    /// k-cell `z` (k >= 1) leaves: its alive faces lose a coface; those left with one are
+    /// queued.
+    #[inline(always)]
+    fn release_faces(&mut self, k: usize, z: u32) {
+        let Sweep { c, off, cells, work, .. } = self;
+        let faces = c.boundaries()[k - 1].col(z as usize).0;
+        lose_one(faces.iter().copied(), k - 1, off[k - 1], cells, |c| &mut c.nc, work);
     }
 
     /// The survivors: the input restricted to alive rows, plus the entries of the critical
-    /// rows. `None` when an entry of a critical row does not fit `i64`.
-    fn restricted(self) -> Option<Restricted> {
-        let Sweep { ring, c, links, state, extra, log, .. } = self;
-        let off = links.off;
+    /// rows. With `freeze` the survivors are the cells set aside or made critical, and the
+    /// cost is in their number and their entries only. `None` when an entry of a critical
+    /// row does not fit `i64`.
+    fn restricted(self, freeze: bool) -> Option<Restricted> {
+        let Sweep { ring, c, off, mut cells, extra, log, mut kept, .. } = self;
         let counts = c.counts();
         let n1 = counts.len();
-        let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
-        let mut local = vec![u32::MAX; state.len()];
-        for k in 0..n1 {
-            let mut v = Vec::new();
-            for j in 0..counts[k] {
-                let g = off[k] as usize + j;
-                if state[g] != State::Paired {
-                    local[g] = v.len() as u32;
-                    v.push(j as u32);
+        let mut ids: Vec<Vec<u32>> = vec![Vec::new(); n1];
+        if freeze {
+            // no cell is left alive
+            kept.sort_unstable();
+            let mut k = 0;
+            for &g in &kept {
+                while g as usize >= off[k + 1] {
+                    k += 1;
                 }
+                ids[k].push((g as usize - off[k]) as u32);
             }
-            ids.push(v);
+        } else {
+            for (k, v) in ids.iter_mut().enumerate() {
+                v.extend((0..counts[k] as u32).filter(|&j| cells[off[k] + j as usize].state != State::Paired));
+            }
+        }
+        // the number of a survivor among the survivors of its dimension, in the place of
+        // its count of faces (no longer needed)
+        for (k, v) in ids.iter().enumerate() {
+            for (i, &j) in v.iter().enumerate() {
+                cells[off[k] + j as usize].nb = i as u32;
+            }
         }
         let mut mats = Vec::with_capacity(n1.saturating_sub(1));
         let mut col: Vec<(u32, i64)> = Vec::new();
@@ -416,16 +563,18 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             let mut vals = Vec::new();
             for &j in &ids[k] {
                 col.clear();
-                let (ri, rv) = m.col(j as usize);
-                for (&r, &v) in ri.iter().zip(rv) {
-                    let g = (off[k - 1] + r) as usize;
-                    if state[g] == State::Alive && !ring.is_zero(&ring.of_i64(v)) {
-                        col.push((local[g], v));
+                if !freeze {
+                    let (ri, rv) = m.col(j as usize);
+                    for (&r, &v) in ri.iter().zip(rv) {
+                        let g = off[k - 1] + r as usize;
+                        if cells[g].state == State::Alive {
+                            col.push((cells[g].nb, v));
+                        }
                     }
                 }
-                if let Some(list) = extra.get(&(off[k] + j)) {
+                if let Some(list) = extra.get(&((off[k] + j as usize) as u32)) {
                     for (r, v) in list {
-                        col.push((local[*r as usize], ring.to_i64(v)?));
+                        col.push((cells[*r as usize].nb, ring.to_i64(v)?));
                     }
                     col.sort_unstable_by_key(|e| e.0);
                 }
@@ -441,91 +590,118 @@ impl<'a, R: Euclid> Sweep<'a, R> {
         }
         let new_counts = ids.iter().map(Vec::len).collect();
         let chain = ChainComplex::try_new_unchecked_dd(new_counts, mats).expect("shapes follow the survivors");
+        let off = off.iter().map(|&o| o as u32).collect();
         Some(Restricted { chain, ids, log, off })
     }
 }
 
-/// Each alive cell of `linked` has one neighbour less in `count`; those left with one are
-/// queued.
-#[inline]
-fn lose_one(linked: &[u32], state: &[State], count: &mut [u32], work: &mut Ready) {
-    for &e in linked {
-        let y = cell(e);
-        if state[y] == State::Alive {
-            count[y] -= 1;
-            if count[y] == 1 {
-                work.push(y as u32);
-            }
+/// Each cell among `linked` (cells `j` of dimension `k`, global numbers `base + j`) has one
+/// neighbour less in its `count` (`nb` or `nc`); those left with one are queued. The counts
+/// of cells no longer alive start at [`GONE`], so they are never queued.
+#[inline(always)]
+fn lose_one(
+    linked: impl Iterator<Item = u32>,
+    k: usize,
+    base: usize,
+    cells: &mut [Cell],
+    count: impl Fn(&mut Cell) -> &mut u32,
+    work: &mut Ready,
+) {
+    for j in linked {
+        let n = count(&mut cells[base + j as usize]);
+        *n = n.wrapping_sub(1);
+        if *n == 1 {
+            work.push(k, j);
         }
     }
 }
 
 /// The cells waiting to be looked at, taken lowest number first (lowest dimension, then
-/// order of smallest dart): a bit per cell and, per dimension, a count and the first word
-/// that may hold a bit. Taking cells in numbering order keeps the sweep's memory accesses
-/// close together.
+/// order of smallest dart): per dimension a bit per cell, a count, and the first word that
+/// may hold a bit; and the lowest dimension that may hold one. Taking cells in numbering
+/// order keeps the sweep's memory accesses close together. Push and pop are O(1) but for
+/// the scans over empty words and dimensions, which the cursors make amortised O(1).
 struct Ready {
     /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
-    /// per dimension: its first word, its past-the-end word, the first word that may hold
-    /// a bit, the number of bits set, and its first global cell number
-    lo: Vec<usize>,
-    hi: Vec<usize>,
-    cursor: Vec<usize>,
-    count: Vec<usize>,
-    start: Vec<u32>,
+    /// per dimension: where its bits are, and how many are set
+    dims: Vec<Queue>,
+    /// no dimension below it holds a bit
+    low: usize,
+}
+
+/// The bits of one dimension in [`Ready`].
+#[derive(Clone, Copy)]
+struct Queue {
+    /// the first word
+    lo: usize,
+    /// the first word that may hold a bit
+    cursor: usize,
+    /// the number of bits set
+    count: u32,
+    /// the global number of the first cell
+    start: usize,
 }
 
 impl Ready {
-    fn new(off: &[u32]) -> Self {
-        let dims = off.len() - 1;
-        let mut lo = Vec::with_capacity(dims);
-        let mut hi = Vec::with_capacity(dims);
-        let mut start = Vec::with_capacity(dims);
-        let mut words = 0;
-        for k in 0..dims {
-            let m = (off[k + 1] - off[k]) as usize;
-            lo.push(words);
-            start.push(off[k]);
+    fn new(counts: &[usize]) -> Self {
+        let mut dims = Vec::with_capacity(counts.len());
+        let (mut words, mut start) = (0, 0);
+        for &m in counts {
+            dims.push(Queue { lo: words, cursor: words, count: 0, start });
             words += m.div_ceil(64);
-            hi.push(words);
+            start += m;
         }
-        Ready { bits: vec![0; words], cursor: lo.clone(), lo, hi, count: vec![0; dims], start }
+        Ready { bits: vec![0; words], dims, low: counts.len() }
     }
 
-    #[inline]
-    fn push(&mut self, x: u32) {
-        let k = self.start.partition_point(|&s| s <= x) - 1;
-        let i = (x - self.start[k]) as usize;
-        let w = self.lo[k] + i / 64;
-        let b = 1u64 << (i % 64);
-        if self.bits[w] & b == 0 {
-            self.bits[w] |= b;
-            self.count[k] += 1;
-            self.cursor[k] = self.cursor[k].min(w);
+    /// Queues cell `j` of dimension `k` (once, however often it is pushed before it is popped).
+    #[inline(always)]
+    fn push(&mut self, k: usize, j: u32) {
+        let q = &mut self.dims[k];
+        let w = q.lo + j as usize / 64;
+        let b = 1u64 << (j % 64);
+        let word = &mut self.bits[w];
+        if *word & b == 0 {
+            *word |= b;
+            q.count += 1;
+            q.cursor = q.cursor.min(w);
+            self.low = self.low.min(k);
         }
     }
 
-    #[inline]
-    fn pop(&mut self) -> Option<u32> {
-        let k = self.count.iter().position(|&c| c > 0)?;
-        let mut w = self.cursor[k];
-        while self.bits[w] == 0 {
-            w += 1;
+    /// The waiting cell of the lowest dimension and, in it, the lowest number, as `(k, j,
+    /// global number)`.
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(usize, u32, usize)> {
+        while self.dims.get(self.low)?.count == 0 {
+            self.low += 1;
         }
-        debug_assert!(w < self.hi[k]);
-        self.cursor[k] = w;
-        let b = self.bits[w].trailing_zeros();
-        self.bits[w] &= self.bits[w] - 1;
-        self.count[k] -= 1;
-        Some(self.start[k] + ((w - self.lo[k]) * 64) as u32 + b)
+        let k = self.low;
+        let q = &mut self.dims[k];
+        // a set bit lies at or after the cursor, as the count says
+        let w = q.cursor + self.bits[q.cursor..].iter().position(|&b| b != 0)?;
+        q.cursor = w;
+        let word = &mut self.bits[w];
+        let b = word.trailing_zeros();
+        *word &= *word - 1;
+        q.count -= 1;
+        let j = ((w - q.lo) * 64) as u32 + b;
+        Some((k, j, q.start + j as usize))
     }
 }
 
-/// `list - lambda * fill` for sorted sparse rows; zeros dropped.
-fn axpy<R: Ring>(ring: &R, list: &[(u32, R::E)], lambda: &R::E, fill: &[(u32, R::E)]) -> Option<Vec<(u32, R::E)>> {
+/// `out = list - lambda * fill` for sorted sparse rows; zeros dropped.
+fn axpy<R: Ring>(
+    ring: &R,
+    list: &[(u32, R::E)],
+    lambda: &R::E,
+    fill: &[(u32, R::E)],
+    out: &mut Vec<(u32, R::E)>,
+) -> Option<()> {
     let zero = ring.of_i64(0);
-    let mut out = Vec::with_capacity(list.len() + fill.len());
+    out.clear();
+    out.reserve(list.len() + fill.len());
     let (mut i, mut j) = (0, 0);
     while i < list.len() || j < fill.len() {
         if j == fill.len() || (i < list.len() && list[i].0 < fill[j].0) {
@@ -546,7 +722,7 @@ fn axpy<R: Ring>(ring: &R, list: &[(u32, R::E)], lambda: &R::E, fill: &[(u32, R:
             j += 1;
         }
     }
-    Some(out)
+    Some(())
 }
 
 /// Lifts a k-chain of the reduced complex (numbered as in `pre.chain`) to a k-chain of the
@@ -603,14 +779,6 @@ pub(crate) fn lift<R: Ring>(
     Some(z.into_iter().enumerate().filter(|(_, v)| !ring.is_zero(v)).map(|(i, v)| (i as u32, v)).collect())
 }
 
-/// Whether every column of `∂_1` is empty or `v - w` (entries `1` and `-1`).
-fn edges_are_differences(m: &SparseMatrix) -> bool {
-    (0..m.cols()).all(|j| {
-        let (_, v) = m.col(j);
-        v.is_empty() || (v.len() == 2 && v[0] + v[1] == 0 && v[0].abs() == 1)
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -639,6 +807,26 @@ mod tests {
         let r = prereduce(&Zi64, &c, true).unwrap();
         assert_eq!(r.chain.counts(), &[1, 1]);
         assert!(r.chain.boundary(1).is_zero());
+    }
+
+    #[test]
+    fn one_vertex_per_component_is_set_aside() {
+        // two filled triangles, on vertices 0 1 2 and 3 4 5: the smallest vertex of each stays
+        let tri = |o: usize, e: usize| {
+            vec![(o, e, -1), (o + 1, e, 1), (o + 1, e + 1, -1), (o + 2, e + 1, 1), (o, e + 2, -1), (o + 2, e + 2, 1)]
+        };
+        let mut d1 = tri(0, 0);
+        d1.extend(tri(3, 3));
+        let d2 = vec![(0, 0, 1), (1, 0, 1), (2, 0, -1), (3, 1, 1), (4, 1, 1), (5, 1, -1)];
+        let r = prereduce(&Zi64, &complex(vec![6, 6, 2], vec![d1, d2]), true).unwrap();
+        assert_eq!(r.chain.counts(), &[2, 0, 0]);
+        assert_eq!(r.ids[0], vec![0, 3]);
+        // the path 0 - 2 - 1: vertex 1 has no smaller neighbour, yet one component
+        let c = complex(vec![3, 2], vec![vec![(0, 0, -1), (2, 0, 1), (1, 1, -1), (2, 1, 1)]]);
+        let r = prereduce(&Zi64, &c, true).unwrap();
+        assert_eq!(r.chain.counts(), &[1, 0]);
+        assert_eq!(r.ids[0], vec![0]);
+        assert_eq!(r.log.len(), 2);
     }
 
     #[test]

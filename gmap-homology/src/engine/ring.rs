@@ -28,6 +28,11 @@ pub(crate) trait Ring {
     fn div_unit(&self, a: &Self::E, u: &Self::E) -> Option<Self::E>;
     /// `a - l * b`.
     fn sub_mul(&self, a: &Self::E, l: &Self::E, b: &Self::E) -> Option<Self::E>;
+    /// Whether every non-zero integer stays non-zero in the ring (`Z`: yes; `Z/p`: no), so
+    /// the stored entries of a matrix need no check for zero.
+    fn keeps_nonzero_integers(&self) -> bool {
+        false
+    }
 }
 
 /// The operations dense Smith normal form needs in addition: a Euclidean ring (`Z` only).
@@ -74,6 +79,9 @@ impl Ring for Zi64 {
     fn sub_mul(&self, a: &i64, l: &i64, b: &i64) -> Option<i64> {
         a.checked_sub(l.checked_mul(*b)?)
     }
+    fn keeps_nonzero_integers(&self) -> bool {
+        true
+    }
 }
 
 impl Euclid for Zi64 {
@@ -114,6 +122,9 @@ impl Ring for ZBig {
     }
     fn sub_mul(&self, a: &BigInt, l: &BigInt, b: &BigInt) -> Option<BigInt> {
         Some(a - l * b)
+    }
+    fn keeps_nonzero_integers(&self) -> bool {
+        true
     }
 }
 
