@@ -346,32 +346,38 @@ impl SparseMatrix {
     }
 
     /// Number of rows.
+    #[inline]
     pub fn rows(&self) -> usize {
         self.rows
     }
 
     /// Number of columns.
+    #[inline]
     pub fn cols(&self) -> usize {
         self.cols
     }
 
     /// Number of stored (non-zero) entries.
+    #[inline]
     pub fn nnz(&self) -> usize {
         self.vals.len()
     }
 
     /// The column pointers (length `cols + 1`).
+    #[inline]
     pub fn col_ptr(&self) -> &[usize] {
         &self.col_ptr
     }
 
     /// The row indices of column `j` (strictly increasing) and their values. O(1).
+    #[inline]
     pub fn col(&self, j: usize) -> (&[u32], &[i64]) {
         let (a, b) = (self.col_ptr[j], self.col_ptr[j + 1]);
         (&self.row_idx[a..b], &self.vals[a..b])
     }
 
     /// The entry at `(i, j)` (0 if not stored). O(log of the column length).
+    #[inline]
     pub fn get(&self, i: usize, j: usize) -> i64 {
         let (r, v) = self.col(j);
         match r.binary_search(&(i as u32)) {
