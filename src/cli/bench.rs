@@ -171,7 +171,7 @@ fn bench_one(path: &Path, max_darts: Option<u64>) -> Result<Vec<Row>> {
         let sc = load_simplicial(path)?.with_context(|| format!("{input}: not a simplicial complex"))?;
         let mut times = Times { read: ms(t), ..Times::default() };
         let t = Instant::now();
-        let fc = face_complex_within(&sc, max_darts, &input)?;
+        let fc = face_complex_within(&sc, max_darts, &input, false)?;
         times.border = Some(ms(t));
         let (cells, r) = reduce(&fc.chain, &mut times);
         rows.push(row("direct", cells, times, r));

@@ -190,7 +190,7 @@ fn direct(sc: &SimplicialComplex, o: &Options, file: &str) -> Result<(usize, Nam
         sc.facets().count(),
         face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
     ));
-    let fc = super::load::face_complex_within(sc, o.max_darts, file)?;
+    let fc = super::load::face_complex_within(sc, o.max_darts, file, o.generators)?;
     let FaceComplex { chain, vertices, faces } = fc;
     let dim = chain.dim();
     let name = Box::new(move |k: usize, j: u32| {

@@ -265,7 +265,7 @@ pub struct SimplicialInfo {
 fn simplicial_run(file: &Path, json: bool, max_darts: Option<u64>, why: String) -> Result<()> {
     let sc = super::load::load_simplicial(file)?
         .ok_or_else(|| anyhow::anyhow!("{}: not a simplicial complex", file.display()))?;
-    let fc = super::load::face_complex_within(&sc, max_darts, &file.display().to_string())?;
+    let fc = super::load::face_complex_within(&sc, max_darts, &file.display().to_string(), false)?;
     // components: the vertices' classes, joined along each facet
     let mut classes = gmap_core::union_find::UnionFind::new(fc.vertices.len());
     let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;

@@ -97,15 +97,17 @@ pub fn load_simplicial(path: &Path) -> Result<Option<gmap_ops::import::Simplicia
 
 /// The direct route's chain complex of a simplicial complex (every face of every facet a
 /// cell, `gmap_homology::simplices`), refused past `--max-darts` faces (default: what the
-/// memory budget holds at its dimension), the error naming `file`.
+/// memory budget holds at its dimension), the error naming `file`; with `labels`, the
+/// vertices of every face (to name generators).
 pub fn face_complex_within(
     sc: &gmap_ops::import::SimplicialComplex,
     max_darts: Option<u64>,
     file: &str,
+    labels: bool,
 ) -> Result<gmap_homology::simplices::FaceComplex> {
     use gmap_homology::simplices::{face_complex_of, FaceError};
     let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
-    face_complex_of(sc.facets(), limit).map_err(|e| match e {
+    face_complex_of(sc.facets(), limit, labels).map_err(|e| match e {
         FaceError::TooManyFaces { .. } => anyhow::anyhow!("{file}: {e}; raise the limit with --max-darts N"),
         e => anyhow::anyhow!("{file}: {e}"),
     })

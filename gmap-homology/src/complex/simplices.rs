@@ -83,6 +83,7 @@ pub struct FaceComplex {
     /// the vertex labels, sorted: vertex index `i` is label `vertices[i]`
     pub vertices: Vec<u64>,
     /// `faces[k][j * (k + 1)..][..k + 1]`: the vertex indices of k-face `j`, increasing
+    /// (empty vectors when [`face_complex_of`] was asked for no labels)
     pub faces: Vec<Vec<u32>>,
 }
 
@@ -262,6 +263,7 @@ fn enumerate<K: FaceKey>(
     groups: &[Vec<u32>],
     top: usize,
     bits: u32,
+    labels: bool,
 ) -> Result<(ChainComplex, Vec<Vec<u32>>), FaceError> {
     // the faces of the current size by key (to join the facets of that size), and a second
     // table for the faces one size down: the two swap at each step, so their memory is reused
@@ -292,10 +294,12 @@ fn enumerate<K: FaceKey>(
         std::mem::swap(&mut cells, &mut keys);
         keys.clear();
         counts[size - 1] = cells.len();
-        let out = &mut flat[size - 1];
-        out.resize(cells.len() * size, 0);
-        for (key, slot) in cells.iter().zip(out.chunks_exact_mut(size)) {
-            key.unpack_into(bits, slot);
+        if labels {
+            let out = &mut flat[size - 1];
+            out.resize(cells.len() * size, 0);
+            for (key, slot) in cells.iter().zip(out.chunks_exact_mut(size)) {
+                key.unpack_into(bits, slot);
+            }
         }
         if size == 1 {
             break;
@@ -345,13 +349,15 @@ fn enumerate<K: FaceKey>(
 /// contained in others are harmless. Expected O(E · d) for E faces counted with repetition
 /// and facets of at most d + 1 vertices (one hash look-up per boundary entry).
 pub fn face_complex<F: AsRef<[u64]>>(facets: &[F], limit: u64) -> Result<FaceComplex, FaceError> {
-    face_complex_of(facets.iter().map(AsRef::as_ref), limit)
+    face_complex_of(facets.iter().map(AsRef::as_ref), limit, true)
 }
 
 /// [`face_complex`] of facets given by an iterator, which is walked a few times (so a
 /// complex that holds its facets end to end needs no list of them). Same errors; a facet's
-/// number is its position in the iteration.
-pub fn face_complex_of<'a, I>(facets: I, limit: u64) -> Result<FaceComplex, FaceError>
+/// number is its position in the iteration. Without `labels`, [`FaceComplex::faces`] is left
+/// empty (one vector per dimension): what only needs the groups saves writing the vertices
+/// of every face.
+pub fn face_complex_of<'a, I>(facets: I, limit: u64, labels: bool) -> Result<FaceComplex, FaceError>
 where
     I: Iterator<Item = &'a [u64]> + Clone,
 {
@@ -429,11 +435,11 @@ where
     }
     let bits = (32 - (vertices.len().saturating_sub(1) as u32).leading_zeros()).max(1);
     let (chain, faces) = if bits as usize * top <= 64 {
-        enumerate::<u64>(&groups, top, bits)?
+        enumerate::<u64>(&groups, top, bits, labels)?
     } else if bits as usize * top <= 128 {
-        enumerate::<u128>(&groups, top, bits)?
+        enumerate::<u128>(&groups, top, bits, labels)?
     } else {
-        enumerate::<Box<[u32]>>(&groups, top, bits)?
+        enumerate::<Box<[u32]>>(&groups, top, bits, labels)?
     };
     Ok(FaceComplex { chain, vertices, faces })
 }
@@ -486,6 +492,10 @@ mod tests {
         assert_eq!(fc.chain.counts(), &[7, 8, 3]);
         assert_eq!(homology_z(&fc.chain).unwrap().to_string(), "(Z^2, 0, 0)");
         assert_eq!(fc.labels(2, 2), vec![1, 2, 5]);
+        // the same chain complex without the labels
+        let bare = face_complex_of(f.iter().map(Vec::as_slice), 1000, false).unwrap();
+        assert_eq!(bare.chain.boundaries(), fc.chain.boundaries());
+        assert!(bare.faces.iter().all(Vec::is_empty) && bare.faces.len() == 3);
         assert_eq!(face_complex(&[vec![1, 2, 2]], 100).unwrap_err(), FaceError::RepeatedVertex { facet: 0, vertex: 2 });
         assert_eq!(
             face_complex(&[vec![1, 2, 3]], 6).unwrap_err(),
