@@ -185,11 +185,14 @@ fn simplicial(map: &DenseMap) -> Named<'static> {
 /// (`gmap_homology::simplices`), no G-map. The faces are counted first and refused past
 /// `--max-darts` (default: what the available memory holds).
 fn direct(sc: &SimplicialComplex, o: &Options, file: &str) -> Result<(usize, Named<'static>)> {
-    progress(&format!(
-        "enumerating the faces of {} facets (at most {})",
-        sc.facets().count(),
-        face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
-    ));
+    // the estimate is a pass over the facets: made only for a message that shows
+    if std::io::stderr().is_terminal() {
+        progress(&format!(
+            "enumerating the faces of {} facets (at most {})",
+            sc.total_facet_count(),
+            face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
+        ));
+    }
     let fc = super::load::face_complex_within(sc, o.max_darts, file, o.generators)?;
     let FaceComplex { chain, vertices, faces } = fc;
     let dim = chain.dim();
