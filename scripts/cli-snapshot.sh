@@ -15,7 +15,7 @@ run() { # name, args...
   local name=$1; shift
   "$bin" "$@" >"$out/$name.out" 2>"$out/$name.err"; echo $? >"$out/$name.rc"
 }
-inputs=$(find tests/data -type f \( -name '*.facets' -o -name '*.gmap' -o -name '*.cub' -o -name '*.pbm' \) | sort)
+inputs=$(find tests/data -type f \( -name '*.facets' -o -name '*.gmap' -o -name '*.cub' -o -name '*.pbm' -o -name '*.json' \) | sort)
 # derived inputs: every format the binary writes, from a surface, a 3-manifold and the labelled file
 for src in tests/data/lutz/poincare.facets tests/data/lutz/dunce_hat.facets tests/data/labelled_segment.gmap; do
   b=$(basename "$src" | tr . _)

@@ -99,7 +99,7 @@ impl SimplicialComplex {
         Self::from_facets_with_lines(facets.into_iter().enumerate().map(|(k, f)| (k + 1, f)))
     }
 
-    /// Parses the `.facets` format (CONTRACT §2): one facet per line, vertex labels as
+    /// Parses the `.facets` format (docs/FORMATS.md): one facet per line, vertex labels as
     /// non-negative integers separated by white space or commas, `#` starts a comment,
     /// blank lines skipped. A label is what `str::parse::<u64>` takes: decimal digits with an
     /// optional leading `+`, at most `u64::MAX`. The first token that is not a label is an
