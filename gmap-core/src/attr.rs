@@ -1179,7 +1179,7 @@ mod tests {
         // to_dense writes a vertex's point on each of its darts, from_dense reads it back
         let (dense, ids) = m.to_dense();
         let k = ids.iter().position(|&x| x == d[0]).unwrap();
-        assert_eq!(dense.point(Dart(k as u32)), Some([3.0, 0.0, 0.0]));
+        assert_eq!(dense.point(Dart::new(k as u32)), Some([3.0, 0.0, 0.0]));
         let (back, bids) = GMap::from_dense(&dense);
         assert_eq!(back.point(bids[k]), Some([3.0, 0.0, 0.0]));
         assert_eq!(back.point_count(), 7);

@@ -18,7 +18,8 @@ use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
-use crate::dense::{Dart, DenseMap, Point};
+use crate::dense::DenseMap;
+use crate::ids::{Dart, Point};
 use crate::marks::{MarkId, Marks};
 use crate::view::MapView;
 
@@ -946,7 +947,7 @@ impl<A: Attributes> GMap<A> {
         if self.points.active() {
             for (k, &d) in ids.iter().enumerate() {
                 if let Some(&p) = self.points.get_at(dart_index(d)) {
-                    dense.set_point(Dart(k as u32), Some(p));
+                    dense.set_point(Dart::new(k as u32), Some(p));
                 }
             }
         }

@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use crate::dense::Dart;
+use crate::ids::Dart;
 
 /// A violation of BO Def. 1 (the G-map axioms), as found by `validate`.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]

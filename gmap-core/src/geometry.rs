@@ -44,8 +44,8 @@ use thiserror::Error;
 
 use crate::alpha::AlphaSet;
 use crate::attr::{AttrId, Attributes};
-use crate::dense::Point;
 use crate::edit::{DartId, GMap, SewError};
+use crate::ids::Point;
 
 /// A point given to a constructor: `[x, y, z]`, or `[x, y]` for `[x, y, 0]`.
 pub trait IntoPoint {

@@ -33,9 +33,10 @@ use rustc_hash::FxHashSet;
 
 use crate::alpha::AlphaSet;
 use crate::attr::Attributes;
-use crate::dense::{Dart, DenseMap};
+use crate::dense::DenseMap;
 use crate::edit::{DartId, GMap};
 use crate::error::{BoundaryDefect, OrientationConflict, ValidityError};
+use crate::ids::Dart;
 
 /// A G-map seen through its involutions. See the [module docs](self).
 pub trait MapView {

@@ -15,7 +15,7 @@
 //! ```
 //! use gmap::core::{DenseMap, Dart};
 //! let mut m = DenseMap::new(1, 2);
-//! m.link(Dart(0), Dart(1), 0); // one edge with two free ends
+//! m.link(Dart::new(0), Dart::new(1), 0); // one edge with two free ends
 //! assert_eq!(m.cell_counts(), vec![2, 1]);
 //! ```
 

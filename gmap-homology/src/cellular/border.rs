@@ -135,8 +135,8 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
 /// `∂_1` by the two ends of each edge.
 fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let mut out = Vec::with_capacity(2 * edges.cells.len());
-    for (e, &Dart(r)) in edges.cells.reps.iter().enumerate() {
-        let other = map.alpha(Dart(r), 0).0;
+    for (e, r) in edges.cells.reps.iter().map(|d| d.get()).enumerate() {
+        let other = map.alpha(Dart::new(r), 0).get();
         for x in [r, other] {
             out.push((vertices.cells.of[x as usize], e as u32, edges.sign(x) * vertices.sign(x)));
         }
@@ -148,8 +148,8 @@ fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<
 fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let n = map.dim();
     let mut out = Vec::with_capacity(2 * facets.cells.len());
-    for (f, &Dart(r)) in facets.cells.reps.iter().enumerate() {
-        let other = map.alpha(Dart(r), n).0;
+    for (f, r) in facets.cells.reps.iter().map(|d| d.get()).enumerate() {
+        let other = map.alpha(Dart::new(r), n).get();
         out.push((f as u32, top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
         if other != r {
             out.push((f as u32, top.cells.of[other as usize], top.sign(other) * facets.sign(other)));
@@ -170,7 +170,7 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
     let mut out = Vec::with_capacity(map.dart_count() / 4 + 1);
     // the positive darts of the ring being walked
     let mut ring: Vec<u32> = Vec::with_capacity(16);
-    for (f, &Dart(r)) in faces.cells.reps.iter().enumerate() {
+    for (f, r) in faces.cells.reps.iter().map(|d| d.get()).enumerate() {
         ring.clear();
         let mut x = r;
         loop {

@@ -127,7 +127,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
         None if i == n => d,
         None => d.min(a[d as usize * w + n]),
     };
-    let rep = |e: u32| part.as_ref().map_or(e, |p| p.reps[e as usize].0);
+    let rep = |e: u32| part.as_ref().map_or(e, |p| p.reps[e as usize].get());
     let size = part.as_ref().map_or(map.dart_count(), Partition::len);
     let mut local = vec![u32::MAX; size];
     let mut order: Vec<u32> = Vec::new();
@@ -135,7 +135,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
     let mut spheres: FxHashSet<Vec<u32>> = FxHashSet::default();
     // the last class found a sphere: neighbouring cells are often of the same class
     let mut last: Vec<u32> = Vec::new();
-    for &Dart(r) in &cells.cells.reps {
+    for r in cells.cells.reps.iter().map(|d| d.get()) {
         let start = elem(r);
         order.clear();
         code.clear();
@@ -164,7 +164,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
             std::mem::swap(&mut last, &mut code);
             continue;
         }
-        let fail = |found: String| PreconditionError::C2 { dim: i, dart: Dart(r), found };
+        let fail = |found: String| PreconditionError::C2 { dim: i, dart: Dart::new(r), found };
         let sub = DenseMap::from_flat_unchecked(i - 1, code.clone())
             .map_err(|e| fail(format!("no computable homology ({e})")))?;
         if i == 3 {

@@ -202,7 +202,7 @@ fn tau_matrix(map: &DenseMap, cells: &OrientedCells, rows: usize) -> SparseMatri
         .reps
         .iter()
         .enumerate()
-        .map(|(e, &Dart(r))| (e as u32, cells.cells.of[r as usize], orient * cells.sign(r)))
+        .map(|(e, &r)| (e as u32, cells.cells.of[r.index()], orient * cells.sign(r.get())))
         .collect();
     SparseMatrix::try_from_entries(rows, cells.cells.len(), &entries)
         .expect("one entry per element of B_i, inside the counts of both complexes")

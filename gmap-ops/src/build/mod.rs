@@ -107,9 +107,9 @@ pub fn polygon(k: usize) -> Result<DenseMap, BuildError> {
         Some([t.cos(), t.sin(), 0.0])
     };
     for j in 0..k {
-        let (a, b) = (Dart(2 * j as u32), Dart(2 * j as u32 + 1));
+        let (a, b) = (Dart::new(2 * j as u32), Dart::new(2 * j as u32 + 1));
         m.link(a, b, 0);
-        m.link(b, Dart(((2 * j + 2) % darts) as u32), 1);
+        m.link(b, Dart::new(((2 * j + 2) % darts) as u32), 1);
         m.set_point(a, corner(j));
         m.set_point(b, corner(j + 1));
     }
@@ -136,7 +136,7 @@ pub fn extrude(map: &DenseMap) -> Result<DenseMap, BuildError> {
     let mut alpha = vec![0u32; darts * w];
     let idx = |d: usize, k: usize, s: usize| (d * per + 2 * (k - 1) + s) as u32;
     for d in 0..map.dart_count() {
-        let row = map.row(Dart(d as u32));
+        let row = map.row(Dart::new(d as u32));
         for k in 1..=n + 1 {
             for s in 0..2 {
                 let me = idx(d, k, s) as usize;
@@ -170,7 +170,7 @@ pub fn extrude(map: &DenseMap) -> Result<DenseMap, BuildError> {
             if let Some(p) = map.point(d) {
                 for k in 1..=n + 1 {
                     for s in 0..2 {
-                        out.set_point(Dart(idx(d.index(), k, s)), Some([p[0], p[1], p[2] + s as f64]));
+                        out.set_point(Dart::new(idx(d.index(), k, s)), Some([p[0], p[1], p[2] + s as f64]));
                     }
                 }
             }
@@ -293,7 +293,7 @@ pub fn lens_space(p: usize, q: usize) -> Result<DenseMap, BuildError> {
     let darts = checked_darts(|| format!("L({p}, {q})"), &[4, p as u64])?;
     let q = q % p;
     let mut m = DenseMap::new(3, darts);
-    let at = |base: usize, j: usize, s: usize| Dart((base + 2 * (j % p) + s) as u32);
+    let at = |base: usize, j: usize, s: usize| Dart::new((base + 2 * (j % p) + s) as u32);
     let u = |j: usize, s: usize| at(0, j, s);
     let l = |j: usize, s: usize| at(2 * p, j, s);
     for j in 0..p {
@@ -371,7 +371,7 @@ mod tests {
         let prism = extrude(&polygon(5).unwrap()).unwrap();
         check(&prism, &[10, 15, 7, 1], 1, true);
         assert_eq!(prism.dart_count(), 60);
-        assert_eq!(prism.vertex_point(Dart(1)).map(|p| p[2]), Some(1.0));
+        assert_eq!(prism.vertex_point(Dart::new(1)).map(|p| p[2]), Some(1.0));
         let sq = extrude(&cube(1).unwrap()).unwrap();
         check(&sq, &[4, 4, 1], 1, true);
         let c4 = extrude(&cube(3).unwrap()).unwrap();

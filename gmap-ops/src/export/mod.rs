@@ -145,30 +145,30 @@ fn off_text(map: &DenseMap, faces: &Partition) -> Result<(String, Vec<Dart>), Ex
     for d in map.darts() {
         for i in 0..2 {
             if map.is_free(d, i) {
-                return Err(ExportError::OpenFace { dart: d.0, alpha: i });
+                return Err(ExportError::OpenFace { dart: d.get(), alpha: i });
             }
         }
     }
     let verts = map.cells(0);
     let mut out = String::new();
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
-    for &Dart(r) in &verts.reps {
-        let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
+    for r in verts.reps.iter().map(|d| d.get()) {
+        let p = map.vertex_point(Dart::new(r)).ok_or(ExportError::NoPoint { dart: r })?;
         if !p.iter().all(|c| c.is_finite()) {
             return Err(ExportError::NonFinitePoint { dart: r });
         }
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
     let mut order: Vec<Dart> = Vec::with_capacity(map.dart_count());
-    for &Dart(r) in &faces.reps {
+    for r in faces.reps.iter().map(|d| d.get()) {
         let mut corners = Vec::new();
-        let mut d = Dart(r);
+        let mut d = Dart::new(r);
         loop {
             corners.push(verts.of[d.index()]);
             order.push(d);
             order.push(map.alpha(d, 0));
             d = map.alpha(map.alpha(d, 0), 1);
-            if d.0 == r {
+            if d.get() == r {
                 break;
             }
             if corners.len() > map.dart_count() {
@@ -206,7 +206,7 @@ fn same_as_read_back(map: &DenseMap, text: &str, order: &[Dart]) -> Result<(), E
     }
     for (k, &d) in order.iter().enumerate() {
         for i in 0..=2 {
-            if back.alpha(Dart(k as u32), i).0 != new_of[map.alpha(d, i).index()] {
+            if back.alpha(Dart::new(k as u32), i).get() != new_of[map.alpha(d, i).index()] {
                 return Err(not_a_mesh(format!(
                     "its .off would read back glued otherwise along alpha_{i} at dart {d} (two edges \
                      between the same vertices, or an edge of a vertex to itself)"

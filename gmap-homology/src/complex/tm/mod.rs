@@ -38,8 +38,8 @@
 //! // a square: 4 vertices, 4 edges, 1 face
 //! let mut m = DenseMap::new(2, 8);
 //! for k in 0..4u32 {
-//!     m.link(Dart(2 * k), Dart(2 * k + 1), 0);
-//!     m.link(Dart(2 * k + 1), Dart((2 * k + 2) % 8), 1);
+//!     m.link(Dart::new(2 * k), Dart::new(2 * k + 1), 0);
+//!     m.link(Dart::new(2 * k + 1), Dart::new((2 * k + 2) % 8), 1);
 //! }
 //! let t = TmModel::from_map(&m).unwrap();
 //! let face = t.regions_of_dim(2)[0];
@@ -332,7 +332,7 @@ impl TmModel {
         let (parts, positive) = map.oriented_cells(n)?;
         let mut flip = vec![false; parts.reps.len()];
         for (c, rep) in parts.reps.iter().enumerate() {
-            let d = rep.0 as usize;
+            let d = rep.index();
             flip[c] = positive[d] != global[d];
         }
         Ok(flip)
