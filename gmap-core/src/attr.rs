@@ -91,7 +91,7 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
-use crate::edit::{dart_index, DartId};
+use crate::darts::{dart_index, DartId};
 #[cfg(doc)]
 use crate::edit::{GMap, SewError};
 use crate::Point;
@@ -789,7 +789,7 @@ mod sealed {
     use slotmap::SlotMap;
 
     use super::AttributeDefect;
-    use crate::edit::{DartData, DartId};
+    use crate::darts::{DartData, DartId};
 
     /// The topology an attribute slot walks: the map's dimension and darts. Built by [`GMap`]
     /// for the duration of one call.

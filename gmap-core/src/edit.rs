@@ -12,33 +12,18 @@
 //! per vertex; `GMap` alone is `GMap<()>`, with no attribute and no per-dart cost for them.
 
 use rustc_hash::FxHashMap as HashMap;
-use slotmap::{new_key_type, Key, SlotMap};
+use slotmap::SlotMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
+pub use crate::darts::DartId;
+use crate::darts::{dart_index, DartData};
 use crate::dense::DenseMap;
 use crate::ids::{Dart, Point};
 use crate::marks::{MarkId, Marks};
 use crate::view::MapView;
-
-new_key_type! {
-    /// A stable handle to a dart of a [`GMap`].
-    pub struct DartId;
-}
-
-/// Per-dart storage: the involution images.
-#[derive(Clone, Debug)]
-pub(crate) struct DartData {
-    pub(crate) alpha: SmallVec<[DartId; 5]>,
-}
-
-/// The dense index of a dart handle: its slot number (see [`GMap::dart_index`]).
-#[inline]
-pub(crate) fn dart_index(d: DartId) -> usize {
-    (d.data().as_ffi() & 0xffff_ffff) as usize
-}
 
 /// Why two darts cannot be i-sewn, or why an edit or a query of a [`GMap`] was refused: the
 /// `try_` forms ([`GMap::try_sew`], [`GMap::try_link`], [`GMap::try_unsew`],
@@ -1129,6 +1114,30 @@ impl<A: Attributes> GMap<A> {
         for x in self.orbit(d, set) {
             self.mark(m, x);
         }
+    }
+}
+
+impl<A: Attributes> MapView for GMap<A> {
+    type Dart = DartId;
+
+    fn dim(&self) -> usize {
+        GMap::dim(self)
+    }
+
+    fn dart_count(&self) -> usize {
+        GMap::dart_count(self)
+    }
+
+    fn dart_list(&self) -> Vec<DartId> {
+        self.darts().collect()
+    }
+
+    fn alpha(&self, d: DartId, i: usize) -> DartId {
+        GMap::alpha(self, d, i)
+    }
+
+    fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
+        f(&self.to_dense().0)
     }
 }
 

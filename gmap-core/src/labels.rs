@@ -293,7 +293,7 @@ fn number(tok: &str) -> Result<LabelValue, String> {
         Ok(v) if v.is_finite() => Ok(LabelValue::Real(v)),
         _ => Err(format!(
             "`{}` is neither an integer, a finite real nor a quoted text",
-            crate::io::shorten(tok.as_bytes(), 40)
+            crate::text::shorten(tok.as_bytes(), 40)
         )),
     }
 }

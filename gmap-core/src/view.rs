@@ -32,9 +32,9 @@ use std::hash::Hash;
 use rustc_hash::FxHashSet;
 
 use crate::alpha::AlphaSet;
-use crate::attr::Attributes;
 use crate::dense::DenseMap;
-use crate::edit::{DartId, GMap};
+#[cfg(doc)]
+use crate::edit::GMap;
 use crate::error::{BoundaryDefect, OrientationConflict, ValidityError};
 use crate::ids::Dart;
 
@@ -150,30 +150,6 @@ impl MapView for DenseMap {
 
     fn orbit(&self, d: Dart, set: AlphaSet) -> Vec<Dart> {
         DenseMap::orbit(self, d, set)
-    }
-}
-
-impl<A: Attributes> MapView for GMap<A> {
-    type Dart = DartId;
-
-    fn dim(&self) -> usize {
-        GMap::dim(self)
-    }
-
-    fn dart_count(&self) -> usize {
-        GMap::dart_count(self)
-    }
-
-    fn dart_list(&self) -> Vec<DartId> {
-        self.darts().collect()
-    }
-
-    fn alpha(&self, d: DartId, i: usize) -> DartId {
-        GMap::alpha(self, d, i)
-    }
-
-    fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
-        f(&self.to_dense().0)
     }
 }
 

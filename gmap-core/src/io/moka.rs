@@ -29,7 +29,7 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use super::{
+use super::common::{
     bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
     write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
