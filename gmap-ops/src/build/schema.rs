@@ -4,7 +4,7 @@ use std::collections::HashMap;
 
 use gmap_core::{Dart, DenseMap};
 
-use super::{checked_darts, BuildError};
+use super::error::{checked_darts, BuildError};
 
 /// The surface of a polygonal schema: each word is a polygon whose edges are read in order,
 /// a letter names an edge and its direction (`a`), its inverse is written `A` (upper case),

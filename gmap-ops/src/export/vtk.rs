@@ -46,7 +46,7 @@ use std::path::Path;
 
 use gmap_core::{AlphaSet, Dart, DenseLabels, DenseMap, LabelValue, Point};
 
-use super::{write_atomic, ExportError};
+use super::error::{write_atomic, ExportError};
 
 const VTK_VERTEX: u8 = 1;
 const VTK_LINE: u8 = 3;

@@ -19,7 +19,7 @@ use std::path::Path;
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{read_bytes, FileError, ImportError};
+use super::common::{read_bytes, FileError, ImportError};
 
 /// The largest bounding box accepted, in unit cubes (one byte each in the bitmap), whatever
 /// the memory limit: the cells of its closure are numbered with `u32`. Below it, a box is

@@ -14,7 +14,7 @@ use gmap_core::{Dart, DenseMap, Point};
 
 use gmap_core::io::shorten;
 
-use super::{default_max_darts, FileError, ImportError};
+use super::common::{default_max_darts, FileError, ImportError};
 
 /// A polygon mesh: points, and polygons as lists of point indices, each with its input line.
 #[derive(Clone, Debug, PartialEq)]
@@ -235,7 +235,7 @@ pub fn read_off(path: &Path) -> Result<DenseMap, FileError> {
 /// Reads an `.off` file into a 2-map with points, refusing more than `max_darts` darts
 /// (default: [`default_max_darts`]) while the polygons are read, before the map is built.
 pub fn read_off_with(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let limit = max_darts.unwrap_or_else(|| default_max_darts(2));
     PolygonMesh::parse_limited(&text, limit).and_then(|m| m.to_gmap()).map_err(|e| FileError::new(path, e))
 }
