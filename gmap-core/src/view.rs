@@ -156,6 +156,7 @@ impl MapView for DenseMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::edit::{DartId, GMap};
 
     /// The same questions asked of both representations give the same answers.
     fn agree(m: &DenseMap) {

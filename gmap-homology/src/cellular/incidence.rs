@@ -17,7 +17,7 @@
 use bitvec::vec::BitVec;
 use gmap_core::{CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
 
-use crate::cellular::precond::{oriented_cells, OrientedCells};
+use crate::cellular::oriented::{oriented_cells, OrientedCells};
 
 /// The face operator between dimensions i and i-1 of a map, with what is needed to answer
 /// incidence questions. Building it is O(N n); each query is O(size of one preimage).

@@ -34,8 +34,8 @@ use crate::perm::{factorial, PermTable};
 mod error;
 mod schema;
 
-pub use error::BuildError;
 use error::checked_darts;
+pub use error::BuildError;
 
 pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
 

@@ -13,8 +13,8 @@ pub mod off;
 pub mod poset;
 pub mod simplicial;
 
+pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};
 pub use cubical::{read_cub, read_pbm, CubicalSet};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
-pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};

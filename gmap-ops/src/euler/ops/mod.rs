@@ -51,9 +51,6 @@ mod error;
 mod split;
 mod star;
 
-
-
-
 pub use cgal::{
     insert_cell_0_in_cell_1, insert_cell_1_between_two_cells_2, insert_cell_1_in_cell_2, insert_cell_2_in_cell_3,
     insert_dangling_cell_1_in_cell_2, is_insertable_cell_0_in_cell_1, is_insertable_cell_1_between_two_cells_2,
