@@ -16,7 +16,7 @@
 
 use crate::attr::Attributes;
 use crate::dense::DenseMap;
-use crate::edit::{DartId, GMap, SewError};
+use crate::edit::{DartId, EditError, GMap};
 
 impl<A: Attributes> GMap<A> {
     /// Copies `m` into this map as new darts, linked as in `m` and free for every `alpha_k`
@@ -24,12 +24,12 @@ impl<A: Attributes> GMap<A> {
     /// handles: dense dart `k` of `m` is `ids[k]`. A vertex of `m` with a point gets it
     /// (the point of its first dart, in dense order, that has one); no attribute is set.
     ///
-    /// Precondition: `m.dim() <= self.dim()` (else [`SewError::BadIndex`] names
+    /// Precondition: `m.dim() <= self.dim()` (else [`EditError::BadIndex`] names
     /// `alpha_{m.dim()}`), and `m` is valid (BO Def. 1) so that the copy is. O(N n) for N
     /// darts of `m`.
-    pub fn try_append(&mut self, m: &DenseMap) -> Result<Vec<DartId>, SewError> {
+    pub fn try_append(&mut self, m: &DenseMap) -> Result<Vec<DartId>, EditError> {
         if m.dim() > self.dim() {
-            return Err(SewError::BadIndex { alpha: m.dim(), dim: self.dim() });
+            return Err(EditError::BadIndex { alpha: m.dim(), dim: self.dim() });
         }
         self.reserve_darts(m.dart_count());
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| self.create_dart()).collect();
@@ -127,7 +127,7 @@ impl<A: Attributes> GMap<A> {
 
 #[cfg(test)]
 mod tests {
-    use crate::{examples, Cells, Characteristics, GMap, MapView, SewError};
+    use crate::{examples, Cells, Characteristics, EditError, GMap, MapView};
 
     #[test]
     fn two_copies_are_two_components_with_the_cells_of_both() {
@@ -213,7 +213,7 @@ mod tests {
     #[test]
     fn a_map_of_higher_dimension_is_refused() {
         let mut g = GMap::new(1);
-        assert_eq!(g.try_append(&examples::torus()), Err(SewError::BadIndex { alpha: 2, dim: 1 }));
+        assert_eq!(g.try_append(&examples::torus()), Err(EditError::BadIndex { alpha: 2, dim: 1 }));
         assert_eq!(g.dart_count(), 0);
     }
 }

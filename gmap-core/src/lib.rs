@@ -101,7 +101,7 @@ pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};
 pub use characteristics::Characteristics;
 pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{DenseMap, OrientedCells3d, Partition};
-pub use edit::{DartId, GMap, MapDefect, SewError};
+pub use edit::{DartId, EditError, GMap, MapDefect};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
 pub use geometry::{Affine, IntoPoint, MakeError};
 pub use ids::{CellId, Dart, Point};

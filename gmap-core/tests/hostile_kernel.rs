@@ -5,7 +5,7 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use gmap_core::{Dart, DartError, DenseMap, GMap, SewError, ValidityError};
+use gmap_core::{Dart, DartError, DenseMap, EditError, GMap, ValidityError};
 
 /// The panic message of `f`, which must panic.
 fn panic_message(f: impl FnOnce()) -> String {
@@ -91,13 +91,13 @@ fn gmap_unsew_and_remove_of_a_removed_dart_are_errors() {
     let b = g.create_dart();
     g.sew(a, b, 0);
     g.remove_dart(a);
-    assert_eq!(g.try_unsew(a, 0), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_remove_dart(a), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_unsew(b, 3), Err(SewError::BadIndex { alpha: 3, dim: 2 }));
-    assert_eq!(g.try_link(a, b, 1), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_unlink(b, 9), Err(SewError::BadIndex { alpha: 9, dim: 2 }));
-    assert_eq!(g.try_alpha(a, 0), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_sew(a, b, 0), Err(SewError::NoSuchDart(a)));
+    assert_eq!(g.try_unsew(a, 0), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_remove_dart(a), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_unsew(b, 3), Err(EditError::BadIndex { alpha: 3, dim: 2 }));
+    assert_eq!(g.try_link(a, b, 1), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_unlink(b, 9), Err(EditError::BadIndex { alpha: 9, dim: 2 }));
+    assert_eq!(g.try_alpha(a, 0), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_sew(a, b, 0), Err(EditError::NoSuchDart(a)));
     assert!(g.is_free(b, 0));
     let msg = panic_message(|| g.clone().unsew(a, 0));
     assert!(msg.starts_with("dart ") && msg.contains("does not exist"), "{msg}");
@@ -117,7 +117,7 @@ fn gmap_stale_handle_does_not_mark_the_dart_reusing_its_slot() {
     // the slot is reused, with a new version
     assert_eq!(g.dart_index(old), g.dart_index(new));
     let m = g.reserve_mark();
-    assert_eq!(g.try_mark(m, old), Err(SewError::NoSuchDart(old)));
+    assert_eq!(g.try_mark(m, old), Err(EditError::NoSuchDart(old)));
     assert!(!g.is_marked(m, new));
     let msg = panic_message(|| {
         g.clone().mark(m, old);

@@ -257,6 +257,7 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
             Ok((*i, cell.get()))
         }
         PreconditionError::SelfBending(other) => Err(fail(format!("not a self-bending: {other}"))),
+        other => Err(fail(format!("a refusal this test does not know: {other}"))),
     }
 }
 

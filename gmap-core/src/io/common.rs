@@ -44,6 +44,7 @@ impl fmt::Display for ReadError {
 
 /// What is wrong with an input file.
 #[derive(Clone, Debug, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ReadErrorKind {
     /// The file could not be read.
     #[error("cannot read the file: {0}")]
@@ -242,6 +243,7 @@ impl ReadError {
 
 /// A failure to write a file.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum WriteError {
     /// Creating, writing or renaming the file failed.
     #[error("{path}: cannot write the file: {source}")]

@@ -30,6 +30,7 @@ pub fn cellular_complex(map: &DenseMap) -> Result<CellularComplex, PreconditionE
 /// Why the cellular homology of an editable map could not be computed: a cell fails C1/C2,
 /// or the reduction failed.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum GMapHomologyError {
     /// A cell fails condition C1 or C2 (its darts are numbered as in `GMap::to_dense`).
     #[error(transparent)]

@@ -29,6 +29,7 @@ use crate::engine::homology::{homology_z, Homology, HomologyError};
 
 /// A cell on which the cellular method does not apply.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum PreconditionError {
     /// Condition C1 fails: the cell is not orientable as a compacted cell, or its boundary
     /// is open (the kernel's message names the cell and the condition).

@@ -154,6 +154,7 @@ pub struct ChainMapTau {
 
 /// Where τ fails to commute with the border operators.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum TauError {
     /// `τ_{i-1} ∂ᶜ_i` and `∂ˢ_i τ_i` differ on the column of an i-cell.
     #[error("BO §6: the border of the {dim}-cell of dart {dart} does not commute with τ (c∂ᶜτ != cτ∂ˢ)")]

@@ -107,6 +107,7 @@ impl fmt::Display for Homology {
 
 /// Why a homology computation failed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
     #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]

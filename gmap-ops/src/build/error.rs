@@ -4,6 +4,7 @@ use thiserror::Error;
 
 /// Why a builder refused its arguments.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum BuildError {
     /// An argument out of range (a 0-gon, a grid with a zero side, a lens space with p = 0…).
     #[error("bad argument: {0}")]

@@ -7,6 +7,7 @@ use thiserror::Error;
 
 /// Why a map could not be exported.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum ExportError {
     /// The format holds only maps of one dimension.
     #[error("{format} holds {expected}-maps, this map has dimension {found}")]

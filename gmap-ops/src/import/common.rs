@@ -7,6 +7,7 @@ use thiserror::Error;
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum ImportError {
     /// The file could not be read.
     #[error("{0}")]

@@ -11,6 +11,7 @@ use crate::cellular::precond::{check_preconditions, PreconditionError};
 
 /// Why the cells of a G-map do not give an architectural complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum FromMapError {
     /// a cell is not orientable as a compacted cell (condition C1): no signed incidences
     #[error(transparent)]

@@ -8,6 +8,7 @@ use thiserror::Error;
 
 /// Why LAR data is malformed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum LarError {
     /// A vertex index is out of range.
     #[error("cell {cell} of dimension {dim} names vertex {vertex}, but there are {vertices} vertices")]

@@ -9,6 +9,7 @@ use thiserror::Error;
 
 /// Why a model cannot be built, annotated or closed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum TmError {
     /// A cell index (in an incidence or a query) is not below the number of cells.
     #[error("no cell {index}: the model has {len} cells")]
