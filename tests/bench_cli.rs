@@ -109,7 +109,7 @@ fn a_route_that_does_not_apply_is_a_row() {
     // a segment with a free end: a 1-map whose 0-cell fails C1 or C2... use a loose dart pair
     let dir = tempfile::tempdir().unwrap();
     let mut m = gmap_core::DenseMap::new(2, 2);
-    m.link(gmap_core::Dart(0), gmap_core::Dart(1), 1);
+    m.link(gmap_core::Dart::new(0), gmap_core::Dart::new(1), 1);
     let p = dir.path().join("odd.gmap");
     gmap_core::io::write_gmap(&m, &p).unwrap();
     let cell = gmap(&["homology", p.to_str().unwrap()]);

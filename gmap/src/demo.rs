@@ -54,6 +54,7 @@ pub fn demo_agreement(m: &DenseMap) -> String {
         Err(PreconditionError::C1(_)) => "n/a (C1)".to_string(),
         Err(PreconditionError::C2 { .. }) => "n/a (C2)".to_string(),
         Err(PreconditionError::SelfBending(_)) => "n/a (self-bending)".to_string(),
+        Err(e) => format!("n/a ({e})"),
         Ok(c) => match (homology_z(&c.chain), s) {
             (Ok(a), Ok(b)) if a == b => "yes".to_string(),
             _ => "NO".to_string(),

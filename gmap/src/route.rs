@@ -146,7 +146,7 @@ pub(crate) fn cellular<'a>(
         Error::from_source(ErrorKind::Precondition, &e)
             .context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
     })?;
-    let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.0).collect()).collect();
+    let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
     let pts = points(map);
     Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
 }
@@ -193,7 +193,7 @@ pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> 
         name: Box::new(move |k, j| {
             let x = &simplices[k][j as usize];
             CellName::Dart {
-                dart: x.dart.0,
+                dart: x.dart.get(),
                 point: pts.as_ref().and_then(|p| p[x.dart.index()]),
                 simplex: Some((0..32).filter(|i| x.labels & (1 << i) != 0).collect()),
             }

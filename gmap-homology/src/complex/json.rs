@@ -47,6 +47,7 @@ use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum JsonError {
     /// Not JSON at all.
     #[error("line {line}, column {column}: invalid JSON: {message}")]

@@ -17,7 +17,7 @@ use rustc_hash::FxBuildHasher;
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{available_memory, bytes_per_dart, default_max_darts, FileError, ImportError};
+use super::common::{available_memory, bytes_per_dart, default_max_darts, FileError, ImportError};
 use crate::perm::{factorial, rank, PermTable};
 
 /// A simplicial complex given by its facets, each with its vertices sorted, and the line of
@@ -853,7 +853,7 @@ fn import_limit(sc: &SimplicialComplex, max_darts: Option<u64>) -> Result<u64, I
 /// Reads a `.facets` file into a G-map, refusing more than `max_darts` darts (default:
 /// [`default_max_darts`]) or more than the memory limit before allocating.
 pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
     sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
@@ -861,20 +861,20 @@ pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, File
 /// Reads a `.facets` file as a simplicial complex, without making a G-map of it (any
 /// finite simplicial complex: mixed dimensions, ridges in any number of facets).
 pub fn read_facets_complex(path: &Path) -> Result<SimplicialComplex, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads the complex `name` (or the first) of a `.lex` file, without making a G-map of it.
 pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialComplex, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.lex` file (the complex `name`, or the first one) into a G-map; see
 /// [`read_facets`] for the limit.
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
     sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
