@@ -68,6 +68,7 @@ pub use gmap_homology as homology;
 pub use gmap_ops as ops;
 
 pub mod bench;
+mod cell_name;
 pub mod demo;
 mod error;
 pub mod info;

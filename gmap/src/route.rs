@@ -19,10 +19,10 @@ use gmap_homology::simplices::{face_complex_of, FaceComplex, FaceError};
 use gmap_homology::{cellular_complex, simplicial_complex_with_simplices, ChainComplex};
 use gmap_ops::import::SimplicialComplex;
 
+use crate::cell_name::CellName;
 use crate::error::{err, Error, ErrorKind, Result};
 use crate::input::Input;
 use crate::progress::Progress;
-use crate::report::CellName;
 
 /// Which chain complex of a map is reduced.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
