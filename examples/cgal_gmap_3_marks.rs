@@ -22,7 +22,7 @@ pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
     let first = g.try_append(&tetrahedron)?[0];
     let second = g.try_append(&tetrahedron)?[0];
     g.try_sew(first, second, 3)?;
-    for d in g.cell(first, 3) {
+    for d in g.cell_darts(first, 3) {
         g.mark(first_tetrahedron, d);
     }
     // the shared face: removing it (a face between two volumes) merges them

@@ -55,7 +55,7 @@ wrote building.gmap, building.json, building.dot, building.vtk
 #[test]
 fn every_vertex_has_one_point_and_every_edge_runs_along_an_axis() {
     let g = building::building().unwrap();
-    let (m, _) = g.to_dense();
+    let (m, _) = g.to_dense_with_ids();
     assert_eq!(m.cell_counts(), vec![27, 54, 36, 8]);
     let vertices = m.cells(0);
     let mut points = BTreeSet::new();

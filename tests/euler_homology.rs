@@ -15,7 +15,7 @@ fn betti(m: &DenseMap) -> Vec<usize> {
 }
 
 fn config(g: &GMap) -> (Vec<usize>, Vec<usize>) {
-    let (m, _) = g.to_dense();
+    let (m, _) = g.to_dense_with_ids();
     (m.cell_counts(), betti(&m))
 }
 
@@ -86,7 +86,7 @@ proptest! {
         let mut conf = config(&g);
         for (op, p1, p2, dim) in ops {
             if let Some(v) = step(&mut g, op, p1, p2, dim) {
-                let (dense, _) = g.to_dense();
+                let (dense, _) = g.to_dense_with_ids();
                 prop_assert!(dense.validate().is_ok());
                 let next = (dense.cell_counts(), betti(&dense));
                 prop_assert_eq!(&v, &EpVector::between(&conf.0, &conf.1, &next.0, &next.1));

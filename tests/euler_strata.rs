@@ -14,12 +14,12 @@ fn detach_and_reattach_a_vertex() {
         g.sew(d[2 * k], d[2 * k + 1], 0);
         g.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
     }
-    assert_eq!(incomplete_cells(&g.to_dense().0), (vec![3, 3], vec![0, 0]));
+    assert_eq!(incomplete_cells(&g.to_dense_map()), (vec![3, 3], vec![0, 0]));
     // detach the vertex {d1, d2} (EO's kvC-like detachment): its darts go, the two edges
     // at it lose an end
     g.remove_dart(d[1]);
     g.remove_dart(d[2]);
-    let m = g.to_dense().0;
+    let m = g.to_dense_map();
     assert!(m.validate().is_ok());
     let (complete, incomplete) = incomplete_cells(&m);
     assert_eq!((complete.clone(), incomplete.clone()), (vec![2, 1], vec![0, 2]));
@@ -55,7 +55,7 @@ fn detach_and_reattach_a_vertex() {
     g.sew(d[0], a, 0);
     g.sew(d[3], b, 0);
     g.sew(a, b, 1);
-    let m = g.to_dense().0;
+    let m = g.to_dense_map();
     assert_eq!(incomplete_cells(&m), (vec![3, 3], vec![0, 0]));
     assert_eq!(m.euler_characteristic(), 0);
 }

@@ -1,7 +1,7 @@
 //! The linear cell complex: constructors with coordinates, barycentres, transforms and the
 //! `.off` writers, checked as properties on random grids and random points.
 
-use gmap::core::{Affine, GMap, MapView, Point};
+use gmap::core::{Affine, GMap, Point};
 use gmap::ops::export::{gmap_off_string, gmap_two_skeleton_off_string};
 use gmap::ops::geometry::grid_with_points;
 use gmap::ops::import::PolygonMesh;
@@ -64,7 +64,7 @@ proptest! {
         for (j, b) in cells.into_iter().enumerate() {
             prop_assert!(close(g.barycenter(d, j).unwrap(), a.apply(b)));
         }
-        g.check().unwrap();
+        g.validate().unwrap();
     }
 
     /// The `.off` of a planar grid reads back as a map with the same cells; the 2-skeleton of
@@ -73,10 +73,10 @@ proptest! {
     fn off_texts_of_grids(a in 1usize..4, b in 1usize..4, c in 1usize..3) {
         let (g, _) = GMap::from_dense(&grid_with_points(&[a, b], &[false, false]).unwrap());
         let back = PolygonMesh::parse(&gmap_off_string(&g).unwrap()).unwrap().to_gmap().unwrap();
-        prop_assert_eq!(back.cell_counts(), MapView::cell_counts(&g)[..3].to_vec());
+        prop_assert_eq!(back.cell_counts(), g.cell_counts()[..3].to_vec());
         let (h, _) = GMap::from_dense(&grid_with_points(&[a, b, c], &[false; 3]).unwrap());
         let text = gmap_two_skeleton_off_string(&h).unwrap();
-        let counts = MapView::cell_counts(&h);
+        let counts = h.cell_counts();
         prop_assert_eq!(text.lines().nth(1).unwrap().to_string(), format!("{} {} 0", counts[0], counts[2]));
         prop_assert_eq!(text.lines().count(), 2 + counts[0] + counts[2]);
     }

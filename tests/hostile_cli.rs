@@ -82,7 +82,7 @@ fn build(n: usize, pieces: &[usize], sews: &[(usize, usize, usize)]) -> DenseMap
     for &(a, b, i) in sews {
         let _ = g.try_sew(darts[a % darts.len()], darts[b % darts.len()], i % (n + 1));
     }
-    g.to_dense().0
+    g.to_dense_map()
 }
 
 proptest! {

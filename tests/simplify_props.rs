@@ -63,7 +63,7 @@ proptest! {
         for (op, p1, p2, dim) in ops {
             step(&mut g, op, p1, p2, dim);
         }
-        let (m, _) = g.to_dense();
+        let (m, _) = g.to_dense_with_ids();
         prop_assume!(m.validate().is_ok());
         let Some(before) = cellular(&m) else { return Ok(()) };
         let (small, report) = simplify_with(&m, &SimplifyOptions { tries, seed, search: 40 });
@@ -92,7 +92,7 @@ fn search_keeps_validity_and_homology() {
         for _ in 0..next() % 5 {
             step(&mut g, (next() % 5) as u8, next(), next(), next() % 4);
         }
-        let (m, _) = g.to_dense();
+        let (m, _) = g.to_dense_with_ids();
         if m.validate().is_err() || m.dim() != 3 {
             continue;
         }

@@ -2,7 +2,7 @@
 //! a volume, in maps of dimension 2 to 4, orientable or not, with torsion) leaves its
 //! integer homology as it was, Betti numbers and torsion coefficients alike.
 
-use gmap_core::{DenseMap, GMap, MapView};
+use gmap_core::{DenseMap, GMap};
 use gmap_homology::{homology_z, simplicial_complex};
 use gmap_ops::build::{cube, grid, lens_space, schema, simplex};
 use gmap_ops::euler::ops::try_star_cell;
@@ -53,7 +53,7 @@ fn every_dimension_of_cell_on_the_lens_space() {
         let mut g = GMap::from_dense(&m).0;
         let d = g.darts().next().unwrap();
         try_star_cell(&mut g, d, i, None).unwrap();
-        assert_eq!(homology(&g.to_dense().0), before, "star of a {i}-cell");
+        assert_eq!(homology(&g.to_dense_map()), before, "star of a {i}-cell");
     }
 }
 
@@ -71,7 +71,7 @@ proptest! {
             let d = g.darts().nth(at % g.dart_count()).unwrap();
             try_star_cell(&mut g, d, i, None).unwrap();
         }
-        prop_assert!(MapView::validate(&g).is_ok());
-        prop_assert_eq!(homology(&g.to_dense().0), before);
+        prop_assert!(g.validate().is_ok());
+        prop_assert_eq!(homology(&g.to_dense_map()), before);
     }
 }

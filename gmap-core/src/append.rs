@@ -11,7 +11,7 @@
 //! assert_eq!(g.dart_count(), 16);
 //! assert!(g.is_free(a[0], 3));
 //! g.sew(a[0], b[0], 3);
-//! assert_eq!(MapView::component_count(&g), 1);
+//! assert_eq!(g.component_count(), 1);
 //! ```
 
 use crate::attr::Attributes;
@@ -127,7 +127,7 @@ impl<A: Attributes> GMap<A> {
 
 #[cfg(test)]
 mod tests {
-    use crate::{examples, Cells, Characteristics, EditError, GMap, MapView};
+    use crate::{examples, Cells, Characteristics, EditError, GMap};
 
     #[test]
     fn two_copies_are_two_components_with_the_cells_of_both() {
@@ -157,7 +157,7 @@ mod tests {
             }
             assert!(g.is_free(ids[d.index()], 3));
         }
-        assert_eq!(MapView::cell_counts(&g), {
+        assert_eq!(g.cell_counts(), {
             let mut c = m.cell_counts();
             c.push(m.component_count());
             c

@@ -1178,7 +1178,7 @@ mod tests {
         assert_eq!(m.point(d[0]), Some([3.0, 0.0, 0.0]));
         m.check_attributes().unwrap();
         // to_dense writes a vertex's point on each of its darts, from_dense reads it back
-        let (dense, ids) = m.to_dense();
+        let (dense, ids) = m.to_dense_with_ids();
         let k = ids.iter().position(|&x| x == d[0]).unwrap();
         assert_eq!(dense.point(Dart::new(k as u32)), Some([3.0, 0.0, 0.0]));
         let (back, bids) = GMap::from_dense(&dense);
@@ -1225,11 +1225,11 @@ mod tests {
         assert!(m.needs_reconcile());
         m.sew(a, b, 0);
         m.set_attribute::<1>(a, 1);
-        assert_eq!(m.check(), Ok(()));
+        assert_eq!(m.validate(), Ok(()));
         m.unlink(a, 0);
         m.link(a, a, 0);
         assert_eq!(
-            m.check(),
+            m.validate(),
             Err(crate::MapDefect::Attribute(AttributeDefect::Shared {
                 dim: 1,
                 attr: m.attribute_id::<1>(a).unwrap(),
@@ -1238,7 +1238,7 @@ mod tests {
             }))
         );
         m.reconcile_attributes(&[a, b]);
-        assert_eq!(m.check(), Ok(()));
+        assert_eq!(m.validate(), Ok(()));
         assert_eq!(m.attribute_count::<1>(), 2);
         assert!(!GMap::new(1).needs_reconcile());
     }

@@ -456,6 +456,12 @@ impl DenseMap {
         self.validate().is_ok()
     }
 
+    /// The darts of the i-cell of `d` (BO Def. 2), in breadth-first order from `d`.
+    /// O(cell size × n).
+    pub fn cell_darts(&self, d: Dart, i: usize) -> Vec<Dart> {
+        self.orbit(d, AlphaSet::cell(i, self.dim))
+    }
+
     /// The darts of the orbit `<set>(d)`, in traversal order starting with `d`.
     /// O(size of the orbit) time, O(N) bits of scratch.
     pub fn orbit(&self, d: Dart, set: AlphaSet) -> Vec<Dart> {

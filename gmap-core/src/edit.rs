@@ -5,7 +5,7 @@
 //! silently reused. Each dart stores its `n + 1` involution images inline (a `SmallVec`,
 //! no heap allocation up to dimension 4). Editing goes through `link`/`unlink` (low
 //! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
-//! [`GMap::to_dense`] freezes the map into a [`DenseMap`] for analysis in one linear
+//! [`GMap::to_dense_map`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.
 //!
 //! A `GMap<A>` carries cell attributes described by `A` (see [`crate::attr`]) and a point
@@ -20,10 +20,12 @@ use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
 pub use crate::darts::DartId;
 use crate::darts::{dart_index, DartData};
-use crate::dense::DenseMap;
+use crate::dense::{DenseMap, Partition};
+use crate::error::{BoundaryDefect, OrientationConflict};
 use crate::ids::{Dart, Point};
 use crate::marks::{MarkId, Marks};
 use crate::view::MapView;
+use bitvec::vec::BitVec;
 
 /// The misuse of an editable [`GMap`]: why an edit (a sew, a link, a removal, a mark, an
 /// attribute) or a query through a [`DartId`] was refused. The `try_` forms ([`GMap::try_sew`], [`GMap::try_link`], [`GMap::try_unsew`],
@@ -85,11 +87,11 @@ pub enum EditError {
     },
 }
 
-/// What [`GMap::check`] finds wrong: the involutions, or the attributes.
+/// What [`GMap::validate`] finds wrong: the involutions, or the attributes.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 #[non_exhaustive]
 pub enum MapDefect {
-    /// BO Def. 1 fails (darts numbered as in [`GMap::to_dense`]).
+    /// BO Def. 1 fails (darts numbered as in [`GMap::to_dense_map`]).
     #[error(transparent)]
     Structure(#[from] crate::error::ValidityError),
     /// A cell's darts disagree on its attribute or point, or a count is wrong.
@@ -166,7 +168,7 @@ fn refuse(e: EditError) -> ! {
 ///     m.sew(d[2 * k], d[2 * k + 1], 0);
 ///     m.sew(d[2 * k + 1], d[(2 * k + 2) % 6], 1);
 /// }
-/// let dense = m.to_dense().0;
+/// let dense = m.to_dense_map();
 /// assert_eq!(dense.cell_counts(), vec![3, 3]);
 /// ```
 ///
@@ -525,10 +527,10 @@ impl<A: Attributes> GMap<A> {
         !A::EMPTY || self.points.active()
     }
 
-    /// Checks the whole map: BO Def. 1 ([`MapView::validate`]), then the attributes and
-    /// points ([`GMap::check_attributes`]). O(N n²).
-    pub fn check(&self) -> Result<(), MapDefect> {
-        MapView::validate(self)?;
+    /// Checks the whole map: BO Def. 1 ([`DenseMap::validate`] on the snapshot), then the
+    /// attributes and points ([`GMap::check_attributes`]). O(N n²).
+    pub fn validate(&self) -> Result<(), MapDefect> {
+        self.to_dense_map().validate()?;
         self.check_attributes()?;
         Ok(())
     }
@@ -754,14 +756,29 @@ impl<A: Attributes> GMap<A> {
         self.attrs.cells_mut().set_on_split(std::sync::Arc::new(f));
     }
 
-    /// The orbit `<set>(d)` in breadth-first order from `d` ([`MapView::orbit`]).
-    /// O(orbit size).
+    /// The orbit `<set>(d)` in breadth-first order from `d` (involutions above `dim()`
+    /// ignored). O(orbit size × |set|).
     pub fn orbit(&self, d: DartId, set: AlphaSet) -> Vec<DartId> {
-        <Self as MapView>::orbit(self, d, set)
+        let idx: Vec<usize> = set.iter().filter(|&i| i <= self.dim).collect();
+        let mut seen: rustc_hash::FxHashSet<DartId> = rustc_hash::FxHashSet::default();
+        seen.insert(d);
+        let mut out = vec![d];
+        let mut k = 0;
+        while k < out.len() {
+            let x = out[k];
+            k += 1;
+            for &i in &idx {
+                let y = self.alpha(x, i);
+                if seen.insert(y) {
+                    out.push(y);
+                }
+            }
+        }
+        out
     }
 
     /// The darts of the i-cell of `d` (BO Def. 2).
-    pub fn cell(&self, d: DartId, i: usize) -> Vec<DartId> {
+    pub fn cell_darts(&self, d: DartId, i: usize) -> Vec<DartId> {
         self.orbit(d, AlphaSet::cell(i, self.dim))
     }
 
@@ -916,9 +933,28 @@ impl<A: Attributes> GMap<A> {
         Ok(())
     }
 
-    /// Freezes the map: darts renumbered `0..N` in storage order. Returns the dense map and
-    /// the handle of each dense dart. O(N n).
-    pub fn to_dense(&self) -> (DenseMap, Vec<DartId>) {
+    /// The dense snapshot of the map, for the whole-map kernels of [`DenseMap`]: darts
+    /// renumbered `0..N` in storage order ([`GMap::darts`]), points kept. O(N n); when no dart
+    /// was ever removed from the middle (the slots are contiguous) the numbering is the slot
+    /// number and no table is built. [`GMap::to_dense_with_ids`] also gives each dense dart's
+    /// handle.
+    pub fn to_dense_map(&self) -> DenseMap {
+        let first = self.darts.keys().next().map_or(0, dart_index);
+        let contiguous = self.darts.keys().enumerate().all(|(k, d)| dart_index(d) == first + k);
+        if !contiguous {
+            return self.to_dense_with_ids().0;
+        }
+        let w = self.dim + 1;
+        let mut flat = Vec::with_capacity(self.darts.len() * w);
+        for (_, data) in &self.darts {
+            flat.extend(data.alpha.iter().map(|&x| (dart_index(x) - first) as u32));
+        }
+        self.dense_with_points(flat, self.darts.keys())
+    }
+
+    /// The dense snapshot ([`GMap::to_dense_map`]) and the handle of each dense dart: dense
+    /// dart `k` is `ids[k]`. O(N n).
+    pub fn to_dense_with_ids(&self) -> (DenseMap, Vec<DartId>) {
         let ids: Vec<DartId> = self.darts.keys().collect();
         let mut index: slotmap::SecondaryMap<DartId, u32> = slotmap::SecondaryMap::with_capacity(ids.len());
         for (k, &d) in ids.iter().enumerate() {
@@ -931,15 +967,21 @@ impl<A: Attributes> GMap<A> {
                 flat.push(index[self.darts[d].alpha[i]]);
             }
         }
+        let dense = self.dense_with_points(flat, ids.iter().copied());
+        (dense, ids)
+    }
+
+    /// The dense map of rows `flat`, with the point of each dart of `ids` (dense order).
+    fn dense_with_points(&self, flat: Vec<u32>, ids: impl Iterator<Item = DartId>) -> DenseMap {
         let mut dense = DenseMap::from_flat_unchecked(self.dim, flat).expect("sizes checked on creation");
         if self.points.active() {
-            for (k, &d) in ids.iter().enumerate() {
+            for (k, d) in ids.enumerate() {
                 if let Some(&p) = self.points.get_at(dart_index(d)) {
                     dense.set_point(Dart::new(k as u32), Some(p));
                 }
             }
         }
-        (dense, ids)
+        dense
     }
 
     /// Thaws a dense map into a map with attributes `A` (none set): the handle of dense dart
@@ -1120,6 +1162,51 @@ impl<A: Attributes> GMap<A> {
     }
 }
 
+/// The whole-map questions, with the names and answers of [`DenseMap`]'s: each runs the dense
+/// kernel on one snapshot ([`GMap::to_dense_map`], O(N n)), so darts in the answers are
+/// numbered as in [`GMap::darts`]. To ask several, take the snapshot once.
+impl<A: Attributes> GMap<A> {
+    /// The i-cells as a partition of the darts (see [`DenseMap::cells`]).
+    pub fn cells(&self, i: usize) -> Partition {
+        self.to_dense_map().cells(i)
+    }
+
+    /// Number of i-cells for `i = 0..=n` (see [`DenseMap::cell_counts`]).
+    pub fn cell_counts(&self) -> Vec<usize> {
+        self.to_dense_map().cell_counts()
+    }
+
+    /// The alternating sum of [`cell_counts`](GMap::cell_counts).
+    pub fn euler_characteristic(&self) -> i64 {
+        self.to_dense_map().euler_characteristic()
+    }
+
+    /// The connected components as a partition of the darts.
+    pub fn components(&self) -> Partition {
+        self.to_dense_map().components()
+    }
+
+    /// Number of connected components.
+    pub fn component_count(&self) -> usize {
+        self.to_dense_map().component_count()
+    }
+
+    /// An orientation (BO Def. 7): a bit per dart, or the first conflict (BO Def. 8).
+    pub fn orientation(&self) -> Result<BitVec, OrientationConflict> {
+        self.to_dense_map().orientation()
+    }
+
+    /// Whether the map is orientable (BO Def. 7).
+    pub fn is_orientable(&self) -> bool {
+        self.to_dense_map().is_orientable()
+    }
+
+    /// Checks BO Def. 6 (complete boundaries); see [`DenseMap::check_complete_boundaries`].
+    pub fn check_complete_boundaries(&self) -> Result<(), BoundaryDefect> {
+        self.to_dense_map().check_complete_boundaries()
+    }
+}
+
 impl<A: Attributes> MapView for GMap<A> {
     type Dart = DartId;
 
@@ -1140,7 +1227,7 @@ impl<A: Attributes> MapView for GMap<A> {
     }
 
     fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
-        f(&self.to_dense().0)
+        f(&self.to_dense_map())
     }
 }
 
@@ -1263,7 +1350,7 @@ mod tests {
         assert!(a.iter().zip(&b).all(|(&x, &y)| g.alpha(x, 3) == y));
         assert_eq!(g.try_sew(a[1], c[0], 3), Err(EditError::NotFree { dart: a[1], alpha: 3 }));
         // the two 20-gons are one face now, each still its own volume
-        assert_eq!(MapView::cell_counts(&g), vec![41, 41, 2, 3]);
+        assert_eq!(g.cell_counts(), vec![41, 41, 2, 3]);
     }
 
     proptest! {

@@ -128,7 +128,7 @@ fn orderings(k: usize) -> Vec<Vec<usize>> {
 /// use gmap_core::{examples::add_simplex, GMap, MapView};
 /// let mut g = GMap::new(3);
 /// assert_eq!(add_simplex(&mut g, 3).len(), 24);
-/// assert_eq!(MapView::cell_counts(&g), vec![4, 6, 4, 1]);
+/// assert_eq!(g.cell_counts(), vec![4, 6, 4, 1]);
 /// ```
 pub fn add_simplex<A: Attributes>(g: &mut GMap<A>, k: usize) -> Vec<DartId> {
     let perms = orderings(k);

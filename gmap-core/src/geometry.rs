@@ -589,7 +589,7 @@ impl<A: Attributes> GMap<A> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Cells, MapView};
+    use crate::Cells;
 
     const CUBE: [[f64; 3]; 8] = [
         [0.0, 0.0, 0.0],
@@ -615,7 +615,7 @@ mod tests {
         g.make_combinatorial_polygon(5);
         g.make_combinatorial_tetrahedron();
         g.make_combinatorial_hexahedron();
-        g.check().unwrap();
+        g.validate().unwrap();
         assert_eq!(g.dart_count(), 2 + 6 + 8 + 24 + 36 + 48 + 10 + 24 + 48);
         // per object: vertices, edges, faces, volumes (one component each)
         let objects = [[2, 1, 1, 1], [3, 3, 1, 1], [4, 4, 1, 1], [4, 6, 4, 1], [6, 9, 5, 1], [8, 12, 6, 1]];
@@ -626,8 +626,8 @@ mod tests {
                 want[k] += o[k];
             }
         }
-        assert_eq!(MapView::cell_counts(&g), want);
-        assert_eq!(MapView::component_count(&g), 9);
+        assert_eq!(g.cell_counts(), want);
+        assert_eq!(g.component_count(), 9);
         // only the objects with coordinates have points: one per vertex
         assert_eq!(g.point_count(), 2 + 3 + 4 + 4 + 6 + 8);
     }
@@ -724,7 +724,7 @@ mod tests {
             assert!((after[k] - want[k]).abs() < 1e-12, "{after:?} {want:?}");
         }
         assert_eq!(g.try_transform_cell(a, 5, |p| p), Err(EditError::NoSuchCells { cell: 5, dim: 3 }));
-        g.check().unwrap();
+        g.validate().unwrap();
         assert_eq!(GMap::new(2).bounding_box(), None);
     }
 }

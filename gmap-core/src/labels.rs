@@ -140,11 +140,11 @@ impl DenseLabels {
     }
 }
 
-/// Freezes a labelled map ([`GMap::to_dense`]) and numbers its labels like the dense map's
+/// Freezes a labelled map ([`GMap::to_dense_map`]) and numbers its labels like the dense map's
 /// cells: `(dense map, labels, handle of each dense dart)`. O(N n²) (one cell partition
 /// per dimension).
 pub fn to_dense_labels(g: &LabelledGMap) -> (DenseMap, DenseLabels, Vec<DartId>) {
-    let (dense, ids) = g.to_dense();
+    let (dense, ids) = g.to_dense_with_ids();
     let mut of = Vec::with_capacity(dense.dim() + 1);
     for i in 0..=dense.dim().min(MAX_LABELLED_DIM) {
         let cells = dense.cells(i);

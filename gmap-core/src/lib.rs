@@ -26,7 +26,7 @@
 //!
 //! The split follows the measurement that drove it: orbit traversals over a flat `u32`
 //! array touch one cache line per dart, while a slotmap lookup adds a version check and
-//! an indirection. [`GMap::to_dense`] and [`GMap::from_dense`] convert in one linear pass.
+//! an indirection. [`GMap::to_dense_map`] and [`GMap::from_dense`] convert in one linear pass.
 //!
 //! Whole-map counts and checks avoid traversals where a sequential scan does: orbit counts
 //! ([`DenseMap::cell_counts_and_components`]) and orientability use union-find over the

@@ -29,7 +29,7 @@ use crate::attr::Attributes;
 use crate::edit::{DartId, GMap};
 
 /// The darts of an orbit `<set>(d)`, breadth-first from `d` (the order of
-/// [`crate::MapView::orbit`]). From [`GMap::orbit_iter`].
+/// [`GMap::orbit`]). From [`GMap::orbit_iter`].
 pub struct OrbitIter<'a, A: Attributes> {
     map: &'a GMap<A>,
     idx: SmallVec<[usize; 8]>,
@@ -149,7 +149,7 @@ impl<A: Attributes> GMap<A> {
 
 #[cfg(test)]
 mod tests {
-    use crate::{examples, AlphaSet, GMap, MapView};
+    use crate::{examples, AlphaSet, GMap};
 
     #[test]
     fn lazy_walks_agree_with_the_collected_ones() {
@@ -161,7 +161,7 @@ mod tests {
                 assert_eq!(g.one_dart_per_cell(i).count(), count, "dimension {i}");
                 for d in g.darts() {
                     let lazy: Vec<_> = g.orbit_iter(d, AlphaSet::cell(i, n)).collect();
-                    assert_eq!(lazy, MapView::orbit(&g, d, AlphaSet::cell(i, n)));
+                    assert_eq!(lazy, g.orbit(d, AlphaSet::cell(i, n)));
                 }
             }
             // components
@@ -206,7 +206,7 @@ mod orientation_tests {
         assert!(g.is_marked(m, d));
         assert!(g.is_orientation(m, d));
         // the dense orientation agrees: same class as the first dart
-        let dense = g.to_dense().0.orientation().unwrap();
+        let dense = g.to_dense_map().orientation().unwrap();
         for (k, &x) in ids.iter().enumerate() {
             assert_eq!(g.is_marked(m, x), dense[k]);
         }

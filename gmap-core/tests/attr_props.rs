@@ -20,7 +20,7 @@ use proptest::prelude::*;
 
 /// The cell of each dart (by position in `darts`) for dimension `i`, from the snapshot.
 fn partition(g: &Full, i: usize) -> Vec<u32> {
-    g.to_dense().0.cells(i).of
+    g.to_dense_map().cells(i).of
 }
 
 /// A map of `pieces` simplices with a distinct value on every cell and a point per vertex.
@@ -227,8 +227,8 @@ proptest! {
         }
         let text = format_labelled_gmap(&g);
         let back = parse_labelled_gmap(&text, "x.gmap").map_err(|e| TestCaseError::fail(e.to_string()))?;
-        let (dense, ids) = g.to_dense();
-        let (dense_back, ids_back) = back.to_dense();
+        let (dense, ids) = g.to_dense_with_ids();
+        let (dense_back, ids_back) = back.to_dense_with_ids();
         prop_assert_eq!(&dense_back, &dense);
         back.check_attributes().map_err(|e| TestCaseError::fail(e.to_string()))?;
         for (&a, &b) in ids.iter().zip(&ids_back) {

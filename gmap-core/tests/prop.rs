@@ -23,7 +23,7 @@ fn build(n: usize, pieces: &[usize], sews: &[(usize, usize, usize)]) -> DenseMap
         let (d, e) = (darts[a % darts.len()], darts[b % darts.len()]);
         let _ = g.try_sew(d, e, i % (n + 1));
     }
-    g.to_dense().0
+    g.to_dense_map()
 }
 
 fn map_strategy(dims: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = DenseMap> {

@@ -562,7 +562,7 @@ fn euler_operators_on_classic_objects_keep_the_groups() {
         let (mut g, _) = GMap::from_dense(&base);
         let mut rng = SplitMix64::new(seed);
         let applied = random_steps(&mut g, steps, &CLASSIC_OPERATORS, &mut rng);
-        let (m, _) = g.to_dense();
+        let (m, _) = g.to_dense_with_ids();
         match judge(&m)? {
             Verdict::Accepted(h) => {
                 prop_assert_eq!(h.z.to_string(), want.clone(), "{} after {:?}", name, applied);
@@ -601,7 +601,7 @@ fn coned_surface(orientable: bool, g: usize, steps: usize, rng: &mut SplitMix64)
     let s = build::schema(&word).unwrap();
     let (mut gm, _) = GMap::from_dense(&s);
     random_steps(&mut gm, steps, &[Operator::InsertVertex, Operator::InsertEdge], rng);
-    gm.to_dense().0.embedded(3).unwrap()
+    gm.to_dense_map().embedded(3).unwrap()
 }
 
 #[test]
@@ -1005,7 +1005,7 @@ fn removing_the_loop_edge_of_l1_and_l2_keeps_the_space() {
         if ops::is_removable(&g, ids[0], 1) {
             ops::try_remove_cell(&mut g, ids[0], 1).unwrap();
         }
-        let (m, _) = g.to_dense();
+        let (m, _) = g.to_dense_with_ids();
         let h = homology_z(&simplicial_complex(&m)).unwrap();
         assert_eq!(h.to_string(), want, "L({p}, {q})");
     }

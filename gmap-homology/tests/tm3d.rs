@@ -464,7 +464,7 @@ fn two_rooms_gmap() -> gmap_core::DenseMap {
     try_insert_vertex(&mut g, z).unwrap();
     let z2 = g.alpha(g.alpha(z, 0), 1);
     try_insert_vertex(&mut g, z2).unwrap();
-    g.to_dense().0
+    g.to_dense_map()
 }
 
 #[test]

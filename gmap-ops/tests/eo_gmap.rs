@@ -14,7 +14,7 @@ use gmap_ops::euler::strata::{apply_on_gmap, map_counts, EoArgs, EoOperator, Str
 
 /// The stratum of the i-cell of every dart of `g` in the object `from_map` reads.
 fn read(g: &GMap) -> (StratifiedObject, impl Fn(DartId, usize) -> usize) {
-    let (m, ids) = g.to_dense();
+    let (m, ids) = g.to_dense_with_ids();
     let (o, strata) = StratifiedObject::from_map(&m);
     assert_eq!(o.validate(), Ok(()));
     let parts: Vec<Vec<u32>> = (0..=m.dim()).map(|i| m.cells(i).of).collect();
@@ -37,7 +37,7 @@ fn both(
     let eop = r.unwrap_or_else(|e| panic!("{name} on the G-map: {e}"));
     assert_eq!(eop.name, name.trim_end_matches('∞'));
     let step = o.apply(op, &args).unwrap_or_else(|e| panic!("{name} on the object: {e}"));
-    let (m, _) = g.to_dense();
+    let (m, _) = g.to_dense_with_ids();
     assert!(m.validate().is_ok());
     let counts = map_counts(&m);
     assert_eq!((step.complete.clone(), step.incomplete.clone(), step.euler), counts, "{name}");
@@ -61,7 +61,7 @@ fn mve_on_an_edge_with_a_missing_end() {
     let mut g = GMap::new(1);
     let a = g.create_dart();
     let (mut o, at) = read(&g);
-    assert_eq!(map_counts(&g.to_dense().0), (vec![1, 0], vec![0, 1], 0));
+    assert_eq!(map_counts(&g.to_dense_map()), (vec![1, 0], vec![0, 1], 0));
     let e = at(a, 1);
     // mve∞ (EO Fig. 5(b)): a complete edge from the vertex to the new one, an open edge
     // beyond; the same counts on both sides
@@ -84,7 +84,7 @@ fn mve_on_an_edge_with_a_missing_end() {
 fn subdividers_on_a_path_with_an_open_end() {
     let (mut g, [a, b, c]) = open_path();
     let (mut o, at) = read(&g);
-    assert_eq!(map_counts(&g.to_dense().0), (vec![2, 1], vec![0, 1], 0));
+    assert_eq!(map_counts(&g.to_dense_map()), (vec![2, 1], vec![0, 1], 0));
     // mve on the complete edge; the new part takes the end w
     let args = EoArgs::new().s(at(a, 1)).moved(&[at(b, 0)]);
     assert_eq!(both(&mut g, &mut o, "mve", &[a], args), (vec![3, 2], vec![0, 1], 0));
@@ -105,7 +105,7 @@ fn subdividers_on_a_path_with_an_open_end() {
 fn mef_kef_on_a_square() {
     let mut g = polygon(4);
     let (mut o, at) = read(&g);
-    assert_eq!(map_counts(&g.to_dense().0), (vec![4, 4, 1], vec![0, 0, 0], 1));
+    assert_eq!(map_counts(&g.to_dense_map()), (vec![4, 4, 1], vec![0, 0, 0], 1));
     let d1 = g.darts().next().unwrap();
     let d2 = g.darts().find(|&x| can_insert_edge(&g, d1, x)).unwrap();
     let args = EoArgs::new().s(at(d1, 2)).on(&[at(d1, 0), at(d2, 0)]);
@@ -143,12 +143,12 @@ fn mfs_kfs_in_a_cube() {
     for k in 0..4 {
         let a = g.alpha(cut[k], 0);
         let b = g.alpha(cut[(k + 1) % 4], 0);
-        let t = g.darts().find(|&y| can_insert_edge(&g, a, y) && g.cell(y, 0).contains(&b)).unwrap();
+        let t = g.darts().find(|&y| can_insert_edge(&g, a, y) && g.cell_darts(y, 0).contains(&b)).unwrap();
         try_insert_edge(&mut g, a, t).unwrap();
     }
     // the boundary of the solid is free for alpha_3, not below: every cell is complete
     let (mut o, at) = read(&g);
-    assert_eq!(map_counts(&g.to_dense().0), (vec![12, 20, 10, 1], vec![0, 0, 0, 0], 1));
+    assert_eq!(map_counts(&g.to_dense_map()), (vec![12, 20, 10, 1], vec![0, 0, 0, 0], 1));
     let seeds = find_cut(&g);
     let args = EoArgs::new().s(at(seeds[0], 3)).on(&[at(seeds[0], 0)]);
     assert_eq!(both(&mut g, &mut o, "mfs", &seeds, args), (vec![12, 20, 11, 2], vec![0, 0, 0, 0], 1));
@@ -177,7 +177,7 @@ fn a_map_read_as_an_object_satisfies_both_theorems() {
     let far_corner = g.alpha(far, 1);
     g.remove_dart(far);
     g.remove_dart(far_corner);
-    let (m, _) = g.to_dense();
+    let (m, _) = g.to_dense_with_ids();
     let (o, _) = StratifiedObject::from_map(&m);
     assert_eq!(o.validate(), Ok(()));
     let (complete, incomplete, chi) = map_counts(&m);

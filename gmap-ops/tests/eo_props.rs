@@ -163,7 +163,7 @@ fn base(kind: u8, k: usize) -> GMap {
 
 /// The object the map carries and, for every dart, the strata of its vertex and its edge.
 fn read(g: &GMap) -> (StratifiedObject, HashMap<DartId, usize>, HashMap<DartId, usize>) {
-    let (m, ids) = g.to_dense();
+    let (m, ids) = g.to_dense_with_ids();
     let (o, strata) = StratifiedObject::from_map(&m);
     let (p0, p1) = (m.cells(0), m.cells(1));
     let mut vert = HashMap::new();
@@ -195,7 +195,7 @@ proptest! {
     ) {
         let mut g = base(kind, k);
         let (mut o, mut vert, mut edge) = read(&g);
-        prop_assert_eq!(counts(&o), map_counts(&g.to_dense().0));
+        prop_assert_eq!(counts(&o), map_counts(&g.to_dense_map()));
         for (which, pick) in seq {
             let darts: Vec<DartId> = g.darts().collect();
             let d = darts[pick % darts.len()];
@@ -243,7 +243,7 @@ proptest! {
                         edge.remove(&d);
                         edge.remove(&other);
                     }
-                    let (m, _) = g.to_dense();
+                    let (m, _) = g.to_dense_with_ids();
                     prop_assert_eq!(counts(&o), map_counts(&m), "after {}", name);
                     prop_assert_eq!(o.validate(), Ok(()));
                 }

@@ -5,7 +5,7 @@
 //! follow: sews, unsews, every Euler operator of [`gmap_ops::euler::ops`] under our names
 //! and CGAL's, and `close`. After each step, against a snapshot taken before it:
 //!
-//! * the map is valid and every cell has exactly one attribute ([`GMap::check`]);
+//! * the map is valid and every cell has exactly one attribute ([`GMap::validate`]);
 //! * the merge and split hooks of each dimension ran exactly as many times as cells merged
 //!   and split, counted independently on the darts that survive the step: a cell after the
 //!   step meeting k cells from before is k - 1 merges, a cell from before meeting k cells
@@ -160,7 +160,7 @@ fn run(n: usize, pieces: &[usize], steps: &[Step]) -> Result<usize, TestCaseErro
         next += 1;
         let (done, made_point) = apply(&mut g, step, [next as f64, -1.0, 0.5])?;
         changed += done as usize;
-        g.check().map_err(|e| TestCaseError::fail(format!("{step:?}: {e}")))?;
+        g.validate().map_err(|e| TestCaseError::fail(format!("{step:?}: {e}")))?;
         let after = cells_of(&g);
         let (m1, s1) = hooks.counts();
         let survivors: Vec<DartId> = g.darts().filter(|x| values.contains_key(x)).collect();
@@ -296,5 +296,5 @@ fn a_pillow_cut_and_merged_back() {
     assert_eq!((g.point(b), g.attribute::<0>(b)), (p, Some(&v)));
     assert_eq!(g.point(d[7]), p);
     assert_eq!((g.dart_count(), g.attribute_count::<0>(), g.point_count()), (16, 4, 4));
-    g.check().unwrap();
+    g.validate().unwrap();
 }

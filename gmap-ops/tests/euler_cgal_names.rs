@@ -20,7 +20,7 @@ fn an_edge_between_two_faces_of_one_cube() {
     let d = g.try_append(&build::cube(3).unwrap()).unwrap()[0];
     // the face opposite to d's: across the cube through the edge at d
     let opposite = g.alpha_word(d, &[1, 0, 1, 2]);
-    assert!(!g.cell(d, 2).contains(&opposite));
+    assert!(!g.cell_darts(d, 2).contains(&opposite));
     assert!(can_insert_edge_between_faces(&g, d, opposite));
     let r = try_insert_edge_between_faces(&mut g, d, opposite).unwrap();
     assert_eq!(r.dx, vec![0, 1, -1, 0]);
@@ -64,7 +64,7 @@ fn an_edge_between_two_inner_faces_pairs_their_copies() {
     let (d1, d2) = inner
         .iter()
         .find_map(|&x| {
-            let (face, volume) = (g.cell(x, 2), g.cell(x, 3));
+            let (face, volume) = (g.cell_darts(x, 2), g.cell_darts(x, 3));
             inner.iter().find(|y| volume.contains(y) && !face.contains(y)).map(|&y| (x, y))
         })
         .unwrap();
@@ -73,7 +73,7 @@ fn an_edge_between_two_inner_faces_pairs_their_copies() {
     assert_eq!(r.dx, vec![0, 1, -1, -1]);
     assert_eq!(summary(&g), (144 + 8, vec![16, 29, 15, 2], 1, true));
     // the new edge has two copies, alpha_3-linked like the corners
-    assert_eq!(g.cell(r.dart, 1).len(), 8);
+    assert_eq!(g.cell_darts(r.dart, 1).len(), 8);
     assert!(!g.is_free(r.dart, 3));
 }
 
@@ -117,7 +117,7 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     assert!(is_insertable_cell_1_in_cell_2(&g, d1, g.alpha_word(d1, &[0, 1, 0])));
     let far = g.alpha_word(d1, &[0, 1, 0]);
     let e1 = insert_cell_1_in_cell_2(&mut g, d1, far).unwrap();
-    assert_eq!((g.alpha(e1, 1), g.cell(e1, 1).len(), g.attribute::<1>(e1)), (d1, 4, None));
+    assert_eq!((g.alpha(e1, 1), g.cell_darts(e1, 1).len(), g.attribute::<1>(e1)), (d1, 4, None));
     let d2 = g.alpha_word(d1, &[2, 1, 0, 1, 2]);
     let far = g.alpha_word(d2, &[0, 1, 0]);
     insert_cell_1_in_cell_2(&mut g, d2, far).unwrap();
@@ -130,17 +130,17 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     assert!(is_insertable_cell_2_in_cell_3(&g, &path));
     let f = insert_cell_2_in_cell_3(&mut g, &path).unwrap();
     assert_eq!(g.alpha(f, 2), path[0]);
-    assert_eq!((g.cell(f, 2).len(), g.attribute::<2>(f)), (16, None));
+    assert_eq!((g.cell_darts(f, 2).len(), g.attribute::<2>(f)), (16, None));
     assert_eq!(summary(&g), (72, vec![8, 14, 9, 2], 1, true));
     // the volume split: both halves carry 7
     assert_eq!((g.attribute_count::<3>(), g.attribute::<3>(g.alpha_word(f, &[3]))), (2, Some(&7)));
     // a vertex in an edge, a dangling edge with its point
     assert!(is_insertable_cell_0_in_cell_1(&g, d1));
     let v = insert_cell_0_in_cell_1(&mut g, d1).unwrap();
-    assert_eq!((g.alpha(v, 0), g.cell(v, 0).len()), (d1, 4));
+    assert_eq!((g.alpha(v, 0), g.cell_darts(v, 0).len()), (d1, 4));
     assert!(is_insertable_dangling_cell_1_in_cell_2(&g, v));
     let tip = insert_dangling_cell_1_in_cell_2(&mut g, v, Some([1.0, 2.0, 3.0])).unwrap();
-    assert_eq!((g.point(tip), g.cell(tip, 0).len()), (Some([1.0, 2.0, 3.0]), 2));
+    assert_eq!((g.point(tip), g.cell_darts(tip, 0).len()), (Some([1.0, 2.0, 3.0]), 2));
     assert_eq!(g.alpha(g.alpha_word(tip, &[0]), 1), v);
     assert_eq!(summary(&g), (72 + 4 + 4, vec![10, 16, 9, 2], 1, true));
     // CGAL's remove_cell under the same name (contract_cell refuses here: the cube's
@@ -174,5 +174,5 @@ fn a_vertex_in_an_edge_with_points_is_placed_at_its_middle() {
     try_insert_vertex_at(&mut h, e[2], Some([0.0, 5.0, 0.0])).unwrap();
     assert_eq!(h.point(h.alpha(e[2], 0)), Some([0.0, 5.0, 0.0]));
     assert_eq!(h.point_count(), 1);
-    h.check().unwrap();
+    h.validate().unwrap();
 }

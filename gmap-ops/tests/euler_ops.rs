@@ -116,8 +116,9 @@ fn split_volume_by_a_face() {
     // cut the four side faces by edges between the new vertices
     for k in 0..4 {
         let a = g.alpha(cut[k], 0);
-        let target =
-            first_where(&g, |g, x| can_insert_edge(g, a, x) && g.cell(x, 0).contains(&g.alpha(cut[(k + 1) % 4], 0)));
+        let target = first_where(&g, |g, x| {
+            can_insert_edge(g, a, x) && g.cell_darts(x, 0).contains(&g.alpha(cut[(k + 1) % 4], 0))
+        });
         try_insert_edge(&mut g, a, target).unwrap();
     }
     assert_eq!(counts(&g), vec![12, 20, 10, 1]);
@@ -198,7 +199,7 @@ fn errors_name_the_dart() {
     let a = line.create_dart();
     let op = try_insert_vertex(&mut line, a).unwrap();
     assert_eq!((op.name.as_str(), op.vector.dx()), ("mve", &[1, 1][..]));
-    assert_eq!(line.to_dense().0.cell_counts(), vec![2, 2]);
+    assert_eq!(line.to_dense_map().cell_counts(), vec![2, 2]);
 }
 
 // ---------- property tests ----------
@@ -234,7 +235,7 @@ proptest! {
         for (op, p1, p2, dim) in ops {
             let before = counts(&g);
             if let Some(v) = apply(&mut g, op, p1, p2, dim) {
-                let (dense, _) = g.to_dense();
+                let (dense, _) = g.to_dense_with_ids();
                 prop_assert!(dense.validate().is_ok());
                 let after = dense.cell_counts();
                 let recount: Vec<i64> = after.iter().zip(&before).map(|(&a, &b)| a as i64 - b as i64).collect();

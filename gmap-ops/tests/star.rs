@@ -7,14 +7,14 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
-use gmap_core::{Cells, DartId, DenseMap, GMap, MapView};
+use gmap_core::{Cells, DartId, DenseMap, GMap};
 use gmap_ops::build::{cube, grid, polygon, schema, simplex};
 use gmap_ops::euler::ops::*;
 use gmap_ops::euler::EulerError;
 use proptest::prelude::*;
 
 fn counts<A: gmap_core::Attributes>(g: &GMap<A>) -> Vec<usize> {
-    MapView::cell_counts(g)
+    g.cell_counts()
 }
 
 fn thaw(m: &DenseMap) -> GMap {
@@ -30,14 +30,14 @@ fn change(before: &[usize], after: &[usize]) -> Vec<i64> {
 /// vector is the recounted change; returns the new counts.
 fn star_checked<A: gmap_core::Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Vec<usize> {
     let before = counts(g);
-    let cell = g.cell(d, i).len();
+    let cell = g.cell_darts(d, i).len();
     let darts = g.dart_count();
     let s = try_star_cell(g, d, i, None).unwrap();
     let after = counts(g);
     assert_eq!(s.op.vector.dx(), &change(&before, &after)[..], "the vector is the change of cells");
     assert!(s.op.vector.dy().iter().all(|&y| y == 0));
     assert_eq!(g.dart_count(), darts + i * cell);
-    MapView::validate(g).unwrap();
+    g.validate().unwrap();
     g.check_attributes().unwrap();
     after
 }
@@ -54,11 +54,11 @@ fn a_square_becomes_four_triangles() {
     // the vertex returned is the new one: four edges, four triangles around it
     assert_eq!(s.vertex, g.alpha(g.alpha(d, 1), 0));
     assert_eq!(g.point(s.vertex), Some([0.0, 0.0, 0.0]));
-    assert_eq!(g.cell(s.vertex, 0).len(), 8);
-    assert_eq!(g.cell(d, 2).len(), 6);
+    assert_eq!(g.cell_darts(s.vertex, 0).len(), 8);
+    assert_eq!(g.cell_darts(d, 2).len(), 6);
     // the corners keep their points; the square was built with points at its corners
     assert_eq!(g.point_count(), 5);
-    g.check().unwrap();
+    g.validate().unwrap();
 }
 
 #[test]
@@ -86,7 +86,7 @@ fn the_star_of_an_edge_is_the_vertex_insertion() {
         let star = try_star_cell(&mut a, da, 1, None).unwrap();
         let mve = try_insert_vertex(&mut b, db).unwrap();
         assert_eq!(star.op.vector, mve.vector);
-        assert!(gmap_ops::iso::are_isomorphic(&a.to_dense().0, &b.to_dense().0));
+        assert!(gmap_ops::iso::are_isomorphic(&a.to_dense_map(), &b.to_dense_map()));
     }
 }
 
@@ -101,12 +101,12 @@ fn a_hexahedron_becomes_six_pyramids() {
     assert_eq!(g.dart_count(), 4 * 48);
     // each volume is a square pyramid: 4 triangles and a square, 32 darts
     for v in g.one_dart_per_cell(3).collect::<Vec<_>>() {
-        assert_eq!(g.cell(v, 3).len(), 32);
+        assert_eq!(g.cell_darts(v, 3).len(), 32);
     }
     assert_eq!(s.vertex, g.alpha(g.alpha(g.alpha(d, 2), 1), 0));
     // the new vertex meets every volume, edge and face made
-    assert_eq!(g.cell(s.vertex, 0).len(), 6 * 4 * 2);
-    MapView::validate(&g).unwrap();
+    assert_eq!(g.cell_darts(s.vertex, 0).len(), 6 * 4 * 2);
+    g.validate().unwrap();
 }
 
 #[test]
@@ -122,7 +122,7 @@ fn a_face_between_two_hexahedra_is_starred_on_both_sides() {
     assert_eq!(g.dart_count(), 128);
     // both sides: every new triangle is 3-sewn
     let s = g.alpha(g.alpha(b, 1), 0);
-    assert!(g.cell(s, 0).iter().all(|&x| !g.is_free(x, 3)));
+    assert!(g.cell_darts(s, 0).iter().all(|&x| !g.is_free(x, 3)));
 }
 
 #[test]
@@ -157,7 +157,7 @@ fn a_face_with_a_dangling_edge() {
     let d = g.darts().next().unwrap();
     try_insert_dangling_edge(&mut g, d).unwrap();
     assert_eq!(counts(&g), vec![5, 5, 1]);
-    assert_eq!(g.cell(d, 2).len(), 12);
+    assert_eq!(g.cell_darts(d, 2).len(), 12);
     assert_eq!(star_checked(&mut g, d, 2), vec![6, 11, 6]);
 }
 
@@ -177,7 +177,7 @@ fn an_open_face_is_a_fan() {
     let s = try_star_face(&mut g, x[2], None).unwrap();
     assert_eq!(s.op.vector.dx(), &[1, 4, 2][..]);
     assert_eq!(counts(&g), vec![5, 7, 3]);
-    MapView::validate(&g).unwrap();
+    g.validate().unwrap();
 }
 
 #[test]
@@ -249,10 +249,10 @@ fn a_halving_split_hook_runs_once_per_new_triangle_in_cgals_order() {
     let values: Vec<i32> = sides.iter().map(|&x| *g.attribute::<2>(x).unwrap()).collect();
     assert_eq!(values, vec![2, 10, 5, 2]);
     // the last one is across the new edge at b's corner, the one CGAL's example removes
-    assert!(g.cell(g.alpha(v, 2), 2).contains(&sides[3]));
+    assert!(g.cell_darts(g.alpha(v, 2), 2).contains(&sides[3]));
     assert_eq!(g.attribute_count::<2>(), 14);
     assert_eq!(counts(&g)[2], 14);
-    g.check().unwrap();
+    g.validate().unwrap();
 }
 
 /// A map with a `u32` on every cell of every dimension up to 4 and a point per vertex.
@@ -346,7 +346,7 @@ fn attributes_on_every_dimension_stay_one_per_cell() {
     assert!(points.iter().all(|&(x, p)| g.point(x) == p));
     assert_eq!(g.point_count(), 9);
     assert_eq!(g.point(st.vertex), Some([0.5, 0.5, 0.5]));
-    g.check().unwrap();
+    g.validate().unwrap();
 }
 
 #[test]
@@ -360,8 +360,8 @@ fn a_map_without_attributes_and_one_with_them_get_the_same_links() {
     rich.set_attribute::<1>(r[0], 1);
     try_star_face(&mut plain, p[0], None).unwrap();
     try_star_face(&mut rich, r[0], None).unwrap();
-    assert_eq!(plain.to_dense().0.flat(), rich.to_dense().0.flat());
-    rich.check().unwrap();
+    assert_eq!(plain.to_dense_map().flat(), rich.to_dense_map().flat());
+    rich.validate().unwrap();
 }
 
 /// A few objects: polygons, a torus and a Klein bottle of squares, a 3-torus of cubes,
@@ -395,8 +395,8 @@ proptest! {
             let d = g.darts().nth(at % g.dart_count()).unwrap();
             star_checked(&mut g, d, i);
         }
-        prop_assert_eq!(MapView::euler_characteristic(&g), chi);
-        prop_assert_eq!(MapView::is_orientable(&g), orientable);
+        prop_assert_eq!(g.euler_characteristic(), chi);
+        prop_assert_eq!(g.is_orientable(), orientable);
     }
 
     /// The same with an attribute on every cell and a point on every vertex: on a cell with
@@ -426,7 +426,7 @@ proptest! {
             prop_assert_eq!(l.attribute_counts(), attrs.clone());
             prop_assert!(points.iter().all(|&(x, p)| l.g.point(x) == p));
             prop_assert_eq!(l.g.point(st.vertex), Some([-1.0, 0.0, 0.0]));
-            prop_assert_eq!(l.g.check(), Ok(()));
+            prop_assert_eq!(l.g.validate(), Ok(()));
         }
     }
 }
@@ -449,7 +449,7 @@ fn insert_barycenter_in_cell_places_the_vertex_at_the_mean_of_the_corners() {
     assert_eq!(g.point(v), Some([1.0, 1.0, 1.0]));
     let c = g.characteristics();
     assert_eq!((c.darts, c.cells.clone()), (192, vec![9, 20, 18, 6]));
-    g.check().unwrap();
+    g.validate().unwrap();
     // a face of the starred cube: a triangle with a corner at the centre
     let f = insert_barycenter_in_cell(&mut g, v, 2).unwrap();
     let p = g.point(f).unwrap();

@@ -444,7 +444,7 @@ fn set_labels(g: &mut LabelledGMap, dim: usize, d: DartId, l: Labels) {
 /// storage order). O(N n).
 pub fn format_labelled_gmap(g: &LabelledGMap) -> Vec<u8> {
     use std::fmt::Write as _;
-    let (dense, ids) = g.to_dense();
+    let (dense, ids) = g.to_dense_with_ids();
     let mut out = format_gmap(&dense);
     let mut index: slotmap::SecondaryMap<DartId, u32> = slotmap::SecondaryMap::with_capacity(ids.len());
     for (k, &d) in ids.iter().enumerate() {
@@ -714,7 +714,7 @@ mod section_tests {
                 g.set_point(d, Some([k as f64, 0.1 * k as f64, -3.0]));
             }
         }
-        let dense = g.to_dense().0;
+        let dense = g.to_dense_map();
         let text = format_gmap(&dense);
         assert_eq!(parse_gmap(&text, "c.gmap").unwrap(), dense);
     }

@@ -53,7 +53,7 @@ impl Hooks {
 
 /// The i-cell number of every live dart, for every i, from the dense snapshot.
 pub fn cells_by_dart(g: &Full) -> Vec<HashMap<DartId, u32>> {
-    let (dense, ids) = g.to_dense();
+    let (dense, ids) = g.to_dense_with_ids();
     (0..=g.dim()).map(|i| ids.iter().copied().zip(dense.cells(i).of).collect()).collect()
 }
 

@@ -32,7 +32,7 @@ pub fn cellular_complex(map: &DenseMap) -> Result<CellularComplex, PreconditionE
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[non_exhaustive]
 pub enum GMapHomologyError {
-    /// A cell fails condition C1 or C2 (its darts are numbered as in `GMap::to_dense`).
+    /// A cell fails condition C1 or C2 (its darts are numbered as in `GMap::to_dense_map`).
     #[error(transparent)]
     Precondition(#[from] PreconditionError),
     /// The homology computation failed.
@@ -41,7 +41,7 @@ pub enum GMapHomologyError {
 }
 
 /// The integer homology of an editable [`GMap`] (any attributes), through its cells: one
-/// [`GMap::to_dense`] snapshot, [`cellular_complex`], [`homology_z`]. Darts named in errors
+/// [`GMap::to_dense_map`] snapshot, [`cellular_complex`], [`homology_z`]. Darts named in errors
 /// are snapshot darts (the k-th of `GMap::darts`). O(N n²) plus the reduction.
 ///
 /// ```
@@ -51,7 +51,7 @@ pub enum GMapHomologyError {
 /// assert_eq!(gmap_homology(&torus).unwrap().to_string(), "(Z, Z^2, Z)");
 /// ```
 pub fn gmap_homology<A: Attributes>(map: &GMap<A>) -> Result<Homology, GMapHomologyError> {
-    let (dense, _) = map.to_dense();
+    let (dense, _) = map.to_dense_with_ids();
     Ok(homology_z(&cellular_complex(&dense)?.chain)?)
 }
 /// τ (BO §6) for `map`, after the cellular method's checks ([`check_preconditions`]: C1,

@@ -32,11 +32,11 @@
 //! let op = try_insert_vertex(&mut g, d[0]).unwrap();
 //! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("mve", vec![1, 1]));
 //! assert_eq!(op.basis_name(), "B0 + A1");
-//! assert_eq!(g.to_dense().0.cell_counts(), vec![4, 4]);
+//! assert_eq!(g.to_dense_map().cell_counts(), vec![4, 4]);
 //! // removing a vertex of degree 2 merges its two edges back
 //! let op = try_remove_cell(&mut g, d[1], 0).unwrap();
 //! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("kve", vec![-1, -1]));
-//! assert_eq!(g.to_dense().0.cell_counts(), vec![3, 3]);
+//! assert_eq!(g.to_dense_map().cell_counts(), vec![3, 3]);
 //! ```
 
 pub mod ops;

@@ -20,7 +20,7 @@
 //! let mut rng = SplitMix64::new(1);
 //! let applied = random_steps(&mut g, 20, &[Operator::InsertVertex, Operator::InsertEdge], &mut rng);
 //! assert!(!applied.is_empty());
-//! let (m, _) = g.to_dense();
+//! let (m, _) = g.to_dense_with_ids();
 //! assert!(m.validate().is_ok());
 //! assert_eq!(m.euler_characteristic(), 1); // still a ball
 //! ```

@@ -133,7 +133,7 @@ fn check_gmap_points<A: Attributes>(g: &GMap<A>) -> Result<(), ExportError> {
 }
 
 /// The OFF text of an editable 2-map with points: [`off_string`] of its snapshot
-/// ([`GMap::to_dense`]), with the same checks, the read-back included. A vertex without a
+/// ([`GMap::to_dense_map`]), with the same checks, the read-back included. A vertex without a
 /// finite point is refused with [`ExportError::VertexOfDart`], naming a dart of the map;
 /// other errors name snapshot darts (dart `k` is the `k`-th of [`GMap::darts`]).
 /// O(N log N).
@@ -150,7 +150,7 @@ pub fn gmap_off_string<A: Attributes>(g: &GMap<A>) -> Result<String, ExportError
         return Err(ExportError::Dimension { format: ".off", expected: 2, found: g.dim() });
     }
     check_gmap_points(g)?;
-    off_string(&g.to_dense().0)
+    off_string(&g.to_dense_map())
 }
 
 /// Writes an editable 2-map with points as `.off` (see [`gmap_off_string`]).
@@ -194,7 +194,7 @@ pub fn gmap_two_skeleton_off_string<A: Attributes>(g: &GMap<A>) -> Result<String
         return Err(ExportError::DimensionBelow { format: ".off of the 2-skeleton", min: 2, found: g.dim() });
     }
     check_gmap_points(g)?;
-    two_skeleton_off_string(&g.to_dense().0)
+    two_skeleton_off_string(&g.to_dense_map())
 }
 
 /// Writes the 2-skeleton of a map as `.off` (see [`two_skeleton_off_string`]).
@@ -352,7 +352,7 @@ mod tests {
         let d = g.make_polygon(&[[0.0, 0.0], [2.0, 0.0], [1.0, 1.0]]);
         let text = gmap_off_string(&g).unwrap();
         assert_eq!(text, "OFF\n3 1 0\n0 0 0\n2 0 0\n1 1 0\n3 0 1 2\n");
-        assert_eq!(text, off_string(&g.to_dense().0).unwrap());
+        assert_eq!(text, off_string(&g.to_dense_map()).unwrap());
         // a vertex without a point is named by its dart
         g.set_point(d, None);
         assert!(matches!(gmap_off_string(&g), Err(ExportError::VertexOfDart { dart, what: "no point" }) if dart == d));

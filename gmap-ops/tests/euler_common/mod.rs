@@ -153,7 +153,7 @@ pub fn thaw(m: &DenseMap) -> (GMap, Vec<gmap_core::DartId>) {
 
 /// Cell counts of an editable map.
 pub fn counts(g: &GMap) -> Vec<usize> {
-    g.to_dense().0.cell_counts()
+    g.to_dense_map().cell_counts()
 }
 
 /// The dense dart of index k.

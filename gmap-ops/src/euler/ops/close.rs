@@ -111,5 +111,5 @@ pub fn try_close<A: Attributes>(g: &mut GMap<A>, i: usize) -> Result<CloseReport
 }
 
 fn dense_counts<A: Attributes>(g: &GMap<A>) -> Vec<i64> {
-    g.to_dense().0.cell_counts().into_iter().map(|c| c as i64).collect()
+    g.to_dense_map().cell_counts().into_iter().map(|c| c as i64).collect()
 }

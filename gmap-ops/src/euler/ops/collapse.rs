@@ -59,7 +59,7 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
     if i < lo || i > hi || (remove && n == 0) {
         return Err(EulerError::BadDimension { what, lo, hi, got: i });
     }
-    let cell = g.cell(d, i);
+    let cell = g.cell_darts(d, i);
     let nb = kind.neighbour(i);
     let nb2 = kind.beyond(i, n);
     if let Some(j) = nb2 {
@@ -80,7 +80,7 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
         }
         if !sides.contains(&x) {
             count += 1;
-            sides.extend(g.cell(x, nb));
+            sides.extend(g.cell_darts(x, nb));
         }
     }
     if free {
@@ -100,7 +100,7 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
         if !remove {
             // both end cells interior: no free dart in the cell or at its ends
             for &x in &cell {
-                for y in g.cell(x, nb) {
+                for y in g.cell_darts(x, nb) {
                     if (0..=n).any(|j| g.is_free(y, j)) {
                         return Err(EulerError::WouldChangeTopology {
                             dim: i,
@@ -122,7 +122,7 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
         // are alone (an isolated edge, or an edge folded onto itself by alpha_2 whose two
         // ends make one vertex), removing the edge would remove its whole component.
         let above = AlphaSet::above(1, n);
-        let alone = |x: DartId| g.cell(x, 0).len() == g.orbit(x, above).len();
+        let alone = |x: DartId| g.cell_darts(x, 0).len() == g.orbit(x, above).len();
         for &x in &cell {
             // the end <alpha_2..alpha_n>(x) lies inside the vertex: equal sizes, equal sets
             if alone(x) && !alone(g.alpha(x, 0)) {
@@ -243,7 +243,7 @@ fn collapse<A: Attributes>(g: &mut GMap<A>, cell: &[DartId], i: usize, nb: usize
 /// Applies a checked removal or contraction of the i-cell of `d` ([`collapse`]) and returns
 /// the change of cells, recounted on the cells around it.
 fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: Move) -> Vec<i64> {
-    let cell = g.cell(d, i);
+    let cell = g.cell_darts(d, i);
     let mut touched: Vec<DartId> = cell.clone();
     touched.extend(cell.iter().map(|&x| g.alpha(x, i)));
     let before = local_counts(g, &touched);

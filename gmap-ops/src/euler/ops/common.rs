@@ -31,7 +31,7 @@ pub(super) fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<It
     for x in darts {
         if g.contains(x) && seen.insert(x) {
             count += 1;
-            seen.extend(g.cell(x, k));
+            seen.extend(g.cell_darts(x, k));
         }
     }
     count
@@ -41,7 +41,7 @@ pub(super) fn distinct_cells<A: Attributes>(g: &GMap<A>, darts: impl Iterator<It
 /// disagree on an attribute or a point ([`GMap::check_attributes`]).
 pub(super) fn debug_check<A: Attributes>(g: &GMap<A>) {
     if cfg!(debug_assertions) {
-        let (m, _) = g.to_dense();
+        let (m, _) = g.to_dense_with_ids();
         if let Err(e) = m.validate() {
             panic!("Euler operator broke validity: {e}");
         }

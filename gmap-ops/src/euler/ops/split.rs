@@ -78,7 +78,7 @@ fn check_cut<A: Attributes>(g: &GMap<A>, seeds: &[DartId], i: usize) -> Result<C
     for &s in seeds {
         live(g, s)?;
     }
-    let cell: HashSet<DartId> = g.cell(first, i).into_iter().collect();
+    let cell: HashSet<DartId> = g.cell_darts(first, i).into_iter().collect();
     let darts = cut_closure(g, seeds, i);
     let set: HashSet<DartId> = darts.iter().copied().collect();
     for &x in &darts {
@@ -333,7 +333,7 @@ pub(super) fn edge_cut<A: Attributes>(g: &GMap<A>, d1: DartId, d2: DartId) -> Re
         return Err(EulerError::Misplaced { dart: d2, what: "a corner other than d1's" });
     }
     let mut x = d1;
-    let limit = g.cell(d1, 2).len() + 2;
+    let limit = g.cell_darts(d1, 2).len() + 2;
     for _ in 0..limit {
         let y = g.alpha(x, 0);
         if y == x {

@@ -8,7 +8,7 @@
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
-use gmap_core::{Attributes, DartId, GMap, MapView, Point};
+use gmap_core::{Attributes, DartId, GMap, Point};
 
 use super::common::distinct_cells;
 use super::EulerError;
@@ -82,11 +82,11 @@ fn face_ring<A: Attributes>(g: &GMap<A>, d: DartId) -> Vec<DartId> {
 /// breadth-first from `d`. O(cell size · n).
 fn split_order<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> Vec<DartId> {
     if i != 2 {
-        return g.cell(d, i);
+        return g.cell_darts(d, i);
     }
     let mut out = face_ring(g, d);
     let mut seen: HashSet<DartId> = out.iter().copied().collect();
-    for x in g.cell(d, i) {
+    for x in g.cell_darts(d, i) {
         if seen.insert(x) {
             out.push(x);
         }
@@ -122,7 +122,7 @@ fn split_order<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> Vec<DartId> {
 /// });
 /// let star = try_star_cell(&mut g, d, 3, Some([0.5, 0.5, 0.5])).unwrap();
 /// // six square pyramids around the centre: 8 + 1 vertices, 12 + 8 edges, 6 + 12 faces
-/// assert_eq!(MapView::cell_counts(&g), vec![9, 20, 18, 6]);
+/// assert_eq!(g.cell_counts(), vec![9, 20, 18, 6]);
 /// assert_eq!(star.op.vector.dx(), &[1, 8, 12, 5]);
 /// assert_eq!(g.point(star.vertex), Some([0.5, 0.5, 0.5]));
 /// // five splits in turn: the pyramid of d kept 6 / 2^5
@@ -240,7 +240,7 @@ pub fn try_star_cell<A: Attributes>(
     }
     dx[i] -= 1;
     if cfg!(debug_assertions) {
-        if let Err(e) = MapView::validate(g) {
+        if let Err(e) = g.validate() {
             panic!("star of a cell broke validity: {e}");
         }
     }

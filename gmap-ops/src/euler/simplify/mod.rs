@@ -185,7 +185,7 @@ impl SimplifyOptions {
 ///     g.sew(d[2 * k], d[2 * k + 1], 0);
 ///     g.sew(d[2 * k + 1], d[(2 * k + 2) % 12], 1);
 /// }
-/// let (small, report) = simplify(&g.to_dense().0);
+/// let (small, report) = simplify(&g.to_dense_map());
 /// assert_eq!(small.cell_counts(), vec![1, 1]); // one vertex, one loop
 /// assert_eq!((report.darts_before, report.darts_after), (12, 2));
 /// ```

@@ -109,7 +109,7 @@ pub(super) fn search(map: DenseMap, options: &SimplifyOptions, rng: &mut SplitMi
             if split_random_cells(&mut g, kicks, rng, &mut tried) == 0 {
                 continue;
             }
-            let split = g.to_dense().0;
+            let split = g.to_dense_map();
             spent += split.dart_count();
             if !cells_are_balls(&split) {
                 continue;

@@ -71,7 +71,7 @@ impl EoOperator {
 }
 
 fn edge_open(g: &GMap, d: DartId) -> bool {
-    g.cell(d, 1).iter().any(|&x| g.is_free(x, 0))
+    g.cell_darts(d, 1).iter().any(|&x| g.is_free(x, 0))
 }
 
 /// Applies the G-map counterpart of `op` ([`EoOperator::gmap_counterpart`]) at `darts`:
@@ -98,7 +98,7 @@ pub fn apply_on_gmap(op: EoOperator, g: &mut GMap, darts: &[DartId]) -> Option<R
             ops::try_insert_vertex(g, d)
         }
         (true, 1) => {
-            let open = g.cell(d, 0).iter().any(|&x| edge_open(g, x));
+            let open = g.cell_darts(d, 0).iter().any(|&x| edge_open(g, x));
             if open != op.open {
                 return wrong(if op.open {
                     "a vertex next to an edge with a missing end (kve∞)"
