@@ -1,6 +1,6 @@
 //! CGAL's `gmap_2_moebius` in this library: a square whose two opposite sides are glued
 //! with a half twist is a Möbius strip. Prints the map's characteristics, as CGAL's example
-//! does (`tests/data/cgal/gmap_2_moebius.out`).
+//! does (`gmap/tests/data/cgal/gmap_2_moebius.out`).
 //!
 //! `cargo run --release --example cgal_gmap_2_moebius`
 

@@ -3,7 +3,7 @@
 //! (one merge: 1 + 1), a vertex inserted in that face (three splits, each sharing the
 //! weight), then the merge hook taken off and one of the new edges removed (a merge that
 //! prints nothing). Prints the hooks' lines, and the weights and characteristics after
-//! each step, as CGAL's example does (`tests/data/cgal/gmap_3_dynamic_onmerge.out`).
+//! each step, as CGAL's example does (`gmap/tests/data/cgal/gmap_3_dynamic_onmerge.out`).
 //!
 //! CGAL's split hook shares the weight in proportion to the darts of the two faces; a
 //! split hook here sees the two values only, so it halves: the same figures, as every

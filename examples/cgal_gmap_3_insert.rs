@@ -3,7 +3,7 @@
 //! (`insert_cell_1_between_two_cells_2`, CGAL 6), so the square becomes a hole in that
 //! face. Prints the characteristics (one volume, six faces: the square's face and the
 //! hexahedron's became one) and the number of 2-free darts, the 8 of the hole's border, as
-//! CGAL's example does (`tests/data/cgal/gmap_3_insert.out`).
+//! CGAL's example does (`gmap/tests/data/cgal/gmap_3_insert.out`).
 //!
 //! `cargo run --release --example cgal_gmap_3_insert`
 

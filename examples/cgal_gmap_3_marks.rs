@@ -2,7 +2,7 @@
 //! marked, then the face they share removed, which merges the two volumes into one. The
 //! mark still tells which darts came from the first tetrahedron: 24 minus the 6 removed
 //! with the face. Prints that count, as CGAL's example does
-//! (`tests/data/cgal/gmap_3_marks.out`). Marks here have no fixed cap (CGAL's stop at 32
+//! (`gmap/tests/data/cgal/gmap_3_marks.out`). Marks here have no fixed cap (CGAL's stop at 32
 //! and throw), so reserving one cannot fail.
 //!
 //! `cargo run --release --example cgal_gmap_3_marks`

@@ -3,7 +3,7 @@
 //! along the closed path of four edges they make with two edges of the hexahedron, and the
 //! characteristics are printed; then the face and the two edges are removed again and the
 //! characteristics, back at the hexahedron, are printed, as CGAL's example does
-//! (`tests/data/cgal/gmap_3_operations.out`).
+//! (`gmap/tests/data/cgal/gmap_3_operations.out`).
 //!
 //! Darts are reached by words of involutions from the first one, as in CGAL's program: a
 //! word's meaning does not depend on how a builder numbers darts, since every dart of a

@@ -2,7 +2,7 @@
 //! characteristics, and the sizes of two orbits walked lazily — the `<α0, α1, α2>` orbit of
 //! a dart of the first tetrahedron (in a 3-map, its volume) and the `<α0, α1>` orbit of a
 //! dart of the second (a face seen from one volume). Prints what CGAL's example prints
-//! (`tests/data/cgal/gmap_3_simple_example.out`).
+//! (`gmap/tests/data/cgal/gmap_3_simple_example.out`).
 //!
 //! `cargo run --release --example cgal_gmap_3_simple_example`
 

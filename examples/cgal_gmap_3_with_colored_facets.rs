@@ -4,7 +4,7 @@
 //! too. The 3-sew along a face merges two colours into 20; a vertex inserted in that face
 //! splits it in four triangles, three splits in turn: 20 → 10, 5, 2, leaving 2 on the
 //! triangle of the dart given. Prints the colours after each step and the characteristics
-//! at the end, as CGAL's example does (`tests/data/cgal/gmap_3_with_colored_facets.out`).
+//! at the end, as CGAL's example does (`gmap/tests/data/cgal/gmap_3_with_colored_facets.out`).
 //!
 //! CGAL lists the colours in the order of its attribute container, an artefact of how it
 //! reuses freed slots; this port prints them sorted (the test compares both as sorted

@@ -1,7 +1,7 @@
 //! CGAL's `gmap_4_simple_example` in this library: two tetrahedra in a 4-map (their darts
 //! 4-free), 4-sewn along their whole boundary-free side, which makes one component of two
 //! 4-cells. Prints the map's characteristics, as CGAL's example does
-//! (`tests/data/cgal/gmap_4_simple_example.out`).
+//! (`gmap/tests/data/cgal/gmap_4_simple_example.out`).
 //!
 //! `cargo run --release --example cgal_gmap_4_simple_example`
 

@@ -3,7 +3,7 @@
 //! tetrahedron), then the second tetrahedron translated by (3, 1, 1), which moves the shared
 //! face for both. Prints every vertex point, the points of each volume before the sew, after
 //! it and after the translation, and the characteristics, as CGAL's example does
-//! (`tests/data/cgal/gmap_linear_cell_complex_3.out`).
+//! (`gmap/tests/data/cgal/gmap_linear_cell_complex_3.out`).
 //!
 //! CGAL lists vertices in the order of its attribute container and of a traversal; those
 //! orders mean nothing about the map, so the items of the `Vertices` and `Volume` lines are

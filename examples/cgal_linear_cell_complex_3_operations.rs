@@ -3,7 +3,7 @@
 //! face shared with the second and another across the opposite face of the first; then a
 //! face along the closed path of four edges they make with two edges of the first
 //! hexahedron, cutting it in two. Prints the characteristics, as the generalized-map run of
-//! CGAL's example does (line 2 of `tests/data/cgal/linear_cell_complex_3_operations.out`;
+//! CGAL's example does (line 2 of `gmap/tests/data/cgal/linear_cell_complex_3_operations.out`;
 //! line 1 is its run on a combinatorial map, outside this library).
 //!
 //! The darts are reached from the ones the constructors return by CGAL's words, written in

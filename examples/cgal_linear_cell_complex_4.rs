@@ -2,7 +2,7 @@
 //! vertex inserted in an edge, then an edge across a face from the new vertex to the
 //! opposite corner; both removed again and the 4-sew undone. Prints the characteristics
 //! after each of the five steps, as CGAL's example does
-//! (`tests/data/cgal/linear_cell_complex_4.out`).
+//! (`gmap/tests/data/cgal/linear_cell_complex_4.out`).
 //!
 //! CGAL's program gives the tetrahedra points of R^5 and places the new vertex at the
 //! middle of its edge; those points are not part of what it prints.

@@ -1,36 +1,51 @@
-//! How many threads whole-map stages use, and the two ways they share work.
+//! How many threads whole-map stages use, and the rayon pool they run on.
 //!
 //! Every parallel stage of the workspace (orbit counts, orientability, the cells and C1/C2
-//! checks, the border operator, simplification) asks this module how many threads it may
-//! run, so one setting limits them all:
+//! checks, the border operator, simplification) runs on one [rayon] pool that this module
+//! keeps, so one setting limits them all:
 //!
 //! * by default, every core the machine offers ([`std::thread::available_parallelism`]);
 //! * the environment variable `GMAP_THREADS` (a positive integer), read once;
 //! * [`set_max_threads`] from a program, which wins over both.
 //!
-//! Work is shared in two ways, both on scoped standard-library threads (no pool is kept
-//! between calls; a stage starts its threads once and they run for its whole duration):
-//! [`map_tasks`] hands out independent tasks from a shared counter, and [`split_ranges`]
-//! cuts `0..len` into one contiguous range per thread for scans that merge their results
-//! afterwards. Small inputs stay on the calling thread: starting threads costs more than
-//! it saves below [`PARALLEL_FROM`] items.
+//! The pool is built at the first stage that needs more than one thread and kept; a new
+//! limit builds a new pool for the stages started afterwards. Rayon's global pool (and
+//! `RAYON_NUM_THREADS`) is left to the program. [`install`] runs any closure, rayon
+//! iterators included, on the stages' pool.
+//!
+//! Work is shared in two ways: [`map_tasks`] runs independent tasks (each its own rayon job,
+//! so uneven tasks balance), and [`map_parts`] runs work already cut to the thread count,
+//! such as the disjoint ranges of [`split_ranges`] for scans that merge their results
+//! afterwards. Small inputs stay on the calling thread: waking the pool costs more than it
+//! saves below [`PARALLEL_FROM`] items.
 //!
 //! ```
 //! use gmap_core::parallel;
 //! let squares = parallel::map_tasks(5, 1 << 20, |k| k * k);
 //! assert_eq!(squares, vec![0, 1, 4, 9, 16]);
 //! assert_eq!(parallel::split_ranges(10, 3), vec![0..4, 4..7, 7..10]);
+//! let sum: u64 = parallel::install(|| {
+//!     use rayon::prelude::*;
+//!     (0..1000u64).into_par_iter().sum()
+//! });
+//! assert_eq!(sum, 499_500);
 //! ```
 
 use std::ops::Range;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::OnceLock;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use rayon::prelude::*;
+use rayon::{ThreadPool, ThreadPoolBuilder};
 
 /// Items (darts, entries) from which a stage is worth more than one thread.
 pub const PARALLEL_FROM: usize = 1 << 16;
 
 /// The limit set by [`set_max_threads`]; 0 when none was set.
 static LIMIT: AtomicUsize = AtomicUsize::new(0);
+
+/// The stages' pool and its number of threads, built on first use.
+static POOL: Mutex<Option<(usize, Arc<ThreadPool>)>> = Mutex::new(None);
 
 /// Limits every parallel stage to at most `n` threads (`n = 0` removes the limit, leaving
 /// `GMAP_THREADS` or the machine's cores). Takes effect for stages started afterwards.
@@ -60,41 +75,47 @@ pub fn threads_for(items: usize, tasks: usize) -> usize {
     max_threads().min(tasks).max(1)
 }
 
-/// `f(0), …, f(tasks - 1)` in order, computed on [`threads_for`]`(items, tasks)` threads
-/// taking tasks from a shared counter (so uneven tasks balance). `items` is the size of the
-/// whole input, deciding whether threads pay at all.
+/// The pool of [`max_threads`] threads, built when missing or when the limit changed;
+/// `None` when the system refuses the threads (the stage then runs on the calling thread).
+fn pool() -> Option<Arc<ThreadPool>> {
+    let n = max_threads();
+    let mut slot = POOL.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((k, p)) = slot.as_ref() {
+        if *k == n {
+            return Some(Arc::clone(p));
+        }
+    }
+    let p = Arc::new(ThreadPoolBuilder::new().num_threads(n).thread_name(|i| format!("gmap-{i}")).build().ok()?);
+    *slot = Some((n, Arc::clone(&p)));
+    Some(p)
+}
+
+/// Runs `op` on the stages' pool of [`max_threads`] threads: rayon iterators and joins
+/// inside it use that many threads. Runs it on the calling thread when the pool cannot be
+/// built.
+pub fn install<R, F>(op: F) -> R
+where
+    R: Send,
+    F: FnOnce() -> R + Send,
+{
+    match pool() {
+        Some(p) => p.install(op),
+        None => op(),
+    }
+}
+
+/// `f(0), …, f(tasks - 1)` in order, each task its own rayon job on the stages' pool (so
+/// uneven tasks balance), or on the calling thread when [`threads_for`]`(items, tasks)` is 1.
+/// `items` is the size of the whole input, deciding whether threads pay at all.
 pub fn map_tasks<T, F>(tasks: usize, items: usize, f: F) -> Vec<T>
 where
     T: Send,
-    F: Fn(usize) -> T + Sync,
+    F: Fn(usize) -> T + Sync + Send,
 {
-    let threads = threads_for(items, tasks);
-    if threads == 1 {
+    if threads_for(items, tasks) == 1 {
         return (0..tasks).map(f).collect();
     }
-    let next = AtomicUsize::new(0);
-    let mut parts: Vec<Vec<(usize, T)>> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = Vec::new();
-                    loop {
-                        let k = next.fetch_add(1, Ordering::Relaxed);
-                        if k >= tasks {
-                            break mine;
-                        }
-                        mine.push((k, f(k)));
-                    }
-                })
-            })
-            .collect();
-        handles.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))).collect()
-    });
-    let mut out: Vec<Option<T>> = (0..tasks).map(|_| None).collect();
-    for (k, v) in parts.iter_mut().flat_map(std::mem::take) {
-        out[k] = Some(v);
-    }
-    out.into_iter().map(|v| v.expect("every task ran")).collect()
+    install(|| (0..tasks).into_par_iter().with_max_len(1).map(f).collect())
 }
 
 /// `0..len` cut into `parts` contiguous ranges of nearly equal length (the first ones one
@@ -112,45 +133,19 @@ pub fn split_ranges(len: usize, parts: usize) -> Vec<Range<usize>> {
     out
 }
 
-/// `f` applied to each of `parts`, one thread per part (the first on the calling thread),
-/// results in order. For work already cut to the thread count, e.g. the disjoint mutable
-/// ranges of [`split_ranges`] over one array.
+/// `f` applied to each of `parts`, each its own rayon job on the stages' pool, results in
+/// order; one part runs on the calling thread. For work already cut to the thread count,
+/// e.g. the disjoint mutable ranges of [`split_ranges`] over one array.
 pub fn map_parts<T, R, F>(parts: Vec<T>, f: F) -> Vec<R>
 where
     T: Send,
     R: Send,
-    F: Fn(T) -> R + Sync,
+    F: Fn(T) -> R + Sync + Send,
 {
     if parts.len() <= 1 {
         return parts.into_iter().map(f).collect();
     }
-    let f = &f;
-    std::thread::scope(|s| {
-        let mut it = parts.into_iter();
-        let first = it.next().expect("at least two parts");
-        let handles: Vec<_> = it.map(|p| s.spawn(move || f(p))).collect();
-        let mut out = vec![f(first)];
-        out.extend(handles.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))));
-        out
-    })
-}
-
-/// Runs `a` and `b`, on two threads when `parallel` holds, and returns both results.
-pub fn join<A, B, RA, RB>(parallel: bool, a: A, b: B) -> (RA, RB)
-where
-    A: FnOnce() -> RA + Send,
-    B: FnOnce() -> RB + Send,
-    RA: Send,
-    RB: Send,
-{
-    if !parallel || max_threads() < 2 {
-        return (a(), b());
-    }
-    std::thread::scope(|s| {
-        let h = s.spawn(b);
-        let ra = a();
-        (ra, h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-    })
+    install(|| parts.into_par_iter().with_max_len(1).map(f).collect())
 }
 
 #[cfg(test)]
@@ -176,7 +171,16 @@ mod tests {
     fn tasks_in_order_on_threads() {
         let v = map_tasks(100, PARALLEL_FROM, |k| k * 3);
         assert_eq!(v, (0..100).map(|k| k * 3).collect::<Vec<_>>());
-        let (a, b) = join(true, || 1, || 2);
-        assert_eq!((a, b), (1, 2));
+        let parts = map_parts(split_ranges(10, 3), |r| r.sum::<usize>());
+        assert_eq!(parts, vec![6, 15, 24]);
+    }
+
+    #[test]
+    fn the_pool_has_the_threads_allowed() {
+        // a pool of max_threads() threads; the limit itself is not changed here, since
+        // other tests of this binary run stages concurrently
+        let n = max_threads();
+        assert_eq!(install(rayon::current_num_threads), n);
+        assert!(install(rayon::current_thread_index).is_some());
     }
 }

@@ -43,6 +43,7 @@ mod catalogue;
 mod examples;
 mod gmap;
 mod object;
+mod schemes;
 
 pub use catalogue::{EoArgs, EoOperator, Family, Scheme};
 pub use examples::{example_1, example_2};

@@ -74,9 +74,15 @@ pub enum StrataError {
     Precondition {
         /// the operator
         op: &'static str,
-        /// why
+        /// the precondition, as [`EoOperator::precondition`](super::EoOperator::precondition)
+        /// states it
+        requires: &'static str,
+        /// what fails
         why: String,
     },
+    /// [`StratifiedObject::apply_named`] was given a name EO gives to no operator.
+    #[error("EO names no operator {0:?}")]
+    UnknownOperator(String),
     /// EO Theorems 1 and 2 would give different Euler characteristics.
     #[error("EO Theorems 1 and 2 would disagree: {by_strata} by strata, {by_components} by components")]
     TheoremsDisagree {
@@ -670,18 +676,6 @@ impl StratifiedObject {
                 count: comp.holes[k],
             });
         }
-        Ok(())
-    }
-
-    /// Kills stratum `s`, which must bound no live stratum.
-    pub(crate) fn kill_stratum(&mut self, op: &'static str, s: usize) -> Result<(), StrataError> {
-        if let Some(&r) = self.bounded_by(s).first() {
-            return Err(StrataError::Precondition {
-                op,
-                why: format!("stratum {s} bounds stratum {r}; make {r} boundary-incomplete first"),
-            });
-        }
-        self.strata[s].alive = false;
         Ok(())
     }
 

@@ -1,5 +1,5 @@
-//! The `examples/cgal_*.rs` ports against the outputs of CGAL's own programs, recorded in
-//! `tests/data/cgal/` (see its README for how they were obtained and which lines list items
+//! The workspace's `examples/cgal_*.rs` ports (written with this crate only) against the
+//! outputs of CGAL's own programs, recorded in `gmap/tests/data/cgal/` (see its README for how they were obtained and which lines list items
 //! in an order that is an artefact of CGAL's containers).
 //!
 //! Each example exposes `run(out)`, which writes what its `main` prints; the test includes
@@ -23,7 +23,7 @@ fn sorted_items(line: &str) -> (String, Vec<String>) {
     (head, items)
 }
 
-/// Runs the port and compares its output with `tests/data/cgal/NAME.out`, from the recorded
+/// Runs the port and compares its output with `gmap/tests/data/cgal/NAME.out`, from the recorded
 /// line `skip` on (CGAL lines before it come from a part the port does not reproduce).
 /// `unordered` lists the 1-based lines (of the recorded file) compared as sorted items.
 fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
@@ -46,37 +46,37 @@ fn check(name: &str, run: Run, skip: usize, unordered: &[usize]) {
 }
 
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_2_moebius.rs"]
+#[path = "../../examples/cgal_gmap_2_moebius.rs"]
 mod gmap_2_moebius;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_dynamic_onmerge.rs"]
+#[path = "../../examples/cgal_gmap_3_dynamic_onmerge.rs"]
 mod gmap_3_dynamic_onmerge;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_insert.rs"]
+#[path = "../../examples/cgal_gmap_3_insert.rs"]
 mod gmap_3_insert;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_marks.rs"]
+#[path = "../../examples/cgal_gmap_3_marks.rs"]
 mod gmap_3_marks;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_operations.rs"]
+#[path = "../../examples/cgal_gmap_3_operations.rs"]
 mod gmap_3_operations;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_simple_example.rs"]
+#[path = "../../examples/cgal_gmap_3_simple_example.rs"]
 mod gmap_3_simple_example;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_3_with_colored_facets.rs"]
+#[path = "../../examples/cgal_gmap_3_with_colored_facets.rs"]
 mod gmap_3_with_colored_facets;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_4_simple_example.rs"]
+#[path = "../../examples/cgal_gmap_4_simple_example.rs"]
 mod gmap_4_simple_example;
 #[allow(dead_code)]
-#[path = "../examples/cgal_gmap_linear_cell_complex_3.rs"]
+#[path = "../../examples/cgal_gmap_linear_cell_complex_3.rs"]
 mod gmap_linear_cell_complex_3;
 #[allow(dead_code)]
-#[path = "../examples/cgal_linear_cell_complex_3_operations.rs"]
+#[path = "../../examples/cgal_linear_cell_complex_3_operations.rs"]
 mod linear_cell_complex_3_operations;
 #[allow(dead_code)]
-#[path = "../examples/cgal_linear_cell_complex_4.rs"]
+#[path = "../../examples/cgal_linear_cell_complex_4.rs"]
 mod linear_cell_complex_4;
 
 /// Every port: CGAL's program name, the port's `run`, and `skip` and `unordered` as in

@@ -9,7 +9,7 @@ use gmap_homology::{cellular_complex, check_preconditions, homology_z, simplicia
 use gmap_ops::import::{read_facets, SimplicialComplex};
 
 fn lutz(name: &str) -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/lutz").join(name)
 }
 
 /// The first i-cell, `i >= 3`, lowest dimension first and then by smallest dart, whose

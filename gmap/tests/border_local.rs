@@ -38,7 +38,7 @@ fn three_and_four_dimensional_objects() {
         agree("lens space", &build::lens_space(p, q).unwrap());
     }
     for name in ["poincare.facets", "RP4.facets", "B_3_9_18.facets"] {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name);
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/lutz").join(name);
         agree(name, &gmap_ops::import::read_facets(&path, None).unwrap());
     }
 }

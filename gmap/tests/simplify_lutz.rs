@@ -9,7 +9,7 @@ use gmap_ops::euler::simplify;
 use gmap_ops::import::simplicial::read_facets;
 
 fn lutz(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data/lutz").join(name)
 }
 
 /// The homology in the header, normalised: `(Z,Z_2,0,Z)` → `(Z,Z/2,0,Z)`.
