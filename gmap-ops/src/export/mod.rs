@@ -2,7 +2,8 @@
 //! [`GMap`] directly, [`gmap_off_string`]; the 2-cells of a map of any dimension as a view,
 //! [`two_skeleton_off_string`]), `.facets` of the barycentric
 //! subdivision (any map) and legacy `.vtk` unstructured grids (maps of dimension ≤ 3 with
-//! points, [`vtk_string`]). Every writer goes through a temporary file in the target's
+//! points, [`vtk_string`]) and self-contained HTML pages to look at a map in a browser
+//! ([`html`]). Every writer goes through a temporary file in the target's
 //! directory and a rename, so a failure never leaves a partial file behind. The native
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
 
@@ -12,6 +13,7 @@ use std::path::{Path, PathBuf};
 use gmap_core::{AlphaSet, Attributes, Dart, DartId, DenseMap, GMap, Partition};
 use thiserror::Error;
 
+pub mod html;
 mod vtk;
 pub use vtk::{vtk_string, vtk_string_with_labels, write_vtk, write_vtk_with_labels};
 
@@ -106,6 +108,32 @@ pub enum ExportError {
         min: usize,
         /// the map's dimension
         found: usize,
+    },
+    /// A cell of a scene that cannot be added (see [`html::Scene`]).
+    #[error("the scene has no room for {reason}")]
+    SceneCell {
+        /// what was refused
+        reason: String,
+    },
+    /// A generator names a cell the scene does not have.
+    #[error("generator {name}: {dim}-cell {cell} is not among the scene's {count} cells of dimension {dim}")]
+    GeneratorCell {
+        /// the generator's name
+        name: String,
+        /// its dimension
+        dim: usize,
+        /// the first cell that is not there
+        cell: u32,
+        /// how many cells of that dimension the scene has
+        count: usize,
+    },
+    /// A page is to be coloured by a label that no cell has.
+    #[error("no cell has a label named `{name}` (labels: {})", if known.is_empty() { "none".to_string() } else { known.join(", ") })]
+    UnknownLabel {
+        /// the label asked for
+        name: String,
+        /// the labels the scene has
+        known: Vec<String>,
     },
     /// Writing failed.
     #[error("{path}: {source}")]
