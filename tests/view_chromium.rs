@@ -73,14 +73,14 @@ fn check(name: &str, scene: &Scene, opts: &HtmlOptions) -> Option<(Value, chromi
     assert!(w >= 800 && h >= 600, "{name}: canvas {w}×{h}");
     for (v, s) in r["views"].as_object().unwrap() {
         let lit = s["nonBlank"].as_u64().unwrap();
-        assert!(lit > 2000, "{name}: the {v} view drew {lit} pixels");
+        assert!(lit > 500, "{name}: the {v} view drew {lit} pixels");
     }
     eprintln!(
         "{name}: {} darts, first frame {:.0} ms after the script started, browser run {:.2} s{}",
         r["darts"],
         r["setupMs"].as_f64().unwrap_or(f64::NAN),
         run.wall.as_secs_f64(),
-        if run.isolated { ", no network namespace" } else { "" }
+        if run.isolated { ", in a network namespace without network" } else { ", network off by proxy and resolver rules" }
     );
     Some((r, run))
 }
@@ -195,5 +195,5 @@ fn a_grid_of_a_million_and_a_half_darts_renders_within_five_seconds() {
     let first = r["firstFrameMs"].as_f64().unwrap();
     assert!(first < 5000.0, "first frame after {first} ms");
     assert!(r["message"].as_str().unwrap().contains("above the darts view's limit"), "{}", r["message"]);
-    eprintln!("grid 32³: first frame {first:.0} ms after navigation, browser run {:.2} s", run.wall.as_secs_f64());
+    eprintln!("grid 32³: first frame {first:.0} ms after navigation, phases {}, browser run {:.2} s", r["marks"], run.wall.as_secs_f64());
 }

@@ -537,6 +537,29 @@ fn value_json(v: &LabelValue) -> Value {
     }
 }
 
+/// The involutions as the page reads them: for each dart and each `i`, `alpha_i(d) - d`
+/// zigzag-encoded (`2x` for `x >= 0`, `-2x - 1` below) as a LEB128 varint, then base64. Small
+/// for maps whose darts are numbered cell by cell (one byte per link when `|alpha_i(d) - d|
+/// < 64`); at most five bytes per link.
+fn b64_alpha(alpha: &[u32], w: usize) -> String {
+    let mut bytes = Vec::with_capacity(alpha.len() + alpha.len() / 4);
+    for (k, &e) in alpha.iter().enumerate() {
+        let d = (k / w) as i64;
+        let x = e as i64 - d;
+        let mut z = if x >= 0 { 2 * x as u64 } else { (-2 * x - 1) as u64 };
+        loop {
+            let b = (z & 127) as u8;
+            z >>= 7;
+            if z == 0 {
+                bytes.push(b);
+                break;
+            }
+            bytes.push(b | 128);
+        }
+    }
+    base64::engine::general_purpose::STANDARD.encode(bytes)
+}
+
 fn b64_u32(v: &[u32]) -> String {
     let bytes: Vec<u8> = v.iter().flat_map(|x| x.to_le_bytes()).collect();
     base64::engine::general_purpose::STANDARD.encode(bytes)
@@ -615,7 +638,7 @@ pub fn html_string(scene: &Scene, opts: &HtmlOptions) -> Result<String, ExportEr
     let meta = meta.to_string().replace('<', "\\u003c");
     let mut blobs: Vec<(&str, String)> = vec![("points", b64_f32(&scene.points))];
     if let Some(m) = &scene.map {
-        blobs.push(("alpha", b64_u32(&m.alpha)));
+        blobs.push(("alpha", b64_alpha(&m.alpha, scene.dim + 1)));
     }
     if let Some(c) = &scene.complex {
         blobs.extend([

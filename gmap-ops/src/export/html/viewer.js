@@ -7,6 +7,8 @@
   const T0 = performance.now();
   const $ = (id) => document.getElementById(id);
   const meta = JSON.parse($('gmap-meta').textContent);
+  const marks = {};
+  const mark = (name) => { marks[name] = Math.round(performance.now()); };
 
   function blob(name, Type) {
     const el = $('gmap-' + name);
@@ -29,7 +31,8 @@
     const f = (n) => { const k = (n + h * 12) % 12; return l - s * Math.min(l, 1 - l) * Math.max(-1, Math.min(k - 3, 9 - k, 1)); };
     return [Math.round(f(0) * 255), Math.round(f(8) * 255), Math.round(f(4) * 255)];
   }
-  function category(k) { return k < PALETTE.length ? rgb(PALETTE[k]) : hsl((k * 0.618034) % 1, 0.55, 0.55); }
+  const CATEGORY = [];
+  function category(k) { while (CATEGORY.length <= k) { const j = CATEGORY.length; CATEGORY.push(j < PALETTE.length ? rgb(PALETTE[j]) : hsl((j * 0.618034) % 1, 0.55, 0.55)); } return CATEGORY[k]; }
   function genColour(k) { return k < GEN_COLOURS.length ? rgb(GEN_COLOURS[k]) : hsl((k * 0.618034 + 0.3) % 1, 0.8, 0.45); }
   const css = (c) => 'rgb(' + c[0] + ',' + c[1] + ',' + c[2] + ')';
 
@@ -42,7 +45,7 @@
     '<div id="message"></div>' +
     '<div class="row" id="explode-row">explode <input type="range" id="explode" min="0" max="100" value="0"></div>' +
     '<div class="row" id="colorby-row">colour by <select id="colorby"></select></div>' +
-    '<h2>legend</h2><div id="legend-darts"></div><div id="legend-cells"></div>' +
+    '<div id="legend-box"><h2>legend</h2><div id="legend-darts"></div><div id="legend-cells"></div></div>' +
     '<div id="gen-box"><h2>generators</h2><div id="generators"></div></div>' +
     '<h2>selection</h2><div id="selection" class="small">click a dart (or a cell)</div><div id="sel-buttons"></div>' +
     '<h2>about this drawing</h2><div id="notes" class="small"></div>' +
@@ -92,32 +95,50 @@
 
   // ---------------------------------------------------------------- data
   const P = blob('points', Float32Array);
-  const A = isMap ? blob('alpha', Uint32Array) : null;
+  // alpha: per dart and involution, alpha_i(d) - d zigzag-encoded as a LEB128 varint
+  function decodeAlpha() {
+    const el = $('gmap-alpha'), s = atob(el.textContent), out = new Uint32Array(N * w);
+    let p = 0, k = 0;
+    for (let d = 0; d < N; d++) {
+      for (let i = 0; i < w; i++, k++) {
+        let b = s.charCodeAt(p++), x = b & 127, m = 128;
+        while (b & 128) { b = s.charCodeAt(p++); x += (b & 127) * m; m *= 128; }
+        out[k] = d + (x % 2 === 1 ? -(x + 1) / 2 : x / 2);
+      }
+    }
+    return out;
+  }
+  const A = isMap ? decodeAlpha() : null;
+  mark('decoded');
 
   // orbits of the involutions in `mask` (bit i for alpha_i), numbered by smallest dart as
   // DenseMap::partition does; cached
   const orbitCache = new Map();
   function orbit(mask) {
     if (orbitCache.has(mask)) return orbitCache.get(mask);
+    // union by smallest root with path halving: each root is the smallest dart of its set
     const parent = new Int32Array(N);
     for (let d = 0; d < N; d++) parent[d] = d;
-    const find = (x) => { while (parent[x] !== x) { parent[x] = parent[parent[x]]; x = parent[x]; } return x; };
     const is = [];
     for (let i = 0; i <= n; i++) if (mask & (1 << i)) is.push(i);
+    const m = is.length;
     for (let d = 0; d < N; d++) {
       const row = d * w;
-      for (let k = 0; k < is.length; k++) {
-        const e = A[row + is[k]];
-        if (e !== d) {
-          const a = find(d), b = find(e);
-          if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
-        }
+      for (let k = 0; k < m; k++) {
+        let b = A[row + is[k]];
+        if (b <= d) continue; // each pair once, from its smaller dart
+        let a = d;
+        while (parent[a] !== a) { parent[a] = parent[parent[a]]; a = parent[a]; }
+        while (parent[b] !== b) { parent[b] = parent[parent[b]]; b = parent[b]; }
+        if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
       }
     }
     const id = new Int32Array(N);
     let count = 0;
     for (let d = 0; d < N; d++) {
-      const r = find(d);
+      // the root is smaller than d and already numbered, or d itself
+      let r = d;
+      while (parent[r] !== r) r = parent[r];
       id[d] = r === d ? count++ : id[r];
     }
     const o = { id, count };
@@ -145,6 +166,7 @@
     const v0 = cellsOf(0).id;
     const nv = meta.counts[0];
     const e1 = meta.edgePoints && n >= 1 ? cellsOf(1).id : null;
+    mark('cells0');
     for (let d = 0; d < N; d++) { const p = 3 * v0[d]; VP[3 * d] = P[p]; VP[3 * d + 1] = P[p + 1]; VP[3 * d + 2] = P[p + 2]; }
     for (let d = 0; d < N; d++) {
       if (e1) {
@@ -155,15 +177,20 @@
         for (let a = 0; a < 3; a++) MP[3 * d + a] = 0.5 * (VP[3 * d + a] + VP[3 * e + a]);
       }
     }
+    mark('edgepoints');
     for (let k = 2; k <= n; k++) {
       const o = orbit((1 << k) - 1);
+      mark('orbit' + k);
       levels.push({ k, o, c: centres(o, MP) });
+      mark('centres' + k);
     }
     if (levels.length) {
       HF = levels[0].o; HFC = levels[0].c;
       UNIT = levels[levels.length - 1].o; UNITC = levels[levels.length - 1].c;
     }
   }
+
+  mark('orbits');
 
   // the complex: primitives and cells
   let CX = null;
@@ -226,7 +253,7 @@
   const FS_LIT = `#version 300 es
     precision highp float; in vec4 vCol; in vec3 vEye; uniform float uFade; uniform float uAlpha; out vec4 o;
     void main() { vec3 nrm = normalize(cross(dFdx(vEye), dFdy(vEye))); float l = 0.45 + 0.55 * abs(nrm.z);
-      o = vec4(mix(vCol.rgb * l, vec3(1.0), uFade), vCol.a * uAlpha); }`;
+      o = vec4(mix(vCol.rgb, vec3(0.86), uFade) * l, vCol.a * uAlpha); }`;
   const VS_THICK = `#version 300 es
     layout(location=0) in vec3 aPos; layout(location=3) in vec4 aOther; layout(location=2) in vec4 aCol;
     uniform mat4 uMvp; uniform vec2 uViewport; uniform float uWidth; out vec4 vCol; out vec3 vEye;
@@ -385,15 +412,19 @@
       const u = 3 * unitOf(d);
       for (let a = 0; a < 3; a++) ctr[3 * (c0 + h) + a] = UNITC[u + a];
     }
-    const tri = [], line = [];
-    for (let d = 0; d < N; d++) {
-      const e = A[d * w];
-      if (ep) { tri.push(c0 + HF.id[d], d, N + d); line.push(d, N + d); }
-      else if (e > d) { tri.push(c0 + HF.id[d], d, e); line.push(d, e); }
+    let m = 0;
+    for (let d = 0; d < N; d++) if (ep || A[d * w] > d) m++;
+    const tri = new Uint32Array(3 * m), line = new Uint32Array(2 * m);
+    for (let d = 0, t = 0; d < N; d++) {
+      const e = ep ? N + d : A[d * w];
+      if (!ep && e <= d) continue;
+      tri[3 * t] = c0 + HF.id[d]; tri[3 * t + 1] = d; tri[3 * t + 2] = e;
+      line[2 * t] = d; line[2 * t + 1] = e;
+      t++;
     }
     const col = new Uint8Array(nvx * 4);
-    const faces = drawable(gl.TRIANGLES, { pos, ctr, col, index: Uint32Array.from(tri) }, { prog: progLit });
-    const outline = N <= meta.dartLimit ? drawable(gl.LINES, { pos, ctr, index: Uint32Array.from(line) }, { colour: [60, 60, 60] }) : null;
+    const faces = drawable(gl.TRIANGLES, { pos, ctr, col, index: tri }, { prog: progLit });
+    const outline = N <= meta.dartLimit ? drawable(gl.LINES, { pos, ctr, index: line }, { colour: [60, 60, 60] }) : null;
     // colour of vertex v: from a dart of it
     const dartOfVertex = (v) => (v < N ? v : ep && v < 2 * N ? v - N : -1);
     const hfDart = new Int32Array(HF.count);
@@ -531,7 +562,7 @@
         }
       }
       if (pts.length) out.push(drawable(gl.POINTS, { pos: Float32Array.from(pts) }, { colour, size: 12 }));
-      if (seg.length) out.push(thickLines(Float32Array.from(seg), colour, 5));
+      if (seg.length) out.push(thickLines(Float32Array.from(seg), colour, 6));
       if (tri.length) {
         const m = tri.length / 18, pos = new Float32Array(m * 9), ctr = new Float32Array(m * 9);
         for (let t = 0; t < m; t++) { pos.set(tri.slice(18 * t, 18 * t + 9), 9 * t); ctr.set(tri.slice(18 * t + 9, 18 * t + 18), 9 * t); }
@@ -553,7 +584,7 @@
       }
       for (let s = 0; s < CX.dotCell.length; s++) if (globals.has(CX.dotCell[s])) { const p = CX.dot[s]; pts.push(P[3 * p], P[3 * p + 1], P[3 * p + 2]); }
       if (pts.length) out.push(drawable(gl.POINTS, { pos: Float32Array.from(pts) }, { colour, size: 12 }));
-      if (seg.length) out.push(thickLines(Float32Array.from(seg), colour, 5));
+      if (seg.length) out.push(thickLines(Float32Array.from(seg), colour, 6));
       if (tri.length) { const d = drawable(gl.TRIANGLES, { pos: Float32Array.from(tri), ctr: Float32Array.from(ctr) }, { prog: progLit, colour }); d.offset = true; out.push(d); }
     }
     return out;
@@ -588,8 +619,8 @@
       if (cellsView.outline && explode === 0) use(cellsView.outline, { fade: fade ? 0.6 : 0, alpha: 1 });
       if (!fade) for (const m of cellsView.marks || []) use(m);
     } else {
-      for (const p of cellsView.parts) use(p.d, { fade });
-      use(cellsView.links, { fade });
+      for (const p of cellsView.parts) use(p.d, { fade: p.d.prog === progLit ? fade : Math.min(fade, 0.6) });
+      use(cellsView.links, { fade: Math.min(fade, 0.6) });
     }
   }
   function overlays(list) {
@@ -615,7 +646,7 @@
     } else if (state.view === 'cells') {
       drawCellsBase(0);
     } else if (state.view === 'homology') {
-      drawCellsBase(0.72);
+      drawCellsBase(1);
       const list = [];
       genViews.forEach((g, k) => { if (state.gens[k]) list.push(...g); });
       overlays(list);
@@ -641,7 +672,8 @@
     }
     for (const b of document.querySelectorAll('#views button')) b.classList.toggle('on', b.dataset.view === v);
     $('legend-darts').style.display = v === 'darts' ? '' : 'none';
-    $('legend-cells').style.display = v === 'darts' ? 'none' : '';
+    $('legend-cells').style.display = v === 'cells' ? '' : 'none';
+    $('legend-box').style.display = v === 'homology' ? 'none' : '';
     $('explode-row').style.display = v === 'darts' ? 'none' : '';
     $('colorby-row').style.display = v === 'cells' ? '' : 'none';
     $('gen-box').style.display = v === 'homology' ? '' : 'none';
@@ -793,12 +825,21 @@
   addEventListener('resize', () => { resize(); redraw(); });
 
   // ---------------------------------------------------------------- start
+  // the address may choose the view and the camera: #view=cells&explode=30&yaw=-0.9&pitch=0.4&zoom=1.2
+  const hash = new Map(location.hash.slice(1).split('&').map((kv) => kv.split('=')));
+  let first = ['darts', 'cells', 'homology'].includes(hash.get('view')) ? hash.get('view') : meta.view;
+  if (hash.has('explode')) { const x = +hash.get('explode'); if (x >= 0 && x <= 100) { $('explode').value = x; explode = x / 100 * 1.2; } }
+  if (isFinite(+hash.get('yaw')) && hash.has('yaw')) cam.yaw = +hash.get('yaw');
+  if (isFinite(+hash.get('pitch')) && hash.has('pitch')) cam.pitch = Math.max(-1.55, Math.min(1.55, +hash.get('pitch')));
+  if (+hash.get('zoom') > 0) cam.dist /= +hash.get('zoom');
   resize();
   state.colorBy = meta.colorBy;
   colorSel.value = meta.colorBy || '';
-  state.view = meta.view;
-  setView(meta.view);
+  state.view = first;
+  setView(first);
+  mark('built');
   draw();
+  mark('drawn');
 
   // ---------------------------------------------------------------- self test (#selftest)
   function pixels() {
@@ -815,15 +856,15 @@
   function changed(a, b) { let k = 0; for (let i = 0; i < a.length; i += 4) if (a[i] !== b[i] || a[i + 1] !== b[i + 1] || a[i + 2] !== b[i + 2]) k++; return k; }
   window.gmapViewer = { meta, setView, draw, select, highlight, pixels, state, firstFrameMs: () => firstFrame - T0 };
   if (location.hash.indexOf('selftest') >= 0) {
-    const r = { firstFrameMs: firstFrame, setupMs: firstFrame - T0, canvas: [canvas.width, canvas.height], views: {}, darts: N, dim: n };
+    const r = { firstFrameMs: firstFrame, setupMs: firstFrame - T0, marks, scriptStart: T0, canvas: [canvas.width, canvas.height], views: {}, darts: N, dim: n };
     const first = state.view;
     for (const v of isMap ? ['darts', 'cells', 'homology'] : ['cells', 'homology']) {
       const t = performance.now();
       setView(v); draw();
       r.views[v] = { nonBlank: nonBlank(pixels()), ms: performance.now() - t };
+      if (v === 'darts') r.message = $('message').textContent;
     }
     r.thinned = isMap && N > meta.dartLimit ? kept.length : null;
-    r.message = $('message').textContent;
     setView('cells'); draw();
     r.legendCells = [...document.querySelectorAll('#legend-cells .legend-item')].map((e) => e.textContent);
     r.legendDarts = [...document.querySelectorAll('#legend-darts .legend-item')].map((e) => e.textContent);
