@@ -164,6 +164,28 @@ mod tests {
     }
 
     #[test]
+    fn the_torus_is_embedded() {
+        let t = torus_with_points(6, 4, 2.0, 0.5).unwrap();
+        let verts = t.cells(0);
+        assert_eq!(verts.len(), 24);
+        let mut pts = Vec::new();
+        for d in t.darts() {
+            let p = t.point(d).unwrap();
+            assert_eq!(Some(p), t.point(verts.reps[verts.of[d.index()] as usize]), "dart {d}");
+            // on the torus: (sqrt(x² + y²) - 2)² + z² = 0.25
+            let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+            assert!(((r - 2.0).powi(2) + p[2] * p[2] - 0.25).abs() < 1e-12);
+            pts.push(p.map(|c| (c * 1e9).round() as i64));
+        }
+        pts.sort();
+        pts.dedup();
+        // distinct vertices get distinct points
+        assert_eq!(pts.len(), 24);
+        assert!(torus_with_points(2, 4, 2.0, 0.5).is_err());
+        assert!(torus_with_points(3, 3, 1.0, 1.0).is_err());
+    }
+
+    #[test]
     fn cubes_and_simplices_have_standard_corners() {
         for n in 0..=3 {
             let c = cube_with_points(n).unwrap();
