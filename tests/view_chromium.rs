@@ -80,7 +80,11 @@ fn check(name: &str, scene: &Scene, opts: &HtmlOptions) -> Option<(Value, chromi
         r["darts"],
         r["setupMs"].as_f64().unwrap_or(f64::NAN),
         run.wall.as_secs_f64(),
-        if run.isolated { ", in a network namespace without network" } else { ", network off by proxy and resolver rules" }
+        if run.isolated {
+            ", in a network namespace without network"
+        } else {
+            ", network off by proxy and resolver rules"
+        }
     );
     Some((r, run))
 }
@@ -195,5 +199,9 @@ fn a_grid_of_a_million_and_a_half_darts_renders_within_five_seconds() {
     let first = r["firstFrameMs"].as_f64().unwrap();
     assert!(first < 5000.0, "first frame after {first} ms");
     assert!(r["message"].as_str().unwrap().contains("above the darts view's limit"), "{}", r["message"]);
-    eprintln!("grid 32³: first frame {first:.0} ms after navigation, phases {}, browser run {:.2} s", r["marks"], run.wall.as_secs_f64());
+    eprintln!(
+        "grid 32³: first frame {first:.0} ms after navigation, phases {}, browser run {:.2} s",
+        r["marks"],
+        run.wall.as_secs_f64()
+    );
 }

@@ -93,7 +93,10 @@ fn jacobi(mut a: Vec<f64>, k: usize) -> (Vec<f64>, Vec<f64>) {
         v[i * k + i] = 1.0;
     }
     for _sweep in 0..60 {
-        let off: f64 = (0..k).flat_map(|i| (0..k).filter(move |&j| j != i).map(move |j| (i, j))).map(|(i, j)| a[i * k + j].powi(2)).sum();
+        let off: f64 = (0..k)
+            .flat_map(|i| (0..k).filter(move |&j| j != i).map(move |j| (i, j)))
+            .map(|(i, j)| a[i * k + j].powi(2))
+            .sum();
         let scale: f64 = (0..k).map(|i| a[i * k + i].powi(2)).sum::<f64>().max(1e-300);
         if off <= 1e-22 * scale {
             break;

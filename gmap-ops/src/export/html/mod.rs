@@ -395,7 +395,8 @@ impl Scene {
     /// the cells of its dimension `Σ extent`. Errors: not a complex scene, or a cube of
     /// another dimension than the scene's axes ([`ExportError::SceneCell`]).
     pub fn add_cube(&mut self, min: &[i64], extent: &[u8]) -> Result<u32, ExportError> {
-        if self.complex.is_none() || min.len() != self.dim || extent.len() != self.dim || extent.iter().any(|&e| e > 1) {
+        if self.complex.is_none() || min.len() != self.dim || extent.len() != self.dim || extent.iter().any(|&e| e > 1)
+        {
             return Err(ExportError::SceneCell {
                 reason: format!(
                     "a cube ({min:?}, {extent:?}) of a scene of dimension {} (a complex scene, one 0/1 extent per axis)",
@@ -466,7 +467,9 @@ impl Scene {
                 c.links.extend([a, b]);
                 Ok(())
             }
-            _ => Err(ExportError::SceneCell { reason: format!("a link {a}–{b} between {np} points of a complex scene") }),
+            _ => Err(ExportError::SceneCell {
+                reason: format!("a link {a}–{b} between {np} points of a complex scene"),
+            }),
         }
     }
 
@@ -594,9 +597,8 @@ pub fn html_string(scene: &Scene, opts: &HtmlOptions) -> Result<String, ExportEr
     // the default label: the first text label of the highest dimension with labels
     let color_by = opts.color_by.clone().or_else(|| {
         scene.labels.iter().rev().find_map(|per| {
-            per.iter().find_map(|(_, l)| {
-                l.iter().find(|(_, v)| matches!(v, LabelValue::Text(_))).map(|(n, _)| n.to_string())
-            })
+            per.iter()
+                .find_map(|(_, l)| l.iter().find(|(_, v)| matches!(v, LabelValue::Text(_))).map(|(n, _)| n.to_string()))
         })
     });
     let labels: Vec<Value> = scene
