@@ -69,6 +69,10 @@ fn check(name: &str, scene: &Scene, opts: &HtmlOptions) -> Option<(Value, chromi
     assert_eq!(r["resources"], serde_json::json!([]), "{name}: resources loaded");
     assert_eq!(r["domUrls"], serde_json::json!([]), "{name}: addresses in the document");
     assert!(run.page_requests.is_empty(), "{name}: network requests {:?}", run.page_requests);
+    if scene.dart_count() > 0 && scene.dart_count() <= opts.dart_limit {
+        assert_eq!(r["cellCounts"], serde_json::json!(scene.counts()), "{name}: the page's cells");
+        assert_eq!(r["numberedBySmallestDart"], true, "{name}");
+    }
     let (w, h) = (r["canvas"][0].as_u64().unwrap(), r["canvas"][1].as_u64().unwrap());
     assert!(w >= 800 && h >= 600, "{name}: canvas {w}×{h}");
     for (v, s) in r["views"].as_object().unwrap() {

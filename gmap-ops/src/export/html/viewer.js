@@ -116,30 +116,34 @@
   const orbitCache = new Map();
   function orbit(mask) {
     if (orbitCache.has(mask)) return orbitCache.get(mask);
-    // union by smallest root with path halving: each root is the smallest dart of its set
-    const parent = new Int32Array(N);
-    for (let d = 0; d < N; d++) parent[d] = d;
-    const is = [];
-    for (let i = 0; i <= n; i++) if (mask & (1 << i)) is.push(i);
-    const m = is.length;
-    for (let d = 0; d < N; d++) {
-      const row = d * w;
-      for (let k = 0; k < m; k++) {
-        let b = A[row + is[k]];
-        if (b <= d) continue; // each pair once, from its smaller dart
-        let a = d;
+    let top = -1;
+    for (let i = 0; i <= n; i++) if (mask & (1 << i)) top = i;
+    const id = new Int32Array(N);
+    let count = 0;
+    if (top < 0 || (mask & ~(1 << top)) === 0) {
+      // one involution (or none): its pairs, numbered by smaller dart
+      for (let d = 0; d < N; d++) { const e = top < 0 ? d : A[d * w + top]; id[d] = e < d ? id[e] : count++; }
+    } else {
+      // the orbits without the highest involution, joined along it: a union-find over
+      // those orbits (fewer than the darts), union by smallest root, path halving
+      const sub = orbit(mask & ~(1 << top)), sid = sub.id, parent = new Int32Array(sub.count);
+      for (let x = 0; x < sub.count; x++) parent[x] = x;
+      for (let d = 0; d < N; d++) {
+        let a = sid[d], b = sid[A[d * w + top]];
+        if (a === b) continue;
         while (parent[a] !== a) { parent[a] = parent[parent[a]]; a = parent[a]; }
         while (parent[b] !== b) { parent[b] = parent[parent[b]]; b = parent[b]; }
         if (a < b) parent[b] = a; else if (b < a) parent[a] = b;
       }
-    }
-    const id = new Int32Array(N);
-    let count = 0;
-    for (let d = 0; d < N; d++) {
-      // the root is smaller than d and already numbered, or d itself
-      let r = d;
-      while (parent[r] !== r) r = parent[r];
-      id[d] = r === d ? count++ : id[r];
+      // sub-orbits are numbered by smallest dart, so the root of a set holds its smallest
+      // dart, met first in dart order
+      const label = new Int32Array(sub.count).fill(-1);
+      for (let d = 0; d < N; d++) {
+        let r = sid[d];
+        while (parent[r] !== r) r = parent[r];
+        if (label[r] < 0) label[r] = count++;
+        id[d] = label[r];
+      }
     }
     const o = { id, count };
     orbitCache.set(mask, o);
@@ -490,6 +494,7 @@
     } else h += '<div class="small">one colour per ' + (isMap ? 'side of a top cell (orbit <α0…α' + (n - 1) + '>)' : 'cell') + '</div>';
     lg.innerHTML = h;
     if (isMap && cellsView) {
+      category(996);
       const k = dims.find((x) => x >= 2);
       const ids = k !== undefined ? cellsOf(k).id : null;
       const col = cellsView.col;
@@ -502,7 +507,7 @@
           c = cache.get(cell);
           if (!c) { const lv = labelOf(k, cell, name); c = lv ? colourOf.get(lv[0]) : none; cache.set(cell, c); }
         } else if (name) c = none;
-        else c = category(UNIT.id[d] % 997);
+        else c = CATEGORY[UNIT.id[d] % 997];
         col[4 * v] = c[0]; col[4 * v + 1] = c[1]; col[4 * v + 2] = c[2]; col[4 * v + 3] = 255;
       }
       setColours(cellsView.faces, col);
@@ -884,6 +889,18 @@
       r.selection = $('selection').textContent;
       r.highlightChanged = changed(before, pixels());
       select(-1);
+    }
+    if (isMap && N <= meta.dartLimit) {
+      // the cells as the page numbers them: their counts, and numbered in the order of their
+      // smallest darts (as DenseMap::cells)
+      r.cellCounts = [];
+      r.numberedBySmallestDart = true;
+      for (let i = 0; i <= n; i++) {
+        const o = cellsOf(i);
+        r.cellCounts.push(o.count);
+        let next = 0;
+        for (let d = 0; d < N; d++) { if (o.id[d] === next) next++; else if (o.id[d] > next) r.numberedBySmallestDart = false; }
+      }
     }
     r.resources = performance.getEntriesByType('resource').map((e) => e.name);
     r.domUrls = [...document.querySelectorAll('[src],[href]')].map((e) => e.getAttribute('src') || e.getAttribute('href'));
