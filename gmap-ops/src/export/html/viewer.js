@@ -633,7 +633,9 @@
     gl.disable(gl.DEPTH_TEST);
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-    for (const d of list) use(d, { alpha: 0.3 });
+    // the hidden parts, faintly: faces first, then lines and points over them
+    for (const d of list) if (d.mode === gl.TRIANGLES && d.prog !== progThick) use(d, { alpha: 0.3 });
+    for (const d of list) if (!(d.mode === gl.TRIANGLES && d.prog !== progThick)) use(d, { alpha: 0.5 });
     gl.disable(gl.BLEND);
     gl.enable(gl.DEPTH_TEST);
   }
