@@ -68,8 +68,7 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
         input.path().file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_else(|| input.kind().to_string())
     });
     let report_of = |input: &Input| -> Result<Vec<NamedGenerator>> {
-        let mut h = HomologyOptions::default();
-        h.generators = true;
+        let h = HomologyOptions { generators: true, ..Default::default() };
         Ok(crate::report::homology(input, &h)?.generators.unwrap_or_default())
     };
     match input {
