@@ -8,6 +8,7 @@
 //! | [`grid_with_points`] | `k_1 × … × k_d` unit cubes, `d <= 3` | the integer points `(x, y, z)`, `0 <= x <= k_1`, … |
 //! | [`cube_with_points`] | the n-cube, `n <= 3` | the corners of `[0, 1]^n` |
 //! | [`simplex_with_points`] | the n-simplex, `n <= 3` | the origin and the unit vectors `e_1 … e_n` |
+//! | [`torus_with_points`] | the `a × b` periodic grid of squares, `a, b >= 3` | a torus of revolution about `z`, radii `big` and `small` |
 //! | [`crate::build::polygon`] | the k-gon | the k-th roots of unity in the plane `z = 0` (already) |
 //!
 //! Coordinates past the dimension are 0 (a square lies in the plane `z = 0`).
@@ -55,6 +56,36 @@ pub fn grid_with_points(sizes: &[usize], periodic: &[bool]) -> Result<DenseMap, 
             p[a] = if periodic[a] { c % sizes[a] } else { c } as f64;
         }
         m.set_point(Dart::new(k as u32), Some(p));
+    }
+    Ok(m)
+}
+
+/// The 2-torus as the periodic `a × b` grid of squares ([`build::grid`] with both axes
+/// periodic) placed on a torus of revolution about the z axis: the vertex `(i, j)` at
+/// `((big + small cos v) cos u, (big + small cos v) sin u, small sin v)` with
+/// `u = 2π i / a`, `v = 2π j / b`. An embedding when `a, b >= 3` and `0 < small < big`
+/// (refused otherwise). O(N).
+///
+/// ```
+/// let t = gmap_ops::geometry::torus_with_points(8, 4, 2.0, 0.7).unwrap();
+/// assert_eq!(t.cell_counts(), vec![32, 64, 32]);
+/// assert_eq!(t.euler_characteristic(), 0);
+/// ```
+pub fn torus_with_points(a: usize, b: usize, big: f64, small: f64) -> Result<DenseMap, BuildError> {
+    if a < 3 || b < 3 || !(small > 0.0 && small < big && big.is_finite()) {
+        return Err(BuildError::BadArgument(format!(
+            "a torus of {a} × {b} squares with radii {big} and {small} (needs a, b >= 3 and 0 < small < big)"
+        )));
+    }
+    let mut m = build::grid(&[a, b], &[true, true])?;
+    // the layout of build::grid: dart = square * (2! 2^2) + ordering * 2^2 + corner bits
+    for k in 0..m.dart_count() {
+        let (sq, eps) = (k / 8, k % 4);
+        let i = (sq % a + (eps & 1)) % a;
+        let j = (sq / a + (eps >> 1 & 1)) % b;
+        let (u, v) = (std::f64::consts::TAU * i as f64 / a as f64, std::f64::consts::TAU * j as f64 / b as f64);
+        let r = big + small * v.cos();
+        m.set_point(Dart::new(k as u32), Some([r * u.cos(), r * u.sin(), small * v.sin()]));
     }
     Ok(m)
 }
@@ -130,6 +161,28 @@ mod tests {
         assert_eq!(ring.cells(0).len(), 6);
         assert!(grid_with_points(&[1; 4], &[false; 4]).is_err());
         assert!(grid_with_points(&[0, 1], &[false; 2]).is_err());
+    }
+
+    #[test]
+    fn the_torus_is_embedded() {
+        let t = torus_with_points(6, 4, 2.0, 0.5).unwrap();
+        let verts = t.cells(0);
+        assert_eq!(verts.len(), 24);
+        let mut pts = Vec::new();
+        for d in t.darts() {
+            let p = t.point(d).unwrap();
+            assert_eq!(Some(p), t.point(verts.reps[verts.of[d.index()] as usize]), "dart {d}");
+            // on the torus: (sqrt(x² + y²) - 2)² + z² = 0.25
+            let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
+            assert!(((r - 2.0).powi(2) + p[2] * p[2] - 0.25).abs() < 1e-12);
+            pts.push(p.map(|c| (c * 1e9).round() as i64));
+        }
+        pts.sort();
+        pts.dedup();
+        // distinct vertices get distinct points
+        assert_eq!(pts.len(), 24);
+        assert!(torus_with_points(2, 4, 2.0, 0.5).is_err());
+        assert!(torus_with_points(3, 3, 1.0, 1.0).is_err());
     }
 
     #[test]

@@ -48,6 +48,8 @@
 //!   generators in the input's own terms;
 //! * [`routes`] ([`bench`]) runs and times every route of an input;
 //! * [`info()`] ([`mod@info`]) gives the characteristics; [`save`] ([`mod@save`]) writes any format;
+//! * [`view()`] ([`mod@view`]) writes one self-contained HTML page to look at the input (darts,
+//!   cells coloured by a label, generators) in a browser;
 //! * [`simplify_if_safe`] reduces a map by removals and contractions where that keeps the
 //!   groups.
 //!
@@ -77,6 +79,7 @@ pub mod progress;
 pub mod report;
 pub mod route;
 pub mod save;
+pub mod view;
 
 pub use bench::{routes, RouteRun, Times};
 pub use error::{Error, ErrorKind, Result};
@@ -86,3 +89,4 @@ pub use progress::Progress;
 pub use report::{homology, homology_file, CellName, NamedGenerator, Report};
 pub use route::{simplify_if_safe, HomologyOptions, Method, Via};
 pub use save::{save, save_file, SaveOptions};
+pub use view::{view, ViewOptions};

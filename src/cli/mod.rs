@@ -1,5 +1,5 @@
 //! Command-line parsing and printing over the facade (`gmap::open`, `gmap::homology`,
-//! `gmap::info`, `gmap::save_file`, `gmap::bench`). Nothing here chooses a route or decides
+//! `gmap::info`, `gmap::save_file`, `gmap::bench`, `gmap::view`). Nothing here chooses a route or decides
 //! anything about the input: each subcommand is an argument struct, one call, and printing.
 //!
 //! Exit codes: 0 success, 1 bad input (one line `error: …` on stderr), 2 bad usage (clap's
@@ -10,6 +10,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+
+mod view;
 
 /// Generalized maps: build, inspect, convert, and compute homology on the cells.
 #[derive(Parser, Debug)]
@@ -140,6 +142,8 @@ enum Command {
     Bench(BenchArgs),
     /// Convert between formats, chosen by file extension.
     Convert(ConvertArgs),
+    /// Write one self-contained HTML page to look at the input in a browser.
+    View(view::ViewArgs),
 }
 
 /// Runs the command line; returns the process exit code.
@@ -154,6 +158,7 @@ pub fn run() -> ExitCode {
         Command::Info(a) => info(a, quiet),
         Command::Homology(a) => homology(a, quiet),
         Command::Bench(a) => bench(a, quiet),
+        Command::View(a) => view::view(a, quiet),
         Command::Convert(a) => {
             let progress = gmap::Progress::stderr("gmap convert", quiet);
             progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));

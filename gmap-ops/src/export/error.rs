@@ -106,6 +106,32 @@ pub enum ExportError {
         /// the cause
         source: std::io::Error,
     },
+    /// A cell of a scene that cannot be added (see [`super::html::Scene`]).
+    #[error("the scene has no room for {reason}")]
+    SceneCell {
+        /// what was refused
+        reason: String,
+    },
+    /// A generator names a cell the scene does not have.
+    #[error("generator {name}: {dim}-cell {cell} is not among the scene's {count} cells of dimension {dim}")]
+    GeneratorCell {
+        /// the generator's name
+        name: String,
+        /// its dimension
+        dim: usize,
+        /// the first cell that is not there
+        cell: u32,
+        /// how many cells of that dimension the scene has
+        count: usize,
+    },
+    /// A page is to be coloured by a label that no cell has.
+    #[error("no cell has a label named `{name}` (labels: {})", if known.is_empty() { "none".to_string() } else { known.join(", ") })]
+    UnknownLabel {
+        /// the label asked for
+        name: String,
+        /// the labels the scene has
+        known: Vec<String>,
+    },
 }
 
 /// Writes `contents` to `path` with [`gmap_core::io::write_atomic`] (never a partial file).

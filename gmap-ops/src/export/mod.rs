@@ -2,7 +2,8 @@
 //! [`GMap`] directly, [`gmap_off_string`]; the 2-cells of a map of any dimension as a view,
 //! [`two_skeleton_off_string`]), `.facets` of the barycentric
 //! subdivision (any map) and legacy `.vtk` unstructured grids (maps of dimension ≤ 3 with
-//! points, [`vtk_string`]). Every writer goes through a temporary file in the target's
+//! points, [`vtk_string`]) and self-contained HTML pages to look at a map in a browser
+//! ([`html`]). Every writer goes through a temporary file in the target's
 //! directory and a rename, so a failure never leaves a partial file behind. The native
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
 
@@ -12,6 +13,7 @@ use std::path::Path;
 use gmap_core::{AlphaSet, Attributes, Dart, DenseMap, GMap, Partition};
 
 mod error;
+pub mod html;
 mod vtk;
 
 pub use error::{write_atomic, ExportError};
