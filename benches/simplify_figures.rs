@@ -85,10 +85,8 @@ fn grid_figures() {
 fn tries_figures() {
     let name = std::env::var("GMAP_MEASURE_ONE").unwrap_or_else(|_| "triple_trefoil_arc".into());
     let map = read_lutz(&name);
-    let seed = std::env::var("GMAP_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(SimplifyOptions::for_map(&map).seed);
+    let seed =
+        std::env::var("GMAP_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(SimplifyOptions::for_map(&map).seed);
     for (tries, search) in [(8, 0), (32, 0), (128, 0), (512, 0), (8, 500), (8, 1000), (8, 2000), (8, 4000)] {
         let t = Instant::now();
         let (small, r) = simplify_with(&map, &SimplifyOptions { tries, search, seed });
