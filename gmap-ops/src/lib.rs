@@ -35,6 +35,7 @@
 #![warn(missing_docs)]
 
 pub mod build;
+pub mod construct;
 pub mod euler;
 pub mod export;
 pub mod geometry;
