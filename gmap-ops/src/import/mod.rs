@@ -16,10 +16,12 @@ pub mod cubical;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
+pub mod vtk;
 
 pub use cubical::{read_cub, read_pbm, CubicalSet};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
+pub use vtk::{parse_vtk, read_vtk};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
