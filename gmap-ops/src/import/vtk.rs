@@ -44,7 +44,10 @@ impl Scalar {
     /// A legacy type name (`int`, `double`, `vtktypeint64`…) or an XML one (`Int32`,
     /// `Float64`…).
     pub(crate) fn parse(name: &str) -> Option<Scalar> {
-        Some(match name.to_ascii_lowercase().as_str() {
+        let lower = name.to_ascii_lowercase();
+        // vtktypeint32, vtktypefloat64…: the fixed-width names
+        let name = lower.strip_prefix("vtktype").filter(|n| *n != "int64" && *n != "uint64").unwrap_or(&lower);
+        Some(match name {
             "bit" | "unsigned_char" | "uint8" => Scalar::UInt(1),
             "char" | "int8" => Scalar::Int(1),
             "unsigned_short" | "uint16" => Scalar::UInt(2),
