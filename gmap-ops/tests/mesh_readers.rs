@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use gmap_core::{cell_labels, to_dense_labels, Characteristics, LabelValue, LabelledGMap};
-use gmap_ops::import::{read_vtk, read_vtu};
+use gmap_ops::import::{read_msh, read_vtk, read_vtu};
 
 fn data(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh")).join(name)
@@ -15,6 +15,7 @@ fn read(name: &str) -> LabelledGMap {
     let r = match p.extension().and_then(|e| e.to_str()) {
         Some("vtk") => read_vtk(&p, None),
         Some("vtu") => read_vtu(&p, None),
+        Some("msh") => read_msh(&p, None),
         _ => panic!("{name}"),
     };
     r.unwrap_or_else(|e| panic!("{e}"))
@@ -102,4 +103,30 @@ fn appended_raw_and_zlib_and_polyhedra() {
     let c = summary(&g);
     assert_eq!(c.cells, vec![12, 20, 11, 2]);
     assert_eq!(c.darts, 96);
+}
+
+#[test]
+fn gmsh_files_with_physical_tags_and_names() {
+    let g = read("tet_cube.msh");
+    let c = summary(&g);
+    assert_eq!((c.darts, c.cells[0], c.cells[3]), (48 * 24, 27, 48));
+    let (_, labels, _) = to_dense_labels(&g);
+    let with = |dim: usize, name: &str, v: LabelValue| labels.of[dim].iter().filter(|l| l.get(name) == Some(&v)).count();
+    assert_eq!(with(3, "gmsh:physical", LabelValue::Int(1)), 48);
+    assert_eq!(with(3, "gmsh:physical_name", LabelValue::Text("solid".into())), 48);
+    assert_eq!(with(2, "gmsh:physical", LabelValue::Int(2)), 48);
+    assert_eq!(with(2, "gmsh:physical_name", LabelValue::Text("boundary".into())), 48);
+    // interior faces carry no label
+    assert_eq!(labels.of[2].iter().filter(|l| l.is_empty()).count(), c.cells[2] - 48);
+
+    let g = read("mixed.msh");
+    let c = summary(&g);
+    assert_eq!(c.cells, vec![12, 24, 17, 4]);
+    let (_, labels, _) = to_dense_labels(&g);
+    let mut tags: Vec<String> = labels.of[3].iter().map(|l| l.get("gmsh:physical").unwrap().to_string()).collect();
+    tags.sort();
+    assert_eq!(tags, ["1", "2", "3", "4"]);
+
+    let c = summary(&read("ring.msh"));
+    assert_eq!(c.cells, vec![32, 64, 40, 8]);
 }

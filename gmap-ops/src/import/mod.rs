@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub mod cubical;
+pub mod msh;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
@@ -20,6 +21,7 @@ pub mod vtk;
 pub mod vtu;
 
 pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use vtk::{parse_vtk, read_vtk};

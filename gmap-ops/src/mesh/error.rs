@@ -171,4 +171,24 @@ impl MeshError {
             other => other,
         }
     }
+
+    /// The same error with every vertex `v` replaced by `f(v)` (a `.msh` file names its
+    /// nodes by tags).
+    pub fn renumber_vertices(self, f: impl Fn(u64) -> u64) -> Self {
+        let map = |v: Vec<u64>| -> Vec<u64> { v.into_iter().map(&f).collect() };
+        match self {
+            MeshError::FacetInManyCells { dim, vertices, cells } => MeshError::FacetInManyCells { dim, vertices: map(vertices), cells },
+            MeshError::FacetOrder { cells, first, second } => MeshError::FacetOrder { cells, first: map(first), second: map(second) },
+            MeshError::NonConforming { cells, first, second, shared } => MeshError::NonConforming {
+                cells,
+                first: map(first),
+                second: map(second),
+                shared: shared.into_iter().map(|e| e.map(&f)).collect(),
+            },
+            MeshError::LooseCell { cell, kind, vertices, top } => MeshError::LooseCell { cell, kind, vertices: map(vertices), top },
+            MeshError::RepeatedCell { cells, vertices } => MeshError::RepeatedCell { cells, vertices: map(vertices) },
+            MeshError::Pinched { what, vertices, pieces } => MeshError::Pinched { what, vertices: map(vertices), pieces },
+            other => other,
+        }
+    }
 }
