@@ -239,6 +239,8 @@ struct Cursor<'a> {
     b: &'a [u8],
     pos: usize,
     line: usize,
+    /// the line of the last section header read
+    head: usize,
 }
 
 impl<'a> Cursor<'a> {
@@ -265,6 +267,7 @@ impl<'a> Cursor<'a> {
         if self.pos >= self.b.len() {
             return None;
         }
+        self.head = self.line;
         Some(self.raw_line())
     }
 
@@ -300,13 +303,14 @@ impl<'a> Cursor<'a> {
     /// `n` values of type `ty`: tokens in ASCII, big-endian bytes in binary (then one line
     /// end). `what` names the block in errors.
     fn values(&mut self, n: usize, ty: Scalar, binary: bool, what: &str) -> Result<Vec<Value>, ImportError> {
-        let start = self.line;
+        let start = self.head;
+        let at_head = |m: String| ImportError::Syntax { line: start, message: m };
         if binary {
             if ty == Scalar::Text {
                 return Err(self.err(format!("{what}: binary string arrays are not read")));
             }
             let bytes = n.checked_mul(ty.size()).filter(|&b| b <= self.b.len() - self.pos).ok_or_else(|| {
-                self.err(format!("{what}: {n} values of {} bytes do not fit in the rest of the file", ty.size()))
+                at_head(format!("{what}: {n} values of {} bytes do not fit in the rest of the file", ty.size()))
             })?;
             let block = &self.b[self.pos..self.pos + bytes];
             self.pos += bytes;
@@ -330,13 +334,11 @@ impl<'a> Cursor<'a> {
         }
         // a value takes two bytes at least (a digit and a separator)
         if n > (self.b.len() - self.pos).div_ceil(2) + 1 {
-            return Err(self.err(format!("{what}: {n} values announced, the rest of the file cannot hold them")));
+            return Err(at_head(format!("{what}: {n} values announced, the rest of the file cannot hold them")));
         }
         let mut out = Vec::with_capacity(n);
         for k in 0..n {
-            let tok = self.token().ok_or_else(|| {
-                ImportError::Syntax { line: start, message: format!("{what}: the file ends at value {k} of {n}") }
-            })?;
+            let tok = self.token().ok_or_else(|| at_head(format!("{what}: the file ends at value {k} of {n}")))?;
             out.push(ty.parse_token(tok).ok_or_else(|| {
                 self.err(format!("{what}: value {k} '{}' is not a number of type {ty:?}", shorten(tok, 40)))
             })?);
@@ -364,7 +366,7 @@ fn text(w: &[u8]) -> String {
 
 /// Parses a legacy VTK unstructured grid (see the module documentation).
 pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
-    let mut c = Cursor { b: bytes, pos: 0, line: 1 };
+    let mut c = Cursor { b: bytes, pos: 0, line: 1, head: 1 };
     let header = c.raw_line();
     let version = header
         .strip_prefix(b"# vtk DataFile Version ")
@@ -388,7 +390,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut active: Option<(bool, usize)> = None; // (cell data?, count)
     let mut dataset = false;
     while let Some(line) = c.next_line() {
-        let ln = c.line - 1;
+        let ln = c.head;
         let w = words(line);
         let key = w[0].to_ascii_uppercase();
         let err = |m: String| ImportError::Syntax { line: ln, message: m };
@@ -543,7 +545,7 @@ fn push_arrays(mesh: &mut Mesh, cell: bool, arrays: Vec<DataArray>) {
 /// `METADATA` block); `keep` = `None` reads past it.
 fn read_field_array(c: &mut Cursor, binary: bool, keep: Option<()>) -> Result<Option<Vec<DataArray>>, ImportError> {
     let l = c.next_line().ok_or_else(|| c.err("the file ends inside a FIELD block".into()))?;
-    let ln = c.line - 1;
+    let ln = c.head;
     let w = words(l);
     if w.len() < 4 {
         return Err(ImportError::Syntax { line: ln, message: format!("expected 'name components tuples type', found '{}'", shorten(l, 40)) });

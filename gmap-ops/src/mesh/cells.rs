@@ -152,8 +152,19 @@ fn volume_faces(c: &MeshCell) -> Vec<SmallVec<[u32; 4]>> {
     }
 }
 
-/// Sets labels on the `dim`-cell of `d` (dimensions 0 to 3).
+/// Adds labels to those of the `dim`-cell of `d` (dimensions 0 to 3).
 fn set_labels(g: &mut LabelledGMap, dim: usize, d: DartId, l: Labels) {
+    let old = match dim {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        _ => g.attribute::<3>(d),
+    };
+    let mut merged = old.cloned().unwrap_or_default();
+    for (n, v) in l.iter() {
+        merged.set(n, v.clone());
+    }
+    let l = merged;
     match dim {
         0 => g.set_attribute::<0>(d, l),
         1 => g.set_attribute::<1>(d, l),
