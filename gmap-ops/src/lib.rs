@@ -41,5 +41,6 @@ pub mod export;
 pub mod geometry;
 pub mod import;
 pub mod iso;
+pub mod mesh;
 mod perm;
 pub mod rng;

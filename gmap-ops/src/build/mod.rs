@@ -32,7 +32,10 @@ use thiserror::Error;
 use crate::import::SimplicialComplex;
 use crate::perm::{factorial, PermTable};
 
+mod incremental;
 mod schema;
+
+pub use incremental::{sew3_same_facets, IncrementalBuilder};
 
 pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
 

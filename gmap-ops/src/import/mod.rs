@@ -13,13 +13,19 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub mod cubical;
+pub mod msh;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
+pub mod vtk;
+pub mod vtu;
 
 pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
+pub use vtk::{parse_vtk, read_vtk};
+pub use vtu::{parse_vtu, read_vtu};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
@@ -118,6 +124,9 @@ pub enum ImportError {
     /// A `.lex` file without a complex of the requested name.
     #[error("no complex named '{0}' in the file")]
     NoSuchName(String),
+    /// Cells that cannot be made into a map (a face in three cells, a non-conforming face…).
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
     /// A file that does not fit its format as a whole (a `.pbm` header, a bounding box too big).
     #[error("{0}")]
     Format(String),
