@@ -8,7 +8,10 @@
 //!   ([`GMap::make_combinatorial_hexahedron`]);
 //! * `points`: hexahedra with their eight corner points (the sews merge the points that
 //!   meet: 512,000 points made, 68,921 left);
-//! * `points_and_labels`: the same with an integer label on every volume.
+//! * `points_and_labels`: the same with an integer label on every volume;
+//! * `sew3_same_facets`: the hexahedra with points left unsewn, then
+//!   [`build::sew3_same_facets`] finds the faces to sew by their points (CGAL's
+//!   `sew3_same_facets`).
 //!
 //! Before the Criterion groups, each variant is timed (best of 5 interleaved rounds, building
 //! and sewing apart) and, when CGAL's headers and g++ are installed, CGAL's harness is run in
@@ -23,6 +26,7 @@ use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gmap_core::{Attributes, Cells, DartId, GMap};
+use gmap_ops::build;
 
 mod common;
 
@@ -174,6 +178,31 @@ fn with_labels(s: &Setup) -> (Labelled, Times) {
     })
 }
 
+/// The `K³` hexahedra with their points left unsewn, then [`build::sew3_same_facets`]
+/// (faces found by their points, as CGAL's `sew3_same_facets`): "build" is making the
+/// hexahedra, "sew" the call.
+fn same_facets() -> (GMap, Times) {
+    let mut g = GMap::new(3);
+    let c0 = thread_cpu();
+    let t0 = Instant::now();
+    for z in 0..K {
+        for y in 0..K {
+            for x in 0..K {
+                hexahedron_at(&mut g, [x as f64, y as f64, z as f64]);
+            }
+        }
+    }
+    let built = t0.elapsed().as_secs_f64();
+    let c1 = thread_cpu();
+    let t1 = Instant::now();
+    let sewn = build::sew3_same_facets(&mut g).expect("the grid's faces pair up");
+    let sewn_s = t1.elapsed().as_secs_f64();
+    let c2 = thread_cpu();
+    assert_eq!(sewn, 3 * K * K * (K - 1));
+    let cpu = c0.zip(c1).zip(c2).map(|((c0, c1), c2)| (c1 - c0, c2 - c1));
+    (g, Times { wall: (built, sewn_s), cpu })
+}
+
 /// Runs of each variant, ours and CGAL's: the machine is shared, so the best of several
 /// runs is the steadier figure.
 const REPS: usize = 5;
@@ -239,7 +268,7 @@ fn bench(c: &mut Criterion) {
     let s = Setup { paths: sew_paths() };
     // REPS rounds of the three variants, interleaved so that a change in the machine's
     // load weighs on all three alike; the first round's grids are checked
-    let mut best = [Best::new(); 3];
+    let mut best = [Best::new(); 4];
     for round in 0..REPS {
         let (g0, t) = plain(&s);
         best[0].keep(t);
@@ -247,12 +276,15 @@ fn bench(c: &mut Criterion) {
         best[1].keep(t);
         let (g2, t) = with_labels(&s);
         best[2].keep(t);
+        let (g3, t) = same_facets();
+        best[3].keep(t);
         if round == 0 {
             check_grids(&g0, &g1, &g2);
+            check_grids(&g0, &g3, &g2);
         }
     }
     let anchor = cgal_anchor();
-    let names = ["no attributes", "points", "points and labels"];
+    let names = ["no attributes", "points", "points and labels", "points, sew3_same_facets"];
     for (k, (name, ours)) in names.iter().zip(best).enumerate() {
         let (b, s) = ours.wall;
         match anchor.as_ref().and_then(|a| a.get(k)) {
@@ -285,6 +317,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("no_attributes", |b| b.iter(|| plain(&s).0.dart_count()));
     group.bench_function("points", |b| b.iter(|| with_points(&s).0.dart_count()));
     group.bench_function("points_and_labels", |b| b.iter(|| with_labels(&s).0.dart_count()));
+    group.bench_function("sew3_same_facets", |b| b.iter(|| same_facets().0.dart_count()));
     group.finish();
 }
 
