@@ -48,7 +48,8 @@ const CORNER_OF_ARG: [usize; 8] = [0b000, 0b001, 0b011, 0b010, 0b110, 0b100, 0b1
 /// CGAL's harness does: 48 new darts, 8 new vertex points. Returns the dart
 /// [`GMap::make_hexahedron`] returns.
 fn hexahedron_at<A: Attributes>(g: &mut GMap<A>, at: [f64; 3]) -> DartId {
-    let p = CORNER_OF_ARG.map(|c| [at[0] + (c & 1) as f64, at[1] + ((c >> 1) & 1) as f64, at[2] + ((c >> 2) & 1) as f64]);
+    let p =
+        CORNER_OF_ARG.map(|c| [at[0] + (c & 1) as f64, at[1] + ((c >> 1) & 1) as f64, at[2] + ((c >> 2) & 1) as f64]);
     g.make_hexahedron(p)
 }
 

@@ -27,7 +27,8 @@ fn write(g: &GMap, name: &str, folder: &std::path::Path) -> Result<(), Box<dyn E
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let folder = std::env::args().nth(1).map(PathBuf::from).unwrap_or_else(|| std::env::temp_dir().join("gmap-construct"));
+    let folder =
+        std::env::args().nth(1).map(PathBuf::from).unwrap_or_else(|| std::env::temp_dir().join("gmap-construct"));
     std::fs::create_dir_all(&folder)?;
     let z = Axis::new([0., 0., 0.], [0., 0., 1.]);
     let square = [[2., 0., 0.], [3., 0., 0.], [3., 0., 1.], [2., 0., 1.]];

@@ -21,16 +21,8 @@ fn cells<A: Attributes>(g: &GMap<A>) -> Vec<usize> {
     ch.cells
 }
 
-const UNIT: [Point; 8] = [
-    [0., 0., 0.],
-    [1., 0., 0.],
-    [1., 1., 0.],
-    [0., 1., 0.],
-    [0., 1., 1.],
-    [0., 0., 1.],
-    [1., 0., 1.],
-    [1., 1., 1.],
-];
+const UNIT: [Point; 8] =
+    [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.], [0., 1., 1.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.]];
 
 /// A dart of the face of the hexahedron made by `make_hexahedron(UNIT)` at z = 1.
 fn top_face<A: Attributes>(g: &GMap<A>) -> DartId {
@@ -75,10 +67,7 @@ fn an_edge_extruded_gives_a_quadrangle_and_a_vertex_an_edge() {
     assert_eq!(c::try_extrude_vertex(&mut g, d, [1., 0., 0.]), Err(ConstructError::NotFree { dart: d, alpha: 1 }));
     // no cell of dimension n can be extruded
     assert!(matches!(c::try_extrude_cell(&mut g, d, 2, [0.; 3]), Err(ConstructError::BadDimension { got: 2, .. })));
-    assert!(matches!(
-        c::try_extrude_edge(&mut g, d, [f64::NAN, 0., 0.]),
-        Err(ConstructError::BadParameter { .. })
-    ));
+    assert!(matches!(c::try_extrude_edge(&mut g, d, [f64::NAN, 0., 0.]), Err(ConstructError::BadParameter { .. })));
 }
 
 #[test]
@@ -102,13 +91,11 @@ fn a_face_extruded_along_a_path_stacks_one_volume_per_edge() {
     assert_eq!(cells(&g)[0], 16 + 6);
     assert_eq!(cells(&g)[3], 1 + 3 + 3);
     let lone = g.make_segment([[0., 0.], [1., 0.]]);
-    let free_end = g.alpha(lone, 0);
     g.unlink(lone, 0);
     assert_eq!(
         c::try_extrude_cell_along_path(&mut g, last.top, 2, &[lone]),
         Err(ConstructError::BadShape { dart: lone, what: "an edge with two ends" })
     );
-    let _ = free_end;
 }
 
 /// The square `[2, 3] × {0} × [0, 1]` in the xz-plane, as a polygon of the map.
@@ -219,6 +206,32 @@ fn volumes_split_by_a_loop_and_merged_back() {
     // a boundary face separates nothing
     assert!(!c::can_merge_volumes(&g, f));
     assert!(matches!(c::try_merge_volumes(&mut g, f), Err(ConstructError::Euler(_))));
+}
+
+#[test]
+fn a_corner_of_a_cube_surface_chamfered_becomes_a_triangle() {
+    // the surface of a cube as a 2-map: a hexahedron in dimension 2
+    let mut g = GMap::new(2);
+    let d = g.make_hexahedron(UNIT);
+    assert_eq!(cells(&g), vec![8, 12, 6]);
+    assert!(c::can_chamfer_vertex(&g, d, 0.25));
+    let f = c::chamfer_vertex(&mut g, d, 0.25);
+    assert_eq!((cells(&g), chi(&g)), (vec![10, 15, 7], 2));
+    // the new face is a triangle with its corners a quarter along the cube's edges
+    let face = g.orbit(f, gmap_core::AlphaSet::range(0, 1));
+    assert_eq!(face.len(), 6);
+    let mut corners: Vec<Point> = face.iter().map(|&x| g.point(x).unwrap()).collect();
+    corners.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    corners.dedup();
+    assert_eq!(corners, vec![[0., 0., 0.25], [0., 0.25, 0.], [0.25, 0., 0.]]);
+    g.check().unwrap();
+    assert_eq!(
+        c::try_chamfer_vertex(&mut g, f, 1.5),
+        Err(ConstructError::BadParameter { what: "chamfer fraction", value: 1.5 })
+    );
+    let mut h = GMap::new(3);
+    let e = h.make_hexahedron(UNIT);
+    assert!(matches!(c::try_chamfer_vertex(&mut h, e, 0.5), Err(ConstructError::BadDimension { .. })));
 }
 
 /// One random construction step; the numbers pick darts among the live ones.
@@ -340,6 +353,48 @@ proptest! {
                 fill(&mut g, &mut next);
                 let ch = g.characteristics();
                 for i in 0..=3 {
+                    prop_assert_eq!(count(&g, i), ch.cells[i]);
+                }
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Random chamfers and triangulations of the cube's surface (a 2-map with an attribute
+    /// on every cell and a point on every vertex): valid, χ = 2 throughout, one attribute
+    /// per cell and one point per vertex.
+    #[test]
+    fn random_chamfers_keep_the_sphere_and_its_attributes(
+        steps in proptest::collection::vec((0usize..3, any::<usize>(), 1u8..9), 1..8)
+    ) {
+        let mut g = Full::with_attributes(2);
+        g.make_hexahedron(UNIT);
+        let mut next = 0;
+        fill(&mut g, &mut next);
+        for (op, k, t) in steps {
+            let darts: Vec<DartId> = g.darts().collect();
+            let d = darts[k % darts.len()];
+            let done = match op {
+                0 => {
+                    let t = f64::from(t) / 10.0;
+                    let ok = c::can_chamfer_vertex(&g, d, t);
+                    let r = c::try_chamfer_vertex(&mut g, d, t);
+                    prop_assert_eq!(ok, r.is_ok(), "{:?}", r);
+                    ok
+                }
+                1 => c::try_triangulate_face_fan(&mut g, d).is_ok(),
+                _ => c::try_triangulate_face_barycentric(&mut g, d).is_ok(),
+            };
+            if done {
+                prop_assert!(g.check().is_ok(), "{:?}", g.check());
+                prop_assert_eq!(chi(&g), 2);
+                prop_assert!(g.darts().all(|x| g.point(x).is_some()));
+                fill(&mut g, &mut next);
+                let ch = g.characteristics();
+                for i in 0..=2 {
                     prop_assert_eq!(count(&g, i), ch.cells[i]);
                 }
             }

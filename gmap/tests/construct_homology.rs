@@ -36,16 +36,8 @@ fn the_revolved_square_face_is_the_solid_torus() {
     assert_eq!(homology(&g), "(Z, Z, 0, 0)");
 }
 
-const UNIT: [Point; 8] = [
-    [0., 0., 0.],
-    [1., 0., 0.],
-    [1., 1., 0.],
-    [0., 1., 0.],
-    [0., 1., 1.],
-    [0., 0., 1.],
-    [1., 0., 1.],
-    [1., 1., 1.],
-];
+const UNIT: [Point; 8] =
+    [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.], [0., 1., 1.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.]];
 
 #[test]
 fn a_hexahedron_extruded_along_a_path_is_still_a_ball() {

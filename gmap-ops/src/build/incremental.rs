@@ -330,7 +330,10 @@ pub fn sew3_same_facets<A: Attributes>(map: &mut GMap<A>) -> Result<usize, MeshE
     let mut sewn = 0;
     let mut vertex_id = |map: &GMap<A>, d: DartId| -> Result<u32, MeshError> {
         let p = map.point(d).ok_or_else(|| {
-            MeshError::Map(format!("the vertex of dart {} has no point: sew3_same_facets compares points", map.dart_index(d)))
+            MeshError::Map(format!(
+                "the vertex of dart {} has no point: sew3_same_facets compares points",
+                map.dart_index(d)
+            ))
         })?;
         let n = ids.len() as u32;
         Ok(*ids.entry(p.map(f64::to_bits)).or_insert(n))

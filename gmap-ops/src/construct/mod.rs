@@ -7,6 +7,7 @@
 //! | [`revolve`] | a profile about an axis in k steps, closing the loop ([`try_revolve`]) | `-χ(profile)` |
 //! | [`triangulate`] | a face by a fan or around its barycentre, a convex volume into tetrahedra | 0 |
 //! | [`volumes`] | two volumes merged across a face, a volume split by a loop of edges | 0 |
+//! | [`chamfer`] | a vertex of a surface cut off and replaced by a face | 0 |
 //!
 //! Each operation comes as a predicate (`can_…`), a `try_…` form returning a typed
 //! [`ConstructError`] (nothing changed on error) and a plain form that panics. Like the
@@ -22,6 +23,7 @@
 //! The extrusions and the revolution share one building block, the product of a profile
 //! with an edge made inside the map (`product`, [`crate::build::extrude`]'s layout).
 
+pub mod chamfer;
 mod error;
 pub mod extrude;
 mod product;
@@ -29,6 +31,7 @@ pub mod revolve;
 pub mod triangulate;
 pub mod volumes;
 
+pub use chamfer::{can_chamfer_vertex, chamfer_vertex, try_chamfer_vertex};
 pub use error::ConstructError;
 pub use extrude::{
     can_extrude_cell, can_extrude_cell_along_path, can_extrude_edge, can_extrude_face, can_extrude_vertex,
@@ -41,4 +44,6 @@ pub use triangulate::{
     triangulate_face_barycentric, triangulate_face_fan, try_tetrahedralize_volume, try_triangulate_face_barycentric,
     try_triangulate_face_fan,
 };
-pub use volumes::{can_merge_volumes, can_split_volume, merge_volumes, split_volume, try_merge_volumes, try_split_volume};
+pub use volumes::{
+    can_merge_volumes, can_split_volume, merge_volumes, split_volume, try_merge_volumes, try_split_volume,
+};

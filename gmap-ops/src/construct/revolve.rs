@@ -79,7 +79,13 @@ impl Axis {
 pub const MIN_STEPS: usize = 3;
 
 /// The checked profile of a revolution.
-fn check<A: Attributes>(g: &GMap<A>, d: DartId, p: usize, axis: &Axis, steps: usize) -> Result<Profile, ConstructError> {
+fn check<A: Attributes>(
+    g: &GMap<A>,
+    d: DartId,
+    p: usize,
+    axis: &Axis,
+    steps: usize,
+) -> Result<Profile, ConstructError> {
     if !g.contains(d) {
         return Err(ConstructError::NoSuchDart(d));
     }
