@@ -25,7 +25,8 @@
 //! faces make one — corners in VTK's order, oriented as VTK expects when the volume is
 //! orientable — and as polyhedra otherwise (`VTK_POLYHEDRON` 42, each cell the face stream
 //! `nFaces, nPts, ids…, …`), so that readers without polyhedra (meshio's) read the usual
-//! meshes; a 2-map's faces as polygons (`VTK_POLYGON` 7), a 1-map's edges as lines (`VTK_LINE` 3), a
+//! meshes; a 2-map's faces as triangles (`VTK_TRIANGLE` 5), quadrangles (`VTK_QUAD` 9) or
+//! polygons (`VTK_POLYGON` 7) by their number of corners, a 1-map's edges as lines (`VTK_LINE` 3), a
 //! 0-map's vertices as `VTK_VERTEX` 1. The corners of a polygon follow `alpha_1 alpha_0`
 //! from a dart; the faces of a polyhedron are all walked from darts of one orientation class
 //! of the volume and reversed together when the volume's signed volume is negative, so an
@@ -54,7 +55,9 @@ use super::{write_atomic, ExportError};
 
 const VTK_VERTEX: u8 = 1;
 const VTK_LINE: u8 = 3;
+const VTK_TRIANGLE: u8 = 5;
 const VTK_POLYGON: u8 = 7;
+const VTK_QUAD: u8 = 9;
 const VTK_POLYHEDRON: u8 = 42;
 
 /// The corners (0-cell numbers) of the polygon walked by `alpha_1 alpha_0` from `d`.
@@ -226,7 +229,15 @@ fn low_cells(map: &DenseMap, vert: &[u32], k: usize, keep: impl Fn(usize) -> boo
                 let d = reps[c];
                 Written { kind: VTK_LINE, conn: vec![vert[d.index()], vert[map.alpha(d, 0).index()]], dim: 1, cell: c }
             }
-            _ => Written { kind: VTK_POLYGON, conn: polygon(map, vert, reps[c]), dim: 2, cell: c },
+            _ => {
+                let conn = polygon(map, vert, reps[c]);
+                let kind = match conn.len() {
+                    3 => VTK_TRIANGLE,
+                    4 => VTK_QUAD,
+                    _ => VTK_POLYGON,
+                };
+                Written { kind, conn, dim: 2, cell: c }
+            }
         })
         .collect()
 }
@@ -548,7 +559,7 @@ mod tests {
         let text = vtk_string(&sq).unwrap();
         assert!(text.contains("POINTS 4 double\n"));
         assert!(text.contains("CELLS 1 5\n4 0 1 2 3\n") || text.contains("CELLS 1 5\n4 0 3 2 1\n"), "{text}");
-        assert!(text.contains("CELL_TYPES 1\n7\n"));
+        assert!(text.contains("CELL_TYPES 1\n9\n"));
         assert!(text.ends_with("SCALARS dim int 1\nLOOKUP_TABLE default\n2\n"));
         let e = vtk_string(&build::cube(3).unwrap()).unwrap_err();
         assert_eq!(e.to_string(), "the map has no points: .vtk needs coordinates for every vertex");
@@ -590,7 +601,7 @@ mod tests {
         let vert = sq.cells(0).of;
         let e = sq.cells(1).reps[2];
         let (a, b) = (vert[e.index()], vert[sq.alpha(e, 0).index()]);
-        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n7\n3\n1\n")), "{text}");
+        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n9\n3\n1\n")), "{text}");
         let data = text.split("CELL_DATA 3\n").nth(1).unwrap();
         assert_eq!(
             data,
