@@ -162,9 +162,21 @@ std::size_t vertex_attributes(const LccLabel& m) {
   return m.number_of_attributes<0>();
 }
 
+// The smallest times seen over the runs, wall clock and CPU.
+struct Best {
+  double build = 1e9, sew = 1e9, total = 1e9, cpu_build = 1e9, cpu_sew = 1e9;
+  void keep(double t0, double t1, double t2, double c0, double c1, double c2) {
+    build = std::min(build, t1 - t0);
+    sew = std::min(sew, t2 - t1);
+    total = std::min(total, t2 - t0);
+    cpu_build = std::min(cpu_build, c1 - c0);
+    cpu_sew = std::min(cpu_sew, c2 - c1);
+  }
+};
+
 template <class M>
 void run(const char* name, int k, int reps, const SewPaths& s) {
-  double best_build = 1e9, best_sew = 1e9, best_total = 1e9, cpu_build = 1e9, cpu_sew = 1e9;
+  Best b;
   std::vector<unsigned> cells;
   std::size_t darts = 0, vattrs = 0;
   bool valid = false;
@@ -190,11 +202,7 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
                                 follow(m, hex[i + step[axis]], s.lower[axis]));
         }
     double t2 = now(), c2 = cpu_now();
-    best_build = std::min(best_build, t1 - t0);
-    best_sew = std::min(best_sew, t2 - t1);
-    best_total = std::min(best_total, t2 - t0);
-    cpu_build = std::min(cpu_build, c1 - c0);
-    cpu_sew = std::min(cpu_sew, c2 - c1);
+    b.keep(t0, t1, t2, c0, c1, c2);
     if (r == 0) {
       cells = m.count_all_cells();
       darts = m.number_of_darts();
@@ -207,7 +215,7 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
               "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
               "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
               name, k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
-              valid ? "true" : "false", best_build, best_sew, best_total, cpu_build, cpu_sew);
+              valid ? "true" : "false", b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
   std::fflush(stdout);
 }
 
@@ -215,7 +223,7 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
 // `sew3_same_facets`, which finds the faces to sew by their points: "build" is making the
 // hexahedra, "sew" the call.
 void run_same_facets(int k, int reps) {
-  double best_build = 1e9, best_sew = 1e9, best_total = 1e9, cpu_build = 1e9, cpu_sew = 1e9;
+  Best b;
   std::vector<unsigned> cells;
   std::size_t darts = 0, vattrs = 0;
   unsigned sewn = 0;
@@ -229,11 +237,7 @@ void run_same_facets(int k, int reps) {
     double t1 = now(), c1 = cpu_now();
     unsigned n = m.sew3_same_facets();
     double t2 = now(), c2 = cpu_now();
-    best_build = std::min(best_build, t1 - t0);
-    best_sew = std::min(best_sew, t2 - t1);
-    best_total = std::min(best_total, t2 - t0);
-    cpu_build = std::min(cpu_build, c1 - c0);
-    cpu_sew = std::min(cpu_sew, c2 - c1);
+    b.keep(t0, t1, t2, c0, c1, c2);
     if (r == 0) {
       cells = m.count_all_cells();
       darts = m.number_of_darts();
@@ -248,7 +252,7 @@ void run_same_facets(int k, int reps) {
               "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
               "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
               k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
-              valid ? "true" : "false", sewn, best_build, best_sew, best_total, cpu_build, cpu_sew);
+              valid ? "true" : "false", sewn, b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
   std::fflush(stdout);
 }
 
