@@ -1,13 +1,17 @@
 //! The 40³ hexahedral grid built the way a modelling kernel builds it, to compare side by
 //! side with CGAL's `Linear_cell_complex_for_generalized_map<3>`
 //! (`benches/anchors/cgal_lcc_grid.cpp`, the same steps): each of the 64,000 hexahedra made
-//! on its own (a unit cube with its corner points, copied into the map at its place with
-//! [`GMap::append`]), then every pair of neighbours 3-sewn (187,200 sews). Three variants:
+//! on its own from its eight corners ([`GMap::make_hexahedron`], CGAL's `make_hexahedron`),
+//! then every pair of neighbours 3-sewn (187,200 sews). Three variants:
 //!
-//! * `no_attributes`: combinatorial hexahedra in a `GMap`;
+//! * `no_attributes`: combinatorial hexahedra in a `GMap`
+//!   ([`GMap::make_combinatorial_hexahedron`]);
 //! * `points`: hexahedra with their eight corner points (the sews merge the points that
 //!   meet: 512,000 points made, 68,921 left);
-//! * `points_and_labels`: the same with an integer label on every volume.
+//! * `points_and_labels`: the same with an integer label on every volume;
+//! * `sew3_same_facets`: the hexahedra with points left unsewn, then
+//!   [`build::sew3_same_facets`] finds the faces to sew by their points (CGAL's
+//!   `sew3_same_facets`).
 //!
 //! Before the Criterion groups, each variant is timed (best of 5 interleaved rounds, building
 //! and sewing apart) and, when CGAL's headers and g++ are installed, CGAL's harness is run in
@@ -21,7 +25,7 @@ use std::process::Command;
 use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gmap_core::{Attributes, Cells, DartId, DenseMap, GMap};
+use gmap_core::{Attributes, Cells, DartId, GMap};
 use gmap_ops::build;
 
 mod common;
@@ -36,28 +40,17 @@ type Labelled = GMap<((), (), (), Cells<u32>)>;
 /// prototype (from its geometry) names the same dart in every hexahedron.
 type Path = Vec<usize>;
 
-/// The unit cube `[0,1]³` with a point on every corner: the builders' square (a 4-gon with
-/// its corners on the unit circle) turned by 45° and scaled onto `[0,1]²`, extruded along z.
-fn unit_cube() -> DenseMap {
-    let mut square = build::polygon(4).expect("a square");
-    for d in square.darts() {
-        if let Some([x, y, _]) = square.point(d) {
-            let p = [((x - y + 1.) / 2.).round(), ((x + y + 1.) / 2.).round(), 0.];
-            square.set_point(d, Some(p));
-        }
-    }
-    build::extrude(&square).expect("a cube")
-}
+/// CGAL's `make_hexahedron` order of the unit cube's corners (bits x, y, z): the bottom
+/// face counterclockwise, then the top corners above p3, p0, p1, p2.
+const CORNER_OF_ARG: [usize; 8] = [0b000, 0b001, 0b011, 0b010, 0b110, 0b100, 0b101, 0b111];
 
-/// Copies the unit cube moved to `at` into `g`, the way a modelling kernel makes a
-/// hexahedron from its eight corners: 48 new darts, 8 new vertex points. Returns the copy
-/// of the cube's first dart. `cube` is the unit cube, `moved` a scratch copy of it.
-fn hexahedron_at<A: Attributes>(g: &mut GMap<A>, cube: &DenseMap, moved: &mut DenseMap, at: [f64; 3]) -> DartId {
-    for d in cube.darts() {
-        let p = cube.point(d).map(|p| [p[0] + at[0], p[1] + at[1], p[2] + at[2]]);
-        moved.set_point(d, p);
-    }
-    g.append(moved)[0]
+/// Makes the hexahedron `[x, x+1] × [y, y+1] × [z, z+1]` with its eight corner points, as
+/// CGAL's harness does: 48 new darts, 8 new vertex points. Returns the dart
+/// [`GMap::make_hexahedron`] returns.
+fn hexahedron_at<A: Attributes>(g: &mut GMap<A>, at: [f64; 3]) -> DartId {
+    let p =
+        CORNER_OF_ARG.map(|c| [at[0] + (c & 1) as f64, at[1] + ((c >> 1) & 1) as f64, at[2] + ((c >> 2) & 1) as f64]);
+    g.make_hexahedron(p)
 }
 
 /// For each axis, the paths to the darts of a hexahedron's upper face (coordinate 1 on the
@@ -68,9 +61,9 @@ struct SewPaths {
     lower: [Path; 3],
 }
 
-fn sew_paths(cube: &DenseMap) -> SewPaths {
+fn sew_paths() -> SewPaths {
     let mut proto = GMap::new(3);
-    let d0 = proto.append(cube)[0];
+    let d0 = hexahedron_at(&mut proto, [0.; 3]);
     // shortest alpha path from d0 to every dart of the hexahedron, breadth first
     let mut paths: Vec<(DartId, Path)> = vec![(d0, Vec::new())];
     let mut todo = VecDeque::from([0usize]);
@@ -165,29 +158,50 @@ fn grid<A: Attributes>(
     (g, Times { wall: (built, sewn), cpu })
 }
 
-/// The unit cube with and without points, and the sew paths.
+/// The sew paths, the same for every hexahedron.
 struct Setup {
-    cube: DenseMap,
-    bare: DenseMap,
     paths: SewPaths,
 }
 
 fn plain(s: &Setup) -> (GMap, Times) {
-    grid(&s.paths, |g, _, _| g.append(&s.bare)[0])
+    grid(&s.paths, |g, _, _| g.make_combinatorial_hexahedron())
 }
 
 fn with_points(s: &Setup) -> (GMap, Times) {
-    let mut moved = s.cube.clone();
-    grid(&s.paths, |g, [x, y, z], _| hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]))
+    grid(&s.paths, |g, [x, y, z], _| hexahedron_at(g, [x as f64, y as f64, z as f64]))
 }
 
 fn with_labels(s: &Setup) -> (Labelled, Times) {
-    let mut moved = s.cube.clone();
     grid(&s.paths, |g, [x, y, z], label| {
-        let d = hexahedron_at(g, &s.cube, &mut moved, [x as f64, y as f64, z as f64]);
+        let d = hexahedron_at(g, [x as f64, y as f64, z as f64]);
         g.set_attribute::<3>(d, label);
         d
     })
+}
+
+/// The `K³` hexahedra with their points left unsewn, then [`build::sew3_same_facets`]
+/// (faces found by their points, as CGAL's `sew3_same_facets`): "build" is making the
+/// hexahedra, "sew" the call.
+fn same_facets() -> (GMap, Times) {
+    let mut g = GMap::new(3);
+    let c0 = thread_cpu();
+    let t0 = Instant::now();
+    for z in 0..K {
+        for y in 0..K {
+            for x in 0..K {
+                hexahedron_at(&mut g, [x as f64, y as f64, z as f64]);
+            }
+        }
+    }
+    let built = t0.elapsed().as_secs_f64();
+    let c1 = thread_cpu();
+    let t1 = Instant::now();
+    let sewn = build::sew3_same_facets(&mut g).expect("the grid's faces pair up");
+    let sewn_s = t1.elapsed().as_secs_f64();
+    let c2 = thread_cpu();
+    assert_eq!(sewn, 3 * K * K * (K - 1));
+    let cpu = c0.zip(c1).zip(c2).map(|((c0, c1), c2)| (c1 - c0, c2 - c1));
+    (g, Times { wall: (built, sewn_s), cpu })
 }
 
 /// Runs of each variant, ours and CGAL's: the machine is shared, so the best of several
@@ -252,15 +266,10 @@ fn cgal_anchor() -> Option<Vec<Best>> {
 }
 
 fn bench(c: &mut Criterion) {
-    let cube = unit_cube();
-    let mut bare = cube.clone();
-    for d in cube.darts() {
-        bare.set_point(d, None);
-    }
-    let s = Setup { paths: sew_paths(&cube), cube, bare };
+    let s = Setup { paths: sew_paths() };
     // REPS rounds of the three variants, interleaved so that a change in the machine's
     // load weighs on all three alike; the first round's grids are checked
-    let mut best = [Best::new(); 3];
+    let mut best = [Best::new(); 4];
     for round in 0..REPS {
         let (g0, t) = plain(&s);
         best[0].keep(t);
@@ -268,12 +277,15 @@ fn bench(c: &mut Criterion) {
         best[1].keep(t);
         let (g2, t) = with_labels(&s);
         best[2].keep(t);
+        let (g3, t) = same_facets();
+        best[3].keep(t);
         if round == 0 {
             check_grids(&g0, &g1, &g2);
+            check_grids(&g0, &g3, &g2);
         }
     }
     let anchor = cgal_anchor();
-    let names = ["no attributes", "points", "points and labels"];
+    let names = ["no attributes", "points", "points and labels", "points, sew3_same_facets"];
     for (k, (name, ours)) in names.iter().zip(best).enumerate() {
         let (b, s) = ours.wall;
         match anchor.as_ref().and_then(|a| a.get(k)) {
@@ -306,6 +318,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("no_attributes", |b| b.iter(|| plain(&s).0.dart_count()));
     group.bench_function("points", |b| b.iter(|| with_points(&s).0.dart_count()));
     group.bench_function("points_and_labels", |b| b.iter(|| with_labels(&s).0.dart_count()));
+    group.bench_function("sew3_same_facets", |b| b.iter(|| same_facets().0.dart_count()));
     group.finish();
 }
 

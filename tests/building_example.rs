@@ -118,11 +118,11 @@ fn the_files_keep_the_names() {
     }
     assert_eq!(dot.matches("\"kind\"=\"door\", \"material\"=\"oak\"").count(), 6);
 
-    // .vtk: 8 polyhedra and the 36 labelled faces, with their labels as cell data
+    // .vtk: 8 hexahedra and the 36 labelled faces (quadrangles), with their labels as cell data
     let vtk = std::fs::read_to_string(file("vtk")).unwrap();
-    assert!(vtk.contains("\nCELLS 44 436\n"), "{vtk}");
+    assert!(vtk.contains("\nCELLS 44 252\n"), "{vtk}");
     let types: Vec<&str> = vtk.split("CELL_TYPES 44\n").nth(1).unwrap().lines().take(44).collect();
-    assert_eq!(types, [["42"; 8].as_slice(), ["7"; 36].as_slice()].concat());
+    assert_eq!(types, [["12"; 8].as_slice(), ["9"; 36].as_slice()].concat());
     assert!(vtk.contains("\nCELL_DATA 44\nSCALARS dim int 1\n"));
     assert!(vtk.contains("\nFIELD labels 10\n"));
     let array = |name: &str| -> Vec<&str> {

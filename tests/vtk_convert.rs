@@ -1,7 +1,6 @@
 //! `gmap convert X.gmap OUT.vtk` end to end: legacy VTK unstructured grids of maps with
-//! points (polyhedra for 3-maps, polygons for 2-maps), refusals of maps without points, and
-//! a read-back of the polygons by meshio when python3 has it (its legacy reader has no
-//! polyhedra).
+//! points (VTK's volume types or polyhedra for 3-maps, quadrangles and polygons for 2-maps),
+//! refusals of maps without points, and a read-back by meshio when python3 has it.
 
 mod common;
 use common::{gmap, p, stderr};
@@ -15,7 +14,7 @@ fn header(text: &str, key: &str) -> Vec<String> {
 }
 
 #[test]
-fn a_cube_is_one_polyhedron() {
+fn a_cube_is_one_hexahedron() {
     let dir = tempfile::tempdir().unwrap();
     let cube = gmap_ops::build::extrude(&gmap_ops::build::polygon(4).unwrap()).unwrap();
     let g = dir.path().join("cube.moka");
@@ -28,28 +27,25 @@ fn a_cube_is_one_polyhedron() {
     assert_eq!(lines[0], "# vtk DataFile Version 3.0");
     assert_eq!(lines[2..4], ["ASCII", "DATASET UNSTRUCTURED_GRID"]);
     assert_eq!(header(&text, "POINTS "), ["8", "double"]);
-    // one polyhedron: 6 faces of 4 points, its face stream 1 + 6 * 5 = 31 integers
-    assert_eq!(header(&text, "CELLS "), ["1", "32"]);
+    // one hexahedron: its 8 corners
+    assert_eq!(header(&text, "CELLS "), ["1", "9"]);
     assert_eq!(header(&text, "CELL_TYPES "), ["1"]);
     assert_eq!(header(&text, "CELL_DATA "), ["1"]);
-    assert!(text.contains("\nCELL_TYPES 1\n42\n"), "{text}");
+    assert!(text.contains("\nCELL_TYPES 1\n12\n"), "{text}");
     assert!(text.ends_with("SCALARS dim int 1\nLOOKUP_TABLE default\n3\n"), "{text}");
-    // the face stream: 6 faces of 4 distinct points among the 8, each point in 3 faces
-    let stream: Vec<usize> = lines[lines.iter().position(|l| l.starts_with("CELLS ")).unwrap() + 1]
+    let corners: Vec<usize> = lines[lines.iter().position(|l| l.starts_with("CELLS ")).unwrap() + 1]
         .split(' ')
         .map(|x| x.parse().unwrap())
         .collect();
-    assert_eq!(stream[..2], [31, 6]);
-    let faces: Vec<&[usize]> = stream[2..].chunks(5).map(|f| &f[1..]).collect();
-    assert!(stream[2..].chunks(5).all(|f| f[0] == 4));
-    for v in 0..8 {
-        assert_eq!(faces.iter().filter(|f| f.contains(&v)).count(), 3);
-    }
-    // (meshio's legacy reader has no polyhedra: no read-back here)
+    assert_eq!(corners[0], 8);
+    let mut sorted = corners[1..].to_vec();
+    sorted.sort_unstable();
+    assert_eq!(sorted, (0..8).collect::<Vec<_>>());
+    meshio_reads(&out, 8, &[("hexahedron", 1)]);
 }
 
 #[test]
-fn a_prism_surface_is_polygons() {
+fn a_cube_surface_is_quadrangles() {
     let dir = tempfile::tempdir().unwrap();
     // the surface of a cube, from an .off
     let off = dir.path().join("box.off");
@@ -66,9 +62,9 @@ fn a_prism_surface_is_polygons() {
     assert_eq!(header(&text, "POINTS "), ["8", "double"]);
     assert_eq!(header(&text, "CELLS "), ["6", "30"]);
     let types: Vec<&str> = text.split("CELL_TYPES 6\n").nth(1).unwrap().lines().take(6).collect();
-    assert_eq!(types, ["7"; 6]);
+    assert_eq!(types, ["9"; 6]);
     assert!(text.ends_with("LOOKUP_TABLE default\n2\n2\n2\n2\n2\n2\n"), "{text}");
-    meshio_reads(&out, 8, &[("polygon", 6)]);
+    meshio_reads(&out, 8, &[("quad", 6)]);
 }
 
 #[test]
@@ -85,7 +81,7 @@ fn maps_without_points_are_refused() {
 }
 
 /// Reads the file with meshio when python3 has it (nothing otherwise): the point count and
-/// the cell blocks (meshio names VTK type 7 `polygon`).
+/// the cell blocks (meshio names VTK type 9 `quad`, 12 `hexahedron`).
 fn meshio_reads(path: &Path, points: usize, blocks: &[(&str, usize)]) {
     let has = Command::new("python3").args(["-c", "import meshio"]).output().is_ok_and(|o| o.status.success());
     if !has {

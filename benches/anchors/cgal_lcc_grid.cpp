@@ -4,6 +4,8 @@
 //   gmap        Generalized_map<3>: make_combinatorial_hexahedron + sew<3>   (no attributes)
 //   lcc         Linear_cell_complex_for_generalized_map<3>: make_hexahedron(points) + sew<3>
 //   lcc_label   the same with an int 3-attribute (a label) created on every volume
+//   same_facets the hexahedra with points left unsewn, then sew3_same_facets (faces found by
+//               their points)
 // Prints one JSON line per variant: the best of `reps` runs for building the hexahedra, for
 // sewing them, and for both, in wall-clock time and in the thread's CPU time (cpu_*); plus the cell counts and the number of vertex attributes left
 // (one per grid vertex when the sew merged the points correctly), checked once, untimed.
@@ -160,9 +162,21 @@ std::size_t vertex_attributes(const LccLabel& m) {
   return m.number_of_attributes<0>();
 }
 
+// The smallest times seen over the runs, wall clock and CPU.
+struct Best {
+  double build = 1e9, sew = 1e9, total = 1e9, cpu_build = 1e9, cpu_sew = 1e9;
+  void keep(double t0, double t1, double t2, double c0, double c1, double c2) {
+    build = std::min(build, t1 - t0);
+    sew = std::min(sew, t2 - t1);
+    total = std::min(total, t2 - t0);
+    cpu_build = std::min(cpu_build, c1 - c0);
+    cpu_sew = std::min(cpu_sew, c2 - c1);
+  }
+};
+
 template <class M>
 void run(const char* name, int k, int reps, const SewPaths& s) {
-  double best_build = 1e9, best_sew = 1e9, best_total = 1e9, cpu_build = 1e9, cpu_sew = 1e9;
+  Best b;
   std::vector<unsigned> cells;
   std::size_t darts = 0, vattrs = 0;
   bool valid = false;
@@ -188,11 +202,7 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
                                 follow(m, hex[i + step[axis]], s.lower[axis]));
         }
     double t2 = now(), c2 = cpu_now();
-    best_build = std::min(best_build, t1 - t0);
-    best_sew = std::min(best_sew, t2 - t1);
-    best_total = std::min(best_total, t2 - t0);
-    cpu_build = std::min(cpu_build, c1 - c0);
-    cpu_sew = std::min(cpu_sew, c2 - c1);
+    b.keep(t0, t1, t2, c0, c1, c2);
     if (r == 0) {
       cells = m.count_all_cells();
       darts = m.number_of_darts();
@@ -205,7 +215,44 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
               "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
               "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
               name, k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
-              valid ? "true" : "false", best_build, best_sew, best_total, cpu_build, cpu_sew);
+              valid ? "true" : "false", b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
+  std::fflush(stdout);
+}
+
+// The unsewn grid (every hexahedron with its points, as in `run<Lcc>`), then
+// `sew3_same_facets`, which finds the faces to sew by their points: "build" is making the
+// hexahedra, "sew" the call.
+void run_same_facets(int k, int reps) {
+  Best b;
+  std::vector<unsigned> cells;
+  std::size_t darts = 0, vattrs = 0;
+  unsigned sewn = 0;
+  bool valid = false;
+  for (int r = 0; r < reps; ++r) {
+    Lcc m;
+    double c0 = cpu_now(), t0 = now();
+    for (int z = 0; z < k; ++z)
+      for (int y = 0; y < k; ++y)
+        for (int x = 0; x < k; ++x) make_hex(m, x, y, z);
+    double t1 = now(), c1 = cpu_now();
+    unsigned n = m.sew3_same_facets();
+    double t2 = now(), c2 = cpu_now();
+    b.keep(t0, t1, t2, c0, c1, c2);
+    if (r == 0) {
+      cells = m.count_all_cells();
+      darts = m.number_of_darts();
+      vattrs = m.number_of_attributes<0>();
+      valid = m.is_valid();
+      sewn = n;
+    }
+  }
+  std::printf("{\"engine\":\"CGAL Linear_cell_complex_for_generalized_map<3> (points, sew3_same_facets)\","
+              "\"k\":%d,\"darts\":%zu,\"cells\":[%u,%u,%u,%u],\"components\":%u,"
+              "\"vertex_attributes\":%zu,\"valid\":%s,\"faces_sewn\":%u,"
+              "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
+              "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
+              k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
+              valid ? "true" : "false", sewn, b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
   std::fflush(stdout);
 }
 
@@ -221,5 +268,6 @@ int main(int argc, char** argv) {
   run<Lcc>("Linear_cell_complex_for_generalized_map<3> (points)", k, reps, s);
   run<LccLabel>("Linear_cell_complex_for_generalized_map<3> (points, int label per volume)", k, reps,
                 s);
+  run_same_facets(k, reps);
   return 0;
 }

@@ -13,7 +13,7 @@ new_key_type! {
 /// Per-dart storage: the involution images.
 #[derive(Clone, Debug)]
 pub(crate) struct DartData {
-    pub(crate) alpha: SmallVec<[DartId; 5]>,
+    pub(crate) alpha: SmallVec<[DartId; 4]>,
 }
 
 /// The dense index of a dart handle: its slot number (see [`GMap::dart_index`](crate::GMap::dart_index)).

@@ -3,7 +3,9 @@
 //! Darts live in a [`slotmap::SlotMap`]: a [`DartId`] stays valid while other darts are
 //! created and removed, and a removed dart's handle is detected as stale rather than
 //! silently reused. Each dart stores its `n + 1` involution images inline (a `SmallVec`,
-//! no heap allocation up to dimension 4). Editing goes through `link`/`unlink` (low
+//! no heap allocation up to dimension 3: a slot of 48 bytes, which the orbit walks of
+//! sews and attribute repairs touch one dart at a time; maps of dimension 4 and more keep
+//! their images on the heap). Editing goes through `link`/`unlink` (low
 //! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
 //! [`GMap::to_dense_map`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.

@@ -39,7 +39,10 @@
 //! assert_eq!(g.bounding_box(), Some([[1.0, 2.0, 3.0], [2.0, 3.0, 4.0]]));
 //! ```
 
+use std::sync::OnceLock;
+
 use rustc_hash::{FxHashMap, FxHashSet};
+use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::AlphaSet;
@@ -170,6 +173,58 @@ fn prism_faces(k: usize) -> Vec<Vec<usize>> {
     faces
 }
 
+/// A closed surface of polygons laid out once by [`GMap::add_faces`]'s rule and copied
+/// into maps as a block: the constructors of fixed shape (the hexahedron) make their darts
+/// from it without hashing edges, and give each corner its point without walking it.
+struct Template {
+    /// `alpha_0, alpha_1, alpha_2` of each dart, by dart number (creation order)
+    rows: Vec<[u32; 3]>,
+    /// the darts of each corner: the whole vertex while the copy is 3-free
+    corners: Vec<Vec<u32>>,
+}
+
+impl Template {
+    /// The template of [`GMap::add_faces`] on `faces` (same dart numbers, same links).
+    /// Precondition: as `add_faces`, and every edge used by exactly two faces.
+    fn from_faces(corners: usize, faces: &[Vec<usize>]) -> Template {
+        let mut rows: Vec<[u32; 3]> = Vec::new();
+        let mut at: Vec<Vec<u32>> = vec![Vec::new(); corners];
+        let mut open: FxHashMap<(usize, usize), u32> = FxHashMap::default();
+        for face in faces {
+            let (k, base) = (face.len(), rows.len() as u32);
+            rows.extend((0..2 * k as u32).map(|j| [base + j; 3]));
+            for j in 0..k {
+                let (u, v) = (face[j], face[(j + 1) % k]);
+                let (a, b) = (base + 2 * j as u32, base + 2 * j as u32 + 1);
+                let c = base + ((2 * j + 2) % (2 * k)) as u32;
+                rows[a as usize][0] = b;
+                rows[b as usize][0] = a;
+                rows[b as usize][1] = c;
+                rows[c as usize][1] = b;
+                for (x, key) in [(a, (u, v)), (b, (v, u))] {
+                    at[key.0].push(x);
+                    match open.remove(&key) {
+                        Some(y) => {
+                            rows[x as usize][2] = y;
+                            rows[y as usize][2] = x;
+                        }
+                        None => {
+                            open.insert(key, x);
+                        }
+                    }
+                }
+            }
+        }
+        Template { rows, corners: at }
+    }
+
+    /// The hexahedron of [`GMap::make_hexahedron`]: the prism over a square.
+    fn hexahedron() -> &'static Template {
+        static HEX: OnceLock<Template> = OnceLock::new();
+        HEX.get_or_init(|| Template::from_faces(8, &prism_faces(4)))
+    }
+}
+
 /// The faces of a tetrahedron on corners `0..4`, the first one `(0, 1, 2)`.
 const TETRAHEDRON: [[usize; 3]; 4] = [[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]];
 
@@ -183,6 +238,30 @@ impl<A: Attributes> GMap<A> {
             return Err(MakeError::Dimension { what, needs, dim: self.dim() });
         }
         Ok(())
+    }
+
+    /// Copies `t` into the map as new darts, corner `c` at `points[c]` when points are
+    /// given; returns the copy of dart 0. Precondition: dimension `>= 2`. O(darts · n), no
+    /// hashing and no vertex walk.
+    fn instantiate(&mut self, t: &Template, points: Option<&[Point]>) -> DartId {
+        self.reserve_darts(t.rows.len());
+        let ids: SmallVec<[DartId; 64]> = t.rows.iter().map(|_| self.create_dart()).collect();
+        for (k, row) in t.rows.iter().enumerate() {
+            for (i, &e) in row.iter().enumerate() {
+                if e as usize > k {
+                    self.link_free(ids[k], ids[e as usize], i);
+                }
+            }
+        }
+        if let Some(points) = points {
+            let mut vertex: SmallVec<[DartId; 8]> = SmallVec::new();
+            for (darts, &p) in t.corners.iter().zip(points) {
+                vertex.clear();
+                vertex.extend(darts.iter().map(|&x| ids[x as usize]));
+                self.set_fresh_point(&vertex, p);
+            }
+        }
+        ids[0]
     }
 
     /// Adds a closed polygon for every face (a cycle of corner numbers), then `alpha_2`-links
@@ -408,7 +487,7 @@ impl<A: Attributes> GMap<A> {
     /// [`GMap::make_combinatorial_hexahedron`], or [`MakeError::Dimension`].
     pub fn try_make_combinatorial_hexahedron(&mut self) -> Result<DartId, MakeError> {
         self.needs("hexahedron", 2)?;
-        Ok(self.add_faces(8, &prism_faces(4)).0)
+        Ok(self.instantiate(Template::hexahedron(), None))
     }
 
     /// The hexahedron with corners `p[0..8]` in CGAL's order: `p0 p1 p2 p3` is one face, and
@@ -438,7 +517,10 @@ impl<A: Attributes> GMap<A> {
 
     /// [`GMap::make_hexahedron`], or [`MakeError::Dimension`].
     pub fn try_make_hexahedron<P: IntoPoint + Copy>(&mut self, p: [P; 8]) -> Result<DartId, MakeError> {
-        self.try_make_prism(&p[0..4], &[p[5], p[6], p[7], p[4]])
+        self.needs("hexahedron", 2)?;
+        // the prism's corners: the bottom p0..p3, then the top above them
+        let corners = [0, 1, 2, 3, 5, 6, 7, 4].map(|k| p[k].into_point());
+        Ok(self.instantiate(Template::hexahedron(), Some(&corners)))
     }
 
     /// The points of the distinct vertices met by the orbit `<set>(d)`, once per vertex;

@@ -35,10 +35,12 @@
 #![warn(missing_docs)]
 
 pub mod build;
+pub mod construct;
 pub mod euler;
 pub mod export;
 pub mod geometry;
 pub mod import;
 pub mod iso;
+pub mod mesh;
 mod perm;
 pub mod rng;

@@ -196,3 +196,25 @@ pub fn check_simplicial_routes(sc: &gmap_ops::import::SimplicialComplex) {
         assert_eq!(by_map, h, "the direct and the G-map routes differ");
     }
 }
+
+/// The checks of the mesh readers' targets: an accepted mesh makes a valid map (or is
+/// refused with an error) whose points and labels are consistent, and the map written back
+/// as legacy `.vtk` with its labels reads to a map with the same cells and labels.
+pub fn check_mesh(mesh: &gmap_ops::mesh::Mesh) {
+    let Ok(g) = mesh.to_gmap(1 << 14) else { return };
+    assert!(g.check().is_ok(), "the map and its labels are consistent");
+    let (dense, labels, _) = gmap_core::to_dense_labels(&g);
+    assert!(dense.validate().is_ok());
+    let Ok(text) = gmap_ops::export::vtk_string_with_labels(&dense, &labels) else { return };
+    let back = gmap_ops::import::parse_vtk(text.as_bytes()).expect("the writer's .vtk parses");
+    let back = back.to_gmap(1 << 16).expect("the writer's .vtk makes a map");
+    let (dense2, labels2, _) = gmap_core::to_dense_labels(&back);
+    assert_eq!(dense.cell_counts(), dense2.cell_counts(), "the .vtk round trip keeps the cells");
+    for i in 0..labels.of.len() {
+        let mut a: Vec<String> = labels.of[i].iter().map(|l| l.to_string()).collect();
+        let mut b: Vec<String> = labels2.of[i].iter().map(|l| l.to_string()).collect();
+        a.sort();
+        b.sort();
+        assert_eq!(a, b, "the .vtk round trip keeps the labels of dimension {i}");
+    }
+}

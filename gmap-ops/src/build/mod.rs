@@ -32,10 +32,12 @@ use crate::import::SimplicialComplex;
 use crate::perm::{factorial, PermTable};
 
 mod error;
+mod incremental;
 mod schema;
 
 use error::checked_darts;
 pub use error::BuildError;
+pub use incremental::{sew3_same_facets, IncrementalBuilder};
 
 pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
 

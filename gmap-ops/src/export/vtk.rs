@@ -1,17 +1,18 @@
-//! Legacy VTK unstructured grids (`.vtk`, write only; docs/FORMATS.md §2).
+//! Legacy VTK unstructured grids (`.vtk`; docs/FORMATS.md §2). The reader is
+//! [`crate::import::vtk`].
 //!
 //! ```text
 //! # vtk DataFile Version 3.0
-//! gmap: a 3-map, 8 vertices, 1 volume
+//! gmap: a 3-map, 8 vertices, 1 top cells
 //! ASCII
 //! DATASET UNSTRUCTURED_GRID
 //! POINTS 8 double
 //! 0 0 0
 //! …
-//! CELLS 1 31
-//! 30 6 4 0 1 3 2 …          a polyhedron: its face stream
+//! CELLS 1 9
+//! 8 0 2 3 1 4 6 7 5         a hexahedron (a polyhedron: 42 and its face stream)
 //! CELL_TYPES 1
-//! 42
+//! 12
 //! CELL_DATA 1
 //! SCALARS dim int 1
 //! LOOKUP_TABLE default
@@ -20,8 +21,12 @@
 //!
 //! One point per 0-cell (numbered by the 0-cells' smallest darts), the point of a dart of the
 //! vertex ([`DenseMap::vertex_point`]). The cells are the map's top cells: a 3-map's volumes
-//! as polyhedra (`VTK_POLYHEDRON` 42, each cell the face stream `nFaces, nPts, ids…, …`), a
-//! 2-map's faces as polygons (`VTK_POLYGON` 7), a 1-map's edges as lines (`VTK_LINE` 3), a
+//! as tetrahedra (`VTK_TETRA` 10), pyramids (14), wedges (13) or hexahedra (12) when their
+//! faces make one — corners in VTK's order, oriented as VTK expects when the volume is
+//! orientable — and as polyhedra otherwise (`VTK_POLYHEDRON` 42, each cell the face stream
+//! `nFaces, nPts, ids…, …`), so that readers without polyhedra (meshio's) read the usual
+//! meshes; a 2-map's faces as triangles (`VTK_TRIANGLE` 5), quadrangles (`VTK_QUAD` 9) or
+//! polygons (`VTK_POLYGON` 7) by their number of corners, a 1-map's edges as lines (`VTK_LINE` 3), a
 //! 0-map's vertices as `VTK_VERTEX` 1. The corners of a polygon follow `alpha_1 alpha_0`
 //! from a dart; the faces of a polyhedron are all walked from darts of one orientation class
 //! of the volume and reversed together when the volume's signed volume is negative, so an
@@ -50,7 +55,9 @@ use super::error::{write_atomic, ExportError};
 
 const VTK_VERTEX: u8 = 1;
 const VTK_LINE: u8 = 3;
+const VTK_TRIANGLE: u8 = 5;
 const VTK_POLYGON: u8 = 7;
+const VTK_QUAD: u8 = 9;
 const VTK_POLYHEDRON: u8 = 42;
 
 /// The corners (0-cell numbers) of the polygon walked by `alpha_1 alpha_0` from `d`.
@@ -89,9 +96,10 @@ struct Written {
     cell: usize,
 }
 
-/// The face stream of every volume of a 3-map (`nFaces, nPts, ids…, …`), in the order of
-/// `map.cells(3)`.
-fn polyhedra(map: &DenseMap, vert: &[u32], pts: &[Point]) -> Vec<Vec<u32>> {
+/// Every volume of a 3-map as a VTK cell, in the order of `map.cells(3)`: its type and its
+/// corners ([`standard_cell`]), or `VTK_POLYHEDRON` and its face stream
+/// (`nFaces, nPts, ids…, …`).
+fn polyhedra(map: &DenseMap, vert: &[u32], pts: &[Point]) -> Vec<(u8, Vec<u32>)> {
     // orientation classes: parity of the number of involutions from the volume's smallest
     // dart (BFS over alpha_0, alpha_1, alpha_2)
     let vols = map.cells(3);
@@ -123,14 +131,89 @@ fn polyhedra(map: &DenseMap, vert: &[u32], pts: &[Point]) -> Vec<Vec<u32>> {
                 p.reverse();
             }
         }
-        let mut stream = vec![polys.len() as u32];
-        for p in polys {
-            stream.push(p.len() as u32);
-            stream.extend(p);
-        }
-        out.push(stream);
+        out.push(match standard_cell(&polys) {
+            Some((kind, conn)) => (kind, conn),
+            None => {
+                let mut stream = vec![polys.len() as u32];
+                for p in polys {
+                    stream.push(p.len() as u32);
+                    stream.extend(p);
+                }
+                (VTK_POLYHEDRON, stream)
+            }
+        });
     }
     out
+}
+
+/// The VTK type and corners of a volume whose outward faces make a tetrahedron, a pyramid,
+/// a wedge or a hexahedron (checked on the vertex sets of all its faces), in VTK's corner
+/// order and orientation: the tetrahedron's `0 1 2` and the pyramid's and hexahedron's
+/// `0 1 2 3` turn counterclockwise seen from the other corners, the wedge's `0 1 2` faces
+/// out. `None` for any other volume. O(faces²).
+fn standard_cell(polys: &[Vec<u32>]) -> Option<(u8, Vec<u32>)> {
+    let tris: Vec<&Vec<u32>> = polys.iter().filter(|p| p.len() == 3).collect();
+    let quads: Vec<&Vec<u32>> = polys.iter().filter(|p| p.len() == 4).collect();
+    let mut verts: Vec<u32> = polys.iter().flatten().copied().collect();
+    verts.sort_unstable();
+    verts.dedup();
+    // the neighbour of x along an edge of some face that is not in `base`
+    let partner = |x: u32, base: &[u32]| -> Option<u32> {
+        let mut found: Vec<u32> = Vec::new();
+        for p in polys {
+            for (j, &v) in p.iter().enumerate() {
+                if v == x {
+                    for w in [p[(j + 1) % p.len()], p[(j + p.len() - 1) % p.len()]] {
+                        if !base.contains(&w) && !found.contains(&w) {
+                            found.push(w);
+                        }
+                    }
+                }
+            }
+        }
+        (found.len() == 1).then(|| found[0])
+    };
+    let set = |xs: &[u32]| -> Vec<u32> {
+        let mut v = xs.to_vec();
+        v.sort_unstable();
+        v
+    };
+    // every face of the volume is one of `want` (as vertex sets), and they are all there
+    let faces_are = |want: Vec<Vec<u32>>| -> bool {
+        let mut have: Vec<Vec<u32>> = polys.iter().map(|p| set(p)).collect();
+        let mut want: Vec<Vec<u32>> = want.iter().map(|w| set(w)).collect();
+        have.sort();
+        want.sort();
+        have == want
+    };
+    match (polys.len(), tris.len(), quads.len(), verts.len()) {
+        (4, 4, 0, 4) => {
+            let (a, b, c) = (tris[0][0], tris[0][1], tris[0][2]);
+            let d = *verts.iter().find(|v| !tris[0].contains(v))?;
+            faces_are(vec![vec![a, b, c], vec![a, b, d], vec![b, c, d], vec![c, a, d]]).then(|| (10, vec![a, c, b, d]))
+        }
+        (5, 4, 1, 5) => {
+            let q = quads[0];
+            let e = *verts.iter().find(|v| !q.contains(v))?;
+            let sides = (0..4).map(|j| vec![q[j], q[(j + 1) % 4], e]);
+            faces_are(sides.chain([q.clone()]).collect()).then(|| (14, vec![q[0], q[3], q[2], q[1], e]))
+        }
+        (5, 2, 3, 6) => {
+            let t = tris[0];
+            let p: Vec<u32> = t.iter().map(|&x| partner(x, t)).collect::<Option<_>>()?;
+            let sides = (0..3).map(|j| vec![t[j], t[(j + 1) % 3], p[(j + 1) % 3], p[j]]);
+            faces_are(sides.chain([t.clone(), p.clone()]).collect())
+                .then(|| (13, vec![t[0], t[1], t[2], p[0], p[1], p[2]]))
+        }
+        (6, 0, 6, 8) => {
+            let q = quads[0];
+            let p: Vec<u32> = q.iter().map(|&x| partner(x, q)).collect::<Option<_>>()?;
+            let sides = (0..4).map(|j| vec![q[j], q[(j + 1) % 4], p[(j + 1) % 4], p[j]]);
+            faces_are(sides.chain([q.clone(), p.clone()]).collect())
+                .then(|| (12, vec![q[0], q[3], q[2], q[1], p[0], p[3], p[2], p[1]]))
+        }
+        _ => None,
+    }
 }
 
 /// The `k`-cells whose number satisfies `keep`, as VTK cells (`k <= 2`; volumes go through
@@ -146,7 +229,15 @@ fn low_cells(map: &DenseMap, vert: &[u32], k: usize, keep: impl Fn(usize) -> boo
                 let d = reps[c];
                 Written { kind: VTK_LINE, conn: vec![vert[d.index()], vert[map.alpha(d, 0).index()]], dim: 1, cell: c }
             }
-            _ => Written { kind: VTK_POLYGON, conn: polygon(map, vert, reps[c]), dim: 2, cell: c },
+            _ => {
+                let conn = polygon(map, vert, reps[c]);
+                let kind = match conn.len() {
+                    3 => VTK_TRIANGLE,
+                    4 => VTK_QUAD,
+                    _ => VTK_POLYGON,
+                };
+                Written { kind, conn, dim: 2, cell: c }
+            }
         })
         .collect()
 }
@@ -300,7 +391,7 @@ pub fn vtk_string_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<St
         polyhedra(map, vert, &pts)
             .into_iter()
             .enumerate()
-            .map(|(c, conn)| Written { kind: VTK_POLYHEDRON, conn, dim: 3, cell: c })
+            .map(|(c, (kind, conn))| Written { kind, conn, dim: 3, cell: c })
             .collect()
     } else {
         low_cells(map, vert, n, |_| true)
@@ -365,47 +456,98 @@ mod tests {
         build::extrude(&build::polygon(k).unwrap()).unwrap()
     }
 
-    #[test]
-    fn a_cube_is_one_hexahedral_polyhedron_with_outward_faces() {
-        let m = prism(4);
-        assert_eq!(m.dim(), 3);
-        let text = vtk_string(&m).unwrap();
+    /// The corners of the one cell of `text` and the points.
+    fn one_cell(text: &str) -> (u8, Vec<u32>, Vec<Point>) {
         let lines: Vec<&str> = text.lines().collect();
-        assert_eq!(lines[0], "# vtk DataFile Version 3.0");
-        assert_eq!(lines[2], "ASCII");
-        assert_eq!(lines[3], "DATASET UNSTRUCTURED_GRID");
-        assert_eq!(lines[4], "POINTS 8 double");
-        assert_eq!(lines[13], "CELLS 1 32");
-        let cell: Vec<u32> = lines[14].split(' ').map(|x| x.parse().unwrap()).collect();
-        assert_eq!(cell[0], 31);
-        assert_eq!(cell[1], 6);
-        assert_eq!(&lines[15..17], &["CELL_TYPES 1", "42"]);
-        assert_eq!(&lines[17..], &["CELL_DATA 1", "SCALARS dim int 1", "LOOKUP_TABLE default", "3"]);
-        // six quadrilaterals, every point used by three of them, positive volume
-        let pts: Vec<Point> = lines[5..13]
+        let np: usize = lines[4].split(' ').nth(1).unwrap().parse().unwrap();
+        let pts: Vec<Point> = lines[5..5 + np]
             .iter()
             .map(|l| {
                 let v: Vec<f64> = l.split(' ').map(|x| x.parse().unwrap()).collect();
                 [v[0], v[1], v[2]]
             })
             .collect();
-        let mut faces = Vec::new();
-        let mut k = 2;
-        for _ in 0..6 {
-            assert_eq!(cell[k], 4);
-            faces.push(cell[k + 1..k + 5].to_vec());
-            k += 5;
+        assert!(lines[5 + np].starts_with("CELLS 1 "));
+        let cell: Vec<u32> = lines[6 + np].split(' ').map(|x| x.parse().unwrap()).collect();
+        assert_eq!(cell[0] as usize, cell.len() - 1);
+        assert_eq!(lines[7 + np], "CELL_TYPES 1");
+        (lines[8 + np].parse().unwrap(), cell[1..].to_vec(), pts)
+    }
+
+    fn det(a: Point, b: Point, c: Point, d: Point) -> f64 {
+        let (u, v, w) = (
+            [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+            [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+            [d[0] - a[0], d[1] - a[1], d[2] - a[2]],
+        );
+        u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])
+    }
+
+    #[test]
+    fn standard_volumes_get_their_vtk_types_and_orientation() {
+        // the cube: a hexahedron whose bottom turns counterclockwise seen from the top
+        let text = vtk_string(&prism(4)).unwrap();
+        assert!(text.ends_with("CELL_DATA 1\nSCALARS dim int 1\nLOOKUP_TABLE default\n3\n"));
+        let (kind, c, p) = one_cell(&text);
+        assert_eq!((kind, c.len()), (12, 8));
+        let mut sorted = c.clone();
+        sorted.sort_unstable();
+        assert_eq!(sorted, (0..8).collect::<Vec<u32>>());
+        let at = |k: usize| p[c[k] as usize];
+        assert!(det(at(0), at(1), at(3), at(4)) > 0.0);
+        // VTK's twelve edges are edges of the prism: sides of length √2, verticals of 1
+        let len = |a: Point, b: Point| ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt();
+        let edge = |l: f64| (l - 1.0).abs() < 1e-9 || (l - 2f64.sqrt()).abs() < 1e-9;
+        for k in 0..4 {
+            assert!(edge(len(at(k), at((k + 1) % 4))) && edge(len(at(k + 4), at((k + 1) % 4 + 4))));
+            assert!(edge(len(at(k), at(k + 4))));
         }
-        for v in 0..8 {
+        // the triangular prism: a wedge whose 0 1 2 faces out, 3 4 5 above it
+        let (kind, c, p) = one_cell(&vtk_string(&prism(3)).unwrap());
+        assert_eq!((kind, c.len()), (13, 6));
+        let at = |k: usize| p[c[k] as usize];
+        assert!(det(at(0), at(1), at(2), at(3)) < 0.0);
+        let edge = |l: f64| (l - 1.0).abs() < 1e-9 || (l - 3f64.sqrt()).abs() < 1e-9;
+        for k in 0..3 {
+            assert!(edge(len(at(k), at((k + 1) % 3))) && edge(len(at(k + 3), at((k + 1) % 3 + 3))));
+            assert!(edge(len(at(k), at(k + 3))));
+        }
+        // the simplex: a tetrahedron with 0 1 2 counterclockwise seen from 3
+        let mut tet = build::simplex(3).unwrap();
+        for (d, q) in (0..tet.dart_count() as u32).zip(0..) {
+            let _ = q;
+            let v = tet.cells(0).of[d as usize] as usize;
+            tet.set_point(Dart::new(d), Some([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]][v]));
+        }
+        let (kind, c, p) = one_cell(&vtk_string(&tet).unwrap());
+        assert_eq!((kind, c.len()), (10, 4));
+        assert!(det(p[c[0] as usize], p[c[1] as usize], p[c[2] as usize], p[c[3] as usize]) > 0.0);
+    }
+
+    #[test]
+    fn other_volumes_are_polyhedra_with_outward_faces() {
+        // the pentagonal prism: 7 faces, 10 points
+        let m = prism(5);
+        let (kind, stream, pts) = one_cell(&vtk_string(&m).unwrap());
+        assert_eq!(kind, 42);
+        assert_eq!(stream[0], 7);
+        let mut faces = Vec::new();
+        let mut k = 1;
+        while k < stream.len() {
+            let n = stream[k] as usize;
+            faces.push(stream[k + 1..k + 1 + n].to_vec());
+            k += 1 + n;
+        }
+        assert_eq!(faces.len(), 7);
+        for v in 0..10 {
             assert_eq!(faces.iter().filter(|f| f.contains(&v)).count(), 3);
         }
-        // the unit-circle square extruded by 1 has area 2 and volume 2
-        assert!((signed_volume6(&faces, &pts) / 6.0 - 2.0).abs() < 1e-9);
+        assert!(signed_volume6(&faces, &pts) > 0.0);
         // each edge is used once in each direction (consistently oriented faces)
         let mut dir_edges = Vec::new();
         for f in &faces {
-            for j in 0..4 {
-                dir_edges.push((f[j], f[(j + 1) % 4]));
+            for j in 0..f.len() {
+                dir_edges.push((f[j], f[(j + 1) % f.len()]));
             }
         }
         for &(a, b) in &dir_edges {
@@ -420,7 +562,7 @@ mod tests {
         let text = vtk_string(&sq).unwrap();
         assert!(text.contains("POINTS 4 double\n"));
         assert!(text.contains("CELLS 1 5\n4 0 1 2 3\n") || text.contains("CELLS 1 5\n4 0 3 2 1\n"), "{text}");
-        assert!(text.contains("CELL_TYPES 1\n7\n"));
+        assert!(text.contains("CELL_TYPES 1\n9\n"));
         assert!(text.ends_with("SCALARS dim int 1\nLOOKUP_TABLE default\n2\n"));
         let e = vtk_string(&build::cube(3).unwrap()).unwrap_err();
         assert_eq!(e.to_string(), "the map has no points: .vtk needs coordinates for every vertex");
@@ -462,7 +604,7 @@ mod tests {
         let vert = sq.cells(0).of;
         let e = sq.cells(1).reps[2];
         let (a, b) = (vert[e.index()], vert[sq.alpha(e, 0).index()]);
-        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n7\n3\n1\n")), "{text}");
+        assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n9\n3\n1\n")), "{text}");
         let data = text.split("CELL_DATA 3\n").nth(1).unwrap();
         assert_eq!(
             data,

@@ -102,6 +102,9 @@ pub enum ImportError {
     /// A `.lex` file without a complex of the requested name.
     #[error("no complex named '{0}' in the file")]
     NoSuchName(String),
+    /// Cells that cannot be made into a map (a face in three cells, a non-conforming face…).
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
     /// A file that does not fit its format as a whole (a `.pbm` header, a bounding box too big).
     #[error("{0}")]
     Format(String),

@@ -9,12 +9,18 @@
 
 mod common;
 pub mod cubical;
+pub mod msh;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
+pub mod vtk;
+pub mod vtu;
 
 pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};
 pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
+pub use vtk::{parse_vtk, read_vtk};
+pub use vtu::{parse_vtu, read_vtu};

@@ -1,0 +1,475 @@
+//! [`Mesh`] and [`Mesh::to_gmap`] (see the [module documentation](super)).
+
+use std::fmt;
+
+use gmap_core::{DartId, DenseMap, LabelValue, LabelledGMap, Labels, Point};
+use rustc_hash::FxHashMap;
+use smallvec::SmallVec;
+
+use super::error::MeshError;
+use super::matching::{check_conforming, Facet, FacetMatcher, Offer};
+use crate::build::IncrementalBuilder;
+
+/// The linear cell types of VTK and Gmsh that a mesh holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum CellKind {
+    /// one point (VTK 1, Gmsh 15)
+    Vertex,
+    /// a segment (VTK 3, Gmsh 1)
+    Line,
+    /// VTK 5, Gmsh 2
+    Triangle,
+    /// VTK 9, Gmsh 3
+    Quad,
+    /// a polygon of any number of corners (VTK 7)
+    Polygon,
+    /// VTK 10, Gmsh 4
+    Tetra,
+    /// VTK 12, Gmsh 5: corners 0-3 one face, 4-7 the opposite one, `k + 4` above `k`
+    Hexahedron,
+    /// VTK 13, Gmsh 6: triangles 0-2 and 3-5, `k + 3` above `k`
+    Wedge,
+    /// VTK 14, Gmsh 7: the quadrangle 0-3 and the apex 4
+    Pyramid,
+    /// a polyhedron given by its faces (VTK 42)
+    Polyhedron,
+}
+
+impl CellKind {
+    /// The VTK cell type, and the kind of a VTK type this crate reads.
+    pub fn from_vtk(t: i64) -> Option<CellKind> {
+        Some(match t {
+            1 => CellKind::Vertex,
+            3 => CellKind::Line,
+            5 => CellKind::Triangle,
+            7 => CellKind::Polygon,
+            9 => CellKind::Quad,
+            10 => CellKind::Tetra,
+            12 => CellKind::Hexahedron,
+            13 => CellKind::Wedge,
+            14 => CellKind::Pyramid,
+            42 => CellKind::Polyhedron,
+            _ => return None,
+        })
+    }
+
+    /// The dimension of the cells of this kind.
+    pub fn dim(self) -> usize {
+        match self {
+            CellKind::Vertex => 0,
+            CellKind::Line => 1,
+            CellKind::Triangle | CellKind::Quad | CellKind::Polygon => 2,
+            _ => 3,
+        }
+    }
+
+    /// The number of points of a cell of this kind, `None` when it varies.
+    pub fn points(self) -> Option<usize> {
+        Some(match self {
+            CellKind::Vertex => 1,
+            CellKind::Line => 2,
+            CellKind::Triangle => 3,
+            CellKind::Quad | CellKind::Tetra => 4,
+            CellKind::Hexahedron => 8,
+            CellKind::Wedge => 6,
+            CellKind::Pyramid => 5,
+            CellKind::Polygon | CellKind::Polyhedron => return None,
+        })
+    }
+
+    /// The faces of a volume of a fixed kind, as corner numbers.
+    fn faces(self) -> &'static [&'static [usize]] {
+        match self {
+            CellKind::Tetra => &[&[0, 1, 2], &[0, 3, 1], &[1, 3, 2], &[2, 3, 0]],
+            CellKind::Hexahedron => {
+                &[&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[1, 2, 6, 5], &[2, 3, 7, 6], &[3, 0, 4, 7]]
+            }
+            CellKind::Wedge => &[&[0, 1, 2], &[3, 5, 4], &[0, 3, 4, 1], &[1, 4, 5, 2], &[2, 5, 3, 0]],
+            CellKind::Pyramid => &[&[0, 3, 2, 1], &[0, 1, 4], &[1, 2, 4], &[2, 3, 4], &[3, 0, 4]],
+            _ => &[],
+        }
+    }
+}
+
+impl fmt::Display for CellKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            CellKind::Vertex => "vertex",
+            CellKind::Line => "line",
+            CellKind::Triangle => "triangle",
+            CellKind::Quad => "quadrangle",
+            CellKind::Polygon => "polygon",
+            CellKind::Tetra => "tetrahedron",
+            CellKind::Hexahedron => "hexahedron",
+            CellKind::Wedge => "wedge",
+            CellKind::Pyramid => "pyramid",
+            CellKind::Polyhedron => "polyhedron",
+        })
+    }
+}
+
+/// One cell: its kind, its points, and for a polyhedron its faces.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCell {
+    /// the cell type
+    pub kind: CellKind,
+    /// its points (indices into [`Mesh::points`]) in the type's order; for a polyhedron, its
+    /// distinct points
+    pub nodes: Vec<u32>,
+    /// a polyhedron's faces, each a cycle of point indices (empty for other kinds)
+    pub faces: Vec<Vec<u32>>,
+}
+
+/// A named array of values, one per point or per cell (`None`: no value there).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataArray {
+    /// the label name
+    pub name: String,
+    /// one value per point or cell
+    pub values: Vec<Option<LabelValue>>,
+}
+
+/// An unstructured mesh as read from a file (see the [module documentation](super)).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    /// the points
+    pub points: Vec<Point>,
+    /// the cells, in file order
+    pub cells: Vec<MeshCell>,
+    /// data on the points: labels of the 0-cells
+    pub point_data: Vec<DataArray>,
+    /// data on the cells: labels of the cells
+    pub cell_data: Vec<DataArray>,
+}
+
+/// The faces of a volume cell as point cycles.
+fn volume_faces(c: &MeshCell) -> Vec<SmallVec<[u32; 4]>> {
+    if c.kind == CellKind::Polyhedron {
+        c.faces.iter().map(|f| f.iter().copied().collect()).collect()
+    } else {
+        c.kind.faces().iter().map(|f| f.iter().map(|&k| c.nodes[k]).collect()).collect()
+    }
+}
+
+/// Adds labels to those of the `dim`-cell of `d` (dimensions 0 to 3).
+fn set_labels(g: &mut LabelledGMap, dim: usize, d: DartId, l: Labels) {
+    let old = match dim {
+        0 => g.attribute::<0>(d),
+        1 => g.attribute::<1>(d),
+        2 => g.attribute::<2>(d),
+        _ => g.attribute::<3>(d),
+    };
+    let mut merged = old.cloned().unwrap_or_default();
+    for (n, v) in l.iter() {
+        merged.set(n, v.clone());
+    }
+    let l = merged;
+    match dim {
+        0 => g.set_attribute::<0>(d, l),
+        1 => g.set_attribute::<1>(d, l),
+        2 => g.set_attribute::<2>(d, l),
+        _ => g.set_attribute::<3>(d, l),
+    };
+}
+
+impl Mesh {
+    /// The largest dimension of the cells, `None` without cells.
+    pub fn top_dim(&self) -> Option<usize> {
+        self.cells.iter().map(|c| c.kind.dim()).max()
+    }
+
+    /// Checks every cell on its own: point indices in range, the right number of points,
+    /// no point twice, polygons of 3 corners or more, polyhedra whose faces close.
+    fn check_cells(&self) -> Result<(), MeshError> {
+        let n = self.points.len();
+        for (i, c) in self.cells.iter().enumerate() {
+            let bad = |reason: String| MeshError::BadCell { cell: i, kind: c.kind.to_string(), reason };
+            if let Some(&v) = c.nodes.iter().chain(c.faces.iter().flatten()).find(|&&v| v as usize >= n) {
+                return Err(MeshError::NoSuchVertex { cell: i, vertex: v as u64, points: n });
+            }
+            if let Some(k) = c.kind.points() {
+                if c.nodes.len() != k {
+                    return Err(bad(format!("{} points, a {} has {k}", c.nodes.len(), c.kind)));
+                }
+            }
+            if c.kind == CellKind::Polygon && c.nodes.len() < 3 {
+                return Err(bad(format!("{} points, a polygon needs 3 or more", c.nodes.len())));
+            }
+            let twice = |xs: &[u32]| -> Option<u32> {
+                let mut s = xs.to_vec();
+                s.sort_unstable();
+                s.windows(2).find(|w| w[0] == w[1]).map(|w| w[0])
+            };
+            if let Some(v) = twice(&c.nodes) {
+                return Err(bad(format!("point {v} appears twice")));
+            }
+            if c.kind == CellKind::Polyhedron {
+                if c.faces.len() < 2 {
+                    return Err(bad(format!("{} faces, a polyhedron needs 2 or more", c.faces.len())));
+                }
+                let mut edges: FxHashMap<(u32, u32), u32> = FxHashMap::default();
+                for f in &c.faces {
+                    if f.len() < 3 {
+                        return Err(bad(format!("a face of {} points", f.len())));
+                    }
+                    if let Some(v) = twice(f) {
+                        return Err(bad(format!("point {v} appears twice in a face")));
+                    }
+                    for j in 0..f.len() {
+                        let (a, b) = (f[j], f[(j + 1) % f.len()]);
+                        *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+                    }
+                }
+                let mut odd: Vec<((u32, u32), u32)> = edges.into_iter().filter(|&(_, k)| k != 2).collect();
+                odd.sort_unstable();
+                if let Some(&((a, b), k)) = odd.first() {
+                    return Err(bad(format!(
+                        "its edge {a}-{b} lies in {k} of its faces (the faces must close: two each)"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The number of darts of the map: `2 Σ` face corners per volume, `2k` per polygon,
+    /// 2 per line, 1 per vertex, over the top cells. `None` past `u64`.
+    fn dart_count(&self, top: usize) -> Option<u64> {
+        let mut total = 0u64;
+        for c in self.cells.iter().filter(|c| c.kind.dim() == top) {
+            let darts = match top {
+                3 => volume_faces(c).iter().try_fold(0u64, |a, f| a.checked_add(2 * f.len() as u64))?,
+                2 => 2 * c.nodes.len() as u64,
+                1 => 2,
+                _ => 1,
+            };
+            total = total.checked_add(darts)?;
+        }
+        Some(total)
+    }
+
+    /// Builds the labelled map of the mesh (see the [module documentation](super)), refusing
+    /// before any allocation when it would have more than `max_darts` darts. O(N n) expected
+    /// for N darts, plus the checks of non-conforming faces (O(Σ over edges of the square of
+    /// the faces around the edge)).
+    pub fn to_gmap(&self, max_darts: u64) -> Result<LabelledGMap, MeshError> {
+        self.check_cells()?;
+        let Some(top) = self.top_dim() else {
+            return Ok(LabelledGMap::with_attributes(0));
+        };
+        let darts = self.dart_count(top);
+        if darts.is_none_or(|d| d > max_darts) {
+            return Err(MeshError::TooManyDarts { cells: self.cells.len(), darts, limit: max_darts });
+        }
+        let mut g = LabelledGMap::with_attributes(top);
+        // the map's dart of each top cell, and the point of each dart (by dart index)
+        let mut cell_dart: Vec<Option<DartId>> = vec![None; self.cells.len()];
+        let mut vertex: Vec<u32> = Vec::new();
+        let tops: Vec<usize> = (0..self.cells.len()).filter(|&i| self.cells[i].kind.dim() == top).collect();
+        let mut faces_of_top: Option<FacetMatcher<DartId>> = None;
+        if top >= 2 {
+            let mut b = IncrementalBuilder::new(&mut g).expect("dimension 2 or 3");
+            for p in &self.points {
+                b.add_vertex(*p);
+            }
+            let renumber = |e: MeshError| e.renumber(|k| tops.get(k).copied().unwrap_or(k));
+            if top == 3 {
+                for &i in &tops {
+                    b.begin_surface().map_err(renumber)?;
+                    for f in volume_faces(&self.cells[i]) {
+                        let f: Vec<usize> = f.iter().map(|&v| v as usize).collect();
+                        b.add_facet(&f).map_err(renumber)?;
+                    }
+                    cell_dart[i] = b.end_surface().map_err(renumber)?;
+                }
+            } else {
+                b.begin_surface().map_err(renumber)?;
+                for &i in &tops {
+                    let f: Vec<usize> = self.cells[i].nodes.iter().map(|&v| v as usize).collect();
+                    cell_dart[i] = Some(b.add_facet(&f).map_err(renumber)?);
+                }
+                b.end_surface().map_err(renumber)?;
+            }
+            if top == 3 {
+                check_conforming(b.face_matcher()).map_err(renumber)?;
+            }
+            vertex = b.into_vertices();
+            if top == 3 {
+                faces_of_top = Some(b.into_faces());
+            }
+        } else {
+            // lines sewn at shared ends, or isolated vertices
+            let mut ends: FacetMatcher<DartId> = FacetMatcher::new(1);
+            let mut seen: FxHashMap<u32, usize> = FxHashMap::default();
+            for &i in &tops {
+                let c = &self.cells[i];
+                let made: Vec<DartId> = c.nodes.iter().map(|_| g.create_dart()).collect();
+                for (&d, &v) in made.iter().zip(&c.nodes) {
+                    let at = g.dart_index(d);
+                    if vertex.len() <= at {
+                        vertex.resize(at + 1, u32::MAX);
+                    }
+                    vertex[at] = v;
+                    g.set_point(d, Some(self.points[v as usize]));
+                }
+                cell_dart[i] = Some(made[0]);
+                if top == 0 {
+                    if let Some(&first) = seen.get(&c.nodes[0]) {
+                        return Err(MeshError::RepeatedCell { cells: [first, i], vertices: vec![c.nodes[0] as u64] });
+                    }
+                    seen.insert(c.nodes[0], i);
+                    continue;
+                }
+                g.link(made[0], made[1], 0);
+                for (&d, &v) in made.iter().zip(&c.nodes) {
+                    let one: SmallVec<[DartId; 4]> = [d].into_iter().collect();
+                    let end = Facet { owner: i, cycle: [v].into_iter().collect(), fwd: one.clone(), back: one };
+                    if let Offer::Matched { darts: (a, b), .. } = ends.offer(end)? {
+                        g.try_sew(a, b, 1).map_err(|e| MeshError::Map(e.to_string()))?;
+                    }
+                }
+            }
+        }
+        let (dense, ids) = g.to_dense_with_ids();
+        let vert: Vec<u32> = ids.iter().map(|&d| vertex[g.dart_index(d)]).collect();
+        check_pinched(&dense, &vert, top)?;
+        self.label(&mut g, &ids, &vertex, top, &mut cell_dart, faces_of_top.as_ref())?;
+        Ok(g)
+    }
+
+    /// Finds the lower cells in the map and sets the labels of every cell and point.
+    fn label(
+        &self,
+        g: &mut LabelledGMap,
+        ids: &[DartId],
+        vertex: &[u32],
+        top: usize,
+        cell_dart: &mut [Option<DartId>],
+        faces: Option<&FacetMatcher<DartId>>,
+    ) -> Result<(), MeshError> {
+        // the map's dart of each point and of each edge, by their points
+        let mut point_dart: Vec<Option<DartId>> = vec![None; self.points.len()];
+        let mut edge_dart: FxHashMap<(u32, u32), DartId> = FxHashMap::default();
+        let need_edges = top >= 2 && self.cells.iter().any(|c| c.kind == CellKind::Line);
+        for &d in ids {
+            let v = vertex[g.dart_index(d)];
+            if v == u32::MAX {
+                continue;
+            }
+            point_dart[v as usize].get_or_insert(d);
+            if need_edges {
+                let w = vertex[g.dart_index(g.alpha(d, 0))];
+                edge_dart.entry((v.min(w), v.max(w))).or_insert(d);
+            }
+        }
+        let mut lower_seen: FxHashMap<(usize, SmallVec<[u32; 4]>), usize> = FxHashMap::default();
+        for (i, c) in self.cells.iter().enumerate() {
+            let dim = c.kind.dim();
+            if dim == top {
+                continue;
+            }
+            let loose = || MeshError::LooseCell {
+                cell: i,
+                kind: c.kind.to_string(),
+                vertices: c.nodes.iter().map(|&v| v as u64).collect(),
+                top,
+            };
+            let d = match dim {
+                0 => point_dart[c.nodes[0] as usize],
+                1 => {
+                    let (a, b) = (c.nodes[0], c.nodes[1]);
+                    edge_dart.get(&(a.min(b), a.max(b))).copied()
+                }
+                _ => faces.and_then(|m| m.get(&c.nodes)).and_then(|e| {
+                    let same = e.first.cycle.len() == c.nodes.len()
+                        && (0..c.nodes.len()).any(|r| {
+                            let k = c.nodes.len();
+                            (0..k).all(|j| c.nodes[(r + j) % k] == e.first.cycle[j])
+                                || (0..k).all(|j| c.nodes[(r + k - j) % k] == e.first.cycle[j])
+                        });
+                    same.then_some(e.first.fwd[0])
+                }),
+            };
+            let d = d.ok_or_else(loose)?;
+            let mut key: SmallVec<[u32; 4]> = c.nodes.iter().copied().collect();
+            key.sort_unstable();
+            if let Some(&first) = lower_seen.get(&(dim, key.clone())) {
+                return Err(MeshError::RepeatedCell {
+                    cells: [first, i],
+                    vertices: c.nodes.iter().map(|&v| v as u64).collect(),
+                });
+            }
+            lower_seen.insert((dim, key), i);
+            cell_dart[i] = Some(d);
+        }
+        // cell data: skip the writer's own `dim` column and the `.id` ranks of text columns
+        let skip = |a: &DataArray| -> bool {
+            if a.name == "dim" {
+                return a.values.iter().zip(&self.cells).all(|(v, c)| *v == Some(LabelValue::Int(c.kind.dim() as i64)));
+            }
+            a.name.strip_suffix(".id").is_some_and(|base| {
+                self.cell_data
+                    .iter()
+                    .any(|b| b.name == base && b.values.iter().flatten().all(|v| matches!(v, LabelValue::Text(_))))
+            })
+        };
+        let columns: Vec<&DataArray> = self.cell_data.iter().filter(|a| !skip(a)).collect();
+        for (i, c) in self.cells.iter().enumerate() {
+            let l: Labels = columns
+                .iter()
+                .filter_map(|a| a.values.get(i).cloned().flatten().map(|v| (a.name.clone(), v)))
+                .collect();
+            if !l.is_empty() {
+                if let Some(d) = cell_dart[i] {
+                    set_labels(g, c.kind.dim(), d, l);
+                }
+            }
+        }
+        for (p, d) in point_dart.iter().enumerate() {
+            let Some(d) = *d else { continue };
+            let l: Labels = self
+                .point_data
+                .iter()
+                .filter_map(|a| a.values.get(p).cloned().flatten().map(|v| (a.name.clone(), v)))
+                .collect();
+            if !l.is_empty() {
+                set_labels(g, 0, d, l);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Refuses a point that is two 0-cells or more of the map, and (in dimension 3) an edge that
+/// is two 1-cells or more: the cells around them meet only there. O(N n).
+fn check_pinched(dense: &DenseMap, vert: &[u32], top: usize) -> Result<(), MeshError> {
+    let check = |i: usize, what: &'static str| -> Result<(), MeshError> {
+        let cells = dense.cells(i);
+        let mut count: FxHashMap<(u32, u32), usize> = FxHashMap::default();
+        for r in &cells.reps {
+            let v = vert[r.index()];
+            let key = if i == 0 {
+                (v, v)
+            } else {
+                let w = vert[dense.alpha(*r, 0).index()];
+                (v.min(w), v.max(w))
+            };
+            *count.entry(key).or_default() += 1;
+        }
+        let mut worst: Vec<((u32, u32), usize)> = count.into_iter().filter(|&(_, n)| n > 1).collect();
+        worst.sort_unstable();
+        if let Some(&((a, b), pieces)) = worst.first() {
+            let vertices = if i == 0 { vec![a as u64] } else { vec![a as u64, b as u64] };
+            return Err(MeshError::Pinched { what, vertices, pieces });
+        }
+        Ok(())
+    };
+    if top >= 2 {
+        check(0, "point")?;
+    }
+    if top >= 3 {
+        check(1, "edge")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,107 @@
+//! `.vtk → .gmap → .vtk` keeps the cells and the data, and meshio (when python3 has it)
+//! reads the `.vtk` we write with the cell types, counts and data it should.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use gmap_core::io::{read_labelled_gmap, write_labelled_gmap};
+use gmap_core::{to_dense_labels, DenseLabels, DenseMap, LabelledGMap};
+use gmap_ops::export::write_vtk_with_labels;
+use gmap_ops::import::{read_msh, read_vtk, read_vtu};
+
+fn data(name: &str) -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh")).join(name)
+}
+
+fn read(p: &Path) -> LabelledGMap {
+    let r = match p.extension().and_then(|e| e.to_str()) {
+        Some("vtk") => read_vtk(p, None),
+        Some("vtu") => read_vtu(p, None),
+        _ => read_msh(p, None),
+    };
+    r.unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The cell counts and, per dimension, the sorted texts of the labels.
+fn content(g: &LabelledGMap) -> (Vec<usize>, Vec<Vec<String>>) {
+    let (d, labels, _): (DenseMap, DenseLabels, _) = to_dense_labels(g);
+    let texts = labels
+        .of
+        .iter()
+        .map(|v| {
+            let mut t: Vec<String> = v.iter().map(|l| l.to_string()).collect();
+            t.sort();
+            t
+        })
+        .collect();
+    (d.cell_counts(), texts)
+}
+
+#[test]
+fn vtk_to_gmap_to_vtk_keeps_cells_and_data() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["hex_hollow_42.vtk", "tet_cube.msh", "mixed.vtu", "poly.vtu", "ring_zlib.vtu"] {
+        let first = read(&data(name));
+        let want = content(&first);
+        let gmap = dir.path().join("m.gmap");
+        write_labelled_gmap(&first, &gmap).unwrap();
+        let again = read_labelled_gmap(&gmap).unwrap();
+        assert_eq!(content(&again), want, "{name}: .gmap");
+        let (d, labels, _) = to_dense_labels(&again);
+        let vtk = dir.path().join("m.vtk");
+        write_vtk_with_labels(&d, &labels, &vtk).unwrap();
+        assert_eq!(content(&read(&vtk)), want, "{name}: .vtk");
+    }
+}
+
+#[test]
+fn meshio_reads_what_we_write() {
+    let has = Command::new("python3").args(["-c", "import meshio"]).output().is_ok_and(|o| o.status.success());
+    if !has {
+        println!("meshio_reads_what_we_write: skipped, python3 has no meshio (pip install meshio)");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // (fixture, points, the cell blocks meshio must find, a cell data array); labelled
+    // faces and vertices are cells of their own in the .vtk
+    let cases: &[(&str, usize, &[(&str, usize)], &str)] = &[
+        ("hex_hollow.vtu", 64, &[("hexahedron", 26), ("vertex", 64)], "region"),
+        ("tet_cube.msh", 27, &[("tetra", 48), ("triangle", 48)], "gmsh:physical"),
+        ("mixed.msh", 12, &[("hexahedron", 1), ("pyramid", 1), ("wedge", 1), ("tetra", 1)], "gmsh:geometrical"),
+        ("ring_raw.vtu", 32, &[("hexahedron", 8)], "index"),
+    ];
+    for &(name, points, blocks, array) in cases {
+        let g = read(&data(name));
+        let (d, mut labels, _) = to_dense_labels(&g);
+        // meshio's legacy reader has no string arrays: texts are left out
+        for per_dim in &mut labels.of {
+            for l in per_dim.iter_mut() {
+                let texts: Vec<String> =
+                    l.iter().filter(|(_, v)| matches!(v, gmap_core::LabelValue::Text(_))).map(|(n, _)| n.to_string()).collect();
+                for n in texts {
+                    l.remove(&n);
+                }
+            }
+        }
+        let out = dir.path().join(format!("{name}.vtk"));
+        write_vtk_with_labels(&d, &labels, &out).unwrap();
+        let script = "import sys, meshio\nm = meshio.read(sys.argv[1])\nprint(len(m.points))\n\
+                      print(' '.join(f'{c.type}:{len(c.data)}' for c in m.cells))\n\
+                      print(' '.join(sorted(m.cell_data)))";
+        let o = Command::new("python3").args(["-c", script, out.to_str().unwrap()]).output().unwrap();
+        assert!(o.status.success(), "{name}: meshio: {}", String::from_utf8_lossy(&o.stderr));
+        let text = String::from_utf8(o.stdout).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], points.to_string(), "{name}");
+        for (kind, count) in blocks {
+            let total: usize = lines[1]
+                .split(' ')
+                .filter_map(|b| b.split_once(':'))
+                .filter(|(k, _)| k == kind)
+                .map(|(_, n)| n.parse::<usize>().unwrap())
+                .sum();
+            assert_eq!(total, *count, "{name}: {kind} in {}", lines[1]);
+        }
+        assert!(lines[2].split(' ').any(|a| a == array), "{name}: {}", lines[2]);
+    }
+}
