@@ -105,3 +105,42 @@ fn meshio_reads_what_we_write() {
         assert!(lines[2].split(' ').any(|a| a == array), "{name}: {}", lines[2]);
     }
 }
+
+/// Inputs the fuzz targets found (tests/data/mesh/fuzz): a `.vtu` array without a name,
+/// whose label the legacy writer cannot name (refused, not written broken), and a `.msh`
+/// whose labels the writer orders otherwise (the same labels come back).
+#[test]
+fn fuzz_findings() {
+    let g = read_vtu(&data("fuzz/vtu_empty_name.vtu"), None).unwrap();
+    let (d, labels, _) = to_dense_labels(&g);
+    assert!(labels.of.iter().flatten().any(|l| l.get("").is_some()));
+    assert_eq!(
+        gmap_ops::export::vtk_string_with_labels(&d, &labels).unwrap_err().to_string(),
+        "a label has an empty name: .vtk names every data array"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let g = read_msh(&data("fuzz/msh_label_order.msh"), None).unwrap();
+    let (d, labels, _) = to_dense_labels(&g);
+    let vtk = dir.path().join("m.vtk");
+    write_vtk_with_labels(&d, &labels, &vtk).unwrap();
+    let sets = |g: &LabelledGMap| -> Vec<Vec<String>> {
+        let (_, labels, _) = to_dense_labels(g);
+        labels
+            .of
+            .iter()
+            .map(|v| {
+                let mut cells: Vec<String> = v
+                    .iter()
+                    .map(|l| {
+                        let mut t: Vec<String> = l.iter().map(|(n, v)| format!("{n}={v}")).collect();
+                        t.sort();
+                        t.join(" ")
+                    })
+                    .collect();
+                cells.sort();
+                cells
+            })
+            .collect()
+    };
+    assert_eq!(sets(&read(&vtk)), sets(&g));
+}
