@@ -21,7 +21,7 @@ use gmap::ops::export;
 
 fn write(g: &GMap, name: &str, folder: &std::path::Path) -> Result<(), Box<dyn Error>> {
     let path = folder.join(name);
-    export::write_vtk(&g.to_dense().0, &path)?;
+    export::write_vtk(&g.to_dense_map(), &path)?;
     println!("{name}: {}, homology {}", g.characteristics(), gmap_homology(g)?);
     Ok(())
 }

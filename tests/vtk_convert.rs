@@ -123,18 +123,26 @@ fn the_labels_of_a_gmap_become_cell_data() {
 }
 
 #[test]
-fn a_vtk_file_is_not_read_back() {
+fn a_vtk_file_is_read_back_as_a_mesh() {
     let dir = tempfile::tempdir().unwrap();
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/labelled_segment.gmap");
     let vtk = dir.path().join("segment.vtk");
     assert!(gmap(&["convert", p(&src), p(&vtk)]).status.success());
-    for args in [vec!["homology", p(&vtk)], vec!["info", p(&vtk)], vec!["convert", p(&vtk), "x.gmap"]] {
-        let o = gmap(&args);
-        assert_eq!(o.status.code(), Some(1), "{args:?}");
-        assert!(
-            stderr(&o).contains("unsupported input format '.vtk': it is written only, as a view"),
-            "{}",
-            stderr(&o)
-        );
-    }
+    let o = gmap(&["info", p(&vtk), "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("\"cells\":[2,1]"), "{out}");
+    // the labels come back: .vtk → .gmap keeps them
+    let back = dir.path().join("back.gmap");
+    assert!(gmap(&["convert", p(&vtk), p(&back)]).status.success());
+    let g = gmap_core::io::read_labelled_gmap(&back).unwrap();
+    let (_, labels, _) = gmap_core::to_dense_labels(&g);
+    let edge: Vec<String> = labels.of[1].iter().map(|l| l.to_string()).collect();
+    assert_eq!(edge, [r#"name="main \"beam\"" length=2.5"#]);
+    // a .dot is still a view only
+    let dot = dir.path().join("segment.dot");
+    assert!(gmap(&["convert", p(&src), p(&dot)]).status.success());
+    let o = gmap(&["info", p(&dot)]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("unsupported input format '.dot': it is written only, as a view"), "{}", stderr(&o));
 }

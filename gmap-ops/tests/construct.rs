@@ -48,7 +48,7 @@ fn a_face_extruded_gives_a_second_hexahedron_on_top() {
     assert_eq!(g.alpha(f, 3), e.cell);
     // the face is no longer free: a second extrusion from it is refused
     assert_eq!(c::try_extrude_face(&mut g, f, [0., 0., 1.]), Err(ConstructError::NotFree { dart: f, alpha: 3 }));
-    g.check().unwrap();
+    g.validate().unwrap();
 }
 
 #[test]
@@ -224,7 +224,7 @@ fn a_corner_of_a_cube_surface_chamfered_becomes_a_triangle() {
     corners.sort_by(|a, b| a.partial_cmp(b).unwrap());
     corners.dedup();
     assert_eq!(corners, vec![[0., 0., 0.25], [0., 0.25, 0.], [0.25, 0., 0.]]);
-    g.check().unwrap();
+    g.validate().unwrap();
     assert_eq!(
         c::try_chamfer_vertex(&mut g, f, 1.5),
         Err(ConstructError::BadParameter { what: "chamfer fraction", value: 1.5 })
@@ -346,7 +346,7 @@ proptest! {
         for s in &steps {
             let before = chi(&g);
             if let Some(dchi) = apply(&mut g, s) {
-                prop_assert!(g.check().is_ok(), "{s:?}: {:?}", g.check());
+                prop_assert!(g.validate().is_ok(), "{s:?}: {:?}", g.validate());
                 prop_assert_eq!(chi(&g) - before, dchi, "{:?}", s);
                 // every vertex has a point: the constructions place every vertex they make
                 prop_assert!(g.darts().all(|x| g.point(x).is_some()), "{:?}", s);
@@ -389,7 +389,7 @@ proptest! {
                 _ => c::try_triangulate_face_barycentric(&mut g, d).is_ok(),
             };
             if done {
-                prop_assert!(g.check().is_ok(), "{:?}", g.check());
+                prop_assert!(g.validate().is_ok(), "{:?}", g.validate());
                 prop_assert_eq!(chi(&g), 2);
                 prop_assert!(g.darts().all(|x| g.point(x).is_some()));
                 fill(&mut g, &mut next);

@@ -37,7 +37,7 @@ fn hex(id: &impl Fn(u32, u32, u32) -> u32, x: u32, y: u32) -> MeshCell {
 
 fn chars(m: &Mesh) -> Characteristics {
     let g = m.to_gmap(1 << 20).unwrap_or_else(|e| panic!("{e}"));
-    Characteristics::of(&g.to_dense().0)
+    Characteristics::of(&g.to_dense_map())
 }
 
 #[test]
@@ -46,13 +46,13 @@ fn neighbouring_hexahedra_are_sewn_and_the_boundary_left_free() {
     let cells = vec![hex(&id, 0, 0), hex(&id, 1, 0), hex(&id, 0, 1), hex(&id, 1, 1)];
     let m = Mesh { points, cells, ..Mesh::default() };
     let g = m.to_gmap(1 << 20).unwrap();
-    let (d, _) = g.to_dense();
+    let d = g.to_dense_map();
     let c = Characteristics::of(&d);
     assert_eq!(c.cells, vec![18, 33, 20, 4]);
     assert_eq!(c.components, 1);
     assert!(c.orientable);
     // 4 inner faces sewn (8 sides of 8 darts), the rest 3-free
-    let free = (0..d.dart_count() as u32).filter(|&k| d.is_free(gmap_core::Dart(k), 3)).count();
+    let free = (0..d.dart_count() as u32).filter(|&k| d.is_free(gmap_core::Dart::new(k), 3)).count();
     assert_eq!(free, 4 * 48 - 4 * 2 * 8);
     // the dart limit is checked before building
     assert!(matches!(m.to_gmap(100), Err(MeshError::TooManyDarts { darts: Some(192), limit: 100, .. })));
@@ -238,9 +238,9 @@ fn the_builder_sews_cgal_s_cube_and_pyramid_and_refuses_out_of_order_calls() {
         b.end_surface().unwrap_err().to_string(),
         "the face with vertices [0, 3, 4, 5] lies in 3 cells ([0, 1, 2]): at most two cells may share it"
     );
-    let c = Characteristics::of(&g.to_dense().0);
+    let c = Characteristics::of(&g.to_dense_map());
     assert_eq!(c.components, 2, "the third surface stays, unsewn");
-    assert!(g.check().is_ok());
+    assert!(g.validate().is_ok());
 }
 
 #[test]
@@ -260,11 +260,11 @@ fn sew3_same_facets_sews_cubes_made_apart() {
             p(x + 1., 1., 1.),
         ]);
     }
-    assert_eq!(Characteristics::of(&g.to_dense().0).components, 3);
+    assert_eq!(Characteristics::of(&g.to_dense_map()).components, 3);
     assert_eq!(sew3_same_facets(&mut g).unwrap(), 2);
-    let c = Characteristics::of(&g.to_dense().0);
+    let c = Characteristics::of(&g.to_dense_map());
     assert_eq!((c.cells.clone(), c.components), (vec![16, 28, 16, 3], 1));
-    assert!(g.check().is_ok());
+    assert!(g.validate().is_ok());
     assert_eq!(sew3_same_facets(&mut g).unwrap(), 0);
     assert!(sew3_same_facets(&mut GMap::new(2)).is_err());
 }

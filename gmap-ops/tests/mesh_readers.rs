@@ -22,7 +22,7 @@ fn read(name: &str) -> LabelledGMap {
 }
 
 fn summary(g: &LabelledGMap) -> Characteristics {
-    let (d, _) = g.to_dense();
+    let d = g.to_dense_map();
     d.validate().unwrap();
     Characteristics::of(&d)
 }

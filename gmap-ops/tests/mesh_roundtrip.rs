@@ -64,7 +64,8 @@ fn meshio_reads_what_we_write() {
     let dir = tempfile::tempdir().unwrap();
     // (fixture, points, the cell blocks meshio must find, a cell data array); labelled
     // faces and vertices are cells of their own in the .vtk
-    let cases: &[(&str, usize, &[(&str, usize)], &str)] = &[
+    type Case<'a> = (&'a str, usize, &'a [(&'a str, usize)], &'a str);
+    let cases: &[Case] = &[
         ("hex_hollow.vtu", 64, &[("hexahedron", 26), ("vertex", 64)], "region"),
         ("tet_cube.msh", 27, &[("tetra", 48), ("triangle", 48)], "gmsh:physical"),
         ("mixed.msh", 12, &[("hexahedron", 1), ("pyramid", 1), ("wedge", 1), ("tetra", 1)], "gmsh:geometrical"),
@@ -76,8 +77,11 @@ fn meshio_reads_what_we_write() {
         // meshio's legacy reader has no string arrays: texts are left out
         for per_dim in &mut labels.of {
             for l in per_dim.iter_mut() {
-                let texts: Vec<String> =
-                    l.iter().filter(|(_, v)| matches!(v, gmap_core::LabelValue::Text(_))).map(|(n, _)| n.to_string()).collect();
+                let texts: Vec<String> = l
+                    .iter()
+                    .filter(|(_, v)| matches!(v, gmap_core::LabelValue::Text(_)))
+                    .map(|(n, _)| n.to_string())
+                    .collect();
                 for n in texts {
                     l.remove(&n);
                 }
@@ -104,4 +108,43 @@ fn meshio_reads_what_we_write() {
         }
         assert!(lines[2].split(' ').any(|a| a == array), "{name}: {}", lines[2]);
     }
+}
+
+/// Inputs the fuzz targets found (tests/data/mesh/fuzz): a `.vtu` array without a name,
+/// whose label the legacy writer cannot name (refused, not written broken), and a `.msh`
+/// whose labels the writer orders otherwise (the same labels come back).
+#[test]
+fn fuzz_findings() {
+    let g = read_vtu(&data("fuzz/vtu_empty_name.vtu"), None).unwrap();
+    let (d, labels, _) = to_dense_labels(&g);
+    assert!(labels.of.iter().flatten().any(|l| l.get("").is_some()));
+    assert_eq!(
+        gmap_ops::export::vtk_string_with_labels(&d, &labels).unwrap_err().to_string(),
+        "a label has an empty name: .vtk names every data array"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let g = read_msh(&data("fuzz/msh_label_order.msh"), None).unwrap();
+    let (d, labels, _) = to_dense_labels(&g);
+    let vtk = dir.path().join("m.vtk");
+    write_vtk_with_labels(&d, &labels, &vtk).unwrap();
+    let sets = |g: &LabelledGMap| -> Vec<Vec<String>> {
+        let (_, labels, _) = to_dense_labels(g);
+        labels
+            .of
+            .iter()
+            .map(|v| {
+                let mut cells: Vec<String> = v
+                    .iter()
+                    .map(|l| {
+                        let mut t: Vec<String> = l.iter().map(|(n, v)| format!("{n}={v}")).collect();
+                        t.sort();
+                        t.join(" ")
+                    })
+                    .collect();
+                cells.sort();
+                cells
+            })
+            .collect()
+    };
+    assert_eq!(sets(&read(&vtk)), sets(&g));
 }

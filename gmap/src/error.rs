@@ -167,7 +167,10 @@ impl From<gmap_ops::import::FileError> for Error {
     fn from(e: gmap_ops::import::FileError) -> Self {
         use gmap_ops::import::ImportError as I;
         let (kind, line) = match &e.error {
-            I::TooManyDarts { .. } | I::MemoryLimit(_) | I::OutOfMemory { .. } => (ErrorKind::Limit, None),
+            I::TooManyDarts { .. }
+            | I::MemoryLimit(_)
+            | I::OutOfMemory { .. }
+            | I::Mesh(gmap_ops::mesh::MeshError::TooManyDarts { .. }) => (ErrorKind::Limit, None),
             I::Syntax { line, .. }
             | I::MixedDimension { line, .. }
             | I::RepeatedVertex { line, .. }
@@ -178,7 +181,7 @@ impl From<gmap_ops::import::FileError> for Error {
             }
             _ => (ErrorKind::Parse, None),
         };
-        let darts = matches!(e.error, I::TooManyDarts { .. });
+        let darts = matches!(e.error, I::TooManyDarts { .. } | I::Mesh(gmap_ops::mesh::MeshError::TooManyDarts { .. }));
         let path = e.path.clone();
         let out = Error::from_source(kind, &e).with_path(&path).with_line(line);
         if darts {

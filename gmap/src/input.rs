@@ -4,11 +4,14 @@
 //! | extension | reader | [`Input`] |
 //! |---|---|---|
 //! | `.gmap`, `.moka`, `.off` | `gmap_core::io`, `gmap_ops::import` | [`Input::Map`] |
+//! | `.vtk`, `.vtu`, `.msh` (unstructured meshes) | `gmap_ops::import` (`gmap_ops::mesh`) | [`Input::Map`], with labels |
 //! | `.facets`, `.lex[#name]` | `gmap_ops::import::SimplicialComplex` | [`Input::Simplicial`] |
 //! | `.cub`, `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
 //! | `.json` | `gmap_homology::json` | [`Input::Arch`] |
 //!
-//! `.vtk` and `.dot` are written only, as views: opening one is refused with that reason.
+//! `.dot` is written only, as a view: opening one is refused with that reason. A `.vtk` is
+//! read as an unstructured grid (what the `.vtk` writer writes is one), its cells sewn face
+//! to face and its data as labels.
 //! The memory policy (`gmap_core::resources`) applies to every reader: a file whose
 //! estimated cost is over the limit is refused before it is read.
 
@@ -22,7 +25,8 @@ use gmap_ops::import::{CubicalSet, SimplicialComplex};
 use crate::error::{err, Error, Result};
 
 /// The extensions [`open`] reads (the files `gmap bench` takes from a folder).
-pub const INPUT_EXTENSIONS: &[&str] = &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm"];
+pub const INPUT_EXTENSIONS: &[&str] =
+    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm", "vtk", "vtu", "msh"];
 
 /// Options of [`open_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -44,7 +48,7 @@ impl OpenOptions {
 #[derive(Debug)]
 #[non_exhaustive]
 pub enum Input {
-    /// a generalized map (`.gmap`, `.moka`, `.off`)
+    /// a generalized map (`.gmap`, `.moka`, `.off`; `.vtk`, `.vtu`, `.msh` meshes)
     Map(MapInput),
     /// a simplicial complex (`.facets`, `.lex`): every route starts from its facets
     Simplicial(Sourced<SimplicialComplex>),
@@ -59,7 +63,8 @@ pub enum Input {
 pub struct MapInput {
     map: DenseMap,
     source: Source,
-    /// the map with the labels of its cells, read when first asked for (`.gmap` only)
+    /// the map with the labels of its cells: read when first asked for (`.gmap`), or kept
+    /// from the reading (meshes)
     labelled: OnceLock<std::result::Result<Box<LabelledGMap>, Error>>,
 }
 
@@ -143,10 +148,13 @@ impl MapInput {
     }
 
     /// The map with its points and the labels of every dimension, when it was read from a
-    /// `.gmap` file (which carries them); `None` for other sources. Read again from the file
-    /// the first time it is asked for, so that opening a map for its groups pays nothing for
-    /// labels.
+    /// `.gmap` file (which carries them; read again from the file the first time it is asked
+    /// for, so that opening a map for its groups pays nothing for labels) or from a mesh
+    /// (`.vtk`, `.vtu`, `.msh`: its data); `None` for other sources.
     pub fn labelled(&self) -> Option<Result<&LabelledGMap>> {
+        if let Some(read) = self.labelled.get() {
+            return Some(read.as_ref().map(|g| &**g).map_err(Clone::clone));
+        }
         if extension(&self.source.path) != "gmap" {
             return None;
         }
@@ -239,6 +247,15 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
         "gmap" => map(gmap_core::io::read_gmap_with(path, &read_opts)?),
         "moka" => map(gmap_core::io::read_moka_with(path, &read_opts)?),
         "off" => map(import::read_off_with(path, opts.max_darts)?),
+        ext @ ("vtk" | "vtu" | "msh") => {
+            let g = match ext {
+                "vtk" => import::read_vtk(path, opts.max_darts)?,
+                "vtu" => import::read_vtu(path, opts.max_darts)?,
+                _ => import::read_msh(path, opts.max_darts)?,
+            };
+            let map = g.to_dense_map();
+            Input::Map(MapInput { map, source: source.clone(), labelled: OnceLock::from(Ok(Box::new(g))) })
+        }
         "facets" => complex(import::read_facets_complex(path)?),
         "lex" if path.exists() => complex(import::read_lex_complex(path, None)?),
         "lex" => {
@@ -254,11 +271,11 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
         })?)),
         "cub" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
         "pbm" => Input::Cubical(Sourced { value: import::read_pbm(path)?, source: source.clone() }),
-        // views: what they hold (polyhedra, drawings) does not give back the map
-        ext @ ("vtk" | "dot") => {
+        // a view: the drawing does not give back the map
+        "dot" => {
             return Err(err!(
                 Unsupported,
-                "{}: unsupported input format '.{ext}': it is written only, as a view (read the .gmap it came from)",
+                "{}: unsupported input format '.dot': it is written only, as a view (read the .gmap it came from)",
                 path.display()
             )
             .with_path(path))

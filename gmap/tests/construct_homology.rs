@@ -79,7 +79,7 @@ proptest! {
                 _ => c::try_merge_volumes(&mut g, d).is_ok(),
             };
             if done {
-                prop_assert!(g.check().is_ok());
+                prop_assert!(g.validate().is_ok());
                 prop_assert_eq!(homology(&g), "(Z, 0, 0, 0)");
             }
         }

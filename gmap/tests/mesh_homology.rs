@@ -21,7 +21,7 @@ fn read(name: &str) -> LabelledGMap {
 
 /// (cells per dimension, components, orientable, Betti numbers); the torsion must be empty.
 fn analyse(name: &str) -> (Vec<usize>, usize, bool, Vec<usize>) {
-    let (dense, _) = read(name).to_dense();
+    let dense = read(name).to_dense_map();
     let c = Characteristics::of(&dense);
     assert!(c.valid, "{name}");
     let cx = cellular_complex(&dense).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -59,4 +59,23 @@ fn a_ring_of_hexahedra_is_a_solid_torus() {
     for name in ["ring.msh", "ring_raw.vtu", "ring_zlib.vtu"] {
         assert_eq!(analyse(name), (vec![32, 64, 40, 8], 1, true, vec![1, 1, 0, 0]), "{name}");
     }
+}
+
+#[test]
+fn the_facade_opens_meshes_with_their_labels() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh/");
+    for (name, betti) in
+        [("hex_hollow.vtu", vec![1, 0, 1, 0]), ("ring.msh", vec![1, 1, 0, 0]), ("mixed.vtk", vec![1, 0, 0, 0])]
+    {
+        let input = gmap::open(format!("{dir}{name}")).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((input.kind(), input.dim()), ("map", 3), "{name}");
+        let report = gmap::homology(&input, &gmap::HomologyOptions::default()).unwrap();
+        assert_eq!(report.groups.betti, betti, "{name}");
+        let gmap::Input::Map(m) = &input else { panic!("{name}") };
+        let (dense, labels) = m.dense_labels().expect("meshes keep their labels").unwrap();
+        assert_eq!(&dense, m.map(), "{name}");
+        assert!(!labels.is_empty() || name == "ring.msh", "{name}");
+    }
+    let e = gmap::open(format!("{dir}hex_hollow.vtu").as_str().replace("hex_hollow", "no_such_file")).unwrap_err();
+    assert!(e.to_string().contains("no_such_file.vtu"), "{e}");
 }

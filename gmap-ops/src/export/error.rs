@@ -43,6 +43,12 @@ pub enum ExportError {
         /// the involution with a fixed point
         alpha: usize,
     },
+    /// A label whose name is empty: the format names every array.
+    #[error("a label has an empty name: {format} names every data array")]
+    EmptyLabelName {
+        /// the format
+        format: &'static str,
+    },
     /// The format needs coordinates and the map has no points at all.
     #[error("the map has no points: {format} needs coordinates for every vertex")]
     NoPoints {

@@ -282,7 +282,7 @@ fn encode(s: &str) -> String {
 
 /// Writes the `FIELD labels` block of the cell data: one array per label name (see
 /// [`Column`]), the names in order of first appearance over the written cells.
-fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabels) {
+fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabels) -> Result<(), ExportError> {
     let mut names: Vec<(&str, Column)> = Vec::new();
     for w in written {
         for (name, v) in labels.get(w.dim, w.cell).iter() {
@@ -294,7 +294,10 @@ fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabel
         }
     }
     if names.is_empty() {
-        return;
+        return Ok(());
+    }
+    if names.iter().any(|(n, _)| n.is_empty()) {
+        return Err(ExportError::EmptyLabelName { format: ".vtk" });
     }
     let arrays = names.len() + names.iter().filter(|(_, c)| *c == Column::Text).count();
     let n = written.len();
@@ -351,6 +354,7 @@ fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabel
             }
         }
     }
+    Ok(())
 }
 
 /// The legacy VTK text of a map of dimension at most 3 with points (see the module
@@ -431,7 +435,7 @@ pub fn vtk_string_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<St
     for c in &cells {
         let _ = writeln!(out, "{}", c.dim);
     }
-    write_label_arrays(&mut out, &cells, labels);
+    write_label_arrays(&mut out, &cells, labels)?;
     Ok(out)
 }
 

@@ -364,6 +364,10 @@ fn text(w: &[u8]) -> String {
     String::from_utf8_lossy(w).into_owned()
 }
 
+/// A legacy file's cells as read: the cell list or the connectivity, the offsets, the
+/// line of its header and the count that header gives.
+type Connectivity = (Vec<Value>, Option<Vec<Value>>, usize, usize);
+
 /// Parses a legacy VTK unstructured grid (see the module documentation).
 pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut c = Cursor { b: bytes, pos: 0, line: 1, head: 1 };
@@ -385,7 +389,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut mesh = Mesh::default();
     let mut points: Option<Vec<Point>> = None;
     // (the cell list or the connectivity, the offsets, its line, the count of its header)
-    let mut conn: Option<(Vec<Value>, Option<Vec<Value>>, usize, usize)> = None;
+    let mut conn: Option<Connectivity> = None;
     let mut types: Option<(Vec<Value>, usize)> = None;
     let mut active: Option<(bool, usize)> = None; // (cell data?, count)
     let mut dataset = false;

@@ -294,7 +294,7 @@ impl Mesh {
             if top == 3 {
                 check_conforming(b.face_matcher()).map_err(renumber)?;
             }
-            vertex = b.into_vertices();
+            vertex = b.take_vertices();
             if top == 3 {
                 faces_of_top = Some(b.into_faces());
             }
