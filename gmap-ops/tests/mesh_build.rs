@@ -14,14 +14,24 @@ fn cell(kind: CellKind, nodes: &[u32]) -> MeshCell {
 /// The (n+1)² × 2 points of a slab of n × n unit cubes; point (x, y, z) is
 /// `x + (n+1) (y + (n+1) z)`.
 fn slab(n: u32) -> (Vec<[f64; 3]>, impl Fn(u32, u32, u32) -> u32) {
-    let pts = (0..2).flat_map(|z| (0..=n).flat_map(move |y| (0..=n).map(move |x| [x as f64, y as f64, z as f64]))).collect();
+    let pts =
+        (0..2).flat_map(|z| (0..=n).flat_map(move |y| (0..=n).map(move |x| [x as f64, y as f64, z as f64]))).collect();
     (pts, move |x, y, z| x + (n + 1) * (y + (n + 1) * z))
 }
 
 fn hex(id: &impl Fn(u32, u32, u32) -> u32, x: u32, y: u32) -> MeshCell {
     cell(
         CellKind::Hexahedron,
-        &[id(x, y, 0), id(x + 1, y, 0), id(x + 1, y + 1, 0), id(x, y + 1, 0), id(x, y, 1), id(x + 1, y, 1), id(x + 1, y + 1, 1), id(x, y + 1, 1)],
+        &[
+            id(x, y, 0),
+            id(x + 1, y, 0),
+            id(x + 1, y + 1, 0),
+            id(x, y + 1, 0),
+            id(x, y, 1),
+            id(x + 1, y, 1),
+            id(x + 1, y + 1, 1),
+            id(x, y + 1, 1),
+        ],
     )
 }
 
@@ -91,11 +101,25 @@ fn refusals_name_the_cells() {
     // the same in the middle layer of three, the layers above and below joining the stars
     // of its points: the edge alone is pinched
     let k = |x: u32, y: u32, z: u32| x + 3 * (y + 3 * z);
-    let pts: Vec<[f64; 3]> = (0..4).flat_map(|z| (0..3).flat_map(move |y| (0..3).map(move |x| [x as f64, y as f64, z as f64]))).collect();
+    let pts: Vec<[f64; 3]> =
+        (0..4).flat_map(|z| (0..3).flat_map(move |y| (0..3).map(move |x| [x as f64, y as f64, z as f64]))).collect();
     let h3 = |x: u32, y: u32, z: u32| {
-        cell(CellKind::Hexahedron, &[k(x, y, z), k(x + 1, y, z), k(x + 1, y + 1, z), k(x, y + 1, z), k(x, y, z + 1), k(x + 1, y, z + 1), k(x + 1, y + 1, z + 1), k(x, y + 1, z + 1)])
+        cell(
+            CellKind::Hexahedron,
+            &[
+                k(x, y, z),
+                k(x + 1, y, z),
+                k(x + 1, y + 1, z),
+                k(x, y + 1, z),
+                k(x, y, z + 1),
+                k(x + 1, y, z + 1),
+                k(x + 1, y + 1, z + 1),
+                k(x, y + 1, z + 1),
+            ],
+        )
     };
-    let cells = vec![h3(0, 0, 0), h3(1, 0, 0), h3(1, 1, 0), h3(0, 0, 1), h3(1, 1, 1), h3(0, 0, 2), h3(1, 0, 2), h3(1, 1, 2)];
+    let cells =
+        vec![h3(0, 0, 0), h3(1, 0, 0), h3(1, 1, 0), h3(0, 0, 1), h3(1, 1, 1), h3(0, 0, 2), h3(1, 0, 2), h3(1, 1, 2)];
     let m = Mesh { points: pts, cells, ..Mesh::default() };
     assert_eq!(
         m.to_gmap(1 << 20).unwrap_err().to_string(),
@@ -106,11 +130,17 @@ fn refusals_name_the_cells() {
     let m = Mesh { points: points[..5].to_vec(), cells: tris, ..Mesh::default() };
     assert!(m.to_gmap(1 << 20).unwrap_err().to_string().starts_with("the cells around point [0] form 2 separate fans"));
     // bad cells
-    let bad = |c: MeshCell| Mesh { points: points.clone(), cells: vec![h.clone(), c], ..Mesh::default() }.to_gmap(1 << 20).unwrap_err().to_string();
+    let bad = |c: MeshCell| {
+        Mesh { points: points.clone(), cells: vec![h.clone(), c], ..Mesh::default() }
+            .to_gmap(1 << 20)
+            .unwrap_err()
+            .to_string()
+    };
     assert_eq!(bad(cell(CellKind::Tetra, &[0, 1, 2, 1])), "cell 1 (tetrahedron): point 1 appears twice");
     assert_eq!(bad(cell(CellKind::Tetra, &[0, 1, 2])), "cell 1 (tetrahedron): 3 points, a tetrahedron has 4");
     assert_eq!(bad(cell(CellKind::Tetra, &[0, 1, 2, 99])), "cell 1 uses vertex 99, but there are 18 points");
-    let open = MeshCell { kind: CellKind::Polyhedron, nodes: vec![0, 1, 3, 4], faces: vec![vec![0, 1, 3], vec![0, 1, 4]] };
+    let open =
+        MeshCell { kind: CellKind::Polyhedron, nodes: vec![0, 1, 3, 4], faces: vec![vec![0, 1, 3], vec![0, 1, 4]] };
     assert_eq!(bad(open), "cell 1 (polyhedron): its edge 0-3 lies in 1 of its faces (the faces must close: two each)");
     // a triangle that is no face of the hexahedra, and a repeated boundary triangle
     assert_eq!(
@@ -118,7 +148,8 @@ fn refusals_name_the_cells() {
         "cell 1 (triangle) on vertices [0, 1, 4] is not a face of any 3-dimensional cell of the mesh"
     );
     let quad = [id(0, 0, 0), id(1, 0, 0), id(1, 1, 0), id(0, 1, 0)];
-    let m = Mesh { points, cells: vec![h, cell(CellKind::Quad, &quad), cell(CellKind::Quad, &quad)], ..Mesh::default() };
+    let m =
+        Mesh { points, cells: vec![h, cell(CellKind::Quad, &quad), cell(CellKind::Quad, &quad)], ..Mesh::default() };
     assert_eq!(m.to_gmap(1 << 20).unwrap_err().to_string(), "cells 1 and 2 both lie on vertices [0, 1, 4, 3]");
 }
 
@@ -132,7 +163,10 @@ fn lower_cells_and_point_data_become_labels() {
     let m = Mesh {
         points,
         cells: vec![hex(&id, 0, 0), quad, line, vertex],
-        point_data: vec![DataArray { name: "t".into(), values: (0..n).map(|k| Some(LabelValue::Int(k as i64))).collect() }],
+        point_data: vec![DataArray {
+            name: "t".into(),
+            values: (0..n).map(|k| Some(LabelValue::Int(k as i64))).collect(),
+        }],
         cell_data: vec![
             DataArray { name: "tag".into(), values: (0..4).map(|k| Some(LabelValue::Int(10 + k))).collect() },
             // the writer's own dim column is not a label
@@ -141,7 +175,9 @@ fn lower_cells_and_point_data_become_labels() {
     };
     let g = m.to_gmap(1 << 20).unwrap();
     let (_, labels, _) = gmap_core::to_dense_labels(&g);
-    let tags = |dim: usize| -> Vec<String> { labels.of[dim].iter().filter(|l| !l.is_empty()).map(|l| l.to_string()).collect() };
+    let tags = |dim: usize| -> Vec<String> {
+        labels.of[dim].iter().filter(|l| !l.is_empty()).map(|l| l.to_string()).collect()
+    };
     assert_eq!(tags(3), ["tag=10"]);
     assert_eq!(tags(2), ["tag=11"]);
     assert_eq!(tags(1), ["tag=12"]);
@@ -163,7 +199,11 @@ fn lines_and_vertices_make_1_and_0_maps() {
         Mesh { points: pts.clone(), cells: star, ..Mesh::default() }.to_gmap(99).unwrap_err().to_string(),
         "the point with vertices [0] lies in 3 cells ([0, 3, 4]): at most two cells may share it"
     );
-    let c = chars(&Mesh { points: pts.clone(), cells: (0..4).map(|k| cell(CellKind::Vertex, &[k])).collect(), ..Mesh::default() });
+    let c = chars(&Mesh {
+        points: pts.clone(),
+        cells: (0..4).map(|k| cell(CellKind::Vertex, &[k])).collect(),
+        ..Mesh::default()
+    });
     assert_eq!((c.cells, c.components), (vec![4], 4));
 }
 
@@ -172,7 +212,9 @@ fn the_builder_sews_cgal_s_cube_and_pyramid_and_refuses_out_of_order_calls() {
     let mut g = GMap::new(3);
     let mut b = IncrementalBuilder::new(&mut g).unwrap();
     assert_eq!(b.begin_facet().unwrap_err().to_string(), "builder: begin_facet outside a surface");
-    for p in [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.], [0., 1., 1.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.]] {
+    for p in
+        [[0., 0., 0.], [1., 0., 0.], [1., 1., 0.], [0., 1., 0.], [0., 1., 1.], [0., 0., 1.], [1., 0., 1.], [1., 1., 1.]]
+    {
         b.add_vertex(p);
     }
     b.begin_surface().unwrap();
@@ -180,10 +222,7 @@ fn the_builder_sews_cgal_s_cube_and_pyramid_and_refuses_out_of_order_calls() {
         b.add_facet(&f).unwrap();
     }
     assert_eq!(b.add_facet(&[0, 1, 9]).unwrap_err().to_string(), "cell 0 uses vertex 9, but there are 8 points");
-    assert_eq!(
-        b.add_facet(&[0, 1, 0]).unwrap_err().to_string(),
-        "cell 0 (facet): vertex 0 appears twice"
-    );
+    assert_eq!(b.add_facet(&[0, 1, 0]).unwrap_err().to_string(), "cell 0 (facet): vertex 0 appears twice");
     b.end_surface().unwrap();
     assert!(b.face_dart(&[3, 0, 5, 4]).is_some());
     b.add_vertex([-1., 0.5, 0.5]);
@@ -210,7 +249,16 @@ fn sew3_same_facets_sews_cubes_made_apart() {
     let p = |x: f64, y: f64, z: f64| [x, y, z];
     for k in 0..3 {
         let x = k as f64;
-        g.make_hexahedron([p(x, 0., 0.), p(x + 1., 0., 0.), p(x + 1., 1., 0.), p(x, 1., 0.), p(x, 1., 1.), p(x, 0., 1.), p(x + 1., 0., 1.), p(x + 1., 1., 1.)]);
+        g.make_hexahedron([
+            p(x, 0., 0.),
+            p(x + 1., 0., 0.),
+            p(x + 1., 1., 0.),
+            p(x, 1., 0.),
+            p(x, 1., 1.),
+            p(x, 0., 1.),
+            p(x + 1., 0., 1.),
+            p(x + 1., 1., 1.),
+        ]);
     }
     assert_eq!(Characteristics::of(&g.to_dense().0).components, 3);
     assert_eq!(sew3_same_facets(&mut g).unwrap(), 2);

@@ -81,7 +81,9 @@ fn tetrahedra_with_their_boundary_triangles_as_labelled_faces() {
         assert_eq!(c.cells[3], 48);
         assert_eq!(c.cells[0] as i64 - c.cells[1] as i64 + c.cells[2] as i64 - c.cells[3] as i64, 1);
         let (_, labels, _) = to_dense_labels(&g);
-        let tagged = |dim: usize, v: i64| labels.of[dim].iter().filter(|l| l.get("physical") == Some(&LabelValue::Int(v))).count();
+        let tagged = |dim: usize, v: i64| {
+            labels.of[dim].iter().filter(|l| l.get("physical") == Some(&LabelValue::Int(v))).count()
+        };
         assert_eq!(tagged(3, 1), 48, "{name}");
         assert_eq!(tagged(2, 2), 48, "{name}");
         let _ = cell_labels;
@@ -111,7 +113,8 @@ fn gmsh_files_with_physical_tags_and_names() {
     let c = summary(&g);
     assert_eq!((c.darts, c.cells[0], c.cells[3]), (48 * 24, 27, 48));
     let (_, labels, _) = to_dense_labels(&g);
-    let with = |dim: usize, name: &str, v: LabelValue| labels.of[dim].iter().filter(|l| l.get(name) == Some(&v)).count();
+    let with =
+        |dim: usize, name: &str, v: LabelValue| labels.of[dim].iter().filter(|l| l.get(name) == Some(&v)).count();
     assert_eq!(with(3, "gmsh:physical", LabelValue::Int(1)), 48);
     assert_eq!(with(3, "gmsh:physical_name", LabelValue::Text("solid".into())), 48);
     assert_eq!(with(2, "gmsh:physical", LabelValue::Int(2)), 48);

@@ -54,6 +54,9 @@ fn vtk_to_gmap_to_vtk_keeps_cells_and_data() {
     }
 }
 
+/// A fixture, its points, the cell blocks meshio must find, a cell data array.
+type Case<'a> = (&'a str, usize, &'a [(&'a str, usize)], &'a str);
+
 #[test]
 fn meshio_reads_what_we_write() {
     let has = Command::new("python3").args(["-c", "import meshio"]).output().is_ok_and(|o| o.status.success());
@@ -64,7 +67,7 @@ fn meshio_reads_what_we_write() {
     let dir = tempfile::tempdir().unwrap();
     // (fixture, points, the cell blocks meshio must find, a cell data array); labelled
     // faces and vertices are cells of their own in the .vtk
-    let cases: &[(&str, usize, &[(&str, usize)], &str)] = &[
+    let cases: &[Case] = &[
         ("hex_hollow.vtu", 64, &[("hexahedron", 26), ("vertex", 64)], "region"),
         ("tet_cube.msh", 27, &[("tetra", 48), ("triangle", 48)], "gmsh:physical"),
         ("mixed.msh", 12, &[("hexahedron", 1), ("pyramid", 1), ("wedge", 1), ("tetra", 1)], "gmsh:geometrical"),
@@ -76,8 +79,11 @@ fn meshio_reads_what_we_write() {
         // meshio's legacy reader has no string arrays: texts are left out
         for per_dim in &mut labels.of {
             for l in per_dim.iter_mut() {
-                let texts: Vec<String> =
-                    l.iter().filter(|(_, v)| matches!(v, gmap_core::LabelValue::Text(_))).map(|(n, _)| n.to_string()).collect();
+                let texts: Vec<String> = l
+                    .iter()
+                    .filter(|(_, v)| matches!(v, gmap_core::LabelValue::Text(_)))
+                    .map(|(n, _)| n.to_string())
+                    .collect();
                 for n in texts {
                     l.remove(&n);
                 }

@@ -64,7 +64,9 @@ fn a_ring_of_hexahedra_is_a_solid_torus() {
 #[test]
 fn the_facade_opens_meshes_with_their_labels() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh/");
-    for (name, betti) in [("hex_hollow.vtu", vec![1, 0, 1, 0]), ("ring.msh", vec![1, 1, 0, 0]), ("mixed.vtk", vec![1, 0, 0, 0])] {
+    for (name, betti) in
+        [("hex_hollow.vtu", vec![1, 0, 1, 0]), ("ring.msh", vec![1, 1, 0, 0]), ("mixed.vtk", vec![1, 0, 0, 0])]
+    {
         let input = gmap::open(format!("{dir}{name}")).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!((input.kind(), input.dim()), ("map", 3), "{name}");
         let report = gmap::homology(&input, &gmap::HomologyOptions::default()).unwrap();

@@ -183,7 +183,7 @@ impl<'a, A: Attributes> IncrementalBuilder<'a, A> {
             self.map.link(darts[2 * j + 1], darts[(2 * j + 2) % (2 * k)], 1);
         }
         for (j, &d) in darts.iter().enumerate() {
-            let v = cycle[(j + 1) / 2 % k];
+            let v = cycle[j.div_ceil(2) % k];
             let at = self.map.dart_index(d);
             if self.vertex.len() <= at {
                 self.vertex.resize(at + 1, u32::MAX);
@@ -194,7 +194,7 @@ impl<'a, A: Attributes> IncrementalBuilder<'a, A> {
         let facet_index = self.facets;
         self.facets += 1;
         let surface = self.surface.as_mut().expect("a facet lies in a surface");
-        surface.darts.extend(darts.iter().enumerate().map(|(j, &d)| (d, cycle[(j + 1) / 2 % k])));
+        surface.darts.extend(darts.iter().enumerate().map(|(j, &d)| (d, cycle[j.div_ceil(2) % k])));
         for j in 0..k {
             let (a, b) = (darts[2 * j], darts[2 * j + 1]);
             let edge = Facet {
@@ -286,7 +286,7 @@ impl<'a, A: Attributes> IncrementalBuilder<'a, A> {
 
     /// The vertex of every dart made, by [`GMap::dart_index`] (`u32::MAX`: not made by this
     /// builder), leaving the builder without it.
-    pub(crate) fn into_vertices(&mut self) -> Vec<u32> {
+    pub(crate) fn take_vertices(&mut self) -> Vec<u32> {
         std::mem::take(&mut self.vertex)
     }
 
@@ -330,7 +330,10 @@ pub fn sew3_same_facets<A: Attributes>(map: &mut GMap<A>) -> Result<usize, MeshE
     let mut sewn = 0;
     let mut vertex_id = |map: &GMap<A>, d: DartId| -> Result<u32, MeshError> {
         let p = map.point(d).ok_or_else(|| {
-            MeshError::Map(format!("the vertex of dart {} has no point: sew3_same_facets compares points", map.dart_index(d)))
+            MeshError::Map(format!(
+                "the vertex of dart {} has no point: sew3_same_facets compares points",
+                map.dart_index(d)
+            ))
         })?;
         let n = ids.len() as u32;
         Ok(*ids.entry(p.map(f64::to_bits)).or_insert(n))
@@ -340,8 +343,9 @@ pub fn sew3_same_facets<A: Attributes>(map: &mut GMap<A>) -> Result<usize, MeshE
             continue;
         }
         // walk the face: x at corner j towards j + 1, alpha_0 x at corner j + 1
-        let (mut cycle, mut fwd, mut back): (SmallVec<[u32; 4]>, SmallVec<[DartId; 4]>, SmallVec<[DartId; 4]>) =
-            Default::default();
+        let mut cycle: SmallVec<[u32; 4]> = SmallVec::new();
+        let mut fwd: SmallVec<[DartId; 4]> = SmallVec::new();
+        let mut back: SmallVec<[DartId; 4]> = SmallVec::new();
         let mut x = d;
         let mut closed = true;
         loop {

@@ -202,7 +202,8 @@ fn standard_cell(polys: &[Vec<u32>]) -> Option<(u8, Vec<u32>)> {
             let t = tris[0];
             let p: Vec<u32> = t.iter().map(|&x| partner(x, t)).collect::<Option<_>>()?;
             let sides = (0..3).map(|j| vec![t[j], t[(j + 1) % 3], p[(j + 1) % 3], p[j]]);
-            faces_are(sides.chain([t.clone(), p.clone()]).collect()).then(|| (13, vec![t[0], t[1], t[2], p[0], p[1], p[2]]))
+            faces_are(sides.chain([t.clone(), p.clone()]).collect())
+                .then(|| (13, vec![t[0], t[1], t[2], p[0], p[1], p[2]]))
         }
         (6, 0, 6, 8) => {
             let q = quads[0];
@@ -475,7 +476,11 @@ mod tests {
     }
 
     fn det(a: Point, b: Point, c: Point, d: Point) -> f64 {
-        let (u, v, w) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - a[0], c[1] - a[1], c[2] - a[2]], [d[0] - a[0], d[1] - a[1], d[2] - a[2]]);
+        let (u, v, w) = (
+            [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+            [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+            [d[0] - a[0], d[1] - a[1], d[2] - a[2]],
+        );
         u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])
     }
 

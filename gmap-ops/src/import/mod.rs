@@ -24,9 +24,9 @@ pub use cubical::{read_cub, read_pbm, CubicalSet};
 pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
+pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 pub use vtk::{parse_vtk, read_vtk};
 pub use vtu::{parse_vtu, read_vtu};
-pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 
 /// Why an input could not be made into a G-map. Line numbers are 1-based.
 #[derive(Debug, Error)]

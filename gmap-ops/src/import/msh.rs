@@ -148,7 +148,9 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
     let mut element_data: Vec<(DataArray, usize)> = Vec::new();
     while let Some(head) = t.next() {
         let Some(name) = head.strip_prefix('$') else {
-            return Err(t.err(format!("expected a section ($MeshFormat, $Nodes…), found '{}'", shorten(head.as_bytes(), 40))));
+            return Err(
+                t.err(format!("expected a section ($MeshFormat, $Nodes…), found '{}'", shorten(head.as_bytes(), 40)))
+            );
         };
         if !seen_format && name != "MeshFormat" {
             return Err(t.err("the file does not start with $MeshFormat".into()));
@@ -177,7 +179,8 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                 t.skip_section(name)?;
             }
             "Entities" => {
-                let counts: Vec<usize> = (0..4).map(|_| t.count("a number of entities", total, 5)).collect::<Result<_, _>>()?;
+                let counts: Vec<usize> =
+                    (0..4).map(|_| t.count("a number of entities", total, 5)).collect::<Result<_, _>>()?;
                 for (dim, &n) in counts.iter().enumerate() {
                     for _ in 0..n {
                         let tag: i64 = t.num("an entity tag")?;
@@ -211,7 +214,10 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                     let start = node_tags.len();
                     for _ in 0..k {
                         let tag: u64 = t.num("a node tag")?;
-                        let index = u32::try_from(node_tags.len()).ok().filter(|&i| i != u32::MAX).ok_or_else(|| t.err("too many nodes".into()))?;
+                        let index = u32::try_from(node_tags.len())
+                            .ok()
+                            .filter(|&i| i != u32::MAX)
+                            .ok_or_else(|| t.err("too many nodes".into()))?;
                         if node_index.insert(tag, index).is_some() {
                             return Err(t.err(format!("node tag {tag} appears twice")));
                         }
@@ -251,7 +257,11 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                         let mut nodes = Vec::with_capacity(per);
                         for _ in 0..per {
                             let nt: u64 = t.num("a node tag")?;
-                            nodes.push(*node_index.get(&nt).ok_or_else(|| t.err(format!("element {et}: no node with tag {nt}")))?);
+                            nodes.push(
+                                *node_index
+                                    .get(&nt)
+                                    .ok_or_else(|| t.err(format!("element {et}: no node with tag {nt}")))?,
+                            );
                         }
                         if element_index.insert(et, mesh.cells.len()).is_some() {
                             return Err(t.err(format!("element tag {et} appears twice")));
@@ -273,8 +283,14 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                 }
                 let ni = t.count("the number of integer tags", total, 1)?;
                 let ints: Vec<i64> = (0..ni).map(|_| t.num("an integer tag")).collect::<Result<_, _>>()?;
-                let comps = usize::try_from(*ints.get(1).unwrap_or(&1)).ok().filter(|&c| (1..=9).contains(&c)).ok_or_else(|| t.err("the number of components is not 1 to 9".into()))?;
-                let count = usize::try_from(*ints.get(2).unwrap_or(&0)).ok().filter(|&c| c.saturating_mul(comps + 1) <= total / 2 + 1).ok_or_else(|| t.err("the number of values cannot be held by the file".into()))?;
+                let comps = usize::try_from(*ints.get(1).unwrap_or(&1))
+                    .ok()
+                    .filter(|&c| (1..=9).contains(&c))
+                    .ok_or_else(|| t.err("the number of components is not 1 to 9".into()))?;
+                let count = usize::try_from(*ints.get(2).unwrap_or(&0))
+                    .ok()
+                    .filter(|&c| c.saturating_mul(comps + 1) <= total / 2 + 1)
+                    .ok_or_else(|| t.err("the number of values cannot be held by the file".into()))?;
                 let label = strings.first().cloned().unwrap_or_else(|| "data".into());
                 let line = t.line;
                 let mut arrays: Vec<Vec<(u64, f64)>> = vec![Vec::with_capacity(count); comps];
@@ -288,8 +304,19 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                     let n = if nodes { node_tags.len() } else { mesh.cells.len() };
                     let mut values = vec![None; n];
                     for (tag, v) in a {
-                        let at = if nodes { node_index.get(&tag).map(|&i| i as usize) } else { element_index.get(&tag).copied() };
-                        let at = at.ok_or_else(|| ImportError::Syntax { line, message: format!("{name} '{}': no {} with tag {tag}", shorten(label.as_bytes(), 40), if nodes { "node" } else { "element" }) })?;
+                        let at = if nodes {
+                            node_index.get(&tag).map(|&i| i as usize)
+                        } else {
+                            element_index.get(&tag).copied()
+                        };
+                        let at = at.ok_or_else(|| ImportError::Syntax {
+                            line,
+                            message: format!(
+                                "{name} '{}': no {} with tag {tag}",
+                                shorten(label.as_bytes(), 40),
+                                if nodes { "node" } else { "element" }
+                            ),
+                        })?;
                         values[at] = v.is_finite().then_some(LabelValue::Real(v));
                     }
                     let name = if comps == 1 { label.clone() } else { format!("{label}.{c}") };
@@ -332,14 +359,20 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
     // data given before the elements were read are checked here
     for (mut a, line) in element_data {
         if a.values.len() != n {
-            return Err(ImportError::Syntax { line, message: format!("$ElementData '{}' comes before $Elements", shorten(a.name.as_bytes(), 40)) });
+            return Err(ImportError::Syntax {
+                line,
+                message: format!("$ElementData '{}' comes before $Elements", shorten(a.name.as_bytes(), 40)),
+            });
         }
         a.values.truncate(n);
         mesh.cell_data.push(a);
     }
     for a in &node_data {
         if a.values.len() != mesh.points.len() {
-            return Err(ImportError::Format(format!("$NodeData '{}' comes before $Nodes", shorten(a.name.as_bytes(), 40))));
+            return Err(ImportError::Format(format!(
+                "$NodeData '{}' comes before $Nodes",
+                shorten(a.name.as_bytes(), 40)
+            )));
         }
     }
     mesh.point_data = node_data;

@@ -350,10 +350,10 @@ impl<'a> Cursor<'a> {
 /// Parses a count.
 fn count(tok: Option<&[u8]>, what: &str, line: usize) -> Result<usize, ImportError> {
     let t = tok.ok_or_else(|| ImportError::Syntax { line, message: format!("missing {what}") })?;
-    std::str::from_utf8(t).ok().and_then(|s| s.parse::<usize>().ok()).ok_or_else(|| ImportError::Syntax {
-        line,
-        message: format!("{what} '{}' is not a count", shorten(t, 40)),
-    })
+    std::str::from_utf8(t)
+        .ok()
+        .and_then(|s| s.parse::<usize>().ok())
+        .ok_or_else(|| ImportError::Syntax { line, message: format!("{what} '{}' is not a count", shorten(t, 40)) })
 }
 
 fn words(line: &[u8]) -> Vec<&[u8]> {
@@ -364,6 +364,10 @@ fn text(w: &[u8]) -> String {
     String::from_utf8_lossy(w).into_owned()
 }
 
+/// The cell list or the connectivity, the offsets (version 5), the line of `CELLS` and the
+/// count of its header.
+type CellList = (Vec<Value>, Option<Vec<Value>>, usize, usize);
+
 /// Parses a legacy VTK unstructured grid (see the module documentation).
 pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut c = Cursor { b: bytes, pos: 0, line: 1, head: 1 };
@@ -371,10 +375,10 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let version = header
         .strip_prefix(b"# vtk DataFile Version ")
         .ok_or_else(|| ImportError::Syntax { line: 1, message: "expected '# vtk DataFile Version x.y'".into() })?;
-    let major: u32 = std::str::from_utf8(version)
-        .ok()
-        .and_then(|v| v.trim().split('.').next()?.parse().ok())
-        .ok_or_else(|| ImportError::Syntax { line: 1, message: format!("version '{}' is not a number", shorten(version, 20)) })?;
+    let major: u32 =
+        std::str::from_utf8(version).ok().and_then(|v| v.trim().split('.').next()?.parse().ok()).ok_or_else(|| {
+            ImportError::Syntax { line: 1, message: format!("version '{}' is not a number", shorten(version, 20)) }
+        })?;
     let _title = c.raw_line();
     let fl = c.line;
     let binary = match c.next_line().map(|l| l.to_ascii_uppercase()) {
@@ -384,8 +388,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     };
     let mut mesh = Mesh::default();
     let mut points: Option<Vec<Point>> = None;
-    // (the cell list or the connectivity, the offsets, its line, the count of its header)
-    let mut conn: Option<(Vec<Value>, Option<Vec<Value>>, usize, usize)> = None;
+    let mut conn: Option<CellList> = None;
     let mut types: Option<(Vec<Value>, usize)> = None;
     let mut active: Option<(bool, usize)> = None; // (cell data?, count)
     let mut dataset = false;
@@ -402,7 +405,10 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
             b"DATASET" => {
                 let kind = w.get(1).map(|k| text(k).to_ascii_uppercase()).unwrap_or_default();
                 if kind != "UNSTRUCTURED_GRID" {
-                    return Err(err(format!("DATASET {} is not read: only UNSTRUCTURED_GRID", shorten(kind.as_bytes(), 40))));
+                    return Err(err(format!(
+                        "DATASET {} is not read: only UNSTRUCTURED_GRID",
+                        shorten(kind.as_bytes(), 40)
+                    )));
                 }
                 dataset = true;
             }
@@ -446,7 +452,9 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
                 let name = text(w.get(1).ok_or_else(|| err("missing the array name".into()))?);
                 let name = decode_text(name.as_bytes());
                 let (comps, ty) = match key.as_slice() {
-                    b"SCALARS" => (w.get(3).map_or(Ok(1), |t| count(Some(t), "the number of components", ln))?, ty_of(w.get(2))?),
+                    b"SCALARS" => {
+                        (w.get(3).map_or(Ok(1), |t| count(Some(t), "the number of components", ln))?, ty_of(w.get(2))?)
+                    }
                     b"VECTORS" | b"NORMALS" => (3, ty_of(w.get(2))?),
                     b"TENSORS" => (9, ty_of(w.get(2))?),
                     b"TEXTURE_COORDINATES" => (count(w.get(2).copied(), "the dimension", ln)?, ty_of(w.get(3))?),
@@ -548,14 +556,20 @@ fn read_field_array(c: &mut Cursor, binary: bool, keep: Option<()>) -> Result<Op
     let ln = c.head;
     let w = words(l);
     if w.len() < 4 {
-        return Err(ImportError::Syntax { line: ln, message: format!("expected 'name components tuples type', found '{}'", shorten(l, 40)) });
+        return Err(ImportError::Syntax {
+            line: ln,
+            message: format!("expected 'name components tuples type', found '{}'", shorten(l, 40)),
+        });
     }
     let name = decode_text(w[0]);
     let comps = count(Some(w[1]), "the number of components", ln)?;
     let tuples = count(Some(w[2]), "the number of tuples", ln)?;
-    let ty = Scalar::parse(&text(w[3]))
-        .ok_or_else(|| ImportError::Syntax { line: ln, message: format!("unknown data type '{}'", shorten(w[3], 40)) })?;
-    let total = comps.checked_mul(tuples).ok_or_else(|| ImportError::Syntax { line: ln, message: "too many values".into() })?;
+    let ty = Scalar::parse(&text(w[3])).ok_or_else(|| ImportError::Syntax {
+        line: ln,
+        message: format!("unknown data type '{}'", shorten(w[3], 40)),
+    })?;
+    let total =
+        comps.checked_mul(tuples).ok_or_else(|| ImportError::Syntax { line: ln, message: "too many values".into() })?;
     let v = c.values(total, ty, binary, &name)?;
     let save = (c.pos, c.line);
     match c.next_line() {
@@ -575,7 +589,12 @@ fn skip_metadata(c: &mut Cursor) {
 }
 
 /// Cuts the cell list into cells: classic (`count ids…` per cell) or with offsets.
-fn cells_of(list: &[Value], offsets: Option<&[Value]>, kinds: &[CellKind], line: usize) -> Result<Vec<MeshCell>, ImportError> {
+fn cells_of(
+    list: &[Value],
+    offsets: Option<&[Value]>,
+    kinds: &[CellKind],
+    line: usize,
+) -> Result<Vec<MeshCell>, ImportError> {
     let err = |m: String| ImportError::Syntax { line, message: m };
     let ids: Vec<u32> = list
         .iter()
@@ -596,7 +615,10 @@ fn cells_of(list: &[Value], offsets: Option<&[Value]>, kinds: &[CellKind], line:
             for (k, &kind) in kinds.iter().enumerate() {
                 let (a, b) = (off[k], off[k + 1]);
                 if a > b || b > ids.len() {
-                    return Err(err(format!("cell {k}: offsets {a}..{b} outside the {} connectivity values", ids.len())));
+                    return Err(err(format!(
+                        "cell {k}: offsets {a}..{b} outside the {} connectivity values",
+                        ids.len()
+                    )));
                 }
                 if kind == CellKind::Polyhedron {
                     return Err(err(format!("cell {k}: polyhedra of version 5 files are not read")));
@@ -607,8 +629,12 @@ fn cells_of(list: &[Value], offsets: Option<&[Value]>, kinds: &[CellKind], line:
         None => {
             let mut at = 0;
             for (k, &kind) in kinds.iter().enumerate() {
-                let n = *ids.get(at).ok_or_else(|| err(format!("the cell list ends before cell {k} of {}", kinds.len())))? as usize;
-                let body = ids.get(at + 1..at + 1 + n).ok_or_else(|| err(format!("cell {k}: {n} values announced past the end of the list")))?;
+                let n =
+                    *ids.get(at).ok_or_else(|| err(format!("the cell list ends before cell {k} of {}", kinds.len())))?
+                        as usize;
+                let body = ids
+                    .get(at + 1..at + 1 + n)
+                    .ok_or_else(|| err(format!("cell {k}: {n} values announced past the end of the list")))?;
                 at += 1 + n;
                 if kind == CellKind::Polyhedron {
                     cells.push(polyhedron(body).map_err(|m| err(format!("cell {k} (polyhedron): {m}")))?);
@@ -626,9 +652,15 @@ fn cells_of(list: &[Value], offsets: Option<&[Value]>, kinds: &[CellKind], line:
 
 /// Checks that every data array has a value per point or per cell.
 pub(crate) fn check_data(mesh: &Mesh) -> Result<(), ImportError> {
-    for (arrays, n, what) in [(&mesh.point_data, mesh.points.len(), "points"), (&mesh.cell_data, mesh.cells.len(), "cells")] {
+    for (arrays, n, what) in
+        [(&mesh.point_data, mesh.points.len(), "points"), (&mesh.cell_data, mesh.cells.len(), "cells")]
+    {
         if let Some(a) = arrays.iter().find(|a| a.values.len() != n) {
-            return Err(ImportError::Format(format!("data array '{}' has {} values for {n} {what}", shorten(a.name.as_bytes(), 40), a.values.len())));
+            return Err(ImportError::Format(format!(
+                "data array '{}' has {} values for {n} {what}",
+                shorten(a.name.as_bytes(), 40),
+                a.values.len()
+            )));
         }
     }
     Ok(())

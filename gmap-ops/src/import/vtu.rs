@@ -75,7 +75,10 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
     let last = word(l, header, 2)?;
     let total = match nb {
         0 => 0,
-        _ => (nb - 1).checked_mul(bs).and_then(|t| t.checked_add(if last == 0 { bs } else { last })).ok_or("sizes overflow")?,
+        _ => (nb - 1)
+            .checked_mul(bs)
+            .and_then(|t| t.checked_add(if last == 0 { bs } else { last }))
+            .ok_or("sizes overflow")?,
     };
     if total != want {
         return Err(format!("the compressed blocks hold {total} bytes, the array needs {want}"));
@@ -84,7 +87,8 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
     let mut at = 0usize;
     for b in 0..nb {
         let c = word(l, header, 3 + b)?;
-        let end = at.checked_add(c).filter(|&e| e <= data.len()).ok_or_else(|| format!("block {b} runs past the data"))?;
+        let end =
+            at.checked_add(c).filter(|&e| e <= data.len()).ok_or_else(|| format!("block {b} runs past the data"))?;
         let size = if b + 1 == nb && last != 0 { last } else { bs };
         let before = out.len();
         flate2::read::ZlibDecoder::new(&data[at..end])
@@ -104,7 +108,11 @@ fn raw_block(l: &Layout, b: &[u8], want: usize) -> Result<Vec<u8>, String> {
     let hs = l.header.size();
     if l.zlib {
         let nb = word(l, b, 0)?;
-        let hlen = nb.checked_add(3).and_then(|w| w.checked_mul(hs)).filter(|&h| h <= b.len()).ok_or("the block header runs past the data")?;
+        let hlen = nb
+            .checked_add(3)
+            .and_then(|w| w.checked_mul(hs))
+            .filter(|&h| h <= b.len())
+            .ok_or("the block header runs past the data")?;
         inflate(l, &b[..hlen], &b[hlen..], want)
     } else {
         let n = word(l, b, 0)?;
@@ -157,7 +165,8 @@ fn array(
     line: usize,
 ) -> Result<(Scalar, Vec<Value>), ImportError> {
     let name = node.attribute("Name").unwrap_or("");
-    let err = |m: String| ImportError::Syntax { line, message: format!("DataArray '{}': {m}", shorten(name.as_bytes(), 40)) };
+    let err =
+        |m: String| ImportError::Syntax { line, message: format!("DataArray '{}': {m}", shorten(name.as_bytes(), 40)) };
     let ty_name = node.attribute("type").ok_or_else(|| err("no type".into()))?;
     let ty = Scalar::parse(ty_name)
         .filter(|t| *t != Scalar::Text)
@@ -218,17 +227,21 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let (xml_bytes, app) = match find(bytes, b"<AppendedData") {
         Some(at) => {
             let line = 1 + bytes[..at].iter().filter(|&&c| c == b'\n').count();
-            let tag_end = at + bytes[at..].iter().position(|&c| c == b'>').ok_or_else(|| ImportError::Syntax {
-                line,
-                message: "the AppendedData tag is not closed".into(),
-            })?;
+            let tag_end = at
+                + bytes[at..].iter().position(|&c| c == b'>').ok_or_else(|| ImportError::Syntax {
+                    line,
+                    message: "the AppendedData tag is not closed".into(),
+                })?;
             let tag = String::from_utf8_lossy(&bytes[at..tag_end]);
             let base64 = !tag.contains("\"raw\"");
-            let under = tag_end + 1 + bytes[tag_end + 1..].iter().position(|&c| c == b'_').ok_or_else(|| ImportError::Syntax {
-                line,
-                message: "the appended data do not start with '_'".into(),
-            })?;
-            let end = bytes.windows(15).rposition(|w| w == b"</AppendedData>").filter(|&e| e > under).unwrap_or(bytes.len());
+            let under = tag_end
+                + 1
+                + bytes[tag_end + 1..].iter().position(|&c| c == b'_').ok_or_else(|| ImportError::Syntax {
+                    line,
+                    message: "the appended data do not start with '_'".into(),
+                })?;
+            let end =
+                bytes.windows(15).rposition(|w| w == b"</AppendedData>").filter(|&e| e > under).unwrap_or(bytes.len());
             let mut xml = bytes[..at].to_vec();
             xml.extend_from_slice(b"</VTKFile>");
             (xml, Some(Appended { bytes: &bytes[under + 1..end], base64 }))
@@ -272,7 +285,10 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
             Some(other) => {
                 return Err(ImportError::Syntax {
                     line: line_of(root),
-                    message: format!("compressor '{}' is not read (vtkZLibDataCompressor)", shorten(other.as_bytes(), 40)),
+                    message: format!(
+                        "compressor '{}' is not read (vtkZLibDataCompressor)",
+                        shorten(other.as_bytes(), 40)
+                    ),
                 })
             }
         },
@@ -315,17 +331,21 @@ fn read_piece(
     if nc > 0 {
         let cells = child(piece, "Cells").ok_or_else(|| missing("Cells element", pl))?;
         let cl = line_of(cells);
-        let named = |name: &str| cells.children().find(|c| c.has_tag_name("DataArray") && c.attribute("Name") == Some(name));
+        let named =
+            |name: &str| cells.children().find(|c| c.has_tag_name("DataArray") && c.attribute("Name") == Some(name));
         let get = |name: &str, count: usize| -> Result<Vec<Value>, ImportError> {
             let da = named(name).ok_or_else(|| missing(&format!("DataArray '{name}' in Cells"), cl))?;
             Ok(array(da, count, l, app, line_of(da))?.1)
         };
         let index = |v: &Value, what: &str, k: usize, line: usize| -> Result<usize, ImportError> {
-            v.index().map(|x| x as usize).ok_or_else(|| ImportError::Syntax { line, message: format!("{what} value {k} is not an index") })
+            v.index()
+                .map(|x| x as usize)
+                .ok_or_else(|| ImportError::Syntax { line, message: format!("{what} value {k} is not an index") })
         };
         let offsets = get("offsets", nc)?;
         let ol = named("offsets").map_or(cl, line_of);
-        let offsets: Vec<usize> = offsets.iter().enumerate().map(|(k, v)| index(v, "offsets", k, ol)).collect::<Result<_, _>>()?;
+        let offsets: Vec<usize> =
+            offsets.iter().enumerate().map(|(k, v)| index(v, "offsets", k, ol)).collect::<Result<_, _>>()?;
         let total = *offsets.last().unwrap_or(&0);
         let conn = get("connectivity", total)?;
         let types = get("types", nc)?;
@@ -389,7 +409,8 @@ fn read_piece(
                 })?,
                 None => 1,
             };
-            let total = n.checked_mul(comps).ok_or_else(|| ImportError::Syntax { line, message: "too many values".into() })?;
+            let total =
+                n.checked_mul(comps).ok_or_else(|| ImportError::Syntax { line, message: "too many values".into() })?;
             let (ty, v) = array(da, total, l, app, line)?;
             let target = if cell { &mut mesh.cell_data } else { &mut mesh.point_data };
             for a in data_arrays(&name, comps, ty, v) {

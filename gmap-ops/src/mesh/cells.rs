@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use gmap_core::{DartId, DenseMap, LabelValue, Labels, LabelledGMap, Point};
+use gmap_core::{DartId, DenseMap, LabelValue, LabelledGMap, Labels, Point};
 use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 
@@ -224,7 +224,9 @@ impl Mesh {
                 let mut odd: Vec<((u32, u32), u32)> = edges.into_iter().filter(|&(_, k)| k != 2).collect();
                 odd.sort_unstable();
                 if let Some(&((a, b), k)) = odd.first() {
-                    return Err(bad(format!("its edge {a}-{b} lies in {k} of its faces (the faces must close: two each)")));
+                    return Err(bad(format!(
+                        "its edge {a}-{b} lies in {k} of its faces (the faces must close: two each)"
+                    )));
                 }
             }
         }
@@ -292,7 +294,7 @@ impl Mesh {
             if top == 3 {
                 check_conforming(b.face_matcher()).map_err(renumber)?;
             }
-            vertex = b.into_vertices();
+            vertex = b.take_vertices();
             if top == 3 {
                 faces_of_top = Some(b.into_faces());
             }
@@ -337,7 +339,7 @@ impl Mesh {
     }
 
     /// Finds the lower cells in the map and sets the labels of every cell and point.
-        fn label(
+    fn label(
         &self,
         g: &mut LabelledGMap,
         ids: &[DartId],
@@ -393,7 +395,10 @@ impl Mesh {
             let mut key: SmallVec<[u32; 4]> = c.nodes.iter().copied().collect();
             key.sort_unstable();
             if let Some(&first) = lower_seen.get(&(dim, key.clone())) {
-                return Err(MeshError::RepeatedCell { cells: [first, i], vertices: c.nodes.iter().map(|&v| v as u64).collect() });
+                return Err(MeshError::RepeatedCell {
+                    cells: [first, i],
+                    vertices: c.nodes.iter().map(|&v| v as u64).collect(),
+                });
             }
             lower_seen.insert((dim, key), i);
             cell_dart[i] = Some(d);
@@ -404,7 +409,9 @@ impl Mesh {
                 return a.values.iter().zip(&self.cells).all(|(v, c)| *v == Some(LabelValue::Int(c.kind.dim() as i64)));
             }
             a.name.strip_suffix(".id").is_some_and(|base| {
-                self.cell_data.iter().any(|b| b.name == base && b.values.iter().flatten().all(|v| matches!(v, LabelValue::Text(_))))
+                self.cell_data
+                    .iter()
+                    .any(|b| b.name == base && b.values.iter().flatten().all(|v| matches!(v, LabelValue::Text(_))))
             })
         };
         let columns: Vec<&DataArray> = self.cell_data.iter().filter(|a| !skip(a)).collect();

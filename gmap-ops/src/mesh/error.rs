@@ -163,7 +163,9 @@ impl MeshError {
                 MeshError::NonConforming { cells: cells.map(&f), first, second, shared }
             }
             MeshError::BadCell { cell, kind, reason } => MeshError::BadCell { cell: f(cell), kind, reason },
-            MeshError::NoSuchVertex { cell, vertex, points } => MeshError::NoSuchVertex { cell: f(cell), vertex, points },
+            MeshError::NoSuchVertex { cell, vertex, points } => {
+                MeshError::NoSuchVertex { cell: f(cell), vertex, points }
+            }
             MeshError::LooseCell { cell, kind, vertices, top } => {
                 MeshError::LooseCell { cell: f(cell), kind, vertices, top }
             }
@@ -177,17 +179,25 @@ impl MeshError {
     pub fn renumber_vertices(self, f: impl Fn(u64) -> u64) -> Self {
         let map = |v: Vec<u64>| -> Vec<u64> { v.into_iter().map(&f).collect() };
         match self {
-            MeshError::FacetInManyCells { dim, vertices, cells } => MeshError::FacetInManyCells { dim, vertices: map(vertices), cells },
-            MeshError::FacetOrder { cells, first, second } => MeshError::FacetOrder { cells, first: map(first), second: map(second) },
+            MeshError::FacetInManyCells { dim, vertices, cells } => {
+                MeshError::FacetInManyCells { dim, vertices: map(vertices), cells }
+            }
+            MeshError::FacetOrder { cells, first, second } => {
+                MeshError::FacetOrder { cells, first: map(first), second: map(second) }
+            }
             MeshError::NonConforming { cells, first, second, shared } => MeshError::NonConforming {
                 cells,
                 first: map(first),
                 second: map(second),
                 shared: shared.into_iter().map(|e| e.map(&f)).collect(),
             },
-            MeshError::LooseCell { cell, kind, vertices, top } => MeshError::LooseCell { cell, kind, vertices: map(vertices), top },
+            MeshError::LooseCell { cell, kind, vertices, top } => {
+                MeshError::LooseCell { cell, kind, vertices: map(vertices), top }
+            }
             MeshError::RepeatedCell { cells, vertices } => MeshError::RepeatedCell { cells, vertices: map(vertices) },
-            MeshError::Pinched { what, vertices, pieces } => MeshError::Pinched { what, vertices: map(vertices), pieces },
+            MeshError::Pinched { what, vertices, pieces } => {
+                MeshError::Pinched { what, vertices: map(vertices), pieces }
+            }
             other => other,
         }
     }

@@ -240,12 +240,21 @@ mod tests {
         assert_eq!(m.offer(facet(0, &[1, 2, 3, 4])).unwrap(), Offer::Waiting);
         // reversed, starting at 4: corner 0 of the first (vertex 1, towards 2) is corner 3
         // of the second (vertex 1) towards its corner 2 (vertex 2): the back dart
-        assert_eq!(m.offer(facet(1, &[4, 3, 2, 1])).unwrap(), Offer::Matched { owner: 0, darts: ((0, 0, true), (1, 3, false)) });
+        assert_eq!(
+            m.offer(facet(1, &[4, 3, 2, 1])).unwrap(),
+            Offer::Matched { owner: 0, darts: ((0, 0, true), (1, 3, false)) }
+        );
         let e = m.offer(facet(2, &[2, 3, 4, 1])).unwrap_err();
-        assert_eq!(e.to_string(), "the face with vertices [1, 2, 3, 4] lies in 3 cells ([0, 1, 2]): at most two cells may share it");
+        assert_eq!(
+            e.to_string(),
+            "the face with vertices [1, 2, 3, 4] lies in 3 cells ([0, 1, 2]): at most two cells may share it"
+        );
         // same direction
         assert_eq!(m.offer(facet(3, &[7, 8, 9])).unwrap(), Offer::Waiting);
-        assert_eq!(m.offer(facet(4, &[9, 7, 8])).unwrap(), Offer::Matched { owner: 3, darts: ((3, 0, true), (4, 1, true)) });
+        assert_eq!(
+            m.offer(facet(4, &[9, 7, 8])).unwrap(),
+            Offer::Matched { owner: 3, darts: ((3, 0, true), (4, 1, true)) }
+        );
         // a bow tie on the same vertices
         m.offer(facet(5, &[10, 11, 12, 13])).unwrap();
         assert_eq!(
