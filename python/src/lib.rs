@@ -1,0 +1,489 @@
+//! `gmap._gmap`: the compiled half of the `gmap` Python package.
+//!
+//! Python-facing types and functions only; the computations are the workspace crates',
+//! run with the GIL released. Modules:
+//! * [`errors`]: the exception classes and the mapping of the library's errors;
+//! * [`compute`]: homology of every input kind with the command line's routes and names;
+//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex`, files by extension;
+//! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Instant;
+
+use numpy::{PyArrayDescrMethods, PyArray1, PyArrayMethods, ToPyArray};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+
+mod compute;
+mod errors;
+mod gmapobj;
+mod objects;
+
+use compute::{CellName, Cubes, Input, Method, Options, Report, Via};
+use errors::{Failure, Res};
+use gmapobj::PyGMap;
+use objects::{Loaded, PyArchComplex, PyCubicalSet, PySimplicialComplex};
+
+/// One summand's representative cycle, in the input's own terms.
+#[pyclass(name = "Generator", module = "gmap", frozen, get_all)]
+pub struct PyGenerator {
+    /// the dimension k of the homology group
+    dim: usize,
+    /// 0 for a free summand (Z, or the field), t for Z/t (an exact int)
+    order: PyObject,
+    /// the cells of the chain: tuples of vertex labels (simplicial complexes), a uint32
+    /// array of darts (G-maps), an int64 array (m, d) of cubes' minimal vertices (cubical
+    /// sets), a uint64 array of region ids (architectural complexes)
+    cells: PyObject,
+    /// for cubical sets: a uint8 array (m, d), 1 along the axes a cell spans; else None
+    extents: PyObject,
+    /// the coefficient of each cell, an int64 array
+    coefficients: PyObject,
+}
+
+#[pymethods]
+impl PyGenerator {
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "<gmap.Generator dim={} order={} cells={}>",
+            self.dim,
+            self.order.bind(py),
+            self.coefficients.bind(py).len().unwrap_or(0)
+        )
+    }
+}
+
+/// The homology groups of an input: H_k = Z^betti[k] + Z/t for t in torsion[k].
+#[pyclass(name = "Homology", module = "gmap", frozen)]
+pub struct PyHomology {
+    report: Report,
+    generators: Option<Py<PyList>>,
+}
+
+fn natural_to_py(py: Python<'_>, n: &gmap_homology::Natural) -> PyResult<PyObject> {
+    Ok(match n.to_u64() {
+        Some(v) => v.into_pyobject(py)?.into_any().unbind(),
+        None => n.to_biguint().into_pyobject(py)?.into_any().unbind(),
+    })
+}
+
+fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> {
+    let Some(gens) = &r.generators else { return Ok(None) };
+    let out = PyList::empty(py);
+    for g in gens {
+        let coefficients = g.coefficients.to_pyarray(py).into_any().unbind();
+        let (cells, extents): (PyObject, PyObject) = match g.cells.first() {
+            Some(CellName::Cube { min, .. }) => {
+                let d = min.len();
+                let mut lo = Vec::with_capacity(g.cells.len() * d);
+                let mut ex = Vec::with_capacity(g.cells.len() * d);
+                for c in &g.cells {
+                    if let CellName::Cube { min, extent } = c {
+                        lo.extend_from_slice(min);
+                        ex.extend_from_slice(extent);
+                    }
+                }
+                let n = g.cells.len();
+                (
+                    PyArray1::from_vec(py, lo).reshape([n, d])?.into_any().unbind(),
+                    PyArray1::from_vec(py, ex).reshape([n, d])?.into_any().unbind(),
+                )
+            }
+            Some(CellName::Dart { .. }) => {
+                let darts: Vec<u32> =
+                    g.cells.iter().map(|c| if let CellName::Dart { dart, .. } = c { *dart } else { 0 }).collect();
+                (darts.to_pyarray(py).into_any().unbind(), py.None())
+            }
+            Some(CellName::Region(_)) => {
+                let ids: Vec<u64> =
+                    g.cells.iter().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
+                (ids.to_pyarray(py).into_any().unbind(), py.None())
+            }
+            _ => {
+                let l = PyList::empty(py);
+                for c in &g.cells {
+                    if let CellName::Simplex(v) = c {
+                        l.append(PyTuple::new(py, v)?)?;
+                    }
+                }
+                (l.into_any().unbind(), py.None())
+            }
+        };
+        let x = PyGenerator { dim: g.dim, order: natural_to_py(py, &g.order)?, cells, extents, coefficients };
+        out.append(Py::new(py, x)?)?;
+    }
+    Ok(Some(out.unbind()))
+}
+
+#[pymethods]
+impl PyHomology {
+    /// The Betti numbers b_0..b_n (ranks over Z, dimensions over Z/p).
+    #[getter]
+    fn betti(&self) -> Vec<usize> {
+        self.report.homology.betti.clone()
+    }
+
+    /// The torsion coefficients of each H_k (invariant factors, each dividing the next), as
+    /// Python ints, exact at any size; empty lists over a field.
+    #[getter]
+    fn torsion(&self, py: Python<'_>) -> PyResult<Vec<Vec<PyObject>>> {
+        self.report.homology.torsion.iter().map(|t| t.iter().map(|n| natural_to_py(py, n)).collect()).collect()
+    }
+
+    /// The dimension of the input.
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.report.dim
+    }
+
+    /// 'cellular' or 'simplicial'.
+    #[getter]
+    fn method(&self) -> &'static str {
+        match self.report.method {
+            Method::Cellular => "cellular",
+            Method::Simplicial => "simplicial",
+        }
+    }
+
+    /// For a simplicial complex: 'direct' (every face a cell) or 'gmap' (through its
+    /// G-map); None for other inputs.
+    #[getter]
+    fn route(&self) -> Option<&'static str> {
+        self.report.route.map(compute::route_name)
+    }
+
+    /// 'Z' or 'Z/p'.
+    #[getter]
+    fn coefficients(&self) -> String {
+        self.report.homology.coefficients.to_string()
+    }
+
+    /// The alternating sum of the Betti numbers.
+    #[getter]
+    fn euler_characteristic(&self) -> i64 {
+        self.report.homology.euler_characteristic()
+    }
+
+    /// A list of Generator (one per summand: the free ones, then one per torsion
+    /// coefficient, dimension by dimension) when asked with generators=True, else None.
+    #[getter]
+    fn generators(&self, py: Python<'_>) -> Option<Py<PyList>> {
+        self.generators.as_ref().map(|g| g.clone_ref(py))
+    }
+
+    /// The groups as text: '(Z, 0, Z)'.
+    fn __str__(&self) -> String {
+        self.report.homology.to_string()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<gmap.Homology {} over {}>", self.report.homology, self.report.homology.coefficients)
+    }
+
+    /// The text of H_k: 'Z^2 + Z/2'.
+    fn group(&self, k: usize) -> String {
+        self.report.homology.group_string(k)
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.downcast::<PyHomology>().is_ok_and(|o| o.get().report.homology == self.report.homology)
+    }
+
+    /// The object `gmap homology --json` prints, as a dict (torsion and orders as ints).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = self.report.to_json().to_string();
+        py.import("json")?.call_method1("loads", (text,))
+    }
+
+    /// The JSON text of `to_dict()`, as `gmap homology --json` prints it.
+    fn to_json(&self) -> String {
+        self.report.to_json().to_string()
+    }
+}
+
+fn parse_method(method: Option<&str>) -> PyResult<(Method, Option<Via>)> {
+    Ok(match method {
+        None | Some("cellular") => (Method::Cellular, None),
+        Some("simplicial") => (Method::Simplicial, None),
+        Some("direct") => (Method::Cellular, Some(Via::Direct)),
+        Some("gmap") => (Method::Cellular, Some(Via::Gmap)),
+        Some(m) => {
+            return Err(Failure::input(format!(
+                "method {m:?}: expected 'cellular', 'simplicial' (for G-maps), 'direct' or 'gmap' (the route of a simplicial complex)"
+            ))
+            .into())
+        }
+    })
+}
+
+fn field_of(field: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
+    match field {
+        None => Ok(None),
+        Some(f) if f.is_none() => Ok(None),
+        Some(f) => match f.extract::<u64>() {
+            Ok(p) => Ok(Some(p)),
+            Err(_) => Err(Failure::input(format!(
+                "field {}: the field must be Z/P for a prime P below 2^31",
+                f.repr().map(|r| r.to_string()).unwrap_or_default()
+            ))
+            .into()),
+        },
+    }
+}
+
+fn finish(py: Python<'_>, r: Res<Report>) -> PyResult<PyHomology> {
+    let report = r?;
+    let generators = generators_to_py(py, &report)?;
+    Ok(PyHomology { report, generators })
+}
+
+fn homology_of_loaded(py: Python<'_>, l: &Loaded, o: &Options, name: &str) -> PyResult<PyHomology> {
+    let r = py.allow_threads(|| match l {
+        Loaded::Map(g) => {
+            let (d, _) = g.to_dense();
+            compute::homology(&Input::Map { map: &d, sc: None }, o, name)
+        }
+        Loaded::Simplicial(sc) => compute::homology(&Input::Simplicial(sc), o, name),
+        Loaded::Cubical(s) => compute::homology(
+            &Input::Cubical(Cubes { shape: s.shape(), bits: s.bits(), min: s.min(), reversed: false }),
+            o,
+            name,
+        ),
+        Loaded::Arch(x) => compute::homology(&Input::Arch(x), o, name),
+    });
+    finish(py, r)
+}
+
+/// homology(x, *, field=None, generators=False, method=None, periodic=False)
+///
+/// The homology groups of `x`: a path (str or os.PathLike) to any file `gmap` reads, a
+/// GMap, SimplicialComplex, CubicalSet or ArchComplex, a sequence of facets (sequences of
+/// non-negative ints), a 2-D integer numpy array of facets (one a row), or a numpy array of
+/// bool, uint8 or float dtype (or any dtype with 1 or 3 to 8 axes) as a cubical set
+/// (nonzero = the cube is present). `field`: a prime p for Z/p coefficients (None: Z).
+/// `generators`: compute a representative cycle per summand. `method`: 'cellular'
+/// (default) or 'simplicial' for G-maps; 'direct' (default) or 'gmap' for the route of a
+/// simplicial complex. `periodic`: for cubical sets, identify the opposite faces of the box.
+#[pyfunction]
+#[pyo3(signature = (x, *, field = None, generators = false, method = None, periodic = false))]
+fn homology(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    field: Option<&Bound<'_, PyAny>>,
+    generators: bool,
+    method: Option<&str>,
+    periodic: bool,
+) -> PyResult<PyHomology> {
+    let (method, via) = parse_method(method)?;
+    let o = Options { field: field_of(field)?, generators, method, via, periodic };
+    // facets as a list: the common small case first
+    if let Ok(list) = x.downcast::<PyList>() {
+        let facets = objects::facets_from_py(list)?;
+        let r = py.allow_threads(|| {
+            let sc = objects::complex_of(facets)?;
+            compute::homology(&Input::Simplicial(&sc), &o, "facets")
+        });
+        return finish(py, r);
+    }
+    if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
+        let path: PathBuf = x.extract()?;
+        let name = path.display().to_string();
+        let l = py.allow_threads(|| objects::load(&path))?;
+        return homology_of_loaded(py, &l, &o, &name);
+    }
+    if let Ok(m) = x.downcast::<PyGMap>() {
+        let mut b = m.borrow_mut();
+        let d = b.dense();
+        let sc = b.sc.clone();
+        drop(b);
+        let r = py.allow_threads(|| compute::homology(&Input::Map { map: &d, sc: sc.as_deref() }, &o, "the map"));
+        return finish(py, r);
+    }
+    if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+        let s = s.get();
+        let name = s.name.clone().unwrap_or_else(|| "the complex".into());
+        let sc = s.sc.clone();
+        let r = py.allow_threads(|| compute::homology(&Input::Simplicial(&sc), &o, &name));
+        return finish(py, r);
+    }
+    if let Ok(c) = x.downcast::<PyCubicalSet>() {
+        let c = c.get();
+        let name = c.name.clone().unwrap_or_else(|| "the cubical set".into());
+        let cubes = Cubes { shape: &c.shape, bits: &c.bits, min: &c.min, reversed: c.reversed };
+        let r = py.allow_threads(|| compute::homology(&Input::Cubical(cubes), &o, &name));
+        return finish(py, r);
+    }
+    if let Ok(a) = x.downcast::<PyArchComplex>() {
+        let a = a.get();
+        let name = a.name.clone().unwrap_or_else(|| "the complex".into());
+        let xc = a.x.clone();
+        let r = py.allow_threads(|| compute::homology(&Input::Arch(&xc), &o, &name));
+        return finish(py, r);
+    }
+    if let Ok(arr) = x.downcast::<numpy::PyUntypedArray>() {
+        use numpy::PyUntypedArrayMethods;
+        let kind = arr.dtype().kind();
+        let facets = arr.ndim() == 2 && matches!(kind, b'i' | b'u') && arr.dtype().itemsize() > 1;
+        if facets {
+            let np = py.import("numpy")?;
+            let a = if kind == b'u' && arr.dtype().itemsize() == 8 {
+                x.clone()
+            } else {
+                np.call_method1("ascontiguousarray", (x, "int64"))?
+            };
+            let facets = objects::facets_from_py(&a)?;
+            let r = py.allow_threads(|| {
+                let sc = objects::complex_of(facets)?;
+                compute::homology(&Input::Simplicial(&sc), &o, "facets")
+            });
+            return finish(py, r);
+        }
+        let (shape, view, reversed) = objects::array_bits(x)?;
+        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?;
+        let min = vec![0i64; shape.len()];
+        let cubes = Cubes { shape: &shape, bits, min: &min, reversed };
+        let r = py.allow_threads(|| compute::homology(&Input::Cubical(cubes), &o, "the cubical array"));
+        return finish(py, r);
+    }
+    // any other sequence of facets (tuples, generators of lists, …)
+    let facets = objects::facets_from_py(x)?;
+    let r = py.allow_threads(|| {
+        let sc = objects::complex_of(facets)?;
+        compute::homology(&Input::Simplicial(&sc), &o, "facets")
+    });
+    finish(py, r)
+}
+
+/// open(path): what the file holds: a GMap (.gmap, .moka, .off), a SimplicialComplex
+/// (.facets, .lex, FILE.lex#name), a CubicalSet (.cub, .pbm) or an ArchComplex (.json).
+#[pyfunction]
+fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
+    let name = Some(path.display().to_string());
+    let l = py.allow_threads(|| objects::load(&path))?;
+    Ok(match l {
+        Loaded::Map(g) => Py::new(py, PyGMap::from_labelled(g))?.into_any(),
+        Loaded::Simplicial(sc) => Py::new(py, PySimplicialComplex { sc: Arc::new(sc), name })?.into_any(),
+        Loaded::Cubical(s) => Py::new(py, PyCubicalSet::from_set(&s, name))?.into_any(),
+        Loaded::Arch(x) => Py::new(py, PyArchComplex { x: Arc::new(x), name })?.into_any(),
+    })
+}
+
+/// The stage times of one input (seconds) and its groups: the rows of `gmap.bench`.
+#[pyfunction]
+#[pyo3(signature = (path, *, field = None))]
+fn _bench_one<'py>(py: Python<'py>, path: PathBuf, field: Option<u64>) -> PyResult<Bound<'py, PyDict>> {
+    let name = path.display().to_string();
+    let t0 = Instant::now();
+    let l = py.allow_threads(|| objects::load(&path))?;
+    let read = t0.elapsed().as_secs_f64();
+    let o = Options { field, generators: false, method: Method::Cellular, via: None, periodic: false };
+    let t1 = Instant::now();
+    let h = homology_of_loaded(py, &l, &o, &name)?;
+    let compute_s = t1.elapsed().as_secs_f64();
+    let d = PyDict::new(py);
+    d.set_item("file", &name)?;
+    d.set_item("route", h.report.route.map(compute::route_name))?;
+    d.set_item("read_s", read)?;
+    d.set_item("homology_s", compute_s)?;
+    d.set_item("total_s", read + compute_s)?;
+    d.set_item("betti", h.betti())?;
+    d.set_item("torsion", h.torsion(py)?)?;
+    Ok(d)
+}
+
+fn build_result(py: Python<'_>, r: Result<gmap_core::DenseMap, gmap_ops::build::BuildError>) -> PyResult<Py<PyGMap>> {
+    let m = r.map_err(Failure::from)?;
+    Py::new(py, PyGMap::from_dense(&m))
+}
+
+/// build.grid(shape, periodic=False): the cubical grid of shape (s_0, …, s_{d-1}) as a
+/// d-map; `periodic` one bool for all axes or one per axis (a torus along those axes).
+#[pyfunction]
+#[pyo3(signature = (shape, periodic = None))]
+fn _build_grid(py: Python<'_>, shape: Vec<usize>, periodic: Option<&Bound<'_, PyAny>>) -> PyResult<Py<PyGMap>> {
+    let p: Vec<bool> = match periodic {
+        None => vec![false; shape.len()],
+        Some(b) if b.is_instance_of::<pyo3::types::PyBool>() => vec![b.extract::<bool>()?; shape.len()],
+        Some(v) => v.extract()?,
+    };
+    if p.len() != shape.len() {
+        return Err(Failure::input(format!("periodic has {} entries for {} axes", p.len(), shape.len())).into());
+    }
+    let cells = shape.iter().try_fold(1u64, |a, &s| a.checked_mul(s as u64));
+    let darts = cells.and_then(|c| c.checked_mul(1u64 << shape.len().min(40)).and_then(|x| x.checked_mul(shape.len().max(1) as u64)));
+    gmap_core::resources::check_memory("the grid", darts.and_then(|d| d.checked_mul(8 * (shape.len() as u64 + 1))))
+        .map_err(Failure::from)?;
+    build_result(py, py.allow_threads(|| gmap_ops::build::grid(&shape, &p)))
+}
+
+/// build.simplex(n): the n-simplex as an n-map.
+#[pyfunction]
+fn _build_simplex(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::simplex(n))
+}
+
+/// build.cube(n): the n-cube as an n-map.
+#[pyfunction]
+fn _build_cube(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::cube(n))
+}
+
+/// build.polygon(k): a k-gon as a 2-map.
+#[pyfunction]
+fn _build_polygon(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::polygon(k))
+}
+
+/// build.lens_space(p, q): the lens space L(p, q) as a 3-map.
+#[pyfunction]
+fn _build_lens_space(py: Python<'_>, p: usize, q: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::lens_space(p, q))
+}
+
+/// build.solid_torus(k): a solid torus of k cubes as a 3-map.
+#[pyfunction]
+fn _build_solid_torus(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::solid_torus(k))
+}
+
+/// build.surface(word): the surface of a polygon schema word ('a b a^-1 b^-1').
+#[pyfunction]
+fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::schema(word))
+}
+
+/// build.from_facets(facets): the G-map of a pure pseudo-manifold given by its facets.
+#[pyfunction]
+fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<PyGMap>> {
+    let f = objects::facets_from_py(facets)?;
+    let sc = Arc::new(py.allow_threads(|| objects::complex_of(f))?);
+    let m = py.allow_threads(|| compute::gmap_of(&sc))?;
+    let mut g = PyGMap::from_dense(&m);
+    g.sc = Some(sc);
+    Py::new(py, g)
+}
+
+/// The compiled module.
+#[pymodule]
+fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    errors::register(m)?;
+    m.add_class::<PyGMap>()?;
+    m.add_class::<PySimplicialComplex>()?;
+    m.add_class::<PyCubicalSet>()?;
+    m.add_class::<PyArchComplex>()?;
+    m.add_class::<PyHomology>()?;
+    m.add_class::<PyGenerator>()?;
+    m.add_function(wrap_pyfunction!(homology, m)?)?;
+    m.add_function(wrap_pyfunction!(open, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_one, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_grid, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_simplex, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_cube, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_polygon, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_lens_space, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_solid_torus, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_from_facets, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,445 @@
+//! The objects a file can hold besides a G-map — `SimplicialComplex`, `CubicalSet`,
+//! `ArchComplex` — and reading and writing files by extension (the command line's
+//! `load`, docs/FORMATS.md §2).
+
+use std::path::Path;
+use std::sync::Arc;
+
+use numpy::{PyArrayDescrMethods, PyArray1, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::prelude::*;
+
+use gmap_core::DenseMap;
+use gmap_homology::arch::ArchComplex;
+use gmap_ops::import::{CubicalSet, SimplicialComplex};
+
+use crate::errors::{Failure, Kind, Res};
+use crate::gmapobj::PyGMap;
+
+/// A finite simplicial complex given by its facets (lists of non-negative integer vertex
+/// labels); any complex: mixed dimensions, ridges in any number of facets.
+#[pyclass(name = "SimplicialComplex", module = "gmap", frozen)]
+pub struct PySimplicialComplex {
+    pub sc: Arc<SimplicialComplex>,
+    /// the file it was read from, to open messages
+    pub name: Option<String>,
+}
+
+/// A full cubical set: the unit cubes of a box that belong to the set.
+#[pyclass(name = "CubicalSet", module = "gmap", frozen)]
+pub struct PyCubicalSet {
+    /// cubes per axis, axis 0 fastest in `bits`
+    pub shape: Vec<usize>,
+    /// one byte a cube, 0 or 1
+    pub bits: Vec<u8>,
+    /// the box's minimal vertex, per axis of `shape`
+    pub min: Vec<i64>,
+    /// the numpy axes are those of `shape` reversed (a C-ordered array)
+    pub reversed: bool,
+    pub name: Option<String>,
+}
+
+/// An architectural complex (an incidence graph of regions with weights, `.json`).
+#[pyclass(name = "ArchComplex", module = "gmap", frozen)]
+pub struct PyArchComplex {
+    pub x: Arc<ArchComplex>,
+    pub name: Option<String>,
+}
+
+/// Facets from a Python sequence of sequences of ints or a 2-D integer array.
+pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
+    if let Ok(a) = x.downcast::<numpy::PyArray2<i64>>() {
+        let r = a.readonly();
+        let v = r.as_array();
+        let mut out = Vec::with_capacity(v.nrows());
+        for (f, row) in v.rows().into_iter().enumerate() {
+            let mut facet = Vec::with_capacity(row.len());
+            for &l in row {
+                if l < 0 {
+                    return Err(Failure::input(format!("facet {f}: vertex label {l} is negative (labels are 0..2^64)")).into());
+                }
+                facet.push(l as u64);
+            }
+            out.push(facet);
+        }
+        return Ok(out);
+    }
+    if let Ok(a) = x.downcast::<numpy::PyArray2<u64>>() {
+        let r = a.readonly();
+        return Ok(r.as_array().rows().into_iter().map(|row| row.to_vec()).collect());
+    }
+    if let Ok(v) = x.extract::<Vec<Vec<u64>>>() {
+        return Ok(v);
+    }
+    // say which facet and label is wrong
+    let seq = x
+        .try_iter()
+        .map_err(|_| Failure::input("facets must be a sequence of sequences of non-negative ints"))?;
+    for (f, facet) in seq.enumerate() {
+        let facet = facet?;
+        let items = facet
+            .try_iter()
+            .map_err(|_| Failure::input(format!("facet {f} is not a sequence of vertex labels")))?;
+        for l in items {
+            let l = l?;
+            if l.extract::<u64>().is_err() {
+                return Err(Failure::input(format!(
+                    "facet {f}: vertex label {} is not an int from 0 to 2^64 - 1",
+                    l.repr().map(|r| r.to_string()).unwrap_or_default()
+                ))
+                .into());
+            }
+        }
+    }
+    Err(Failure::input("facets must be a sequence of sequences of non-negative ints").into())
+}
+
+/// A simplicial complex from facets, with the reader's messages.
+pub fn complex_of(facets: Vec<Vec<u64>>) -> Res<SimplicialComplex> {
+    Ok(SimplicialComplex::from_facets(facets)?)
+}
+
+#[pymethods]
+impl PySimplicialComplex {
+    /// SimplicialComplex(facets): facets as a sequence of sequences of non-negative ints or
+    /// a 2-D integer array (one facet a row).
+    #[new]
+    fn py_new(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let f = facets_from_py(facets)?;
+        let sc = py.allow_threads(|| complex_of(f))?;
+        Ok(PySimplicialComplex { sc: Arc::new(sc), name: None })
+    }
+
+    /// The dimension of the largest facets.
+    #[getter]
+    fn dim(&self) -> usize {
+        self.sc.dim()
+    }
+
+    /// The facets, each a list of vertex labels as given.
+    #[getter]
+    fn facets(&self) -> Vec<Vec<u64>> {
+        self.sc.facets().map(<[u64]>::to_vec).collect()
+    }
+
+    /// The number of facets.
+    fn __len__(&self) -> usize {
+        self.sc.total_facet_count()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<gmap.SimplicialComplex dim={} facets={}>", self.sc.dim(), self.sc.total_facet_count())
+    }
+
+    /// Whether every facet has the top dimension.
+    fn is_pure(&self) -> bool {
+        self.sc.is_pure()
+    }
+
+    /// The G-map of the facets (a pure pseudo-manifold: every ridge in at most two facets),
+    /// one dart per flag; PreconditionError otherwise.
+    fn to_gmap(&self, py: Python<'_>) -> PyResult<PyGMap> {
+        let sc = self.sc.clone();
+        let m = py.allow_threads(|| crate::compute::gmap_of(&sc))?;
+        let mut g = PyGMap::from_dense(&m);
+        g.sc = Some(self.sc.clone());
+        Ok(g)
+    }
+
+    /// Writes the facets to a `.facets` file (one facet a line).
+    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
+        let ext = extension(&path);
+        if ext != "facets" {
+            return Err(Failure::input(format!(
+                "{}: a simplicial complex is written as .facets, not '.{ext}'",
+                path.display()
+            ))
+            .into());
+        }
+        let mut s = String::new();
+        for f in self.sc.facets() {
+            let words: Vec<String> = f.iter().map(u64::to_string).collect();
+            s.push_str(&words.join(" "));
+            s.push('\n');
+        }
+        gmap_core::io::write_atomic(&path, s.as_bytes())
+            .map_err(|e| Failure::new(Kind::Io, format!("{}: {e}", path.display())))?;
+        Ok(())
+    }
+}
+
+impl PyCubicalSet {
+    /// A set from any numpy array (nonzero = present), copied once; the axes are the
+    /// array's.
+    pub fn from_array(a: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (shape, view, reversed) = array_bits(a)?;
+        let min = vec![0; shape.len()];
+        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?.iter().map(|&b| (b != 0) as u8).collect();
+        Ok(PyCubicalSet { shape, bits, min, reversed, name: None })
+    }
+
+    pub fn from_set(s: &CubicalSet, name: Option<String>) -> Self {
+        PyCubicalSet { shape: s.shape().to_vec(), bits: s.bits().to_vec(), min: s.min().to_vec(), reversed: false, name }
+    }
+}
+
+/// The bytes of a cubical array: (shape with axis 0 fastest, the array as bytes, whether the
+/// numpy axes are reversed). A C- or Fortran-contiguous array of one-byte elements (bool,
+/// uint8, int8) is read in place, through a uint8 view; anything else is converted by
+/// numpy (`a != 0`) first.
+pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::PyReadonlyArrayDyn<'py, u8>, bool)> {
+    let py = a.py();
+    let arr = a
+        .downcast::<numpy::PyUntypedArray>()
+        .map_err(|_| Failure::input("a cubical set is a numpy array"))?;
+    let nd = arr.ndim();
+    if !(1..=8).contains(&nd) {
+        return Err(Failure::input(format!("a cubical array has 1 to 8 dimensions, not {nd}")).into());
+    }
+    let np_shape = arr.shape().to_vec();
+    if np_shape.contains(&0) {
+        return Err(Failure::input(format!("a cubical array of shape {np_shape:?}: every axis needs a cube")).into());
+    }
+    let kind = arr.dtype().kind();
+    let one_byte = arr.dtype().itemsize() == 1 && matches!(kind, b'b' | b'u' | b'i');
+    let contiguous = arr.is_c_contiguous() || arr.is_fortran_contiguous();
+    let bytes: Bound<'py, PyAny> = if one_byte && contiguous {
+        a.call_method1("view", ("uint8",))?
+    } else {
+        if !matches!(kind, b'b' | b'u' | b'i' | b'f') {
+            return Err(Failure::input(format!(
+                "a cubical array holds numbers or booleans, not dtype {}",
+                arr.dtype().str()?
+            ))
+            .into());
+        }
+        let np = py.import("numpy")?;
+        np.call_method1("ascontiguousarray", (a.ne(0)?,))?.call_method1("view", ("uint8",))?
+    };
+    let view = bytes.downcast::<numpy::PyArrayDyn<u8>>()?.readonly();
+    let c_order = view.is_c_contiguous();
+    let (shape, reversed) =
+        if c_order && nd > 1 { (np_shape.iter().rev().copied().collect(), true) } else { (np_shape, false) };
+    Ok((shape, view, reversed))
+}
+
+#[pymethods]
+impl PyCubicalSet {
+    /// CubicalSet(array): the cubes where the array (1 to 8 dimensions) is nonzero;
+    /// array[i0, i1, …] is the cube with minimal vertex (i0, i1, …).
+    #[new]
+    fn py_new(array: &Bound<'_, PyAny>) -> PyResult<Self> {
+        PyCubicalSet::from_array(array)
+    }
+
+    /// The dimension d (the array's number of axes).
+    #[getter]
+    fn dim(&self) -> usize {
+        self.shape.len()
+    }
+
+    /// The number of cubes in the set.
+    fn __len__(&self) -> usize {
+        self.bits.iter().filter(|&&b| b != 0).count()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<gmap.CubicalSet dim={} shape={:?} cubes={}>", self.shape.len(), self.np_shape(), self.__len__())
+    }
+
+    /// The box's shape in cubes per axis (numpy axis order).
+    #[getter]
+    fn shape(&self) -> Vec<usize> {
+        self.np_shape()
+    }
+
+    /// The box's minimal vertex (numpy axis order).
+    #[getter]
+    fn min(&self) -> Vec<i64> {
+        let mut m = self.min.clone();
+        if self.reversed {
+            m.reverse();
+        }
+        m
+    }
+
+    /// The set as a bool array of the box's shape: array[i0, …] is the cube with minimal
+    /// vertex min + (i0, …).
+    #[getter]
+    fn array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let flat = PyArray1::from_slice(py, &self.bits);
+        let order = if self.reversed { "C" } else { "F" };
+        let shaped = flat.call_method("reshape", (self.np_shape(),), Some(&[("order", order)].into_py_dict(py)?))?;
+        shaped.call_method1("astype", ("bool",))
+    }
+
+    /// The G-map of the set: every cube one d-cell, sewn to its neighbours (periodic: the
+    /// box's opposite faces identified).
+    #[pyo3(signature = (periodic = false))]
+    fn to_gmap(&self, py: Python<'_>, periodic: bool) -> PyResult<PyGMap> {
+        let set = CubicalSet::new(self.min.clone(), self.shape.clone(), self.bits.clone()).map_err(Failure::from)?;
+        let m: DenseMap = py.allow_threads(|| set.gmap(periodic)).map_err(Failure::from)?;
+        Ok(PyGMap::from_dense(&m))
+    }
+
+    /// Writes the set as a CHomP `.cub` file (one cube a line, numpy axis order).
+    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
+        let ext = extension(&path);
+        if ext != "cub" {
+            return Err(Failure::input(format!("{}: a cubical set is written as .cub, not '.{ext}'", path.display())).into());
+        }
+        let set = CubicalSet::new(self.min.clone(), self.shape.clone(), self.bits.clone()).map_err(Failure::from)?;
+        let mut s = format!("dimension {}\n", self.shape.len());
+        for mut c in set.cubes() {
+            if self.reversed {
+                c.reverse();
+            }
+            let w: Vec<String> = c.iter().map(i64::to_string).collect();
+            s.push('(');
+            s.push_str(&w.join(","));
+            s.push_str(")\n");
+        }
+        gmap_core::io::write_atomic(&path, s.as_bytes())
+            .map_err(|e| Failure::new(Kind::Io, format!("{}: {e}", path.display())))?;
+        Ok(())
+    }
+}
+
+impl PyCubicalSet {
+    fn np_shape(&self) -> Vec<usize> {
+        let mut s = self.shape.clone();
+        if self.reversed {
+            s.reverse();
+        }
+        s
+    }
+}
+
+use pyo3::types::IntoPyDict;
+
+#[pymethods]
+impl PyArchComplex {
+    /// ArchComplex(text): an architectural complex from the text of a `.json` file.
+    #[new]
+    fn py_new(text: &str) -> PyResult<Self> {
+        let x = gmap_homology::json::read_json(text).map_err(Failure::from)?;
+        Ok(PyArchComplex { x: Arc::new(x), name: None })
+    }
+
+    /// The dimension.
+    #[getter]
+    fn dim(&self) -> usize {
+        self.x.dim()
+    }
+
+    /// The number of regions.
+    fn __len__(&self) -> usize {
+        self.x.regions().len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<gmap.ArchComplex dim={} regions={}>", self.x.dim(), self.x.regions().len())
+    }
+
+    /// The `.json` text of the complex.
+    fn to_json(&self) -> String {
+        gmap_homology::json::write_json(&self.x)
+    }
+
+    /// Writes the complex as a `.json` file.
+    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
+        let ext = extension(&path);
+        if ext != "json" {
+            return Err(Failure::input(format!(
+                "{}: an architectural complex is written as .json, not '.{ext}'",
+                path.display()
+            ))
+            .into());
+        }
+        gmap_core::io::write_atomic(&path, gmap_homology::json::write_json(&self.x).as_bytes())
+            .map_err(|e| Failure::new(Kind::Io, format!("{}: {e}", path.display())))?;
+        Ok(())
+    }
+}
+
+/// The lower-cased extension of a path; for `FILE.lex#name` (no file of that whole name),
+/// `lex`.
+pub fn extension(path: &Path) -> String {
+    let (file, name) = split_lex_name(path);
+    let base = if name.is_some() && !path.exists() { file.as_path() } else { path };
+    base.extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
+}
+
+/// `FILE.lex#name` split into the file and the complex name.
+pub fn split_lex_name(path: &Path) -> (std::path::PathBuf, Option<String>) {
+    let s = path.to_string_lossy();
+    match s.to_ascii_lowercase().find(".lex#") {
+        Some(k) => {
+            let name = &s[k + 5..];
+            (std::path::PathBuf::from(&s[..k + 4]), (!name.is_empty()).then(|| name.to_string()))
+        }
+        None => (path.to_path_buf(), None),
+    }
+}
+
+/// What a file holds, read without Python.
+pub enum Loaded {
+    Map(gmap_core::LabelledGMap),
+    Simplicial(SimplicialComplex),
+    Cubical(CubicalSet),
+    Arch(ArchComplex),
+}
+
+/// Reads a file by its extension (the command line's readers and messages).
+pub fn load(path: &Path) -> Res<Loaded> {
+    use gmap_ops::import::{read_cub, read_facets_complex, read_lex_complex, read_off_with, read_pbm};
+    let file = path.display().to_string();
+    let r = match extension(path).as_str() {
+        "gmap" => Loaded::Map(gmap_core::io::read_labelled_gmap(path)?),
+        "moka" => {
+            let m = gmap_core::io::read_moka(path)?;
+            Loaded::Map(gmap_core::LabelledGMap::from_dense_with_attributes(&m).0)
+        }
+        "off" => {
+            let m = read_off_with(path, None)?;
+            Loaded::Map(gmap_core::LabelledGMap::from_dense_with_attributes(&m).0)
+        }
+        "facets" => Loaded::Simplicial(read_facets_complex(path)?),
+        "lex" if path.exists() => Loaded::Simplicial(read_lex_complex(path, None)?),
+        "lex" => {
+            let (f, name) = split_lex_name(path);
+            Loaded::Simplicial(read_lex_complex(&f, name.as_deref())?)
+        }
+        "json" => Loaded::Arch(gmap_homology::json::read_json_file(path)?),
+        "cub" => Loaded::Cubical(read_cub(path)?),
+        "pbm" => Loaded::Cubical(read_pbm(path)?),
+        "vtk" | "dot" => {
+            return Err(Failure::input(format!(
+                "{file}: unsupported input format '.{}': it is written only, as a view (read the .gmap it came from)",
+                extension(path)
+            )))
+        }
+        other => {
+            return Err(Failure::input(format!(
+                "{file}: unsupported input format '.{}'",
+                gmap_core::io::shorten(other.as_bytes(), 40)
+            )))
+        }
+    };
+    Ok(r)
+}
+
+/// Writes a map by extension.
+pub fn save_map(m: &mut PyGMap, path: &Path) -> Res<()> {
+    match extension(path).as_str() {
+        "gmap" => Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?),
+        "moka" => {
+            let d = m.dense();
+            Ok(gmap_core::io::write_moka(&d, path)?)
+        }
+        other => Err(Failure::input(format!(
+            "{}: a G-map is written as .gmap or .moka, not '.{}'",
+            path.display(),
+            gmap_core::io::shorten(other.as_bytes(), 40)
+        ))),
+    }
+}
