@@ -363,3 +363,80 @@ pub fn homology(input: &Input<'_>, o: &Options, name: &str) -> Res<Report> {
     };
     Ok(Report { dim, method: o.method, homology: h, route, generators: gens })
 }
+
+/// A report read back from its JSON object ([`Report::to_json`]): how a result crosses a
+/// process boundary (pickling). `None` when the object is not such a report.
+pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
+    use gmap_homology::Coefficients;
+    let nat = |x: &serde_json::Value| -> Option<Natural> { x.to_string().parse().ok() };
+    let coefficients = match v["coefficients"].as_str()? {
+        "Z" => Coefficients::Integers,
+        s => Coefficients::Field(s.strip_prefix("Z/")?.parse().ok()?),
+    };
+    let betti = v["betti"].as_array()?.iter().map(|b| b.as_u64().map(|b| b as usize)).collect::<Option<Vec<_>>>()?;
+    let torsion = v["torsion"]
+        .as_array()?
+        .iter()
+        .map(|t| t.as_array().and_then(|t| t.iter().map(nat).collect::<Option<Vec<_>>>()))
+        .collect::<Option<Vec<_>>>()?;
+    let method = match v["method"].as_str()? {
+        "simplicial" => Method::Simplicial,
+        _ => Method::Cellular,
+    };
+    let route = match v.get("route").and_then(|r| r.as_str()) {
+        Some("direct") => Some(Via::Direct),
+        Some("gmap") => Some(Via::Gmap),
+        _ => None,
+    };
+    let cell = |c: &serde_json::Value| -> Option<CellName> {
+        if let Some(a) = c.as_array() {
+            return Some(CellName::Simplex(a.iter().map(|x| x.as_u64()).collect::<Option<Vec<_>>>()?));
+        }
+        if let Some(r) = c.get("region") {
+            return Some(CellName::Region(r.as_u64()?));
+        }
+        if let Some(cube) = c.get("cube") {
+            let min = cube.as_array()?.iter().map(|x| x.as_i64()).collect::<Option<Vec<_>>>()?;
+            let extent =
+                c["extent"].as_array()?.iter().map(|x| x.as_u64().map(|e| e as u8)).collect::<Option<Vec<_>>>()?;
+            return Some(CellName::Cube { min, extent });
+        }
+        let dart = c.get("dart")?.as_u64()? as u32;
+        let simplex = match c.get("simplex") {
+            Some(s) => Some(s.as_array()?.iter().map(|x| x.as_u64().map(|x| x as u32)).collect::<Option<Vec<_>>>()?),
+            None => None,
+        };
+        let point = match c.get("point") {
+            Some(p) => {
+                let p = p.as_array()?;
+                Some([p.first()?.as_f64()?, p.get(1)?.as_f64()?, p.get(2)?.as_f64()?])
+            }
+            None => None,
+        };
+        Some(CellName::Dart { dart, point, simplex })
+    };
+    let generators = match v.get("generators") {
+        Some(g) => Some(
+            g.as_array()?
+                .iter()
+                .map(|x| {
+                    let chain = x["chain"].as_array()?;
+                    Some(Gen {
+                        dim: x["dim"].as_u64()? as usize,
+                        order: nat(&x["order"])?,
+                        cells: chain.iter().map(|e| cell(&e["cell"])).collect::<Option<Vec<_>>>()?,
+                        coefficients: chain.iter().map(|e| e["coefficient"].as_i64()).collect::<Option<Vec<_>>>()?,
+                    })
+                })
+                .collect::<Option<Vec<_>>>()?,
+        ),
+        None => None,
+    };
+    Some(Report {
+        dim: v["dimension"].as_u64()? as usize,
+        method,
+        homology: Homology { coefficients, betti, torsion },
+        route,
+        generators,
+    })
+}

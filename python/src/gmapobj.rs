@@ -459,6 +459,24 @@ impl PyGMap {
         m
     }
 
+    /// The text of the map in the `.gmap` format (points and labels kept).
+    fn to_text(&self) -> String {
+        String::from_utf8_lossy(&gmap_core::io::format_labelled_gmap(&self.g)).into_owned()
+    }
+
+    /// GMap.from_text(text): the map of a `.gmap` text (ParseError naming the line).
+    #[staticmethod]
+    fn from_text(text: &str) -> PyResult<Self> {
+        let g = gmap_core::io::parse_labelled_gmap(text.as_bytes(), "<text>").map_err(Failure::from)?;
+        Ok(PyGMap::from_labelled(g))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let f = slf.get_type().getattr("from_text")?;
+        let t = slf.borrow().to_text();
+        Ok((f, (t,)))
+    }
+
     /// Writes the map by extension: `.gmap` (points and labels kept), `.moka`.
     fn save(&mut self, path: std::path::PathBuf) -> PyResult<()> {
         crate::objects::save_map(self, &path).map_err(Into::into)

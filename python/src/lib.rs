@@ -200,6 +200,21 @@ impl PyHomology {
     fn to_json(&self) -> String {
         self.report.to_json().to_string()
     }
+
+    /// Homology.from_json(text): the result whose `to_json()` is `text` (how results cross
+    /// process boundaries: pickling, Dask).
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str) -> PyResult<PyHomology> {
+        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| Failure::input(format!("not JSON: {e}")))?;
+        let report = compute::report_from_json(&v)
+            .ok_or_else(|| Failure::input("not the JSON of a homology result (gmap homology --json)"))?;
+        finish(py, Ok(report))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let f = slf.get_type().getattr("from_json")?;
+        Ok((f, (slf.get().to_json(),)))
+    }
 }
 
 fn parse_method(method: Option<&str>) -> PyResult<(Method, Option<Via>)> {

@@ -130,6 +130,10 @@ impl PySimplicialComplex {
         format!("<gmap.SimplicialComplex dim={} facets={}>", self.sc.dim(), self.sc.total_facet_count())
     }
 
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Vec<Vec<u64>>,))> {
+        Ok((slf.get_type().into_any(), (slf.get().facets(),)))
+    }
+
     /// Whether every facet has the top dimension.
     fn is_pure(&self) -> bool {
         self.sc.is_pure()
@@ -224,11 +228,28 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
 
 #[pymethods]
 impl PyCubicalSet {
-    /// CubicalSet(array): the cubes where the array (1 to 8 dimensions) is nonzero;
-    /// array[i0, i1, …] is the cube with minimal vertex (i0, i1, …).
+    /// CubicalSet(array, min=None): the cubes where the array (1 to 8 dimensions) is
+    /// nonzero; array[i0, i1, …] is the cube with minimal vertex min + (i0, i1, …) (min: zeros
+    /// by default).
     #[new]
-    fn py_new(array: &Bound<'_, PyAny>) -> PyResult<Self> {
-        PyCubicalSet::from_array(array)
+    #[pyo3(signature = (array, min = None))]
+    fn py_new(array: &Bound<'_, PyAny>, min: Option<Vec<i64>>) -> PyResult<Self> {
+        let mut s = PyCubicalSet::from_array(array)?;
+        if let Some(mut m) = min {
+            if m.len() != s.shape.len() {
+                return Err(Failure::input(format!("min has {} coordinates for {} axes", m.len(), s.shape.len())).into());
+            }
+            if s.reversed {
+                m.reverse();
+            }
+            s.min = m;
+        }
+        Ok(s)
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyAny>, Vec<i64>))> {
+        let py = slf.py();
+        Ok((slf.get_type().into_any(), (slf.get().array(py)?, slf.get().min())))
     }
 
     /// The dimension d (the array's number of axes).
@@ -338,6 +359,10 @@ impl PyArchComplex {
 
     fn __repr__(&self) -> String {
         format!("<gmap.ArchComplex dim={} regions={}>", self.x.dim(), self.x.regions().len())
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        Ok((slf.get_type().into_any(), (slf.get().to_json(),)))
     }
 
     /// The `.json` text of the complex.
