@@ -203,6 +203,11 @@ fn check_simplicial_size(map: &DenseMap) -> Res<()> {
 /// The G-map of a simplicial complex (pure pseudo-manifolds), within the default dart
 /// limit and the memory limit.
 pub fn gmap_of(sc: &SimplicialComplex) -> Res<DenseMap> {
+    // past the largest dart index no memory helps: the dart count is the refusal
+    let cap = u32::MAX as u64 - 1;
+    if sc.dart_count().is_none_or(|d| d > cap) {
+        return Ok(sc.to_gmap(cap)?);
+    }
     gmap_core::resources::check_memory("the G-map of the facets", sc.memory_estimate())?;
     let limit = gmap_ops::import::default_max_darts(sc.dim());
     Ok(sc.to_gmap(limit)?)
@@ -279,11 +284,7 @@ pub fn homology(input: &Input<'_>, o: &Options, name: &str) -> Res<Report> {
     let (dim, chain, namer): (usize, ChainComplex, Namer<'_>) = match input {
         Input::Simplicial(sc) if route == Some(Via::Direct) => {
             let limit = gmap_ops::import::default_max_faces(sc.dim());
-            let fc = face_complex_of(sc.facets(), limit, o.generators).map_err(|e| {
-                let f: Failure = e.into();
-                let hint = if f.kind == Kind::Limit { "; raise the limit with --max-darts N" } else { "" };
-                Failure::new(f.kind, format!("{name}: {}{hint}", f.message))
-            })?;
+            let fc = face_complex_of(sc.facets(), limit, o.generators).map_err(|e| Failure::from(e).in_file(name))?;
             let gmap_homology::simplices::FaceComplex { chain, vertices, faces } = fc;
             let namer: Namer<'_> = Box::new(move |k: usize, j: u32| {
                 let j = j as usize;
