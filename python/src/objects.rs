@@ -217,7 +217,7 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
             .into());
         }
         let np = py.import("numpy")?;
-        np.call_method1("ascontiguousarray", (a.ne(0)?,))?.call_method1("view", ("uint8",))?
+        np.call_method1("ascontiguousarray", (np.call_method1("not_equal", (a, 0))?,))?.call_method1("view", ("uint8",))?
     };
     let view = bytes.downcast::<numpy::PyArrayDyn<u8>>()?.readonly();
     let c_order = view.is_c_contiguous();
