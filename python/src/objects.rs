@@ -203,6 +203,23 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
     if np_shape.contains(&0) {
         return Err(Failure::input(format!("a cubical array of shape {np_shape:?}: every axis needs a cube")).into());
     }
+    // the box under the memory policy before numpy or we allocate anything for it
+    let volume = np_shape.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64));
+    if volume.is_none_or(|v| v > gmap_ops::import::cubical::MAX_BOX_CUBES) {
+        return Err(Failure::new(
+            Kind::Limit,
+            format!(
+                "a cubical array of shape {np_shape:?} has more than {} cubes, the largest box accepted",
+                gmap_ops::import::cubical::MAX_BOX_CUBES
+            ),
+        )
+        .into());
+    }
+    gmap_core::resources::check_memory(
+        "the cubical complex of the array",
+        gmap_core::resources::cubical_set_estimate(&np_shape),
+    )
+    .map_err(Failure::from)?;
     let kind = arr.dtype().kind();
     let one_byte = arr.dtype().itemsize() == 1 && matches!(kind, b'b' | b'u' | b'i');
     let contiguous = arr.is_c_contiguous() || arr.is_fortran_contiguous();
