@@ -8,11 +8,15 @@
 use gmap_core::DenseMap;
 use gmap_homology::arch::ArchComplex;
 use gmap_homology::generators::generators;
-use gmap_homology::simplices::face_complex_of;
+use gmap_homology::simplices::{face_complex_of, face_estimate};
 use gmap_homology::{cellular_complex, homology_z, homology_zp, is_prime, ChainComplex, Homology, Natural};
 use gmap_ops::import::SimplicialComplex;
 
 use crate::errors::{Failure, Kind, Res};
+
+/// Complexes of at most this many faces (counted with repetition) take the direct route
+/// without a look at the memory available: their tables take a few megabytes.
+const SMALL_FACES: u64 = 1 << 16;
 
 /// Which chain complex of a G-map is reduced.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -283,7 +287,10 @@ pub fn homology(input: &Input<'_>, o: &Options, name: &str) -> Res<Report> {
     let owned_map;
     let (dim, chain, namer): (usize, ChainComplex, Namer<'_>) = match input {
         Input::Simplicial(sc) if route == Some(Via::Direct) => {
-            let limit = gmap_ops::import::default_max_faces(sc.dim());
+            // below SMALL_FACES faces (a few MB at most) the memory budget, which reads
+            // /proc/meminfo, is not consulted: a call on a small complex costs microseconds
+            let small = face_estimate(sc.facets()).is_some_and(|e| e <= SMALL_FACES);
+            let limit = if small { SMALL_FACES } else { gmap_ops::import::default_max_faces(sc.dim()) };
             let fc = face_complex_of(sc.facets(), limit, o.generators).map_err(|e| Failure::from(e).in_file(name))?;
             let gmap_homology::simplices::FaceComplex { chain, vertices, faces } = fc;
             let namer: Namer<'_> = Box::new(move |k: usize, j: u32| {
