@@ -15,6 +15,7 @@ Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from f
 
 from __future__ import annotations
 
+import json
 import os
 import time
 from typing import Any, Iterable, List, Sequence, Union
@@ -33,7 +34,7 @@ from ._gmap import (
     PreconditionError,
     SimplicialComplex,
     ValidityError,
-    _bench_one,
+    _bench_json,
     homology,
     open,
 )
@@ -108,25 +109,19 @@ def _gudhi_time(facets: "list[list[int]]") -> "tuple[float, list[int]]":
 
 
 def bench(paths: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], gudhi: bool = True) -> List[dict]:
-    """Times the homology of each input in process: a list of dicts, one per file, with
-    ``file``, ``route``, ``read_s``, ``homology_s``, ``total_s``, ``betti``, ``torsion`` and,
-    for simplicial complexes when ``gudhi`` is true and GUDHI is installed, ``gudhi_s`` (GUDHI's
-    SimplexTree on the same facets, persistence of all dimensions) and ``gudhi_betti``.
+    """Times every route of each input in process, as ``gmap bench --json`` does: a list of
+    dicts, one per input and route, with ``input``, ``route``, ``cells``, ``times_ms``
+    (``read``, ``cells``, ``border``, ``reduction``, ``smith``, ``total``), ``groups``,
+    ``betti``, ``torsion``, ``error`` and ``agree``. For a simplicial complex, when ``gudhi``
+    is true and GUDHI is installed, ``gudhi_ms`` is GUDHI's time on the same facets (a
+    SimplexTree and its persistence in all dimensions over Z/2) and ``gudhi_betti`` its Betti
+    numbers.
 
     A folder stands for every file in it that gmap reads, sorted.
     """
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
-    files: List[str] = []
-    exts = {".gmap", ".moka", ".facets", ".lex", ".off", ".json", ".cub", ".pbm"}
-    for p in paths:
-        p = os.fspath(p)
-        if os.path.isdir(p):
-            files += sorted(
-                os.path.join(p, f) for f in os.listdir(p) if os.path.splitext(f)[1].lower() in exts
-            )
-        else:
-            files.append(p)
+    rows = json.loads(_bench_json([os.fspath(p) for p in paths]))["rows"]
     have_gudhi = False
     if gudhi:
         try:
@@ -135,12 +130,14 @@ def bench(paths: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], gud
             have_gudhi = True
         except ImportError:
             pass
-    rows = []
-    for f in files:
-        row = _bench_one(f)
-        if have_gudhi:
-            facets = _facets_of(f)
-            if facets is not None:
-                row["gudhi_s"], row["gudhi_betti"] = _gudhi_time(facets)
-        rows.append(row)
+    if have_gudhi:
+        done = {}
+        for row in rows:
+            f = row["input"]
+            if f not in done:
+                facets = _facets_of(f)
+                done[f] = None if facets is None else _gudhi_time(facets)
+            if done[f] is not None:
+                seconds, betti = done[f]
+                row["gudhi_ms"], row["gudhi_betti"] = seconds * 1e3, betti
     return rows

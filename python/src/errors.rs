@@ -233,6 +233,26 @@ impl From<std::io::Error> for Failure {
     }
 }
 
+impl From<gmap::Error> for Failure {
+    fn from(e: gmap::Error) -> Self {
+        use gmap::ErrorKind as K;
+        let kind = match e.kind() {
+            K::Parse if e.line().is_none() && e.chain().iter().any(|c| c.contains("os error")) => Kind::Io,
+            K::Parse => Kind::Parse,
+            K::Limit => Kind::Limit,
+            K::Precondition => Kind::Precondition,
+            K::Write => Kind::Io,
+            K::Compute => Kind::Computation,
+            _ => Kind::Input,
+        };
+        // an input made in memory has no file: its messages open with ": "
+        let message = e.to_string();
+        let message = message.strip_prefix(": ").map(str::to_string).unwrap_or(message);
+        let file = e.path().map(|p| p.display().to_string()).filter(|p| !p.is_empty());
+        Failure { kind, message, file, line: e.line() }
+    }
+}
+
 impl From<Failure> for PyErr {
     fn from(f: Failure) -> PyErr {
         let err = match f.kind {

@@ -14,7 +14,6 @@ use pyo3::types::{PyDict, PyList};
 
 use gmap_core::{AlphaSet, DartId, DenseMap, LabelValue, LabelledGMap, Labels, MAX_DIM};
 use gmap_ops::euler::ops as eops;
-use gmap_ops::import::SimplicialComplex;
 
 use crate::errors::{Failure, Kind, Res};
 
@@ -27,23 +26,20 @@ pub struct PyGMap {
     /// the dart number of each storage slot (`u32::MAX` for an empty slot)
     slot_index: Vec<u32>,
     dense: Option<Arc<DenseMap>>,
-    /// the simplicial complex the map was made from, while its darts are those of the
-    /// import (to name generators by vertex labels)
-    pub(crate) sc: Option<Arc<SimplicialComplex>>,
 }
 
 impl PyGMap {
     /// Wraps a dense map (no labels).
     pub fn from_dense(m: &DenseMap) -> Self {
         let (g, ids) = LabelledGMap::from_dense_with_attributes(m);
-        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None, sc: None };
+        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None };
         m.index_slots();
         m
     }
 
     /// Wraps a labelled map.
     pub fn from_labelled(g: LabelledGMap) -> Self {
-        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None, sc: None };
+        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None };
         m.refresh();
         m
     }
@@ -70,10 +66,9 @@ impl PyGMap {
         self.slot_index[self.g.dart_index(h)] as usize
     }
 
-    /// Drops the frozen map and the complex after an edit that keeps the darts.
+    /// Drops the frozen map after an edit that keeps the darts.
     fn touched(&mut self) {
         self.dense = None;
-        self.sc = None;
     }
 
     /// The frozen map (made now if an edit dropped it).
@@ -103,7 +98,6 @@ impl PyGMap {
     }
 
     fn after_insert(&mut self, r: Result<DartId, gmap_ops::euler::EulerError>) -> PyResult<usize> {
-        self.sc = None;
         match r {
             Ok(h) => Ok(self.index_of(h)),
             Err(e) => {
@@ -455,7 +449,6 @@ impl PyGMap {
                 }
             }
         }
-        m.sc = self.sc.clone();
         m
     }
 
@@ -610,7 +603,6 @@ impl PyGMap {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
         let r = eops::try_remove_cell(&mut self.g, h, i);
-        self.sc = None;
         self.refresh();
         r.map_err(Failure::from)?;
         Ok(before - self.g.dart_count())
@@ -627,7 +619,6 @@ impl PyGMap {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
         let r = eops::try_contract_cell(&mut self.g, h, i);
-        self.sc = None;
         self.refresh();
         r.map_err(Failure::from)?;
         Ok(before - self.g.dart_count())
@@ -644,7 +635,6 @@ impl PyGMap {
             return Err(Failure::input("a tetrahedron needs a map of dimension at least 2").into());
         }
         let h = self.g.make_combinatorial_tetrahedron();
-        self.sc = None;
         Ok(self.index_of(h))
     }
 
@@ -654,7 +644,6 @@ impl PyGMap {
             return Err(Failure::input("a hexahedron needs a map of dimension at least 2").into());
         }
         let h = self.g.make_combinatorial_hexahedron();
-        self.sc = None;
         Ok(self.index_of(h))
     }
 }

@@ -3,27 +3,28 @@
 //! Python-facing types and functions only; the computations are the workspace crates',
 //! run with the GIL released. Modules:
 //! * [`errors`]: the exception classes and the mapping of the library's errors;
-//! * [`compute`]: homology of every input kind with the command line's routes and names;
-//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex`, files by extension;
+//! * [`compute`]: what the facade does not take: a cubical set borrowed from numpy, a
+//!   result read back from its JSON;
+//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex` (each holds a facade
+//!   `gmap::Input`), writing files;
 //! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators.
 
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::time::Instant;
 
 use numpy::{PyArrayDescrMethods, PyArray1, PyArrayMethods, ToPyArray};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+use pyo3::types::{PyList, PyString, PyTuple};
 
 mod compute;
 mod errors;
 mod gmapobj;
 mod objects;
 
-use compute::{CellName, Cubes, Input, Method, Options, Report, Via};
-use errors::{Failure, Res};
+use compute::Cubes;
+use errors::Failure;
+use gmap::{CellName, HomologyOptions, Input, MapInput, Method, Report, Sourced, Via};
 use gmapobj::PyGMap;
-use objects::{Loaded, PyArchComplex, PyCubicalSet, PySimplicialComplex};
+use objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
 
 /// One summand's representative cycle, in the input's own terms.
 #[pyclass(name = "Generator", module = "gmap", frozen, get_all)]
@@ -72,19 +73,20 @@ fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> 
     let Some(gens) = &r.generators else { return Ok(None) };
     let out = PyList::empty(py);
     for g in gens {
-        let coefficients = g.coefficients.to_pyarray(py).into_any().unbind();
-        let (cells, extents): (PyObject, PyObject) = match g.cells.first() {
+        let coefficients = g.chain.iter().map(|(_, k)| *k).collect::<Vec<i64>>().to_pyarray(py).into_any().unbind();
+        let cells_of = || g.chain.iter().map(|(c, _)| c);
+        let n = g.chain.len();
+        let (cells, extents): (PyObject, PyObject) = match g.chain.first().map(|(c, _)| c) {
             Some(CellName::Cube { min, .. }) => {
                 let d = min.len();
-                let mut lo = Vec::with_capacity(g.cells.len() * d);
-                let mut ex = Vec::with_capacity(g.cells.len() * d);
-                for c in &g.cells {
+                let mut lo = Vec::with_capacity(n * d);
+                let mut ex = Vec::with_capacity(n * d);
+                for c in cells_of() {
                     if let CellName::Cube { min, extent } = c {
                         lo.extend_from_slice(min);
                         ex.extend_from_slice(extent);
                     }
                 }
-                let n = g.cells.len();
                 (
                     PyArray1::from_vec(py, lo).reshape([n, d])?.into_any().unbind(),
                     PyArray1::from_vec(py, ex).reshape([n, d])?.into_any().unbind(),
@@ -92,17 +94,17 @@ fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> 
             }
             Some(CellName::Dart { .. }) => {
                 let darts: Vec<u32> =
-                    g.cells.iter().map(|c| if let CellName::Dart { dart, .. } = c { *dart } else { 0 }).collect();
+                    cells_of().map(|c| if let CellName::Dart { dart, .. } = c { *dart } else { 0 }).collect();
                 (darts.to_pyarray(py).into_any().unbind(), py.None())
             }
             Some(CellName::Region(_)) => {
                 let ids: Vec<u64> =
-                    g.cells.iter().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
+                    cells_of().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
                 (ids.to_pyarray(py).into_any().unbind(), py.None())
             }
             _ => {
                 let l = PyList::empty(py);
-                for c in &g.cells {
+                for c in cells_of() {
                     if let CellName::Simplex(v) = c {
                         l.append(PyTuple::new(py, v)?)?;
                     }
@@ -121,48 +123,45 @@ impl PyHomology {
     /// The Betti numbers b_0..b_n (ranks over Z, dimensions over Z/p).
     #[getter]
     fn betti(&self) -> Vec<usize> {
-        self.report.homology.betti.clone()
+        self.report.groups.betti.clone()
     }
 
     /// The torsion coefficients of each H_k (invariant factors, each dividing the next), as
     /// Python ints, exact at any size; empty lists over a field.
     #[getter]
     fn torsion(&self, py: Python<'_>) -> PyResult<Vec<Vec<PyObject>>> {
-        self.report.homology.torsion.iter().map(|t| t.iter().map(|n| natural_to_py(py, n)).collect()).collect()
+        self.report.groups.torsion.iter().map(|t| t.iter().map(|n| natural_to_py(py, n)).collect()).collect()
     }
 
     /// The dimension of the input.
     #[getter]
     fn dimension(&self) -> usize {
-        self.report.dim
+        self.report.dimension
     }
 
     /// 'cellular' or 'simplicial'.
     #[getter]
     fn method(&self) -> &'static str {
-        match self.report.method {
-            Method::Cellular => "cellular",
-            Method::Simplicial => "simplicial",
-        }
+        self.report.method.name()
     }
 
     /// For a simplicial complex: 'direct' (every face a cell) or 'gmap' (through its
     /// G-map); None for other inputs.
     #[getter]
     fn route(&self) -> Option<&'static str> {
-        self.report.route.map(compute::route_name)
+        self.report.route.map(Via::name)
     }
 
     /// 'Z' or 'Z/p'.
     #[getter]
     fn coefficients(&self) -> String {
-        self.report.homology.coefficients.to_string()
+        self.report.groups.coefficients.to_string()
     }
 
     /// The alternating sum of the Betti numbers.
     #[getter]
     fn euler_characteristic(&self) -> i64 {
-        self.report.homology.euler_characteristic()
+        self.report.groups.euler_characteristic()
     }
 
     /// A list of Generator (one per summand: the free ones, then one per torsion
@@ -174,20 +173,20 @@ impl PyHomology {
 
     /// The groups as text: '(Z, 0, Z)'.
     fn __str__(&self) -> String {
-        self.report.homology.to_string()
+        self.report.groups.to_string()
     }
 
     fn __repr__(&self) -> String {
-        format!("<gmap.Homology {} over {}>", self.report.homology, self.report.homology.coefficients)
+        format!("<gmap.Homology {} over {}>", self.report.groups, self.report.groups.coefficients)
     }
 
     /// The text of H_k: 'Z^2 + Z/2'.
     fn group(&self, k: usize) -> String {
-        self.report.homology.group_string(k)
+        self.report.groups.group_string(k)
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other.downcast::<PyHomology>().is_ok_and(|o| o.get().report.homology == self.report.homology)
+        other.downcast::<PyHomology>().is_ok_and(|o| o.get().report.groups == self.report.groups)
     }
 
     /// The object `gmap homology --json` prints, as a dict (torsion and orders as ints).
@@ -208,7 +207,7 @@ impl PyHomology {
         let v: serde_json::Value = serde_json::from_str(text).map_err(|e| Failure::input(format!("not JSON: {e}")))?;
         let report = compute::report_from_json(&v)
             .ok_or_else(|| Failure::input("not the JSON of a homology result (gmap homology --json)"))?;
-        finish(py, Ok(report))
+        finish(py, report)
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
@@ -218,6 +217,7 @@ impl PyHomology {
 }
 
 fn parse_method(method: Option<&str>) -> PyResult<(Method, Option<Via>)> {
+    // "cellular" and "simplicial" are `--method`, "direct" and "gmap" are `--via`
     Ok(match method {
         None | Some("cellular") => (Method::Cellular, None),
         Some("simplicial") => (Method::Simplicial, None),
@@ -247,26 +247,24 @@ fn field_of(field: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
     }
 }
 
-fn finish(py: Python<'_>, r: Res<Report>) -> PyResult<PyHomology> {
-    let report = r?;
+fn finish(py: Python<'_>, report: Report) -> PyResult<PyHomology> {
     let generators = generators_to_py(py, &report)?;
     Ok(PyHomology { report, generators })
 }
 
-fn homology_of_loaded(py: Python<'_>, l: &Loaded, o: &Options, name: &str) -> PyResult<PyHomology> {
-    let r = py.allow_threads(|| match l {
-        Loaded::Map(g) => {
-            let (d, _) = g.to_dense();
-            compute::homology(&Input::Map { map: &d, sc: None }, o, name)
-        }
-        Loaded::Simplicial(sc) => compute::homology(&Input::Simplicial(sc), o, name),
-        Loaded::Cubical(s) => compute::homology(
-            &Input::Cubical(Cubes { shape: s.shape(), bits: s.bits(), min: s.min(), reversed: false }),
-            o,
-            name,
-        ),
-        Loaded::Arch(x) => compute::homology(&Input::Arch(x), o, name),
-    });
+/// The facade's homology of an input, with the GIL released.
+fn facade(py: Python<'_>, input: &Input, o: &HomologyOptions) -> PyResult<PyHomology> {
+    let r = py.allow_threads(|| gmap::homology(input, o)).map_err(Failure::from)?;
+    finish(py, r)
+}
+
+/// The homology of facets given from Python (a list, a tuple, a 2-D array).
+fn facets_homology(py: Python<'_>, x: &Bound<'_, PyAny>, o: &HomologyOptions) -> PyResult<PyHomology> {
+    let facets = objects::facets_from_py(x)?;
+    let r = py.allow_threads(|| {
+        let sc = objects::complex_of(facets)?;
+        gmap::homology(&Input::Simplicial(Sourced::new(sc)), o).map_err(Failure::from)
+    })?;
     finish(py, r)
 }
 
@@ -291,120 +289,91 @@ fn homology(
     periodic: bool,
 ) -> PyResult<PyHomology> {
     let (method, via) = parse_method(method)?;
-    let o = Options { field: field_of(field)?, generators, method, via, periodic };
+    let mut o = HomologyOptions::default();
+    o.field = field_of(field)?;
+    o.generators = generators;
+    o.method = method;
+    o.via = via;
+    o.periodic = periodic;
     // facets as a list: the common small case first
     if let Ok(list) = x.downcast::<PyList>() {
-        let facets = objects::facets_from_py(list)?;
-        let r = py.allow_threads(|| {
-            let sc = objects::complex_of(facets)?;
-            compute::homology(&Input::Simplicial(&sc), &o, "facets")
-        });
-        return finish(py, r);
+        return facets_homology(py, list, &o);
     }
     if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
         let path: PathBuf = x.extract()?;
-        let name = path.display().to_string();
-        let l = py.allow_threads(|| objects::load(&path))?;
-        return homology_of_loaded(py, &l, &o, &name);
+        let r = py.allow_threads(|| gmap::homology_file(&path, &o)).map_err(Failure::from)?;
+        return finish(py, r);
     }
     if let Ok(m) = x.downcast::<PyGMap>() {
-        let mut b = m.borrow_mut();
-        let d = b.dense();
-        let sc = b.sc.clone();
-        drop(b);
-        let r = py.allow_threads(|| compute::homology(&Input::Map { map: &d, sc: sc.as_deref() }, &o, "the map"));
-        return finish(py, r);
+        let d = m.borrow_mut().dense();
+        let r = py.allow_threads(|| gmap::homology(&Input::Map(MapInput::new((*d).clone())), &o));
+        return finish(py, r.map_err(Failure::from)?);
     }
     if let Ok(s) = x.downcast::<PySimplicialComplex>() {
-        let s = s.get();
-        let name = s.name.clone().unwrap_or_else(|| "the complex".into());
-        let sc = s.sc.clone();
-        let r = py.allow_threads(|| compute::homology(&Input::Simplicial(&sc), &o, &name));
-        return finish(py, r);
+        return facade(py, &s.get().input, &o);
     }
     if let Ok(c) = x.downcast::<PyCubicalSet>() {
         let c = c.get();
-        let name = c.name.clone().unwrap_or_else(|| "the cubical set".into());
-        let cubes = Cubes { shape: &c.shape, bits: &c.bits, min: &c.min, reversed: c.reversed };
-        let r = py.allow_threads(|| compute::homology(&Input::Cubical(cubes), &o, &name));
+        let mut r = py.allow_threads(|| gmap::homology(&c.input, &o)).map_err(Failure::from)?;
+        if c.reversed {
+            compute::reverse_cube_axes(&mut r);
+        }
         return finish(py, r);
     }
     if let Ok(a) = x.downcast::<PyArchComplex>() {
-        let a = a.get();
-        let name = a.name.clone().unwrap_or_else(|| "the complex".into());
-        let xc = a.x.clone();
-        let r = py.allow_threads(|| compute::homology(&Input::Arch(&xc), &o, &name));
-        return finish(py, r);
+        return facade(py, &a.get().input, &o);
     }
     if let Ok(arr) = x.downcast::<numpy::PyUntypedArray>() {
         use numpy::PyUntypedArrayMethods;
         let kind = arr.dtype().kind();
         let facets = arr.ndim() == 2 && matches!(kind, b'i' | b'u') && arr.dtype().itemsize() > 1;
         if facets {
-            let np = py.import("numpy")?;
             let a = if kind == b'u' && arr.dtype().itemsize() == 8 {
                 x.clone()
             } else {
-                np.call_method1("ascontiguousarray", (x, "int64"))?
+                py.import("numpy")?.call_method1("ascontiguousarray", (x, "int64"))?
             };
-            let facets = objects::facets_from_py(&a)?;
-            let r = py.allow_threads(|| {
-                let sc = objects::complex_of(facets)?;
-                compute::homology(&Input::Simplicial(&sc), &o, "facets")
-            });
-            return finish(py, r);
+            return facets_homology(py, &a, &o);
         }
         let (shape, view, reversed) = objects::array_bits(x)?;
         let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?;
-        let min = vec![0i64; shape.len()];
-        let cubes = Cubes { shape: &shape, bits, min: &min, reversed };
-        let r = py.allow_threads(|| compute::homology(&Input::Cubical(cubes), &o, "the cubical array"));
+        let cubes = Cubes { shape: &shape, bits, reversed };
+        let r = py.allow_threads(|| compute::cubical_array(&cubes, &o))?;
         return finish(py, r);
     }
     // any other sequence of facets (tuples, generators of lists, …)
-    let facets = objects::facets_from_py(x)?;
-    let r = py.allow_threads(|| {
-        let sc = objects::complex_of(facets)?;
-        compute::homology(&Input::Simplicial(&sc), &o, "facets")
-    });
-    finish(py, r)
+    facets_homology(py, x, &o)
 }
 
 /// open(path): what the file holds: a GMap (.gmap, .moka, .off), a SimplicialComplex
 /// (.facets, .lex, FILE.lex#name), a CubicalSet (.cub, .pbm) or an ArchComplex (.json).
 #[pyfunction]
 fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
-    let name = Some(path.display().to_string());
-    let l = py.allow_threads(|| objects::load(&path))?;
-    Ok(match l {
-        Loaded::Map(g) => Py::new(py, PyGMap::from_labelled(g))?.into_any(),
-        Loaded::Simplicial(sc) => Py::new(py, PySimplicialComplex { sc: Arc::new(sc), name })?.into_any(),
-        Loaded::Cubical(s) => Py::new(py, PyCubicalSet::from_set(&s, name))?.into_any(),
-        Loaded::Arch(x) => Py::new(py, PyArchComplex { x: Arc::new(x), name })?.into_any(),
+    let input = py.allow_threads(|| gmap::open(&path)).map_err(Failure::from)?;
+    Ok(match input {
+        Input::Map(m) => {
+            let g = match m.labelled() {
+                Some(Ok(g)) => PyGMap::from_labelled(g.clone()),
+                Some(Err(e)) => return Err(Failure::from(e).into()),
+                None => PyGMap::from_dense(m.map()),
+            };
+            Py::new(py, g)?.into_any()
+        }
+        input @ Input::Simplicial(_) => Py::new(py, PySimplicialComplex { input })?.into_any(),
+        input @ Input::Cubical(_) => Py::new(py, PyCubicalSet { input, reversed: false })?.into_any(),
+        input @ Input::Arch(_) => Py::new(py, PyArchComplex { input })?.into_any(),
+        other => return Err(Failure::input(format!("{}: a {} has no Python class yet", path.display(), other.kind())).into()),
     })
 }
 
-/// The stage times of one input (seconds) and its groups: the rows of `gmap.bench`.
+/// The runs of `gmap bench` on files or folders, as its `--json` text: every route of
+/// every input with its stage times in ms, groups and agreement.
 #[pyfunction]
-#[pyo3(signature = (path, *, field = None))]
-fn _bench_one<'py>(py: Python<'py>, path: PathBuf, field: Option<u64>) -> PyResult<Bound<'py, PyDict>> {
-    let name = path.display().to_string();
-    let t0 = Instant::now();
-    let l = py.allow_threads(|| objects::load(&path))?;
-    let read = t0.elapsed().as_secs_f64();
-    let o = Options { field, generators: false, method: Method::Cellular, via: None, periodic: false };
-    let t1 = Instant::now();
-    let h = homology_of_loaded(py, &l, &o, &name)?;
-    let compute_s = t1.elapsed().as_secs_f64();
-    let d = PyDict::new(py);
-    d.set_item("file", &name)?;
-    d.set_item("route", h.report.route.map(compute::route_name))?;
-    d.set_item("read_s", read)?;
-    d.set_item("homology_s", compute_s)?;
-    d.set_item("total_s", read + compute_s)?;
-    d.set_item("betti", h.betti())?;
-    d.set_item("torsion", h.torsion(py)?)?;
-    Ok(d)
+fn _bench_json(py: Python<'_>, paths: Vec<PathBuf>) -> PyResult<String> {
+    let runs = py
+        .allow_threads(|| gmap::bench::bench(&paths, None, &gmap::Progress::hidden()))
+        .map_err(Failure::from)?;
+    Ok(gmap::bench::to_json(&runs).to_string())
 }
 
 fn build_result(py: Python<'_>, r: Result<gmap_core::DenseMap, gmap_ops::build::BuildError>) -> PyResult<Py<PyGMap>> {
@@ -472,11 +441,11 @@ fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
 #[pyfunction]
 fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<PyGMap>> {
     let f = objects::facets_from_py(facets)?;
-    let sc = Arc::new(py.allow_threads(|| objects::complex_of(f))?);
-    let m = py.allow_threads(|| compute::gmap_of(&sc))?;
-    let mut g = PyGMap::from_dense(&m);
-    g.sc = Some(sc);
-    Py::new(py, g)
+    let m = py.allow_threads(|| {
+        let sc = objects::complex_of(f)?;
+        Sourced::new(sc).to_gmap().map_err(Failure::from)
+    })?;
+    Py::new(py, PyGMap::from_dense(&m))
 }
 
 /// The compiled module.
@@ -491,7 +460,7 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyGenerator>()?;
     m.add_function(wrap_pyfunction!(homology, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
-    m.add_function(wrap_pyfunction!(_bench_one, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_json, m)?)?;
     m.add_function(wrap_pyfunction!(_build_grid, m)?)?;
     m.add_function(wrap_pyfunction!(_build_simplex, m)?)?;
     m.add_function(wrap_pyfunction!(_build_cube, m)?)?;

@@ -3,12 +3,11 @@
 //! `load`, docs/FORMATS.md §2).
 
 use std::path::Path;
-use std::sync::Arc;
 
-use numpy::{PyArrayDescrMethods, PyArray1, PyArrayMethods, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use gmap_core::DenseMap;
+use gmap::{Input, Sourced};
 use gmap_homology::arch::ArchComplex;
 use gmap_ops::import::{CubicalSet, SimplicialComplex};
 
@@ -19,30 +18,51 @@ use crate::gmapobj::PyGMap;
 /// labels); any complex: mixed dimensions, ridges in any number of facets.
 #[pyclass(name = "SimplicialComplex", module = "gmap", frozen)]
 pub struct PySimplicialComplex {
-    pub sc: Arc<SimplicialComplex>,
-    /// the file it was read from, to open messages
-    pub name: Option<String>,
+    /// always [`Input::Simplicial`]
+    pub input: Input,
 }
 
 /// A full cubical set: the unit cubes of a box that belong to the set.
 #[pyclass(name = "CubicalSet", module = "gmap", frozen)]
 pub struct PyCubicalSet {
-    /// cubes per axis, axis 0 fastest in `bits`
-    pub shape: Vec<usize>,
-    /// one byte a cube, 0 or 1
-    pub bits: Vec<u8>,
-    /// the box's minimal vertex, per axis of `shape`
-    pub min: Vec<i64>,
-    /// the numpy axes are those of `shape` reversed (a C-ordered array)
+    /// always [`Input::Cubical`]
+    pub input: Input,
+    /// the numpy axes are those of the set reversed (it came from a C-ordered array)
     pub reversed: bool,
-    pub name: Option<String>,
 }
 
 /// An architectural complex (an incidence graph of regions with weights, `.json`).
 #[pyclass(name = "ArchComplex", module = "gmap", frozen)]
 pub struct PyArchComplex {
-    pub x: Arc<ArchComplex>,
-    pub name: Option<String>,
+    /// always [`Input::Arch`]
+    pub input: Input,
+}
+
+impl PySimplicialComplex {
+    pub fn sc(&self) -> &SimplicialComplex {
+        match &self.input {
+            Input::Simplicial(s) => s.get(),
+            _ => unreachable!("a SimplicialComplex holds a simplicial input"),
+        }
+    }
+}
+
+impl PyCubicalSet {
+    pub fn set(&self) -> &CubicalSet {
+        match &self.input {
+            Input::Cubical(s) => s.get(),
+            _ => unreachable!("a CubicalSet holds a cubical input"),
+        }
+    }
+}
+
+impl PyArchComplex {
+    pub fn arch(&self) -> &ArchComplex {
+        match &self.input {
+            Input::Arch(s) => s.get(),
+            _ => unreachable!("an ArchComplex holds an architectural complex"),
+        }
+    }
 }
 
 /// Facets from a Python sequence of sequences of ints or a 2-D integer array.
@@ -106,28 +126,28 @@ impl PySimplicialComplex {
     fn py_new(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Self> {
         let f = facets_from_py(facets)?;
         let sc = py.allow_threads(|| complex_of(f))?;
-        Ok(PySimplicialComplex { sc: Arc::new(sc), name: None })
+        Ok(PySimplicialComplex { input: Input::Simplicial(Sourced::new(sc)) })
     }
 
     /// The dimension of the largest facets.
     #[getter]
     fn dim(&self) -> usize {
-        self.sc.dim()
+        self.sc().dim()
     }
 
     /// The facets, each a list of vertex labels as given.
     #[getter]
     fn facets(&self) -> Vec<Vec<u64>> {
-        self.sc.facets().map(<[u64]>::to_vec).collect()
+        self.sc().facets().map(<[u64]>::to_vec).collect()
     }
 
     /// The number of facets.
     fn __len__(&self) -> usize {
-        self.sc.total_facet_count()
+        self.sc().total_facet_count()
     }
 
     fn __repr__(&self) -> String {
-        format!("<gmap.SimplicialComplex dim={} facets={}>", self.sc.dim(), self.sc.total_facet_count())
+        format!("<gmap.SimplicialComplex dim={} facets={}>", self.sc().dim(), self.sc().total_facet_count())
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Vec<Vec<u64>>,))> {
@@ -136,31 +156,28 @@ impl PySimplicialComplex {
 
     /// Whether every facet has the top dimension.
     fn is_pure(&self) -> bool {
-        self.sc.is_pure()
+        self.sc().is_pure()
     }
 
     /// The G-map of the facets (a pure pseudo-manifold: every ridge in at most two facets),
     /// one dart per flag; PreconditionError otherwise.
     fn to_gmap(&self, py: Python<'_>) -> PyResult<PyGMap> {
-        let sc = self.sc.clone();
-        let m = py.allow_threads(|| crate::compute::gmap_of(&sc))?;
-        let mut g = PyGMap::from_dense(&m);
-        g.sc = Some(self.sc.clone());
-        Ok(g)
+        let m = py.allow_threads(|| match &self.input {
+            Input::Simplicial(s) => s.to_gmap(),
+            _ => unreachable!("a SimplicialComplex holds a simplicial input"),
+        });
+        Ok(PyGMap::from_dense(&m.map_err(Failure::from)?))
     }
 
-    /// Writes the facets to a `.facets` file (one facet a line).
-    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        let ext = extension(&path);
-        if ext != "facets" {
-            return Err(Failure::input(format!(
-                "{}: a simplicial complex is written as .facets, not '.{ext}'",
-                path.display()
-            ))
-            .into());
+    /// Writes the complex: `.facets` (its facets, one a line); the other formats through
+    /// its G-map (`.gmap`, `.moka`, `.off`, `.vtk`, `.dot`, as `gmap convert`).
+    fn save(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<()> {
+        if gmap::input::extension(&path) != "facets" {
+            let o = gmap::SaveOptions::default();
+            return py.allow_threads(|| gmap::save(&self.input, &path, &o)).map_err(|e| Failure::from(e).into());
         }
         let mut s = String::new();
-        for f in self.sc.facets() {
+        for f in self.sc().facets() {
             let words: Vec<String> = f.iter().map(u64::to_string).collect();
             s.push_str(&words.join(" "));
             s.push('\n');
@@ -173,16 +190,19 @@ impl PySimplicialComplex {
 
 impl PyCubicalSet {
     /// A set from any numpy array (nonzero = present), copied once; the axes are the
-    /// array's.
-    pub fn from_array(a: &Bound<'_, PyAny>) -> PyResult<Self> {
+    /// array's, the minimal vertex `min` (numpy axis order; zeros by default).
+    pub fn from_array(a: &Bound<'_, PyAny>, min: Option<Vec<i64>>) -> PyResult<Self> {
         let (shape, view, reversed) = array_bits(a)?;
-        let min = vec![0; shape.len()];
-        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?.iter().map(|&b| (b != 0) as u8).collect();
-        Ok(PyCubicalSet { shape, bits, min, reversed, name: None })
-    }
-
-    pub fn from_set(s: &CubicalSet, name: Option<String>) -> Self {
-        PyCubicalSet { shape: s.shape().to_vec(), bits: s.bits().to_vec(), min: s.min().to_vec(), reversed: false, name }
+        let mut min = min.unwrap_or_else(|| vec![0; shape.len()]);
+        if min.len() != shape.len() {
+            return Err(Failure::input(format!("min has {} coordinates for {} axes", min.len(), shape.len())).into());
+        }
+        if reversed {
+            min.reverse();
+        }
+        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?.to_vec();
+        let set = CubicalSet::new(min, shape, bits).map_err(Failure::from)?;
+        Ok(PyCubicalSet { input: Input::Cubical(Sourced::new(set)), reversed })
     }
 }
 
@@ -251,17 +271,7 @@ impl PyCubicalSet {
     #[new]
     #[pyo3(signature = (array, min = None))]
     fn py_new(array: &Bound<'_, PyAny>, min: Option<Vec<i64>>) -> PyResult<Self> {
-        let mut s = PyCubicalSet::from_array(array)?;
-        if let Some(mut m) = min {
-            if m.len() != s.shape.len() {
-                return Err(Failure::input(format!("min has {} coordinates for {} axes", m.len(), s.shape.len())).into());
-            }
-            if s.reversed {
-                m.reverse();
-            }
-            s.min = m;
-        }
-        Ok(s)
+        PyCubicalSet::from_array(array, min)
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyAny>, Vec<i64>))> {
@@ -272,16 +282,16 @@ impl PyCubicalSet {
     /// The dimension d (the array's number of axes).
     #[getter]
     fn dim(&self) -> usize {
-        self.shape.len()
+        self.set().dim()
     }
 
     /// The number of cubes in the set.
     fn __len__(&self) -> usize {
-        self.bits.iter().filter(|&&b| b != 0).count()
+        self.set().cube_count()
     }
 
     fn __repr__(&self) -> String {
-        format!("<gmap.CubicalSet dim={} shape={:?} cubes={}>", self.shape.len(), self.np_shape(), self.__len__())
+        format!("<gmap.CubicalSet dim={} shape={:?} cubes={}>", self.dim(), self.np_shape(), self.__len__())
     }
 
     /// The box's shape in cubes per axis (numpy axis order).
@@ -293,7 +303,7 @@ impl PyCubicalSet {
     /// The box's minimal vertex (numpy axis order).
     #[getter]
     fn min(&self) -> Vec<i64> {
-        let mut m = self.min.clone();
+        let mut m = self.set().min().to_vec();
         if self.reversed {
             m.reverse();
         }
@@ -304,7 +314,7 @@ impl PyCubicalSet {
     /// vertex min + (i0, …).
     #[getter]
     fn array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let flat = PyArray1::from_slice(py, &self.bits);
+        let flat = PyArray1::from_slice(py, self.set().bits());
         let order = if self.reversed { "C" } else { "F" };
         let shaped = flat.call_method("reshape", (self.np_shape(),), Some(&[("order", order)].into_py_dict(py)?))?;
         shaped.call_method1("astype", ("bool",))
@@ -314,19 +324,19 @@ impl PyCubicalSet {
     /// box's opposite faces identified).
     #[pyo3(signature = (periodic = false))]
     fn to_gmap(&self, py: Python<'_>, periodic: bool) -> PyResult<PyGMap> {
-        let set = CubicalSet::new(self.min.clone(), self.shape.clone(), self.bits.clone()).map_err(Failure::from)?;
-        let m: DenseMap = py.allow_threads(|| set.gmap(periodic)).map_err(Failure::from)?;
+        let set = self.set();
+        let m = py.allow_threads(|| set.gmap(periodic)).map_err(Failure::from)?;
         Ok(PyGMap::from_dense(&m))
     }
 
     /// Writes the set as a CHomP `.cub` file (one cube a line, numpy axis order).
     fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        let ext = extension(&path);
+        let ext = gmap::input::extension(&path);
         if ext != "cub" {
             return Err(Failure::input(format!("{}: a cubical set is written as .cub, not '.{ext}'", path.display())).into());
         }
-        let set = CubicalSet::new(self.min.clone(), self.shape.clone(), self.bits.clone()).map_err(Failure::from)?;
-        let mut s = format!("dimension {}\n", self.shape.len());
+        let set = self.set();
+        let mut s = format!("dimension {}\n", set.dim());
         for mut c in set.cubes() {
             if self.reversed {
                 c.reverse();
@@ -344,7 +354,7 @@ impl PyCubicalSet {
 
 impl PyCubicalSet {
     fn np_shape(&self) -> Vec<usize> {
-        let mut s = self.shape.clone();
+        let mut s = self.set().shape().to_vec();
         if self.reversed {
             s.reverse();
         }
@@ -360,22 +370,22 @@ impl PyArchComplex {
     #[new]
     fn py_new(text: &str) -> PyResult<Self> {
         let x = gmap_homology::json::read_json(text).map_err(Failure::from)?;
-        Ok(PyArchComplex { x: Arc::new(x), name: None })
+        Ok(PyArchComplex { input: Input::Arch(Sourced::new(x)) })
     }
 
     /// The dimension.
     #[getter]
     fn dim(&self) -> usize {
-        self.x.dim()
+        self.arch().dim()
     }
 
     /// The number of regions.
     fn __len__(&self) -> usize {
-        self.x.regions().len()
+        self.arch().regions().len()
     }
 
     fn __repr__(&self) -> String {
-        format!("<gmap.ArchComplex dim={} regions={}>", self.x.dim(), self.x.regions().len())
+        format!("<gmap.ArchComplex dim={} regions={}>", self.arch().dim(), self.arch().regions().len())
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
@@ -384,104 +394,22 @@ impl PyArchComplex {
 
     /// The `.json` text of the complex.
     fn to_json(&self) -> String {
-        gmap_homology::json::write_json(&self.x)
+        gmap_homology::json::write_json(self.arch())
     }
 
-    /// Writes the complex as a `.json` file.
-    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
-        let ext = extension(&path);
-        if ext != "json" {
-            return Err(Failure::input(format!(
-                "{}: an architectural complex is written as .json, not '.{ext}'",
-                path.display()
-            ))
-            .into());
-        }
-        gmap_core::io::write_atomic(&path, gmap_homology::json::write_json(&self.x).as_bytes())
-            .map_err(|e| Failure::new(Kind::Io, format!("{}: {e}", path.display())))?;
-        Ok(())
+    /// Writes the complex by extension (`.json`, and what `gmap convert` writes from one).
+    fn save(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<()> {
+        let o = gmap::SaveOptions::default();
+        py.allow_threads(|| gmap::save(&self.input, &path, &o)).map_err(|e| Failure::from(e).into())
     }
 }
 
-/// The lower-cased extension of a path; for `FILE.lex#name` (no file of that whole name),
-/// `lex`.
-pub fn extension(path: &Path) -> String {
-    let (file, name) = split_lex_name(path);
-    let base = if name.is_some() && !path.exists() { file.as_path() } else { path };
-    base.extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
-}
-
-/// `FILE.lex#name` split into the file and the complex name.
-pub fn split_lex_name(path: &Path) -> (std::path::PathBuf, Option<String>) {
-    let s = path.to_string_lossy();
-    match s.to_ascii_lowercase().find(".lex#") {
-        Some(k) => {
-            let name = &s[k + 5..];
-            (std::path::PathBuf::from(&s[..k + 4]), (!name.is_empty()).then(|| name.to_string()))
-        }
-        None => (path.to_path_buf(), None),
-    }
-}
-
-/// What a file holds, read without Python.
-pub enum Loaded {
-    Map(gmap_core::LabelledGMap),
-    Simplicial(SimplicialComplex),
-    Cubical(CubicalSet),
-    Arch(ArchComplex),
-}
-
-/// Reads a file by its extension (the command line's readers and messages).
-pub fn load(path: &Path) -> Res<Loaded> {
-    use gmap_ops::import::{read_cub, read_facets_complex, read_lex_complex, read_off_with, read_pbm};
-    let file = path.display().to_string();
-    let r = match extension(path).as_str() {
-        "gmap" => Loaded::Map(gmap_core::io::read_labelled_gmap(path)?),
-        "moka" => {
-            let m = gmap_core::io::read_moka(path)?;
-            Loaded::Map(gmap_core::LabelledGMap::from_dense_with_attributes(&m).0)
-        }
-        "off" => {
-            let m = read_off_with(path, None)?;
-            Loaded::Map(gmap_core::LabelledGMap::from_dense_with_attributes(&m).0)
-        }
-        "facets" => Loaded::Simplicial(read_facets_complex(path)?),
-        "lex" if path.exists() => Loaded::Simplicial(read_lex_complex(path, None)?),
-        "lex" => {
-            let (f, name) = split_lex_name(path);
-            Loaded::Simplicial(read_lex_complex(&f, name.as_deref())?)
-        }
-        "json" => Loaded::Arch(gmap_homology::json::read_json_file(path)?),
-        "cub" => Loaded::Cubical(read_cub(path)?),
-        "pbm" => Loaded::Cubical(read_pbm(path)?),
-        "vtk" | "dot" => {
-            return Err(Failure::input(format!(
-                "{file}: unsupported input format '.{}': it is written only, as a view (read the .gmap it came from)",
-                extension(path)
-            )))
-        }
-        other => {
-            return Err(Failure::input(format!(
-                "{file}: unsupported input format '.{}'",
-                gmap_core::io::shorten(other.as_bytes(), 40)
-            )))
-        }
-    };
-    Ok(r)
-}
-
-/// Writes a map by extension.
+/// Writes a map by extension: `.gmap` with its points and labels; the other formats
+/// (`.moka`, `.off`, `.facets`, `.vtk`, `.dot`) as `gmap convert` writes them.
 pub fn save_map(m: &mut PyGMap, path: &Path) -> Res<()> {
-    match extension(path).as_str() {
-        "gmap" => Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?),
-        "moka" => {
-            let d = m.dense();
-            Ok(gmap_core::io::write_moka(&d, path)?)
-        }
-        other => Err(Failure::input(format!(
-            "{}: a G-map is written as .gmap or .moka, not '.{}'",
-            path.display(),
-            gmap_core::io::shorten(other.as_bytes(), 40)
-        ))),
+    if gmap::input::extension(path) == "gmap" {
+        return Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?);
     }
+    let d = m.dense();
+    Ok(gmap::save::save_map(&d, path)?)
 }
