@@ -81,14 +81,19 @@ impl PyGMap {
 
     fn handle(&self, d: i64) -> Res<DartId> {
         usize::try_from(d).ok().and_then(|k| self.ids.get(k).copied()).ok_or_else(|| {
-            Failure::input(format!("dart {d} does not exist: the map has {} darts (0..{})", self.ids.len(), self.ids.len()))
+            Failure::input(format!(
+                "dart {d} does not exist: the map has {} darts (0..{})",
+                self.ids.len(),
+                self.ids.len()
+            ))
         })
     }
 
     fn dim_index(&self, i: i64, what: &str) -> Res<usize> {
-        usize::try_from(i).ok().filter(|&i| i <= self.g.dim()).ok_or_else(|| {
-            Failure::input(format!("{what} {i} does not exist in a map of dimension {}", self.g.dim()))
-        })
+        usize::try_from(i)
+            .ok()
+            .filter(|&i| i <= self.g.dim())
+            .ok_or_else(|| Failure::input(format!("{what} {i} does not exist in a map of dimension {}", self.g.dim())))
     }
 
     /// The dart number of a handle after a refresh.
@@ -138,12 +143,66 @@ fn label_from_py(v: &Bound<'_, PyAny>) -> PyResult<LabelValue> {
 macro_rules! with_labels_mut {
     ($g:expr, $i:expr, $d:expr, |$l:ident| $body:expr) => {{
         match $i {
-            0 => { let x = $g.attribute_mut::<0>($d); match x { Some($l) => { $body; true } None => false } }
-            1 => { let x = $g.attribute_mut::<1>($d); match x { Some($l) => { $body; true } None => false } }
-            2 => { let x = $g.attribute_mut::<2>($d); match x { Some($l) => { $body; true } None => false } }
-            3 => { let x = $g.attribute_mut::<3>($d); match x { Some($l) => { $body; true } None => false } }
-            4 => { let x = $g.attribute_mut::<4>($d); match x { Some($l) => { $body; true } None => false } }
-            5 => { let x = $g.attribute_mut::<5>($d); match x { Some($l) => { $body; true } None => false } }
+            0 => {
+                let x = $g.attribute_mut::<0>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            1 => {
+                let x = $g.attribute_mut::<1>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            2 => {
+                let x = $g.attribute_mut::<2>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            3 => {
+                let x = $g.attribute_mut::<3>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            4 => {
+                let x = $g.attribute_mut::<4>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            5 => {
+                let x = $g.attribute_mut::<5>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
             _ => false,
         }
     }};
@@ -168,9 +227,10 @@ impl PyGMap {
     #[new]
     #[pyo3(signature = (dim, darts = 0))]
     fn py_new(dim: i64, darts: i64) -> PyResult<Self> {
-        let dim = usize::try_from(dim).ok().filter(|&d| d <= MAX_DIM).ok_or_else(|| {
-            Failure::input(format!("dimension {dim}: a map has a dimension from 0 to {MAX_DIM}"))
-        })?;
+        let dim = usize::try_from(dim)
+            .ok()
+            .filter(|&d| d <= MAX_DIM)
+            .ok_or_else(|| Failure::input(format!("dimension {dim}: a map has a dimension from 0 to {MAX_DIM}")))?;
         let darts = usize::try_from(darts)
             .ok()
             .filter(|&n| n < u32::MAX as usize)

@@ -11,7 +11,7 @@
 
 use std::path::PathBuf;
 
-use numpy::{PyArrayDescrMethods, PyArray1, PyArrayMethods, ToPyArray};
+use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
@@ -98,8 +98,7 @@ fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> 
                 (darts.to_pyarray(py).into_any().unbind(), py.None())
             }
             Some(CellName::Region(_)) => {
-                let ids: Vec<u64> =
-                    cells_of().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
+                let ids: Vec<u64> = cells_of().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
                 (ids.to_pyarray(py).into_any().unbind(), py.None())
             }
             _ => {
@@ -362,7 +361,9 @@ fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
         input @ Input::Simplicial(_) => Py::new(py, PySimplicialComplex { input })?.into_any(),
         input @ Input::Cubical(_) => Py::new(py, PyCubicalSet { input, reversed: false })?.into_any(),
         input @ Input::Arch(_) => Py::new(py, PyArchComplex { input })?.into_any(),
-        other => return Err(Failure::input(format!("{}: a {} has no Python class yet", path.display(), other.kind())).into()),
+        other => {
+            return Err(Failure::input(format!("{}: a {} has no Python class yet", path.display(), other.kind())).into())
+        }
     })
 }
 
@@ -370,9 +371,8 @@ fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
 /// every input with its stage times in ms, groups and agreement.
 #[pyfunction]
 fn _bench_json(py: Python<'_>, paths: Vec<PathBuf>) -> PyResult<String> {
-    let runs = py
-        .allow_threads(|| gmap::bench::bench(&paths, None, &gmap::Progress::hidden()))
-        .map_err(Failure::from)?;
+    let runs =
+        py.allow_threads(|| gmap::bench::bench(&paths, None, &gmap::Progress::hidden())).map_err(Failure::from)?;
     Ok(gmap::bench::to_json(&runs).to_string())
 }
 
@@ -395,7 +395,9 @@ fn _build_grid(py: Python<'_>, shape: Vec<usize>, periodic: Option<&Bound<'_, Py
         return Err(Failure::input(format!("periodic has {} entries for {} axes", p.len(), shape.len())).into());
     }
     let cells = shape.iter().try_fold(1u64, |a, &s| a.checked_mul(s as u64));
-    let darts = cells.and_then(|c| c.checked_mul(1u64 << shape.len().min(40)).and_then(|x| x.checked_mul(shape.len().max(1) as u64)));
+    let darts = cells.and_then(|c| {
+        c.checked_mul(1u64 << shape.len().min(40)).and_then(|x| x.checked_mul(shape.len().max(1) as u64))
+    });
     gmap_core::resources::check_memory("the grid", darts.and_then(|d| d.checked_mul(8 * (shape.len() as u64 + 1))))
         .map_err(Failure::from)?;
     build_result(py, py.allow_threads(|| gmap_ops::build::grid(&shape, &p)))

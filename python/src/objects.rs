@@ -75,7 +75,10 @@ pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
             let mut facet = Vec::with_capacity(row.len());
             for &l in row {
                 if l < 0 {
-                    return Err(Failure::input(format!("facet {f}: vertex label {l} is negative (labels are 0..2^64)")).into());
+                    return Err(Failure::input(format!(
+                        "facet {f}: vertex label {l} is negative (labels are 0..2^64)"
+                    ))
+                    .into());
                 }
                 facet.push(l as u64);
             }
@@ -91,14 +94,12 @@ pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
         return Ok(v);
     }
     // say which facet and label is wrong
-    let seq = x
-        .try_iter()
-        .map_err(|_| Failure::input("facets must be a sequence of sequences of non-negative ints"))?;
+    let seq =
+        x.try_iter().map_err(|_| Failure::input("facets must be a sequence of sequences of non-negative ints"))?;
     for (f, facet) in seq.enumerate() {
         let facet = facet?;
-        let items = facet
-            .try_iter()
-            .map_err(|_| Failure::input(format!("facet {f} is not a sequence of vertex labels")))?;
+        let items =
+            facet.try_iter().map_err(|_| Failure::input(format!("facet {f} is not a sequence of vertex labels")))?;
         for l in items {
             let l = l?;
             if l.extract::<u64>().is_err() {
@@ -212,9 +213,7 @@ impl PyCubicalSet {
 /// numpy (`a != 0`) first.
 pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::PyReadonlyArrayDyn<'py, u8>, bool)> {
     let py = a.py();
-    let arr = a
-        .downcast::<numpy::PyUntypedArray>()
-        .map_err(|_| Failure::input("a cubical set is a numpy array"))?;
+    let arr = a.downcast::<numpy::PyUntypedArray>().map_err(|_| Failure::input("a cubical set is a numpy array"))?;
     let nd = arr.ndim();
     if !(1..=8).contains(&nd) {
         return Err(Failure::input(format!("a cubical array has 1 to 8 dimensions, not {nd}")).into());
@@ -254,7 +253,8 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
             .into());
         }
         let np = py.import("numpy")?;
-        np.call_method1("ascontiguousarray", (np.call_method1("not_equal", (a, 0))?,))?.call_method1("view", ("uint8",))?
+        np.call_method1("ascontiguousarray", (np.call_method1("not_equal", (a, 0))?,))?
+            .call_method1("view", ("uint8",))?
     };
     let view = bytes.downcast::<numpy::PyArrayDyn<u8>>()?.readonly();
     let c_order = view.is_c_contiguous();
@@ -333,7 +333,9 @@ impl PyCubicalSet {
     fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
         let ext = gmap::input::extension(&path);
         if ext != "cub" {
-            return Err(Failure::input(format!("{}: a cubical set is written as .cub, not '.{ext}'", path.display())).into());
+            return Err(
+                Failure::input(format!("{}: a cubical set is written as .cub, not '.{ext}'", path.display())).into()
+            );
         }
         let set = self.set();
         let mut s = format!("dimension {}\n", set.dim());
