@@ -133,6 +133,7 @@ def cubical_table(runs, quick):
             r = 1 if np.prod(shape) > 10**7 else runs
             g_t, g_b, o_t, o_h = median_alternating(r, gudhi_cubical(top), lambda: gmap.homology(a))
             rows.append(("x".join(map(str, shape)), density, g_t, o_t, same(o_h.betti, g_b)))
+            print(f"  {rows[-1][0]} at {density}: GUDHI {g_t:.3f} s, gmap {o_t:.3f} s", file=sys.stderr, flush=True)
     print("\n### Cubical arrays: gmap.homology(bool array) against CubicalComplex(top_dimensional_cells=...)\n")
     print("| shape | density | GUDHI s | gmap s | GUDHI / gmap | Betti agree |")
     print("| --- | ---: | ---: | ---: | ---: | --- |")

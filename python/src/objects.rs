@@ -65,6 +65,9 @@ impl PyArchComplex {
     }
 }
 
+/// What `__reduce__` gives pickle: a constructor and its arguments.
+type Reduced<'py, A> = PyResult<(Bound<'py, PyAny>, A)>;
+
 /// Facets from a Python sequence of sequences of ints or a 2-D integer array.
 pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
     if let Ok(a) = x.downcast::<numpy::PyArray2<i64>>() {
@@ -151,7 +154,7 @@ impl PySimplicialComplex {
         format!("<gmap.SimplicialComplex dim={} facets={}>", self.sc().dim(), self.sc().total_facet_count())
     }
 
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Vec<Vec<u64>>,))> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, (Vec<Vec<u64>>,)> {
         Ok((slf.get_type().into_any(), (slf.get().facets(),)))
     }
 
@@ -274,7 +277,7 @@ impl PyCubicalSet {
         PyCubicalSet::from_array(array, min)
     }
 
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyAny>, Vec<i64>))> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, (Bound<'py, PyAny>, Vec<i64>)> {
         let py = slf.py();
         Ok((slf.get_type().into_any(), (slf.get().array(py)?, slf.get().min())))
     }
