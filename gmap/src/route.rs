@@ -211,11 +211,26 @@ pub fn face_complex_within(
     file: &str,
     labels: bool,
 ) -> Result<FaceComplex> {
-    let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
+    let limit = max_darts.unwrap_or_else(|| default_face_limit(sc));
     face_complex_of(sc.facets(), limit, labels).map_err(|e| match e {
         FaceError::TooManyFaces { .. } => err!(Limit, "{file}: {e}; raise the limit with --max-darts N").dart_limit(),
         e => Error::from_source(ErrorKind::Limit, &e).context(file.to_string()).flattened(""),
     })
+}
+
+/// Complexes of at most this many faces (counted with repetition, a few megabytes of tables)
+/// take the direct route without a look at the memory available.
+const SMALL_FACES: u64 = 1 << 16;
+
+/// The default face limit: [`gmap_ops::import::default_max_faces`], which reads the memory
+/// available (`/proc/meminfo`, about 100 µs), except for a complex of at most
+/// [`SMALL_FACES`] faces, which passes at once (a pass over its facets): an in-process call
+/// on a small complex costs microseconds.
+fn default_face_limit(sc: &SimplicialComplex) -> u64 {
+    match gmap_homology::simplices::face_estimate(sc.facets()) {
+        Some(e) if e <= SMALL_FACES => SMALL_FACES,
+        _ => gmap_ops::import::default_max_faces(sc.dim()),
+    }
 }
 
 /// The direct route for a simplicial complex: every face of every facet is a cell, no

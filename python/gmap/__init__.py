@@ -1,0 +1,143 @@
+"""gmap: generalized maps and their integer homology, in process.
+
+The library of the ``gmap`` command (a Rust workspace) for Python: read any file the
+command reads, build and edit generalized maps, and compute homology over Z or Z/p of
+G-maps, simplicial complexes, cubical sets (numpy arrays) and architectural complexes,
+with the command's routes, checks and messages.
+
+>>> import gmap
+>>> gmap.homology([[0, 1, 2], [0, 2, 3], [0, 1, 3], [1, 2, 3]]).betti
+[1, 0, 1]
+
+Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from facets) and
+:mod:`gmap.dask` (a corpus on a Dask cluster).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+from typing import Any, Iterable, List, Sequence, Union
+
+from ._gmap import (
+    ArchComplex,
+    ComputationError,
+    CubicalSet,
+    Generator,
+    GMap,
+    GmapError,
+    Homology,
+    InputError,
+    LimitError,
+    ParseError,
+    PreconditionError,
+    SimplicialComplex,
+    ValidityError,
+    _bench_json,
+    homology,
+    open,
+)
+from . import build
+
+__all__ = [
+    "ArchComplex",
+    "ComputationError",
+    "CubicalSet",
+    "Generator",
+    "GMap",
+    "GmapError",
+    "Homology",
+    "InputError",
+    "LimitError",
+    "ParseError",
+    "PreconditionError",
+    "SimplicialComplex",
+    "ValidityError",
+    "bench",
+    "build",
+    "homology",
+    "incidence_graph",
+    "open",
+]
+
+__version__ = "0.1.0"
+
+
+def incidence_graph(m: GMap) -> Any:
+    """The incidence graph of a map's cells as a ``networkx.Graph``.
+
+    Nodes are ``(i, c)`` for the i-cell numbered ``c`` (the order of ``m.cells(i)``), with
+    the attributes ``dim`` and ``dart`` (one of its darts); an edge joins an i-cell to each
+    (i+1)-cell it bounds. Needs networkx (``pip install networkx``).
+    """
+    try:
+        import networkx as nx
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("gmap.incidence_graph needs networkx: pip install networkx") from e
+    g = nx.Graph()
+    for i in range(m.dim + 1):
+        for c, d in enumerate(m.cells(i).tolist()):
+            g.add_node((i, c), dim=i, dart=d)
+    g.add_edges_from(m.incidences())
+    return g
+
+
+GMap.incidence_graph = incidence_graph  # type: ignore[attr-defined]
+
+
+def _facets_of(path: str) -> "list[list[int]] | None":
+    """The facets of a .facets/.lex input (for GUDHI's side of a benchmark), else None."""
+    ext = os.path.splitext(str(path).split("#")[0])[1].lower()
+    if ext not in (".facets", ".lex"):
+        return None
+    obj = open(path)
+    return obj.facets if isinstance(obj, SimplicialComplex) else None
+
+
+def _gudhi_time(facets: "list[list[int]]") -> "tuple[float, list[int]]":
+    """GUDHI's time on the same cells: a SimplexTree of the facets and its persistence."""
+    import gudhi
+
+    t = time.perf_counter()
+    st = gudhi.SimplexTree()
+    for f in facets:
+        st.insert(f)
+    st.compute_persistence(persistence_dim_max=True)
+    betti = st.betti_numbers()
+    return time.perf_counter() - t, betti
+
+
+def bench(paths: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], gudhi: bool = True) -> List[dict]:
+    """Times every route of each input in process, as ``gmap bench --json`` does: a list of
+    dicts, one per input and route, with ``input``, ``route``, ``cells``, ``times_ms``
+    (``read``, ``cells``, ``border``, ``reduction``, ``smith``, ``total``), ``groups``,
+    ``betti``, ``torsion``, ``error`` and ``agree``. For a simplicial complex, when ``gudhi``
+    is true and GUDHI is installed, ``gudhi_ms`` is GUDHI's time on the same facets (a
+    SimplexTree and its persistence in all dimensions over Z/2) and ``gudhi_betti`` its Betti
+    numbers.
+
+    A folder stands for every file in it that gmap reads, sorted.
+    """
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    rows = json.loads(_bench_json([os.fspath(p) for p in paths]))["rows"]
+    have_gudhi = False
+    if gudhi:
+        try:
+            import gudhi as _  # noqa: F401
+
+            have_gudhi = True
+        except ImportError:
+            pass
+    if have_gudhi:
+        done = {}
+        for row in rows:
+            f = row["input"]
+            if f not in done:
+                facets = _facets_of(f)
+                done[f] = None if facets is None else _gudhi_time(facets)
+            if done[f] is not None:
+                seconds, betti = done[f]
+                row["gudhi_ms"], row["gudhi_betti"] = seconds * 1e3, betti
+    return rows

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Builds the Python package into a fresh virtual environment and runs its tests.
+#
+#   bash python/run-tests.sh            # from anywhere in the repository
+#
+# Steps: build the `gmap` binary (the tests compare with its --json output), make a new
+# venv in a temporary folder, install maturin numpy pytest hypothesis networkx
+# dask[distributed] (and gudhi when pip can get it), `pip install ./python`, run pytest
+# on python/tests. Exits non-zero when any step or test fails. GMAP_PYTHON picks the
+# interpreter (default python3); GMAP_VENV keeps the venv in a given folder instead.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(cd "$here/.." && pwd)"
+python="${GMAP_PYTHON:-python3}"
+
+cd "$repo"
+echo "== building the gmap command (for the comparison with the package)"
+cargo build --profile test-release --bin gmap --quiet
+export GMAP_BIN="$repo/target/test-release/gmap"
+export GMAP_REQUIRE_CLI=1
+
+venv="${GMAP_VENV:-}"
+cleanup=""
+if [ -z "$venv" ]; then
+    venv="$(mktemp -d "${TMPDIR:-/tmp}/gmap-venv.XXXXXX")"
+    cleanup="$venv"
+fi
+trap '[ -n "$cleanup" ] && rm -rf "$cleanup"' EXIT
+
+echo "== a fresh virtual environment in $venv"
+"$python" -m venv "$venv"
+pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
+"${pip[@]}" install maturin numpy pytest hypothesis networkx "dask[distributed]"
+"${pip[@]}" install gudhi || echo "(gudhi not installed: its comparisons are skipped)"
+
+echo "== pip install ./python"
+"${pip[@]}" install ./python
+
+echo "== pytest python/tests"
+# from the repository root, with the installed package (not the source folder) imported
+"$venv/bin/python" -m pytest python/tests -q -p no:cacheprovider "$@"

@@ -1,0 +1,709 @@
+//! `gmap.GMap`: an editable generalized map with points and labels, darts numbered `0..N`.
+//!
+//! Storage is the kernel's editable map ([`LabelledGMap`]: stable handles, cell labels of
+//! dimensions 0–5, a point per vertex). Python sees darts as integers `0..N` in storage
+//! order: `ids[k]` is the handle of dart `k`. Queries run on the frozen [`DenseMap`],
+//! made once after each edit (O(N n)) and kept until the next; sewing keeps the numbering,
+//! an Euler operator that makes or removes darts renumbers them (in storage order).
+
+use std::sync::Arc;
+
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, ToPyArray};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+use gmap_core::{AlphaSet, DartId, DenseMap, LabelValue, LabelledGMap, Labels, MAX_DIM};
+use gmap_ops::euler::ops as eops;
+
+use crate::errors::{Failure, Kind, Res};
+
+/// An editable generalized map of dimension `dim` (CGAL's `Generalized_map`): darts
+/// `0..len(m)`, involutions `alpha_0..alpha_dim`, a point per vertex, labels per cell.
+#[pyclass(name = "GMap", module = "gmap")]
+pub struct PyGMap {
+    pub(crate) g: LabelledGMap,
+    ids: Vec<DartId>,
+    /// the dart number of each storage slot (`u32::MAX` for an empty slot)
+    slot_index: Vec<u32>,
+    dense: Option<Arc<DenseMap>>,
+}
+
+impl PyGMap {
+    /// Wraps a dense map (no labels).
+    pub fn from_dense(m: &DenseMap) -> Self {
+        let (g, ids) = LabelledGMap::from_dense_with_attributes(m);
+        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None };
+        m.index_slots();
+        m
+    }
+
+    /// Wraps a labelled map.
+    pub fn from_labelled(g: LabelledGMap) -> Self {
+        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None };
+        m.refresh();
+        m
+    }
+
+    /// Renumbers the darts after darts were made or removed.
+    fn refresh(&mut self) {
+        let (d, ids) = self.g.to_dense();
+        self.ids = ids;
+        self.dense = Some(Arc::new(d));
+        self.index_slots();
+    }
+
+    /// Numbers the storage slots after the darts changed.
+    fn index_slots(&mut self) {
+        self.slot_index.clear();
+        self.slot_index.resize(self.g.index_bound(), u32::MAX);
+        for (k, &h) in self.ids.iter().enumerate() {
+            self.slot_index[self.g.dart_index(h)] = k as u32;
+        }
+    }
+
+    /// The dart number of a live handle.
+    fn number(&self, h: DartId) -> usize {
+        self.slot_index[self.g.dart_index(h)] as usize
+    }
+
+    /// Drops the frozen map after an edit that keeps the darts.
+    fn touched(&mut self) {
+        self.dense = None;
+    }
+
+    /// The frozen map (made now if an edit dropped it).
+    pub fn dense(&mut self) -> Arc<DenseMap> {
+        if self.dense.is_none() {
+            self.refresh();
+        }
+        self.dense.clone().expect("just made")
+    }
+
+    fn handle(&self, d: i64) -> Res<DartId> {
+        usize::try_from(d).ok().and_then(|k| self.ids.get(k).copied()).ok_or_else(|| {
+            Failure::input(format!(
+                "dart {d} does not exist: the map has {} darts (0..{})",
+                self.ids.len(),
+                self.ids.len()
+            ))
+        })
+    }
+
+    fn dim_index(&self, i: i64, what: &str) -> Res<usize> {
+        usize::try_from(i)
+            .ok()
+            .filter(|&i| i <= self.g.dim())
+            .ok_or_else(|| Failure::input(format!("{what} {i} does not exist in a map of dimension {}", self.g.dim())))
+    }
+
+    /// The dart number of a handle after a refresh.
+    fn index_of(&mut self, h: DartId) -> usize {
+        self.refresh();
+        self.number(h)
+    }
+
+    fn after_insert(&mut self, r: Result<DartId, gmap_ops::euler::EulerError>) -> PyResult<usize> {
+        match r {
+            Ok(h) => Ok(self.index_of(h)),
+            Err(e) => {
+                self.refresh();
+                Err(Failure::from(e).into())
+            }
+        }
+    }
+}
+
+fn label_to_py(py: Python<'_>, v: &LabelValue) -> PyObject {
+    match v {
+        LabelValue::Int(i) => i.into_pyobject(py).expect("int").into_any().unbind(),
+        LabelValue::Real(x) => x.into_pyobject(py).expect("float").into_any().unbind(),
+        LabelValue::Text(t) => t.into_pyobject(py).expect("str").into_any().unbind(),
+    }
+}
+
+fn label_from_py(v: &Bound<'_, PyAny>) -> PyResult<LabelValue> {
+    if v.is_instance_of::<pyo3::types::PyBool>() {
+        return Err(Failure::input("a label is an int, a finite float or a str (not a bool)").into());
+    }
+    if let Ok(i) = v.extract::<i64>() {
+        return Ok(LabelValue::Int(i));
+    }
+    if let Ok(x) = v.extract::<f64>() {
+        if !x.is_finite() {
+            return Err(Failure::input(format!("a label's real value must be finite, not {x}")).into());
+        }
+        return Ok(LabelValue::Real(x));
+    }
+    if let Ok(t) = v.extract::<String>() {
+        return Ok(LabelValue::Text(t));
+    }
+    Err(Failure::input("a label is an int (64-bit), a finite float or a str").into())
+}
+
+macro_rules! with_labels_mut {
+    ($g:expr, $i:expr, $d:expr, |$l:ident| $body:expr) => {{
+        match $i {
+            0 => {
+                let x = $g.attribute_mut::<0>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            1 => {
+                let x = $g.attribute_mut::<1>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            2 => {
+                let x = $g.attribute_mut::<2>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            3 => {
+                let x = $g.attribute_mut::<3>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            4 => {
+                let x = $g.attribute_mut::<4>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            5 => {
+                let x = $g.attribute_mut::<5>($d);
+                match x {
+                    Some($l) => {
+                        $body;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            _ => false,
+        }
+    }};
+}
+
+fn set_labels(g: &mut LabelledGMap, i: usize, d: DartId, l: Labels) {
+    match i {
+        0 => drop(g.set_attribute::<0>(d, l)),
+        1 => drop(g.set_attribute::<1>(d, l)),
+        2 => drop(g.set_attribute::<2>(d, l)),
+        3 => drop(g.set_attribute::<3>(d, l)),
+        4 => drop(g.set_attribute::<4>(d, l)),
+        5 => drop(g.set_attribute::<5>(d, l)),
+        _ => {}
+    }
+}
+
+#[pymethods]
+impl PyGMap {
+    /// GMap(dim, darts=0): a map of dimension `dim` with `darts` free darts (every dart its
+    /// own image under every involution).
+    #[new]
+    #[pyo3(signature = (dim, darts = 0))]
+    fn py_new(dim: i64, darts: i64) -> PyResult<Self> {
+        let dim = usize::try_from(dim)
+            .ok()
+            .filter(|&d| d <= MAX_DIM)
+            .ok_or_else(|| Failure::input(format!("dimension {dim}: a map has a dimension from 0 to {MAX_DIM}")))?;
+        let darts = usize::try_from(darts)
+            .ok()
+            .filter(|&n| n < u32::MAX as usize)
+            .ok_or_else(|| Failure::input(format!("{darts} darts: the count must be from 0 to 2^32 - 2")))?;
+        gmap_core::resources::check_memory("the darts", (darts as u64).checked_mul(64 + 8 * dim as u64))
+            .map_err(Failure::from)?;
+        let mut g = LabelledGMap::with_attributes(dim);
+        for _ in 0..darts {
+            g.create_dart();
+        }
+        Ok(PyGMap::from_labelled(g))
+    }
+
+    /// GMap.from_alphas(a): the map whose involutions are the rows of `a`, an integer array
+    /// of shape (dim + 1, darts); a free dart is its own image. Refuses (ValidityError) an
+    /// array that is not a G-map (not involutions, alpha_i alpha_j not involutive for
+    /// i + 2 <= j).
+    #[staticmethod]
+    fn from_alphas(py: Python<'_>, a: PyReadonlyArray2<'_, i64>) -> PyResult<Self> {
+        let v = a.as_array();
+        let (rows, n) = v.dim();
+        if rows == 0 || rows > MAX_DIM + 1 {
+            return Err(Failure::input(format!(
+                "an alphas array has dim + 1 rows, from 1 to {}; this one has {rows}",
+                MAX_DIM + 1
+            ))
+            .into());
+        }
+        if n >= u32::MAX as usize {
+            return Err(Failure::new(Kind::Limit, format!("{n} darts: at most 2^32 - 2")).into());
+        }
+        let mut flat = Vec::new();
+        flat.try_reserve_exact(rows * n).map_err(|_| Failure::new(Kind::Limit, "cannot allocate the map"))?;
+        for d in 0..n {
+            for i in 0..rows {
+                let x = v[(i, d)];
+                if x < 0 || x as u64 >= n as u64 {
+                    return Err(Failure::input(format!(
+                        "alpha_{i}({d}) = {x}: an image must be a dart from 0 to {}",
+                        n.saturating_sub(1)
+                    ))
+                    .into());
+                }
+                flat.push(x as u32);
+            }
+        }
+        let m = py.allow_threads(|| DenseMap::try_from_flat(rows - 1, flat)).map_err(Failure::from)?;
+        Ok(PyGMap::from_dense(&m))
+    }
+
+    /// The dimension n.
+    #[getter]
+    fn dim(&self) -> usize {
+        self.g.dim()
+    }
+
+    /// The number of darts.
+    fn __len__(&self) -> usize {
+        self.ids.len()
+    }
+
+    fn __repr__(&mut self) -> String {
+        let d = self.dense();
+        format!("<gmap.GMap dim={} darts={} cells={:?}>", d.dim(), d.dart_count(), d.cell_counts())
+    }
+
+    /// The involutions as a uint32 array of shape (dim + 1, darts): `alphas[i, d]` is
+    /// alpha_i(d). A copy: editing it does not change the map.
+    #[getter]
+    fn alphas<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dense();
+        let w = d.dim() + 1;
+        let n = d.dart_count();
+        let a = PyArray1::from_slice(py, d.flat()).reshape([n, w])?;
+        a.getattr("T")?.call_method0("copy")
+    }
+
+    /// alpha_i(d).
+    fn alpha(&self, d: i64, i: i64) -> PyResult<usize> {
+        let h = self.handle(d)?;
+        let i = self.dim_index(i, "alpha")?;
+        let e = self.g.alpha(h, i);
+        Ok(self.number(e))
+    }
+
+    /// Whether d is i-free (its own image under alpha_i).
+    fn is_free(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(self.g.is_free(self.handle(d)?, self.dim_index(i, "alpha")?))
+    }
+
+    /// Adds `k` free darts; returns the number of the first.
+    #[pyo3(signature = (k = 1))]
+    fn add_darts(&mut self, k: usize) -> PyResult<usize> {
+        let first = self.ids.len();
+        if first + k >= u32::MAX as usize {
+            return Err(Failure::new(Kind::Limit, "at most 2^32 - 2 darts").into());
+        }
+        for _ in 0..k {
+            let h = self.g.create_dart();
+            self.ids.push(h);
+        }
+        self.index_slots();
+        self.touched();
+        Ok(first)
+    }
+
+    /// Whether `sew(d, e, i)` would succeed.
+    fn is_sewable(&self, d: i64, e: i64, i: i64) -> PyResult<bool> {
+        Ok(self.g.is_sewable(self.handle(d)?, self.handle(e)?, self.dim_index(i, "alpha")?))
+    }
+
+    /// i-sews d and e and the orbits that must follow to keep a G-map (CGAL's `sew<i>`);
+    /// PreconditionError when they cannot be sewn.
+    fn sew(&mut self, d: i64, e: i64, i: i64) -> PyResult<()> {
+        let (d, e, i) = (self.handle(d)?, self.handle(e)?, self.dim_index(i, "alpha")?);
+        self.g.try_sew(d, e, i).map_err(Failure::from)?;
+        self.touched();
+        Ok(())
+    }
+
+    /// i-unsews d (and its orbit), CGAL's `unsew<i>`.
+    fn unsew(&mut self, d: i64, i: i64) -> PyResult<()> {
+        let (d, i) = (self.handle(d)?, self.dim_index(i, "alpha")?);
+        self.g.try_unsew(d, i).map_err(Failure::from)?;
+        self.touched();
+        Ok(())
+    }
+
+    /// The number of i-cells for i = 0..dim.
+    fn cell_counts(&mut self) -> Vec<usize> {
+        self.dense().cell_counts()
+    }
+
+    /// One dart per i-cell (the smallest), as a uint32 array, in the order cells are
+    /// numbered everywhere (labels, points, generators).
+    fn cells<'py>(&mut self, py: Python<'py>, i: i64) -> PyResult<Bound<'py, PyArray1<u32>>> {
+        let i = self.dim_index(i, "cell dimension")?;
+        let d = self.dense();
+        let p = py.allow_threads(|| d.cells(i));
+        Ok(p.reps.iter().map(|r| r.index() as u32).collect::<Vec<_>>().to_pyarray(py))
+    }
+
+    /// One dart per connected component (the smallest), as a uint32 array.
+    fn components<'py>(&mut self, py: Python<'py>) -> Bound<'py, PyArray1<u32>> {
+        let d = self.dense();
+        let p = py.allow_threads(|| d.components());
+        p.reps.iter().map(|r| r.index() as u32).collect::<Vec<_>>().to_pyarray(py)
+    }
+
+    /// The orbit of d under the involutions listed in `dims`, as a uint32 array (d first).
+    fn orbit<'py>(&mut self, py: Python<'py>, d: i64, dims: Vec<i64>) -> PyResult<Bound<'py, PyArray1<u32>>> {
+        let h = self.handle(d)?;
+        let mut set = Vec::with_capacity(dims.len());
+        for i in dims {
+            set.push(self.dim_index(i, "alpha")?);
+        }
+        let o = self.g.orbit(h, AlphaSet::of(&set));
+        Ok(o.iter().map(|&x| self.number(x) as u32).collect::<Vec<_>>().to_pyarray(py))
+    }
+
+    /// Whether the map is orientable.
+    fn is_orientable(&mut self, py: Python<'_>) -> bool {
+        let d = self.dense();
+        py.allow_threads(|| d.is_orientable())
+    }
+
+    /// The Euler characteristic: the alternating sum of the cell counts.
+    fn euler_characteristic(&mut self) -> i64 {
+        self.dense().euler_characteristic()
+    }
+
+    /// Raises ValidityError naming the fault when the map is not a G-map (alpha_i not an
+    /// involution, alpha_i alpha_j not involutive for i + 2 <= j); returns None otherwise.
+    fn check(&mut self) -> PyResult<()> {
+        let d = self.dense();
+        d.validate().map_err(Failure::from)?;
+        Ok(())
+    }
+
+    /// Whether `check()` passes.
+    fn is_valid(&mut self) -> bool {
+        self.dense().is_valid()
+    }
+
+    /// The vertex points as a float64 array of shape (number of 0-cells, 3), in the order
+    /// of `cells(0)`; a row of NaN for a vertex without a point.
+    #[getter]
+    fn get_points<'py>(&mut self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        let d = self.dense();
+        let reps = d.cells(0).reps;
+        let mut v = Vec::with_capacity(reps.len() * 3);
+        for r in reps {
+            v.extend_from_slice(&d.vertex_point(r).unwrap_or([f64::NAN; 3]));
+        }
+        let n = v.len() / 3;
+        PyArray1::from_vec(py, v).reshape([n, 3]).expect("a whole number of rows")
+    }
+
+    /// Sets the vertex points from an array of shape (number of 0-cells, 3) or (…, 2) in
+    /// the order of `cells(0)`; a row with a NaN leaves its vertex without a point.
+    #[setter]
+    fn set_points(&mut self, p: PyReadonlyArray2<'_, f64>) -> PyResult<()> {
+        let v = p.as_array();
+        let d = self.dense();
+        let reps = d.cells(0).reps;
+        let (rows, cols) = v.dim();
+        if rows != reps.len() || !(2..=3).contains(&cols) {
+            return Err(Failure::input(format!(
+                "points of shape ({rows}, {cols}): the map has {} vertices, points have 2 or 3 coordinates",
+                reps.len()
+            ))
+            .into());
+        }
+        for (k, r) in reps.iter().enumerate() {
+            let mut q = [0.0; 3];
+            for c in 0..cols {
+                q[c] = v[(k, c)];
+            }
+            let p = if q.iter().any(|x| x.is_nan()) { None } else { Some(q) };
+            if p.is_some_and(|q| q.iter().any(|x| !x.is_finite())) {
+                return Err(Failure::input(format!("vertex {k}: a point's coordinates must be finite")).into());
+            }
+            let h = self.ids[r.index()];
+            self.g.set_point(h, p);
+        }
+        self.dense = None;
+        Ok(())
+    }
+
+    /// The labels of the i-cells, one dict per cell in the order of `cells(i)` (empty for a
+    /// cell without labels). Labels exist for dimensions 0 to 5.
+    fn labels<'py>(&mut self, py: Python<'py>, i: i64) -> PyResult<Bound<'py, PyList>> {
+        let i = self.dim_index(i, "cell dimension")?;
+        let (_, labels, _) = gmap_core::to_dense_labels(&self.g);
+        let n = self.dense().cell_count(i);
+        let out = PyList::empty(py);
+        for c in 0..n {
+            let d = PyDict::new(py);
+            for (k, v) in labels.get(i, c).iter() {
+                d.set_item(k, label_to_py(py, v))?;
+            }
+            out.append(d)?;
+        }
+        Ok(out)
+    }
+
+    /// Sets the label `name` of the i-cell of dart d to `value` (int, float or str).
+    fn set_label(&mut self, i: i64, d: i64, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let i = self.dim_index(i, "cell dimension")?;
+        if i > gmap_core::labels::MAX_LABELLED_DIM {
+            return Err(Failure::input(format!("cells of dimension {i} have no labels (at most 5)")).into());
+        }
+        let h = self.handle(d)?;
+        let v = label_from_py(value)?;
+        let done = with_labels_mut!(self.g, i, h, |l| {
+            l.set(name, v.clone());
+        });
+        if !done {
+            let mut l = Labels::new();
+            l.set(name, v);
+            set_labels(&mut self.g, i, h, l);
+        }
+        Ok(())
+    }
+
+    /// A copy of the map.
+    fn copy(&mut self) -> Self {
+        let (d, labels, _) = gmap_core::to_dense_labels(&self.g);
+        let mut m = PyGMap::from_dense(&d);
+        for (i, per) in labels.of.iter().enumerate() {
+            let reps = d.cells(i).reps;
+            for (c, l) in per.iter().enumerate() {
+                if !l.is_empty() {
+                    let h = m.ids[reps[c].index()];
+                    set_labels(&mut m.g, i, h, l.clone());
+                }
+            }
+        }
+        m
+    }
+
+    /// The text of the map in the `.gmap` format (points and labels kept).
+    fn to_text(&self) -> String {
+        String::from_utf8_lossy(&gmap_core::io::format_labelled_gmap(&self.g)).into_owned()
+    }
+
+    /// GMap.from_text(text): the map of a `.gmap` text (ParseError naming the line).
+    #[staticmethod]
+    fn from_text(text: &str) -> PyResult<Self> {
+        let g = gmap_core::io::parse_labelled_gmap(text.as_bytes(), "<text>").map_err(Failure::from)?;
+        Ok(PyGMap::from_labelled(g))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let f = slf.get_type().getattr("from_text")?;
+        let t = slf.borrow().to_text();
+        Ok((f, (t,)))
+    }
+
+    /// Writes the map by extension: `.gmap` (points and labels kept), `.moka`.
+    fn save(&mut self, path: std::path::PathBuf) -> PyResult<()> {
+        crate::objects::save_map(self, &path).map_err(Into::into)
+    }
+
+    /// The incidence pairs of the map's cells: a list of ((i, a), (i + 1, b)) for each
+    /// i-cell a on the boundary of the (i+1)-cell b (cells numbered as in `cells(i)`).
+    fn incidences(&mut self, py: Python<'_>) -> Vec<((usize, u32), (usize, u32))> {
+        let d = self.dense();
+        py.allow_threads(|| {
+            let parts: Vec<_> = (0..=d.dim()).map(|i| d.cells(i)).collect();
+            let mut out = Vec::new();
+            for i in 0..d.dim() {
+                let mut seen = std::collections::BTreeSet::new();
+                for x in d.darts() {
+                    seen.insert((parts[i].cell_of(x).index() as u32, parts[i + 1].cell_of(x).index() as u32));
+                }
+                out.extend(seen.into_iter().map(|(a, b)| ((i, a), (i + 1, b))));
+            }
+            out
+        })
+    }
+
+    // --- Euler operators under CGAL's names (gmap_ops::euler::ops::cgal) ---
+
+    /// CGAL's insert_cell_0_in_cell_1(d): a vertex in the middle of the edge of d; returns a
+    /// dart of the new vertex.
+    fn insert_cell_0_in_cell_1(&mut self, d: i64) -> PyResult<usize> {
+        let h = self.handle(d)?;
+        let r = eops::insert_cell_0_in_cell_1(&mut self.g, h);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_cell_0_in_cell_1(d) applies.
+    fn is_insertable_cell_0_in_cell_1(&self, d: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_cell_0_in_cell_1(&self.g, self.handle(d)?))
+    }
+
+    /// CGAL's insert_cell_0_in_cell_2(d, point=None): a vertex joined to every corner of the
+    /// face of d; returns a dart of the new vertex.
+    #[pyo3(signature = (d, point = None))]
+    fn insert_cell_0_in_cell_2(&mut self, d: i64, point: Option<[f64; 3]>) -> PyResult<usize> {
+        let h = self.handle(d)?;
+        let r = eops::insert_cell_0_in_cell_2(&mut self.g, h, point);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_cell_0_in_cell_2(d) applies.
+    fn is_insertable_cell_0_in_cell_2(&self, d: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_cell_0_in_cell_2(&self.g, self.handle(d)?))
+    }
+
+    /// CGAL's insert_cell_1_in_cell_2(d1, d2): an edge splitting the face of d1 between the
+    /// corners of d1 and d2; returns a dart of the new edge.
+    fn insert_cell_1_in_cell_2(&mut self, d1: i64, d2: i64) -> PyResult<usize> {
+        let (a, b) = (self.handle(d1)?, self.handle(d2)?);
+        let r = eops::insert_cell_1_in_cell_2(&mut self.g, a, b);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_cell_1_in_cell_2(d1, d2) applies.
+    fn is_insertable_cell_1_in_cell_2(&self, d1: i64, d2: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_cell_1_in_cell_2(&self.g, self.handle(d1)?, self.handle(d2)?))
+    }
+
+    /// CGAL's insert_dangling_cell_1_in_cell_2(d, point=None): an edge hanging from the
+    /// vertex of d into its face; returns the dart of the new edge at the new vertex.
+    #[pyo3(signature = (d, point = None))]
+    fn insert_dangling_cell_1_in_cell_2(&mut self, d: i64, point: Option<[f64; 3]>) -> PyResult<usize> {
+        let h = self.handle(d)?;
+        let r = eops::insert_dangling_cell_1_in_cell_2(&mut self.g, h, point);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_dangling_cell_1_in_cell_2(d) applies.
+    fn is_insertable_dangling_cell_1_in_cell_2(&self, d: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_dangling_cell_1_in_cell_2(&self.g, self.handle(d)?))
+    }
+
+    /// CGAL's insert_cell_1_between_two_cells_2(d1, d2): an edge joining two faces; returns
+    /// a dart of the new edge.
+    fn insert_cell_1_between_two_cells_2(&mut self, d1: i64, d2: i64) -> PyResult<usize> {
+        let (a, b) = (self.handle(d1)?, self.handle(d2)?);
+        let r = eops::insert_cell_1_between_two_cells_2(&mut self.g, a, b);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_cell_1_between_two_cells_2(d1, d2) applies.
+    fn is_insertable_cell_1_between_two_cells_2(&self, d1: i64, d2: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_cell_1_between_two_cells_2(&self.g, self.handle(d1)?, self.handle(d2)?))
+    }
+
+    /// CGAL's insert_cell_2_in_cell_3(path): a face splitting a volume along a closed path
+    /// of edges (one dart per edge); returns a dart of the new face.
+    fn insert_cell_2_in_cell_3(&mut self, path: Vec<i64>) -> PyResult<usize> {
+        let hs = path.iter().map(|&d| self.handle(d)).collect::<Res<Vec<_>>>()?;
+        let r = eops::insert_cell_2_in_cell_3(&mut self.g, &hs);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_cell_2_in_cell_3(path) applies.
+    fn is_insertable_cell_2_in_cell_3(&self, path: Vec<i64>) -> PyResult<bool> {
+        let hs = path.iter().map(|&d| self.handle(d)).collect::<Res<Vec<_>>>()?;
+        Ok(eops::is_insertable_cell_2_in_cell_3(&self.g, &hs))
+    }
+
+    /// LCC's insert_barycenter_in_cell(d, i): a vertex at the barycentre of the i-cell of d
+    /// joined to its boundary; returns a dart of the new vertex.
+    fn insert_barycenter_in_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let r = eops::insert_barycenter_in_cell(&mut self.g, h, i);
+        self.after_insert(r)
+    }
+
+    /// Whether insert_barycenter_in_cell(d, i) applies.
+    fn is_insertable_barycenter_in_cell(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(eops::is_insertable_barycenter_in_cell(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+    }
+
+    /// LCC's insert_point_in_cell(d, point, i): a vertex at `point` in the i-cell of d
+    /// joined to its boundary; returns a dart of the new vertex.
+    fn insert_point_in_cell(&mut self, d: i64, point: [f64; 3], i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let r = eops::insert_point_in_cell(&mut self.g, h, i, point);
+        self.after_insert(r)
+    }
+
+    /// CGAL's remove_cell<i>(d): removes the i-cell of d, merging the two (i+1)-cells
+    /// around it (never changes the space); returns the number of darts removed.
+    fn remove_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let before = self.g.dart_count();
+        let r = eops::try_remove_cell(&mut self.g, h, i);
+        self.refresh();
+        r.map_err(Failure::from)?;
+        Ok(before - self.g.dart_count())
+    }
+
+    /// Whether remove_cell(d, i) applies (degree 2, two distinct (i+1)-cells).
+    fn is_removable(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(eops::is_removable(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+    }
+
+    /// CGAL's contract_cell<i>(d): contracts the i-cell of d; returns the number of darts
+    /// removed.
+    fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let before = self.g.dart_count();
+        let r = eops::try_contract_cell(&mut self.g, h, i);
+        self.refresh();
+        r.map_err(Failure::from)?;
+        Ok(before - self.g.dart_count())
+    }
+
+    /// Whether contract_cell(d, i) applies.
+    fn is_contractible(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(eops::is_contractible(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+    }
+
+    /// CGAL's make_combinatorial_tetrahedron(): adds a tetrahedron (a 3-map); returns a dart.
+    fn make_combinatorial_tetrahedron(&mut self) -> PyResult<usize> {
+        if self.g.dim() < 2 {
+            return Err(Failure::input("a tetrahedron needs a map of dimension at least 2").into());
+        }
+        let h = self.g.make_combinatorial_tetrahedron();
+        Ok(self.index_of(h))
+    }
+
+    /// CGAL's make_combinatorial_hexahedron(): adds a hexahedron; returns a dart.
+    fn make_combinatorial_hexahedron(&mut self) -> PyResult<usize> {
+        if self.g.dim() < 2 {
+            return Err(Failure::input("a hexahedron needs a map of dimension at least 2").into());
+        }
+        let h = self.g.make_combinatorial_hexahedron();
+        Ok(self.index_of(h))
+    }
+}

@@ -1,0 +1,480 @@
+//! `gmap._gmap`: the compiled half of the `gmap` Python package.
+//!
+//! Python-facing types and functions only; the computations are the workspace crates',
+//! run with the GIL released. Modules:
+//! * [`errors`]: the exception classes and the mapping of the library's errors;
+//! * [`compute`]: what the facade does not take: a cubical set borrowed from numpy, a
+//!   result read back from its JSON;
+//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex` (each holds a facade
+//!   `gmap::Input`), writing files;
+//! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators.
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, ToPyArray};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyString, PyTuple};
+
+mod compute;
+mod errors;
+mod gmapobj;
+mod objects;
+
+use compute::Cubes;
+use errors::Failure;
+use gmap::{CellName, HomologyOptions, Input, MapInput, Method, Report, Sourced, Via};
+use gmapobj::PyGMap;
+use objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
+
+/// One summand's representative cycle, in the input's own terms.
+#[pyclass(name = "Generator", module = "gmap", frozen, get_all)]
+pub struct PyGenerator {
+    /// the dimension k of the homology group
+    dim: usize,
+    /// 0 for a free summand (Z, or the field), t for Z/t (an exact int)
+    order: PyObject,
+    /// the cells of the chain: tuples of vertex labels (simplicial complexes), a uint32
+    /// array of darts (G-maps), an int64 array (m, d) of cubes' minimal vertices (cubical
+    /// sets), a uint64 array of region ids (architectural complexes)
+    cells: PyObject,
+    /// for cubical sets: a uint8 array (m, d), 1 along the axes a cell spans; else None
+    extents: PyObject,
+    /// the coefficient of each cell, an int64 array
+    coefficients: PyObject,
+}
+
+#[pymethods]
+impl PyGenerator {
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "<gmap.Generator dim={} order={} cells={}>",
+            self.dim,
+            self.order.bind(py),
+            self.coefficients.bind(py).len().unwrap_or(0)
+        )
+    }
+}
+
+/// The homology groups of an input: H_k = Z^betti[k] + Z/t for t in torsion[k].
+#[pyclass(name = "Homology", module = "gmap", frozen)]
+pub struct PyHomology {
+    report: Report,
+    generators: Option<Py<PyList>>,
+}
+
+fn natural_to_py(py: Python<'_>, n: &gmap_homology::Natural) -> PyResult<PyObject> {
+    Ok(match n.to_u64() {
+        Some(v) => v.into_pyobject(py)?.into_any().unbind(),
+        None => n.to_biguint().into_pyobject(py)?.into_any().unbind(),
+    })
+}
+
+fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> {
+    let Some(gens) = &r.generators else { return Ok(None) };
+    let out = PyList::empty(py);
+    for g in gens {
+        let coefficients = g.chain.iter().map(|(_, k)| *k).collect::<Vec<i64>>().to_pyarray(py).into_any().unbind();
+        let cells_of = || g.chain.iter().map(|(c, _)| c);
+        let n = g.chain.len();
+        let (cells, extents): (PyObject, PyObject) = match g.chain.first().map(|(c, _)| c) {
+            Some(CellName::Cube { min, .. }) => {
+                let d = min.len();
+                let mut lo = Vec::with_capacity(n * d);
+                let mut ex = Vec::with_capacity(n * d);
+                for c in cells_of() {
+                    if let CellName::Cube { min, extent } = c {
+                        lo.extend_from_slice(min);
+                        ex.extend_from_slice(extent);
+                    }
+                }
+                (
+                    PyArray1::from_vec(py, lo).reshape([n, d])?.into_any().unbind(),
+                    PyArray1::from_vec(py, ex).reshape([n, d])?.into_any().unbind(),
+                )
+            }
+            Some(CellName::Dart { .. }) => {
+                let darts: Vec<u32> =
+                    cells_of().map(|c| if let CellName::Dart { dart, .. } = c { *dart } else { 0 }).collect();
+                (darts.to_pyarray(py).into_any().unbind(), py.None())
+            }
+            Some(CellName::Region(_)) => {
+                let ids: Vec<u64> = cells_of().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
+                (ids.to_pyarray(py).into_any().unbind(), py.None())
+            }
+            _ => {
+                let l = PyList::empty(py);
+                for c in cells_of() {
+                    if let CellName::Simplex(v) = c {
+                        l.append(PyTuple::new(py, v)?)?;
+                    }
+                }
+                (l.into_any().unbind(), py.None())
+            }
+        };
+        let x = PyGenerator { dim: g.dim, order: natural_to_py(py, &g.order)?, cells, extents, coefficients };
+        out.append(Py::new(py, x)?)?;
+    }
+    Ok(Some(out.unbind()))
+}
+
+#[pymethods]
+impl PyHomology {
+    /// The Betti numbers b_0..b_n (ranks over Z, dimensions over Z/p).
+    #[getter]
+    fn betti(&self) -> Vec<usize> {
+        self.report.groups.betti.clone()
+    }
+
+    /// The torsion coefficients of each H_k (invariant factors, each dividing the next), as
+    /// Python ints, exact at any size; empty lists over a field.
+    #[getter]
+    fn torsion(&self, py: Python<'_>) -> PyResult<Vec<Vec<PyObject>>> {
+        self.report.groups.torsion.iter().map(|t| t.iter().map(|n| natural_to_py(py, n)).collect()).collect()
+    }
+
+    /// The dimension of the input.
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.report.dimension
+    }
+
+    /// 'cellular' or 'simplicial'.
+    #[getter]
+    fn method(&self) -> &'static str {
+        self.report.method.name()
+    }
+
+    /// For a simplicial complex: 'direct' (every face a cell) or 'gmap' (through its
+    /// G-map); None for other inputs.
+    #[getter]
+    fn route(&self) -> Option<&'static str> {
+        self.report.route.map(Via::name)
+    }
+
+    /// 'Z' or 'Z/p'.
+    #[getter]
+    fn coefficients(&self) -> String {
+        self.report.groups.coefficients.to_string()
+    }
+
+    /// The alternating sum of the Betti numbers.
+    #[getter]
+    fn euler_characteristic(&self) -> i64 {
+        self.report.groups.euler_characteristic()
+    }
+
+    /// A list of Generator (one per summand: the free ones, then one per torsion
+    /// coefficient, dimension by dimension) when asked with generators=True, else None.
+    #[getter]
+    fn generators(&self, py: Python<'_>) -> Option<Py<PyList>> {
+        self.generators.as_ref().map(|g| g.clone_ref(py))
+    }
+
+    /// The groups as text: '(Z, 0, Z)'.
+    fn __str__(&self) -> String {
+        self.report.groups.to_string()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<gmap.Homology {} over {}>", self.report.groups, self.report.groups.coefficients)
+    }
+
+    /// The text of H_k: 'Z^2 + Z/2'.
+    fn group(&self, k: usize) -> String {
+        self.report.groups.group_string(k)
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other.downcast::<PyHomology>().is_ok_and(|o| o.get().report.groups == self.report.groups)
+    }
+
+    /// The object `gmap homology --json` prints, as a dict (torsion and orders as ints).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let text = self.report.to_json().to_string();
+        py.import("json")?.call_method1("loads", (text,))
+    }
+
+    /// The JSON text of `to_dict()`, as `gmap homology --json` prints it.
+    fn to_json(&self) -> String {
+        self.report.to_json().to_string()
+    }
+
+    /// Homology.from_json(text): the result whose `to_json()` is `text` (how results cross
+    /// process boundaries: pickling, Dask).
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str) -> PyResult<PyHomology> {
+        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| Failure::input(format!("not JSON: {e}")))?;
+        let report = compute::report_from_json(&v)
+            .ok_or_else(|| Failure::input("not the JSON of a homology result (gmap homology --json)"))?;
+        finish(py, report)
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let f = slf.get_type().getattr("from_json")?;
+        Ok((f, (slf.get().to_json(),)))
+    }
+}
+
+fn parse_method(method: Option<&str>) -> PyResult<(Method, Option<Via>)> {
+    // "cellular" and "simplicial" are `--method`, "direct" and "gmap" are `--via`
+    Ok(match method {
+        None | Some("cellular") => (Method::Cellular, None),
+        Some("simplicial") => (Method::Simplicial, None),
+        Some("direct") => (Method::Cellular, Some(Via::Direct)),
+        Some("gmap") => (Method::Cellular, Some(Via::Gmap)),
+        Some(m) => {
+            return Err(Failure::input(format!(
+                "method {m:?}: expected 'cellular', 'simplicial' (for G-maps), 'direct' or 'gmap' (the route of a simplicial complex)"
+            ))
+            .into())
+        }
+    })
+}
+
+fn field_of(field: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
+    match field {
+        None => Ok(None),
+        Some(f) if f.is_none() => Ok(None),
+        Some(f) => match f.extract::<u64>() {
+            Ok(p) => Ok(Some(p)),
+            Err(_) => Err(Failure::input(format!(
+                "field {}: the field must be Z/P for a prime P below 2^31",
+                f.repr().map(|r| r.to_string()).unwrap_or_default()
+            ))
+            .into()),
+        },
+    }
+}
+
+fn finish(py: Python<'_>, report: Report) -> PyResult<PyHomology> {
+    let generators = generators_to_py(py, &report)?;
+    Ok(PyHomology { report, generators })
+}
+
+/// The facade's homology of an input, with the GIL released.
+fn facade(py: Python<'_>, input: &Input, o: &HomologyOptions) -> PyResult<PyHomology> {
+    let r = py.allow_threads(|| gmap::homology(input, o)).map_err(Failure::from)?;
+    finish(py, r)
+}
+
+/// The homology of facets given from Python (a list, a tuple, a 2-D array).
+fn facets_homology(py: Python<'_>, x: &Bound<'_, PyAny>, o: &HomologyOptions) -> PyResult<PyHomology> {
+    let facets = objects::facets_from_py(x)?;
+    let r = py.allow_threads(|| {
+        let sc = objects::complex_of(facets)?;
+        gmap::homology(&Input::Simplicial(Sourced::new(sc)), o).map_err(Failure::from)
+    })?;
+    finish(py, r)
+}
+
+/// homology(x, *, field=None, generators=False, method=None, periodic=False)
+///
+/// The homology groups of `x`: a path (str or os.PathLike) to any file `gmap` reads, a
+/// GMap, SimplicialComplex, CubicalSet or ArchComplex, a sequence of facets (sequences of
+/// non-negative ints), a 2-D integer numpy array of facets (one a row), or a numpy array of
+/// bool, uint8 or float dtype (or any dtype with 1 or 3 to 8 axes) as a cubical set
+/// (nonzero = the cube is present). `field`: a prime p for Z/p coefficients (None: Z).
+/// `generators`: compute a representative cycle per summand. `method`: 'cellular'
+/// (default) or 'simplicial' for G-maps; 'direct' (default) or 'gmap' for the route of a
+/// simplicial complex. `periodic`: for cubical sets, identify the opposite faces of the box.
+#[pyfunction]
+#[pyo3(signature = (x, *, field = None, generators = false, method = None, periodic = false))]
+fn homology(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    field: Option<&Bound<'_, PyAny>>,
+    generators: bool,
+    method: Option<&str>,
+    periodic: bool,
+) -> PyResult<PyHomology> {
+    let (method, via) = parse_method(method)?;
+    let mut o = HomologyOptions::default();
+    o.field = field_of(field)?;
+    o.generators = generators;
+    o.method = method;
+    o.via = via;
+    o.periodic = periodic;
+    // facets as a list: the common small case first
+    if let Ok(list) = x.downcast::<PyList>() {
+        return facets_homology(py, list, &o);
+    }
+    if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
+        let path: PathBuf = x.extract()?;
+        let r = py.allow_threads(|| gmap::homology_file(&path, &o)).map_err(Failure::from)?;
+        return finish(py, r);
+    }
+    if let Ok(m) = x.downcast::<PyGMap>() {
+        let d = m.borrow_mut().dense();
+        let r = py.allow_threads(|| gmap::homology(&Input::Map(MapInput::new((*d).clone())), &o));
+        return finish(py, r.map_err(Failure::from)?);
+    }
+    if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+        return facade(py, &s.get().input, &o);
+    }
+    if let Ok(c) = x.downcast::<PyCubicalSet>() {
+        let c = c.get();
+        let mut r = py.allow_threads(|| gmap::homology(&c.input, &o)).map_err(Failure::from)?;
+        if c.reversed {
+            compute::reverse_cube_axes(&mut r);
+        }
+        return finish(py, r);
+    }
+    if let Ok(a) = x.downcast::<PyArchComplex>() {
+        return facade(py, &a.get().input, &o);
+    }
+    if let Ok(arr) = x.downcast::<numpy::PyUntypedArray>() {
+        use numpy::PyUntypedArrayMethods;
+        let kind = arr.dtype().kind();
+        let facets = arr.ndim() == 2 && matches!(kind, b'i' | b'u') && arr.dtype().itemsize() > 1;
+        if facets {
+            let a = if kind == b'u' && arr.dtype().itemsize() == 8 {
+                x.clone()
+            } else {
+                py.import("numpy")?.call_method1("ascontiguousarray", (x, "int64"))?
+            };
+            return facets_homology(py, &a, &o);
+        }
+        let (shape, view, reversed) = objects::array_bits(x)?;
+        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?;
+        let cubes = Cubes { shape: &shape, bits, reversed };
+        let r = py.allow_threads(|| compute::cubical_array(&cubes, &o))?;
+        return finish(py, r);
+    }
+    // any other sequence of facets (tuples, generators of lists, …)
+    facets_homology(py, x, &o)
+}
+
+/// open(path): what the file holds: a GMap (.gmap, .moka, .off), a SimplicialComplex
+/// (.facets, .lex, FILE.lex#name), a CubicalSet (.cub, .pbm) or an ArchComplex (.json).
+#[pyfunction]
+fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
+    let input = py.allow_threads(|| gmap::open(&path)).map_err(Failure::from)?;
+    Ok(match input {
+        Input::Map(m) => {
+            let g = match m.labelled() {
+                Some(Ok(g)) => PyGMap::from_labelled(g.clone()),
+                Some(Err(e)) => return Err(Failure::from(e).into()),
+                None => PyGMap::from_dense(m.map()),
+            };
+            Py::new(py, g)?.into_any()
+        }
+        input @ Input::Simplicial(_) => Py::new(py, PySimplicialComplex { input })?.into_any(),
+        input @ Input::Cubical(_) => Py::new(py, PyCubicalSet { input, reversed: false })?.into_any(),
+        input @ Input::Arch(_) => Py::new(py, PyArchComplex { input })?.into_any(),
+        other => {
+            return Err(Failure::input(format!("{}: a {} has no Python class yet", path.display(), other.kind())).into())
+        }
+    })
+}
+
+/// The runs of `gmap bench` on files or folders, as its `--json` text: every route of
+/// every input with its stage times in ms, groups and agreement.
+#[pyfunction]
+fn _bench_json(py: Python<'_>, paths: Vec<PathBuf>) -> PyResult<String> {
+    let runs =
+        py.allow_threads(|| gmap::bench::bench(&paths, None, &gmap::Progress::hidden())).map_err(Failure::from)?;
+    Ok(gmap::bench::to_json(&runs).to_string())
+}
+
+fn build_result(py: Python<'_>, r: Result<gmap_core::DenseMap, gmap_ops::build::BuildError>) -> PyResult<Py<PyGMap>> {
+    let m = r.map_err(Failure::from)?;
+    Py::new(py, PyGMap::from_dense(&m))
+}
+
+/// build.grid(shape, periodic=False): the cubical grid of shape (s_0, …, s_{d-1}) as a
+/// d-map; `periodic` one bool for all axes or one per axis (a torus along those axes).
+#[pyfunction]
+#[pyo3(signature = (shape, periodic = None))]
+fn _build_grid(py: Python<'_>, shape: Vec<usize>, periodic: Option<&Bound<'_, PyAny>>) -> PyResult<Py<PyGMap>> {
+    let p: Vec<bool> = match periodic {
+        None => vec![false; shape.len()],
+        Some(b) if b.is_instance_of::<pyo3::types::PyBool>() => vec![b.extract::<bool>()?; shape.len()],
+        Some(v) => v.extract()?,
+    };
+    if p.len() != shape.len() {
+        return Err(Failure::input(format!("periodic has {} entries for {} axes", p.len(), shape.len())).into());
+    }
+    let cells = shape.iter().try_fold(1u64, |a, &s| a.checked_mul(s as u64));
+    let darts = cells.and_then(|c| {
+        c.checked_mul(1u64 << shape.len().min(40)).and_then(|x| x.checked_mul(shape.len().max(1) as u64))
+    });
+    gmap_core::resources::check_memory("the grid", darts.and_then(|d| d.checked_mul(8 * (shape.len() as u64 + 1))))
+        .map_err(Failure::from)?;
+    build_result(py, py.allow_threads(|| gmap_ops::build::grid(&shape, &p)))
+}
+
+/// build.simplex(n): the n-simplex as an n-map.
+#[pyfunction]
+fn _build_simplex(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::simplex(n))
+}
+
+/// build.cube(n): the n-cube as an n-map.
+#[pyfunction]
+fn _build_cube(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::cube(n))
+}
+
+/// build.polygon(k): a k-gon as a 2-map.
+#[pyfunction]
+fn _build_polygon(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::polygon(k))
+}
+
+/// build.lens_space(p, q): the lens space L(p, q) as a 3-map.
+#[pyfunction]
+fn _build_lens_space(py: Python<'_>, p: usize, q: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::lens_space(p, q))
+}
+
+/// build.solid_torus(k): a solid torus of k cubes as a 3-map.
+#[pyfunction]
+fn _build_solid_torus(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::solid_torus(k))
+}
+
+/// build.surface(word): the surface of a polygon schema word ('a b a^-1 b^-1').
+#[pyfunction]
+fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
+    build_result(py, gmap_ops::build::schema(word))
+}
+
+/// build.from_facets(facets): the G-map of a pure pseudo-manifold given by its facets.
+#[pyfunction]
+fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<PyGMap>> {
+    let f = objects::facets_from_py(facets)?;
+    let m = py.allow_threads(|| {
+        let sc = objects::complex_of(f)?;
+        Sourced::new(sc).to_gmap().map_err(Failure::from)
+    })?;
+    Py::new(py, PyGMap::from_dense(&m))
+}
+
+/// The compiled module.
+#[pymodule]
+fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    errors::register(m)?;
+    m.add_class::<PyGMap>()?;
+    m.add_class::<PySimplicialComplex>()?;
+    m.add_class::<PyCubicalSet>()?;
+    m.add_class::<PyArchComplex>()?;
+    m.add_class::<PyHomology>()?;
+    m.add_class::<PyGenerator>()?;
+    m.add_function(wrap_pyfunction!(homology, m)?)?;
+    m.add_function(wrap_pyfunction!(open, m)?)?;
+    m.add_function(wrap_pyfunction!(_bench_json, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_grid, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_simplex, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_cube, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_polygon, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_lens_space, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_solid_torus, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(_build_from_facets, m)?)?;
+    Ok(())
+}
+
+/// mimalloc: the engine makes many small tables; the system allocator was a third of
+/// the time of a call on a small complex (perf, a tetrahedron's boundary).
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
