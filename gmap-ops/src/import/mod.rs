@@ -13,11 +13,13 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 pub mod cubical;
+pub mod image;
 pub mod off;
 pub mod poset;
 pub mod simplicial;
 
 pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use image::{Image, Level};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
