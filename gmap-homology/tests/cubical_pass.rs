@@ -64,3 +64,41 @@ proptest! {
         prop_assert_eq!(chi, alt);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    /// Cut into blocks anywhere, computed apart and merged: the same groups as one block.
+    #[test]
+    fn blocks_merge_to_the_whole(
+        shape in prop::collection::vec(1usize..7, 3..4),
+        extra in 1usize..9,
+        cuts in prop::collection::vec(any::<prop::sample::Index>(), 0..4),
+        density in 0u64..100,
+        seed in any::<u64>(),
+    ) {
+        use gmap_homology::cubical_pass::{block_pass, merge_blocks};
+        let mut shape = shape;
+        shape[2] += extra;
+        let n: usize = shape.iter().product();
+        let mut s = seed;
+        let bits: Vec<u8> = (0..n).map(|_| {
+            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((s >> 33) % 100 < density) as u8
+        }).collect();
+        let mut ends: Vec<usize> = cuts.iter().map(|i| 1 + i.index(shape[2] - 1)).collect();
+        ends.push(shape[2]);
+        ends.sort();
+        ends.dedup();
+        let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
+        let mut blocks = Vec::new();
+        let mut start = 0;
+        for (i, &e) in ends.iter().enumerate() {
+            let from = if i == 0 { 0 } else { start - 1 };
+            blocks.push(block_pass(&shape, from..e, i > 0, &fill).unwrap());
+            start = e;
+        }
+        let merged = merge_blocks(&shape, &blocks);
+        prop_assert_eq!(merged.blocks, ends.len());
+        prop_assert_eq!(&merged.betti, &general(&shape, &bits));
+    }
+}
