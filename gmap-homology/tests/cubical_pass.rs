@@ -102,3 +102,4 @@ proptest! {
         prop_assert_eq!(&merged.betti, &general(&shape, &bits));
     }
 }
+

@@ -171,40 +171,43 @@ pub fn block_pass(
     if layers.start >= layers.end || layers.end > n2 {
         return Err(CubicalError::BadShape(format!("layers {layers:?} of a box of {n2}")));
     }
-    padded_layer(shape)?;
-    let (n0, n1) = (shape[0], shape[1]);
     if !shared && layers.start > 0 {
         return Err(CubicalError::BadShape(format!("block 0 starts at layer 0, not {}", layers.start)));
     }
-    let anchored = shared;
+    padded_layer(shape)?;
+    let (n0, n1) = (shape[0], shape[1]);
     let open_end = layers.end < n2;
-    let mut pass = Pass::new(n0, n1, d == 3, anchored);
+    let mut pass = Pass::new(n0, n1, d == 3, shared);
     let mut raw = vec![0u8; n0 * n1];
     let mut cubes = 0u64;
-    let mut first_layer = Vec::new();
+    let mut firsts = None;
     for z in layers.clone() {
         fill(z * n0 * n1, &mut raw);
-        if !(anchored && z == layers.start) {
+        let anchor_layer = shared && z == layers.start;
+        if !anchor_layer {
             cubes += raw.iter().filter(|&&b| b != 0).count() as u64;
         }
         pass.load(Some(&raw));
-        if anchored && z == layers.start {
-            first_layer = pass.cur.clone();
-        }
         pass.step(z == layers.start, false);
+        if anchor_layer {
+            firsts = Some((pass.set.cur.clone(), pass.comp.cur.clone()));
+        }
     }
     let (set_last, complement_last) = if open_end {
-        (pass.set_label.clone(), pass.comp_label.clone())
+        (pass.set.cube_labels(&pass.set.cur, &pass.set.label), pass.comp.cube_labels(&pass.comp.cur, &pass.comp.label))
     } else {
         pass.load(None);
         pass.step(false, true);
         (Vec::new(), Vec::new())
     };
-    let (set_first, complement_first) = if anchored { pass.anchors(&first_layer) } else { (Vec::new(), Vec::new()) };
+    let (set_first, complement_first) = match firsts {
+        Some((s, c)) => (pass.set.anchor_labels(&s), pass.comp.anchor_labels(&c)),
+        None => (Vec::new(), Vec::new()),
+    };
     Ok(BlockSummary {
         layers,
-        set_finished: pass.set_finished,
-        complement_finished: pass.complement_finished,
+        set_finished: pass.set.finished,
+        complement_finished: pass.comp.finished,
         euler: pass.euler,
         cubes,
         set_first,
@@ -227,8 +230,8 @@ pub fn merge_blocks(shape: &[usize], blocks: &[BlockSummary]) -> OnePass {
         euler += b.euler;
         cubes += b.cubes;
     }
-    // the ids of block i: 0 the outside, i (2 pp + 1) + x for its item x
-    let span = 2 * pp as u64 + 1;
+    // the ids of block i: 0 the outside, (i, x) for its item x
+    let span = 1u64 << 32;
     for (is_set, finished) in [(true, &mut set_finished), (false, &mut comp_finished)] {
         if blocks.len() < 2 {
             break;
@@ -308,77 +311,101 @@ fn euler_table() -> [i8; 256] {
 
 const NONE: u32 = u32::MAX;
 
-/// The state between two layers. Items of each union-find: 0 the outside (complement only),
-/// `1 + p` the anchor of the padded cube p of the block's first layer, `1 + pp + p` the
-/// cube p of the previous layer, `1 + 2 pp + p` of the current one. A root is the smallest
+/// The runs of one layer: maximal intervals `[x0, x1)` of cubes of one kind (in the set, or
+/// not) along axis 0, row after row.
+#[derive(Clone, Debug, Default)]
+struct Runs {
+    /// `start[y] .. start[y + 1]`: the runs of row y
+    start: Vec<u32>,
+    x0: Vec<u32>,
+    x1: Vec<u32>,
+}
+
+impl Runs {
+    fn clear(&mut self) {
+        self.start.clear();
+        self.x0.clear();
+        self.x1.clear();
+    }
+
+    fn row(&self, y: usize) -> Range<usize> {
+        self.start[y] as usize..self.start[y + 1] as usize
+    }
+
+    fn len(&self) -> usize {
+        self.x0.len()
+    }
+}
+
+/// One of the two union-finds of a block (the set's or the complement's) over runs. Items:
+/// 0 the outside (complement only), `1 + i` the i-th run of the block's first layer (an
+/// anchor, in a block past the first), `1 + r + i` the i-th run of the previous layer,
+/// `1 + 2r + i` of the current one, r the most runs a layer can have. A root is the smallest
 /// item of its class, so the outside and the anchors are roots of the classes they are in.
-struct Pass {
-    w: usize,
-    h: usize,
-    pp: usize,
-    /// 3-D: the layers before the box and after it are the outside; 2-D: there are none
-    three: bool,
-    anchored: bool,
-    prev: Vec<u8>,
-    cur: Vec<u8>,
-    set: UnionFind,
-    comp: UnionFind,
-    /// the label (an item ≤ 1 + 2 pp, or NONE) of each padded cube of the previous layer
-    set_label: Vec<u32>,
-    comp_label: Vec<u32>,
-    /// per item: the stamp of its last use and what it held then (mark, first label)
+struct Kind {
+    /// the kind of cube: 1 the set, 0 the complement
+    want: u8,
+    /// 1 for the set's connectivity (any shared face), 0 for the complement's (facets)
+    reach: u32,
+    r: usize,
+    /// padded row length (n0 + 2)
+    width: usize,
+    uf: UnionFind,
+    prev: Runs,
+    cur: Runs,
+    /// the label of each run of the previous layer: the outside, an anchor or an item of
+    /// the previous layer
+    label: Vec<u32>,
+    /// per item: the stamp of its last use and the first label given to its class then
     stamp: Vec<u32>,
     first: Vec<u32>,
     clock: u32,
     roots: Vec<u32>,
-    set_finished: u64,
-    complement_finished: u64,
-    euler: i64,
-    table: [i8; 256],
+    finished: u64,
 }
 
-impl Pass {
-    fn new(n0: usize, n1: usize, three: bool, anchored: bool) -> Pass {
-        let (w, h) = (n0 + 2, n1 + 2);
-        let pp = w * h;
-        Pass {
-            w,
-            h,
-            pp,
-            three,
-            anchored,
-            prev: vec![0; pp],
-            cur: vec![0; pp],
-            set: UnionFind::new(3 * pp + 1),
-            comp: UnionFind::new(3 * pp + 1),
-            set_label: vec![NONE; pp],
-            // before the box: the outside in 3-D; nothing in 2-D or before a block's first layer
-            comp_label: vec![if three && !anchored { 0 } else { NONE }; pp],
-            stamp: vec![0; 3 * pp + 1],
-            first: vec![NONE; 3 * pp + 1],
+impl Kind {
+    fn new(want: u8, n0: usize, n1: usize) -> Kind {
+        let r = n1 * n0.div_ceil(2) + 1;
+        Kind {
+            want,
+            reach: want as u32,
+            r,
+            width: n0 + 2,
+            uf: UnionFind::new(3 * r + 1),
+            prev: Runs::default(),
+            cur: Runs::default(),
+            label: Vec::new(),
+            stamp: vec![0; 3 * r + 1],
+            first: vec![NONE; 3 * r + 1],
             clock: 0,
-            roots: vec![0; pp],
-            set_finished: 0,
-            complement_finished: 0,
-            euler: 0,
-            table: euler_table(),
+            roots: Vec::new(),
+            finished: 0,
         }
     }
 
-    /// The next layer: the previous one moves back, `raw` (n0 × n1, x fastest) is padded;
-    /// `None`: the layer after the box, empty.
-    fn load(&mut self, raw: Option<&[u8]>) {
+    /// The runs of `layer` (n0 × n1 presence bytes, 0 or 1) become the current ones.
+    fn load(&mut self, layer: Option<&[u8]>, n0: usize, n1: usize) {
         std::mem::swap(&mut self.prev, &mut self.cur);
-        let Some(raw) = raw else {
-            self.cur.fill(0);
-            return;
-        };
-        let n0 = self.w - 2;
-        for (y, row) in raw.chunks_exact(n0).enumerate() {
-            let dst = &mut self.cur[(y + 1) * self.w + 1..(y + 1) * self.w + 1 + n0];
-            for (o, &b) in dst.iter_mut().zip(row) {
-                *o = (b != 0) as u8;
+        self.cur.clear();
+        self.cur.start.push(0);
+        for y in 0..n1 {
+            if let Some(layer) = layer {
+                let row = &layer[y * n0..(y + 1) * n0];
+                let mut x = 0;
+                while x < n0 {
+                    // the next cube of the kind, then the end of its run
+                    match row[x..].iter().position(|&b| b == self.want) {
+                        None => break,
+                        Some(k) => x += k,
+                    }
+                    let end = row[x..].iter().position(|&b| b != self.want).map_or(n0, |k| x + k);
+                    self.cur.x0.push(x as u32);
+                    self.cur.x1.push(end as u32);
+                    x = end;
+                }
             }
+            self.cur.start.push(self.cur.x0.len() as u32);
         }
     }
 
@@ -387,217 +414,268 @@ impl Pass {
         self.clock
     }
 
-    /// Links the current layer to the previous one, counts the classes that end, labels the
-    /// current layer. `first`: the block's first layer (anchors in a block past the first);
-    /// `after`: the current layer is the empty one after the box.
-    fn step(&mut self, first: bool, after: bool) {
-        let (w, h, pp) = (self.w, self.h, self.pp);
-        let anchor_layer = first && self.anchored;
-        // where the current layer's items are
-        let cur_base = if anchor_layer { 1 } else { 1 + 2 * pp };
-        let prev_base = 1 + pp;
-        // the current layer's absent cubes exist (as the outside after a 3-D box)
-        let cur_exists = !after || self.three;
-        for p in 0..pp {
-            let l = self.set_label[p];
-            let it = (prev_base + p) as u32;
-            self.set.set_parent(it, if l == NONE { it } else { l });
-            let l = self.comp_label[p];
-            self.comp.set_parent(it, if l == NONE { it } else { l });
+    /// Seeds the items of the previous layer from their labels and the current ones as
+    /// singletons.
+    fn seed(&mut self, cur_base: u32) {
+        let prev_base = (1 + self.r) as u32;
+        for (i, &l) in self.label.iter().enumerate() {
+            let it = prev_base + i as u32;
+            self.uf.set_parent(it, if l == NONE { it } else { l });
         }
-        for y in 0..h {
-            for x in 0..w {
-                let p = y * w + x;
-                let border = x == 0 || y == 0 || x + 1 == w || y + 1 == h;
-                let it = (cur_base + p) as u32;
-                self.set.set_parent(it, it);
-                self.comp.set_parent(it, if cur_exists && (border || after) { 0 } else { it });
-            }
+        for i in 0..self.cur.len() as u32 {
+            self.uf.set_parent(cur_base + i, cur_base + i);
         }
-        if !after {
-            self.link_set(cur_base);
-            self.link_complement(cur_base);
-        } else if self.three {
-            // the previous layer's absent cubes join the outside after the box
-            for p in 0..pp {
-                if self.prev[p] == 0 && self.comp_label[p] != NONE {
-                    self.comp.union((prev_base + p) as u32, 0);
-                }
-            }
-        }
-        if self.three && !anchor_layer {
-            self.add_euler();
-        }
-        let (sf, sl) = self.finish_and_label(true, cur_base, !after);
-        self.set_finished += sf;
-        self.set_label = sl;
-        let (cf, cl) = self.finish_and_label(false, cur_base, cur_exists);
-        self.complement_finished += cf;
-        self.comp_label = cl;
     }
 
-    /// Counts the classes of the previous layer's labels that reach no cube of the current
-    /// layer (the outside and anchored classes excepted), and labels the current layer: its
-    /// class's root when that is the outside or an anchor, else its first cube's item as an
-    /// item of the previous layer of the next step.
-    fn finish_and_label(&mut self, is_set: bool, cur_base: usize, cur_exists: bool) -> (u64, Vec<u32>) {
-        let pp = self.pp;
-        let want = is_set as u8;
-        let mark = self.tick();
-        let mut roots = std::mem::take(&mut self.roots);
-        {
-            let uf = if is_set { &mut self.set } else { &mut self.comp };
-            for p in 0..pp {
-                roots[p] = if cur_exists && self.cur[p] == want { uf.find((cur_base + p) as u32) } else { NONE };
-                if roots[p] != NONE {
-                    self.stamp[roots[p] as usize] = mark;
+    /// Joins the runs of rows `a` (items from `base_a`) and `b` (items from `base_b`) that
+    /// meet: their intervals widened by `reach` overlap. Both lists are sorted: one walk.
+    fn join_rows(&mut self, a: Range<usize>, base_a: u32, b_prev: bool, b: Range<usize>, base_b: u32) {
+        let (mut i, mut j) = (a.start, b.start);
+        let e = self.reach;
+        let (ax0, ax1) = (&self.cur.x0, &self.cur.x1);
+        let (bx0, bx1) = if b_prev { (&self.prev.x0, &self.prev.x1) } else { (&self.cur.x0, &self.cur.x1) };
+        let mut uf = self.uf.view();
+        let mut last = NONE;
+        while i < a.end && j < b.end {
+            let (a0, a1, b0, b1) = (ax0[i], ax1[i], bx0[j], bx1[j]);
+            if a0 < b1 + e && b0 < a1 + e {
+                let x = base_a + i as u32;
+                let y = if b_prev { self.label[j] } else { base_b + j as u32 };
+                if y != last {
+                    last = y;
+                    let (rx, ry) = (uf.find(x), uf.find(y));
+                    if rx != ry {
+                        uf.link_roots(rx, ry);
+                    }
+                }
+            }
+            if a1 <= b1 {
+                i += 1;
+                last = NONE;
+            }
+            if b1 <= a1 {
+                j += 1;
+            }
+        }
+    }
+
+    /// Links the current layer: each row with the row before it and with the rows of the
+    /// previous layer it touches; `outside_rows`: the runs on the box's sides join the
+    /// outside (complement); `prev_items`: whether the previous layer has items.
+    fn link(&mut self, cur_base: u32, n0: usize, n1: usize, prev_items: bool) {
+        let cur_rows = |k: &Kind, y: usize| k.cur.row(y);
+        for y in 0..n1 {
+            let row = cur_rows(self, y);
+            if row.is_empty() {
+                continue;
+            }
+            // the row before, in this layer
+            if y > 0 {
+                let before = cur_rows(self, y - 1);
+                self.join_rows(row.clone(), cur_base, false, before, cur_base);
+            }
+            if prev_items {
+                let lo = if self.reach == 1 { y.saturating_sub(1) } else { y };
+                let hi = if self.reach == 1 { (y + 1).min(n1 - 1) } else { y };
+                for yy in lo..=hi {
+                    let below = self.prev.row(yy);
+                    self.join_rows(row.clone(), cur_base, true, below, 0);
+                }
+            }
+            if self.want == 0 {
+                // the complement's runs on the sides of the box are the outside
+                let mut uf = self.uf.view();
+                for i in row {
+                    if y == 0 || y + 1 == n1 || self.cur.x0[i] == 0 || self.cur.x1[i] as usize == n0 {
+                        let r = uf.find(cur_base + i as u32);
+                        if r != 0 {
+                            uf.link_roots(r, 0);
+                        }
+                    }
                 }
             }
         }
-        let labels = if is_set { &self.set_label } else { &self.comp_label };
-        let uf = if is_set { &mut self.set } else { &mut self.comp };
-        let mut n = 0;
-        for (p, &l) in labels.iter().enumerate() {
-            // one count per class, at the cube that owns its label
-            if l == (1 + pp + p) as u32 {
-                let r = uf.find(l) as usize;
-                if r > pp && self.stamp[r] != mark {
-                    self.stamp[r] = mark;
-                    n += 1;
+    }
+
+    /// Every current run (or every run of the previous layer, `prev`) joins the outside.
+    fn all_outside(&mut self, cur_base: u32, prev: bool) {
+        let n = if prev { self.label.len() } else { self.cur.len() };
+        let mut uf = self.uf.view();
+        for i in 0..n {
+            let x = if prev { self.label[i] } else { cur_base + i as u32 };
+            let r = uf.find(x);
+            if r != 0 {
+                uf.link_roots(r, 0);
+            }
+        }
+    }
+
+    /// Counts the classes of the previous layer's labels that reach no run of the current
+    /// layer (the outside and anchored classes excepted), and labels the current runs: the
+    /// root when it is the outside or an anchor, else the item its class's first run will
+    /// have as a run of the previous layer.
+    fn finish_and_label(&mut self, cur_base: u32) {
+        let r = self.r as u32;
+        let mark = self.tick();
+        let n = self.cur.len();
+        self.roots.clear();
+        for i in 0..n as u32 {
+            let root = self.uf.find(cur_base + i);
+            self.roots.push(root);
+            self.stamp[root as usize] = mark;
+        }
+        let prev_base = 1 + r;
+        for i in 0..self.label.len() {
+            let l = self.label[i];
+            // one count per class, at the run that owns its label
+            if l == prev_base + i as u32 {
+                let root = self.uf.find(l);
+                if root > r && self.stamp[root as usize] != mark {
+                    self.stamp[root as usize] = mark;
+                    self.finished += 1;
                 }
             }
         }
         let label = self.tick();
-        let mut out = vec![NONE; pp];
-        for p in 0..pp {
-            let r = roots[p];
-            if r == NONE {
-                continue;
-            }
-            out[p] = if r as usize <= pp {
-                r
+        self.label.clear();
+        for i in 0..n {
+            let root = self.roots[i];
+            self.label.push(if root <= r {
+                root
             } else {
-                if self.stamp[r as usize] != label {
-                    self.stamp[r as usize] = label;
-                    self.first[r as usize] = (1 + pp + p) as u32;
+                if self.stamp[root as usize] != label {
+                    self.stamp[root as usize] = label;
+                    self.first[root as usize] = prev_base + i as u32;
                 }
-                self.first[r as usize]
-            };
-        }
-        self.roots = roots;
-        (n, out)
-    }
-
-    /// The classes of the first layer's cubes at the end of the block (`first_layer`: that
-    /// layer's padded presence).
-    fn anchors(&mut self, first_layer: &[u8]) -> (Vec<u32>, Vec<u32>) {
-        let pp = self.pp;
-        let mut s = vec![NONE; pp];
-        let mut c = vec![NONE; pp];
-        for p in 0..pp {
-            let it = (1 + p) as u32;
-            if first_layer[p] != 0 {
-                s[p] = self.set.find(it);
-            } else {
-                c[p] = self.comp.find(it);
-            }
-        }
-        (s, c)
-    }
-
-    /// 26-connectivity of the set's cubes: each cube of the current layer with the cubes
-    /// before it in the layer and the 9 below.
-    fn link_set(&mut self, cur_base: usize) {
-        let w = self.w;
-        let (prev, cur, label) = (&self.prev, &self.cur, &self.set_label);
-        let mut uf = self.set.view();
-        let c = |p: usize| (cur_base + p) as u32;
-        for y in 1..self.h - 1 {
-            for x in 1..w - 1 {
-                let p = y * w + x;
-                if cur[p] == 0 {
-                    continue;
-                }
-                let mut rc = c(p);
-                let mut last = NONE;
-                let join = |uf: &mut gmap_core::union_find::Sets<'_>, q: u32, rc: &mut u32| {
-                    let rq = uf.find(q);
-                    if rq != *rc {
-                        *rc = uf.link_roots(*rc, rq);
-                    }
-                };
-                // the prev layer's cubes, by label (neighbours of one class share it)
-                let mut below = |uf: &mut gmap_core::union_find::Sets<'_>, q: usize, rc: &mut u32| {
-                    if prev[q] != 0 {
-                        let l = label[q];
-                        if l != last {
-                            last = l;
-                            join(uf, l, rc);
-                        }
-                    }
-                };
-                if cur[p - 1] != 0 {
-                    // the left cube already joined the columns x - 1 and x
-                    join(&mut uf, c(p - 1), &mut rc);
-                    if cur[p - w + 1] != 0 {
-                        join(&mut uf, c(p - w + 1), &mut rc);
-                    }
-                    for q in [p - w + 1, p + 1, p + w + 1] {
-                        below(&mut uf, q, &mut rc);
-                    }
-                    continue;
-                }
-                for q in [p - w - 1, p - w, p - w + 1] {
-                    if cur[q] != 0 {
-                        join(&mut uf, c(q), &mut rc);
-                    }
-                }
-                for q in [p - w - 1, p - 1, p + w - 1, p - w, p, p + w, p - w + 1, p + 1, p + w + 1] {
-                    below(&mut uf, q, &mut rc);
-                }
-            }
+                self.first[root as usize]
+            });
         }
     }
 
-    /// Facet connectivity of the absent cubes (the padding is the outside already).
-    fn link_complement(&mut self, cur_base: usize) {
-        let w = self.w;
-        let (prev, cur, label) = (&self.prev, &self.cur, &self.comp_label);
-        let mut uf = self.comp.view();
-        let c = |p: usize| (cur_base + p) as u32;
-        // the border after the box too: its cubes are the outside, linked backwards only
-        for y in 1..self.h {
-            for x in 1..w {
-                let p = y * w + x;
-                if cur[p] != 0 {
-                    continue;
-                }
-                let mut rc = uf.find(c(p));
-                for q in [p - 1, p - w] {
-                    if cur[q] == 0 {
-                        let rq = uf.find(c(q));
-                        if rq != rc {
-                            rc = uf.link_roots(rc, rq);
-                        }
-                    }
-                }
-                if prev[p] == 0 && label[p] != NONE {
-                    let rq = uf.find(label[p]);
-                    if rq != rc {
-                        uf.link_roots(rc, rq);
+    /// Per padded cube of a layer with `runs` (`labels[i]` for the cubes of run i), NONE
+    /// elsewhere.
+    fn cube_labels(&self, runs: &Runs, labels: &[u32]) -> Vec<u32> {
+        let n1 = runs.start.len() - 1;
+        let w = self.width;
+        let mut out = vec![NONE; w * (n1 + 2)];
+        for y in 0..n1 {
+            for i in runs.row(y) {
+                let base = (y + 1) * w + 1;
+                out[base + runs.x0[i] as usize..base + runs.x1[i] as usize].fill(labels[i]);
+            }
+        }
+        out
+    }
+
+    /// The classes at the end of the block of the anchored runs of the first layer, per
+    /// padded cube.
+    fn anchor_labels(&mut self, runs: &Runs) -> Vec<u32> {
+        let roots: Vec<u32> = (0..runs.len() as u32).map(|i| self.uf.find(1 + i)).collect();
+        self.cube_labels(runs, &roots)
+    }
+}
+
+/// The state of a block between two layers: the two kinds and the Euler characteristic of
+/// the vertices seen.
+struct Pass {
+    n0: usize,
+    n1: usize,
+    /// 3-D: the layers before the box and after it are the outside; 2-D: there are none
+    three: bool,
+    anchored: bool,
+    set: Kind,
+    comp: Kind,
+    /// padded presence of the previous and the current layer, for χ
+    prev: Vec<u8>,
+    cur: Vec<u8>,
+    euler: i64,
+    table: [i8; 256],
+}
+
+impl Pass {
+    fn new(n0: usize, n1: usize, three: bool, anchored: bool) -> Pass {
+        let pp = (n0 + 2) * (n1 + 2);
+        let mut set = Kind::new(1, n0, n1);
+        let mut comp = Kind::new(0, n0, n1);
+        set.cur.start = vec![0; n1 + 1];
+        comp.cur.start = vec![0; n1 + 1];
+        Pass {
+            n0,
+            n1,
+            three,
+            anchored,
+            set,
+            comp,
+            prev: vec![0; pp],
+            cur: vec![0; pp],
+            euler: 0,
+            table: euler_table(),
+        }
+    }
+
+    /// The next layer (n0 × n1, x fastest; `None`: the empty layer after the box).
+    fn load(&mut self, raw: Option<&[u8]>) {
+        let (n0, n1) = (self.n0, self.n1);
+        std::mem::swap(&mut self.prev, &mut self.cur);
+        let w = n0 + 2;
+        match raw {
+            None => self.cur.fill(0),
+            Some(raw) => {
+                for (y, row) in raw.chunks_exact(n0).enumerate() {
+                    let dst = &mut self.cur[(y + 1) * w + 1..(y + 1) * w + 1 + n0];
+                    for (o, &b) in dst.iter_mut().zip(row) {
+                        *o = (b != 0) as u8;
                     }
                 }
             }
+        }
+        // the runs read the padded rows' inner parts
+        let inner: Option<Vec<u8>> = raw.map(|_| {
+            let mut v = Vec::with_capacity(n0 * n1);
+            for y in 0..n1 {
+                v.extend_from_slice(&self.cur[(y + 1) * w + 1..(y + 1) * w + 1 + n0]);
+            }
+            v
+        });
+        self.set.load(inner.as_deref(), n0, n1);
+        self.comp.load(inner.as_deref(), n0, n1);
+    }
+
+    /// Links the current layer to the previous one, counts the classes that end, labels the
+    /// current runs. `first`: the block's first layer (anchors in a block past the first);
+    /// `after`: the current layer is the empty one after the box.
+    fn step(&mut self, first: bool, after: bool) {
+        let (n0, n1) = (self.n0, self.n1);
+        let anchor_layer = first && self.anchored;
+        for k in [&mut self.set, &mut self.comp] {
+            let cur_base = if anchor_layer { 1 } else { (1 + 2 * k.r) as u32 };
+            k.seed(cur_base);
+            if !after {
+                // previous items: none before an anchored first layer or a 2-D layer
+                let prev_items = !first;
+                k.link(cur_base, n0, n1, prev_items);
+                if k.want == 0 && first && self.three && !self.anchored {
+                    // the layer before a 3-D box is the outside
+                    k.all_outside(cur_base, false);
+                }
+            } else if k.want == 0 && self.three {
+                // the previous layer's absent cubes meet the outside after the box
+                k.all_outside(cur_base, true);
+            }
+            k.finish_and_label(cur_base);
+        }
+        if self.three && !anchor_layer {
+            self.add_euler();
         }
     }
 
     /// The vertices between the previous and the current layer.
     fn add_euler(&mut self) {
-        let w = self.w;
+        let w = self.n0 + 2;
         let (prev, cur) = (&self.prev, &self.cur);
         let mut sum = 0i64;
         // vertex (v, r) is the corner of padded columns v, v + 1 and rows r, r + 1
-        for r in 0..self.h - 1 {
+        for r in 0..self.n1 + 1 {
             let (p0, p1) = (r * w, (r + 1) * w);
             let col = |x: usize| -> usize {
                 (prev[p0 + x] | prev[p1 + x] << 1 | cur[p0 + x] << 2 | cur[p1 + x] << 3) as usize
