@@ -2,8 +2,10 @@
 //! reading and computing stages timed apart and the peak memory; a JSON line on stdout.
 //!
 //! ```text
-//! cargo run --release --example image_homology -- IMAGE.npy [LEVEL]
+//! cargo run --release --example image_homology -- IMAGE.npy [--level T] [--json]
 //! ```
+//! (the JSON line is always printed; `--json` is accepted for the command line of
+//! `gmap homology`).
 
 use std::time::Instant;
 
@@ -11,14 +13,18 @@ use gmap_homology::cubical_pass::betti_one_pass;
 use gmap_ops::import::image::{Image, Level};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let path = args.first().ok_or("usage: image_homology IMAGE [LEVEL]")?;
-    let level = match args.get(1) {
-        Some(t) => Level::AtMost(t.parse()?),
-        None => Level::Nonzero,
-    };
+    let mut args = std::env::args().skip(1);
+    let (mut path, mut level) = (None, Level::Nonzero);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--level" => level = Level::AtMost(args.next().ok_or("--level needs a value")?.parse()?),
+            "--json" => {}
+            _ => path = Some(a),
+        }
+    }
+    let path = path.ok_or("usage: image_homology IMAGE [--level T] [--json]")?;
     let t0 = Instant::now();
-    let img = Image::read(std::path::Path::new(path))?;
+    let img = Image::read(std::path::Path::new(&path))?;
     let read = t0.elapsed().as_secs_f64();
     let t1 = Instant::now();
     let r = betti_one_pass(&img.memory_shape(), |start, out| img.presence(level, start, out))?;

@@ -27,23 +27,30 @@ def random_image(out, size, dim, density, seed):
 def structured(out, size):
     s = size / 1024.0
     a = np.lib.format.open_memmap(out, mode="w+", dtype=np.uint8, shape=(size, size, size))
-    shells_c = np.array([300, 300, 300]) * s
-    radii = [((40 + 30 * i) * s, (48 + 30 * i) * s) for i in range(5)]
-    tori = [(np.array([100 + 130 * k, 750, 800]) * s, 45 * s, 12 * s) for k in range(7)]
-    balls = [(np.array([800, 200 + 100 * j, 300]) * s, 20 * s) for j in range(6)]
-    y, z = np.meshgrid(np.arange(size, dtype=np.float32), np.arange(size, dtype=np.float32), indexing="ij")
-    for x in range(size):
-        layer = np.zeros((size, size), dtype=bool)
-        r2 = (x - shells_c[0]) ** 2 + (y - shells_c[1]) ** 2 + (z - shells_c[2]) ** 2
-        for lo, hi in radii:
-            layer |= (r2 >= lo * lo) & (r2 <= hi * hi)
-        for c, big, small in tori:
-            # the circle of radius `big` around c in the plane z = c_z
-            rho = np.sqrt((x - c[0]) ** 2 + (y - c[1]) ** 2)
-            layer |= (rho - big) ** 2 + (z - c[2]) ** 2 <= small * small
-        for c, r in balls:
-            layer |= (x - c[0]) ** 2 + (y - c[1]) ** 2 + (z - c[2]) ** 2 <= r * r
-        a[x] = layer
+    a[:] = 0
+    # (centre, squared distance test on the offsets within the bounding half-width)
+    objects = []
+    c = np.array([300, 300, 300]) * s
+    for i in range(5):
+        lo, hi = (40 + 30 * i) * s, (48 + 30 * i) * s
+        objects.append((c, hi, lambda dx, dy, dz, lo=lo, hi=hi: (dx * dx + dy * dy + dz * dz >= lo * lo)
+                        & (dx * dx + dy * dy + dz * dz <= hi * hi)))
+    for k in range(7):
+        big, small = 45 * s, 12 * s
+        # the circle of radius `big` in the plane of axes 0 and 1
+        objects.append((np.array([100 + 130 * k, 750, 800]) * s, big + small + 1,
+                        lambda dx, dy, dz, big=big, small=small: (np.sqrt(dx * dx + dy * dy) - big) ** 2 + dz * dz
+                        <= small * small))
+    for j in range(6):
+        r = 20 * s
+        objects.append((np.array([800, 200 + 100 * j, 300]) * s, r + 1,
+                        lambda dx, dy, dz, r=r: dx * dx + dy * dy + dz * dz <= r * r))
+    for centre, half, test in objects:
+        lo = np.maximum(np.floor(centre - half).astype(int), 0)
+        hi = np.minimum(np.ceil(centre + half).astype(int) + 1, size)
+        gy, gz = np.meshgrid(np.arange(lo[1], hi[1]), np.arange(lo[2], hi[2]), indexing="ij")
+        for x in range(lo[0], hi[0]):
+            a[x, lo[1]:hi[1], lo[2]:hi[2]] |= test(x - centre[0], gy - centre[1], gz - centre[2]).astype(np.uint8)
     a.flush()
 
 
