@@ -9,8 +9,8 @@
 
 use std::time::Instant;
 
-use gmap_homology::cubical_pass::betti_one_pass;
-use gmap_ops::import::image::{Image, Level};
+use gmap::homology::cubical_pass::betti_one_pass;
+use gmap::ops::import::image::{Image, Level};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -38,7 +38,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         r.euler_characteristic,
         read,
         pass,
-        gmap_core::resources::peak_rss().unwrap_or(0)
+        gmap::core::resources::peak_rss().unwrap_or(0)
     );
     Ok(())
 }

@@ -1,5 +1,5 @@
 //! Homology of classic objects and of the Benedetti–Lutz library by both methods, and the
-//! `gmap homology` command line (CONTRACT §1).
+//! `gmap homology` command line (docs/FORMATS.md).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

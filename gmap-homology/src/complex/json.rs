@@ -1,4 +1,4 @@
-//! The `.json` incidence graph / architectural complex format (CONTRACT §2).
+//! The `.json` incidence graph / architectural complex format (docs/FORMATS.md).
 //!
 //! ```json
 //! {"dimension": 2,

@@ -99,7 +99,7 @@ impl SimplicialComplex {
         Self::from_facets_with_lines(facets.into_iter().enumerate().map(|(k, f)| (k + 1, f)))
     }
 
-    /// Parses the `.facets` format (CONTRACT §2): one facet per line, vertex labels as
+    /// Parses the `.facets` format (docs/FORMATS.md): one facet per line, vertex labels as
     /// non-negative integers separated by white space or commas, `#` starts a comment,
     /// blank lines skipped. A label is what `str::parse::<u64>` takes: decimal digits with an
     /// optional leading `+`, at most `u64::MAX`. The first token that is not a label is an
@@ -282,6 +282,15 @@ impl SimplicialComplex {
             .checked_mul(bytes_per_dart(self.dim))?
             .checked_add(tables)?
             .checked_add(self.total as u64 * m * 36)
+    }
+
+    /// The G-map of the complex as the readers make it: refused past `max_darts` darts
+    /// (default: [`default_max_darts`] at the complex's dimension, within the memory budget),
+    /// the memory estimate checked first (see [`SimplicialComplex::to_gmap`] for the other
+    /// refusals).
+    pub fn to_gmap_within(&self, max_darts: Option<u64>) -> Result<DenseMap, ImportError> {
+        let limit = import_limit(self, max_darts)?;
+        self.to_gmap(limit)
     }
 
     /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
@@ -846,8 +855,7 @@ fn import_limit(sc: &SimplicialComplex, max_darts: Option<u64>) -> Result<u64, I
 pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
     let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
-    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
-    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+    sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.facets` file as a simplicial complex, without making a G-map of it (any
@@ -868,8 +876,7 @@ pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialCom
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
     let text = super::read_text(path)?;
     let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
-    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
-    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+    sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
 
 #[cfg(test)]
