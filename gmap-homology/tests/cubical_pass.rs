@@ -102,4 +102,3 @@ proptest! {
         prop_assert_eq!(&merged.betti, &general(&shape, &bits));
     }
 }
-

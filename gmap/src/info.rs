@@ -180,7 +180,9 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         Input::Cubical(set) => Info::Cubical(cubical_info(set, o.periodic, &file)?),
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
-            let set = img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            let set = img
+                .to_cubical_set(level)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
             Info::Cubical(cubical_info(&set, o.periodic, &file)?)
         }
     })

@@ -232,7 +232,16 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     };
     if let Some(groups) = one_pass {
         let (kind, dimension) = (input.kind(), input.dim());
-        return Ok(Report { kind, dimension, method: o.method, route, field: o.field, groups, generators: None, note: None });
+        return Ok(Report {
+            kind,
+            dimension,
+            method: o.method,
+            route,
+            field: o.field,
+            groups,
+            generators: None,
+            note: None,
+        });
     }
     let image_set;
     let mut note = None;
@@ -270,7 +279,9 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
             o.progress.stage("the image's cubical set");
-            image_set = img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            image_set = img
+                .to_cubical_set(level)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
             (image_set.dim(), route::cubical(&image_set, o, &file)?)
         }
         Input::Arch(x) => {

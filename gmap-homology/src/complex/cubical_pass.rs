@@ -74,13 +74,12 @@ pub const BYTES_PER_LAYER_CUBE: u64 = 72;
 /// slowest axis and block, from the block's thread ([`gmap_core::parallel`] decides how
 /// many). See the [module docs](self). Refuses a dimension outside 1–3, an empty box, a
 /// layer over [`MAX_LAYER`] cubes, or layers over the memory limit.
-pub fn betti_one_pass(
-    shape: &[usize],
-    fill: impl Fn(usize, &mut [u8]) + Sync,
-) -> Result<OnePass, CubicalError> {
+pub fn betti_one_pass(shape: &[usize], fill: impl Fn(usize, &mut [u8]) + Sync) -> Result<OnePass, CubicalError> {
     let d = shape.len();
     if !(1..=3).contains(&d) || shape.contains(&0) {
-        return Err(CubicalError::BadShape(format!("the one-pass route takes dimensions 1 to 3, not the shape {shape:?}")));
+        return Err(CubicalError::BadShape(format!(
+            "the one-pass route takes dimensions 1 to 3, not the shape {shape:?}"
+        )));
     }
     if d == 1 {
         let mut row = vec![0u8; shape[0]];
@@ -165,7 +164,9 @@ pub fn block_pass(
 ) -> Result<BlockSummary, CubicalError> {
     let d = shape.len();
     if !(2..=3).contains(&d) || shape.contains(&0) {
-        return Err(CubicalError::BadShape(format!("a block of the one-pass route in dimension 2 or 3, not {shape:?}")));
+        return Err(CubicalError::BadShape(format!(
+            "a block of the one-pass route in dimension 2 or 3, not {shape:?}"
+        )));
     }
     let n2 = if d == 3 { shape[2] } else { 1 };
     if layers.start >= layers.end || layers.end > n2 {
@@ -599,18 +600,7 @@ impl Pass {
         let mut comp = Kind::new(0, n0, n1);
         set.cur.start = vec![0; n1 + 1];
         comp.cur.start = vec![0; n1 + 1];
-        Pass {
-            n0,
-            n1,
-            three,
-            anchored,
-            set,
-            comp,
-            prev: vec![0; pp],
-            cur: vec![0; pp],
-            euler: 0,
-            table: euler_table(),
-        }
+        Pass { n0, n1, three, anchored, set, comp, prev: vec![0; pp], cur: vec![0; pp], euler: 0, table: euler_table() }
     }
 
     /// The next layer (n0 × n1, x fastest; `None`: the empty layer after the box).
