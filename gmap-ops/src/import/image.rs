@@ -31,6 +31,8 @@
 //! assert_eq!(back.to_cubical_set(Level::AtMost(0.0)).unwrap().cube_count(), 1);
 //! ```
 
+#![allow(clippy::needless_range_loop)] // axes index several arrays at once
+
 use std::path::Path;
 
 use super::{CubicalSet, FileError, ImportError};
