@@ -227,6 +227,25 @@ fn meminfo(key: &str) -> Option<u64> {
     Some(kb.saturating_mul(1024))
 }
 
+/// The peak resident memory of this process so far in bytes (`VmHWM` of
+/// `/proc/self/status`, what `/usr/bin/time -v` reports as "Maximum resident set size"),
+/// where it can be read. Pages of mapped files that were read count too.
+pub fn peak_rss() -> Option<u64> {
+    status("VmHWM:")
+}
+
+/// The resident memory of this process now in bytes (`VmRSS` of `/proc/self/status`).
+pub fn current_rss() -> Option<u64> {
+    status("VmRSS:")
+}
+
+fn status(key: &str) -> Option<u64> {
+    let text = std::fs::read_to_string(Path::new("/proc").join("self").join("status")).ok()?;
+    let line = text.lines().find(|l| l.starts_with(key))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb.saturating_mul(1024))
+}
+
 /// The soft address-space limit of this process (`ulimit -v`, "Max address space" of
 /// `/proc/self/limits`) in bytes; `None` when unlimited or unreadable.
 pub fn address_space_limit() -> Option<u64> {
@@ -247,6 +266,13 @@ mod tests {
         assert_eq!(parse_size("2T"), Ok(2 << 40));
         for bad in ["", "G", "-1", "1.5G", "1KK", "16777216T", "1 G x"] {
             assert!(parse_size(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn peak_is_at_least_current() {
+        if let (Some(peak), Some(now)) = (peak_rss(), current_rss()) {
+            assert!(peak >= now && now > 0);
         }
     }
 

@@ -88,6 +88,16 @@ impl UnionFind {
         self.view().link_roots(a, b)
     }
 
+    /// Makes `p` the parent of `x`, whatever `x`'s class was: the streaming scans reuse one
+    /// forest layer after layer, re-seeding its items from labels. Precondition: `p ≤ x` and
+    /// `p` a root or pointing down to one (then every path still ends in a root; the classes of
+    /// other items that went through `x` are not updated, so re-seed whole ranges at once).
+    #[inline]
+    pub fn set_parent(&mut self, x: u32, p: u32) {
+        debug_assert!(p <= x);
+        self.parent[x as usize] = p;
+    }
+
     /// Whether `a` and `b` are in one class.
     pub fn same(&mut self, a: u32, b: u32) -> bool {
         self.find(a) == self.find(b)

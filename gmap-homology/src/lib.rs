@@ -70,7 +70,7 @@ pub mod complex;
 pub mod engine;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
-pub use complex::{arch, cubical, dot, ep, json, lar, simplices, tm};
+pub use complex::{arch, cubical, cubical_pass, dot, ep, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::CellularComplex;

@@ -149,6 +149,16 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
     };
     let map_read;
     let owned;
+    let image_set;
+    let input_set = match input {
+        Input::Image(img) => {
+            image_set = img
+                .to_cubical_set(gmap_ops::import::Level::Nonzero)
+                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, &e))?;
+            Some(&image_set)
+        }
+        _ => None,
+    };
     let map = match input {
         Input::Simplicial(sc) => {
             // the direct route first (every face of every facet a cell, as `homology` does by
@@ -179,7 +189,11 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
             map_read = read;
             Some(m.map())
         }
-        Input::Cubical(set) => {
+        Input::Cubical(_) | Input::Image(_) => {
+            let set = match input {
+                Input::Cubical(set) => set.get(),
+                _ => input_set.expect("an image's set"),
+            };
             // the cubical complex of the closure, after collapses of free faces
             map_read = read;
             let mut times = Times { read, ..Times::default() };

@@ -22,6 +22,8 @@ pub struct InfoOptions {
     pub max_darts: Option<u64>,
     /// a cubical set's box is a torus (opposite faces identified)
     pub periodic: bool,
+    /// an image's cubical set: the values `≤ T` (default: the non-zero values)
+    pub level: Option<f64>,
     /// where the stages are shown
     pub progress: Progress,
 }
@@ -165,14 +167,24 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         Ok(info) => return Ok(Info::Simplicial(info)),
         Err(map) => map,
     };
-    if o.periodic && !matches!(input, Input::Cubical(_)) {
-        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm)"));
+    if o.periodic && !matches!(input, Input::Cubical(_) | Input::Image(_)) {
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm, .npy, .complex)"));
+    }
+    if o.level.is_some() && !matches!(input, Input::Image(_)) {
+        return Err(err!(Usage, "{file}: --level applies to images (.npy, .complex)"));
     }
     Ok(match input {
         Input::Map(m) => Info::Map(map_info(m.map())),
         Input::Simplicial(_) => Info::Map(map_info(&made_map)),
         Input::Arch(x) => Info::Arch(arch_info(x)),
         Input::Cubical(set) => Info::Cubical(cubical_info(set, o.periodic, &file)?),
+        Input::Image(img) => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            let set = img
+                .to_cubical_set(level)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            Info::Cubical(cubical_info(&set, o.periodic, &file)?)
+        }
     })
 }
 

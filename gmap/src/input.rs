@@ -7,6 +7,7 @@
 //! | `.vtk`, `.vtu`, `.msh` (unstructured meshes) | `gmap_ops::import` (`gmap_ops::mesh`) | [`Input::Map`], with labels |
 //! | `.facets`, `.lex[#name]` | `gmap_ops::import::SimplicialComplex` | [`Input::Simplicial`] |
 //! | `.cub`, `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
+//! | `.npy`, `.complex` (DIPHA) | `gmap_ops::import::Image`, memory-mapped | [`Input::Image`] |
 //! | `.json` | `gmap_homology::json` | [`Input::Arch`] |
 //!
 //! `.dot` is written only, as a view: opening one is refused with that reason. A `.vtk` is
@@ -20,13 +21,13 @@ use std::sync::OnceLock;
 
 use gmap_core::{DenseLabels, DenseMap, LabelledGMap};
 use gmap_homology::arch::ArchComplex;
-use gmap_ops::import::{CubicalSet, SimplicialComplex};
+use gmap_ops::import::{CubicalSet, Image, SimplicialComplex};
 
 use crate::error::{err, Error, Result};
 
 /// The extensions [`open`] reads (the files `gmap bench` takes from a folder).
 pub const INPUT_EXTENSIONS: &[&str] =
-    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm", "vtk", "vtu", "msh"];
+    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm", "vtk", "vtu", "msh", "npy", "complex"];
 
 /// Options of [`open_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -54,6 +55,9 @@ pub enum Input {
     Simplicial(Sourced<SimplicialComplex>),
     /// a full cubical set (`.cub`, `.pbm`)
     Cubical(Sourced<CubicalSet>),
+    /// a grey-value image (`.npy`, DIPHA's `.complex`): a cubical set at a level
+    /// (`HomologyOptions::level`; default: the non-zero values)
+    Image(Sourced<Image>),
     /// an architectural complex or incidence graph (`.json`)
     Arch(Sourced<ArchComplex>),
 }
@@ -89,6 +93,7 @@ impl Input {
             Input::Map(m) => m.map.dim(),
             Input::Simplicial(s) => s.dim(),
             Input::Cubical(c) => c.dim(),
+            Input::Image(i) => i.dim(),
             Input::Arch(x) => x.dim(),
         }
     }
@@ -99,7 +104,7 @@ impl Input {
         match self {
             Input::Map(_) => "map",
             Input::Simplicial(_) => "simplicial complex",
-            Input::Cubical(_) => "cubical set",
+            Input::Cubical(_) | Input::Image(_) => "cubical set",
             Input::Arch(_) => "architectural complex",
         }
     }
@@ -110,6 +115,7 @@ impl Input {
             Input::Map(m) => m.path(),
             Input::Simplicial(s) => s.path(),
             Input::Cubical(c) => c.path(),
+            Input::Image(i) => i.path(),
             Input::Arch(x) => x.path(),
         }
     }
@@ -271,6 +277,7 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
         })?)),
         "cub" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
         "pbm" => Input::Cubical(Sourced { value: import::read_pbm(path)?, source: source.clone() }),
+        "npy" | "complex" => Input::Image(Sourced { value: Image::read(path)?, source: source.clone() }),
         // a view: the drawing does not give back the map
         "dot" => {
             return Err(err!(

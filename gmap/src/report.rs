@@ -7,7 +7,7 @@ use gmap_homology::{homology_z, homology_zp, is_prime, Homology};
 use serde_json::json;
 
 pub use crate::cell_name::CellName;
-use crate::error::{err, Error, Result};
+use crate::error::{err, Error, ErrorKind, Result};
 use crate::input::Input;
 use crate::route::{self, HomologyOptions, Method, Named, Via};
 
@@ -138,7 +138,38 @@ pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
 /// limits ([`crate::ErrorKind::Limit`]).
 pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     let file = route::file_of(input);
-    let route = check_options(&file, matches!(input, Input::Simplicial(_)), matches!(input, Input::Cubical(_)), o)?;
+    let cubical = matches!(input, Input::Cubical(_) | Input::Image(_));
+    let route = check_options(&file, matches!(input, Input::Simplicial(_)), cubical, o)?;
+    if o.level.is_some() && !matches!(input, Input::Image(_)) {
+        return Err(err!(Usage, "{file}: --level applies to images (.npy, .complex)"));
+    }
+    // dimension ≤ 3: the groups in one pass over the cubes, no cubical complex
+    let one_pass = match input {
+        Input::Cubical(set) => {
+            let bits = set.bits();
+            route::cubical_one_pass(set.shape(), |s, out| out.copy_from_slice(&bits[s..s + out.len()]), o, &file)?
+        }
+        Input::Image(img) => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            // the layout's own axis order (the axes reversed for C order): the same groups
+            route::cubical_one_pass(&img.memory_shape(), |s, out| img.presence(level, s, out), o, &file)?
+        }
+        _ => None,
+    };
+    if let Some(groups) = one_pass {
+        let (kind, dimension) = (input.kind(), input.dim());
+        return Ok(Report {
+            kind,
+            dimension,
+            method: o.method,
+            route,
+            field: o.field,
+            groups,
+            generators: None,
+            note: None,
+        });
+    }
+    let image_set;
     let mut note = None;
     // the complex names the G-map's cells by labels while the darts are those of the import
     let owned_map;
@@ -171,6 +202,14 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             }
         }
         Input::Cubical(set) => (set.dim(), route::cubical(set, o, &file)?),
+        Input::Image(img) => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            o.progress.stage("the image's cubical set");
+            image_set = img
+                .to_cubical_set(level)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            (image_set.dim(), route::cubical(&image_set, o, &file)?)
+        }
         Input::Arch(x) => {
             if o.simplify {
                 return Err(err!(
@@ -204,7 +243,7 @@ pub fn homology_file(path: impl AsRef<std::path::Path>, o: &HomologyOptions) -> 
     check_options(
         &path.display().to_string(),
         matches!(ext.as_str(), "facets" | "lex"),
-        matches!(ext.as_str(), "cub" | "pbm"),
+        matches!(ext.as_str(), "cub" | "pbm" | "npy" | "complex"),
         o,
     )?;
     o.progress.stage(&format!("reading {}", path.display()));
@@ -224,7 +263,7 @@ fn check_options(file: &str, simplicial: bool, cubical: bool, o: &HomologyOption
         ));
     }
     if o.periodic && !cubical {
-        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm)"));
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm, .npy, .complex)"));
     }
     Ok(route)
 }

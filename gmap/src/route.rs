@@ -83,6 +83,8 @@ pub struct HomologyOptions {
     pub via: Option<Via>,
     /// a cubical set's box is a torus (opposite faces identified)
     pub periodic: bool,
+    /// an image's cubical set: the values `≤ T` (default: the non-zero values)
+    pub level: Option<f64>,
     /// where the stages are shown
     pub progress: Progress,
 }
@@ -277,6 +279,31 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
     let ids: Vec<Vec<u64>> =
         (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
     Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
+}
+
+/// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
+/// (`gmap_homology::cubical_pass`), where no cubical complex is needed: not periodic, no
+/// generators, the cellular method. `None` where the cubical complex is needed.
+pub(crate) fn cubical_one_pass(
+    shape: &[usize],
+    fill: impl Fn(usize, &mut [u8]) + Sync,
+    o: &HomologyOptions,
+    file: &str,
+) -> Result<Option<gmap_homology::Homology>> {
+    if shape.len() > 3 || o.periodic || o.generators || o.method != Method::Cellular || o.simplify || o.topological {
+        return Ok(None);
+    }
+    o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
+    let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill)
+        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    let d = shape.len();
+    let coefficients = match o.field {
+        Some(p) => gmap_homology::homology::Coefficients::Field(p),
+        None => gmap_homology::homology::Coefficients::Integers,
+    };
+    // free groups in dimension ≤ 3: the same ranks over any field
+    let betti = r.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect();
+    Ok(Some(gmap_homology::Homology { coefficients, betti, torsion: vec![Vec::new(); d + 1] }))
 }
 
 /// The chain complex of a cubical set (after collapses of free faces) with its cells named

@@ -63,6 +63,22 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
         Input::Cubical(_) => {
             Err(err!(Unsupported, "{}: a cubical set cannot be converted; use gmap homology", input.path().display()))
         }
+        // an image is written as an image: numpy's .npy as it is, DIPHA's as f64
+        Input::Image(img) => {
+            let written = match crate::input::extension(output).as_str() {
+                "npy" => img.write_npy(output),
+                "complex" => img.write_dipha(output),
+                other => {
+                    return Err(err!(
+                        Unsupported,
+                        "{}: an image is written as .npy or .complex, not '.{}'",
+                        input.path().display(),
+                        gmap_core::io::shorten(other.as_bytes(), 40)
+                    ))
+                }
+            };
+            written.map_err(|e| err!(Write, "{}: {e}", output.display()).with_path(output))
+        }
     }
 }
 

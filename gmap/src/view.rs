@@ -72,6 +72,14 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
         Ok(crate::report::homology(input, &h)?.generators.unwrap_or_default())
     };
     match input {
+        Input::Image(img) => {
+            // an image is drawn as its cubical set (the cubes present at the default level)
+            let set = img
+                .to_cubical_set(gmap_ops::import::Level::Nonzero)
+                .map_err(|e| crate::Error::from(gmap_ops::import::FileError::new(img.path(), e)))?;
+            let o = ViewOptions { title: Some(title), ..o.clone() };
+            scene(&Input::Cubical(crate::Sourced::new(set)), &o)
+        }
         Input::Map(_) | Input::Simplicial(_) => {
             // the labels number the cells of the labelled file's own map: that map is drawn
             let labelled = match input {

@@ -61,16 +61,19 @@ struct Limits {
 
 #[derive(Args, Debug)]
 struct InfoArgs {
-    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm)
+    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     file: PathBuf,
     /// print one JSON object
     #[arg(long)]
     json: bool,
     #[command(flatten)]
     limits: Limits,
-    /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
+    /// for a cubical set (.cub, .pbm, .npy, .complex): identify the opposite faces of its box
     #[arg(long)]
     periodic: bool,
+    /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
+    #[arg(long, value_name = "T")]
+    level: Option<f64>,
 }
 
 #[derive(Args, Debug)]
@@ -100,9 +103,12 @@ struct HomologyArgs {
     /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
     #[arg(long, value_enum)]
     via: Option<Via>,
-    /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
+    /// for a cubical set (.cub, .pbm, .npy, .complex): identify the opposite faces of its box (a torus)
     #[arg(long)]
     periodic: bool,
+    /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
+    #[arg(long, value_name = "T")]
+    level: Option<f64>,
 }
 
 #[derive(Args, Debug)]
@@ -188,7 +194,7 @@ fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     progress.stage("reading");
     let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts))?;
     let mut o = gmap::InfoOptions::default();
-    (o.max_darts, o.periodic, o.progress) = (a.limits.max_darts, a.periodic, progress.clone());
+    (o.max_darts, o.periodic, o.level, o.progress) = (a.limits.max_darts, a.periodic, a.level, progress.clone());
     let info = gmap::info(&input, &o);
     progress.finish();
     let info = info?;
@@ -206,7 +212,7 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
         Via::Gmap => gmap::Via::Gmap,
     });
     (o.field, o.generators, o.simplify, o.topological) = (a.field, a.generators, a.simplify, a.topological);
-    (o.max_darts, o.periodic) = (a.limits.max_darts, a.periodic);
+    (o.max_darts, o.periodic, o.level) = (a.limits.max_darts, a.periodic, a.level);
     o.progress = gmap::Progress::stderr("gmap homology", quiet);
     let report = gmap::homology_file(&a.file, &o);
     o.progress.finish();

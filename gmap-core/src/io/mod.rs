@@ -37,7 +37,7 @@ mod moka;
 mod native;
 
 pub use crate::text::shorten;
-pub use common::{write_atomic, ReadError, ReadErrorKind, ReadOptions, WriteError};
+pub use common::{write_atomic, write_atomic_with, ReadError, ReadErrorKind, ReadOptions, WriteError};
 
 pub use moka::{
     format_moka, parse_moka, parse_moka_with, read_moka, read_moka_with, write_moka, write_moka_to, MOKA_HEADER,

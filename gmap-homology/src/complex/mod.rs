@@ -2,6 +2,7 @@
 
 pub mod arch;
 pub mod cubical;
+pub mod cubical_pass;
 pub mod dot;
 pub mod ep;
 pub mod json;

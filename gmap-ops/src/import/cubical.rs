@@ -150,7 +150,7 @@ impl CubicalSet {
 /// Checks the memory a set on a box of `shape` cubes would take (its bitmap and the grid of
 /// its chain complex, [`gmap_core::resources::cubical_set_estimate`]) against the memory
 /// limit, before anything is allocated; then the box's size ([`box_volume`]).
-fn box_checked(shape: &[usize]) -> Result<u64, ImportError> {
+pub(crate) fn box_checked(shape: &[usize]) -> Result<u64, ImportError> {
     let what = format!(
         "the cubical set on the bounding box {}",
         shape.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × ")

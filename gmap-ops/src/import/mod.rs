@@ -9,6 +9,7 @@
 
 mod common;
 pub mod cubical;
+pub mod image;
 pub mod msh;
 pub mod off;
 pub mod poset;
@@ -18,6 +19,7 @@ pub mod vtu;
 
 pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};
 pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use image::{Image, Level};
 pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};

@@ -1,0 +1,53 @@
+//! Images through the facade: a `.npy` or DIPHA file opens as an image, its groups by the
+//! one-pass route equal those of the cubical complex (`--generators` takes that route), and
+//! `--level` picks the sublevel set.
+
+use gmap::ops::import::image::{Image, Order};
+use gmap::{homology, open, HomologyOptions, Input};
+
+fn groups(input: &Input, level: Option<f64>, generators: bool) -> Vec<usize> {
+    let mut o = HomologyOptions::default();
+    o.level = level;
+    o.generators = generators;
+    homology(input, &o).unwrap().groups.betti
+}
+
+#[test]
+fn images_open_and_both_routes_agree() {
+    let dir = tempfile::tempdir().unwrap();
+    // a 5 × 5 × 3 image: a ring of 1s around a 0 in the middle layer, values 2 elsewhere
+    let mut v = vec![2u16; 75];
+    for (x, y) in [(1, 1), (2, 1), (3, 1), (1, 2), (3, 2), (1, 3), (2, 3), (3, 3)] {
+        v[25 + 5 * y + x] = 1; // C order: a[z][y][x]
+    }
+    let img = Image::from_values(&[3, 5, 5], Order::C, v).unwrap();
+    let (npy, dipha) = (dir.path().join("ring.npy"), dir.path().join("ring.complex"));
+    img.write_npy(&npy).unwrap();
+    img.write_dipha(&dipha).unwrap();
+    for path in [&npy, &dipha] {
+        let input = open(path).unwrap();
+        assert!(matches!(input, Input::Image(_)));
+        assert_eq!(input.kind(), "cubical set");
+        // the ring: a circle; everything: a ball
+        assert_eq!(groups(&input, Some(1.0), false), vec![1, 1, 0, 0]);
+        assert_eq!(groups(&input, Some(1.0), true), vec![1, 1, 0, 0]);
+        assert_eq!(groups(&input, None, false), vec![1, 0, 0, 0]);
+        assert_eq!(groups(&input, Some(0.5), false), vec![0, 0, 0, 0]);
+    }
+    // --level on something else is refused
+    let cub = dir.path().join("c.cub");
+    std::fs::write(&cub, "(0,0)\n").unwrap();
+    let mut o = HomologyOptions::default();
+    o.level = Some(1.0);
+    let e = homology(&open(&cub).unwrap(), &o).unwrap_err().to_string();
+    assert!(e.contains("--level applies to images"), "{e}");
+}
+
+#[test]
+fn a_bad_image_names_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("bad.npy");
+    std::fs::write(&p, b"\x93NUMPY\x01\x00\x10\x00{'descr': '|O'}").unwrap();
+    let e = open(&p).unwrap_err().to_string();
+    assert!(e.contains("bad.npy"), "{e}");
+}
