@@ -177,9 +177,6 @@ impl Grid {
         r
     }
 
-    fn count(&self, odd: bool) -> usize {
-        self.m.iter().map(|&m| if odd { m / 2 } else { m.div_ceil(2) }).product()
-    }
 }
 
 /// A total order on `f64` (finite values only reach here) as an unsigned key.
@@ -193,12 +190,19 @@ pub(crate) fn key(v: f64) -> u64 {
     }
 }
 
+/// The value of a [`key`].
+#[inline]
+pub(crate) fn unkey(k: u64) -> f64 {
+    f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k })
+}
+
 /// The cubical filtration of an image: the grid, every cell's value, the cells of each
 /// dimension in filtration order.
 pub struct CubicalFiltration {
     grid: Grid,
     vals: Vec<f64>,
-    order: Vec<Option<Vec<u32>>>,
+    /// per dimension, the cells in filtration order with their keys
+    order: Vec<Option<Vec<(u64, u32)>>>,
     rank: Vec<u32>,
     sign: f64,
 }
@@ -255,22 +259,22 @@ impl CubicalFiltration {
                 .map(|g| (key(self.vals[g]), g as u32))
                 .collect();
             keys.sort_unstable();
-            self.order[k] = Some(keys.into_iter().map(|(_, g)| g).collect());
+            self.order[k] = Some(keys);
         }
         if with_rank {
             if self.rank.is_empty() {
                 self.rank = vec![u32::MAX; self.grid.len];
             }
             let list = self.order[k].as_ref().expect("built above");
-            if list.first().is_some_and(|&g| self.rank[g as usize] == u32::MAX) {
-                for (i, &g) in list.iter().enumerate() {
+            if list.first().is_some_and(|&(_, g)| self.rank[g as usize] == u32::MAX) {
+                for (i, &(_, g)) in list.iter().enumerate() {
                     self.rank[g as usize] = i as u32;
                 }
             }
         }
     }
 
-    fn list(&self, k: usize) -> &[u32] {
+    fn list(&self, k: usize) -> &[(u64, u32)] {
         self.order[k].as_deref().unwrap_or(&[])
     }
 
@@ -311,29 +315,30 @@ impl CubicalFiltration {
                     !cleared.as_ref().is_some_and(|c| c[j as usize]) && !skip_k.is_some_and(|s| s[j as usize])
                 });
                 let mut faces = Vec::new();
+                let minus = field.of(-1);
                 let r = reduce_dim(
                     field,
                     rows,
                     cols,
                     |j, out: &mut Vec<Entry>| {
-                        grid.faces(list[j as usize] as usize, &mut faces);
-                        out.extend(faces.iter().map(|&(f, s)| (rank[f], field.of(s))));
+                        grid.faces(list[j as usize].1 as usize, &mut faces);
+                        out.extend(faces.iter().map(|&(f, s)| (rank[f], if s > 0 { 1 } else { minus })));
                     },
                     opts.cycles,
                     opts.cycles,
                 );
                 let (lo, hi) = (self.list(k - 1), self.list(k));
                 for &(row, col) in &r.pairs {
-                    let (b, e) = (lo[row as usize] as usize, hi[col as usize] as usize);
+                    let (b, e) = (lo[row as usize].1 as usize, hi[col as usize].1 as usize);
                     let cycle = opts.cycles.then(|| {
-                        r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize] as usize), c)).collect()
+                        r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize].1 as usize), c)).collect()
                     });
                     diagram.push(k - 1, self.vals[b], self.vals[e], self.sign, cycle);
                 }
                 for &col in &r.zero {
-                    let g = hi[col as usize] as usize;
+                    let g = hi[col as usize].1 as usize;
                     let cycle = opts.cycles
-                        .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize] as usize), c)).collect());
+                        .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c)).collect());
                     diagram.push(k, self.vals[g], f64::INFINITY, self.sign, cycle);
                 }
                 claimed_below = Some(r.claimed);
@@ -343,7 +348,7 @@ impl CubicalFiltration {
             // dimension 0's columns are zero; those not claimed by edges are essential
             let claimed = claimed_below.unwrap_or_default();
             self.ensure(0, false);
-            for (i, &g) in self.list(0).iter().enumerate() {
+            for (i, &(_, g)) in self.list(0).iter().enumerate() {
                 if !claimed.get(i).copied().unwrap_or(false) {
                     let cycle = Some(vec![(self.name(g as usize), 1)]);
                     diagram.push(0, self.vals[g as usize], f64::INFINITY, self.sign, cycle);
@@ -355,7 +360,7 @@ impl CubicalFiltration {
             if d >= 1 && self.grid.periodic {
                 // positive edges no 2-cell kills are essential 1-classes
                 let claimed = claimed_below.unwrap_or_default();
-                for (i, &g) in self.list(1).iter().enumerate() {
+                for (i, &(_, g)) in self.list(1).iter().enumerate() {
                     if positive[i] && !claimed.get(i).copied().unwrap_or(false) {
                         diagram.push(1, self.vals[g as usize], f64::INFINITY, self.sign, None);
                     }
@@ -369,42 +374,31 @@ impl CubicalFiltration {
     /// Dimension 0 by union-find over the edges in order; returns which edges are positive.
     fn union_find_0(&self, diagram: &mut Diagram) -> Vec<bool> {
         let grid = &self.grid;
-        let nv = grid.count(false);
-        let mut parent: Vec<u32> = (0..nv as u32).collect();
-        let mut birth: Vec<u32> = vec![0; nv];
-        // vertex grid indices by compact index
         let d = grid.d();
-        let mut vg = vec![0u32; nv];
-        for g in (0..grid.len).filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 0)) {
-            let c = grid.compact(g, false);
-            vg[c] = g as u32;
-            birth[c] = g as u32;
-        }
-        let older = |a: u32, b: u32| (key(self.vals[a as usize]), a) < (key(self.vals[b as usize]), b);
+        // the oldest vertex of a component is the smallest (value, index): kept as the
+        // largest complemented key
+        let mut uf = Elder::new(
+            (0..grid.len)
+                .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 0))
+                .map(|g| (!key(self.vals[g]), !(g as u32))),
+        );
         let edges = if d >= 1 { self.list(1) } else { &[] };
         let mut positive = vec![false; edges.len()];
-        for (i, &e) in edges.iter().enumerate() {
+        for (i, &(ke, e)) in edges.iter().enumerate() {
             let e = e as usize;
             let a = (0..d).find(|&a| grid.coord(e, a) & 1 == 1).expect("an edge has an odd axis");
             let c = grid.coord(e, a);
             let (u, v) = (grid.compact(e - grid.stride[a], false), grid.compact(grid.up(e, a, c), false));
-            let (ru, rv) = (find(&mut parent, u as u32), find(&mut parent, v as u32));
-            if ru == rv {
-                positive[i] = true;
-                continue;
-            }
-            let (bu, bv) = (birth[ru as usize], birth[rv as usize]);
-            let (keep, die) = if older(bu, bv) { (ru, rv) } else { (rv, ru) };
-            let young = birth[die as usize];
-            diagram.push(0, self.vals[young as usize], self.vals[e], self.sign, None);
-            parent[die as usize] = keep;
-        }
-        for c in 0..nv {
-            if find(&mut parent, c as u32) == c as u32 {
-                diagram.push(0, self.vals[birth[c] as usize], f64::INFINITY, self.sign, None);
+            match uf.union(u as u32, v as u32) {
+                None => positive[i] = true,
+                Some((_, young)) => diagram.push(0, unkey(!young.0), unkey(ke), self.sign, None),
             }
         }
-        let _ = vg;
+        for c in 0..uf.nodes.len() as u32 {
+            if uf.find(c) == c {
+                diagram.push(0, unkey(!uf.nodes[c as usize].best.0), f64::INFINITY, self.sign, None);
+            }
+        }
         positive
     }
 
@@ -413,58 +407,79 @@ impl CubicalFiltration {
     fn dual_union_find(&self, diagram: &mut Diagram) -> Vec<bool> {
         let grid = &self.grid;
         let d = grid.d();
-        let nt = grid.count(true);
-        let outside = nt as u32;
-        let mut parent: Vec<u32> = (0..=outside).collect();
-        // the representative of a component: its latest top cell (grid index), u32::MAX outside
-        let mut rep: Vec<u32> = vec![u32::MAX; nt + 1];
+        // a component's representative is its latest top cell; the outside, last node, is
+        // later than all
+        let mut uf = Elder::new(
+            (0..grid.len)
+                .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 1))
+                .map(|g| (key(self.vals[g]), g as u32))
+                .chain(std::iter::once((u64::MAX, u32::MAX))),
+        );
+        let outside = (uf.nodes.len() - 1) as u32;
         let list = self.list(d - 1);
         let mut positive = vec![false; list.len()];
-        let later = |a: u32, b: u32| {
-            if a == u32::MAX || b == u32::MAX {
-                return a == u32::MAX && b != u32::MAX;
-            }
-            (key(self.vals[a as usize]), a) > (key(self.vals[b as usize]), b)
-        };
-        for (i, &s) in list.iter().enumerate().rev() {
+        for (i, &(ks, s)) in list.iter().enumerate().rev() {
             let s = s as usize;
             let a = (0..d).find(|&a| grid.coord(s, a) & 1 == 0).expect("a (d-1)-cell has an even axis");
             let [lo, hi] = grid.cofaces(s, a);
-            let node = |t: Option<usize>, rep: &mut Vec<u32>| match t {
-                None => outside,
-                Some(t) => {
-                    let c = grid.compact(t, true);
-                    if rep[c] == u32::MAX && c != nt {
-                        rep[c] = t as u32;
-                    }
-                    c as u32
-                }
-            };
-            let (u, v) = (node(lo, &mut rep), node(hi, &mut rep));
-            let (ru, rv) = (find(&mut parent, u), find(&mut parent, v));
-            if ru == rv {
-                continue;
+            let node = |t: Option<usize>| t.map_or(outside, |t| grid.compact(t, true) as u32);
+            if let Some((_, young)) = uf.union(node(lo), node(hi)) {
+                positive[i] = true;
+                diagram.push(d - 1, unkey(ks), unkey(young.0), self.sign, None);
             }
-            positive[i] = true;
-            let (pu, pv) = (rep[ru as usize], rep[rv as usize]);
-            let (keep, die) = if later(pu, pv) { (ru, rv) } else { (rv, ru) };
-            let t = rep[die as usize] as usize;
-            diagram.push(d - 1, self.vals[s], self.vals[t], self.sign, None);
-            parent[die as usize] = keep;
         }
         positive
     }
 }
 
-/// Root of `x`, halving paths.
-#[inline]
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[parent[x as usize] as usize];
-        parent[x as usize] = p;
-        x = p;
+/// A node of [`Elder`]: its parent, rank, and (at a root) the component's best member.
+#[derive(Clone, Copy)]
+struct Node {
+    parent: u32,
+    rank: u32,
+    best: (u64, u32),
+}
+
+/// Union-find whose components remember their best member by a key (the largest wins):
+/// union by rank, paths halved, one record per node (one cache line per visit).
+struct Elder {
+    nodes: Vec<Node>,
+}
+
+impl Elder {
+    /// One node per key, in order.
+    fn new(keys: impl Iterator<Item = (u64, u32)>) -> Self {
+        Elder { nodes: keys.enumerate().map(|(i, best)| Node { parent: i as u32, rank: 0, best }).collect() }
     }
-    x
+
+    #[inline]
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.nodes[x as usize].parent != x {
+            let p = self.nodes[self.nodes[x as usize].parent as usize].parent;
+            self.nodes[x as usize].parent = p;
+            x = p;
+        }
+        x
+    }
+
+    /// Joins the components of `u` and `v`; `None` if they were one, else the two best
+    /// members `(kept, lost)`: the lost one's class dies.
+    #[inline]
+    fn union(&mut self, u: u32, v: u32) -> Option<((u64, u32), (u64, u32))> {
+        let (ru, rv) = (self.find(u), self.find(v));
+        if ru == rv {
+            return None;
+        }
+        let (nu, nv) = (self.nodes[ru as usize], self.nodes[rv as usize]);
+        let (keep, lose) = if nu.best > nv.best { (nu.best, nv.best) } else { (nv.best, nu.best) };
+        let (hi, lo) = if nu.rank >= nv.rank { (ru, rv) } else { (rv, ru) };
+        self.nodes[lo as usize].parent = hi;
+        if nu.rank == nv.rank {
+            self.nodes[hi as usize].rank += 1;
+        }
+        self.nodes[hi as usize].best = keep;
+        Some((keep, lose))
+    }
 }
 
 pub(crate) fn check_field(p: u32) -> Result<Zp, PersistenceError> {

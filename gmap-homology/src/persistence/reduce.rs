@@ -46,7 +46,20 @@ impl Zp {
 
     #[inline]
     pub(crate) fn mul(self, a: u32, b: u32) -> u32 {
-        ((a as u64 * b as u64) % self.p) as u32
+        if self.p == 2 {
+            a & b
+        } else {
+            ((a as u64 * b as u64) % self.p) as u32
+        }
+    }
+
+    #[inline]
+    fn add(self, a: u32, b: u32) -> u32 {
+        if self.p == 2 {
+            a ^ b
+        } else {
+            ((a as u64 + b as u64) % self.p) as u32
+        }
     }
 
     #[inline]
@@ -60,6 +73,9 @@ impl Zp {
 
     /// The inverse of a non-zero class (Fermat: `a^(p-2)`).
     pub(crate) fn inv(self, a: u32) -> u32 {
+        if self.p == 2 {
+            return a;
+        }
         let (mut base, mut e, mut r) = (a as u64 % self.p, self.p - 2, 1u64);
         while e > 0 {
             if e & 1 == 1 {
@@ -85,7 +101,7 @@ impl Zp {
                 out.push((rb, self.mul(f, b[j].1)));
                 j += 1;
             } else {
-                let c = ((a[i].1 as u64 + self.mul(f, b[j].1) as u64) % self.p) as u32;
+                let c = self.add(a[i].1, self.mul(f, b[j].1));
                 if c != 0 {
                     out.push((ra, c));
                 }
@@ -105,7 +121,7 @@ pub(crate) fn normalize(field: Zp, col: &mut Vec<Entry>) {
     let mut w = 0;
     for r in 0..col.len() {
         if w > 0 && col[w - 1].0 == col[r].0 {
-            col[w - 1].1 = ((col[w - 1].1 as u64 + col[r].1 as u64) % field.p) as u32;
+            col[w - 1].1 = field.add(col[w - 1].1, col[r].1);
             if col[w - 1].1 == 0 {
                 w -= 1;
             }
