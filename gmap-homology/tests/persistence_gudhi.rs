@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use gmap_homology::persistence::{cubical_persistence, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues};
 use gmap_ops::import::image::{Image, Order};
+use gmap_ops::import::raster::read_raster;
 use serde_json::Value;
 
 fn data(rel: &str) -> PathBuf {
@@ -79,6 +80,10 @@ fn sample_images_equal_gudhi() {
         let shape: Vec<usize> = rec["shape"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as usize).collect();
         assert_eq!(img.shape(), shape.as_slice());
         let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
+        // the PGM copy holds the same pixels
+        let pgm = read_raster(&data(&format!("images/{name}.pgm"))).unwrap();
+        assert_eq!(pgm.shape(), img.shape());
+        assert!((0..pgm.len()).all(|i| pgm.value(i) == values[i]), "{name}.pgm");
         check_all(name, &shape, &values, &rec["diagrams"]);
     }
 }

@@ -16,6 +16,7 @@ pub mod cubical;
 pub mod image;
 pub mod off;
 pub mod poset;
+pub mod raster;
 pub mod simplicial;
 
 pub use cubical::{read_cub, read_pbm, CubicalSet};
