@@ -14,7 +14,10 @@
 
 use rustc_hash::FxHashMap;
 
+use gmap_core::labels::{to_dense_labels, LabelValue, LabelledGMap};
+
 use super::cubical::{check_field, key};
+use crate::{cellular_complex, ChainComplex};
 use super::reduce::{reduce_dim, Entry};
 use super::{CellName, Chain, Diagram, PersistenceError};
 
@@ -153,6 +156,66 @@ impl FilteredComplex {
             }
         }
         Ok(out)
+    }
+
+    /// The filtration of a chain complex whose cells get values from `value(k, i)`: `None`
+    /// gives a cell the maximum of its faces' values (a vertex needs a value); a value below
+    /// a face's is raised to it. `name(k, i)` names the cells in cycles.
+    pub fn from_chain<V, N>(chain: &ChainComplex, mut value: V, mut name: N) -> Result<Self, PersistenceError>
+    where
+        V: FnMut(usize, usize) -> Result<Option<f64>, PersistenceError>,
+        N: FnMut(usize, usize) -> CellName,
+    {
+        let mut out = FilteredComplex::new();
+        for k in 0..chain.counts().len() {
+            let d = (k > 0).then(|| chain.boundary(k));
+            for i in 0..chain.count(k) {
+                let boundary: Vec<(u32, i64)> = match d {
+                    Some(d) => {
+                        let (rows, vals) = d.col(i);
+                        rows.iter().zip(vals).map(|(&r, &x)| (r, x)).collect()
+                    }
+                    None => Vec::new(),
+                };
+                let v = match value(k, i)? {
+                    Some(v) => v,
+                    None if k == 0 => {
+                        return Err(PersistenceError::BadInput(format!("vertex {:?} has no value", name(0, i))))
+                    }
+                    None => f64::NEG_INFINITY,
+                };
+                out.try_push(k, v, boundary, name(k, i))?;
+            }
+        }
+        Ok(out)
+    }
+
+    /// The filtration of a labelled G-map by the numeric label `label` of its cells
+    /// (integers and reals; a text is refused, naming the cell): through its cellular
+    /// complex (conditions C1 and C2, refused otherwise), cells named by dimension and
+    /// smallest dart. Cells without the label take the maximum of their faces' values.
+    pub fn from_labelled_gmap(g: &LabelledGMap, label: &str) -> Result<Self, PersistenceError> {
+        let (dense, labels, _) = to_dense_labels(g);
+        let cc = cellular_complex(&dense)
+            .map_err(|e| PersistenceError::BadInput(format!("the map's cellular complex: {e}")))?;
+        let parts: Vec<Vec<u32>> = (0..=dense.dim()).map(|k| dense.cells(k).of).collect();
+        let reps = &cc.reps;
+        Self::from_chain(
+            &cc.chain,
+            |k, i| {
+                let c = parts[k][reps[k][i].index()] as usize;
+                match labels.get(k, c).get(label) {
+                    None => Ok(None),
+                    Some(LabelValue::Int(x)) => Ok(Some(*x as f64)),
+                    Some(LabelValue::Real(x)) => Ok(Some(*x)),
+                    Some(other) => Err(PersistenceError::BadInput(format!(
+                        "the {k}-cell of dart {}: label {label} = {other:?} is not a number",
+                        reps[k][i].index()
+                    ))),
+                }
+            },
+            |k, i| CellName::Cell { dim: k, index: reps[k][i].index() },
+        )
     }
 
     /// The persistence diagram over `Z/field`, with a cycle per pair if `cycles`.

@@ -58,11 +58,12 @@ pub enum CellName {
     Grid(Vec<usize>),
     /// a simplex by its sorted vertex labels
     Simplex(Vec<u64>),
-    /// a cell of a cell complex by dimension and index
+    /// a cell of a cell complex by dimension and a number: for a G-map, the cell's
+    /// smallest dart
     Cell {
         /// dimension
         dim: usize,
-        /// index among the cells of that dimension
+        /// the cell's number (a G-map's: its smallest dart)
         index: usize,
     },
 }
