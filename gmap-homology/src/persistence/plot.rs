@@ -173,3 +173,39 @@ pub fn image_with_chain_svg(rows: usize, cols: usize, values: &[f64], chain: &Ch
     out.push_str("</svg>\n");
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::persistence::{cubical_persistence, CubicalOptions};
+
+    fn ring() -> Diagram {
+        // a ring of low pixels around a high one: one loop, dying at 5
+        let values = [1.0, 1.0, 1.0, 1.0, 5.0, 1.0, 1.0, 1.0, 0.0];
+        cubical_persistence(&[3, 3], &values, &CubicalOptions { cycles: true, ..Default::default() }).unwrap()
+    }
+
+    #[test]
+    fn one_mark_per_pair() {
+        let d = ring();
+        assert_eq!(d.pairs.len(), 2);
+        let svg = diagram_svg(&d, 300);
+        assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
+        // the pairs' marks and the legend's two dots
+        assert_eq!(svg.matches("<circle").count(), d.pairs.len() + 2);
+        let bars = barcode_svg(&d, 400);
+        assert_eq!(bars.matches("stroke-width=\"3\"").count(), d.pairs.len());
+    }
+
+    #[test]
+    fn the_loop_is_drawn_over_the_image() {
+        let d = ring();
+        let k = d.pairs.iter().position(|p| p.dim == 1).unwrap();
+        let values = [1.0, 1.0, 1.0, 1.0, 5.0, 1.0, 1.0, 1.0, 0.0];
+        let svg = image_with_chain_svg(3, 3, &values, &d.cycles[k], false, 10);
+        // nine pixels, and one segment per edge of the loop (at least the middle pixel's four)
+        assert_eq!(svg.matches("<rect").count(), 9);
+        assert!(d.cycles[k].len() >= 4);
+        assert_eq!(svg.matches("<line").count(), d.cycles[k].len());
+    }
+}
