@@ -81,7 +81,7 @@ impl Flag {
 fn flags(m: &DenseMap) -> Result<Vec<Flag>, String> {
     let mut flag: Vec<Option<Flag>> = vec![None; m.dart_count()];
     flag[0] = Some(Flag { vertex: [0; 3], axes: [0, 1, 2], side: [1; 3] });
-    let mut stack = vec![Dart(0)];
+    let mut stack = vec![Dart::new(0)];
     while let Some(d) = stack.pop() {
         let f = flag[d.index()].ok_or("a dart on the stack has a flag")?;
         for i in 0..=3 {
@@ -96,7 +96,7 @@ fn flags(m: &DenseMap) -> Result<Vec<Flag>, String> {
                     stack.push(e);
                 }
                 Some(h) if h.vertex != g.vertex => {
-                    return Err(format!("dart {} is placed at {:?} and at {:?}", e.0, h.vertex, g.vertex))
+                    return Err(format!("dart {} is placed at {:?} and at {:?}", e.get(), h.vertex, g.vertex))
                 }
                 Some(_) => {}
             }
@@ -178,7 +178,7 @@ pub fn building() -> Result<LabelledGMap, Box<dyn Error>> {
     }
     for (k, f) in flags.iter().enumerate() {
         let p = [0, 1, 2].map(|a| LINES[a][f.vertex[a] as usize]);
-        m.set_point(Dart(k as u32), Some(p));
+        m.set_point(Dart::new(k as u32), Some(p));
     }
     let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&m);
     let volumes = m.cells(3);

@@ -93,7 +93,7 @@ fn a_five_cell_bounded_by_a_pinched_suspension_is_refused() {
     // one 5-cell fails C2, named by its smallest dart 0
     let map = five_cell_on_suspension("hyperbolic_dodecahedral_space.facets");
     let want = c2_cell_by_cell(&map).expect("the cell-by-cell check refuses it");
-    assert_eq!(want, (5, Dart(0), "(Z, 0, Z/5 + Z/5 + Z/5, 0, Z)".to_string()));
+    assert_eq!(want, (5, Dart::new(0), "(Z, 0, Z/5 + Z/5 + Z/5, 0, Z)".to_string()));
     let err = check_preconditions(&map).expect_err("C2 fails in dimension 5");
     assert_eq!(c2_of(&err), want);
     assert_eq!(

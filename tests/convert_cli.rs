@@ -158,7 +158,7 @@ fn gmap_to_gmap_keeps_points_and_labels() {
     let o = gmap(&["convert", p(&out), p(&moka)]);
     assert!(o.status.success(), "{}", stderr(&o));
     let back = gmap_core::io::read_moka(&moka).unwrap();
-    assert_eq!(back.point(gmap_core::Dart(1)), Some([2.5, 0.0, -1.0]));
+    assert_eq!(back.point(gmap_core::Dart::new(1)), Some([2.5, 0.0, -1.0]));
     // a malformed section is refused with the file and line
     let bad = dir.path().join("bad.gmap");
     std::fs::write(&bad, "gmap 1 2\n1 0\n0 1\nlabels 1 1\n0 name=\"open\n").unwrap();

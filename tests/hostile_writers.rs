@@ -78,7 +78,7 @@ fn regular_maps_keep_the_first_subdivision() {
 fn with_points(mut m: DenseMap) -> DenseMap {
     let v = m.cells(0);
     for d in 0..m.dart_count() as u32 {
-        m.set_point(Dart(d), Some([v.of[d as usize] as f64, 0.5, -1.0]));
+        m.set_point(Dart::new(d), Some([v.of[d as usize] as f64, 0.5, -1.0]));
     }
     m
 }
@@ -119,6 +119,6 @@ fn off_export_reads_back_as_the_same_map_or_is_refused() {
     assert!(matches!(off_string(&build::polygon(2).unwrap()), Err(ExportError::NotAMesh { .. })));
     assert!(off_string(&build::polygon(3).unwrap()).is_ok());
     let mut nan = build::polygon(3).unwrap();
-    nan.set_point(Dart(0), Some([f64::NAN, 0.0, 0.0]));
+    nan.set_point(Dart::new(0), Some([f64::NAN, 0.0, 0.0]));
     assert!(matches!(off_string(&nan), Err(ExportError::NonFinitePoint { .. })));
 }

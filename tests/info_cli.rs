@@ -1,4 +1,4 @@
-//! `gmap info` end to end (CONTRACT §1): exact JSON on good `.gmap` and `.moka` files, and
+//! `gmap info` end to end (docs/FORMATS.md): exact JSON on good `.gmap` and `.moka` files, and
 //! for every kind of bad input exit code 1 with one line `error: FILE:LINE: …` on stderr.
 
 mod common;

@@ -44,7 +44,7 @@ fn orbit_map(m: &DenseMap, d: Dart, e: Dart, set: AlphaSet) -> Vec<(Dart, Dart)>
 /// symmetry of the square that sends dart 0 to `image(cube, dart 0)`.
 fn folded_cube(image: impl Fn(&DenseMap, Dart) -> Dart) -> DenseMap {
     let mut m = build::cube(3).unwrap();
-    let d = Dart(0);
+    let d = Dart::new(0);
     assert!(m.is_free(d, 3));
     let e = image(&m, d);
     for (x, y) in orbit_map(&m, d, e, AlphaSet::below(2)) {
@@ -59,8 +59,8 @@ fn folded_cube(image: impl Fn(&DenseMap, Dart) -> Dart) -> DenseMap {
 /// that cell's orientation.
 fn kinds() -> Vec<(&'static str, DenseMap, usize, bool)> {
     let mut edge = build::polygon(4).unwrap();
-    let a0 = edge.alpha(Dart(0), 0);
-    edge.link(Dart(0), a0, 2);
+    let a0 = edge.alpha(Dart::new(0), 0);
+    edge.link(Dart::new(0), a0, 2);
     edge.validate().unwrap();
     let half_turn = folded_cube(|m, d| {
         let a10 = |x: Dart| m.alpha(m.alpha(x, 0), 1);
@@ -88,8 +88,8 @@ fn every_kind_is_found_and_refused_with_its_cell() {
         let defect = m.check_no_self_bending().unwrap_err();
         let BoundaryDefect::SelfBending { dart, i, other, cell } = defect else { panic!("{name}: {defect}") };
         assert_eq!(i, dim, "{name}");
-        assert_eq!(dart, Dart(0), "{name}");
-        assert_eq!(cell, cell_rep(&m, Dart(0), dim), "{name}");
+        assert_eq!(dart, Dart::new(0), "{name}");
+        assert_eq!(cell, cell_rep(&m, Dart::new(0), dim), "{name}");
         assert!(m.orbit(dart, AlphaSet::above(i, m.dim())).contains(&other), "{name}");
         assert!(m.orbit(dart, AlphaSet::below(i)).contains(&other), "{name}");
         assert_eq!(m.check_complete_boundaries(), Err(defect.clone()), "{name}");
@@ -135,12 +135,12 @@ fn the_command_line_refuses_each_kind_and_simplicial_answers() {
     for (k, (name, m, dim, _)) in kinds().into_iter().enumerate() {
         let path = dir.path().join(format!("fold{k}.gmap"));
         std::fs::write(&path, gmap_core::io::format_gmap(&m)).unwrap();
-        let cell = cell_rep(&m, Dart(0), dim);
+        let cell = cell_rep(&m, Dart::new(0), dim);
         let o = gmap(&["homology", p(&path), "--method", "cellular"]);
         assert_eq!(o.status.code(), Some(1), "{name}: {}", stderr(&o));
         let err = stderr(&o);
         assert!(err.contains("the cellular method does not apply (use --method simplicial)"), "{name}: {err}");
-        assert!(err.contains(&format!("the {dim}-cell of dart {}", cell.0)), "{name}: {err}");
+        assert!(err.contains(&format!("the {dim}-cell of dart {}", cell.get())), "{name}: {err}");
         let o = gmap(&["homology", p(&path), "--method", "simplicial", "--json"]);
         assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
         let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();

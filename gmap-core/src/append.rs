@@ -16,7 +16,7 @@
 
 use crate::attr::Attributes;
 use crate::dense::DenseMap;
-use crate::edit::{DartId, GMap, SewError};
+use crate::edit::{DartId, EditError, GMap};
 
 impl<A: Attributes> GMap<A> {
     /// Copies `m` into this map as new darts, linked as in `m` and free for every `alpha_k`
@@ -24,12 +24,12 @@ impl<A: Attributes> GMap<A> {
     /// handles: dense dart `k` of `m` is `ids[k]`. A vertex of `m` with a point gets it
     /// (the point of its first dart, in dense order, that has one); no attribute is set.
     ///
-    /// Precondition: `m.dim() <= self.dim()` (else [`SewError::BadIndex`] names
+    /// Precondition: `m.dim() <= self.dim()` (else [`EditError::BadIndex`] names
     /// `alpha_{m.dim()}`), and `m` is valid (BO Def. 1) so that the copy is. O(N n) for N
     /// darts of `m`.
-    pub fn try_append(&mut self, m: &DenseMap) -> Result<Vec<DartId>, SewError> {
+    pub fn try_append(&mut self, m: &DenseMap) -> Result<Vec<DartId>, EditError> {
         if m.dim() > self.dim() {
-            return Err(SewError::BadIndex { alpha: m.dim(), dim: self.dim() });
+            return Err(EditError::BadIndex { alpha: m.dim(), dim: self.dim() });
         }
         self.reserve_darts(m.dart_count());
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| self.create_dart()).collect();
@@ -66,7 +66,7 @@ impl<A: Attributes> GMap<A> {
         for d in m.darts() {
             for (i, &e) in m.row(d).iter().enumerate() {
                 let e = e as usize;
-                if e >= n || m.row(crate::dense::Dart(e as u32))[i] != d.0 {
+                if e >= n || m.row(crate::ids::Dart::new(e as u32))[i] != d.get() {
                     for &x in ids {
                         for j in 0..=m.dim() {
                             self.link_free(x, x, j);
@@ -97,10 +97,10 @@ impl<A: Attributes> GMap<A> {
             }
             seen[d.index()] = true;
             queue.clear();
-            queue.push(d.0);
+            queue.push(d.get());
             let mut k = 0;
             while k < queue.len() {
-                let row = m.row(crate::dense::Dart(queue[k]));
+                let row = m.row(crate::ids::Dart::new(queue[k]));
                 k += 1;
                 for &y in &row[1..] {
                     if !seen[y as usize] {
@@ -127,7 +127,7 @@ impl<A: Attributes> GMap<A> {
 
 #[cfg(test)]
 mod tests {
-    use crate::{examples, Cells, Characteristics, GMap, MapView, SewError};
+    use crate::{examples, Cells, Characteristics, EditError, GMap, MapView};
 
     #[test]
     fn two_copies_are_two_components_with_the_cells_of_both() {
@@ -167,8 +167,8 @@ mod tests {
     #[test]
     fn points_go_to_the_vertices() {
         let mut m = crate::DenseMap::new(1, 2);
-        m.link(crate::Dart(0), crate::Dart(1), 0);
-        m.set_point(crate::Dart(0), Some([1.0, 2.0, 3.0]));
+        m.link(crate::Dart::new(0), crate::Dart::new(1), 0);
+        m.set_point(crate::Dart::new(0), Some([1.0, 2.0, 3.0]));
         let mut g = GMap::new(1);
         let ids = g.append(&m);
         assert_eq!(g.point(ids[0]), Some([1.0, 2.0, 3.0]));
@@ -180,11 +180,11 @@ mod tests {
     fn a_vertex_takes_the_point_of_its_first_dart_that_has_one() {
         // a path of two edges: 0-1 and 2-3 by alpha_0, the vertex {1, 2} by alpha_1
         let mut m = crate::DenseMap::new(1, 4);
-        m.link(crate::Dart(0), crate::Dart(1), 0);
-        m.link(crate::Dart(1), crate::Dart(2), 1);
-        m.link(crate::Dart(2), crate::Dart(3), 0);
-        m.set_point(crate::Dart(2), Some([2.0; 3]));
-        m.set_point(crate::Dart(3), Some([3.0; 3]));
+        m.link(crate::Dart::new(0), crate::Dart::new(1), 0);
+        m.link(crate::Dart::new(1), crate::Dart::new(2), 1);
+        m.link(crate::Dart::new(2), crate::Dart::new(3), 0);
+        m.set_point(crate::Dart::new(2), Some([2.0; 3]));
+        m.set_point(crate::Dart::new(3), Some([3.0; 3]));
         let mut g = GMap::new(2);
         let ids = g.append(&m);
         assert_eq!(
@@ -192,7 +192,7 @@ mod tests {
             vec![None, Some([2.0; 3]), Some([2.0; 3]), Some([3.0; 3])]
         );
         assert_eq!(g.point_count(), 2);
-        m.set_point(crate::Dart(1), Some([1.0; 3]));
+        m.set_point(crate::Dart::new(1), Some([1.0; 3]));
         let ids = g.append(&m);
         assert_eq!(g.point(ids[2]), Some([1.0; 3]));
         assert_eq!(g.point_count(), 4);
@@ -213,7 +213,7 @@ mod tests {
     #[test]
     fn a_map_of_higher_dimension_is_refused() {
         let mut g = GMap::new(1);
-        assert_eq!(g.try_append(&examples::torus()), Err(SewError::BadIndex { alpha: 2, dim: 1 }));
+        assert_eq!(g.try_append(&examples::torus()), Err(EditError::BadIndex { alpha: 2, dim: 1 }));
         assert_eq!(g.dart_count(), 0);
     }
 }

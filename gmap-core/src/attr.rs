@@ -18,7 +18,7 @@
 //! slot's type, and asking for a dimension whose slot is `()` does not compile
 //! ([`AttributeAt`] gives the type of slot `I`). No `Box<dyn Any>`, no lookup by name.
 //! A slot beyond the map's dimension (a 4-tuple on a 2-map) is inert: nothing is ever stored
-//! in it ([`GMap::try_set_attribute`] refuses it with [`SewError::NoSuchCells`]), so one
+//! in it ([`GMap::try_set_attribute`] refuses it with [`EditError::NoSuchCells`]), so one
 //! attribute layout serves maps of several dimensions ([`crate::LabelledGMap`]).
 //!
 //! ## Storage
@@ -91,9 +91,9 @@ use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
-use crate::edit::{dart_index, DartId};
+use crate::darts::{dart_index, DartId};
 #[cfg(doc)]
-use crate::edit::{GMap, SewError};
+use crate::edit::{EditError, GMap};
 use crate::Point;
 
 /// The handle value of a dart without an attribute.
@@ -725,6 +725,7 @@ impl<T: Clone> Cells<T> {
 /// A cell whose darts disagree on their attribute, or a broken count: what
 /// [`GMap::check_attributes`] reports.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum AttributeDefect {
     /// Two darts of one i-cell, neighbours by some `alpha_j` (`j != i`), hold different
     /// attributes (or one holds none).
@@ -789,7 +790,7 @@ mod sealed {
     use slotmap::SlotMap;
 
     use super::AttributeDefect;
-    use crate::edit::{DartData, DartId};
+    use crate::darts::{DartData, DartId};
 
     /// The topology an attribute slot walks: the map's dimension and darts. Built by [`GMap`]
     /// for the duration of one call.
@@ -1001,7 +1002,7 @@ mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
     use super::*;
-    use crate::edit::SewError;
+    use crate::edit::EditError;
     use crate::{Dart, GMap};
 
     type Full2 = (Cells<u32>, Cells<u32>, Cells<u32>);
@@ -1059,12 +1060,12 @@ mod tests {
     fn stale_darts_and_missing_cells_are_refused() {
         let mut m: GMap<((), (), (), Cells<u8>)> = GMap::with_attributes(2);
         let a = m.create_dart();
-        assert_eq!(m.try_set_attribute::<3>(a, 1), Err(SewError::NoSuchCells { cell: 3, dim: 2 }));
+        assert_eq!(m.try_set_attribute::<3>(a, 1), Err(EditError::NoSuchCells { cell: 3, dim: 2 }));
         assert_eq!(m.try_remove_attribute::<3>(a), Ok(None));
         m.remove_dart(a);
-        assert_eq!(m.try_attribute::<3>(a), Err(SewError::NoSuchDart(a)));
-        assert_eq!(m.try_point(a), Err(SewError::NoSuchDart(a)));
-        assert_eq!(m.try_set_point(a, Some([0.0; 3])), Err(SewError::NoSuchDart(a)));
+        assert_eq!(m.try_attribute::<3>(a), Err(EditError::NoSuchDart(a)));
+        assert_eq!(m.try_point(a), Err(EditError::NoSuchDart(a)));
+        assert_eq!(m.try_set_point(a, Some([0.0; 3])), Err(EditError::NoSuchDart(a)));
     }
 
     #[test]
@@ -1131,7 +1132,7 @@ mod tests {
         let mut m: GMap<((), (), Cells<Vec<u32>>)> = GMap::with_attributes(1);
         // slot 2 is inert on a 1-map: nothing stored, nothing reconciled
         let a = m.create_dart();
-        assert_eq!(m.try_set_attribute::<2>(a, vec![]), Err(SewError::NoSuchCells { cell: 2, dim: 1 }));
+        assert_eq!(m.try_set_attribute::<2>(a, vec![]), Err(EditError::NoSuchCells { cell: 2, dim: 1 }));
         let mut m: GMap<(Cells<Vec<u32>>,)> = GMap::with_attributes(1);
         m.set_on_split::<0>(|kept, copy| {
             kept.push(1);
@@ -1179,7 +1180,7 @@ mod tests {
         // to_dense writes a vertex's point on each of its darts, from_dense reads it back
         let (dense, ids) = m.to_dense();
         let k = ids.iter().position(|&x| x == d[0]).unwrap();
-        assert_eq!(dense.point(Dart(k as u32)), Some([3.0, 0.0, 0.0]));
+        assert_eq!(dense.point(Dart::new(k as u32)), Some([3.0, 0.0, 0.0]));
         let (back, bids) = GMap::from_dense(&dense);
         assert_eq!(back.point(bids[k]), Some([3.0, 0.0, 0.0]));
         assert_eq!(back.point_count(), 7);

@@ -27,7 +27,7 @@
 //! involutions) gives `None`, and the caller runs the generic traversal, which names the
 //! offending cell.
 
-use crate::dense::Dart;
+use crate::ids::Dart;
 use crate::kernels::oriented_by;
 use crate::parallel;
 use crate::union_find::ParityUnionFind;
@@ -134,7 +134,7 @@ fn glued(rows: &[[u32; 4]], a: usize, b: usize, fa: bool, fb: bool, every_pair: 
         let (root, f) = uf.find(r);
         if root == r {
             fin.push((reps.len() as u32, false));
-            reps.push(Dart(first[r as usize]));
+            reps.push(Dart::new(first[r as usize]));
         } else {
             fin.push((fin[root as usize].0, f));
         }

@@ -100,8 +100,8 @@ mod tests {
         // two darts linked by alpha_0 and alpha_2 but alpha_2 fixes one of them: not an
         // involution, so validation fails
         let mut m = DenseMap::new(2, 3);
-        m.link(crate::Dart(0), crate::Dart(1), 0);
-        m.link(crate::Dart(1), crate::Dart(2), 2);
+        m.link(crate::Dart::new(0), crate::Dart::new(1), 0);
+        m.link(crate::Dart::new(1), crate::Dart::new(2), 2);
         let c = Characteristics::of(&m);
         assert!(!c.valid);
         assert!(c.to_string().ends_with(", valid=0"));

@@ -7,7 +7,8 @@
 //! `∂_i : B_i → B_{i-1}` sends `<alpha_{i+1}..alpha_n>(d)` to `<alpha_i..alpha_n>(d)`.
 
 use crate::alpha::AlphaSet;
-use crate::dense::{Dart, DenseMap, Partition};
+use crate::dense::{DenseMap, Partition};
+use crate::ids::Dart;
 
 /// The elements of `B_i` with their induced involutions, and the compacted i-cells.
 #[derive(Clone, Debug)]
@@ -57,7 +58,7 @@ impl CompactedCells {
 
     /// The darts of element `e` of `B_i`.
     pub fn darts_of(&self, e: u32) -> Vec<Dart> {
-        self.orbits.of.iter().enumerate().filter(|(_, &k)| k == e).map(|(d, _)| Dart(d as u32)).collect()
+        self.orbits.of.iter().enumerate().filter(|(_, &k)| k == e).map(|(d, _)| Dart::new(d as u32)).collect()
     }
 }
 

@@ -11,33 +11,7 @@ use bitvec::vec::BitVec;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
-
-/// A dart of a [`DenseMap`]: an index `0..N`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Dart(pub u32);
-
-impl std::fmt::Display for Dart {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        self.0.fmt(f)
-    }
-}
-
-impl From<Dart> for usize {
-    fn from(d: Dart) -> usize {
-        d.0 as usize
-    }
-}
-
-impl Dart {
-    /// The index as `usize`.
-    #[inline]
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
-
-/// A point in space, attached to a dart to embed the 0-cell it belongs to.
-pub type Point = [f64; 3];
+use crate::ids::{CellId, Dart, Point};
 
 /// Marker value of an unassigned entry in a [`Partition`] under construction.
 const UNSET: u32 = u32::MAX;
@@ -53,26 +27,6 @@ pub struct Partition {
     pub reps: Vec<Dart>,
 }
 
-/// The number of a cell (an orbit) in a [`Partition`]: `0..len`, in the order of the
-/// cells' smallest darts. `Partition::of` holds these numbers as bare `u32` for the
-/// whole-map loops that index arrays by them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct CellId(pub u32);
-
-impl CellId {
-    /// The number as `usize`.
-    #[inline]
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
-
-impl std::fmt::Display for CellId {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        self.0.fmt(f)
-    }
-}
-
 impl Partition {
     /// Number of orbits.
     pub fn len(&self) -> usize {
@@ -82,7 +36,7 @@ impl Partition {
     /// The orbit (cell) of dart `d`.
     #[inline]
     pub fn cell_of(&self, d: Dart) -> CellId {
-        CellId(self.of[d.index()])
+        CellId::new(self.of[d.index()])
     }
 
     /// The smallest dart of orbit `c`.
@@ -93,7 +47,7 @@ impl Partition {
 
     /// The orbits' numbers, `0..len`.
     pub fn cell_ids(&self) -> impl Iterator<Item = CellId> {
-        (0..self.reps.len() as u32).map(CellId)
+        (0..self.reps.len() as u32).map(CellId::new)
     }
 
     /// Whether there is no orbit (the map has no dart).
@@ -160,7 +114,7 @@ impl PartialEq for DenseMap {
     fn eq(&self, other: &Self) -> bool {
         self.dim == other.dim
             && self.alpha == other.alpha
-            && (0..self.dart_count()).all(|d| self.point(Dart(d as u32)) == other.point(Dart(d as u32)))
+            && (0..self.dart_count()).all(|d| self.point(Dart::new(d as u32)) == other.point(Dart::new(d as u32)))
     }
 }
 
@@ -235,7 +189,7 @@ impl DenseMap {
 
     /// All darts, in increasing order.
     pub fn darts(&self) -> impl Iterator<Item = Dart> {
-        (0..self.dart_count() as u32).map(Dart)
+        (0..self.dart_count() as u32).map(Dart::new)
     }
 
     /// The flat involution array (row-major, `dim + 1` entries per dart).
@@ -288,7 +242,7 @@ impl DenseMap {
         let w = self.dim + 1;
         let k = d.index() * w + i;
         if i < w && k < self.alpha.len() {
-            Dart(self.alpha[k])
+            Dart::new(self.alpha[k])
         } else {
             self.refuse(self.check(d, i).expect_err("out of range"))
         }
@@ -298,7 +252,7 @@ impl DenseMap {
     #[inline]
     pub fn try_alpha(&self, d: Dart, i: usize) -> Result<Dart, DartError> {
         self.check(d, i)?;
-        Ok(Dart(self.alpha[d.index() * (self.dim + 1) + i]))
+        Ok(Dart::new(self.alpha[d.index() * (self.dim + 1) + i]))
     }
 
     /// Whether `d` is i-free (a fixed point of `alpha_i`).
@@ -348,7 +302,7 @@ impl DenseMap {
         if !self.points.is_empty() {
             self.points.resize(first + k, None);
         }
-        Ok(Dart(first as u32))
+        Ok(Dart::new(first as u32))
     }
 
     /// Low-level: sets `alpha_i(d) = e` and `alpha_i(e) = d` (first making their former
@@ -372,8 +326,8 @@ impl DenseMap {
         self.unlink_unchecked(d, i);
         self.unlink_unchecked(e, i);
         let w = self.dim + 1;
-        self.alpha[d.index() * w + i] = e.0;
-        self.alpha[e.index() * w + i] = d.0;
+        self.alpha[d.index() * w + i] = e.get();
+        self.alpha[e.index() * w + i] = d.get();
         Ok(())
     }
 
@@ -400,8 +354,8 @@ impl DenseMap {
     fn unlink_unchecked(&mut self, d: Dart, i: usize) {
         let w = self.dim + 1;
         let e = self.alpha[d.index() * w + i] as usize;
-        self.alpha[d.index() * w + i] = d.0;
-        if e < self.dart_count() && self.alpha[e * w + i] == d.0 {
+        self.alpha[d.index() * w + i] = d.get();
+        if e < self.dart_count() && self.alpha[e * w + i] == d.get() {
             self.alpha[e * w + i] = e as u32;
         }
     }
@@ -459,19 +413,19 @@ impl DenseMap {
             for (i, &e) in row.iter().enumerate() {
                 if e as usize >= n {
                     return Err(ValidityError::OutOfRange {
-                        dart: Dart(d as u32),
+                        dart: Dart::new(d as u32),
                         alpha: i,
-                        target: Dart(e),
+                        target: Dart::new(e),
                         darts: n,
                     });
                 }
                 let back = a[e as usize * w + i];
                 if back as usize != d {
                     return Err(ValidityError::NotInvolution {
-                        dart: Dart(d as u32),
+                        dart: Dart::new(d as u32),
                         alpha: i,
-                        image: Dart(e),
-                        back: Dart(back),
+                        image: Dart::new(e),
+                        back: Dart::new(back),
                     });
                 }
             }
@@ -484,7 +438,12 @@ impl DenseMap {
                     let x = a[x * w + i] as usize;
                     let x = a[x * w + j];
                     if x as usize != d {
-                        return Err(ValidityError::NotCommuting { dart: Dart(d as u32), i, j, image: Dart(x) });
+                        return Err(ValidityError::NotCommuting {
+                            dart: Dart::new(d as u32),
+                            i,
+                            j,
+                            image: Dart::new(x),
+                        });
                     }
                 }
             }
@@ -519,7 +478,7 @@ impl DenseMap {
                 let y = self.alpha[x * w + i];
                 if !seen[y as usize] {
                     seen.set(y as usize, true);
-                    out.push(Dart(y));
+                    out.push(Dart::new(y));
                 }
             }
         }
@@ -546,7 +505,7 @@ impl DenseMap {
                 continue;
             }
             let id = reps.len() as u32;
-            reps.push(Dart(d as u32));
+            reps.push(Dart::new(d as u32));
             of[d] = id;
             stack.push(d as u32);
             while let Some(x) = stack.pop() {
@@ -656,12 +615,12 @@ impl DenseMap {
     /// // sewn to itself by alpha_3 with a half-turn: dart d meets dart d + 4
     /// let mut m = DenseMap::new(3, 8);
     /// for d in (0..8).step_by(2) {
-    ///     m.link(Dart(d), Dart(d + 1), 0);
-    ///     m.link(Dart(d + 1), Dart((d + 2) % 8), 1);
+    ///     m.link(Dart::new(d), Dart::new(d + 1), 0);
+    ///     m.link(Dart::new(d + 1), Dart::new((d + 2) % 8), 1);
     /// }
     /// assert!(m.check_no_self_bending().is_ok());
     /// for d in 0..4 {
-    ///     m.link(Dart(d), Dart(d + 4), 3);
+    ///     m.link(Dart::new(d), Dart::new(d + 4), 3);
     /// }
     /// assert!(m.validate().is_ok());
     /// let e = m.check_no_self_bending().unwrap_err();
@@ -718,8 +677,8 @@ impl DenseMap {
                 }
             }
             if let Some((d, other)) = found {
-                let cell = self.orbit(Dart(d), AlphaSet::cell(i, n)).into_iter().min().unwrap_or(Dart(d));
-                return Err(BoundaryDefect::SelfBending { dart: Dart(d), i, other: Dart(other), cell });
+                let cell = self.orbit(Dart::new(d), AlphaSet::cell(i, n)).into_iter().min().unwrap_or(Dart::new(d));
+                return Err(BoundaryDefect::SelfBending { dart: Dart::new(d), i, other: Dart::new(other), cell });
             }
         }
         Ok(())

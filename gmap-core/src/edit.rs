@@ -12,39 +12,27 @@
 //! per vertex; `GMap` alone is `GMap<()>`, with no attribute and no per-dart cost for them.
 
 use rustc_hash::FxHashMap as HashMap;
-use slotmap::{new_key_type, Key, SlotMap};
+use slotmap::SlotMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
-use crate::dense::{Dart, DenseMap, Point};
+pub use crate::darts::DartId;
+use crate::darts::{dart_index, DartData};
+use crate::dense::DenseMap;
+use crate::ids::{Dart, Point};
 use crate::marks::{MarkId, Marks};
 use crate::view::MapView;
 
-new_key_type! {
-    /// A stable handle to a dart of a [`GMap`].
-    pub struct DartId;
-}
-
-/// Per-dart storage: the involution images.
-#[derive(Clone, Debug)]
-pub(crate) struct DartData {
-    pub(crate) alpha: SmallVec<[DartId; 5]>,
-}
-
-/// The dense index of a dart handle: its slot number (see [`GMap::dart_index`]).
-#[inline]
-pub(crate) fn dart_index(d: DartId) -> usize {
-    (d.data().as_ffi() & 0xffff_ffff) as usize
-}
-
-/// Why two darts cannot be i-sewn, or why an edit or a query of a [`GMap`] was refused: the
-/// `try_` forms ([`GMap::try_sew`], [`GMap::try_link`], [`GMap::try_unsew`],
+/// The misuse of an editable [`GMap`]: why an edit (a sew, a link, a removal, a mark, an
+/// attribute) or a query through a [`DartId`] was refused. The `try_` forms ([`GMap::try_sew`], [`GMap::try_link`], [`GMap::try_unsew`],
 /// [`GMap::try_remove_dart`], [`GMap::try_mark`], …) return it, the panicking forms panic
-/// with its message.
+/// with its message. The same misuse of a [`DenseMap`] (a dart out of range, an index above
+/// the dimension) is a [`crate::DartError`], which names the dart by its number.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
-pub enum SewError {
+#[non_exhaustive]
+pub enum EditError {
     /// `i` is larger than the dimension.
     #[error("alpha_{alpha} does not exist in a map of dimension {dim}")]
     BadIndex {
@@ -99,6 +87,7 @@ pub enum SewError {
 
 /// What [`GMap::check`] finds wrong: the involutions, or the attributes.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum MapDefect {
     /// BO Def. 1 fails (darts numbered as in [`GMap::to_dense`]).
     #[error(transparent)]
@@ -161,7 +150,7 @@ impl Pairing {
 #[cold]
 #[inline(never)]
 #[track_caller]
-fn refuse(e: SewError) -> ! {
+fn refuse(e: EditError) -> ! {
     panic!("{e}")
 }
 
@@ -298,9 +287,9 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::remove_dart`], or [`SewError::NoSuchDart`] (and no change) for a handle that
+    /// [`GMap::remove_dart`], or [`EditError::NoSuchDart`] (and no change) for a handle that
     /// does not name a live dart.
-    pub fn try_remove_dart(&mut self, d: DartId) -> Result<(), SewError> {
+    pub fn try_remove_dart(&mut self, d: DartId) -> Result<(), EditError> {
         self.live(d)?;
         let topo = Topo { dim: self.dim, darts: &self.darts };
         self.points.drop_dart(&topo, 0, d);
@@ -320,19 +309,19 @@ impl<A: Attributes> GMap<A> {
     /// Checks that `d` names a live dart (the handle's version is the slot's: a handle of a
     /// removed dart is refused even when a new dart reuses the slot).
     #[inline]
-    fn live(&self, d: DartId) -> Result<(), SewError> {
+    fn live(&self, d: DartId) -> Result<(), EditError> {
         if self.darts.contains_key(d) {
             Ok(())
         } else {
-            Err(SewError::NoSuchDart(d))
+            Err(EditError::NoSuchDart(d))
         }
     }
 
     /// Checks that `d` names a live dart and `i <= n`.
     #[inline]
-    fn check_dart_index(&self, d: DartId, i: usize) -> Result<(), SewError> {
+    fn check_dart_index(&self, d: DartId, i: usize) -> Result<(), EditError> {
         if i > self.dim {
-            return Err(SewError::BadIndex { alpha: i, dim: self.dim });
+            return Err(EditError::BadIndex { alpha: i, dim: self.dim });
         }
         self.live(d)
     }
@@ -351,7 +340,7 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// `alpha_i(d)`, or an error for a stale handle or `i > n`.
-    pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, SewError> {
+    pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, EditError> {
         self.check_dart_index(d, i)?;
         Ok(self.darts[d].alpha[i])
     }
@@ -368,7 +357,7 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// [`GMap::alpha_word`], or an error for a stale handle or a letter above n.
-    pub fn try_alpha_word(&self, d: DartId, word: &[usize]) -> Result<DartId, SewError> {
+    pub fn try_alpha_word(&self, d: DartId, word: &[usize]) -> Result<DartId, EditError> {
         word.iter().try_fold(d, |x, &i| self.try_alpha(x, i))
     }
 
@@ -397,7 +386,7 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// [`GMap::link`], or an error (and no change) for a stale handle or `i > n`.
-    pub fn try_link(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
+    pub fn try_link(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), EditError> {
         self.check_dart_index(d, i)?;
         self.check_dart_index(e, i)?;
         self.unlink_unchecked(d, i);
@@ -420,7 +409,7 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// [`GMap::unlink`], or an error (and no change) for a stale handle or `i > n`.
-    pub fn try_unlink(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
+    pub fn try_unlink(&mut self, d: DartId, i: usize) -> Result<(), EditError> {
         self.check_dart_index(d, i)?;
         self.unlink_unchecked(d, i);
         Ok(())
@@ -449,8 +438,8 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::point`], or [`SewError::NoSuchDart`] for a stale handle.
-    pub fn try_point(&self, d: DartId) -> Result<Option<Point>, SewError> {
+    /// [`GMap::point`], or [`EditError::NoSuchDart`] for a stale handle.
+    pub fn try_point(&self, d: DartId) -> Result<Option<Point>, EditError> {
         self.live(d)?;
         Ok(self.points.get_at(dart_index(d)).copied())
     }
@@ -470,8 +459,8 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::set_point`], or [`SewError::NoSuchDart`] (and no change) for a stale handle.
-    pub fn try_set_point(&mut self, d: DartId, p: Option<Point>) -> Result<(), SewError> {
+    /// [`GMap::set_point`], or [`EditError::NoSuchDart`] (and no change) for a stale handle.
+    pub fn try_set_point(&mut self, d: DartId, p: Option<Point>) -> Result<(), EditError> {
         self.live(d)?;
         let topo = Topo { dim: self.dim, darts: &self.darts };
         match p {
@@ -558,9 +547,9 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// Checks that the map has I-cells.
-    fn has_cells(&self, i: usize) -> Result<(), SewError> {
+    fn has_cells(&self, i: usize) -> Result<(), EditError> {
         if i > self.dim {
-            Err(SewError::NoSuchCells { cell: i, dim: self.dim })
+            Err(EditError::NoSuchCells { cell: i, dim: self.dim })
         } else {
             Ok(())
         }
@@ -581,8 +570,8 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::attribute`], or [`SewError::NoSuchDart`] for a stale handle.
-    pub fn try_attribute<const I: usize>(&self, d: DartId) -> Result<Option<&<A as AttributeAt<I>>::Value>, SewError>
+    /// [`GMap::attribute`], or [`EditError::NoSuchDart`] for a stale handle.
+    pub fn try_attribute<const I: usize>(&self, d: DartId) -> Result<Option<&<A as AttributeAt<I>>::Value>, EditError>
     where
         A: AttributeAt<I>,
     {
@@ -605,11 +594,11 @@ impl<A: Attributes> GMap<A> {
         self.attrs.cells_mut().get_at_mut(dart_index(d))
     }
 
-    /// [`GMap::attribute_mut`], or [`SewError::NoSuchDart`] for a stale handle.
+    /// [`GMap::attribute_mut`], or [`EditError::NoSuchDart`] for a stale handle.
     pub fn try_attribute_mut<const I: usize>(
         &mut self,
         d: DartId,
-    ) -> Result<Option<&mut <A as AttributeAt<I>>::Value>, SewError>
+    ) -> Result<Option<&mut <A as AttributeAt<I>>::Value>, EditError>
     where
         A: AttributeAt<I>,
     {
@@ -680,7 +669,7 @@ impl<A: Attributes> GMap<A> {
         &mut self,
         d: DartId,
         value: <A as AttributeAt<I>>::Value,
-    ) -> Result<AttrId, SewError>
+    ) -> Result<AttrId, EditError>
     where
         A: AttributeAt<I>,
     {
@@ -706,12 +695,12 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::remove_attribute`], or [`SewError::NoSuchDart`] (and no change) for a stale
+    /// [`GMap::remove_attribute`], or [`EditError::NoSuchDart`] (and no change) for a stale
     /// handle.
     pub fn try_remove_attribute<const I: usize>(
         &mut self,
         d: DartId,
-    ) -> Result<Option<<A as AttributeAt<I>>::Value>, SewError>
+    ) -> Result<Option<<A as AttributeAt<I>>::Value>, EditError>
     where
         A: AttributeAt<I>,
     {
@@ -790,17 +779,17 @@ impl<A: Attributes> GMap<A> {
     /// are i-free throughout and that the pairing is one-to-one. O(s · n) for orbits of
     /// s darts up to [`Pairing::LINEAR`] (no allocation below 16 pairs), O(s · n) expected
     /// beyond.
-    fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Pairs, SewError> {
+    fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Pairs, EditError> {
         if i > self.dim {
-            return Err(SewError::BadIndex { alpha: i, dim: self.dim });
+            return Err(EditError::BadIndex { alpha: i, dim: self.dim });
         }
         for x in [d, e] {
             if !self.contains(x) {
-                return Err(SewError::NoSuchDart(x));
+                return Err(EditError::NoSuchDart(x));
             }
         }
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
-        let conflict = |at| SewError::NotIsomorphic { first: d, second: e, alpha: i, at };
+        let conflict = |at| EditError::NotIsomorphic { first: d, second: e, alpha: i, at };
         let mut pairing = Pairing::default();
         pairing.push(d, e);
         let mut k = 0;
@@ -812,7 +801,7 @@ impl<A: Attributes> GMap<A> {
             }
             for x in [a, b] {
                 if !self.is_free(x, i) {
-                    return Err(SewError::NotFree { dart: x, alpha: i });
+                    return Err(EditError::NotFree { dart: x, alpha: i });
                 }
             }
             for &j in &idx {
@@ -853,7 +842,7 @@ impl<A: Attributes> GMap<A> {
     /// Attributes and points follow ([`GMap::reconcile_attributes`]): cells that become one
     /// keep the attribute of the cell of `d` (the merge hook runs when both had one).
     /// O(orbit size · n), plus the reconciliation when attributes or points are in use.
-    pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), SewError> {
+    pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), EditError> {
         let pairs = self.sew_pairs(d, e, i)?;
         for &(a, b) in &pairs {
             self.darts[a].alpha[i] = b;
@@ -877,7 +866,7 @@ impl<A: Attributes> GMap<A> {
     /// Like [`GMap::try_sew`], panicking if the darts are not sewable.
     ///
     /// # Panics
-    /// With the message of the [`SewError`] `try_sew` returns.
+    /// With the message of the [`EditError`] `try_sew` returns.
     #[track_caller]
     pub fn sew(&mut self, d: DartId, e: DartId, i: usize) {
         if let Err(err) = self.try_sew(d, e, i) {
@@ -901,7 +890,7 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// [`GMap::unsew`], or an error (and no change) for a stale handle or `i > n`.
-    pub fn try_unsew(&mut self, d: DartId, i: usize) -> Result<(), SewError> {
+    pub fn try_unsew(&mut self, d: DartId, i: usize) -> Result<(), EditError> {
         self.check_dart_index(d, i)?;
         if self.is_free(d, i) {
             return Ok(());
@@ -946,7 +935,7 @@ impl<A: Attributes> GMap<A> {
         if self.points.active() {
             for (k, &d) in ids.iter().enumerate() {
                 if let Some(&p) = self.points.get_at(dart_index(d)) {
-                    dense.set_point(Dart(k as u32), Some(p));
+                    dense.set_point(Dart::new(k as u32), Some(p));
                 }
             }
         }
@@ -1002,8 +991,8 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
-    /// [`GMap::mark`], or [`SewError::NoSuchDart`] (and no change) for a stale handle.
-    pub fn try_mark(&mut self, m: MarkId, d: DartId) -> Result<bool, SewError> {
+    /// [`GMap::mark`], or [`EditError::NoSuchDart`] (and no change) for a stale handle.
+    pub fn try_mark(&mut self, m: MarkId, d: DartId) -> Result<bool, EditError> {
         self.live(d)?;
         let k = self.dart_index(d);
         Ok(self.marks.mark(m, k))
@@ -1044,9 +1033,9 @@ impl<A: Attributes> GMap<A> {
     /// and unmarks the other class, and returns the size of the marked class. A G-map
     /// stores no orientation: an orientation of an orientable component is the choice of
     /// one of its two classes (BO Def. 7, 8), here recorded as a mark.
-    /// [`SewError::NotOrientable`] (and no change) when the component has no 2-colouring,
-    /// [`SewError::NoSuchDart`] for a stale handle. O(component size · n).
-    pub fn orient(&mut self, m: MarkId, d: DartId) -> Result<usize, SewError> {
+    /// [`EditError::NotOrientable`] (and no change) when the component has no 2-colouring,
+    /// [`EditError::NoSuchDart`] for a stale handle. O(component size · n).
+    pub fn orient(&mut self, m: MarkId, d: DartId) -> Result<usize, EditError> {
         self.live(d)?;
         let mut colour: HashMap<DartId, bool> = HashMap::default();
         colour.insert(d, true);
@@ -1062,7 +1051,7 @@ impl<A: Attributes> GMap<A> {
                     continue;
                 }
                 match colour.get(&y) {
-                    Some(&cy) if cy == cx => return Err(SewError::NotOrientable { dart: x, alpha: i, other: y }),
+                    Some(&cy) if cy == cx => return Err(EditError::NotOrientable { dart: x, alpha: i, other: y }),
                     Some(_) => {}
                     None => {
                         colour.insert(y, !cx);
@@ -1128,6 +1117,30 @@ impl<A: Attributes> GMap<A> {
         for x in self.orbit(d, set) {
             self.mark(m, x);
         }
+    }
+}
+
+impl<A: Attributes> MapView for GMap<A> {
+    type Dart = DartId;
+
+    fn dim(&self) -> usize {
+        GMap::dim(self)
+    }
+
+    fn dart_count(&self) -> usize {
+        GMap::dart_count(self)
+    }
+
+    fn dart_list(&self) -> Vec<DartId> {
+        self.darts().collect()
+    }
+
+    fn alpha(&self, d: DartId, i: usize) -> DartId {
+        GMap::alpha(self, d, i)
+    }
+
+    fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
+        f(&self.to_dense().0)
     }
 }
 
@@ -1245,10 +1258,10 @@ mod tests {
         let (a, b, c) = (polygon(&mut g, 20), polygon(&mut g, 20), polygon(&mut g, 21));
         assert!(a.len() > Pairing::LINEAR);
         assert_eq!(g.sew_pairs(a[0], b[0], 3).map(|p| p.len()), Ok(40));
-        assert!(matches!(g.try_sew(a[0], c[0], 3), Err(SewError::NotIsomorphic { .. })));
+        assert!(matches!(g.try_sew(a[0], c[0], 3), Err(EditError::NotIsomorphic { .. })));
         g.sew(a[0], b[0], 3);
         assert!(a.iter().zip(&b).all(|(&x, &y)| g.alpha(x, 3) == y));
-        assert_eq!(g.try_sew(a[1], c[0], 3), Err(SewError::NotFree { dart: a[1], alpha: 3 }));
+        assert_eq!(g.try_sew(a[1], c[0], 3), Err(EditError::NotFree { dart: a[1], alpha: 3 }));
         // the two 20-gons are one face now, each still its own volume
         assert_eq!(MapView::cell_counts(&g), vec![41, 41, 2, 3]);
     }

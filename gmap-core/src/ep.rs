@@ -41,6 +41,7 @@ use thiserror::Error;
 
 /// Why an Euler–Poincaré computation failed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum EpError {
     /// The vector does not satisfy `Σ (-1)^i (x_i - y_i) = 0`; `defect` is that sum.
     #[error("not an Euler-Poincaré operator: the alternating sum Σ(-1)^i(x_i - y_i) is {defect}, not 0")]

@@ -2,10 +2,11 @@
 
 use thiserror::Error;
 
-use crate::dense::Dart;
+use crate::ids::Dart;
 
 /// A violation of BO Def. 1 (the G-map axioms), as found by `validate`.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum ValidityError {
     /// `alpha_i(d)` names a dart that does not exist.
     #[error(
@@ -71,6 +72,7 @@ pub enum ValidityError {
 /// index it names does not exist. The panicking forms ([`crate::DenseMap::alpha`],
 /// [`crate::DenseMap::link`], …) panic with this message; the `try_` forms return it.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum DartError {
     /// The dart is not one of the map's darts `0..darts`.
     #[error("dart {dart} does not exist (the map has {darts} darts)")]
@@ -102,6 +104,7 @@ pub enum DartError {
 
 /// Why a map does not have cells with complete boundaries (BO Def. 6).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum BoundaryDefect {
     /// `alpha_i` has a fixed point for some `i < n`.
     #[error("the boundary is open at dart {dart}: it has no neighbour along alpha_{alpha} (Def. 6 of BO: only alpha_n may have free darts)")]
@@ -140,6 +143,7 @@ pub struct OrientationConflict {
 
 /// Why a cell is not orientable as a compacted cell (condition C1 of docs/DESIGN.md).
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum CellDefect {
     /// A dart of the i-cell is k-free for some `k < i`: the cell's boundary is incomplete.
     #[error("the {dim}-cell of dart {dart} has an open boundary: one of its darts has no neighbour along alpha_{alpha} (condition C1: cells with complete boundaries)")]

@@ -25,8 +25,9 @@
 //! random maps of the property tests.
 
 use crate::attr::Attributes;
-use crate::dense::{Dart, DenseMap};
+use crate::dense::DenseMap;
 use crate::edit::{DartId, GMap};
+use crate::ids::Dart;
 
 /// Builds a map from involutions written as pairs of paper darts (numbered from 1);
 /// every dart not named in `pairs[i]` is i-free.
@@ -35,7 +36,7 @@ fn from_paper_pairs(dim: usize, darts: usize, pairs: &[&[(u32, u32)]]) -> DenseM
     let mut m = DenseMap::new(dim, darts);
     for (i, list) in pairs.iter().enumerate() {
         for &(a, b) in list.iter() {
-            m.link(Dart(a - 1), Dart(b - 1), i);
+            m.link(Dart::new(a - 1), Dart::new(b - 1), i);
         }
     }
     debug_assert!(m.validate().is_ok());
@@ -161,7 +162,7 @@ mod tests {
     }
 
     fn set_of(m: &DenseMap, paper_dart: u32, set: AlphaSet) -> Vec<u32> {
-        let mut v: Vec<u32> = m.orbit(Dart(paper_dart - 1), set).iter().map(|d| d.0 + 1).collect();
+        let mut v: Vec<u32> = m.orbit(Dart::new(paper_dart - 1), set).iter().map(|d| d.get() + 1).collect();
         v.sort();
         v
     }
@@ -182,10 +183,10 @@ mod tests {
         let e2 = f.image[b1.orbits.of[1] as usize];
         let e3 = f.image[b1.orbits.of[2] as usize];
         assert_eq!(e2, e3);
-        assert_eq!(b0.darts_of(e2), vec![Dart(1), Dart(2)]);
+        assert_eq!(b0.darts_of(e2), vec![Dart::new(1), Dart::new(2)]);
         // its preimage is {{2}, {3}}
         let pre: Vec<Vec<Dart>> = f.preimage(e2).iter().map(|&e| b1.darts_of(e)).collect();
-        assert_eq!(pre, vec![vec![Dart(1)], vec![Dart(2)]]);
+        assert_eq!(pre, vec![vec![Dart::new(1)], vec![Dart::new(2)]]);
         assert!(m.is_orientable());
         assert!(m.has_complete_boundaries());
     }
@@ -226,8 +227,8 @@ mod tests {
         // edge {3, 4, 9, 10} is the alpha^1_0-connected set {{3, 9}, {4, 10}}
         let e39 = b1.orbits.of[2];
         let e410 = b1.orbits.of[3];
-        assert_eq!(b1.darts_of(e39), vec![Dart(2), Dart(8)]);
-        assert_eq!(b1.darts_of(e410), vec![Dart(3), Dart(9)]);
+        assert_eq!(b1.darts_of(e39), vec![Dart::new(2), Dart::new(8)]);
+        assert_eq!(b1.darts_of(e410), vec![Dart::new(3), Dart::new(9)]);
         assert_eq!(b1.alpha(e39, 0), e410);
         assert_eq!(b1.alpha(e410, 0), e39);
         assert_eq!(b1.cell_of[e39 as usize], b1.cell_of[e410 as usize]);
@@ -237,14 +238,14 @@ mod tests {
         // ∂_1(<alpha_2>(1) = {1}) = <alpha_1, alpha_2>(1) = {1, 8}
         let d1 = FaceOperator::new(&b1, &b0);
         let v = d1.image[b1.orbits.of[0] as usize];
-        assert_eq!(b0.darts_of(v), vec![Dart(0), Dart(7)]);
+        assert_eq!(b0.darts_of(v), vec![Dart::new(0), Dart::new(7)]);
         // ∂_2({2}) = <alpha_2>(2) = {2}; ∂_2({3}) = <alpha_2>(3) = {3, 9}
         let d2 = FaceOperator::new(&b2, &b1);
-        assert_eq!(b1.darts_of(d2.image[b2.orbits.of[1] as usize]), vec![Dart(1)]);
-        assert_eq!(b1.darts_of(d2.image[b2.orbits.of[2] as usize]), vec![Dart(2), Dart(8)]);
+        assert_eq!(b1.darts_of(d2.image[b2.orbits.of[1] as usize]), vec![Dart::new(1)]);
+        assert_eq!(b1.darts_of(d2.image[b2.orbits.of[2] as usize]), vec![Dart::new(2), Dart::new(8)]);
         // the preimage of {3, 9} is {{3}, {9}}; only {3} lies in the face of dart 1
         let pre: Vec<Vec<Dart>> = d2.preimage(e39).iter().map(|&e| b2.darts_of(e)).collect();
-        assert_eq!(pre, vec![vec![Dart(2)], vec![Dart(8)]]);
+        assert_eq!(pre, vec![vec![Dart::new(2)], vec![Dart::new(8)]]);
         let face1 = b2.cell_of[0];
         assert_eq!(d2.preimage(e39).iter().filter(|&&e| b2.cell_of[e as usize] == face1).count(), 1);
         // the preimage of {14} is {{14}}, not in the face of dart 1: incidence 0
@@ -272,7 +273,7 @@ mod tests {
         // preimage of vertex {1, 6, 7, 8} is {{1, 6}, {7}, {8}}
         let v = b0.orbits.of[0];
         let pre: Vec<Vec<Dart>> = d1.preimage(v).iter().map(|&e| b1.darts_of(e)).collect();
-        assert_eq!(pre, vec![vec![Dart(0), Dart(5)], vec![Dart(6)], vec![Dart(7)]]);
+        assert_eq!(pre, vec![vec![Dart::new(0), Dart::new(5)], vec![Dart::new(6)], vec![Dart::new(7)]]);
         // unsigned incidences: edge of 1 with that vertex 1, edge of 8 with it 2
         let cells1 = m.cells(1);
         let count_in = |edge_dart: usize| {
@@ -286,9 +287,9 @@ mod tests {
         // the face: preimage of {8} is {8} (incidence 1), of {1, 6} is {{1}, {6}} (incidence 2)
         assert_eq!(d2.preimage(b1.orbits.of[7]).len(), 1);
         let pre: Vec<Vec<Dart>> = d2.preimage(b1.orbits.of[0]).iter().map(|&e| b2.darts_of(e)).collect();
-        assert_eq!(pre, vec![vec![Dart(0)], vec![Dart(5)]]);
+        assert_eq!(pre, vec![vec![Dart::new(0)], vec![Dart::new(5)]]);
         let pre: Vec<Vec<Dart>> = d2.preimage(b1.orbits.of[1]).iter().map(|&e| b2.darts_of(e)).collect();
-        assert_eq!(pre, vec![vec![Dart(1)], vec![Dart(4)]]);
+        assert_eq!(pre, vec![vec![Dart::new(1)], vec![Dart::new(4)]]);
         assert!(m.is_orientable());
         // 2-free darts only: complete boundaries, and every compacted cell orientable
         assert!(m.has_complete_boundaries());

@@ -44,8 +44,8 @@ use thiserror::Error;
 
 use crate::alpha::AlphaSet;
 use crate::attr::{AttrId, Attributes};
-use crate::dense::Point;
-use crate::edit::{DartId, GMap, SewError};
+use crate::edit::{DartId, EditError, GMap};
+use crate::ids::Point;
 
 /// A point given to a constructor: `[x, y, z]`, or `[x, y]` for `[x, y, 0]`.
 pub trait IntoPoint {
@@ -67,6 +67,7 @@ impl IntoPoint for [f64; 2] {
 
 /// Why a constructor of [`crate::geometry`] refused: nothing was added to the map.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum MakeError {
     /// The object needs involutions the map does not have.
     #[error("a {what} needs a map of dimension at least {needs}, this map has dimension {dim}")]
@@ -467,9 +468,9 @@ impl<A: Attributes> GMap<A> {
         self.try_barycenter(d, i).unwrap_or_else(|e| panic!("{e}"))
     }
 
-    /// [`GMap::barycenter`], or [`SewError::NoSuchDart`] for a stale handle and
-    /// [`SewError::NoSuchCells`] for `i > n`.
-    pub fn try_barycenter(&self, d: DartId, i: usize) -> Result<Option<Point>, SewError> {
+    /// [`GMap::barycenter`], or [`EditError::NoSuchDart`] for a stale handle and
+    /// [`EditError::NoSuchCells`] for `i > n`.
+    pub fn try_barycenter(&self, d: DartId, i: usize) -> Result<Option<Point>, EditError> {
         self.cell_checked(d, i)?;
         let Some(points) = self.vertex_points(d, AlphaSet::cell(i, self.dim())) else {
             return Ok(None);
@@ -485,12 +486,12 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// Checks a live dart and `i <= n`, naming the cells.
-    fn cell_checked(&self, d: DartId, i: usize) -> Result<(), SewError> {
+    fn cell_checked(&self, d: DartId, i: usize) -> Result<(), EditError> {
         if !self.contains(d) {
-            return Err(SewError::NoSuchDart(d));
+            return Err(EditError::NoSuchDart(d));
         }
         if i > self.dim() {
-            return Err(SewError::NoSuchCells { cell: i, dim: self.dim() });
+            return Err(EditError::NoSuchCells { cell: i, dim: self.dim() });
         }
         Ok(())
     }
@@ -532,17 +533,17 @@ impl<A: Attributes> GMap<A> {
         self.try_transform_cell(d, i, f).unwrap_or_else(|e| panic!("{e}"))
     }
 
-    /// [`GMap::transform_cell`], or [`SewError::NoSuchDart`] / [`SewError::NoSuchCells`]
+    /// [`GMap::transform_cell`], or [`EditError::NoSuchDart`] / [`EditError::NoSuchCells`]
     /// (and no change).
     pub fn try_transform_cell(
         &mut self,
         d: DartId,
         i: usize,
         mut f: impl FnMut(Point) -> Point,
-    ) -> Result<(), SewError> {
+    ) -> Result<(), EditError> {
         let set = if i == self.dim() + 1 {
             if !self.contains(d) {
-                return Err(SewError::NoSuchDart(d));
+                return Err(EditError::NoSuchDart(d));
             }
             AlphaSet::all(self.dim())
         } else {
@@ -689,7 +690,7 @@ mod tests {
         assert_eq!(g.barycenter(d, 1), Some([0.0, 0.0, 0.5]));
         assert_eq!(g.barycenter(d, 2), Some([0.5, 0.0, 0.5]));
         assert_eq!(g.barycenter(d, 3), Some([0.5, 0.5, 0.5]));
-        assert_eq!(g.try_barycenter(d, 4), Err(SewError::NoSuchCells { cell: 4, dim: 3 }));
+        assert_eq!(g.try_barycenter(d, 4), Err(EditError::NoSuchCells { cell: 4, dim: 3 }));
         // a vertex without a point: no barycentre of the cells around it
         let c = g.make_combinatorial_hexahedron();
         assert_eq!(g.barycenter(c, 3), None);
@@ -697,7 +698,7 @@ mod tests {
         assert_eq!(g.barycenter(c, 0), Some([1.0, 1.0, 1.0]));
         assert_eq!(g.barycenter(c, 1), None);
         g.remove_dart(c);
-        assert_eq!(g.try_barycenter(c, 0), Err(SewError::NoSuchDart(c)));
+        assert_eq!(g.try_barycenter(c, 0), Err(EditError::NoSuchDart(c)));
     }
 
     #[test]
@@ -722,7 +723,7 @@ mod tests {
         for k in 0..3 {
             assert!((after[k] - want[k]).abs() < 1e-12, "{after:?} {want:?}");
         }
-        assert_eq!(g.try_transform_cell(a, 5, |p| p), Err(SewError::NoSuchCells { cell: 5, dim: 3 }));
+        assert_eq!(g.try_transform_cell(a, 5, |p| p), Err(EditError::NoSuchCells { cell: 5, dim: 3 }));
         g.check().unwrap();
         assert_eq!(GMap::new(2).bounding_box(), None);
     }

@@ -17,8 +17,8 @@
 //! Every kernel expects a map whose links are in range (a validated map); on an invalid map
 //! they may panic on an index, never read out of bounds.
 
-use crate::dense::Dart;
 use crate::error::{CellDefect, OrientationConflict};
+use crate::ids::Dart;
 use crate::parallel;
 use crate::union_find::{ParitySets, ParityUnionFind, UnionFind};
 
@@ -205,7 +205,7 @@ pub(crate) fn partition(a: &[u32], w: usize, mask: u32) -> Option<(Vec<u32>, Vec
             let mut reps = Vec::with_capacity(k);
             for (d, &c) in of.iter().enumerate() {
                 if c as usize == reps.len() {
-                    reps.push(Dart(d as u32));
+                    reps.push(Dart::new(d as u32));
                 }
             }
             Some((of, reps))
@@ -343,7 +343,7 @@ fn orient_rows<const W: usize>(rows: &[[u32; W]]) -> Result<Vec<u8>, Orientation
                     col[y as usize] = other;
                     stack.push(y);
                 } else if cy == c {
-                    return Err(OrientationConflict { dart: Dart(x), alpha: i, other: Dart(y) });
+                    return Err(OrientationConflict { dart: Dart::new(x), alpha: i, other: Dart::new(y) });
                 }
             }
         }
@@ -372,7 +372,7 @@ fn orient_dyn(m: Dyn<'_>) -> Result<Vec<u8>, OrientationConflict> {
                     col[y as usize] = 3 - c;
                     stack.push(y);
                 } else if cy == c {
-                    return Err(OrientationConflict { dart: Dart(x), alpha: i, other: Dart(y) });
+                    return Err(OrientationConflict { dart: Dart::new(x), alpha: i, other: Dart::new(y) });
                 }
             }
         }
@@ -401,7 +401,7 @@ pub(crate) fn oriented_by<'a>(
             continue;
         }
         let id = reps.len() as u32;
-        reps.push(Dart(d as u32));
+        reps.push(Dart::new(d as u32));
         of[d] = id;
         pos[d / bits] |= 1 << (d % bits);
         stack.push(d as u32);
@@ -412,7 +412,7 @@ pub(crate) fn oriented_by<'a>(
                     continue;
                 }
                 if k < i && y == x {
-                    return Err(CellDefect::IncompleteBoundary { dim: i, dart: Dart(d as u32), alpha: k });
+                    return Err(CellDefect::IncompleteBoundary { dim: i, dart: Dart::new(d as u32), alpha: k });
                 }
                 let want = if k < i { !cx } else { cx };
                 let yu = y as usize;
@@ -421,7 +421,12 @@ pub(crate) fn oriented_by<'a>(
                     pos[yu / bits] |= usize::from(want) << (yu % bits);
                     stack.push(y);
                 } else if get(&pos, yu) != want {
-                    return Err(CellDefect::NotOrientable { dim: i, dart: Dart(d as u32), alpha: k, at: Dart(x) });
+                    return Err(CellDefect::NotOrientable {
+                        dim: i,
+                        dart: Dart::new(d as u32),
+                        alpha: k,
+                        at: Dart::new(x),
+                    });
                 }
             }
         }
@@ -481,7 +486,7 @@ fn oriented_scan<const W: usize>(rows: &[[u32; W]], i: usize) -> Option<(Vec<u32
         let (root, flip) = uf.find(d as u32);
         if root as usize == d {
             of[d] = reps.len() as u32;
-            reps.push(Dart(root));
+            reps.push(Dart::new(root));
         } else {
             of[d] = of[root as usize];
         }
@@ -597,14 +602,14 @@ mod tests {
         for k in 0..n {
             let b = 8 * k;
             for j in 0..4 {
-                m.link(Dart(b + 2 * j), Dart(b + 2 * j + 1), 0);
-                m.link(Dart(b + 2 * j + 1), Dart(b + (2 * j + 2) % 8), 1);
+                m.link(Dart::new(b + 2 * j), Dart::new(b + 2 * j + 1), 0);
+                m.link(Dart::new(b + 2 * j + 1), Dart::new(b + (2 * j + 2) % 8), 1);
             }
             let c = 8 * ((k + 1) % n);
             let flip = twist && k + 1 == n;
             let (x, y) = if flip { (c + 6, c + 7) } else { (c + 7, c + 6) };
-            m.link(Dart(b + 2), Dart(x), 2);
-            m.link(Dart(b + 3), Dart(y), 2);
+            m.link(Dart::new(b + 2), Dart::new(x), 2);
+            m.link(Dart::new(b + 3), Dart::new(y), 2);
         }
         m
     }
@@ -626,7 +631,7 @@ mod tests {
         m.add_darts(8);
         for d in 0..8u32 {
             for i in 0..3 {
-                m.link(crate::Dart(base + d), crate::Dart(base + k.row(crate::Dart(d))[i]), i);
+                m.link(crate::Dart::new(base + d), crate::Dart::new(base + k.row(crate::Dart::new(d))[i]), i);
             }
         }
         m.validate().unwrap();

@@ -20,7 +20,7 @@
 use std::fmt;
 
 use crate::attr::Cells;
-use crate::dense::{Dart, DenseMap};
+use crate::dense::DenseMap;
 use crate::edit::{DartId, GMap};
 
 /// The value of one label.
@@ -148,9 +148,7 @@ pub fn to_dense_labels(g: &LabelledGMap) -> (DenseMap, DenseLabels, Vec<DartId>)
     let mut of = Vec::with_capacity(dense.dim() + 1);
     for i in 0..=dense.dim().min(MAX_LABELLED_DIM) {
         let cells = dense.cells(i);
-        of.push(
-            cells.reps.iter().map(|&Dart(r)| cell_labels(g, i, ids[r as usize]).cloned().unwrap_or_default()).collect(),
-        );
+        of.push(cells.reps.iter().map(|&r| cell_labels(g, i, ids[r.index()]).cloned().unwrap_or_default()).collect());
     }
     (dense, DenseLabels { of }, ids)
 }
@@ -295,7 +293,7 @@ fn number(tok: &str) -> Result<LabelValue, String> {
         Ok(v) if v.is_finite() => Ok(LabelValue::Real(v)),
         _ => Err(format!(
             "`{}` is neither an integer, a finite real nor a quoted text",
-            crate::io::shorten(tok.as_bytes(), 40)
+            crate::text::shorten(tok.as_bytes(), 40)
         )),
     }
 }

@@ -56,8 +56,8 @@
 //! use gmap_core::{DenseMap, Dart};
 //! let mut m = DenseMap::new(2, 8);
 //! for k in 0..4u32 {
-//!     m.link(Dart(2 * k), Dart(2 * k + 1), 0);            // the two darts of an edge side
-//!     m.link(Dart(2 * k + 1), Dart((2 * k + 2) % 8), 1);  // the two darts of a corner
+//!     m.link(Dart::new(2 * k), Dart::new(2 * k + 1), 0);            // the two darts of an edge side
+//!     m.link(Dart::new(2 * k + 1), Dart::new((2 * k + 2) % 8), 1);  // the two darts of a corner
 //! }
 //! m.validate().unwrap();
 //! assert_eq!(m.cell_counts(), vec![4, 4, 1]);
@@ -77,18 +77,21 @@ pub mod attr;
 mod cells3;
 pub mod characteristics;
 pub mod compacted;
+mod darts;
 pub mod dense;
 pub mod edit;
 pub mod ep;
 pub mod error;
 pub mod examples;
 pub mod geometry;
+pub mod ids;
 pub mod io;
 mod kernels;
 pub mod labels;
 pub mod marks;
 pub mod parallel;
 pub mod resources;
+mod text;
 pub mod union_find;
 pub mod view;
 pub mod walk;
@@ -97,10 +100,11 @@ pub use alpha::{AlphaSet, MAX_DIM};
 pub use attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Cells, Slot};
 pub use characteristics::Characteristics;
 pub use compacted::{CompactedCells, FaceOperator};
-pub use dense::{CellId, Dart, DenseMap, OrientedCells3d, Partition, Point};
-pub use edit::{DartId, GMap, MapDefect, SewError};
+pub use dense::{DenseMap, OrientedCells3d, Partition};
+pub use edit::{DartId, EditError, GMap, MapDefect};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
 pub use geometry::{Affine, IntoPoint, MakeError};
+pub use ids::{CellId, Dart, Point};
 pub use labels::{LabelValue, LabelledGMap, Labels};
 pub use marks::{MarkId, Marks};
 pub use view::MapView;

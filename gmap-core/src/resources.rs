@@ -58,7 +58,7 @@ pub struct SizeError(pub String);
 /// assert!(parse_size("0").is_err() && parse_size("2X").is_err() && parse_size("99999999999T").is_err());
 /// ```
 pub fn parse_size(text: &str) -> Result<u64, SizeError> {
-    let err = || SizeError(crate::io::shorten(text.as_bytes(), 80));
+    let err = || SizeError(crate::text::shorten(text.as_bytes(), 80));
     let t = text.trim();
     let t = t.strip_suffix("iB").or_else(|| t.strip_suffix("ib")).unwrap_or(t);
     let digits_end = t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len());

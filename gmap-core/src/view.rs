@@ -32,10 +32,11 @@ use std::hash::Hash;
 use rustc_hash::FxHashSet;
 
 use crate::alpha::AlphaSet;
-use crate::attr::Attributes;
-use crate::dense::{Dart, DenseMap};
-use crate::edit::{DartId, GMap};
+use crate::dense::DenseMap;
+#[cfg(doc)]
+use crate::edit::GMap;
 use crate::error::{BoundaryDefect, OrientationConflict, ValidityError};
+use crate::ids::Dart;
 
 /// A G-map seen through its involutions. See the [module docs](self).
 pub trait MapView {
@@ -152,33 +153,10 @@ impl MapView for DenseMap {
     }
 }
 
-impl<A: Attributes> MapView for GMap<A> {
-    type Dart = DartId;
-
-    fn dim(&self) -> usize {
-        GMap::dim(self)
-    }
-
-    fn dart_count(&self) -> usize {
-        GMap::dart_count(self)
-    }
-
-    fn dart_list(&self) -> Vec<DartId> {
-        self.darts().collect()
-    }
-
-    fn alpha(&self, d: DartId, i: usize) -> DartId {
-        GMap::alpha(self, d, i)
-    }
-
-    fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
-        f(&self.to_dense().0)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::edit::{DartId, GMap};
 
     /// The same questions asked of both representations give the same answers.
     fn agree(m: &DenseMap) {

@@ -194,7 +194,7 @@ mod tests {
 
 #[cfg(test)]
 mod orientation_tests {
-    use crate::{examples, AlphaSet, GMap, SewError};
+    use crate::{examples, AlphaSet, EditError, GMap};
 
     #[test]
     fn orient_and_reverse_a_cylinder() {
@@ -223,7 +223,7 @@ mod orientation_tests {
     fn a_klein_bottle_has_no_orientation() {
         let (mut g, ids) = GMap::from_dense(&examples::klein_bottle());
         let m = g.reserve_mark();
-        assert!(matches!(g.orient(m, ids[0]), Err(SewError::NotOrientable { .. })));
+        assert!(matches!(g.orient(m, ids[0]), Err(EditError::NotOrientable { .. })));
         assert!(!g.is_orientation(m, ids[0]));
         // no change on failure
         assert!(g.darts().all(|x| !g.is_marked(m, x)));

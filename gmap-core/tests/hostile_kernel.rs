@@ -5,7 +5,7 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use gmap_core::{Dart, DartError, DenseMap, GMap, SewError, ValidityError};
+use gmap_core::{Dart, DartError, DenseMap, EditError, GMap, ValidityError};
 
 /// The panic message of `f`, which must panic.
 fn panic_message(f: impl FnOnce()) -> String {
@@ -16,7 +16,7 @@ fn panic_message(f: impl FnOnce()) -> String {
 /// A segment as a 2-map's single triangle: `gmap 2 2` with darts 0 and 1 joined by alpha_0.
 fn two_darts() -> DenseMap {
     let mut m = DenseMap::new(2, 2);
-    m.link(Dart(0), Dart(1), 0);
+    m.link(Dart::new(0), Dart::new(1), 0);
     m
 }
 
@@ -24,15 +24,15 @@ fn two_darts() -> DenseMap {
 fn dense_alpha_above_the_dimension_is_refused() {
     let m = two_darts();
     // alpha(0, 3) on a 2-map used to read dart 1's alpha_0
-    assert_eq!(m.try_alpha(Dart(0), 3), Err(DartError::BadIndex { dart: Dart(0), alpha: 3, dim: 2 }));
-    assert_eq!(m.try_alpha(Dart(2), 0), Err(DartError::NoSuchDart { dart: Dart(2), darts: 2 }));
-    assert_eq!(m.try_alpha(Dart(0), 0), Ok(Dart(1)));
+    assert_eq!(m.try_alpha(Dart::new(0), 3), Err(DartError::BadIndex { dart: Dart::new(0), alpha: 3, dim: 2 }));
+    assert_eq!(m.try_alpha(Dart::new(2), 0), Err(DartError::NoSuchDart { dart: Dart::new(2), darts: 2 }));
+    assert_eq!(m.try_alpha(Dart::new(0), 0), Ok(Dart::new(1)));
     let msg = panic_message(|| {
-        m.alpha(Dart(0), 3);
+        m.alpha(Dart::new(0), 3);
     });
     assert_eq!(msg, "alpha_3 does not exist in a map of dimension 2 (asked at dart 0)");
     let msg = panic_message(|| {
-        m.is_free(Dart(7), 0);
+        m.is_free(Dart::new(7), 0);
     });
     assert_eq!(msg, "dart 7 does not exist (the map has 2 darts)");
 }
@@ -42,13 +42,16 @@ fn dense_link_above_the_dimension_changes_nothing() {
     let mut m = two_darts();
     let before = m.clone();
     // link(0, 2, 3) on a 2-map used to overwrite alpha_0 of other darts
-    assert_eq!(m.try_link(Dart(0), Dart(2), 3), Err(DartError::BadIndex { dart: Dart(0), alpha: 3, dim: 2 }));
-    assert_eq!(m.try_link(Dart(0), Dart(2), 1), Err(DartError::NoSuchDart { dart: Dart(2), darts: 2 }));
-    assert_eq!(m.try_unlink(Dart(1), 3), Err(DartError::BadIndex { dart: Dart(1), alpha: 3, dim: 2 }));
+    assert_eq!(
+        m.try_link(Dart::new(0), Dart::new(2), 3),
+        Err(DartError::BadIndex { dart: Dart::new(0), alpha: 3, dim: 2 })
+    );
+    assert_eq!(m.try_link(Dart::new(0), Dart::new(2), 1), Err(DartError::NoSuchDart { dart: Dart::new(2), darts: 2 }));
+    assert_eq!(m.try_unlink(Dart::new(1), 3), Err(DartError::BadIndex { dart: Dart::new(1), alpha: 3, dim: 2 }));
     assert_eq!(m, before);
-    let msg = panic_message(|| m.clone().link(Dart(0), Dart(2), 3));
+    let msg = panic_message(|| m.clone().link(Dart::new(0), Dart::new(2), 3));
     assert!(msg.contains("alpha_3 does not exist"), "{msg}");
-    let msg = panic_message(|| m.clone().unlink(Dart(5), 0));
+    let msg = panic_message(|| m.clone().unlink(Dart::new(5), 0));
     assert_eq!(msg, "dart 5 does not exist (the map has 2 darts)");
     m.validate().unwrap();
 }
@@ -62,7 +65,7 @@ fn dense_add_darts_past_u32_is_refused() {
     assert_eq!(m.try_add_darts(u32::MAX as usize - 3), Err(DartError::TooManyDarts { darts: 3, adding: 4294967292 }));
     assert_eq!(m.try_add_darts(usize::MAX), Err(DartError::TooManyDarts { darts: 3, adding: usize::MAX }));
     assert_eq!(m.dart_count(), 3);
-    assert_eq!(m.try_add_darts(2), Ok(Dart(3)));
+    assert_eq!(m.try_add_darts(2), Ok(Dart::new(3)));
     assert_eq!(m.dart_count(), 5);
     m.validate().unwrap();
     let msg = panic_message(|| {
@@ -88,13 +91,13 @@ fn gmap_unsew_and_remove_of_a_removed_dart_are_errors() {
     let b = g.create_dart();
     g.sew(a, b, 0);
     g.remove_dart(a);
-    assert_eq!(g.try_unsew(a, 0), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_remove_dart(a), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_unsew(b, 3), Err(SewError::BadIndex { alpha: 3, dim: 2 }));
-    assert_eq!(g.try_link(a, b, 1), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_unlink(b, 9), Err(SewError::BadIndex { alpha: 9, dim: 2 }));
-    assert_eq!(g.try_alpha(a, 0), Err(SewError::NoSuchDart(a)));
-    assert_eq!(g.try_sew(a, b, 0), Err(SewError::NoSuchDart(a)));
+    assert_eq!(g.try_unsew(a, 0), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_remove_dart(a), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_unsew(b, 3), Err(EditError::BadIndex { alpha: 3, dim: 2 }));
+    assert_eq!(g.try_link(a, b, 1), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_unlink(b, 9), Err(EditError::BadIndex { alpha: 9, dim: 2 }));
+    assert_eq!(g.try_alpha(a, 0), Err(EditError::NoSuchDart(a)));
+    assert_eq!(g.try_sew(a, b, 0), Err(EditError::NoSuchDart(a)));
     assert!(g.is_free(b, 0));
     let msg = panic_message(|| g.clone().unsew(a, 0));
     assert!(msg.starts_with("dart ") && msg.contains("does not exist"), "{msg}");
@@ -114,7 +117,7 @@ fn gmap_stale_handle_does_not_mark_the_dart_reusing_its_slot() {
     // the slot is reused, with a new version
     assert_eq!(g.dart_index(old), g.dart_index(new));
     let m = g.reserve_mark();
-    assert_eq!(g.try_mark(m, old), Err(SewError::NoSuchDart(old)));
+    assert_eq!(g.try_mark(m, old), Err(EditError::NoSuchDart(old)));
     assert!(!g.is_marked(m, new));
     let msg = panic_message(|| {
         g.clone().mark(m, old);

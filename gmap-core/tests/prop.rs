@@ -45,7 +45,7 @@ fn naive_valid(m: &DenseMap) -> bool {
     for d in m.darts() {
         for i in 0..=m.dim() {
             let e = m.row(d)[i];
-            if e >= n || m.alpha(Dart(e), i) != d {
+            if e >= n || m.alpha(Dart::new(e), i) != d {
                 return false;
             }
         }
@@ -83,10 +83,10 @@ proptest! {
             prop_assert_eq!(p.of.len(), m.dart_count());
             let (off, darts) = p.members();
             for k in 0..p.len() {
-                let mut orbit: Vec<u32> = m.orbit(p.reps[k], set).iter().map(|d| d.0).collect();
+                let mut orbit: Vec<u32> = m.orbit(p.reps[k], set).iter().map(|d| d.get()).collect();
                 orbit.sort_unstable();
                 prop_assert_eq!(&orbit[..], &darts[off[k]..off[k + 1]]);
-                prop_assert_eq!(orbit[0], p.reps[k].0);
+                prop_assert_eq!(orbit[0], p.reps[k].get());
             }
             prop_assert_eq!(off[p.len()], m.dart_count());
         }
@@ -128,7 +128,7 @@ proptest! {
     fn fast_validation_agrees_with_the_definition(m in map_strategy(1..=4), a in 0usize..1000, b in 0usize..1000, i in 0usize..5) {
         let mut m = m;
         if m.dart_count() > 0 {
-            let (d, e) = (Dart((a % m.dart_count()) as u32), Dart((b % m.dart_count()) as u32));
+            let (d, e) = (Dart::new((a % m.dart_count()) as u32), Dart::new((b % m.dart_count()) as u32));
             m.link(d, e, i % (m.dim() + 1));
         }
         prop_assert_eq!(m.validate().is_ok(), naive_valid(&m));
@@ -144,7 +144,7 @@ proptest! {
     fn moka_round_trip(m in map_strategy(1..=3), pts in prop::collection::vec((any::<u16>(), -1e6f64..1e6, -1e6f64..1e6, -1e6f64..1e6), 0..6)) {
         let mut m = m;
         for (k, x, y, z) in pts {
-            let d = Dart((k as usize % m.dart_count()) as u32);
+            let d = Dart::new((k as usize % m.dart_count()) as u32);
             m.set_point(d, Some([x, y, z]));
         }
         let text = format_moka(&m).unwrap();

@@ -70,12 +70,13 @@ pub mod complex;
 pub mod engine;
 pub mod persistence;
 
-pub use cellular::{border, incidence, precond, simplicial};
+pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
 pub use complex::{arch, cubical, dot, ep, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
-pub use border::{cellular_complex, gmap_homology, CellularComplex, GMapHomologyError};
+pub use border::CellularComplex;
 pub use chain::{ChainComplex, ChainError};
+pub use checked::{cellular_complex, chain_map_tau, gmap_homology, GMapHomologyError};
 pub use homology::{
     homology_z, homology_z_bigint, homology_z_staged, homology_zp, is_prime, Coefficients, Homology, HomologyError,
     Natural, Stages,
@@ -85,7 +86,6 @@ pub use precond::{
     check_by_dimension, check_preconditions, check_self_bending, oriented_cells, OrientedCells, PreconditionError,
 };
 pub use simplicial::{
-    chain_map_tau, simplicial_complex, simplicial_complex_with_simplices, ChainMapTau, Simplex, SimplicialComplex,
-    TauError,
+    simplicial_complex, simplicial_complex_with_simplices, ChainMapTau, Simplex, SimplicialComplex, TauError,
 };
 pub use sparse::{SparseError, SparseMatrix};

@@ -36,7 +36,7 @@ fn property_4_the_two_paths_through_dart_2_cancel() {
     let m = examples::fig1_surface();
     let o: Vec<_> = (0..=2).map(|i| oriented_cells(&m, i).unwrap()).collect();
     let path = |paper: u32| o[2].sign(paper - 1) * o[1].sign(paper - 1) * o[1].sign(paper - 1) * o[0].sign(paper - 1);
-    assert_eq!(m.alpha(Dart(1), 1), Dart(2));
+    assert_eq!(m.alpha(Dart::new(1), 1), Dart::new(2));
     assert_eq!(path(2), -path(3));
     assert_eq!(path(2).abs(), 1);
     // and the whole border of the border vanishes
@@ -130,8 +130,8 @@ fn fig_5_numbering_of_the_counterpart() {
     // {0, 2}, the <alpha_1>-orbit {4, 5}
     let m = examples::fig1_surface();
     let s = gmap_homology::simplicial_complex_with_simplices(&m);
-    let edge02 = s.simplices[1].iter().find(|x| x.labels == 0b101 && x.dart == Dart(3)).unwrap();
-    assert_eq!(m.orbit(edge02.dart, AlphaSet::of(&[1])), vec![Dart(3), Dart(4)]);
+    let edge02 = s.simplices[1].iter().find(|x| x.labels == 0b101 && x.dart == Dart::new(3)).unwrap();
+    assert_eq!(m.orbit(edge02.dart, AlphaSet::of(&[1])), vec![Dart::new(3), Dart::new(4)]);
 }
 
 #[test]
@@ -143,14 +143,14 @@ fn a_wrong_sign_is_caught() {
     let mut t = chain_map_tau(&m).unwrap();
     let flipped: Vec<(u32, u32, i64)> = t.tau[1].iter().map(|(r, c, v)| (r as u32, c as u32, -v)).collect();
     t.tau[1] = SparseMatrix::try_from_entries(t.tau[1].rows(), t.tau[1].cols(), &flipped).unwrap();
-    assert_eq!(t.check_commutes(), Err(TauError::NotCommuting { dim: 1, dart: Dart(0) }));
+    assert_eq!(t.check_commutes(), Err(TauError::NotCommuting { dim: 1, dart: Dart::new(0) }));
 }
 
 #[test]
 fn tau_needs_the_cellular_method() {
     // a square with an edge sewn to itself reversed: C1 fails on that edge, so τ is refused
     let mut m = gmap_ops::build::polygon(4).unwrap();
-    m.link(Dart(0), Dart(1), 2);
+    m.link(Dart::new(0), Dart::new(1), 2);
     let e = chain_map_tau(&m).unwrap_err().to_string();
     assert!(e.starts_with("the 1-cell of dart 0"), "{e}");
 }

@@ -5,7 +5,9 @@
 
 use std::path::PathBuf;
 
-use gmap_homology::persistence::{cubical_persistence, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues};
+use gmap_homology::persistence::{
+    cubical_persistence, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues,
+};
 use gmap_ops::import::image::{Image, Order};
 use gmap_ops::import::raster::read_raster;
 use serde_json::Value;
@@ -93,7 +95,8 @@ fn random_arrays_equal_gudhi() {
     let cases: Value =
         serde_json::from_str(&std::fs::read_to_string(data("persistence/random.json")).unwrap()).unwrap();
     for (i, case) in cases.as_array().unwrap().iter().enumerate() {
-        let shape: Vec<usize> = case["shape"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as usize).collect();
+        let shape: Vec<usize> =
+            case["shape"].as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as usize).collect();
         let values: Vec<f64> = case["values"].as_array().unwrap().iter().map(num).collect();
         check_all(&format!("case {i} {shape:?}"), &shape, &values, &case["diagrams"]);
     }
@@ -115,12 +118,8 @@ fn lutz_random_filtrations_equal_gudhi() {
         let file = case["file"].as_str().unwrap();
         let f = facets(file);
         let fvals: Vec<f64> = case["facet_values"].as_array().unwrap().iter().map(num).collect();
-        let vvals: std::collections::HashMap<u64, f64> = case["vertex_values"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|p| (p[0].as_u64().unwrap(), num(&p[1])))
-            .collect();
+        let vvals: std::collections::HashMap<u64, f64> =
+            case["vertex_values"].as_array().unwrap().iter().map(|p| (p[0].as_u64().unwrap(), num(&p[1]))).collect();
         let per_facet = FilteredComplex::from_simplices(&f, SimplexValues::PerSimplex(&fvals)).unwrap();
         let lookup = |v: u64| vvals.get(&v).copied();
         let lower = FilteredComplex::from_simplices(&f, SimplexValues::LowerStar(&lookup)).unwrap();

@@ -24,7 +24,15 @@ impl Cells {
     fn new(shape: &[usize], values: &[f64], t: bool, periodic: bool, sign: f64) -> Self {
         let m: Vec<usize> = shape
             .iter()
-            .map(|&s| if periodic { 2 * s } else if t { 2 * s + 1 } else { 2 * s - 1 })
+            .map(|&s| {
+                if periodic {
+                    2 * s
+                } else if t {
+                    2 * s + 1
+                } else {
+                    2 * s - 1
+                }
+            })
             .collect();
         let pixel = |p: &[usize]| values[linear(shape, p)] * sign;
         let mut cells = Vec::new();
@@ -56,10 +64,8 @@ impl Cells {
                     }
                     o
                 };
-                around = around
-                    .into_iter()
-                    .flat_map(|p| opts.iter().map(move |&x| [p.clone(), vec![x]].concat()))
-                    .collect();
+                around =
+                    around.into_iter().flat_map(|p| opts.iter().map(move |&x| [p.clone(), vec![x]].concat())).collect();
             }
             let px = around.iter().map(|p| pixel(&p.iter().map(|&x| x / 2).collect::<Vec<_>>()));
             let v = if t { px.fold(f64::INFINITY, f64::min) } else { px.fold(f64::NEG_INFINITY, f64::max) };

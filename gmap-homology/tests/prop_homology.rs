@@ -16,8 +16,8 @@ fn polygons(sides: &[usize]) -> (DenseMap, Vec<(u32, u32)>) {
     for &s in sides {
         let s = s as u32;
         for e in 0..s {
-            m.link(Dart(base + 2 * e), Dart(base + 2 * e + 1), 0);
-            m.link(Dart(base + 2 * e + 1), Dart(base + (2 * e + 2) % (2 * s)), 1);
+            m.link(Dart::new(base + 2 * e), Dart::new(base + 2 * e + 1), 0);
+            m.link(Dart::new(base + 2 * e + 1), Dart::new(base + (2 * e + 2) % (2 * s)), 1);
             edges.push((base + 2 * e, base + 2 * e + 1));
         }
         base += 2 * s;
@@ -35,8 +35,8 @@ fn glue(m: &mut DenseMap, edges: &[(u32, u32)], perm: &[usize], flips: &[bool], 
         let (a0, a1) = edges[perm[2 * k]];
         let (b0, b1) = edges[perm[2 * k + 1]];
         let (b0, b1) = if flips[k % flips.len()] { (b1, b0) } else { (b0, b1) };
-        m.link(Dart(a0), Dart(b0), 2);
-        m.link(Dart(a1), Dart(b1), 2);
+        m.link(Dart::new(a0), Dart::new(b0), 2);
+        m.link(Dart::new(a1), Dart::new(b1), 2);
     }
 }
 
@@ -77,7 +77,7 @@ proptest! {
     #[test]
     fn violations_are_refused(m in surface(), which in any::<bool>(), pick in any::<prop::sample::Index>()) {
         let mut m = m;
-        let d = Dart(pick.index(m.dart_count()) as u32);
+        let d = Dart::new(pick.index(m.dart_count()) as u32);
         if which {
             // fold the edge of d onto itself
             let e = m.alpha(d, 0);

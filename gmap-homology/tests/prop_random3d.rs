@@ -131,13 +131,13 @@ fn shuffled(m: &DenseMap, rng: &mut SplitMix64) -> (DenseMap, Vec<u32>) {
 /// (pairs `(x, image)`), if the two orbits are isomorphic that way.
 fn orbit_iso(m: &DenseMap, d0: Dart, e0: Dart, set: &[usize]) -> Option<Vec<(u32, u32)>> {
     let mut img: HashMap<u32, u32> = HashMap::new();
-    img.insert(d0.0, e0.0);
-    let mut stack = vec![d0.0];
+    img.insert(d0.get(), e0.get());
+    let mut stack = vec![d0.get()];
     while let Some(x) = stack.pop() {
         let fx = img[&x];
         for &k in set {
-            let y = m.alpha(Dart(x), k).0;
-            let z = m.alpha(Dart(fx), k).0;
+            let y = m.alpha(Dart::new(x), k).get();
+            let z = m.alpha(Dart::new(fx), k).get();
             match img.get(&y) {
                 Some(&w) if w != z => return None,
                 Some(_) => {}
@@ -170,7 +170,7 @@ fn own_c1(m: &DenseMap, i: usize, dart: u32) -> Result<(), &'static str> {
     while let Some(x) = queue.pop_front() {
         let c = colour[&x];
         for k in (0..=n).filter(|&k| k != i) {
-            let y = m.alpha(Dart(x), k).0;
+            let y = m.alpha(Dart::new(x), k).get();
             if k < i && y == x {
                 return Err("free");
             }
@@ -192,7 +192,7 @@ fn own_c1(m: &DenseMap, i: usize, dart: u32) -> Result<(), &'static str> {
 /// `<alpha_{i+1}..alpha_n>`-orbits inside the cell, `alpha_k` (k < i) acting on them.
 fn own_compacted(m: &DenseMap, i: usize, dart: u32) -> DenseMap {
     let n = m.dim();
-    let cell = m.orbit(Dart(dart), AlphaSet::cell(i, n));
+    let cell = m.orbit(Dart::new(dart), AlphaSet::cell(i, n));
     let b = m.partition(AlphaSet::above(i, n));
     let mut local: HashMap<u32, u32> = HashMap::new();
     let mut reps = Vec::new();
@@ -228,20 +228,20 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
             prop_assert!(alpha < dim, "{e}");
             let cell = m.orbit(*dart, AlphaSet::cell(*dim, m.dim()));
             prop_assert!(cell.iter().any(|&x| m.is_free(x, *alpha)), "no {alpha}-free dart in the cell named: {e}");
-            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("free"));
-            Ok((*dim, dart.0))
+            prop_assert_eq!(own_c1(m, *dim, dart.get()), Err("free"));
+            Ok((*dim, dart.get()))
         }
         PreconditionError::C1(CellDefect::NotOrientable { dim, dart, .. }) => {
-            prop_assert_eq!(own_c1(m, *dim, dart.0), Err("conflict"), "{}", e);
-            Ok((*dim, dart.0))
+            prop_assert_eq!(own_c1(m, *dim, dart.get()), Err("conflict"), "{}", e);
+            Ok((*dim, dart.get()))
         }
         PreconditionError::C2 { dim, dart, .. } => {
             prop_assert!(*dim >= 3, "{e}");
-            prop_assert_eq!(own_c1(m, *dim, dart.0), Ok(()), "C2 is checked after C1: {}", e);
-            let b = own_compacted(m, *dim, dart.0);
+            prop_assert_eq!(own_c1(m, *dim, dart.get()), Ok(()), "C2 is checked after C1: {}", e);
+            let b = own_compacted(m, *dim, dart.get());
             let h = homology_z(&simplicial_complex(&b)).map_err(fail)?;
             prop_assert_ne!(h.to_string(), sphere_string(dim - 1), "the cell named is bounded by a sphere: {}", e);
-            Ok((*dim, dart.0))
+            Ok((*dim, dart.get()))
         }
         PreconditionError::SelfBending(BoundaryDefect::SelfBending { dart, i, other, cell }) => {
             // BO Def. 6, walked here: both orbits of `dart` hold `other`, and the cell named
@@ -253,10 +253,11 @@ fn check_refusal(m: &DenseMap, e: &PreconditionError) -> Result<(usize, u32), Te
             prop_assert!(up.contains(other) && down.contains(other), "{}", e);
             let c = m.orbit(*cell, AlphaSet::cell(*i, n));
             prop_assert!(c.contains(dart) && c.iter().min() == Some(cell), "{}", e);
-            prop_assert_eq!(own_c1(m, *i, cell.0), Ok(()), "self-bending is checked after C1: {}", e);
-            Ok((*i, cell.0))
+            prop_assert_eq!(own_c1(m, *i, cell.get()), Ok(()), "self-bending is checked after C1: {}", e);
+            Ok((*i, cell.get()))
         }
         PreconditionError::SelfBending(other) => Err(fail(format!("not a self-bending: {other}"))),
+        other => Err(fail(format!("a refusal this test does not know: {other}"))),
     }
 }
 
@@ -443,11 +444,11 @@ fn glued(n: usize, cubes: &[bool], free_one_in: usize, seed: u64) -> DenseMap {
             continue;
         };
         let e0 = darts_of[g][rng.below(darts_of[g].len())];
-        let Some(pairs) = orbit_iso(&m, Dart(darts_of[f][0]), Dart(e0), &facet_alphas) else {
+        let Some(pairs) = orbit_iso(&m, Dart::new(darts_of[f][0]), Dart::new(e0), &facet_alphas) else {
             continue; // a square onto a triangle's flags cannot happen (same size), but stay safe
         };
         for (x, y) in pairs {
-            m.link(Dart(x), Dart(y), n);
+            m.link(Dart::new(x), Dart::new(y), n);
         }
         used[f] = true;
         used[g] = true;
@@ -668,7 +669,7 @@ fn volume_bounded_by_a_torus_glued_to_a_voxel_set_is_refused() {
         let off = good.dart_count() as u32;
         let free: Vec<Dart> = good.darts().filter(|&d| good.is_free(d, 3)).collect();
         let q = free[rng.below(free.len())];
-        let f = Dart(off + rng.below(cone.dart_count()) as u32);
+        let f = Dart::new(off + rng.below(cone.dart_count()) as u32);
         let q_face = m.orbit(q, AlphaSet::of(&[0, 1]));
         let f_face = m.orbit(f, AlphaSet::of(&[0, 1]));
         prop_assert_eq!((q_face.len(), f_face.len()), (8, 8));
@@ -677,10 +678,10 @@ fn volume_bounded_by_a_torus_glued_to_a_voxel_set_is_refused() {
         let pairs = orbit_iso(&m, q, e0, &[0, 1]).expect("two squares");
         let mut m = m;
         for (x, y) in pairs {
-            m.link(Dart(x), Dart(y), 3);
+            m.link(Dart::new(x), Dart::new(y), 3);
         }
         let embedded = facet_embedded(&good, &q_face)
-            && facet_embedded(&cone, &cone.orbit(Dart(f.0 - off), AlphaSet::of(&[0, 1])));
+            && facet_embedded(&cone, &cone.orbit(Dart::new(f.get() - off), AlphaSet::of(&[0, 1])));
         let (m, perm) = shuffled(&m, &mut rng);
         let cone_min = (off..off + cone.dart_count() as u32).map(|d| perm[d as usize]).min().unwrap();
         match judge(&m)? {
@@ -851,17 +852,17 @@ fn facet_embedded(m: &DenseMap, facet: &[Dart]) -> bool {
 /// The flag parity of each dart of the `set`-orbit of `d` (`alpha_k` flips it), as a map;
 /// `None` if the orbit is not 2-colourable.
 fn flag_parity(m: &DenseMap, d: Dart, set: AlphaSet) -> Option<HashMap<u32, bool>> {
-    let mut parity = HashMap::from([(d.0, false)]);
+    let mut parity = HashMap::from([(d.get(), false)]);
     let mut stack = vec![d];
     while let Some(x) = stack.pop() {
-        let c = parity[&x.0];
+        let c = parity[&x.get()];
         for k in set.iter() {
             let y = m.alpha(x, k);
-            match parity.get(&y.0) {
+            match parity.get(&y.get()) {
                 Some(&got) if got == c => return None,
                 Some(_) => {}
                 None => {
-                    parity.insert(y.0, !c);
+                    parity.insert(y.get(), !c);
                     stack.push(y);
                 }
             }
@@ -897,16 +898,16 @@ fn boundary_facets_folded_onto_themselves() {
         let alphas: Vec<usize> = facet_set.iter().collect();
         let phi: HashMap<u32, u32> = candidates
             .iter()
-            .filter(|e| parity[&e.0] == odd)
+            .filter(|e| parity[&e.get()] == odd)
             .filter_map(|&e| orbit_iso(&good, d, e, &alphas))
             .map(|pairs| pairs.into_iter().collect::<HashMap<u32, u32>>())
             .find(|phi| phi.iter().all(|(&x, &y)| x != y && phi[&y] == x))
             .expect("a square and a cube have fixed-point-free involutions of both parities");
         let mut m = good.clone();
         for (&x, &y) in &phi {
-            m.link(Dart(x), Dart(y), n);
+            m.link(Dart::new(x), Dart::new(y), n);
         }
-        let facet_darts: Vec<u32> = facet.iter().map(|x| x.0).collect();
+        let facet_darts: Vec<u32> = facet.iter().map(|x| x.get()).collect();
         let kind = if odd { "odd" } else { "even" };
         match judge(&m)? {
             Verdict::Accepted(_) => return Err(fail(format!("a facet folded by an {kind} symmetry was accepted"))),
@@ -919,9 +920,9 @@ fn boundary_facets_folded_onto_themselves() {
                     _ => return Err(fail(format!("a facet folded by an {kind} symmetry: {error}"))),
                 }
                 prop_assert!(dim < n, "{}", error);
-                let cell = m.orbit(Dart(dart), AlphaSet::cell(dim, n));
+                let cell = m.orbit(Dart::new(dart), AlphaSet::cell(dim, n));
                 prop_assert!(
-                    cell.iter().any(|x| facet_darts.contains(&x.0)),
+                    cell.iter().any(|x| facet_darts.contains(&x.get())),
                     "the cell named misses the fold: {}",
                     error
                 );
@@ -956,7 +957,7 @@ fn cells_opened_inside_are_refused() {
         let cubes: usize = sizes.iter().product();
         let keep: Vec<bool> = (0..cubes).map(|c| c == 0 || rng.below(4) != 0).collect();
         let good = voxels(&sizes, &periodic, &keep);
-        let d = Dart((pick % good.dart_count() as u64) as u32);
+        let d = Dart::new((pick % good.dart_count() as u64) as u32);
         let k = rng.below(n);
         let far: Vec<usize> = (0..=n).filter(|&j| j + 2 <= k || j >= k + 2).collect();
         let opened = good.orbit(d, AlphaSet::of(&far));
@@ -965,7 +966,7 @@ fn cells_opened_inside_are_refused() {
         for &x in &opened {
             let y = m.alpha(x, k);
             if y != x {
-                freed.extend([x.0, y.0]);
+                freed.extend([x.get(), y.get()]);
                 m.unlink(x, k);
             }
         }
@@ -978,8 +979,8 @@ fn cells_opened_inside_are_refused() {
                     other => return Err(fail(format!("expected an incomplete boundary, got {other}"))),
                 }
                 prop_assert_eq!(dim, k + 1, "{}", error);
-                let cell = m.orbit(Dart(dart), AlphaSet::cell(dim, n));
-                prop_assert!(cell.iter().any(|x| freed.contains(&x.0)), "the cell named misses the cut: {}", error);
+                let cell = m.orbit(Dart::new(dart), AlphaSet::cell(dim, n));
+                prop_assert!(cell.iter().any(|x| freed.contains(&x.get())), "the cell named misses the cut: {}", error);
                 tally.add(if n == 3 { "refused 3D" } else { "refused 4D" });
             }
         }

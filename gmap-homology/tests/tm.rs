@@ -102,8 +102,8 @@ fn poincare_duality_transposes_the_incidence_graph() {
 fn square() -> TmModel {
     let mut m = gmap_core::DenseMap::new(2, 8);
     for k in 0..4u32 {
-        m.link(gmap_core::Dart(2 * k), gmap_core::Dart(2 * k + 1), 0);
-        m.link(gmap_core::Dart(2 * k + 1), gmap_core::Dart((2 * k + 2) % 8), 1);
+        m.link(gmap_core::Dart::new(2 * k), gmap_core::Dart::new(2 * k + 1), 0);
+        m.link(gmap_core::Dart::new(2 * k + 1), gmap_core::Dart::new((2 * k + 2) % 8), 1);
     }
     TmModel::from_map(&m).unwrap()
 }

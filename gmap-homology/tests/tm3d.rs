@@ -42,6 +42,7 @@ impl Fixture {
                 let (at, p, m) = match *d {
                     TmDefect::BoundaryNotCircuit { at, plus, minus, .. }
                     | TmDefect::CoboundaryNotCocircuit { at, plus, minus, .. } => (at, plus, minus),
+                    ref other => panic!("a defect this test does not know: {other:?}"),
                 };
                 (d.condition(), self.name(d.cell()).to_string(), self.name(at).to_string(), p, m)
             })

@@ -54,7 +54,7 @@ pub fn grid_with_points(sizes: &[usize], periodic: &[bool]) -> Result<DenseMap, 
             cube /= sizes[a];
             p[a] = if periodic[a] { c % sizes[a] } else { c } as f64;
         }
-        m.set_point(Dart(k as u32), Some(p));
+        m.set_point(Dart::new(k as u32), Some(p));
     }
     Ok(m)
 }
@@ -64,7 +64,7 @@ pub fn grid_with_points(sizes: &[usize], periodic: &[bool]) -> Result<DenseMap, 
 pub fn cube_with_points(n: usize) -> Result<DenseMap, BuildError> {
     if n == 0 {
         let mut m = build::cube(0)?;
-        m.set_point(Dart(0), Some([0.0; 3]));
+        m.set_point(Dart::new(0), Some([0.0; 3]));
         return Ok(m);
     }
     grid_with_points(&vec![1; n], &vec![false; n])
@@ -85,7 +85,7 @@ pub fn simplex_with_points(n: usize) -> Result<DenseMap, BuildError> {
         if v > 0 {
             p[v - 1] = 1.0;
         }
-        m.set_point(Dart(k as u32), Some(p));
+        m.set_point(Dart::new(k as u32), Some(p));
     }
     Ok(m)
 }

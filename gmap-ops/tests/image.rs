@@ -37,7 +37,8 @@ fn numpy_files_in_every_dtype_and_order_equal_the_cub() {
     for name in &names {
         let img = Image::read(&data(name)).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(img.shape(), &[4, 3, 2], "{name}");
-        let expect_order = if name.ends_with("_f.npy") || name.ends_with(".complex") { Order::Fortran } else { Order::C };
+        let expect_order =
+            if name.ends_with("_f.npy") || name.ends_with(".complex") { Order::Fortran } else { Order::C };
         assert_eq!(img.order(), expect_order, "{name}");
         assert_eq!(img.is_big_endian(), name.contains("_be"), "{name}");
         for i in 0..4 {

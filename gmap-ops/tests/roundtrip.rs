@@ -109,7 +109,7 @@ fn off_roundtrip_is_isomorphic() {
     let pentagon = build::polygon(5).unwrap();
     let back = PolygonMesh::parse(&off_string(&pentagon).unwrap()).unwrap().to_gmap().unwrap();
     assert!(iso::are_isomorphic(&pentagon, &back));
-    assert_eq!(back.vertex_point(gmap_core::Dart(0)), Some([1.0, 0.0, 0.0]));
+    assert_eq!(back.vertex_point(gmap_core::Dart::new(0)), Some([1.0, 0.0, 0.0]));
 }
 
 #[test]

@@ -1,24 +1,89 @@
 //! # gmap: generalized maps, their construction and their homology
 //!
-//! The library side of the project: it pulls in the three crates below and nothing of the
-//! command line (the `gmap` binary lives in the `gmap-cli` package).
+//! The front door of the workspace: open any input, run any route, save in any format. The
+//! `gmap` command and the Python package are thin layers over these calls; a Rust program
+//! gets exactly what they print.
 //!
-//! This facade re-exports the three crates of the workspace:
+//! ```
+//! // examples/open_any.rs: one file of each kind, its characteristics, route and groups
+//! fn main() -> Result<(), gmap::Error> {
+//!     let files = ["labelled_segment.gmap", "lutz/poincare.facets", "cubical/ring.cub", "arch/tetrahedron.json"];
+//!     for file in files {
+//!         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/data").join(file);
+//!         let input = gmap::open(&path)?;
+//!         let info = gmap::info(&input, &gmap::InfoOptions::default())?;
+//!         let report = gmap::homology(&input, &gmap::HomologyOptions::default())?;
+//!         println!("{file}: {} {}, route {}, {}", input.kind(), info.to_json(), report.route_name(), report.groups);
+//!     }
+//!     Ok(())
+//! }
+//! ```
+//!
+//! The groups as data, and the route the command line would take:
+//!
+//! ```
+//! let input = gmap::open(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/lutz/poincare.facets"))?;
+//! let report = gmap::homology(&input, &gmap::HomologyOptions::default())?;
+//! assert_eq!(report.groups.betti, vec![1, 0, 0, 1]);
+//! assert_eq!(report.route, Some(gmap::Via::Direct));
+//! # Ok::<(), gmap::Error>(())
+//! ```
+//!
+//! ## How an input flows
+//!
+//! ```text
+//! file ──open──▶ Input ──route──▶ chain complex ──reduce──▶ groups (Report)
+//!                  │                  ▲
+//!                  ├─ Map ────────────┤ cellular: cells, C1/C2, border operator (gmap_homology::cellular)
+//!                  │                  │ simplicial: one simplex per dart (gmap_homology::simplicial)
+//!                  ├─ Simplicial ─────┤ direct: every face a cell (gmap_homology::simplices)
+//!                  │    └─ G-map ─────┘ gmap: the map of the facets (gmap_ops::import), then a map route
+//!                  ├─ Cubical ────────▶ cubical complex of the closure (gmap_homology::cubical)
+//!                  └─ Arch ───────────▶ completed boundary matrix (gmap_homology::arch)
+//! ```
+//!
+//! * [`open`] ([`input`]) picks the reader by extension and applies the memory policy;
+//! * [`homology`] ([`report`], [`route`]) chooses the route as the command line does, builds
+//!   the chain complex, reduces it (fill-free pass, elimination, Smith form) and names the
+//!   generators in the input's own terms;
+//! * [`routes`] ([`bench`]) runs and times every route of an input;
+//! * [`info()`] ([`mod@info`]) gives the characteristics; [`save`] ([`mod@save`]) writes any format;
+//! * [`simplify_if_safe`] reduces a map by removals and contractions where that keeps the
+//!   groups.
+//!
+//! Errors are one type, [`Error`], with a kind ([`ErrorKind`]: parse, limit, precondition,
+//! usage, …) and the message the command line prints.
+//!
+//! The three crates below are re-exported for everything else:
 //!
 //! * [`core`] (`gmap-core`): the kernel — darts, involutions, orbits, cells, marks,
 //!   validity, orientation, compacted cells, face operators, the dual, file formats;
 //! * [`ops`] (`gmap-ops`): making and changing maps — builders, importers, sewing,
-//!   Euler operators;
-//! * [`homology`] (`gmap-homology`): incidence numbers, the cellular border operator,
-//!   homology over Z and Z/p, architectural complexes, LAR operators.
-//!
-//! ```
-//! use gmap::core::{DenseMap, Dart};
-//! let mut m = DenseMap::new(1, 2);
-//! m.link(Dart(0), Dart(1), 0); // one edge with two free ends
-//! assert_eq!(m.cell_counts(), vec![2, 1]);
-//! ```
+//!   Euler operators, exporters;
+//! * [`homology`](mod@homology) (`gmap-homology`): incidence numbers, the cellular border
+//!   operator, homology over Z and Z/p, architectural complexes, LAR operators.
 
 pub use gmap_core as core;
 pub use gmap_homology as homology;
 pub use gmap_ops as ops;
+
+pub mod bench;
+pub mod demo;
+mod error;
+pub mod info;
+pub mod input;
+pub mod persistence;
+pub mod progress;
+pub mod report;
+pub mod route;
+pub mod save;
+
+pub use bench::{routes, RouteRun, Times};
+pub use error::{Error, ErrorKind, Result};
+pub use info::{info, Info, InfoOptions};
+pub use input::{open, open_with, Input, MapInput, OpenOptions, Sourced};
+pub use persistence::{persistence, persistence_file, Persistence, PersistenceOptions};
+pub use progress::Progress;
+pub use report::{homology, homology_file, CellName, NamedGenerator, Report};
+pub use route::{simplify_if_safe, HomologyOptions, Method, Via};
+pub use save::{save, save_file, SaveOptions};

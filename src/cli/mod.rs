@@ -1,35 +1,17 @@
-//! Command-line parsing and dispatch. Exit codes: 0 success, 1 bad input (one line
-//! `error: …` on stderr), 2 bad usage (clap's own exit code).
+//! Command-line parsing and printing over the facade (`gmap::open`, `gmap::homology`,
+//! `gmap::info`, `gmap::save_file`, `gmap::bench`). Nothing here chooses a route or decides
+//! anything about the input: each subcommand is an argument struct, one call, and printing.
+//!
+//! Exit codes: 0 success, 1 bad input (one line `error: …` on stderr), 2 bad usage (clap's
+//! own exit code).
 
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 
-/// `println!` that hands a write error back (`?`) instead of panicking: output piped into a
-/// reader that stops early (`gmap … | head`) ends the command quietly.
-macro_rules! outln {
-    ($($t:tt)*) => {{
-        use std::io::Write as _;
-        writeln!(std::io::stdout().lock(), $($t)*)
-    }};
-}
-
-/// `print!` counterpart of [`outln!`].
-macro_rules! out {
-    ($($t:tt)*) => {{
-        use std::io::Write as _;
-        write!(std::io::stdout().lock(), $($t)*)
-    }};
-}
-
-mod bench;
-mod convert;
-mod cubical;
-mod demo;
-mod homology;
-mod info;
-pub mod load;
+mod persistence;
 
 /// Generalized maps: build, inspect, convert, and compute homology on the cells.
 #[derive(Parser, Debug)]
@@ -42,15 +24,18 @@ pub struct Cli {
     /// most three quarters of the address-space limit (ulimit -v)
     #[arg(long, global = true, value_parser = parse_max_memory)]
     max_memory: Option<u64>,
+    /// show no progress on stderr (it is shown only when stderr is a terminal)
+    #[arg(long, short, global = true)]
+    quiet: bool,
 }
 
 fn parse_max_memory(text: &str) -> Result<u64, String> {
-    gmap_core::resources::parse_size(text).map_err(|e| e.to_string())
+    gmap::core::resources::parse_size(text).map_err(|e| e.to_string())
 }
 
 /// Which chain complex `gmap homology` reduces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Method {
+enum Method {
     /// the cellular border operator (BO Def. 10), on the cells themselves
     Cellular,
     /// the simplicial counterpart (BO §6): one n-simplex per dart
@@ -59,11 +44,90 @@ pub enum Method {
 
 /// How `gmap homology` takes a simplicial complex (`.facets`, `.lex`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Via {
+enum Via {
     /// every face of every facet is a cell (any simplicial complex)
     Direct,
     /// through the G-map of the facets (pure pseudo-manifolds)
     Gmap,
+}
+
+/// The options every command that reads a file shares.
+#[derive(Args, Debug)]
+struct Limits {
+    /// refuse inputs whose G-map would have more darts than this (direct route: more faces)
+    #[arg(long)]
+    max_darts: Option<u64>,
+}
+
+#[derive(Args, Debug)]
+struct InfoArgs {
+    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm)
+    file: PathBuf,
+    /// print one JSON object
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    limits: Limits,
+    /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
+    #[arg(long)]
+    periodic: bool,
+}
+
+#[derive(Args, Debug)]
+struct HomologyArgs {
+    /// the input file
+    file: PathBuf,
+    /// cellular (default) or simplicial
+    #[arg(long, value_enum, default_value_t = Method::Cellular)]
+    method: Method,
+    /// a prime P: compute over Z/P
+    #[arg(long)]
+    field: Option<u64>,
+    /// print one JSON object
+    #[arg(long)]
+    json: bool,
+    /// print a representative cycle for each summand
+    #[arg(long)]
+    generators: bool,
+    /// reduce the map by homology-preserving removals and contractions first
+    #[arg(long)]
+    simplify: bool,
+    /// for an architectural complex: apply Algorithm 8.16 first (topological Betti numbers)
+    #[arg(long)]
+    topological: bool,
+    #[command(flatten)]
+    limits: Limits,
+    /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
+    #[arg(long, value_enum)]
+    via: Option<Via>,
+    /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
+    #[arg(long)]
+    periodic: bool,
+}
+
+#[derive(Args, Debug)]
+struct BenchArgs {
+    /// input files, or folders (every supported file in them, sorted)
+    #[arg(required = true)]
+    inputs: Vec<PathBuf>,
+    /// print one JSON object
+    #[arg(long, conflicts_with = "csv")]
+    json: bool,
+    /// print CSV: a header line, then one line per row
+    #[arg(long)]
+    csv: bool,
+    #[command(flatten)]
+    limits: Limits,
+}
+
+#[derive(Args, Debug)]
+struct ConvertArgs {
+    /// input file
+    input: PathBuf,
+    /// output file
+    output: PathBuf,
+    #[command(flatten)]
+    limits: Limits,
 }
 
 #[derive(Subcommand, Debug)]
@@ -71,151 +135,95 @@ enum Command {
     /// Build the classic objects and print one table row each.
     Demo,
     /// Read a file, validate it and print its characteristics.
-    Info {
-        /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json)
-        file: PathBuf,
-        /// print one JSON object
-        #[arg(long)]
-        json: bool,
-        /// refuse inputs whose G-map would have more darts than this
-        #[arg(long)]
-        max_darts: Option<u64>,
-        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box
-        #[arg(long)]
-        periodic: bool,
-    },
+    Info(InfoArgs),
     /// Homology over Z, or over Z/P with --field P.
-    Homology {
-        /// the input file
-        file: PathBuf,
-        /// cellular (default) or simplicial
-        #[arg(long, value_enum, default_value_t = Method::Cellular)]
-        method: Method,
-        /// a prime P: compute over Z/P
-        #[arg(long)]
-        field: Option<u64>,
-        /// print one JSON object
-        #[arg(long)]
-        json: bool,
-        /// print a representative cycle for each summand
-        #[arg(long)]
-        generators: bool,
-        /// reduce the map by homology-preserving removals and contractions first
-        #[arg(long)]
-        simplify: bool,
-        /// for an architectural complex: apply Algorithm 8.16 first (topological Betti numbers)
-        #[arg(long)]
-        topological: bool,
-        /// refuse inputs whose G-map would have more darts than this (direct route: more faces)
-        #[arg(long)]
-        max_darts: Option<u64>,
-        /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
-        #[arg(long, value_enum)]
-        via: Option<Via>,
-        /// for a cubical set (.cub, .pbm): identify the opposite faces of its box (a torus)
-        #[arg(long)]
-        periodic: bool,
-    },
+    Homology(HomologyArgs),
     /// Homology benchmark: one row per input and route, with stage times and the groups.
-    Bench {
-        /// input files, or folders (every supported file in them, sorted)
-        #[arg(required = true)]
-        inputs: Vec<PathBuf>,
-        /// print one JSON object
-        #[arg(long, conflicts_with = "csv")]
-        json: bool,
-        /// print CSV: a header line, then one line per row
-        #[arg(long)]
-        csv: bool,
-        /// leave out the GUDHI column (otherwise filled for .facets inputs when python3 has gudhi)
-        #[arg(long)]
-        no_gudhi: bool,
-        /// refuse inputs whose G-map would have more darts than this
-        #[arg(long)]
-        max_darts: Option<u64>,
-    },
+    Bench(BenchArgs),
     /// Convert between formats, chosen by file extension.
-    Convert {
-        /// input file
-        input: PathBuf,
-        /// output file
-        output: PathBuf,
-        /// refuse inputs whose G-map would have more darts than this
-        #[arg(long)]
-        max_darts: Option<u64>,
-    },
-}
-
-/// The one-line message of an error: its chain of causes joined by `: `, leaving out a cause
-/// whose text the message already ends with (an error that quotes its source), with newlines
-/// made spaces.
-fn error_message(e: &anyhow::Error) -> String {
-    let mut msg = String::new();
-    for cause in e.chain() {
-        let text = cause.to_string();
-        if msg.ends_with(&text) {
-            continue;
-        }
-        if !msg.is_empty() {
-            msg.push_str(": ");
-        }
-        msg.push_str(&text);
-    }
-    msg.replace('\n', " ")
+    Convert(ConvertArgs),
+    /// Persistence diagram of a filtration: an image, valued facets, a labelled .gmap.
+    Persistence(persistence::PersistenceArgs),
 }
 
 /// Runs the command line; returns the process exit code.
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
     if let Some(bytes) = cli.max_memory {
-        gmap_core::resources::set_max_memory(bytes);
+        gmap::core::resources::set_max_memory(bytes);
     }
-    let result = match cli.command {
-        Command::Demo => demo::run(),
-        Command::Info { file, json, max_darts, periodic } => info::run(&file, json, max_darts, periodic),
-        Command::Homology {
-            file,
-            method,
-            field,
-            json,
-            generators,
-            simplify,
-            topological,
-            max_darts,
-            via,
-            periodic,
-        } => homology::run(&homology::Options {
-            file,
-            method,
-            field,
-            json,
-            generators,
-            simplify,
-            topological,
-            max_darts,
-            via,
-            periodic,
-        }),
-        Command::Bench { inputs, json, csv, no_gudhi, max_darts } => {
-            let format = match (json, csv) {
-                (true, _) => bench::Format::Json,
-                (_, true) => bench::Format::Csv,
-                _ => bench::Format::Markdown,
-            };
-            bench::run(&bench::Options { inputs, format, max_darts, gudhi: !no_gudhi })
+    let quiet = cli.quiet;
+    let text = match cli.command {
+        Command::Demo => Ok(gmap::demo::demo_table()),
+        Command::Info(a) => info(a, quiet),
+        Command::Homology(a) => homology(a, quiet),
+        Command::Bench(a) => bench(a, quiet),
+        Command::Persistence(a) => persistence::persistence(a),
+        Command::Convert(a) => {
+            let progress = gmap::Progress::stderr("gmap convert", quiet);
+            progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
+            let done = gmap::save_file(&a.input, &a.output, &gmap::SaveOptions::max_darts(a.limits.max_darts));
+            progress.finish();
+            done.map(|()| String::new())
         }
-        Command::Convert { input, output, max_darts } => convert::run(&input, &output, max_darts),
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        // the reader of our output went away: nothing left to say to anyone
-        Err(e) if e.downcast_ref::<std::io::Error>().is_some_and(|x| x.kind() == std::io::ErrorKind::BrokenPipe) => {
-            ExitCode::SUCCESS
-        }
+    match text {
+        // a reader of our output that went away (`gmap … | head`) ends the command quietly
+        Ok(text) => match std::io::stdout().lock().write_all(text.as_bytes()) {
+            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                eprintln!("error: {e}");
+                ExitCode::from(1)
+            }
+            _ => ExitCode::SUCCESS,
+        },
         Err(e) => {
-            let msg = error_message(&e);
-            eprintln!("error: {msg}");
+            eprintln!("error: {}", e.to_string().replace('\n', " "));
             ExitCode::from(1)
         }
     }
+}
+
+fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
+    let progress = gmap::Progress::stderr("gmap info", quiet);
+    progress.stage("reading");
+    let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts))?;
+    let mut o = gmap::InfoOptions::default();
+    (o.max_darts, o.periodic, o.progress) = (a.limits.max_darts, a.periodic, progress.clone());
+    let info = gmap::info(&input, &o);
+    progress.finish();
+    let info = info?;
+    Ok(if a.json { format!("{}\n", info.to_json()) } else { info.to_text(&a.file.display().to_string()) })
+}
+
+fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
+    let mut o = gmap::HomologyOptions::default();
+    o.method = match a.method {
+        Method::Cellular => gmap::Method::Cellular,
+        Method::Simplicial => gmap::Method::Simplicial,
+    };
+    o.via = a.via.map(|v| match v {
+        Via::Direct => gmap::Via::Direct,
+        Via::Gmap => gmap::Via::Gmap,
+    });
+    (o.field, o.generators, o.simplify, o.topological) = (a.field, a.generators, a.simplify, a.topological);
+    (o.max_darts, o.periodic) = (a.limits.max_darts, a.periodic);
+    o.progress = gmap::Progress::stderr("gmap homology", quiet);
+    let report = gmap::homology_file(&a.file, &o);
+    o.progress.finish();
+    let report = report?;
+    Ok(if a.json { format!("{}\n", report.to_json()) } else { report.to_text() })
+}
+
+fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {
+    let progress = gmap::Progress::stderr("gmap bench", quiet);
+    let runs = gmap::bench::bench(&a.inputs, a.limits.max_darts, &progress);
+    progress.finish();
+    let runs = runs?;
+    Ok(if a.json {
+        format!("{}\n", gmap::bench::to_json(&runs))
+    } else if a.csv {
+        gmap::bench::to_csv(&runs)
+    } else {
+        gmap::bench::to_markdown(&runs)
+    })
 }

@@ -29,11 +29,12 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use super::{
+use super::common::{
     bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
     write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
-use crate::dense::{Dart, DenseMap, Point};
+use crate::dense::DenseMap;
+use crate::ids::{Dart, Point};
 
 /// The first line of a Moka ascii file.
 pub const MOKA_HEADER: &str = "Moka file [ascii]";
@@ -208,7 +209,7 @@ pub fn parse_moka_with(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<D
         })?;
     }
     for (k, p) in points {
-        map.set_point(Dart(k), Some(p));
+        map.set_point(Dart::new(k), Some(p));
     }
     Ok(map)
 }
@@ -219,8 +220,8 @@ fn lower_dimension(map: &DenseMap, n: usize) -> Result<DenseMap, (u32, usize)> {
     let mut alpha = Vec::with_capacity(map.dart_count() * (n + 1));
     for d in map.darts() {
         let row = map.row(d);
-        if let Some(k) = (n + 1..row.len()).find(|&k| row[k] != d.0) {
-            return Err((d.0, k));
+        if let Some(k) = (n + 1..row.len()).find(|&k| row[k] != d.get()) {
+            return Err((d.get(), k));
         }
         alpha.extend_from_slice(&row[..=n]);
     }
@@ -250,7 +251,7 @@ pub fn format_moka(map: &DenseMap) -> Option<Vec<u8>> {
     out.push(b'\n');
     for d in map.darts() {
         let row = map.row(d);
-        for &v in row.iter().chain(std::iter::repeat_n(&d.0, MOKA_DIM - n)) {
+        for &v in row.iter().chain(std::iter::repeat_n(&d.get(), MOKA_DIM - n)) {
             push_u32(&mut out, v);
             out.push(b' ');
         }
@@ -296,14 +297,14 @@ mod tests {
     #[test]
     fn round_trip_with_points() {
         let mut m = examples::cylinder();
-        m.set_point(Dart(0), Some([0.1, -2.5e-300, 1e300]));
-        m.set_point(Dart(5), Some([-0.0, 3.0, f64::MIN_POSITIVE]));
+        m.set_point(Dart::new(0), Some([0.1, -2.5e-300, 1e300]));
+        m.set_point(Dart::new(5), Some([-0.0, 3.0, f64::MIN_POSITIVE]));
         let text = format_moka(&m).unwrap();
         assert!(text.starts_with(b"Moka file [ascii]\n0 0 0 0 0 0 0 2130706434\n1 7 5 0 0 0 0 0 1 0.1 "));
         let back = parse_moka(&text, "x").unwrap();
         assert_eq!(back, m);
-        assert_eq!(back.point(Dart(5)).unwrap()[0].to_bits(), (-0.0f64).to_bits());
-        assert_eq!(back.point(Dart(1)), None);
+        assert_eq!(back.point(Dart::new(5)).unwrap()[0].to_bits(), (-0.0f64).to_bits());
+        assert_eq!(back.point(Dart::new(1)), None);
         assert!(format_moka(&DenseMap::new(4, 1)).is_none());
     }
 
@@ -313,7 +314,7 @@ mod tests {
         let m = parse_moka(text, "x").unwrap();
         assert_eq!(m.dim(), 3);
         assert_eq!(m.flat(), &[0, 0, 0, 0]);
-        assert_eq!(m.point(Dart(0)), Some([-5.0, 0.5, 2.0]));
+        assert_eq!(m.point(Dart::new(0)), Some([-5.0, 0.5, 2.0]));
     }
 
     #[test]
@@ -379,14 +380,14 @@ mod tests {
         for n in 0..=3 {
             let mut m = DenseMap::new(n, 4);
             if n >= 1 {
-                m.link(Dart(0), Dart(1), n);
+                m.link(Dart::new(0), Dart::new(1), n);
             }
-            m.link(Dart(2), Dart(3), 0);
-            m.set_point(Dart(2), Some([1.0, 2.0, 3.0]));
+            m.link(Dart::new(2), Dart::new(3), 0);
+            m.set_point(Dart::new(2), Some([1.0, 2.0, 3.0]));
             let text = format_moka(&m).unwrap();
             let back = parse_moka(&text, "x").unwrap();
             assert_eq!(back, m, "dimension {n}");
-            assert_eq!(back.point(Dart(2)), Some([1.0, 2.0, 3.0]));
+            assert_eq!(back.point(Dart::new(2)), Some([1.0, 2.0, 3.0]));
         }
         // the tag of dimension 1 on a map linked along alpha_2
         let text = format!("Moka file [ascii]\n0 0 0 0 0 0 0 {}\n0 0 1 0 0 0 0 0 0\n1 1 0 1 0 0 0 0 0\n", DIM_TAG + 1);

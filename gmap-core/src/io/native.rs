@@ -41,13 +41,14 @@
 
 use std::path::Path;
 
-use super::{
+use super::common::{
     bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
     write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::alpha::{AlphaSet, MAX_DIM};
-use crate::dense::{Dart, DenseMap, Point};
+use crate::dense::DenseMap;
 use crate::edit::DartId;
+use crate::ids::{Dart, Point};
 use crate::labels::{parse_labels, LabelledGMap, Labels, MAX_LABELLED_DIM};
 
 const HEADER: &str = "gmap <n> <number of darts>";
@@ -142,7 +143,7 @@ impl Sections {
     /// Puts each point on every dart of its vertex. O(N n).
     fn apply_points(&self, map: &mut DenseMap) {
         for &(d, p, _) in &self.points {
-            for x in map.orbit(Dart(d), AlphaSet::cell(0, map.dim())) {
+            for x in map.orbit(Dart::new(d), AlphaSet::cell(0, map.dim())) {
                 map.set_point(x, Some(p));
             }
         }
@@ -164,7 +165,7 @@ fn first_per_cell(
     let cells = map.cells(dim);
     let mut seen: Vec<Option<(u32, usize)>> = vec![None; cells.len()];
     for (d, line) in lines {
-        let c = cells.cell_of(Dart(d)).index();
+        let c = cells.cell_of(Dart::new(d)).index();
         if let Some((other, other_line)) = seen[c] {
             let kind = ReadErrorKind::DuplicateCell {
                 what: what.to_string(),
@@ -253,9 +254,9 @@ fn parse_parts(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<(DenseMap
                 Num::Value(v) if v < darts => alpha.push(v as u32),
                 Num::Value(v) => {
                     let e = crate::ValidityError::OutOfRange {
-                        dart: Dart(d as u32),
+                        dart: Dart::new(d as u32),
                         alpha: i,
-                        target: Dart(u32::try_from(v).unwrap_or(u32::MAX)),
+                        target: Dart::new(u32::try_from(v).unwrap_or(u32::MAX)),
                         darts: darts as usize,
                     };
                     return Err(err(s.line, ReadErrorKind::Invalid(e)));
@@ -528,7 +529,7 @@ pub fn format_gmap(map: &DenseMap) -> Vec<u8> {
         for d in map.darts() {
             let c = vertices.cell_of(d).index();
             if first[c].is_none() {
-                first[c] = map.point(d).map(|p| (d.0, p));
+                first[c] = map.point(d).map(|p| (d.get(), p));
             }
         }
         let lines: Vec<(u32, Point)> = first.into_iter().flatten().collect();
@@ -701,7 +702,7 @@ mod section_tests {
         assert_eq!(format_labelled_gmap(&back), out.as_bytes());
         // the dense reader keeps the points on every dart of the vertex, drops the labels
         let dense = parse_gmap(text.as_bytes(), "s.gmap").unwrap();
-        assert_eq!(dense.point(Dart(1)), Some([1.5, -2.0, 0.0]));
+        assert_eq!(dense.point(Dart::new(1)), Some([1.5, -2.0, 0.0]));
         assert_eq!(parse_gmap(&format_gmap(&dense), "x").unwrap(), dense);
     }
 

@@ -9,12 +9,11 @@
 //! BO Def. 9 over the face-operator preimage, for all i-cells at once, multi-incidences
 //! included. [`crate::cellular::incidence::Incidence`] answers the same question pair by pair.
 
-use gmap_core::{parallel, Attributes, Dart, DenseMap, GMap};
+use gmap_core::{parallel, Dart, DenseMap};
 
 use crate::cellular::incidence::incidence_terms;
-use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
+use crate::cellular::oriented::OrientedCells;
 use crate::engine::chain::{ChainComplex, ChainError};
-use crate::engine::homology::{homology_z, Homology, HomologyError};
 use crate::engine::sparse::SparseMatrix;
 
 /// The cellular chain complex of a map: the border operator, with each cell named by its
@@ -25,52 +24,6 @@ pub struct CellularComplex {
     pub chain: ChainComplex,
     /// `reps[k][j]`: the smallest dart of k-cell `j`
     pub reps: Vec<Vec<Dart>>,
-}
-
-/// Builds the border operator of `map` after checking C1 and C2 on every cell.
-/// O(N n^2) plus, for dimensions 4 and up, the homology of one compacted cell per
-/// isomorphism class (C2).
-///
-/// ```
-/// use gmap_homology::{cellular_complex, homology_z};
-/// let torus = gmap_core::examples::torus();
-/// let c = cellular_complex(&torus).unwrap();
-/// assert_eq!(c.chain.counts(), &[1, 2, 1]);
-/// assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 2, 1]);
-/// // the Klein bottle: its cells are orientable, so the method applies
-/// let klein = gmap_core::examples::klein_bottle();
-/// assert_eq!(homology_z(&cellular_complex(&klein).unwrap().chain).unwrap().to_string(), "(Z, Z + Z/2, 0)");
-/// ```
-pub fn cellular_complex(map: &DenseMap) -> Result<CellularComplex, PreconditionError> {
-    let oriented = check_preconditions(map)?;
-    Ok(border_from_oriented(map, &oriented))
-}
-
-/// Why the cellular homology of an editable map could not be computed: a cell fails C1/C2,
-/// or the reduction failed.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum GMapHomologyError {
-    /// A cell fails condition C1 or C2 (its darts are numbered as in `GMap::to_dense`).
-    #[error(transparent)]
-    Precondition(#[from] PreconditionError),
-    /// The homology computation failed.
-    #[error(transparent)]
-    Homology(#[from] HomologyError),
-}
-
-/// The integer homology of an editable [`GMap`] (any attributes), through its cells: one
-/// [`GMap::to_dense`] snapshot, [`cellular_complex`], [`homology_z`]. Darts named in errors
-/// are snapshot darts (the k-th of `GMap::darts`). O(N n²) plus the reduction.
-///
-/// ```
-/// use gmap_core::GMap;
-/// use gmap_homology::gmap_homology;
-/// let (torus, _) = GMap::from_dense(&gmap_core::examples::torus());
-/// assert_eq!(gmap_homology(&torus).unwrap().to_string(), "(Z, Z^2, Z)");
-/// ```
-pub fn gmap_homology<A: Attributes>(map: &GMap<A>) -> Result<Homology, GMapHomologyError> {
-    let (dense, _) = map.to_dense();
-    Ok(homology_z(&cellular_complex(&dense)?.chain)?)
 }
 
 /// The border operator from already oriented cells of every dimension (C1 and C2 assumed).
@@ -135,8 +88,8 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
 /// `∂_1` by the two ends of each edge.
 fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let mut out = Vec::with_capacity(2 * edges.cells.len());
-    for (e, &Dart(r)) in edges.cells.reps.iter().enumerate() {
-        let other = map.alpha(Dart(r), 0).0;
+    for (e, r) in edges.cells.reps.iter().map(|d| d.get()).enumerate() {
+        let other = map.alpha(Dart::new(r), 0).get();
         for x in [r, other] {
             out.push((vertices.cells.of[x as usize], e as u32, edges.sign(x) * vertices.sign(x)));
         }
@@ -148,8 +101,8 @@ fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<
 fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u32, u32, i64)> {
     let n = map.dim();
     let mut out = Vec::with_capacity(2 * facets.cells.len());
-    for (f, &Dart(r)) in facets.cells.reps.iter().enumerate() {
-        let other = map.alpha(Dart(r), n).0;
+    for (f, r) in facets.cells.reps.iter().map(|d| d.get()).enumerate() {
+        let other = map.alpha(Dart::new(r), n).get();
         out.push((f as u32, top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
         if other != r {
             out.push((f as u32, top.cells.of[other as usize], top.sign(other) * facets.sign(other)));
@@ -170,7 +123,7 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
     let mut out = Vec::with_capacity(map.dart_count() / 4 + 1);
     // the positive darts of the ring being walked
     let mut ring: Vec<u32> = Vec::with_capacity(16);
-    for (f, &Dart(r)) in faces.cells.reps.iter().enumerate() {
+    for (f, r) in faces.cells.reps.iter().map(|d| d.get()).enumerate() {
         ring.clear();
         let mut x = r;
         loop {
@@ -195,7 +148,9 @@ fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::cellular::checked::cellular_complex;
     use crate::cellular::incidence::Incidence;
+    use crate::cellular::precond::check_preconditions;
     use crate::engine::homology::homology_z;
     use gmap_core::examples;
 

@@ -17,7 +17,7 @@
 use bitvec::vec::BitVec;
 use gmap_core::{CellDefect, CompactedCells, Dart, DenseMap, FaceOperator};
 
-use crate::cellular::precond::{oriented_cells, OrientedCells};
+use crate::cellular::oriented::{oriented_cells, OrientedCells};
 
 /// The face operator between dimensions i and i-1 of a map, with what is needed to answer
 /// incidence questions. Building it is O(N n); each query is O(size of one preimage).
@@ -68,8 +68,8 @@ impl Incidence {
     /// The signed incidence number (BO Def. 9) for given orientations of the i-cells
     /// (`upper`) and (i-1)-cells (`lower`), as produced by [`oriented_cells`].
     pub fn signed_with(&self, upper: &OrientedCells, lower: &OrientedCells, cell_dart: Dart, face_dart: Dart) -> i64 {
-        let s = lower.sign(face_dart.0);
-        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize].0) * s).sum()
+        let s = lower.sign(face_dart.get());
+        self.inside(cell_dart, face_dart).map(|e| upper.sign(self.upper.orbits.reps[e as usize].get()) * s).sum()
     }
 
     /// The signed incidence number (BO Def. 9) with the orientation in which the smallest
@@ -105,7 +105,7 @@ pub fn incidence_terms(map: &DenseMap, upper: &OrientedCells, lower: &OrientedCe
     let mut orbit: Vec<u32> = Vec::new();
     let mut element: Vec<u32> = Vec::new();
     let mut out = Vec::new();
-    for (row, &Dart(d0)) in lower.cells.reps.iter().enumerate() {
+    for (row, d0) in lower.cells.reps.iter().map(|d| d.get()).enumerate() {
         orbit.clear();
         orbit.push(d0);
         seen.set(d0 as usize, true);
@@ -155,9 +155,9 @@ mod tests {
     use super::*;
     use gmap_core::examples;
 
-    /// Paper dart k is Dart(k - 1).
+    /// Paper dart k is Dart::new(k - 1).
     fn p(k: u32) -> Dart {
-        Dart(k - 1)
+        Dart::new(k - 1)
     }
 
     #[test]

@@ -18,17 +18,18 @@
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use bitvec::vec::BitVec;
 use gmap_core::{parallel, AlphaSet, BoundaryDefect, CellDefect, Dart, DenseMap, Partition};
 use rustc_hash::FxHashSet;
 use thiserror::Error;
 
 use crate::cellular::border::border_from_oriented;
+pub use crate::cellular::oriented::{oriented_cells, OrientedCells};
 use crate::cellular::simplicial::simplicial_complex;
 use crate::engine::homology::{homology_z, Homology, HomologyError};
 
 /// A cell on which the cellular method does not apply.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum PreconditionError {
     /// Condition C1 fails: the cell is not orientable as a compacted cell, or its boundary
     /// is open (the kernel's message names the cell and the condition).
@@ -49,39 +50,6 @@ pub enum PreconditionError {
     /// the cell, its dimension and the two darts where its orbits meet.
     #[error(transparent)]
     SelfBending(BoundaryDefect),
-}
-
-/// The i-cells of a map, oriented as compacted cells (condition C1).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct OrientedCells {
-    /// the dimension i
-    pub dim: usize,
-    /// the i-cells: `cells.of[d]` is the cell of dart `d`, numbered by smallest dart
-    pub cells: Partition,
-    /// a bit per dart: set for the positive class of its compacted cell; the smallest dart
-    /// of every cell is positive
-    pub positive: BitVec,
-}
-
-impl OrientedCells {
-    /// `+1` or `-1`: the orientation class of dart `d` in its i-cell.
-    #[inline]
-    pub fn sign(&self, d: u32) -> i64 {
-        if self.positive[d as usize] {
-            1
-        } else {
-            -1
-        }
-    }
-}
-
-/// Partitions the darts into i-cells and orients each one as a compacted cell, in one
-/// traversal; fails with the first cell (in order of smallest dart) violating C1.
-/// Numbering and signs agree with `DenseMap::cells(i)` and `DenseMap::cell_orientation(i)`.
-/// O(N n).
-pub fn oriented_cells(map: &DenseMap, i: usize) -> Result<OrientedCells, CellDefect> {
-    let (cells, positive) = map.oriented_cells(i)?;
-    Ok(OrientedCells { dim: i, cells, positive })
 }
 
 /// Checks C2 for the i-cells of `map` (C1 assumed, as checked by [`oriented_cells`]).
@@ -127,7 +95,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
         None if i == n => d,
         None => d.min(a[d as usize * w + n]),
     };
-    let rep = |e: u32| part.as_ref().map_or(e, |p| p.reps[e as usize].0);
+    let rep = |e: u32| part.as_ref().map_or(e, |p| p.reps[e as usize].get());
     let size = part.as_ref().map_or(map.dart_count(), Partition::len);
     let mut local = vec![u32::MAX; size];
     let mut order: Vec<u32> = Vec::new();
@@ -135,7 +103,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
     let mut spheres: FxHashSet<Vec<u32>> = FxHashSet::default();
     // the last class found a sphere: neighbouring cells are often of the same class
     let mut last: Vec<u32> = Vec::new();
-    for &Dart(r) in &cells.cells.reps {
+    for r in cells.cells.reps.iter().map(|d| d.get()) {
         let start = elem(r);
         order.clear();
         code.clear();
@@ -164,7 +132,7 @@ fn c2_by_classes(map: &DenseMap, cells: &OrientedCells) -> Result<(), Preconditi
             std::mem::swap(&mut last, &mut code);
             continue;
         }
-        let fail = |found: String| PreconditionError::C2 { dim: i, dart: Dart(r), found };
+        let fail = |found: String| PreconditionError::C2 { dim: i, dart: Dart::new(r), found };
         let sub = DenseMap::from_flat_unchecked(i - 1, code.clone())
             .map_err(|e| fail(format!("no computable homology ({e})")))?;
         if i == 3 {

@@ -10,14 +10,14 @@
 //!
 //! Sizes: `Σ_S #orbits`, at most `2^(n+1) N` simplices; time O(2^n N n).
 //!
-//! [`chain_map_tau`] is BO §6's chain map τ from the cellular chains (BO Def. 10) to the
+//! [`chain_map_tau`](crate::chain_map_tau) is BO §6's chain map τ from the cellular chains (BO Def. 10) to the
 //! chains of this counterpart, with [`ChainMapTau::check_commutes`] testing `c∂ᶜτ = cτ∂ˢ`.
 
 use gmap_core::{AlphaSet, Dart, DenseMap};
 use thiserror::Error;
 
-use crate::cellular::border::{border_from_oriented, CellularComplex};
-use crate::cellular::precond::{check_preconditions, OrientedCells, PreconditionError};
+use crate::cellular::border::CellularComplex;
+use crate::cellular::oriented::OrientedCells;
 use crate::engine::chain::ChainComplex;
 use crate::engine::sparse::SparseMatrix;
 
@@ -154,6 +154,7 @@ pub struct ChainMapTau {
 
 /// Where τ fails to commute with the border operators.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum TauError {
     /// `τ_{i-1} ∂ᶜ_i` and `∂ˢ_i τ_i` differ on the column of an i-cell.
     #[error("BO §6: the border of the {dim}-cell of dart {dart} does not commute with τ (c∂ᶜτ != cτ∂ˢ)")]
@@ -171,30 +172,10 @@ pub enum TauError {
     },
 }
 
-/// τ (BO §6) for `map`, after the cellular method's checks ([`check_preconditions`]: C1,
-/// C2 and no self-bending), which are its precondition: where they fail, the error names
-/// the cell. O(2^n N n) for the counterpart, O(N n) for τ itself.
-///
-/// ```
-/// use gmap_homology::chain_map_tau;
-/// let torus = gmap_core::examples::torus();
-/// let t = chain_map_tau(&torus).unwrap();
-/// assert_eq!(t.check_commutes(), Ok(()));
-/// // the face of the torus goes to its 8 triangles with vertices {0, 1, 2}
-/// assert_eq!(t.tau[2].nnz(), 8);
-/// ```
-pub fn chain_map_tau(map: &DenseMap) -> Result<ChainMapTau, PreconditionError> {
-    let oriented = check_preconditions(map)?;
-    let cellular = border_from_oriented(map, &oriented);
-    let simplicial = simplicial_complex_with_simplices(map);
-    let tau = (0..=map.dim()).map(|i| tau_matrix(map, &oriented[i], simplicial.chain.count(i))).collect();
-    Ok(ChainMapTau { cellular, simplicial, tau })
-}
-
 /// `τ_i`: the element of `B_i` numbered `b` (in the order of its smallest dart) is the
 /// simplex on `{0..i}` numbered `b` too, since `{0..i}` is the first vertex set of size
 /// `i + 1` in the order of [`simplicial_complex_with_simplices`].
-fn tau_matrix(map: &DenseMap, cells: &OrientedCells, rows: usize) -> SparseMatrix {
+pub(crate) fn tau_matrix(map: &DenseMap, cells: &OrientedCells, rows: usize) -> SparseMatrix {
     let i = cells.dim;
     let orient: i64 = if (i * (i + 1) / 2).is_multiple_of(2) { 1 } else { -1 };
     let b = map.partition(AlphaSet::above(i, map.dim()));
@@ -202,7 +183,7 @@ fn tau_matrix(map: &DenseMap, cells: &OrientedCells, rows: usize) -> SparseMatri
         .reps
         .iter()
         .enumerate()
-        .map(|(e, &Dart(r))| (e as u32, cells.cells.of[r as usize], orient * cells.sign(r)))
+        .map(|(e, &r)| (e as u32, cells.cells.of[r.index()], orient * cells.sign(r.get())))
         .collect();
     SparseMatrix::try_from_entries(rows, cells.cells.len(), &entries)
         .expect("one entry per element of B_i, inside the counts of both complexes")

@@ -29,6 +29,7 @@ use crate::{ChainComplex, SparseMatrix};
 
 /// Why the cubical complex of a set could not be built.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum CubicalError {
     /// The shape and the bitmap do not match, or the dimension is 0.
     #[error("bad cubical set: {0}")]

@@ -1,4 +1,4 @@
-//! The `.json` incidence graph / architectural complex format (CONTRACT §2).
+//! The `.json` incidence graph / architectural complex format (docs/FORMATS.md).
 //!
 //! ```json
 //! {"dimension": 2,
@@ -47,6 +47,7 @@ use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum JsonError {
     /// Not JSON at all.
     #[error("line {line}, column {column}: invalid JSON: {message}")]

@@ -34,6 +34,7 @@ use crate::engine::sparse::SparseMatrix;
 
 /// Why a list of facets gives no chain complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum FaceError {
     /// No facet at all.
     #[error("no facet")]

@@ -6,6 +6,7 @@ use crate::engine::sparse::SparseMatrix;
 
 /// Why matrices do not form a chain complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum ChainError {
     /// `boundaries.len()` is not `counts.len() - 1`.
     #[error("{counts} cell counts need {} boundary matrices, got {boundaries}", .counts.saturating_sub(1))]

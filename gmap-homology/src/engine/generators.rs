@@ -280,7 +280,7 @@ fn reduce_by_single_boundaries<R: Euclid>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::cellular::border::cellular_complex;
+    use crate::cellular::checked::cellular_complex;
     use crate::engine::homology::homology_z;
     use gmap_core::examples;
 

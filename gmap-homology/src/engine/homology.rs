@@ -22,6 +22,7 @@ use thiserror::Error;
 use crate::engine::chain::ChainComplex;
 use crate::engine::reduce::{eliminate, Col, Mode};
 use crate::engine::ring::{Euclid, Ring, ZBig, Zi64, Zp};
+use crate::engine::snf::DenseSmith;
 
 pub use crate::engine::natural::Natural;
 
@@ -106,6 +107,7 @@ impl fmt::Display for Homology {
 
 /// Why a homology computation failed.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum HomologyError {
     /// `p` is not a prime (or is too large: at most 2^31).
     #[error("{0} is not a prime number below 2^31: a field of coefficients needs a prime")]
@@ -323,7 +325,7 @@ fn assemble(
     Ok(h)
 }
 
-fn integer_homology<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Result<Homology, HomologyError>> {
+fn integer_homology<R: DenseSmith>(ring: &R, c: &ChainComplex) -> Option<Result<Homology, HomologyError>> {
     integer_homology_with(ring, c, true, &mut Stages::default())
 }
 
@@ -341,7 +343,7 @@ pub struct Stages {
 
 /// [`integer_homology`], optionally without the fill-free pass (to test that pass).
 #[allow(clippy::needless_range_loop)]
-fn integer_homology_with<R: Euclid>(
+fn integer_homology_with<R: DenseSmith>(
     ring: &R,
     c: &ChainComplex,
     prereduce: bool,

@@ -10,8 +10,6 @@ use std::fmt::Debug;
 use num_bigint::BigInt;
 
 use crate::engine::natural::Natural;
-use crate::engine::snf::smith_diagonal;
-use crate::engine::snf_modular::smith_diagonal_modular;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// The operations the sparse elimination needs from a coefficient ring.
@@ -47,15 +45,6 @@ pub(crate) trait Euclid: Ring {
     fn to_i64(&self, a: &Self::E) -> Option<i64>;
     /// `|a|` exactly (over `Z/p`: the representative in `0..p`).
     fn abs_natural(&self, a: &Self::E) -> Natural;
-    /// The non-zero diagonal of the Smith normal form of a dense matrix given row by row
-    /// (`None` on overflow): elimination in the ring ([`smith_diagonal`]) unless the ring
-    /// has a better way.
-    fn dense_smith(&self, a: Vec<Vec<Self::E>>, cols: usize) -> Option<Vec<Self::E>>
-    where
-        Self: Sized,
-    {
-        smith_diagonal(self, a, cols)
-    }
 }
 
 /// `Z` with checked `i64` arithmetic.
@@ -143,11 +132,6 @@ impl Euclid for ZBig {
     }
     fn abs_natural(&self, a: &BigInt) -> Natural {
         Natural::abs_of(a)
-    }
-    /// Modulo a multiple of the largest invariant factor, so no entry grows beyond it
-    /// (see `snf_modular`); elimination over `Z` lets a dense block's entries explode.
-    fn dense_smith(&self, a: Vec<Vec<BigInt>>, cols: usize) -> Option<Vec<BigInt>> {
-        smith_diagonal_modular(&a, cols)
     }
 }
 

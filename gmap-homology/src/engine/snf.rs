@@ -5,7 +5,32 @@
 
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
-use crate::engine::ring::Euclid;
+use num_bigint::BigInt;
+
+use crate::engine::ring::{Euclid, ZBig, Zi64, Zp};
+use crate::engine::snf_modular::smith_diagonal_modular;
+
+/// The Smith dispatch: how each ring computes the non-zero diagonal of the Smith normal
+/// form of a dense matrix given row by row (`None` on overflow). Elimination in the ring
+/// ([`smith_diagonal`]) for checked `i64` and `Z/p`; for big integers, elimination modulo a
+/// multiple of the largest invariant factor ([`smith_diagonal_modular`]), so no entry grows
+/// beyond it (elimination over `Z` lets a dense block's entries explode).
+pub(crate) trait DenseSmith: Euclid + Sized {
+    /// The non-zero diagonal of the Smith normal form of `a` (`cols` columns).
+    fn dense_smith(&self, a: Vec<Vec<Self::E>>, cols: usize) -> Option<Vec<Self::E>> {
+        smith_diagonal(self, a, cols)
+    }
+}
+
+impl DenseSmith for Zi64 {}
+
+impl DenseSmith for Zp {}
+
+impl DenseSmith for ZBig {
+    fn dense_smith(&self, a: Vec<Vec<BigInt>>, cols: usize) -> Option<Vec<BigInt>> {
+        smith_diagonal_modular(&a, cols)
+    }
+}
 
 /// The non-zero diagonal of the Smith normal form of a dense `rows × cols` matrix (given
 /// row by row): entries `d_1 | d_2 | … | d_r` up to sign, r the rank. `None` on overflow.

@@ -18,6 +18,7 @@ use thiserror::Error;
 
 /// Why a set of CSC parts or triplets does not make a valid [`SparseMatrix`].
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum SparseError {
     /// `col_ptr` has the wrong length, does not start at 0, decreases, or does not end at
     /// the number of entries.

@@ -176,7 +176,6 @@ impl Grid {
         }
         r
     }
-
 }
 
 /// A total order on `f64` (finite values only reach here) as an unsigned key.
@@ -216,10 +215,7 @@ impl CubicalFiltration {
         }
         let n: Option<usize> = shape.iter().try_fold(1usize, |p, &s| p.checked_mul(s));
         if n != Some(values.len()) {
-            return Err(PersistenceError::BadInput(format!(
-                "shape {shape:?} does not hold {} values",
-                values.len()
-            )));
+            return Err(PersistenceError::BadInput(format!("shape {shape:?} does not hold {} values", values.len())));
         }
         if let Some(i) = values.iter().position(|v| v.is_nan()) {
             return Err(PersistenceError::BadInput(format!("value {i} is NaN")));
@@ -254,10 +250,8 @@ impl CubicalFiltration {
     /// Builds the sorted list of k-cells (and their ranks).
     fn ensure(&mut self, k: usize, with_rank: bool) {
         if self.order[k].is_none() {
-            let mut keys: Vec<(u64, u32)> = (0..self.grid.len)
-                .filter(|&g| self.grid.dim(g) == k)
-                .map(|g| (key(self.vals[g]), g as u32))
-                .collect();
+            let mut keys: Vec<(u64, u32)> =
+                (0..self.grid.len).filter(|&g| self.grid.dim(g) == k).map(|g| (key(self.vals[g]), g as u32)).collect();
             keys.sort_unstable();
             self.order[k] = Some(keys);
         }
@@ -337,7 +331,8 @@ impl CubicalFiltration {
                 }
                 for &col in &r.zero {
                     let g = hi[col as usize].1 as usize;
-                    let cycle = opts.cycles
+                    let cycle = opts
+                        .cycles
                         .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c)).collect());
                     diagram.push(k, self.vals[g], f64::INFINITY, self.sign, cycle);
                 }
@@ -501,11 +496,7 @@ fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f6
         Construction::T => 1,
     };
     // place the pixels
-    let shape: Vec<usize> = grid
-        .m
-        .iter()
-        .map(|&m| if pixel_parity == 1 { m / 2 } else { m.div_ceil(2) })
-        .collect();
+    let shape: Vec<usize> = grid.m.iter().map(|&m| if pixel_parity == 1 { m / 2 } else { m.div_ceil(2) }).collect();
     let mut idx = vec![0usize; d];
     for &v in values {
         let g: usize = (0..d).map(|a| (2 * idx[a] + pixel_parity) * grid.stride[a]).sum();
@@ -558,6 +549,10 @@ fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f6
 
 /// The persistence diagram of an image: [`CubicalFiltration::new`] then
 /// [`CubicalFiltration::diagram`].
-pub fn cubical_persistence(shape: &[usize], values: &[f64], opts: &CubicalOptions) -> Result<Diagram, PersistenceError> {
+pub fn cubical_persistence(
+    shape: &[usize],
+    values: &[f64],
+    opts: &CubicalOptions,
+) -> Result<Diagram, PersistenceError> {
     CubicalFiltration::new(shape, values, opts)?.diagram(opts)
 }

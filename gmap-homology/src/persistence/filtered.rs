@@ -17,9 +17,9 @@ use rustc_hash::FxHashMap;
 use gmap_core::labels::{to_dense_labels, LabelValue, LabelledGMap};
 
 use super::cubical::{check_field, key};
-use crate::{cellular_complex, ChainComplex};
 use super::reduce::{reduce_dim, Entry};
 use super::{CellName, Chain, Diagram, PersistenceError};
+use crate::{cellular_complex, ChainComplex};
 
 /// One cell: its value, signed boundary (indices of cells one dimension down) and name.
 #[derive(Clone, Debug)]
@@ -74,11 +74,9 @@ impl FilteredComplex {
         }
         let mut v = value;
         for &(f, _) in &boundary {
-            let face = dim
-                .checked_sub(1)
-                .and_then(|k| self.cells.get(k))
-                .and_then(|c| c.get(f as usize))
-                .ok_or_else(|| PersistenceError::BadInput(format!("cell {name:?}: no face {f} of dimension {}", dim - 1)))?;
+            let face = dim.checked_sub(1).and_then(|k| self.cells.get(k)).and_then(|c| c.get(f as usize)).ok_or_else(
+                || PersistenceError::BadInput(format!("cell {name:?}: no face {f} of dimension {}", dim - 1)),
+            )?;
             v = v.max(face.value);
         }
         while self.cells.len() <= dim {
@@ -100,7 +98,9 @@ impl FilteredComplex {
             let mut v = simplex.clone();
             v.sort_unstable();
             if v.is_empty() || v.windows(2).any(|w| w[0] == w[1]) {
-                return Err(PersistenceError::BadInput(format!("simplex {s} {simplex:?} is empty or repeats a vertex")));
+                return Err(PersistenceError::BadInput(format!(
+                    "simplex {s} {simplex:?} is empty or repeats a vertex"
+                )));
             }
             if v.len() > 20 {
                 return Err(PersistenceError::TooLarge(format!("simplex {s} has {} vertices", v.len())));

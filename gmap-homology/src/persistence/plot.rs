@@ -51,20 +51,25 @@ pub fn diagram_svg(d: &Diagram, size: u32) -> String {
     let mut out = String::new();
     let _ = writeln!(out, r#"<svg xmlns="http://www.w3.org/2000/svg" width="{s}" height="{s}" viewBox="0 0 {s} {s}">"#);
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    let _ = writeln!(out, r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="grey"/>"#, px(lo), py(lo), px(hi), py(hi));
+    let _ =
+        writeln!(out, r#"<line x1="{m}" y1="{ess}" x2="{}" y2="{ess}" stroke="grey" stroke-dasharray="4"/>"#, s - m);
+    let _ = writeln!(out, r#"<text x="{}" y="{}" font-size="12">+inf</text>"#, 4.0, ess + 4.0);
     let _ = writeln!(
         out,
-        r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="grey"/>"#,
-        px(lo),
-        py(lo),
-        px(hi),
-        py(hi)
+        r#"<text x="{}" y="{}" font-size="12">{lo}</text><text x="{}" y="{}" font-size="12">{hi}</text>"#,
+        m,
+        s - m + 16.0,
+        px(hi) - 10.0,
+        s - m + 16.0
     );
-    let _ = writeln!(out, r#"<line x1="{m}" y1="{ess}" x2="{}" y2="{ess}" stroke="grey" stroke-dasharray="4"/>"#, s - m);
-    let _ = writeln!(out, r#"<text x="{}" y="{}" font-size="12">+inf</text>"#, 4.0, ess + 4.0);
-    let _ = writeln!(out, r#"<text x="{}" y="{}" font-size="12">{lo}</text><text x="{}" y="{}" font-size="12">{hi}</text>"#,
-        m, s - m + 16.0, px(hi) - 10.0, s - m + 16.0);
     let _ = writeln!(out, r#"<text x="{}" y="{}" font-size="12">birth</text>"#, s / 2.0, s - 8.0);
-    let _ = writeln!(out, r#"<text x="8" y="{}" font-size="12" transform="rotate(-90 8 {})">death</text>"#, s / 2.0, s / 2.0);
+    let _ = writeln!(
+        out,
+        r#"<text x="8" y="{}" font-size="12" transform="rotate(-90 8 {})">death</text>"#,
+        s / 2.0,
+        s / 2.0
+    );
     for p in &d.pairs {
         let y = if p.death.is_finite() { py(p.death) } else { ess };
         let _ = writeln!(
@@ -106,8 +111,13 @@ pub fn barcode_svg(d: &Diagram, width: u32) -> String {
             colour(p.dim)
         );
     }
-    let _ = writeln!(out, r#"<text x="{m}" y="{}" font-size="12">{lo}</text><text x="{}" y="{}" font-size="12">{hi}</text>"#,
-        h - 12.0, px(hi) - 10.0, h - 12.0);
+    let _ = writeln!(
+        out,
+        r#"<text x="{m}" y="{}" font-size="12">{lo}</text><text x="{}" y="{}" font-size="12">{hi}</text>"#,
+        h - 12.0,
+        px(hi) - 10.0,
+        h - 12.0
+    );
     legend(&mut out, d, w - m - 30.0, 20.0);
     out.push_str("</svg>\n");
     out
@@ -116,7 +126,14 @@ pub fn barcode_svg(d: &Diagram, width: u32) -> String {
 /// A 2-D image (`rows × cols` values, row-major) in grey, `scale` pixels per value, with
 /// the cells of `chain` (doubled-grid names of the V- or T-construction of the same image)
 /// drawn over it in red: vertices as dots, edges as segments, squares filled.
-pub fn image_with_chain_svg(rows: usize, cols: usize, values: &[f64], chain: &Chain, vertex_centred: bool, scale: u32) -> String {
+pub fn image_with_chain_svg(
+    rows: usize,
+    cols: usize,
+    values: &[f64],
+    chain: &Chain,
+    vertex_centred: bool,
+    scale: u32,
+) -> String {
     let sc = scale as f64;
     let (lo, hi) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
     let span = if hi > lo { hi - lo } else { 1.0 };
@@ -158,14 +175,22 @@ pub fn image_with_chain_svg(rows: usize, cols: usize, values: &[f64], chain: &Ch
                 let _ = writeln!(
                     out,
                     r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="red" stroke-width="{}"/>"#,
-                    at(c), at(r - 1), at(c), at(r + 1), sc / 5.0
+                    at(c),
+                    at(r - 1),
+                    at(c),
+                    at(r + 1),
+                    sc / 5.0
                 );
             }
             _ => {
                 let _ = writeln!(
                     out,
                     r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="red" stroke-width="{}"/>"#,
-                    at(c - 1), at(r), at(c + 1), at(r), sc / 5.0
+                    at(c - 1),
+                    at(r),
+                    at(c + 1),
+                    at(r),
+                    sc / 5.0
                 );
             }
         }

@@ -27,51 +27,17 @@
 //! ```
 
 use gmap_core::{Dart, DenseMap};
-use thiserror::Error;
 
 use crate::import::SimplicialComplex;
 use crate::perm::{factorial, PermTable};
 
+mod error;
 mod schema;
 
+use error::checked_darts;
+pub use error::BuildError;
+
 pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
-
-/// Why a builder refused its arguments.
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
-pub enum BuildError {
-    /// An argument out of range (a 0-gon, a grid with a zero side, a lens space with p = 0…).
-    #[error("bad argument: {0}")]
-    BadArgument(String),
-    /// The object would have 2^32 - 1 darts or more.
-    #[error("{what} would have more than 2^32 - 2 darts")]
-    TooManyDarts {
-        /// the object asked for
-        what: String,
-    },
-    /// A token of a polygonal schema that is not a letter name.
-    #[error("schema token '{token}' is not a letter name (use a, A, a', a^-1, a1 …)")]
-    BadToken {
-        /// the token
-        token: String,
-    },
-    /// A schema letter used more than twice.
-    #[error("schema letter '{letter}' is used {count} times (at most 2: twice glues, once is boundary)")]
-    LetterUsedTooOften {
-        /// the letter
-        letter: String,
-        /// how many times it occurs
-        count: usize,
-    },
-}
-
-fn checked_darts(what: impl Fn() -> String, factors: &[u64]) -> Result<usize, BuildError> {
-    factors
-        .iter()
-        .try_fold(1u64, |a, &b| a.checked_mul(b))
-        .filter(|&d| d < u32::MAX as u64)
-        .map(|d| d as usize)
-        .ok_or_else(|| BuildError::TooManyDarts { what: what() })
-}
 
 /// The n-simplex: one facet of the simplicial importer, `(n + 1)!` darts, `C(n+1, i+1)`
 /// i-cells, χ = 1. Its darts are n-free (the boundary). Precondition: `(n + 1)! < 2^32`,
@@ -107,9 +73,9 @@ pub fn polygon(k: usize) -> Result<DenseMap, BuildError> {
         Some([t.cos(), t.sin(), 0.0])
     };
     for j in 0..k {
-        let (a, b) = (Dart(2 * j as u32), Dart(2 * j as u32 + 1));
+        let (a, b) = (Dart::new(2 * j as u32), Dart::new(2 * j as u32 + 1));
         m.link(a, b, 0);
-        m.link(b, Dart(((2 * j + 2) % darts) as u32), 1);
+        m.link(b, Dart::new(((2 * j + 2) % darts) as u32), 1);
         m.set_point(a, corner(j));
         m.set_point(b, corner(j + 1));
     }
@@ -136,7 +102,7 @@ pub fn extrude(map: &DenseMap) -> Result<DenseMap, BuildError> {
     let mut alpha = vec![0u32; darts * w];
     let idx = |d: usize, k: usize, s: usize| (d * per + 2 * (k - 1) + s) as u32;
     for d in 0..map.dart_count() {
-        let row = map.row(Dart(d as u32));
+        let row = map.row(Dart::new(d as u32));
         for k in 1..=n + 1 {
             for s in 0..2 {
                 let me = idx(d, k, s) as usize;
@@ -170,7 +136,7 @@ pub fn extrude(map: &DenseMap) -> Result<DenseMap, BuildError> {
             if let Some(p) = map.point(d) {
                 for k in 1..=n + 1 {
                     for s in 0..2 {
-                        out.set_point(Dart(idx(d.index(), k, s)), Some([p[0], p[1], p[2] + s as f64]));
+                        out.set_point(Dart::new(idx(d.index(), k, s)), Some([p[0], p[1], p[2] + s as f64]));
                     }
                 }
             }
@@ -293,7 +259,7 @@ pub fn lens_space(p: usize, q: usize) -> Result<DenseMap, BuildError> {
     let darts = checked_darts(|| format!("L({p}, {q})"), &[4, p as u64])?;
     let q = q % p;
     let mut m = DenseMap::new(3, darts);
-    let at = |base: usize, j: usize, s: usize| Dart((base + 2 * (j % p) + s) as u32);
+    let at = |base: usize, j: usize, s: usize| Dart::new((base + 2 * (j % p) + s) as u32);
     let u = |j: usize, s: usize| at(0, j, s);
     let l = |j: usize, s: usize| at(2 * p, j, s);
     for j in 0..p {
@@ -371,7 +337,7 @@ mod tests {
         let prism = extrude(&polygon(5).unwrap()).unwrap();
         check(&prism, &[10, 15, 7, 1], 1, true);
         assert_eq!(prism.dart_count(), 60);
-        assert_eq!(prism.vertex_point(Dart(1)).map(|p| p[2]), Some(1.0));
+        assert_eq!(prism.vertex_point(Dart::new(1)).map(|p| p[2]), Some(1.0));
         let sq = extrude(&cube(1).unwrap()).unwrap();
         check(&sq, &[4, 4, 1], 1, true);
         let c4 = extrude(&cube(3).unwrap()).unwrap();

@@ -4,7 +4,7 @@ use std::collections::HashMap;
 
 use gmap_core::{Dart, DenseMap};
 
-use super::{checked_darts, BuildError};
+use super::error::{checked_darts, BuildError};
 
 /// The surface of a polygonal schema: each word is a polygon whose edges are read in order,
 /// a letter names an edge and its direction (`a`), its inverse is written `A` (upper case),
@@ -41,8 +41,8 @@ pub fn schema(word: &str) -> Result<DenseMap, BuildError> {
         let k = f.len();
         for (j, (name, inverse)) in f.iter().enumerate() {
             let a = offset + 2 * j;
-            m.link(Dart(a as u32), Dart(a as u32 + 1), 0);
-            m.link(Dart(a as u32 + 1), Dart((offset + (2 * j + 2) % (2 * k)) as u32), 1);
+            m.link(Dart::new(a as u32), Dart::new(a as u32 + 1), 0);
+            m.link(Dart::new(a as u32 + 1), Dart::new((offset + (2 * j + 2) % (2 * k)) as u32), 1);
             let e = uses.entry(name.as_str()).or_default();
             if e.is_empty() {
                 order.push(name.as_str());
@@ -60,8 +60,8 @@ pub fn schema(word: &str) -> Result<DenseMap, BuildError> {
                 let ends = |(a, inv): (usize, bool)| if inv { (a + 1, a) } else { (a, a + 1) };
                 let (s1, e1) = ends(occ[0]);
                 let (s2, e2) = ends(occ[1]);
-                m.link(Dart(s1 as u32), Dart(s2 as u32), 2);
-                m.link(Dart(e1 as u32), Dart(e2 as u32), 2);
+                m.link(Dart::new(s1 as u32), Dart::new(s2 as u32), 2);
+                m.link(Dart::new(e1 as u32), Dart::new(e2 as u32), 2);
             }
             count => return Err(BuildError::LetterUsedTooOften { letter: name.to_string(), count }),
         }

@@ -7,120 +7,15 @@
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use gmap_core::{AlphaSet, Attributes, Dart, DartId, DenseMap, GMap, Partition};
-use thiserror::Error;
+use gmap_core::{AlphaSet, Attributes, Dart, DenseMap, GMap, Partition};
 
+mod error;
 mod vtk;
+
+pub use error::{write_atomic, ExportError};
 pub use vtk::{vtk_string, vtk_string_with_labels, write_vtk, write_vtk_with_labels};
-
-/// Why a map could not be exported.
-#[derive(Debug, Error)]
-pub enum ExportError {
-    /// The format holds only maps of one dimension.
-    #[error("{format} holds {expected}-maps, this map has dimension {found}")]
-    Dimension {
-        /// the format
-        format: &'static str,
-        /// the dimension it needs
-        expected: usize,
-        /// the map's dimension
-        found: usize,
-    },
-    /// The writer handles maps up to a dimension.
-    #[error("{format} is written for maps of dimension at most {max}, this map has dimension {found}")]
-    DimensionAbove {
-        /// the format
-        format: &'static str,
-        /// the largest dimension written
-        max: usize,
-        /// the map's dimension
-        found: usize,
-    },
-    /// A vertex without a point (`.off` needs coordinates).
-    #[error("the vertex of dart {dart} has no point: .off needs coordinates")]
-    NoPoint {
-        /// a dart of that vertex
-        dart: u32,
-    },
-    /// A face that is not a closed polygon (a 0- or 1-free dart).
-    #[error("the face of dart {dart} is not a closed polygon (dart {dart} is {alpha}-free)")]
-    OpenFace {
-        /// the dart
-        dart: u32,
-        /// the involution with a fixed point
-        alpha: usize,
-    },
-    /// The format needs coordinates and the map has no points at all.
-    #[error("the map has no points: {format} needs coordinates for every vertex")]
-    NoPoints {
-        /// the format
-        format: &'static str,
-    },
-    /// A vertex without a finite point, for a format other than `.off` that needs them.
-    #[error("the vertex of dart {dart} has {what}: {format} needs finite coordinates for every vertex")]
-    VertexPoint {
-        /// the format
-        format: &'static str,
-        /// a dart of that vertex
-        dart: u32,
-        /// `no point` or `a point that is not finite`
-        what: &'static str,
-    },
-    /// A map without darts has no simplicial complex to write.
-    #[error("the map has no dart: there is no facet to write")]
-    Empty,
-    /// The output would not fit in memory.
-    #[error("the output of {facets} facets cannot be held in memory")]
-    TooLarge {
-        /// the number of facets
-        facets: usize,
-    },
-    /// The `.off` text would not read back as the same map.
-    #[error("the map is not a polygon mesh that .off can describe: {reason}")]
-    NotAMesh {
-        /// what the reader makes of the text
-        reason: String,
-    },
-    /// A vertex whose point is not finite.
-    #[error("the vertex of dart {dart} has a point that is not finite: .off needs finite coordinates")]
-    NonFinitePoint {
-        /// a dart of that vertex
-        dart: u32,
-    },
-    /// A vertex of an editable map without a finite point (`.off` needs coordinates).
-    #[error("the vertex of dart {dart:?} has {what}: .off needs finite coordinates for every vertex")]
-    VertexOfDart {
-        /// a dart of that vertex
-        dart: DartId,
-        /// `no point` or `a point that is not finite`
-        what: &'static str,
-    },
-    /// The format needs maps of at least a dimension.
-    #[error("{format} needs a map of dimension at least {min}, this map has dimension {found}")]
-    DimensionBelow {
-        /// the format
-        format: &'static str,
-        /// the smallest dimension written
-        min: usize,
-        /// the map's dimension
-        found: usize,
-    },
-    /// Writing failed.
-    #[error("{path}: {source}")]
-    Io {
-        /// the file
-        path: PathBuf,
-        /// the cause
-        source: std::io::Error,
-    },
-}
-
-/// Writes `contents` to `path` with [`gmap_core::io::write_atomic`] (never a partial file).
-pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), ExportError> {
-    gmap_core::io::write_atomic(path, contents).map_err(|source| ExportError::Io { path: path.to_path_buf(), source })
-}
 
 /// The OFF text of a 2-map with points: one vertex per 0-cell (numbered by its smallest
 /// dart), one polygon per 2-cell listing its corners in cycle order (walking
@@ -145,30 +40,30 @@ fn off_text(map: &DenseMap, faces: &Partition) -> Result<(String, Vec<Dart>), Ex
     for d in map.darts() {
         for i in 0..2 {
             if map.is_free(d, i) {
-                return Err(ExportError::OpenFace { dart: d.0, alpha: i });
+                return Err(ExportError::OpenFace { dart: d.get(), alpha: i });
             }
         }
     }
     let verts = map.cells(0);
     let mut out = String::new();
     let _ = writeln!(out, "OFF\n{} {} 0", verts.len(), faces.len());
-    for &Dart(r) in &verts.reps {
-        let p = map.vertex_point(Dart(r)).ok_or(ExportError::NoPoint { dart: r })?;
+    for r in verts.reps.iter().map(|d| d.get()) {
+        let p = map.vertex_point(Dart::new(r)).ok_or(ExportError::NoPoint { dart: r })?;
         if !p.iter().all(|c| c.is_finite()) {
             return Err(ExportError::NonFinitePoint { dart: r });
         }
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
     let mut order: Vec<Dart> = Vec::with_capacity(map.dart_count());
-    for &Dart(r) in &faces.reps {
+    for r in faces.reps.iter().map(|d| d.get()) {
         let mut corners = Vec::new();
-        let mut d = Dart(r);
+        let mut d = Dart::new(r);
         loop {
             corners.push(verts.of[d.index()]);
             order.push(d);
             order.push(map.alpha(d, 0));
             d = map.alpha(map.alpha(d, 0), 1);
-            if d.0 == r {
+            if d.get() == r {
                 break;
             }
             if corners.len() > map.dart_count() {
@@ -206,7 +101,7 @@ fn same_as_read_back(map: &DenseMap, text: &str, order: &[Dart]) -> Result<(), E
     }
     for (k, &d) in order.iter().enumerate() {
         for i in 0..=2 {
-            if back.alpha(Dart(k as u32), i).0 != new_of[map.alpha(d, i).index()] {
+            if back.alpha(Dart::new(k as u32), i).get() != new_of[map.alpha(d, i).index()] {
                 return Err(not_a_mesh(format!(
                     "its .off would read back glued otherwise along alpha_{i} at dart {d} (two edges \
                      between the same vertices, or an edge of a vertex to itself)"

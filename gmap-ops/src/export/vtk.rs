@@ -46,7 +46,7 @@ use std::path::Path;
 
 use gmap_core::{AlphaSet, Dart, DenseLabels, DenseMap, LabelValue, Point};
 
-use super::{write_atomic, ExportError};
+use super::error::{write_atomic, ExportError};
 
 const VTK_VERTEX: u8 = 1;
 const VTK_LINE: u8 = 3;
@@ -284,9 +284,12 @@ pub fn vtk_string_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<St
     }
     let verts = map.cells(0);
     let mut pts: Vec<Point> = Vec::with_capacity(verts.len());
-    for &Dart(r) in &verts.reps {
-        let p =
-            map.vertex_point(Dart(r)).ok_or(ExportError::VertexPoint { format: ".vtk", dart: r, what: "no point" })?;
+    for r in verts.reps.iter().map(|d| d.get()) {
+        let p = map.vertex_point(Dart::new(r)).ok_or(ExportError::VertexPoint {
+            format: ".vtk",
+            dart: r,
+            what: "no point",
+        })?;
         if !p.iter().all(|c| c.is_finite()) {
             return Err(ExportError::VertexPoint { format: ".vtk", dart: r, what: "a point that is not finite" });
         }
@@ -423,9 +426,9 @@ mod tests {
         assert_eq!(e.to_string(), "the map has no points: .vtk needs coordinates for every vertex");
         assert!(matches!(vtk_string(&DenseMap::new(4, 1)), Err(ExportError::DimensionAbove { .. })));
         let mut half = sq.clone();
-        half.set_point(Dart(0), None);
-        half.set_point(Dart(7), None);
-        half.set_point(Dart(4), Some([f64::NAN, 0.0, 0.0]));
+        half.set_point(Dart::new(0), None);
+        half.set_point(Dart::new(7), None);
+        half.set_point(Dart::new(4), Some([f64::NAN, 0.0, 0.0]));
         assert_eq!(
             vtk_string(&half).unwrap_err().to_string(),
             "the vertex of dart 0 has no point: .vtk needs finite coordinates for every vertex"
@@ -433,12 +436,12 @@ mod tests {
         // a 1-map: the square's boundary
         let mut c = DenseMap::new(1, 4);
         for (a, b) in [(0, 1), (2, 3)] {
-            c.link(Dart(a), Dart(b), 0);
+            c.link(Dart::new(a), Dart::new(b), 0);
         }
-        c.link(Dart(1), Dart(2), 1);
-        c.link(Dart(3), Dart(0), 1);
+        c.link(Dart::new(1), Dart::new(2), 1);
+        c.link(Dart::new(3), Dart::new(0), 1);
         for d in 0..4 {
-            c.set_point(Dart(d), Some([d as f64, 0.0, 0.0]));
+            c.set_point(Dart::new(d), Some([d as f64, 0.0, 0.0]));
         }
         let text = vtk_string(&c).unwrap();
         assert!(text.contains("POINTS 2 double\n"), "{text}");

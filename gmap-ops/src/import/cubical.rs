@@ -19,7 +19,7 @@ use std::path::Path;
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{read_bytes, FileError, ImportError};
+use super::common::{read_bytes, FileError, ImportError};
 
 /// The largest bounding box accepted, in unit cubes (one byte each in the bitmap), whatever
 /// the memory limit: the cells of its closure are numbered with `u32`. Below it, a box is
@@ -137,7 +137,7 @@ impl CubicalSet {
                 let old = c * per + k;
                 let me = first[c] + k as u32;
                 for i in 0..=d {
-                    let t = grid.alpha(gmap_core::Dart(old as u32), i).0 as usize;
+                    let t = grid.alpha(gmap_core::Dart::new(old as u32), i).index();
                     let (tc, tk) = (t / per, t % per);
                     alpha.push(if first[tc] == u32::MAX { me } else { first[tc] + tk as u32 });
                 }

@@ -692,15 +692,7 @@ fn parse_npy(storage: Storage) -> Result<Image, ImportError> {
             descr
         )));
     }
-    Ok(Image {
-        shape,
-        order: if fortran { Order::Fortran } else { Order::C },
-        dtype,
-        big_endian,
-        storage,
-        offset,
-        len,
-    })
+    Ok(Image { shape, order: if fortran { Order::Fortran } else { Order::C }, dtype, big_endian, storage, offset, len })
 }
 
 fn parse_descr(descr: &str) -> Result<(Dtype, bool), ImportError> {
@@ -736,7 +728,8 @@ struct Header {
 /// a structured dtype, refused), `fortran_order` (`True`/`False`) and `shape` (a tuple of
 /// integers), then spaces and a newline.
 fn parse_header_dict(text: &str) -> Result<Header, ImportError> {
-    let bad = |m: &str| format(format!("bad .npy header {}: {m}", gmap_core::io::shorten(text.trim_end().as_bytes(), 120)));
+    let bad =
+        |m: &str| format(format!("bad .npy header {}: {m}", gmap_core::io::shorten(text.trim_end().as_bytes(), 120)));
     let mut p = Parser { s: text.as_bytes(), i: 0 };
     let mut h = Header::default();
     p.ws();
@@ -894,13 +887,5 @@ fn parse_dipha(storage: Storage) -> Result<Image, ImportError> {
             shape_text(&shape)
         )));
     }
-    Ok(Image {
-        shape,
-        order: Order::Fortran,
-        dtype: Dtype::F64,
-        big_endian: false,
-        storage,
-        offset,
-        len,
-    })
+    Ok(Image { shape, order: Order::Fortran, dtype: Dtype::F64, big_endian: false, storage, offset, len })
 }

@@ -14,7 +14,7 @@ use gmap_core::{Dart, DenseMap, Point};
 
 use gmap_core::io::shorten;
 
-use super::{default_max_darts, FileError, ImportError};
+use super::common::{default_max_darts, FileError, ImportError};
 
 /// A polygon mesh: points, and polygons as lists of point indices, each with its input line.
 #[derive(Clone, Debug, PartialEq)]
@@ -157,10 +157,10 @@ impl PolygonMesh {
             let k = p.len();
             let o = offsets[f];
             for j in 0..k {
-                let a = Dart((o + 2 * j) as u32);
-                let b = Dart((o + 2 * j + 1) as u32);
+                let a = Dart::new((o + 2 * j) as u32);
+                let b = Dart::new((o + 2 * j + 1) as u32);
                 m.link(a, b, 0);
-                m.link(b, Dart((o + (2 * j + 2) % (2 * k)) as u32), 1);
+                m.link(b, Dart::new((o + (2 * j + 2) % (2 * k)) as u32), 1);
                 m.set_point(a, Some(self.points[p[j] as usize]));
                 m.set_point(b, Some(self.points[p[(j + 1) % k] as usize]));
             }
@@ -169,7 +169,7 @@ impl PolygonMesh {
         let at = |f: usize, j: usize, v: u32| {
             let p = &self.polygons[f];
             let o = offsets[f] + 2 * j;
-            Dart(if p[j] == v { o } else { o + 1 } as u32)
+            Dart::new(if p[j] == v { o } else { o + 1 } as u32)
         };
         for ((f, j), (g, k)) in pairs {
             let p = &self.polygons[f];
@@ -235,7 +235,7 @@ pub fn read_off(path: &Path) -> Result<DenseMap, FileError> {
 /// Reads an `.off` file into a 2-map with points, refusing more than `max_darts` darts
 /// (default: [`default_max_darts`]) while the polygons are read, before the map is built.
 pub fn read_off_with(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let limit = max_darts.unwrap_or_else(|| default_max_darts(2));
     PolygonMesh::parse_limited(&text, limit).and_then(|m| m.to_gmap()).map_err(|e| FileError::new(path, e))
 }
@@ -253,7 +253,7 @@ mod tests {
         assert_eq!(m.dart_count(), 12);
         assert_eq!(m.cell_counts(), vec![4, 5, 2]);
         assert!(m.is_orientable());
-        assert_eq!(m.vertex_point(Dart(0)), Some([0.0, 0.0, 0.0]));
+        assert_eq!(m.vertex_point(Dart::new(0)), Some([0.0, 0.0, 0.0]));
     }
 
     #[test]

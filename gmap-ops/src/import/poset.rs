@@ -36,6 +36,7 @@ use thiserror::Error;
 
 /// Why a face poset is not that of a regular cell complex that a G-map can hold.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum PosetError {
     /// The poset has no cell.
     #[error("the incidence graph has no cell")]

@@ -32,10 +32,7 @@ pub fn read_raster(path: &Path) -> Result<Image, FileError> {
     } else if bytes.starts_with(b"P2") || bytes.starts_with(b"P5") {
         parse_pgm(&bytes)
     } else {
-        Err(format(format!(
-            "not a PGM (P2, P5) or PNG file: it starts with {:02x?}",
-            &bytes[..bytes.len().min(8)]
-        )))
+        Err(format(format!("not a PGM (P2, P5) or PNG file: it starts with {:02x?}", &bytes[..bytes.len().min(8)])))
     };
     r.map_err(|e| FileError::new(path, e))
 }
@@ -149,7 +146,9 @@ pub fn parse_png(bytes: &[u8]) -> Result<Image, ImportError> {
     match depth {
         png::BitDepth::Sixteen => {
             let values = (0..h)
-                .flat_map(|r| data[r * line..r * line + 2 * w].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]])))
+                .flat_map(|r| {
+                    data[r * line..r * line + 2 * w].chunks_exact(2).map(|c| u16::from_be_bytes([c[0], c[1]]))
+                })
                 .collect();
             Image::from_values(&[h, w], Order::C, values)
         }

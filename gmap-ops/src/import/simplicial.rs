@@ -17,7 +17,7 @@ use rustc_hash::FxBuildHasher;
 use gmap_core::io::shorten;
 use gmap_core::DenseMap;
 
-use super::{available_memory, bytes_per_dart, default_max_darts, FileError, ImportError};
+use super::common::{available_memory, bytes_per_dart, default_max_darts, FileError, ImportError};
 use crate::perm::{factorial, rank, PermTable};
 
 /// A simplicial complex given by its facets, each with its vertices sorted, and the line of
@@ -99,7 +99,7 @@ impl SimplicialComplex {
         Self::from_facets_with_lines(facets.into_iter().enumerate().map(|(k, f)| (k + 1, f)))
     }
 
-    /// Parses the `.facets` format (CONTRACT §2): one facet per line, vertex labels as
+    /// Parses the `.facets` format (docs/FORMATS.md): one facet per line, vertex labels as
     /// non-negative integers separated by white space or commas, `#` starts a comment,
     /// blank lines skipped. A label is what `str::parse::<u64>` takes: decimal digits with an
     /// optional leading `+`, at most `u64::MAX`. The first token that is not a label is an
@@ -196,6 +196,10 @@ impl SimplicialComplex {
             vertices.push('\n');
         }
         let sc = Self::parse_facets(&vertices)?;
+        if values.is_empty() {
+            // colons in comments only
+            return Ok((sc, None));
+        }
         let lines = sc.lines.iter().copied().chain(sc.others.iter().map(|(l, _)| *l));
         let vals = lines
             .map(|line| {
@@ -322,6 +326,15 @@ impl SimplicialComplex {
             .checked_mul(bytes_per_dart(self.dim))?
             .checked_add(tables)?
             .checked_add(self.total as u64 * m * 36)
+    }
+
+    /// The G-map of the complex as the readers make it: refused past `max_darts` darts
+    /// (default: [`default_max_darts`] at the complex's dimension, within the memory budget),
+    /// the memory estimate checked first (see [`SimplicialComplex::to_gmap`] for the other
+    /// refusals).
+    pub fn to_gmap_within(&self, max_darts: Option<u64>) -> Result<DenseMap, ImportError> {
+        let limit = import_limit(self, max_darts)?;
+        self.to_gmap(limit)
     }
 
     /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
@@ -884,39 +897,37 @@ fn import_limit(sc: &SimplicialComplex, max_darts: Option<u64>) -> Result<u64, I
 /// Reads a `.facets` file into a G-map, refusing more than `max_darts` darts (default:
 /// [`default_max_darts`]) or more than the memory limit before allocating.
 pub fn read_facets(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let sc = SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))?;
-    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
-    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+    sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.facets` file as a simplicial complex, without making a G-map of it (any
 /// finite simplicial complex: mixed dimensions, ridges in any number of facets).
 pub fn read_facets_complex(path: &Path) -> Result<SimplicialComplex, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.facets` file whose facets may carry values
 /// ([`SimplicialComplex::parse_valued_facets`]).
 pub fn read_valued_facets(path: &Path) -> Result<(SimplicialComplex, Option<Vec<f64>>), FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     SimplicialComplex::parse_valued_facets(&text).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads the complex `name` (or the first) of a `.lex` file, without making a G-map of it.
 pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialComplex, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))
 }
 
 /// Reads a `.lex` file (the complex `name`, or the first one) into a G-map; see
 /// [`read_facets`] for the limit.
 pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Result<DenseMap, FileError> {
-    let text = super::read_text(path)?;
+    let text = super::common::read_text(path)?;
     let sc = SimplicialComplex::parse_lex(&text, name).map_err(|e| FileError::new(path, e))?;
-    let limit = import_limit(&sc, max_darts).map_err(|e| FileError::new(path, e))?;
-    sc.to_gmap(limit).map_err(|e| FileError::new(path, e))
+    sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
 
 #[cfg(test)]
@@ -929,6 +940,8 @@ mod tests {
         assert_eq!(sc.all_facets(), vec![&[1, 2, 3][..], &[2, 3, 4][..], &[5, 6][..]]);
         assert_eq!(v, Some(vec![0.5, -100.0, 7.0]));
         let (_, v) = SimplicialComplex::parse_valued_facets("1 2\n").unwrap();
+        assert_eq!(v, None);
+        let (_, v) = SimplicialComplex::parse_valued_facets("# a: comment\n1 2\n").unwrap();
         assert_eq!(v, None);
         let e = SimplicialComplex::parse_valued_facets("1 2 : 1\n2 3\n").unwrap_err().to_string();
         assert!(e.starts_with("line 2:"), "{e}");

@@ -158,7 +158,7 @@ pub fn counts(g: &GMap) -> Vec<usize> {
 
 /// The dense dart of index k.
 pub fn dart(k: u32) -> Dart {
-    Dart(k)
+    Dart::new(k)
 }
 
 /// Four darts of a closed path of edges on the boundary of a volume, one per edge: from each,

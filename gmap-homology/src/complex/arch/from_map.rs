@@ -6,10 +6,12 @@ use thiserror::Error;
 
 use super::{ArchComplex, ArchError, Region, RegionId};
 use crate::cellular::incidence::incidence_terms;
-use crate::cellular::precond::{check_preconditions, oriented_cells, OrientedCells, PreconditionError};
+use crate::cellular::oriented::{oriented_cells, OrientedCells};
+use crate::cellular::precond::{check_preconditions, PreconditionError};
 
 /// Why the cells of a G-map do not give an architectural complex.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum FromMapError {
     /// a cell is not orientable as a compacted cell (condition C1): no signed incidences
     #[error(transparent)]

@@ -50,6 +50,7 @@ pub struct Entry {
 
 /// Why data is not an architectural complex (AC Def. 3.1). Regions are named by id.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum ArchError {
     /// A new region is needed but every `u64` id above the largest one is taken.
     #[error("no region id is left above the largest id in use ({max})", max = u64::MAX)]

@@ -39,6 +39,7 @@ use crate::engine::sparse::SparseMatrix;
 
 /// Why edges and points do not make a connected planar straight-line graph.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum ArrangementError {
     /// There are no edges.
     #[error("an arrangement needs at least one edge")]

@@ -7,6 +7,7 @@ use super::{SignedSet, TmModel};
 /// A violation of the topological edit check (TM §XI), naming the cell and the condition
 /// ((7:5) for a boundary, (7:6) for a coboundary) and where it fails.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum TmDefect {
     /// TM (7:5) fails: the boundary of a k-cell is not a (k-1)-circuit. `at` occurs `plus`
     /// times positively and `minus` times negatively in the boundary of that boundary (for

@@ -48,8 +48,10 @@
 
 use gmap_core::{Attributes, DartId, GMap, Point};
 
+use super::common::{edge_middle, live};
 use super::edges::{dangling_counted, try_insert_edge_between_faces};
 use super::split::{edge_cut, split_counted};
+use super::EulerError;
 #[cfg(doc)]
 use super::{
     can_close, can_insert_dangling_edge, can_insert_edge, can_insert_edge_between_faces, can_insert_vertex,
@@ -62,7 +64,6 @@ use super::{
     can_star_cell, can_star_face, insert_barycenter_in_cell, insert_cell_0_in_cell_2, insert_point_in_cell,
     is_insertable_barycenter_in_cell, is_insertable_cell_0_in_cell_2, try_star_cell, try_star_face,
 };
-use super::{edge_middle, live, EulerError};
 
 /// Whether [`insert_cell_0_in_cell_1`] would succeed ([`can_insert_vertex`]).
 pub fn is_insertable_cell_0_in_cell_1<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {

@@ -5,7 +5,8 @@ use rustc_hash::FxHashMap as HashMap;
 
 use gmap_core::{Attributes, DartId, GMap};
 
-use super::{debug_check, diff, reconcile, EulerError};
+use super::common::{debug_check, diff, reconcile};
+use super::EulerError;
 
 /// What [`try_close`] did: the darts added and the change of cells. The change of
 /// homology depends on the whole boundary being closed (a disc closes to a sphere, an

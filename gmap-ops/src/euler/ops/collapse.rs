@@ -7,7 +7,8 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use gmap_core::union_find::UnionFind;
 use gmap_core::{AlphaSet, Attributes, DartId, GMap};
 
-use super::{debug_check, diff, live, local_counts, op_name, reconcile, EulerError};
+use super::common::{debug_check, diff, live, local_counts, op_name, reconcile};
+use super::EulerError;
 use crate::euler::vector::{EpVector, EulerOp};
 
 /// A removal of an i-cell, which merges the two (i+1)-cells on its sides, or a contraction,

@@ -11,7 +11,8 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::{AlphaSet, Attributes, DartId, GMap, Point};
 
-use super::{debug_check, diff, live, local_counts, reconcile, EulerError};
+use super::common::{debug_check, diff, live, local_counts, reconcile};
+use super::EulerError;
 use crate::euler::vector::{EpVector, EulerOp};
 
 /// The copies of the corner of `d` across `alpha_3 … alpha_n`, checked: `n >= 2`, none

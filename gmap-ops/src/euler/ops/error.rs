@@ -5,6 +5,7 @@ use thiserror::Error;
 
 /// Why an Euler operator cannot be applied. Each variant names the offending dart.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum EulerError {
     /// A handle does not name a live dart.
     #[error("dart {0:?} does not exist")]

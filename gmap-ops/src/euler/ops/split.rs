@@ -5,7 +5,8 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::{AlphaSet, Attributes, DartId, GMap, Point};
 
-use super::{debug_check, diff, edge_middle, live, local_counts, op_name, reconcile, EulerError};
+use super::common::{debug_check, diff, edge_middle, live, local_counts, op_name, reconcile};
+use super::EulerError;
 use crate::euler::vector::{EpVector, EulerOp};
 
 /// The darts on side A of a cut of an i-cell: the closure of `seeds` under `alpha_k`

@@ -10,7 +10,8 @@ use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 use gmap_core::{Attributes, DartId, GMap, MapView, Point};
 
-use super::{distinct_cells, EulerError};
+use super::common::distinct_cells;
+use super::EulerError;
 use crate::euler::vector::{cell_letter, EpVector, EulerOp};
 
 /// What [`try_star_cell`] did: where the new vertex is and the change of cells.

@@ -53,6 +53,7 @@ pub struct Component {
 
 /// Why an EO operator is refused. On a refusal the object is unchanged.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum StrataError {
     /// No live stratum with this number.
     #[error("no stratum {0}")]

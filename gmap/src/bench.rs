@@ -1,0 +1,381 @@
+//! Every route of an input, timed by stage (`gmap bench`, and what a benchmark of the
+//! library calls).
+//!
+//! Each route that [`crate::homology`] has for an input is run and timed: for a simplicial
+//! complex the direct route (every face of every facet a cell), then the two routes of its
+//! G-map, which say why they do not apply when the complex has none; for a G-map the cellular
+//! route (cells and the C1/C2 checks, border operator, reduction, Smith form) and the
+//! simplicial counterpart; for a cubical set the cubical complex; for an architectural
+//! complex the completion by zero of its boundary matrix. A route that does not apply gives a
+//! run with its reason, and so does one whose estimated memory is over the policy
+//! (`gmap_core::resources`): it is skipped before anything is allocated.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use gmap_homology::border::border_from_oriented;
+use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, ChainComplex, Homology};
+use serde_json::{json, Value};
+
+use crate::error::{err, Result};
+use crate::input::{extension, open_with, Input, OpenOptions, INPUT_EXTENSIONS};
+use crate::progress::Progress;
+use crate::route::{check_simplicial_size, face_complex_within};
+
+/// Stage times of one route, in milliseconds; `None` for a stage the route does not have.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Times {
+    /// reading the file (and making the G-map of a simplicial complex)
+    pub read: f64,
+    /// the cells and the C1/C2 checks
+    pub cells: Option<f64>,
+    /// the border operator (or the chain complex of the route)
+    pub border: Option<f64>,
+    /// the fill-free reduction and the sparse elimination
+    pub reduction: Option<f64>,
+    /// the Smith normal form of what is left
+    pub smith: Option<f64>,
+}
+
+impl Times {
+    /// The sum of the stages.
+    pub fn total(&self) -> f64 {
+        self.read
+            + self.cells.unwrap_or(0.0)
+            + self.border.unwrap_or(0.0)
+            + self.reduction.unwrap_or(0.0)
+            + self.smith.unwrap_or(0.0)
+    }
+}
+
+/// One route of one input, run and timed.
+#[derive(Clone, Debug)]
+pub struct RouteRun {
+    /// the input as named
+    pub input: String,
+    /// `direct`, `cellular`, `simplicial`, `cubical`, or `read` for an input that could
+    /// not be read
+    pub route: &'static str,
+    /// cells per dimension of the chain complex reduced (empty when the route failed first)
+    pub cells: Vec<usize>,
+    /// the stage times
+    pub times: Times,
+    /// the groups, or why the route does not apply
+    pub result: std::result::Result<Homology, String>,
+    /// whether every route that applies to this input gives the same groups
+    pub agree: bool,
+}
+
+fn ms(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1000.0
+}
+
+/// The files named by `inputs`: a file as given, a folder as its supported files sorted by
+/// name (not recursive), each with whether it was found in a folder. A folder with no
+/// supported file is an error.
+pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
+    let mut files = Vec::new();
+    for p in inputs {
+        if p.is_dir() {
+            let mut found: Vec<PathBuf> = std::fs::read_dir(p)
+                .map_err(|e| {
+                    crate::Error::from_source(crate::ErrorKind::Parse, &e)
+                        .context(format!("{}: cannot read the folder", p.display()))
+                })?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|f| f.is_file() && INPUT_EXTENSIONS.contains(&extension(f).as_str()))
+                .collect();
+            if found.is_empty() {
+                return Err(err!(
+                    Parse,
+                    "{}: the folder holds no supported input ({})",
+                    p.display(),
+                    INPUT_EXTENSIONS.join(", ")
+                ));
+            }
+            found.sort();
+            files.extend(found.into_iter().map(|f| (f, true)));
+        } else {
+            files.push((p.clone(), false));
+        }
+    }
+    Ok(files)
+}
+
+/// The runs of every input (files, or folders of them): a file found in a folder that
+/// cannot be read is a run with route `read` and the reason; one named is an error.
+pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) -> Result<Vec<RouteRun>> {
+    let listed = expand_inputs(inputs)?;
+    progress.steps(listed.len() as u64, "");
+    let mut runs = Vec::new();
+    for (f, in_folder) in &listed {
+        progress.step(&f.display().to_string());
+        match bench_file(f, max_darts) {
+            Ok(r) => runs.extend(r),
+            Err(e) if *in_folder => runs.push(RouteRun {
+                input: f.display().to_string(),
+                route: "read",
+                cells: Vec::new(),
+                times: Times::default(),
+                result: Err(format!("cannot read: {e}")),
+                agree: true,
+            }),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(runs)
+}
+
+/// The runs of one file: reading it timed, then [`routes`].
+pub fn bench_file(path: &Path, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+    let t = Instant::now();
+    let input = open_with(path, &OpenOptions::max_darts(max_darts))?;
+    let read = ms(t);
+    routes_timed(&input, read, max_darts)
+}
+
+/// Every route of an input, run and timed (reading not included). A simplicial complex
+/// whose faces are over `max_darts` is an error (its direct route is where its groups come
+/// from); a route that does not apply is a run with the reason.
+pub fn routes(input: &Input, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+    routes_timed(input, 0.0, max_darts)
+}
+
+fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+    let name = input.path().display().to_string();
+    let mut runs = Vec::new();
+    let mut push = |route, cells: Vec<usize>, times, result| {
+        runs.push(RouteRun { input: name.clone(), route, cells, times, result, agree: true })
+    };
+    let map_read;
+    let owned;
+    let map = match input {
+        Input::Simplicial(sc) => {
+            // the direct route first (every face of every facet a cell, as `homology` does by
+            // default): it applies to any complex, so one without a G-map still gets its groups
+            let mut times = Times { read, ..Times::default() };
+            let t = Instant::now();
+            let fc = face_complex_within(sc, max_darts, &name, false)?;
+            times.border = Some(ms(t));
+            let (cells, r) = reduce(&fc.chain, &mut times);
+            push("direct", cells, times, r);
+            let t = Instant::now();
+            match sc.to_gmap_within(max_darts) {
+                Ok(m) => {
+                    map_read = read + ms(t);
+                    owned = m;
+                    Some(&owned)
+                }
+                Err(e) => {
+                    let why = format!("does not apply: {e}");
+                    let times = Times { read: read + ms(t), ..Times::default() };
+                    push("cellular", Vec::new(), times.clone(), Err(why.clone()));
+                    push("simplicial", Vec::new(), times, Err(why));
+                    return Ok(runs);
+                }
+            }
+        }
+        Input::Map(m) => {
+            map_read = read;
+            Some(m.map())
+        }
+        Input::Cubical(set) => {
+            // the cubical complex of the closure, after collapses of free faces
+            map_read = read;
+            let mut times = Times { read, ..Times::default() };
+            let t = Instant::now();
+            let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
+            times.border = Some(ms(t));
+            match c {
+                Ok(c) => {
+                    let (cells, r) = reduce(&c.chain, &mut times);
+                    push("cubical", cells, times, r);
+                }
+                Err(e) => push("cubical", Vec::new(), times, Err(e.to_string())),
+            }
+            None
+        }
+        Input::Arch(x) => {
+            map_read = read;
+            let mut times = Times { read, ..Times::default() };
+            let t = Instant::now();
+            let c = x.chain_complex();
+            times.border = Some(ms(t));
+            let (cells, r) = reduce(&c, &mut times);
+            push("cellular", cells, times, r);
+            None
+        }
+    };
+    if let Some(map) = map {
+        // cellular: cells and C1/C2 checks, border, reduction
+        let mut times = Times { read: map_read, ..Times::default() };
+        let t = Instant::now();
+        let checked = check_preconditions(map);
+        times.cells = Some(ms(t));
+        match checked {
+            Ok(oriented) => {
+                let t = Instant::now();
+                let c = border_from_oriented(map, &oriented);
+                times.border = Some(ms(t));
+                drop(oriented);
+                let (cells, r) = reduce(&c.chain, &mut times);
+                push("cellular", cells, times, r);
+            }
+            Err(e) => push("cellular", map.cell_counts(), times, Err(format!("does not apply: {e}"))),
+        }
+        // simplicial counterpart: one n-simplex per dart, within the memory policy (its size
+        // is exponential in the dimension)
+        let mut times = Times { read: map_read, ..Times::default() };
+        match check_simplicial_size(map, &name) {
+            Ok(()) => {
+                let t = Instant::now();
+                let s = simplicial_complex(map);
+                times.border = Some(ms(t));
+                let (cells, r) = reduce(&s, &mut times);
+                push("simplicial", cells, times, r);
+            }
+            Err(e) => push("simplicial", Vec::new(), times, Err(format!("skipped: {e}"))),
+        }
+    }
+    let ok: Vec<&Homology> = runs.iter().filter_map(|r| r.result.as_ref().ok()).collect();
+    let agree = ok.windows(2).all(|w| w[0] == w[1]);
+    for r in &mut runs {
+        r.agree = agree;
+    }
+    Ok(runs)
+}
+
+/// Integer homology of `c`, its sparse reduction and its Smith form timed apart.
+fn reduce(c: &ChainComplex, times: &mut Times) -> (Vec<usize>, std::result::Result<Homology, String>) {
+    let (h, stages) = homology_z_staged(c);
+    times.reduction = Some(stages.reduction.as_secs_f64() * 1e3);
+    times.smith = Some(stages.smith.as_secs_f64() * 1e3);
+    (c.counts().to_vec(), h.map_err(|e| e.to_string()))
+}
+
+fn groups(r: &RouteRun) -> String {
+    match &r.result {
+        Ok(h) => h.to_string(),
+        Err(e) => format!("n/a: {e}"),
+    }
+}
+
+fn opt(x: Option<f64>) -> Value {
+    x.map_or(Value::Null, |v| json!(v))
+}
+
+fn cells_text(r: &RouteRun) -> String {
+    r.cells.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(" ")
+}
+
+/// The runs as one JSON object `{"rows": [...]}`.
+pub fn to_json(runs: &[RouteRun]) -> Value {
+    let list: Vec<Value> = runs
+        .iter()
+        .map(|r| {
+            let mut v = json!({
+                "input": r.input,
+                "route": r.route,
+                "cells": r.cells,
+                "times_ms": {
+                    "read": r.times.read,
+                    "cells": opt(r.times.cells),
+                    "border": opt(r.times.border),
+                    "reduction": opt(r.times.reduction),
+                    "smith": opt(r.times.smith),
+                    "total": r.times.total(),
+                },
+                "agree": r.agree,
+            });
+            match &r.result {
+                Ok(h) => {
+                    v["groups"] = json!(h.to_string());
+                    v["betti"] = json!(h.betti);
+                    v["torsion"] = json!(h.torsion);
+                    v["error"] = Value::Null;
+                }
+                Err(e) => {
+                    v["groups"] = Value::Null;
+                    v["betti"] = Value::Null;
+                    v["torsion"] = Value::Null;
+                    v["error"] = json!(e);
+                }
+            }
+            v
+        })
+        .collect();
+    json!({ "rows": list })
+}
+
+fn num(x: Option<f64>) -> String {
+    x.map_or(String::new(), |v| format!("{v:.3}"))
+}
+
+/// A CSV field, quoted when it holds a comma, a quote or a line break.
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// The runs as CSV: a header line, then one line per run.
+pub fn to_csv(runs: &[RouteRun]) -> String {
+    let mut out = String::from(
+        "input,route,cells,read_ms,cells_ms,border_ms,reduction_ms,smith_ms,total_ms,groups,betti,torsion,agree\n",
+    );
+    for r in runs {
+        let (betti, torsion) = match &r.result {
+            Ok(h) => (json!(h.betti).to_string(), json!(h.torsion).to_string()),
+            Err(_) => (String::new(), String::new()),
+        };
+        let fields = [
+            r.input.clone(),
+            r.route.to_string(),
+            cells_text(r),
+            num(Some(r.times.read)),
+            num(r.times.cells),
+            num(r.times.border),
+            num(r.times.reduction),
+            num(r.times.smith),
+            num(Some(r.times.total())),
+            groups(r),
+            betti,
+            torsion,
+            r.agree.to_string(),
+        ];
+        let line: Vec<String> = fields.iter().map(|f| csv_field(f)).collect();
+        out.push_str(&line.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// The runs as a Markdown table.
+pub fn to_markdown(runs: &[RouteRun]) -> String {
+    use std::fmt::Write as _;
+    let dash = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.2}"));
+    let mut out = String::from(
+        "| input | route | cells | read ms | cells+checks ms | border ms | reduction ms | Smith ms | total ms | homology | agree |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---|---|\n",
+    );
+    for r in runs {
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.2} | {} | {} |",
+            r.input.replace('|', "\\|"),
+            r.route,
+            cells_text(r),
+            r.times.read,
+            dash(r.times.cells),
+            dash(r.times.border),
+            dash(r.times.reduction),
+            dash(r.times.smith),
+            r.times.total(),
+            groups(r).replace('|', "\\|"),
+            if r.agree { "yes" } else { "NO" },
+        );
+    }
+    out
+}

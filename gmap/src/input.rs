@@ -1,0 +1,308 @@
+//! Opening any input: the reader is chosen by the file's extension (docs/FORMATS.md), and
+//! what the file holds comes back as an [`Input`].
+//!
+//! | extension | reader | [`Input`] |
+//! |---|---|---|
+//! | `.gmap`, `.moka`, `.off` | `gmap_core::io`, `gmap_ops::import` | [`Input::Map`] |
+//! | `.facets`, `.lex[#name]` | `gmap_ops::import::SimplicialComplex` | [`Input::Simplicial`] |
+//! | `.cub`, `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
+//! | `.json` | `gmap_homology::json` | [`Input::Arch`] |
+//!
+//! `.vtk` and `.dot` are written only, as views: opening one is refused with that reason.
+//! The memory policy (`gmap_core::resources`) applies to every reader: a file whose
+//! estimated cost is over the limit is refused before it is read.
+
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+use gmap_core::{DenseLabels, DenseMap, LabelledGMap};
+use gmap_homology::arch::ArchComplex;
+use gmap_ops::import::{CubicalSet, SimplicialComplex};
+
+use crate::error::{err, Error, Result};
+
+/// The extensions [`open`] reads (the files `gmap bench` takes from a folder).
+pub const INPUT_EXTENSIONS: &[&str] = &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm"];
+
+/// Options of [`open_with`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct OpenOptions {
+    /// refuse a map with more darts than this (default: what the memory budget holds); for
+    /// a simplicial complex, the limit of its G-map, made when a route asks for it
+    pub max_darts: Option<u64>,
+}
+
+impl OpenOptions {
+    /// Options with a dart limit.
+    pub fn max_darts(max_darts: Option<u64>) -> Self {
+        OpenOptions { max_darts }
+    }
+}
+
+/// What an input file holds.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum Input {
+    /// a generalized map (`.gmap`, `.moka`, `.off`)
+    Map(MapInput),
+    /// a simplicial complex (`.facets`, `.lex`): every route starts from its facets
+    Simplicial(Sourced<SimplicialComplex>),
+    /// a full cubical set (`.cub`, `.pbm`)
+    Cubical(Sourced<CubicalSet>),
+    /// an architectural complex or incidence graph (`.json`)
+    Arch(Sourced<ArchComplex>),
+}
+
+/// A generalized map with the file it came from.
+#[derive(Debug)]
+pub struct MapInput {
+    map: DenseMap,
+    source: Source,
+    /// the map with the labels of its cells, read when first asked for (`.gmap` only)
+    labelled: OnceLock<std::result::Result<Box<LabelledGMap>, Error>>,
+}
+
+/// What a file held, with the file it came from (messages name it). Derefs to the value.
+#[derive(Debug)]
+pub struct Sourced<T> {
+    value: T,
+    source: Source,
+}
+
+/// Where an input came from: the file (for messages) and the dart limit it was opened with.
+#[derive(Clone, Debug, Default)]
+struct Source {
+    path: PathBuf,
+    max_darts: Option<u64>,
+}
+
+impl Input {
+    /// The dimension of what the input holds.
+    pub fn dim(&self) -> usize {
+        match self {
+            Input::Map(m) => m.map.dim(),
+            Input::Simplicial(s) => s.dim(),
+            Input::Cubical(c) => c.dim(),
+            Input::Arch(x) => x.dim(),
+        }
+    }
+
+    /// The name of what the input holds: `"map"`, `"simplicial complex"`, `"cubical set"`,
+    /// `"architectural complex"`.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Input::Map(_) => "map",
+            Input::Simplicial(_) => "simplicial complex",
+            Input::Cubical(_) => "cubical set",
+            Input::Arch(_) => "architectural complex",
+        }
+    }
+
+    /// The file the input was read from (empty for one built in memory).
+    pub fn path(&self) -> &Path {
+        match self {
+            Input::Map(m) => m.path(),
+            Input::Simplicial(s) => s.path(),
+            Input::Cubical(c) => c.path(),
+            Input::Arch(x) => x.path(),
+        }
+    }
+
+    /// The G-map of the input: the map itself, or the G-map of a simplicial complex's facets
+    /// (a pure pseudo-manifold; refused with the reason otherwise). Cubical sets and
+    /// architectural complexes have none here.
+    pub fn to_map(&self) -> Result<std::borrow::Cow<'_, DenseMap>> {
+        match self {
+            Input::Map(m) => Ok(std::borrow::Cow::Borrowed(&m.map)),
+            Input::Simplicial(s) => s.to_gmap().map(std::borrow::Cow::Owned),
+            other => Err(err!(Precondition, "a {} is not a G-map", other.kind())),
+        }
+    }
+}
+
+impl MapInput {
+    /// A map built in memory (no file).
+    pub fn new(map: DenseMap) -> Self {
+        MapInput { map, source: Source::default(), labelled: OnceLock::new() }
+    }
+
+    /// The map.
+    pub fn map(&self) -> &DenseMap {
+        &self.map
+    }
+
+    /// The map, taken out.
+    pub fn into_map(self) -> DenseMap {
+        self.map
+    }
+
+    /// The file the map was read from (empty for a map built in memory).
+    pub fn path(&self) -> &Path {
+        &self.source.path
+    }
+
+    /// The map with its points and the labels of every dimension, when it was read from a
+    /// `.gmap` file (which carries them); `None` for other sources. Read again from the file
+    /// the first time it is asked for, so that opening a map for its groups pays nothing for
+    /// labels.
+    pub fn labelled(&self) -> Option<Result<&LabelledGMap>> {
+        if extension(&self.source.path) != "gmap" {
+            return None;
+        }
+        let read = self.labelled.get_or_init(|| {
+            let opts = gmap_core::io::ReadOptions { max_darts: self.source.max_darts };
+            gmap_core::io::read_labelled_gmap_with(&self.source.path, &opts)
+                .map(Box::new)
+                .map_err(|e| limit_hint(e.into()))
+        });
+        Some(read.as_ref().map(|g| &**g).map_err(Clone::clone))
+    }
+
+    /// The labels of the map's cells numbered as [`DenseMap::cells`] numbers them, with the
+    /// map they number (the labelled file's own dense map); `None` for sources without labels.
+    pub fn dense_labels(&self) -> Option<Result<(DenseMap, DenseLabels)>> {
+        self.labelled().map(|g| {
+            g.map(|g| {
+                let (m, labels, _) = gmap_core::to_dense_labels(g);
+                (m, labels)
+            })
+        })
+    }
+}
+
+impl<T> Sourced<T> {
+    /// A value built in memory (no file).
+    pub fn new(value: T) -> Self {
+        Sourced { value, source: Source::default() }
+    }
+
+    /// The value.
+    pub fn get(&self) -> &T {
+        &self.value
+    }
+
+    /// The value, taken out.
+    pub fn into_inner(self) -> T {
+        self.value
+    }
+
+    /// The file the value was read from (empty for one built in memory).
+    pub fn path(&self) -> &Path {
+        &self.source.path
+    }
+}
+
+impl<T> std::ops::Deref for Sourced<T> {
+    type Target = T;
+    fn deref(&self) -> &T {
+        &self.value
+    }
+}
+
+impl Sourced<SimplicialComplex> {
+    /// The G-map of the facets (a pure pseudo-manifold), refused past the dart limit the
+    /// input was opened with (default: what the memory budget holds) and with the reason
+    /// when the complex has none (a ridge in three facets, mixed dimensions).
+    pub fn to_gmap(&self) -> Result<DenseMap> {
+        self.to_gmap_within(self.source.max_darts)
+    }
+
+    /// [`Sourced::to_gmap`] with another dart limit (`None`: what the memory budget holds).
+    pub fn to_gmap_within(&self, max_darts: Option<u64>) -> Result<DenseMap> {
+        self.value
+            .to_gmap_within(max_darts)
+            .map_err(|e| limit_hint(gmap_ops::import::FileError::new(&self.source.path, e).into()))
+    }
+}
+
+/// Reads `path` by its extension, with the default options.
+pub fn open(path: impl AsRef<Path>) -> Result<Input> {
+    open_with(path, &OpenOptions::default())
+}
+
+/// Reads `path` by its extension. A refusal for size names the option that raises the
+/// limit.
+pub fn open_with(path: impl AsRef<Path>, opts: &OpenOptions) -> Result<Input> {
+    let path = path.as_ref();
+    read(path, opts).map_err(limit_hint)
+}
+
+fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
+    use gmap_ops::import;
+    let read_opts = gmap_core::io::ReadOptions { max_darts: opts.max_darts };
+    let source = Source { path: path.to_path_buf(), max_darts: opts.max_darts };
+    let map = |map: DenseMap| Input::Map(MapInput { map, source: source.clone(), labelled: OnceLock::new() });
+    let complex = |value: SimplicialComplex| Input::Simplicial(Sourced { value, source: source.clone() });
+    let sourced = |value| Sourced { value, source: source.clone() };
+    Ok(match extension(path).as_str() {
+        "gmap" => map(gmap_core::io::read_gmap_with(path, &read_opts)?),
+        "moka" => map(gmap_core::io::read_moka_with(path, &read_opts)?),
+        "off" => map(import::read_off_with(path, opts.max_darts)?),
+        "facets" => complex(import::read_facets_complex(path)?),
+        "lex" if path.exists() => complex(import::read_lex_complex(path, None)?),
+        "lex" => {
+            let (file, name) = split_lex_name(path);
+            complex(import::read_lex_complex(&file, name.as_deref())?)
+        }
+        "json" => Input::Arch(sourced(gmap_homology::json::read_json_file(path).map_err(|e| {
+            let kind = match e.error {
+                gmap_homology::json::JsonError::MemoryLimit(_) => crate::ErrorKind::Limit,
+                _ => crate::ErrorKind::Parse,
+            };
+            Error::from_source(kind, &e).with_path(path)
+        })?)),
+        "cub" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
+        "pbm" => Input::Cubical(Sourced { value: import::read_pbm(path)?, source: source.clone() }),
+        // views: what they hold (polyhedra, drawings) does not give back the map
+        ext @ ("vtk" | "dot") => {
+            return Err(err!(
+                Unsupported,
+                "{}: unsupported input format '.{ext}': it is written only, as a view (read the .gmap it came from)",
+                path.display()
+            )
+            .with_path(path))
+        }
+        other => {
+            return Err(err!(
+                Unsupported,
+                "{}: unsupported input format '.{}'",
+                path.display(),
+                gmap_core::io::shorten(other.as_bytes(), 40)
+            )
+            .with_path(path))
+        }
+    })
+}
+
+/// Adds the option that raises the limit to a refusal for darts.
+pub(crate) fn limit_hint(e: Error) -> Error {
+    if e.is_dart_limit() {
+        e.flattened("; raise the limit with --max-darts N")
+    } else {
+        e
+    }
+}
+
+/// The lower-cased extension of a path. A `#` belongs to the file name (`run#3.gmap`) unless
+/// the path names a `.lex` complex, `FILE.lex#name`, and no file has the whole path (see
+/// [`split_lex_name`]): the extension is taken from the real path when it exists.
+pub fn extension(path: &Path) -> String {
+    let (file, name) = split_lex_name(path);
+    let base = if name.is_some() && !path.exists() { file.as_path() } else { path };
+    base.extension().map(|e| e.to_string_lossy().to_lowercase()).unwrap_or_default()
+}
+
+/// Splits `FILE.lex#name` into the file and the complex name (none without `#`). The split
+/// is at the first `#` after `.lex`, so names that hold `#` themselves (Lutz's
+/// `manifold_lex_d3_n5_#1`) stay whole.
+pub fn split_lex_name(path: &Path) -> (PathBuf, Option<String>) {
+    let s = path.to_string_lossy();
+    match s.to_ascii_lowercase().find(".lex#") {
+        Some(k) => {
+            let name = &s[k + 5..];
+            (PathBuf::from(&s[..k + 4]), (!name.is_empty()).then(|| name.to_string()))
+        }
+        None => (path.to_path_buf(), None),
+    }
+}

@@ -1,0 +1,343 @@
+//! The groups of an input, with the route that computed them and, on request, a
+//! representative cycle per summand named in the input's own terms; and their two
+//! renderings, the text and the JSON object that `gmap homology` prints (docs/FORMATS.md).
+
+use gmap_homology::generators::Generator;
+use gmap_homology::{homology_z, homology_zp, is_prime, Homology};
+use serde_json::json;
+
+use crate::error::{err, Error, Result};
+use crate::input::Input;
+use crate::route::{self, HomologyOptions, Method, Named, Via};
+
+/// A cell of the input, in the input's own terms.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum CellName {
+    /// a simplex of a simplicial complex: its vertex labels, increasing
+    Simplex(Vec<u64>),
+    /// a G-map cell by one of its darts; for the simplicial counterpart, the dimensions of
+    /// the cells of that dart spanning the simplex
+    Dart {
+        /// the dart
+        dart: u32,
+        /// the point of the dart's vertex, when the map has points
+        point: Option<[f64; 3]>,
+        /// the simplex of the counterpart: the dimensions of the dart's cells spanning it
+        simplex: Option<Vec<u32>>,
+    },
+    /// a region of an architectural complex by its id
+    Region(u64),
+    /// an elementary cube of a cubical set: its minimal vertex and its extent (0 or 1) per
+    /// axis
+    Cube {
+        /// the minimal vertex
+        min: Vec<i64>,
+        /// 1 along the axes the cube spans, 0 along the others
+        extent: Vec<u8>,
+    },
+}
+
+impl CellName {
+    /// The JSON value of the name (docs/FORMATS.md, generators).
+    pub fn to_json(&self) -> serde_json::Value {
+        match self {
+            CellName::Simplex(v) => json!(v),
+            CellName::Dart { dart, point, simplex } => {
+                let mut v = json!({ "dart": dart });
+                if let Some(s) = simplex {
+                    v["simplex"] = json!(s);
+                }
+                if let Some(p) = point {
+                    v["point"] = json!(p);
+                }
+                v
+            }
+            CellName::Region(id) => json!({ "region": id }),
+            CellName::Cube { min, extent } => json!({ "cube": min, "extent": extent }),
+        }
+    }
+
+    /// The text of the name: `[1,2,3]`, `dart 5 at (0, 1, 0)`, `region 7`, `[0,1]x2`.
+    pub fn to_text(&self) -> String {
+        let list = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(",");
+        match self {
+            CellName::Simplex(v) => format!("[{}]", list(v)),
+            CellName::Dart { dart, point, simplex } => {
+                let mut t = format!("dart {dart}");
+                if let Some(s) = simplex {
+                    let s: Vec<u64> = s.iter().map(|&x| u64::from(x)).collect();
+                    t = format!("simplex {{{}}} of {t}", list(&s));
+                }
+                if let Some([x, y, z]) = point {
+                    t.push_str(&format!(" at ({x}, {y}, {z})"));
+                }
+                t
+            }
+            CellName::Region(id) => format!("region {id}"),
+            CellName::Cube { min, extent } => min
+                .iter()
+                .zip(extent)
+                .map(|(&lo, &e)| if e == 1 { format!("[{},{}]", lo, lo + 1) } else { lo.to_string() })
+                .collect::<Vec<_>>()
+                .join("x"),
+        }
+    }
+}
+
+/// A representative cycle of one summand, in the input's terms.
+#[derive(Clone, Debug)]
+pub struct NamedGenerator {
+    /// the dimension of the summand
+    pub dim: usize,
+    /// its order: 0 for a free summand (Z, or the field), k for Z/k
+    pub order: gmap_homology::Natural,
+    /// the cycle: cells with their coefficients
+    pub chain: Vec<(CellName, i64)>,
+}
+
+/// The result of [`homology`]: the groups, how they were computed, and the generators when
+/// asked for.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// what the input is ([`Input::kind`])
+    pub kind: &'static str,
+    /// the dimension of the input
+    pub dimension: usize,
+    /// the method (cellular or simplicial)
+    pub method: Method,
+    /// the route of a simplicial complex (`None` for other inputs)
+    pub route: Option<Via>,
+    /// the field's characteristic, `None` over Z
+    pub field: Option<u64>,
+    /// Betti numbers and torsion
+    pub groups: Homology,
+    /// a representative cycle per summand, with `generators`
+    pub generators: Option<Vec<NamedGenerator>>,
+    /// a note on what was done instead of what was asked (`--simplify` skipped, and why)
+    pub note: Option<String>,
+}
+
+impl Report {
+    /// The route's name: `direct` or `gmap` for a simplicial complex, `cubical` for a cubical
+    /// set, else the method (`cellular`, `simplicial`).
+    pub fn route_name(&self) -> &'static str {
+        match (self.route, self.kind) {
+            (Some(v), _) => v.name(),
+            (None, "cubical set") => "cubical",
+            _ => self.method.name(),
+        }
+    }
+
+    /// The JSON object `gmap homology --json` prints.
+    pub fn to_json(&self) -> serde_json::Value {
+        let h = &self.groups;
+        let mut v = json!({
+            "dimension": self.dimension,
+            "method": self.method.name(),
+            "coefficients": h.coefficients.to_string(),
+            "betti": h.betti,
+            "torsion": h.torsion,
+            "euler_characteristic": h.euler_characteristic(),
+        });
+        if let Some(r) = self.route {
+            v["route"] = json!(r.name());
+        }
+        if let Some(g) = &self.generators {
+            let list: Vec<_> = g
+                .iter()
+                .map(|x| {
+                    json!({
+                        "dim": x.dim,
+                        "order": x.order,
+                        "chain": x.chain.iter().map(|(cell, coef)| json!({
+                            "cell": cell.to_json(),
+                            "coefficient": coef,
+                        })).collect::<Vec<_>>(),
+                    })
+                })
+                .collect();
+            v["generators"] = json!(list);
+        }
+        v
+    }
+
+    /// The text `gmap homology` prints: a header line, one line per group, the Euler
+    /// characteristic, then a line per generator.
+    pub fn to_text(&self) -> String {
+        use std::fmt::Write as _;
+        let h = &self.groups;
+        let via = self.route.map(|r| format!(", route {}", r.name())).unwrap_or_default();
+        let mut out = format!(
+            "dimension {}, method {}, coefficients {}{via}\n",
+            self.dimension,
+            self.method.name(),
+            h.coefficients
+        );
+        for k in 0..h.betti.len() {
+            let _ = writeln!(out, "H_{k} = {}", h.group_string(k));
+        }
+        let _ = writeln!(out, "euler characteristic {}", h.euler_characteristic());
+        for x in self.generators.iter().flatten() {
+            let order = match (x.order.to_u64(), self.field) {
+                (Some(0), None) => "Z".to_string(),
+                (Some(0), Some(p)) => format!("Z/{p}"),
+                _ => format!("Z/{}", x.order),
+            };
+            let terms: Vec<String> =
+                x.chain.iter().map(|(cell, coef)| format!("{coef:+} {}", cell.to_text())).collect();
+            let _ = writeln!(out, "generator of H_{} ({order}): {}", x.dim, terms.join(" "));
+        }
+        out
+    }
+}
+
+/// Refuses a field that is not Z/P for a prime P below 2^31.
+pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
+    match field {
+        Some(p) if !is_prime(p) || p >= 1 << 31 => {
+            Err(err!(Usage, "--field {p}: the field must be Z/P for a prime P below 2^31"))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The homology of an input, by the route the command line takes (docs/DESIGN.md): the
+/// cellular border operator of a map (or its simplicial counterpart), the direct face complex
+/// or the G-map of a simplicial complex, the cubical complex of a cubical set, the completed
+/// boundary matrix of an architectural complex. Over Z with torsion, or over Z/p.
+///
+/// Options that do not fit the input are refused with the reason ([`crate::ErrorKind::Usage`]),
+/// so are routes whose conditions fail ([`crate::ErrorKind::Precondition`]) and work over the
+/// limits ([`crate::ErrorKind::Limit`]).
+pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
+    let file = route::file_of(input);
+    let route = check_options(&file, matches!(input, Input::Simplicial(_)), matches!(input, Input::Cubical(_)), o)?;
+    let mut note = None;
+    // the complex names the G-map's cells by labels while the darts are those of the import
+    let owned_map;
+    let (dim, named) = match input {
+        Input::Simplicial(sc) if route == Some(Via::Direct) => (sc.dim(), route::direct(sc, o, &file)?),
+        Input::Simplicial(sc) => {
+            owned_map = sc.to_gmap_within(o.max_darts)?;
+            let (map, sc_names) = if o.simplify {
+                let (m, n) = route::simplify_if_safe(owned_map, &o.progress);
+                note = n;
+                (m, None)
+            } else {
+                (owned_map, o.generators.then_some(sc.get()))
+            };
+            (map.dim(), map_route(&map, o, &file, sc_names)?)
+        }
+        Input::Map(m) => {
+            if o.topological {
+                return Err(err!(
+                    Usage,
+                    "{file}: --topological applies to architectural complexes (.json), not to G-maps"
+                ));
+            }
+            if o.simplify {
+                let (map, n) = route::simplify_if_safe(m.map().clone(), &o.progress);
+                note = n;
+                (map.dim(), map_route(&map, o, &file, None)?)
+            } else {
+                (m.map().dim(), map_route(m.map(), o, &file, None)?)
+            }
+        }
+        Input::Cubical(set) => (set.dim(), route::cubical(set, o, &file)?),
+        Input::Arch(x) => {
+            if o.simplify {
+                return Err(err!(
+                    Usage,
+                    "{file}: --simplify applies to G-maps, not to architectural complexes (.json)"
+                ));
+            }
+            (x.dim(), route::arch(x, o, &file)?)
+        }
+    };
+    if let Some(n) = &note {
+        o.progress.note(&format!("gmap homology: {n}"));
+    }
+    let groups = compute(&named, o).map_err(|e| e.context(file.clone()))?;
+    let generators = if o.generators {
+        o.progress.stage("computing generators and lifting them to the input's cells");
+        let g = gmap_homology::generators::generators(&named.chain, o.field)
+            .map_err(|e| Error::from(e).context(file.clone()))?;
+        Some(g.into_iter().map(|x| name_generator(&named, x)).collect())
+    } else {
+        None
+    };
+    Ok(Report { kind: input.kind(), dimension: dim, method: o.method, route, field: o.field, groups, generators, note })
+}
+
+/// [`homology`] of the file at `path`: the options are checked against the file's kind (by
+/// its extension) before it is read, then the file is opened with `o.max_darts`.
+pub fn homology_file(path: impl AsRef<std::path::Path>, o: &HomologyOptions) -> Result<Report> {
+    let path = path.as_ref();
+    let ext = crate::input::extension(path);
+    check_options(
+        &path.display().to_string(),
+        matches!(ext.as_str(), "facets" | "lex"),
+        matches!(ext.as_str(), "cub" | "pbm"),
+        o,
+    )?;
+    o.progress.stage(&format!("reading {}", path.display()));
+    let input = crate::input::open_with(path, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    homology(&input, o)
+}
+
+/// The checks of the options against the kind of input, in the order the command line
+/// makes them; the route of a simplicial complex.
+fn check_options(file: &str, simplicial: bool, cubical: bool, o: &HomologyOptions) -> Result<Option<Via>> {
+    check_field(o.field)?;
+    let route = route::simplicial_route(simplicial, file, o)?;
+    if o.topological && route.is_some() {
+        return Err(err!(
+            Usage,
+            "{file}: --topological applies to architectural complexes (.json), not to simplicial complexes"
+        ));
+    }
+    if o.periodic && !cubical {
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm)"));
+    }
+    Ok(route)
+}
+
+/// The chain complex of a map by the method asked for.
+fn map_route<'a>(
+    map: &gmap_core::DenseMap,
+    o: &HomologyOptions,
+    file: &str,
+    sc: Option<&'a gmap_ops::import::SimplicialComplex>,
+) -> Result<Named<'a>> {
+    match o.method {
+        Method::Cellular => route::cellular(map, file, sc, &o.progress),
+        Method::Simplicial => {
+            route::check_simplicial_size(map, file)?;
+            Ok(route::simplicial(map, &o.progress))
+        }
+    }
+}
+
+fn compute(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
+    let c = &named.chain;
+    if o.progress.is_visible() {
+        o.progress.stage(&format!(
+            "reducing {} cells ({} matrix entries): collapses, coreductions, then elimination",
+            c.counts().iter().sum::<usize>(),
+            (1..c.counts().len()).map(|k| c.boundary(k).nnz()).sum::<usize>()
+        ));
+    }
+    Ok(match o.field {
+        Some(p) => homology_zp(c, p)?,
+        None => homology_z(c)?,
+    })
+}
+
+fn name_generator(named: &Named<'_>, x: Generator) -> NamedGenerator {
+    NamedGenerator {
+        dim: x.dim,
+        order: x.order.clone(),
+        chain: x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect(),
+    }
+}

@@ -1,0 +1,317 @@
+//! Which chain complex an input's homology is computed on, and building it.
+//!
+//! | input | route | chain complex |
+//! |---|---|---|
+//! | map | `cellular` (default) | the cells and the border operator (BO Def. 10), under C1/C2 |
+//! | map | `simplicial` | the simplicial counterpart: one n-simplex per dart (BO §6) |
+//! | simplicial complex | `direct` (default) | every face of every facet a cell |
+//! | simplicial complex | `gmap` | the G-map of the facets, then a map route |
+//! | cubical set | `cubical` | the cubical complex of the closure, free faces collapsed |
+//! | architectural complex | `cellular` | the completion by zero of its boundary matrix (AC Def. 3.9) |
+//!
+//! A simplicial complex goes through its G-map when asked (`via = Gmap`) or when the options
+//! need a map (`--method simplicial`, `--simplify`). Simplifying a map is done only when it
+//! keeps the groups ([`simplify_if_safe`]).
+
+use gmap_core::DenseMap;
+use gmap_homology::arch::ZeroWeightRule;
+use gmap_homology::simplices::{face_complex_of, FaceComplex, FaceError};
+use gmap_homology::{cellular_complex, simplicial_complex_with_simplices, ChainComplex};
+use gmap_ops::import::SimplicialComplex;
+
+use crate::error::{err, Error, ErrorKind, Result};
+use crate::input::Input;
+use crate::progress::Progress;
+use crate::report::CellName;
+
+/// Which chain complex of a map is reduced.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// the cellular border operator (BO Def. 10), on the cells themselves
+    #[default]
+    Cellular,
+    /// the simplicial counterpart (BO §6): one n-simplex per dart
+    Simplicial,
+}
+
+impl Method {
+    /// `"cellular"` or `"simplicial"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Cellular => "cellular",
+            Method::Simplicial => "simplicial",
+        }
+    }
+}
+
+/// How a simplicial complex (`.facets`, `.lex`) is taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Via {
+    /// every face of every facet is a cell (any simplicial complex)
+    Direct,
+    /// through the G-map of the facets (pure pseudo-manifolds)
+    Gmap,
+}
+
+impl Via {
+    /// `"direct"` or `"gmap"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Via::Direct => "direct",
+            Via::Gmap => "gmap",
+        }
+    }
+}
+
+/// The options of [`crate::homology`], as the command line's flags.
+#[derive(Clone, Debug, Default)]
+#[non_exhaustive]
+pub struct HomologyOptions {
+    /// cellular (default) or simplicial
+    pub method: Method,
+    /// a prime P: compute over Z/P (default: over Z)
+    pub field: Option<u64>,
+    /// a representative cycle for each summand
+    pub generators: bool,
+    /// reduce a map by homology-preserving removals and contractions first
+    pub simplify: bool,
+    /// an architectural complex: Algorithm 8.16 first (topological Betti numbers)
+    pub topological: bool,
+    /// refuse maps of more darts than this (the direct route: more faces)
+    pub max_darts: Option<u64>,
+    /// a simplicial complex's route (`None`: direct unless the options need the G-map)
+    pub via: Option<Via>,
+    /// a cubical set's box is a torus (opposite faces identified)
+    pub periodic: bool,
+    /// where the stages are shown
+    pub progress: Progress,
+}
+
+/// A chain complex with a name for each generator: `name(k, j)` names k-cell `j` in the
+/// input's terms.
+pub(crate) struct Named<'a> {
+    pub(crate) chain: ChainComplex,
+    pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
+}
+
+/// The route a simplicial complex takes, `None` for the other inputs; refuses options that
+/// do not fit the input. Direct by default; through the G-map with `via = Gmap`,
+/// `method = Simplicial` or `simplify` (which work on maps).
+pub(crate) fn simplicial_route(simplicial_input: bool, file: &str, o: &HomologyOptions) -> Result<Option<Via>> {
+    let needs_map = o.method == Method::Simplicial || o.simplify;
+    let route = match (o.via, simplicial_input) {
+        (Some(Via::Direct), false) => {
+            return Err(err!(Usage, "{file}: --via direct applies to simplicial complexes (.facets, .lex)"))
+        }
+        (Some(Via::Direct), true) if needs_map => {
+            return Err(err!(Usage, "{file}: --method simplicial and --simplify work on the G-map; use --via gmap"))
+        }
+        (_, false) => None,
+        (Some(v), true) => Some(v),
+        (None, true) if needs_map => Some(Via::Gmap),
+        (None, true) => Some(Via::Direct),
+    };
+    Ok(route)
+}
+
+/// The file an input was read from, as messages name it.
+pub(crate) fn file_of(input: &Input) -> String {
+    input.path().display().to_string()
+}
+
+/// The points of a map's darts, when it has any (for naming G-map cells).
+fn points(map: &DenseMap) -> Option<Vec<Option<[f64; 3]>>> {
+    map.has_points().then(|| map.darts().map(|d| map.point(d)).collect())
+}
+
+/// The name of the k-cell with dart `d`: by labels when the map came from a simplicial
+/// complex (the k-face of the dart's flag), else by dart (and point).
+fn dart_cell(sc: Option<&SimplicialComplex>, pts: &Option<Vec<Option<[f64; 3]>>>, k: usize, d: u32) -> CellName {
+    if let Some(face) = sc.and_then(|sc| sc.dart_face(u64::from(d), k)) {
+        return CellName::Simplex(face);
+    }
+    CellName::Dart { dart: d, point: pts.as_ref().and_then(|p| p[d as usize]), simplex: None }
+}
+
+/// The cellular chain complex of a map with its cells named, or why the method does not
+/// apply (C1, C2, self-bending).
+pub(crate) fn cellular<'a>(
+    map: &DenseMap,
+    file: &str,
+    sc: Option<&'a SimplicialComplex>,
+    progress: &Progress,
+) -> Result<Named<'a>> {
+    progress.stage("checking C1 and C2 and building the border operator");
+    let c = cellular_complex(map).map_err(|e| {
+        Error::from_source(ErrorKind::Precondition, &e)
+            .context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
+    })?;
+    let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
+    let pts = points(map);
+    Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
+}
+
+/// Refuses a map whose simplicial counterpart is too big to build (exponential in the
+/// dimension): an n-map of N darts has up to `2^(n+1) (N + n + 1)` simplices (building it
+/// visits the `2^(n+1)` vertex sets of a flag once per dimension even without darts), and
+/// their reduction costs about `n + 1` squared per simplex (the faces of a simplex are
+/// many and dense); that product is held to the workspace's work limit
+/// ([`gmap_core::resources::DEFAULT_MAX_WORK`]: a one-dart 16-map is built in seconds, a
+/// one-dart 17-map is refused, `gmap 30 1` asks for 2^31 simplices); then the memory is
+/// checked against the memory limit.
+pub fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
+    let n = map.dim() as u32;
+    let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
+    let visits = work * (u128::from(n) + 1) * (u128::from(n) + 1);
+    if visits > u128::from(gmap_core::resources::DEFAULT_MAX_WORK) {
+        return Err(err!(
+            Limit,
+            "{file}: the simplicial counterpart of a {n}-map of {} darts has up to 2^{} x {} simplices, too many to \
+             build (an estimated {visits} steps, over the work limit of {}); the cellular method works on the \
+             cells themselves",
+            map.dart_count(),
+            n + 1,
+            map.dart_count().max(1),
+            gmap_core::resources::DEFAULT_MAX_WORK
+        ));
+    }
+    // each simplex: its flag (dart and vertex set), its key and its n + 1 boundary entries
+    let bytes = work.checked_mul(24 + 12 * (n as u128 + 1)).and_then(|b| u64::try_from(b).ok());
+    gmap_core::resources::check_memory("the simplicial counterpart", bytes)
+        .map_err(|e| Error::from(e).context(file.to_string()))?;
+    Ok(())
+}
+
+/// The simplicial counterpart of a map with its simplices named by dart and vertex set.
+pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> {
+    progress.stage("building the simplicial counterpart");
+    let s = simplicial_complex_with_simplices(map);
+    let pts = points(map);
+    let simplices = s.simplices;
+    Named {
+        chain: s.chain,
+        name: Box::new(move |k, j| {
+            let x = &simplices[k][j as usize];
+            CellName::Dart {
+                dart: x.dart.get(),
+                point: pts.as_ref().and_then(|p| p[x.dart.index()]),
+                simplex: Some((0..32).filter(|i| x.labels & (1 << i) != 0).collect()),
+            }
+        }),
+    }
+}
+
+/// The direct route's chain complex of a simplicial complex (every face of every facet a
+/// cell, `gmap_homology::simplices`), refused past `max_darts` faces (default: what the
+/// memory budget holds at its dimension), the error naming `file`; with `labels`, the
+/// vertices of every face (to name generators).
+pub fn face_complex_within(
+    sc: &SimplicialComplex,
+    max_darts: Option<u64>,
+    file: &str,
+    labels: bool,
+) -> Result<FaceComplex> {
+    let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_faces(sc.dim()));
+    face_complex_of(sc.facets(), limit, labels).map_err(|e| match e {
+        FaceError::TooManyFaces { .. } => err!(Limit, "{file}: {e}; raise the limit with --max-darts N").dart_limit(),
+        e => Error::from_source(ErrorKind::Limit, &e).context(file.to_string()).flattened(""),
+    })
+}
+
+/// The direct route for a simplicial complex: every face of every facet is a cell, no
+/// G-map. The faces are counted first and refused past `max_darts`.
+pub(crate) fn direct(sc: &SimplicialComplex, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+    // the estimate is a pass over the facets: made only for a message that shows
+    if o.progress.is_visible() {
+        o.progress.stage(&format!(
+            "enumerating the faces of {} facets (at most {})",
+            sc.total_facet_count(),
+            gmap_homology::simplices::face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
+        ));
+    }
+    let FaceComplex { chain, vertices, faces } = face_complex_within(sc, o.max_darts, file, o.generators)?;
+    let name = Box::new(move |k: usize, j: u32| {
+        let j = j as usize;
+        CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())
+    });
+    Ok(Named { chain, name })
+}
+
+/// The chain complex of an architectural complex (`.json`): the completion by zero of its
+/// partial boundary matrix (AC Def. 3.9), after Algorithm 8.16 with `topological`.
+pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+    if o.method == Method::Simplicial {
+        return Err(err!(
+            Precondition,
+            "{file}: an architectural complex has no simplicial counterpart; use --method cellular"
+        ));
+    }
+    let topological;
+    let x = if o.topological {
+        let t = x
+            .topological(ZeroWeightRule::Closed)
+            .map_err(|e| Error::from_source(ErrorKind::Precondition, &e).context(format!("{file}: Algorithm 8.16")))?;
+        for op in &t.operators {
+            o.progress.stage(&format!("Algorithm 8.16: {op}"));
+        }
+        topological = t.complex;
+        &topological
+    } else {
+        x
+    };
+    let ids: Vec<Vec<u64>> =
+        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
+    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
+}
+
+/// The chain complex of a cubical set (after collapses of free faces) with its cells named
+/// by their minimal vertex and extent in the input's coordinates.
+pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+    if o.method == Method::Simplicial {
+        return Err(err!(
+            Precondition,
+            "{file}: a cubical set has no simplicial counterpart here; use --method cellular"
+        ));
+    }
+    if o.simplify || o.topological {
+        return Err(err!(Usage, "{file}: --simplify and --topological do not apply to cubical sets"));
+    }
+    o.progress.stage("building the cubical complex");
+    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true)
+        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if o.generators {
+        let min = set.min();
+        let name = |k: usize, i: usize| {
+            let coords = c.coordinates(k, i);
+            let lo = coords.iter().enumerate().map(|(a, &x)| min.get(a).copied().unwrap_or(0) + (x / 2) as i64);
+            (lo.collect(), coords.iter().map(|&x| (x % 2) as u8).collect())
+        };
+        (0..c.cells.len()).map(|k| (0..c.cells[k].len()).map(|i| name(k, i)).collect()).collect()
+    } else {
+        vec![Vec::new(); c.cells.len()]
+    };
+    let name = Box::new(move |k: usize, j: u32| {
+        let (min, extent) = names[k][j as usize].clone();
+        CellName::Cube { min, extent }
+    });
+    Ok(Named { chain: c.chain, name })
+}
+
+/// The map reduced by removals and contractions of cells, or the map itself where the
+/// reduction could change the groups, with the reason. Removals and contractions keep the
+/// homology only when the cells are homology balls (conditions C1 and C2, docs/DESIGN.md):
+/// where they fail (a segment with open ends, a map of loose darts), simplifying would merge
+/// components and lose classes, so it is skipped. As a guard, a reduction that changes the
+/// number of components is dropped too. Either way the groups are those of `map`.
+pub fn simplify_if_safe(map: DenseMap, progress: &Progress) -> (DenseMap, Option<String>) {
+    progress.stage("checking C1 and C2 before simplifying");
+    if let Err(e) = gmap_homology::check_preconditions(&map) {
+        return (map, Some(format!("--simplify skipped: the cells are not all homology balls ({e})")));
+    }
+    progress.stage("simplifying by removals and contractions of cells");
+    let small = gmap_ops::euler::simplify(&map).0;
+    if small.component_count() != map.component_count() {
+        return (map, Some("--simplify skipped: the reduction changed the number of components".to_string()));
+    }
+    (small, None)
+}
