@@ -136,8 +136,7 @@ fn reference(cells: &Cells, p: i64, sign: f64) -> Vec<(usize, u64, u64)> {
     let v = |i: usize| cells.cells[order[i]].1;
     let bits = |x: f64| (sign * x + 0.0).to_bits();
     for j in 0..n {
-        loop {
-            let Some((&low, &c)) = cols[j].iter().next_back() else { break };
+        while let Some((&low, &c)) = cols[j].iter().next_back() {
             match owner.get(&low) {
                 Some(&o) => {
                     let oc = cols[o][&low];

@@ -125,7 +125,7 @@ pub(crate) fn normalize(field: Zp, col: &mut Vec<Entry>) {
             if col[w - 1].1 == 0 {
                 w -= 1;
             }
-        } else if col[r].1 % field.p as u32 != 0 {
+        } else if !col[r].1.is_multiple_of(field.p as u32) {
             col[w] = (col[r].0, col[r].1 % field.p as u32);
             w += 1;
         }
