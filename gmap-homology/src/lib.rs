@@ -68,6 +68,7 @@
 pub mod cellular;
 pub mod complex;
 pub mod engine;
+pub mod persistence;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
 pub use complex::{arch, cubical, cubical_pass, dot, ep, json, lar, simplices, tm};

@@ -11,6 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod persistence;
 mod view;
 
 /// Generalized maps: build, inspect, convert, and compute homology on the cells.
@@ -150,6 +151,8 @@ enum Command {
     Convert(ConvertArgs),
     /// Write one self-contained HTML page to look at the input in a browser.
     View(view::ViewArgs),
+    /// Persistence diagram of a filtration: an image, valued facets, a labelled .gmap.
+    Persistence(persistence::PersistenceArgs),
 }
 
 /// Runs the command line; returns the process exit code.
@@ -165,6 +168,7 @@ pub fn run() -> ExitCode {
         Command::Homology(a) => homology(a, quiet),
         Command::Bench(a) => bench(a, quiet),
         Command::View(a) => view::view(a, quiet),
+        Command::Persistence(a) => persistence::persistence(a),
         Command::Convert(a) => {
             let progress = gmap::Progress::stderr("gmap convert", quiet);
             progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));

@@ -13,6 +13,7 @@ pub mod image;
 pub mod msh;
 pub mod off;
 pub mod poset;
+pub mod raster;
 pub mod simplicial;
 pub mod vtk;
 pub mod vtu;

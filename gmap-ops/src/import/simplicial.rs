@@ -168,6 +168,50 @@ impl SimplicialComplex {
         flat.finish()
     }
 
+    /// Parses `.facets` text whose facet lines may end with a value after a colon
+    /// (`1 2 3 : 0.5`, docs/FORMATS.md): the complex, and one value per facet in the order
+    /// of [`SimplicialComplex::facets`], or `None` when no line has a colon. Refuses, naming
+    /// the line, a value that is not a number (or is NaN) and, once one facet has a value, a
+    /// facet without one. The vertex part goes through [`SimplicialComplex::parse_facets`]
+    /// unchanged (the same errors, the same lines). O(size of the text) more than it.
+    pub fn parse_valued_facets(text: &str) -> Result<(Self, Option<Vec<f64>>), ImportError> {
+        if !text.contains(':') {
+            return Ok((Self::parse_facets(text)?, None));
+        }
+        let mut vertices = String::with_capacity(text.len());
+        let mut values: rustc_hash::FxHashMap<usize, f64> = rustc_hash::FxHashMap::default();
+        for (i, raw) in text.split('\n').enumerate() {
+            let line = i + 1;
+            let body = raw.split('#').next().unwrap_or("");
+            match body.split_once(':') {
+                Some((verts, value)) => {
+                    let v: f64 = value.trim().parse().ok().filter(|v: &f64| !v.is_nan()).ok_or_else(|| {
+                        ImportError::Syntax { line, message: format!("the value {:?} is not a number", value.trim()) }
+                    })?;
+                    values.insert(line, v);
+                    vertices.push_str(verts);
+                }
+                None => vertices.push_str(body),
+            }
+            vertices.push('\n');
+        }
+        let sc = Self::parse_facets(&vertices)?;
+        if values.is_empty() {
+            // colons in comments only
+            return Ok((sc, None));
+        }
+        let lines = sc.lines.iter().copied().chain(sc.others.iter().map(|(l, _)| *l));
+        let vals = lines
+            .map(|line| {
+                values.get(&line).copied().ok_or_else(|| ImportError::Syntax {
+                    line,
+                    message: "a facet without a value (`: VALUE`) where other facets have one".into(),
+                })
+            })
+            .collect::<Result<Vec<f64>, _>>()?;
+        Ok((sc, Some(vals)))
+    }
+
     /// Parses Lutz's `.lex` format: `name=[[1,2,3],[1,2,4],...]`, possibly over several lines
     /// and several complexes per file. Picks the complex called `name`, or the first one.
     /// The line of a facet is the line where its `[` stands.
@@ -865,6 +909,13 @@ pub fn read_facets_complex(path: &Path) -> Result<SimplicialComplex, FileError> 
     SimplicialComplex::parse_facets(&text).map_err(|e| FileError::new(path, e))
 }
 
+/// Reads a `.facets` file whose facets may carry values
+/// ([`SimplicialComplex::parse_valued_facets`]).
+pub fn read_valued_facets(path: &Path) -> Result<(SimplicialComplex, Option<Vec<f64>>), FileError> {
+    let text = super::common::read_text(path)?;
+    SimplicialComplex::parse_valued_facets(&text).map_err(|e| FileError::new(path, e))
+}
+
 /// Reads the complex `name` (or the first) of a `.lex` file, without making a G-map of it.
 pub fn read_lex_complex(path: &Path, name: Option<&str>) -> Result<SimplicialComplex, FileError> {
     let text = super::common::read_text(path)?;
@@ -882,6 +933,23 @@ pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Resu
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn valued_facets_keep_lines_and_refuse_gaps() {
+        let (sc, v) = SimplicialComplex::parse_valued_facets("# c\n1 2 3 : 0.5\n2 3 4: -1e2 # x\n\n5 6 : 7\n").unwrap();
+        assert_eq!(sc.all_facets(), vec![&[1, 2, 3][..], &[2, 3, 4][..], &[5, 6][..]]);
+        assert_eq!(v, Some(vec![0.5, -100.0, 7.0]));
+        let (_, v) = SimplicialComplex::parse_valued_facets("1 2\n").unwrap();
+        assert_eq!(v, None);
+        let (_, v) = SimplicialComplex::parse_valued_facets("# a: comment\n1 2\n").unwrap();
+        assert_eq!(v, None);
+        let e = SimplicialComplex::parse_valued_facets("1 2 : 1\n2 3\n").unwrap_err().to_string();
+        assert!(e.starts_with("line 2:"), "{e}");
+        let e = SimplicialComplex::parse_valued_facets("1 2 : x\n").unwrap_err().to_string();
+        assert!(e.starts_with("line 1:") && e.contains("\"x\""), "{e}");
+        let e = SimplicialComplex::parse_valued_facets("1 2 : 1\n1 z : 2\n").unwrap_err().to_string();
+        assert!(e.starts_with("line 2:"), "{e}");
+    }
 
     #[test]
     fn triangle_boundary_and_tetrahedron_surface() {

@@ -1,0 +1,558 @@
+//! Persistence of grey images: the cubical filtration of a d-dimensional array.
+//!
+//! ## The grid
+//!
+//! Cells live on a doubled grid, last axis fastest (numpy's C order): a point with `k` odd
+//! coordinates is a `k`-cell. The two constructions place the array differently:
+//!
+//! * **T-construction** (`Construction::T`, GUDHI's `CubicalComplex(top_dimensional_cells=…)`):
+//!   pixel `(i, j, …)` is the top cell `(2i+1, 2j+1, …)` of a grid of `2n+1` points per axis;
+//!   a lower cell takes the minimum of the top cells around it.
+//! * **V-construction** (`Construction::V`, CubicalRipser's default, GUDHI's `vertices=`):
+//!   pixel `(i, j, …)` is the vertex `(2i, 2j, …)` of a grid of `2n-1` points per axis; a
+//!   higher cell takes the maximum of its vertices.
+//!
+//! With `periodic` every axis has `2n` points and wraps (a d-torus). Superlevel filtrations
+//! negate the values, run, and negate back (births then lie above deaths; an essential class
+//! dies at `-inf`).
+//!
+//! Cells are ordered by (value, dimension, grid index), a total order refining the
+//! filtration.
+//!
+//! ## The computation
+//!
+//! * Dimension 0 by union-find over the edges in order (elder rule): `O(E α(E))`.
+//! * Dimension `d-1` of a non-periodic image by union-find over the top cells in reverse
+//!   order (Alexander duality: a (d-1)-class of the image is a component of the dual, the
+//!   outside a cell present from the start), which also tells which (d-1)-cells are
+//!   negative, so the matrix reduction below skips the others (clearing).
+//! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing ([`super::reduce`]),
+//!   the boundary computed from the grid as columns are asked for.
+//! * With representative cycles asked for, or on a torus, every dimension down to 1 goes
+//!   through the reduction (it gives the reduced columns and `V`).
+//!
+//! Memory: the value of every grid cell (`8 · 2^d · N` bytes for `N` pixels), the sorted
+//! cells of the dimensions in use (4 bytes each, 16 while sorted), and for the reduction a
+//! rank per grid cell (4 bytes) and an owner per row (4 bytes).
+
+use super::reduce::{reduce_dim, Entry, Zp};
+use super::{CellName, Diagram, PersistenceError};
+
+/// Where the array's values sit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Construction {
+    /// values on top cells, lower cells take the minimum of their cofaces (GUDHI's default)
+    #[default]
+    T,
+    /// values on vertices, higher cells take the maximum of their vertices (CubicalRipser's)
+    V,
+}
+
+impl std::str::FromStr for Construction {
+    type Err = PersistenceError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "T" | "t" | "top" => Ok(Construction::T),
+            "V" | "v" | "vertex" | "vertices" => Ok(Construction::V),
+            _ => Err(PersistenceError::BadOption(format!("construction {s:?} (want T or V)"))),
+        }
+    }
+}
+
+/// How to filter an image.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CubicalOptions {
+    /// T- or V-construction
+    pub construction: Construction,
+    /// superlevel sets (values taken from the top down)
+    pub superlevel: bool,
+    /// identify opposite faces of the box (a torus)
+    pub periodic: bool,
+    /// coefficients `Z/p`, `p` a prime below `2^31`
+    pub field: u32,
+    /// return a representative cycle per pair
+    pub cycles: bool,
+}
+
+impl Default for CubicalOptions {
+    fn default() -> Self {
+        CubicalOptions { construction: Construction::T, superlevel: false, periodic: false, field: 2, cycles: false }
+    }
+}
+
+/// The doubled grid, last axis fastest.
+#[derive(Clone, Debug)]
+pub(crate) struct Grid {
+    pub(crate) m: Vec<usize>,
+    stride: Vec<usize>,
+    periodic: bool,
+    len: usize,
+}
+
+impl Grid {
+    fn new(m: Vec<usize>, periodic: bool) -> Option<Self> {
+        let d = m.len();
+        let mut stride = vec![1usize; d];
+        let mut len = 1usize;
+        for a in (0..d).rev() {
+            stride[a] = len;
+            len = len.checked_mul(m[a])?;
+        }
+        Some(Grid { m, stride, periodic, len })
+    }
+
+    fn d(&self) -> usize {
+        self.m.len()
+    }
+
+    #[inline]
+    fn coord(&self, g: usize, a: usize) -> usize {
+        (g / self.stride[a]) % self.m[a]
+    }
+
+    pub(crate) fn coords(&self, g: usize) -> Vec<usize> {
+        (0..self.d()).map(|a| self.coord(g, a)).collect()
+    }
+
+    #[inline]
+    fn dim(&self, g: usize) -> usize {
+        (0..self.d()).filter(|&a| self.coord(g, a) & 1 == 1).count()
+    }
+
+    /// The face of `g` above it along odd axis `a` (wrapping on a torus).
+    #[inline]
+    fn up(&self, g: usize, a: usize, c: usize) -> usize {
+        if c + 1 == self.m[a] {
+            g - c * self.stride[a]
+        } else {
+            g + self.stride[a]
+        }
+    }
+
+    /// The signed faces of `g`: along its j-th odd axis, `+(-1)^j` above and `-(-1)^j` below.
+    fn faces(&self, g: usize, out: &mut Vec<(usize, i64)>) {
+        out.clear();
+        let mut j = 0;
+        for a in 0..self.d() {
+            let c = self.coord(g, a);
+            if c & 1 == 1 {
+                let s = if j % 2 == 0 { 1 } else { -1 };
+                out.push((g - self.stride[a], -s));
+                out.push((self.up(g, a, c), s));
+                j += 1;
+            }
+        }
+    }
+
+    /// The one or two cofaces of `g` along even axis `a` (`None` past a non-periodic side).
+    #[inline]
+    fn cofaces(&self, g: usize, a: usize) -> [Option<usize>; 2] {
+        let (c, s) = (self.coord(g, a), self.stride[a]);
+        let lo = if c > 0 {
+            Some(g - s)
+        } else if self.periodic {
+            Some(g + (self.m[a] - 1) * s)
+        } else {
+            None
+        };
+        let hi = if c + 1 < self.m[a] {
+            Some(g + s)
+        } else if self.periodic {
+            Some(g - c * s)
+        } else {
+            None
+        };
+        [lo, hi]
+    }
+
+    /// Index of an all-even (`odd == false`) or all-odd point among such points.
+    #[inline]
+    fn compact(&self, g: usize, odd: bool) -> usize {
+        let mut r = 0;
+        for a in 0..self.d() {
+            let count = if odd { self.m[a] / 2 } else { self.m[a].div_ceil(2) };
+            r = r * count + self.coord(g, a) / 2;
+        }
+        r
+    }
+}
+
+/// A total order on `f64` (finite values only reach here) as an unsigned key.
+#[inline]
+pub(crate) fn key(v: f64) -> u64 {
+    let b = v.to_bits();
+    if b >> 63 == 1 {
+        !b
+    } else {
+        b | (1 << 63)
+    }
+}
+
+/// The value of a [`key`].
+#[inline]
+pub(crate) fn unkey(k: u64) -> f64 {
+    f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k })
+}
+
+/// The cubical filtration of an image: the grid, every cell's value, the cells of each
+/// dimension in filtration order.
+pub struct CubicalFiltration {
+    grid: Grid,
+    vals: Vec<f64>,
+    /// per dimension, the cells in filtration order with their keys
+    order: Vec<Option<Vec<(u64, u32)>>>,
+    rank: Vec<u32>,
+    sign: f64,
+}
+
+impl CubicalFiltration {
+    /// Filters the array `values` of shape `shape` (C order). Refuses an empty shape, a
+    /// size mismatch, a NaN (naming its index) and a grid past `u32` indices.
+    pub fn new(shape: &[usize], values: &[f64], opts: &CubicalOptions) -> Result<Self, PersistenceError> {
+        if shape.is_empty() || shape.contains(&0) {
+            return Err(PersistenceError::BadInput(format!("shape {shape:?} has no cells")));
+        }
+        let n: Option<usize> = shape.iter().try_fold(1usize, |p, &s| p.checked_mul(s));
+        if n != Some(values.len()) {
+            return Err(PersistenceError::BadInput(format!("shape {shape:?} does not hold {} values", values.len())));
+        }
+        if let Some(i) = values.iter().position(|v| v.is_nan()) {
+            return Err(PersistenceError::BadInput(format!("value {i} is NaN")));
+        }
+        let m: Vec<usize> = shape
+            .iter()
+            .map(|&s| match (opts.periodic, opts.construction) {
+                (true, _) => 2 * s,
+                (false, Construction::T) => 2 * s + 1,
+                (false, Construction::V) => 2 * s - 1,
+            })
+            .collect();
+        let grid = Grid::new(m, opts.periodic)
+            .filter(|g| g.len < u32::MAX as usize)
+            .ok_or_else(|| PersistenceError::TooLarge(format!("a grid of shape {shape:?}")))?;
+        let sign = if opts.superlevel { -1.0 } else { 1.0 };
+        let vals = cell_values(&grid, values, opts.construction, sign);
+        let d = grid.d();
+        Ok(CubicalFiltration { grid, vals, order: vec![None; d + 1], rank: Vec::new(), sign })
+    }
+
+    /// Points of the doubled grid per axis.
+    pub fn grid_shape(&self) -> &[usize] {
+        &self.grid.m
+    }
+
+    /// The value of a grid cell in the input's sign.
+    pub fn value(&self, g: usize) -> f64 {
+        self.sign * self.vals[g]
+    }
+
+    /// Builds the sorted list of k-cells (and their ranks).
+    fn ensure(&mut self, k: usize, with_rank: bool) {
+        if self.order[k].is_none() {
+            let mut keys: Vec<(u64, u32)> =
+                (0..self.grid.len).filter(|&g| self.grid.dim(g) == k).map(|g| (key(self.vals[g]), g as u32)).collect();
+            keys.sort_unstable();
+            self.order[k] = Some(keys);
+        }
+        if with_rank {
+            if self.rank.is_empty() {
+                self.rank = vec![u32::MAX; self.grid.len];
+            }
+            let list = self.order[k].as_ref().expect("built above");
+            if list.first().is_some_and(|&(_, g)| self.rank[g as usize] == u32::MAX) {
+                for (i, &(_, g)) in list.iter().enumerate() {
+                    self.rank[g as usize] = i as u32;
+                }
+            }
+        }
+    }
+
+    fn list(&self, k: usize) -> &[(u64, u32)] {
+        self.order[k].as_deref().unwrap_or(&[])
+    }
+
+    fn name(&self, g: usize) -> CellName {
+        CellName::Grid(self.grid.coords(g))
+    }
+
+    /// The persistence diagram (and cycles, if `opts.cycles`) of this filtration.
+    pub fn diagram(mut self, opts: &CubicalOptions) -> Result<Diagram, PersistenceError> {
+        let field = check_field(opts.field)?;
+        let d = self.grid.d();
+        let mut diagram = Diagram::new(opts.field);
+        let full = opts.cycles || self.grid.periodic;
+        // the (d-1)-cells that are born (positive): skipped as columns
+        let mut skip: Vec<bool> = Vec::new();
+        let mut top = d + 1; // the highest column dimension the reduction handles
+        if !full && d >= 2 {
+            self.ensure(d - 1, d >= 3);
+            skip = self.dual_union_find(&mut diagram);
+            top = d - 1;
+        } else if full {
+            top = d;
+        }
+        let low = if opts.cycles { 1 } else { 2 };
+        let mut claimed_below: Option<Vec<bool>> = None;
+        if top <= d {
+            for k in (low..=top).rev() {
+                self.ensure(k, true);
+                self.ensure(k - 1, true);
+                let rows = self.list(k - 1).len();
+                let cleared = claimed_below.take();
+                let ncols = self.list(k).len() as u32;
+                let grid = &self.grid;
+                let rank = &self.rank;
+                let list = self.order[k].as_deref().expect("ensured");
+                let skip_k = if k == d - 1 && !full { Some(&skip) } else { None };
+                let cols = (0..ncols).filter(|&j| {
+                    !cleared.as_ref().is_some_and(|c| c[j as usize]) && !skip_k.is_some_and(|s| s[j as usize])
+                });
+                let mut faces = Vec::new();
+                let minus = field.of(-1);
+                let r = reduce_dim(
+                    field,
+                    rows,
+                    cols,
+                    |j, out: &mut Vec<Entry>| {
+                        grid.faces(list[j as usize].1 as usize, &mut faces);
+                        out.extend(faces.iter().map(|&(f, s)| (rank[f], if s > 0 { 1 } else { minus })));
+                    },
+                    opts.cycles,
+                    opts.cycles,
+                );
+                let (lo, hi) = (self.list(k - 1), self.list(k));
+                for &(row, col) in &r.pairs {
+                    let (b, e) = (lo[row as usize].1 as usize, hi[col as usize].1 as usize);
+                    let cycle = opts.cycles.then(|| {
+                        r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize].1 as usize), c)).collect()
+                    });
+                    diagram.push(k - 1, self.vals[b], self.vals[e], self.sign, cycle);
+                }
+                for &col in &r.zero {
+                    let g = hi[col as usize].1 as usize;
+                    let cycle = opts
+                        .cycles
+                        .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c)).collect());
+                    diagram.push(k, self.vals[g], f64::INFINITY, self.sign, cycle);
+                }
+                claimed_below = Some(r.claimed);
+            }
+        }
+        if opts.cycles {
+            // dimension 0's columns are zero; those not claimed by edges are essential
+            let claimed = claimed_below.unwrap_or_default();
+            self.ensure(0, false);
+            for (i, &(_, g)) in self.list(0).iter().enumerate() {
+                if !claimed.get(i).copied().unwrap_or(false) {
+                    let cycle = Some(vec![(self.name(g as usize), 1)]);
+                    diagram.push(0, self.vals[g as usize], f64::INFINITY, self.sign, cycle);
+                }
+            }
+        } else {
+            self.ensure(1.min(d), false);
+            let positive = self.union_find_0(&mut diagram);
+            if d >= 1 && self.grid.periodic {
+                // positive edges no 2-cell kills are essential 1-classes
+                let claimed = claimed_below.unwrap_or_default();
+                for (i, &(_, g)) in self.list(1).iter().enumerate() {
+                    if positive[i] && !claimed.get(i).copied().unwrap_or(false) {
+                        diagram.push(1, self.vals[g as usize], f64::INFINITY, self.sign, None);
+                    }
+                }
+            }
+        }
+        diagram.finish();
+        Ok(diagram)
+    }
+
+    /// Dimension 0 by union-find over the edges in order; returns which edges are positive.
+    fn union_find_0(&self, diagram: &mut Diagram) -> Vec<bool> {
+        let grid = &self.grid;
+        let d = grid.d();
+        // the oldest vertex of a component is the smallest (value, index): kept as the
+        // largest complemented key
+        let mut uf = Elder::new(
+            (0..grid.len)
+                .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 0))
+                .map(|g| (!key(self.vals[g]), !(g as u32))),
+        );
+        let edges = if d >= 1 { self.list(1) } else { &[] };
+        let mut positive = vec![false; edges.len()];
+        for (i, &(ke, e)) in edges.iter().enumerate() {
+            let e = e as usize;
+            let a = (0..d).find(|&a| grid.coord(e, a) & 1 == 1).expect("an edge has an odd axis");
+            let c = grid.coord(e, a);
+            let (u, v) = (grid.compact(e - grid.stride[a], false), grid.compact(grid.up(e, a, c), false));
+            match uf.union(u as u32, v as u32) {
+                None => positive[i] = true,
+                Some((_, young)) => diagram.push(0, unkey(!young.0), unkey(ke), self.sign, None),
+            }
+        }
+        for c in 0..uf.nodes.len() as u32 {
+            if uf.find(c) == c {
+                diagram.push(0, unkey(!uf.nodes[c as usize].best.0), f64::INFINITY, self.sign, None);
+            }
+        }
+        positive
+    }
+
+    /// Dimension d-1 of a non-periodic image by union-find on the dual; returns which
+    /// (d-1)-cells are positive (join two dual components).
+    fn dual_union_find(&self, diagram: &mut Diagram) -> Vec<bool> {
+        let grid = &self.grid;
+        let d = grid.d();
+        // a component's representative is its latest top cell; the outside, last node, is
+        // later than all
+        let mut uf = Elder::new(
+            (0..grid.len)
+                .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 1))
+                .map(|g| (key(self.vals[g]), g as u32))
+                .chain(std::iter::once((u64::MAX, u32::MAX))),
+        );
+        let outside = (uf.nodes.len() - 1) as u32;
+        let list = self.list(d - 1);
+        let mut positive = vec![false; list.len()];
+        for (i, &(ks, s)) in list.iter().enumerate().rev() {
+            let s = s as usize;
+            let a = (0..d).find(|&a| grid.coord(s, a) & 1 == 0).expect("a (d-1)-cell has an even axis");
+            let [lo, hi] = grid.cofaces(s, a);
+            let node = |t: Option<usize>| t.map_or(outside, |t| grid.compact(t, true) as u32);
+            if let Some((_, young)) = uf.union(node(lo), node(hi)) {
+                positive[i] = true;
+                diagram.push(d - 1, unkey(ks), unkey(young.0), self.sign, None);
+            }
+        }
+        positive
+    }
+}
+
+/// A node of [`Elder`]: its parent, rank, and (at a root) the component's best member.
+#[derive(Clone, Copy)]
+struct Node {
+    parent: u32,
+    rank: u32,
+    best: (u64, u32),
+}
+
+/// Union-find whose components remember their best member by a key (the largest wins):
+/// union by rank, paths halved, one record per node (one cache line per visit).
+struct Elder {
+    nodes: Vec<Node>,
+}
+
+impl Elder {
+    /// One node per key, in order.
+    fn new(keys: impl Iterator<Item = (u64, u32)>) -> Self {
+        Elder { nodes: keys.enumerate().map(|(i, best)| Node { parent: i as u32, rank: 0, best }).collect() }
+    }
+
+    #[inline]
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.nodes[x as usize].parent != x {
+            let p = self.nodes[self.nodes[x as usize].parent as usize].parent;
+            self.nodes[x as usize].parent = p;
+            x = p;
+        }
+        x
+    }
+
+    /// Joins the components of `u` and `v`; `None` if they were one, else the two best
+    /// members `(kept, lost)`: the lost one's class dies.
+    #[inline]
+    fn union(&mut self, u: u32, v: u32) -> Option<((u64, u32), (u64, u32))> {
+        let (ru, rv) = (self.find(u), self.find(v));
+        if ru == rv {
+            return None;
+        }
+        let (nu, nv) = (self.nodes[ru as usize], self.nodes[rv as usize]);
+        let (keep, lose) = if nu.best > nv.best { (nu.best, nv.best) } else { (nv.best, nu.best) };
+        let (hi, lo) = if nu.rank >= nv.rank { (ru, rv) } else { (rv, ru) };
+        self.nodes[lo as usize].parent = hi;
+        if nu.rank == nv.rank {
+            self.nodes[hi as usize].rank += 1;
+        }
+        self.nodes[hi as usize].best = keep;
+        Some((keep, lose))
+    }
+}
+
+pub(crate) fn check_field(p: u32) -> Result<Zp, PersistenceError> {
+    if p >= 1 << 31 || !crate::homology::is_prime(p as u64) {
+        return Err(PersistenceError::BadOption(format!("field Z/{p}: want a prime below 2^31")));
+    }
+    Ok(Zp::new(p))
+}
+
+/// Every grid cell's value (times `sign`), by one pass per axis: the V-construction takes
+/// the maximum of the two neighbours along an odd axis, the T-construction the minimum of
+/// those along an even axis that exist. A cell's value is final after the pass of its last
+/// odd (V) or even (T) axis, whose neighbours are final by then.
+fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f64) -> Vec<f64> {
+    let d = grid.d();
+    let mut vals = vec![f64::INFINITY; grid.len];
+    let pixel_parity = match construction {
+        Construction::V => 0,
+        Construction::T => 1,
+    };
+    // place the pixels
+    let shape: Vec<usize> = grid.m.iter().map(|&m| if pixel_parity == 1 { m / 2 } else { m.div_ceil(2) }).collect();
+    let mut idx = vec![0usize; d];
+    for &v in values {
+        let g: usize = (0..d).map(|a| (2 * idx[a] + pixel_parity) * grid.stride[a]).sum();
+        vals[g] = sign * v;
+        for a in (0..d).rev() {
+            idx[a] += 1;
+            if idx[a] < shape[a] {
+                break;
+            }
+            idx[a] = 0;
+        }
+    }
+    for a in 0..d {
+        let (s, m) = (grid.stride[a], grid.m[a]);
+        let block = s * m;
+        for base in (0..grid.len).step_by(block) {
+            for c in 0..m {
+                let along = c & 1 == 1;
+                let row = base + c * s;
+                match construction {
+                    Construction::V if along => {
+                        let lo = row - s;
+                        let hi = if c + 1 == m { base } else { row + s };
+                        for t in 0..s {
+                            vals[row + t] = vals[lo + t].max(vals[hi + t]);
+                        }
+                    }
+                    Construction::T if !along => {
+                        let lo = if c > 0 {
+                            Some(row - s)
+                        } else if grid.periodic {
+                            Some(base + (m - 1) * s)
+                        } else {
+                            None
+                        };
+                        let hi = if c + 1 < m { Some(row + s) } else { None };
+                        for t in 0..s {
+                            let x = lo.map_or(f64::INFINITY, |l| vals[l + t]);
+                            let y = hi.map_or(f64::INFINITY, |h| vals[h + t]);
+                            vals[row + t] = x.min(y);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+    }
+    vals
+}
+
+/// The persistence diagram of an image: [`CubicalFiltration::new`] then
+/// [`CubicalFiltration::diagram`].
+pub fn cubical_persistence(
+    shape: &[usize],
+    values: &[f64],
+    opts: &CubicalOptions,
+) -> Result<Diagram, PersistenceError> {
+    CubicalFiltration::new(shape, values, opts)?.diagram(opts)
+}
