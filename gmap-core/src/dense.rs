@@ -451,7 +451,7 @@ impl DenseMap {
         Ok(())
     }
 
-    /// Whether [`DenseMap::validate`] succeeds.
+    /// Whether [`DenseMap::validate`] succeeds (CGAL's `is_valid`).
     pub fn is_valid(&self) -> bool {
         self.validate().is_ok()
     }

@@ -1207,6 +1207,21 @@ impl<A: Attributes> GMap<A> {
     pub fn check_complete_boundaries(&self) -> Result<(), BoundaryDefect> {
         self.to_dense_map().check_complete_boundaries()
     }
+
+    /// Whether the map has cells with complete boundaries (BO Def. 6).
+    pub fn has_complete_boundaries(&self) -> bool {
+        self.check_complete_boundaries().is_ok()
+    }
+
+    /// Number of i-cells (see [`DenseMap::cell_count`]).
+    pub fn cell_count(&self, i: usize) -> usize {
+        self.to_dense_map().cell_count(i)
+    }
+
+    /// Whether [`GMap::validate`] succeeds (CGAL's `is_valid`).
+    pub fn is_valid(&self) -> bool {
+        self.validate().is_ok()
+    }
 }
 
 impl<A: Attributes> MapView for GMap<A> {
