@@ -1,7 +1,7 @@
 //! One vocabulary on both maps: the editable `GMap` and its `DenseMap` snapshot answer the
 //! same whole-map questions under the same names, with the same answers.
 
-use gmap_core::{GMap, MapView};
+use gmap_core::GMap;
 
 fn two_hexahedra_and_a_loose_tetrahedron() -> GMap {
     let mut g = GMap::new(3);
