@@ -209,8 +209,8 @@ impl From<gmap_core::ValidityError> for Failure {
     }
 }
 
-impl From<gmap_core::SewError> for Failure {
-    fn from(e: gmap_core::SewError) -> Self {
+impl From<gmap_core::EditError> for Failure {
+    fn from(e: gmap_core::EditError) -> Self {
         Failure::new(Kind::Precondition, chain_message(&e))
     }
 }

@@ -46,7 +46,7 @@ impl PyGMap {
 
     /// Renumbers the darts after darts were made or removed.
     fn refresh(&mut self) {
-        let (d, ids) = self.g.to_dense();
+        let (d, ids) = self.g.to_dense_with_ids();
         self.ids = ids;
         self.dense = Some(Arc::new(d));
         self.index_slots();
