@@ -89,7 +89,7 @@ pub enum SparseError {
 /// let m = SparseMatrix::try_from_triplets(2, 1, &[(0, 0, -1), (1, 0, 1)]).unwrap();
 /// assert_eq!(m.get(1, 0), 1);
 /// assert_eq!(m.nnz(), 2);
-/// assert_eq!(m.to_dense_with_ids(), vec![vec![-1], vec![1]]);
+/// assert_eq!(m.to_dense(), vec![vec![-1], vec![1]]);
 /// ```
 #[derive(Clone, PartialEq, Eq)]
 pub struct SparseMatrix {

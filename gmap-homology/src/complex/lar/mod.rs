@@ -33,7 +33,7 @@
 //!     characteristic_matrix(3, &[vec![0, 1, 2]]).unwrap(),
 //! ]).unwrap();
 //! // the face's boundary is its three edges
-//! assert_eq!(lar.unsigned_boundary(2).unwrap().to_dense_with_ids(), vec![vec![1], vec![1], vec![1]]);
+//! assert_eq!(lar.unsigned_boundary(2).unwrap().to_dense(), vec![vec![1], vec![1], vec![1]]);
 //! ```
 
 mod cycles;

@@ -43,9 +43,9 @@ impl Lar {
     /// ]).unwrap();
     /// let d = lar.signed_boundaries().unwrap();
     /// // edges run from the lower vertex to the higher
-    /// assert_eq!(d[0].to_dense_with_ids(), vec![vec![-1, 0, -1], vec![1, -1, 0], vec![0, 1, 1]]);
+    /// assert_eq!(d[0].to_dense(), vec![vec![-1, 0, -1], vec![1, -1, 0], vec![0, 1, 1]]);
     /// // the face follows its first edge {0,1}: 0 -> 1 -> 2 -> 0
-    /// assert_eq!(d[1].to_dense_with_ids(), vec![vec![1], vec![1], vec![-1]]);
+    /// assert_eq!(d[1].to_dense(), vec![vec![1], vec![1], vec![-1]]);
     /// ```
     pub fn signed_boundaries(&self) -> Result<Vec<SparseMatrix>, LarError> {
         let mut out: Vec<SparseMatrix> = Vec::with_capacity(self.dim());
