@@ -221,7 +221,7 @@ def test_parse_error_names_file_and_line(tmp_path):
 
 def test_unsupported_and_missing(tmp_path):
     with pytest.raises(gmap.InputError, match="unsupported input format"):
-        gmap.open(tmp_path / "x.vtk")
+        gmap.open(tmp_path / "x.dot")
     with pytest.raises(OSError):
         gmap.open(tmp_path / "missing.facets")
 
