@@ -7,129 +7,86 @@
 
 use std::fmt;
 
-/// A dart of a [`DenseMap`](crate::DenseMap): an index `0..N`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Dart(u32);
+/// An opaque `u32` id: `new`, `index`, `get`, `Display` as the number, conversions from and
+/// to `u32`, to `usize`, and from `usize` when it fits.
+macro_rules! id_type {
+    ($(#[$doc:meta])* $name:ident, $what:literal) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub struct $name(u32);
 
-impl Dart {
-    /// The dart numbered `i`.
-    #[inline]
-    pub const fn new(i: u32) -> Self {
-        Dart(i)
-    }
+        impl $name {
+            #[doc = concat!("The ", $what, " numbered `i`.")]
+            #[inline]
+            pub const fn new(i: u32) -> Self {
+                $name(i)
+            }
 
-    /// The index as `usize`, to index per-dart arrays.
-    #[inline]
-    pub const fn index(self) -> usize {
-        self.0 as usize
-    }
+            #[doc = concat!("The number as `usize`, to index per-", $what, " arrays.")]
+            #[inline]
+            pub const fn index(self) -> usize {
+                self.0 as usize
+            }
 
-    /// The index as the stored `u32`.
-    #[inline]
-    pub const fn get(self) -> u32 {
-        self.0
-    }
+            /// The number as the stored `u32`.
+            #[inline]
+            pub const fn get(self) -> u32 {
+                self.0
+            }
+        }
+
+        impl fmt::Display for $name {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                self.0.fmt(f)
+            }
+        }
+
+        impl From<u32> for $name {
+            #[inline]
+            fn from(i: u32) -> Self {
+                $name(i)
+            }
+        }
+
+        impl From<$name> for u32 {
+            #[inline]
+            fn from(x: $name) -> u32 {
+                x.0
+            }
+        }
+
+        impl From<$name> for usize {
+            #[inline]
+            fn from(x: $name) -> usize {
+                x.0 as usize
+            }
+        }
+
+        impl TryFrom<usize> for $name {
+            type Error = std::num::TryFromIntError;
+
+            #[doc = concat!("The ", $what, " numbered `i`, or an error when `i` does not fit in `u32`.")]
+            #[inline]
+            fn try_from(i: usize) -> Result<Self, Self::Error> {
+                u32::try_from(i).map($name)
+            }
+        }
+    };
 }
 
-impl fmt::Display for Dart {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.0.fmt(f)
-    }
-}
+id_type!(
+    /// A dart of a [`DenseMap`](crate::DenseMap): an index `0..N`.
+    Dart,
+    "dart"
+);
 
-impl From<u32> for Dart {
-    #[inline]
-    fn from(i: u32) -> Self {
-        Dart(i)
-    }
-}
-
-impl From<Dart> for u32 {
-    #[inline]
-    fn from(d: Dart) -> u32 {
-        d.0
-    }
-}
-
-impl From<Dart> for usize {
-    #[inline]
-    fn from(d: Dart) -> usize {
-        d.0 as usize
-    }
-}
-
-impl TryFrom<usize> for Dart {
-    type Error = std::num::TryFromIntError;
-
-    /// The dart numbered `i`, or an error when `i` does not fit in `u32`.
-    #[inline]
-    fn try_from(i: usize) -> Result<Self, Self::Error> {
-        u32::try_from(i).map(Dart)
-    }
-}
-
-/// The number of a cell (an orbit) in a [`Partition`](crate::Partition): `0..len`, in the
-/// order of the cells' smallest darts. `Partition::of` holds these numbers as bare `u32` for
-/// the whole-map loops that index arrays by them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct CellId(u32);
-
-impl CellId {
-    /// The cell numbered `i`.
-    #[inline]
-    pub const fn new(i: u32) -> Self {
-        CellId(i)
-    }
-
-    /// The number as `usize`, to index per-cell arrays.
-    #[inline]
-    pub const fn index(self) -> usize {
-        self.0 as usize
-    }
-
-    /// The number as the stored `u32`.
-    #[inline]
-    pub const fn get(self) -> u32 {
-        self.0
-    }
-}
-
-impl fmt::Display for CellId {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.0.fmt(f)
-    }
-}
-
-impl From<u32> for CellId {
-    #[inline]
-    fn from(i: u32) -> Self {
-        CellId(i)
-    }
-}
-
-impl From<CellId> for u32 {
-    #[inline]
-    fn from(c: CellId) -> u32 {
-        c.0
-    }
-}
-
-impl From<CellId> for usize {
-    #[inline]
-    fn from(c: CellId) -> usize {
-        c.0 as usize
-    }
-}
-
-impl TryFrom<usize> for CellId {
-    type Error = std::num::TryFromIntError;
-
-    /// The cell numbered `i`, or an error when `i` does not fit in `u32`.
-    #[inline]
-    fn try_from(i: usize) -> Result<Self, Self::Error> {
-        u32::try_from(i).map(CellId)
-    }
-}
+id_type!(
+    /// The number of a cell (an orbit) in a [`Partition`](crate::Partition): `0..len`, in the
+    /// order of the cells' smallest darts. `Partition::of` holds these numbers as bare `u32`
+    /// for the whole-map loops that index arrays by them.
+    CellId,
+    "cell"
+);
 
 /// A point in space, attached to a dart to embed the 0-cell it belongs to.
 pub type Point = [f64; 3];
