@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use gmap_core::{cell_labels, to_dense_labels, Characteristics, LabelValue, LabelledGMap};
-use gmap_ops::import::{read_msh, read_vtk, read_vtu};
+use gmap_ops::import::read_mesh;
 
 fn data(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh")).join(name)
@@ -12,12 +12,7 @@ fn data(name: &str) -> PathBuf {
 
 fn read(name: &str) -> LabelledGMap {
     let p = data(name);
-    let r = match p.extension().and_then(|e| e.to_str()) {
-        Some("vtk") => read_vtk(&p, None),
-        Some("vtu") => read_vtu(&p, None),
-        Some("msh") => read_msh(&p, None),
-        _ => panic!("{name}"),
-    };
+    let r = read_mesh(&p, None).unwrap_or_else(|| panic!("{name}"));
     r.unwrap_or_else(|e| panic!("{e}"))
 }
 

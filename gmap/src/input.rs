@@ -253,12 +253,9 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
         "gmap" => map(gmap_core::io::read_gmap_with(path, &read_opts)?),
         "moka" => map(gmap_core::io::read_moka_with(path, &read_opts)?),
         "off" => map(import::read_off_with(path, opts.max_darts)?),
-        ext @ ("vtk" | "vtu" | "msh") => {
-            let g = match ext {
-                "vtk" => import::read_vtk(path, opts.max_darts)?,
-                "vtu" => import::read_vtu(path, opts.max_darts)?,
-                _ => import::read_msh(path, opts.max_darts)?,
-            };
+        "vtk" | "vtu" | "msh" => {
+            let g = import::read_mesh(path, opts.max_darts)
+                .ok_or_else(|| err!(Unsupported, "{}: not a mesh file", path.display()).with_path(path))??;
             let map = g.to_dense_map();
             Input::Map(MapInput { map, source: source.clone(), labelled: OnceLock::from(Ok(Box::new(g))) })
         }

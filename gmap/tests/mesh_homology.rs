@@ -6,16 +6,11 @@ use std::path::PathBuf;
 
 use gmap::core::{Characteristics, LabelledGMap};
 use gmap::homology::{cellular_complex, homology_z};
-use gmap::ops::import::{read_msh, read_vtk, read_vtu};
+use gmap::ops::import::read_mesh;
 
 fn read(name: &str) -> LabelledGMap {
     let p = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/mesh")).join(name);
-    let r = match p.extension().and_then(|e| e.to_str()) {
-        Some("vtk") => read_vtk(&p, None),
-        Some("vtu") => read_vtu(&p, None),
-        Some("msh") => read_msh(&p, None),
-        _ => panic!("{name}"),
-    };
+    let r = read_mesh(&p, None).unwrap_or_else(|| panic!("{name}"));
     r.unwrap_or_else(|e| panic!("{e}"))
 }
 

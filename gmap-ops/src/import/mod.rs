@@ -27,3 +27,15 @@ pub use poset::{FacePoset, PosetError};
 pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
 pub use vtk::{parse_vtk, read_vtk};
 pub use vtu::{parse_vtu, read_vtu};
+
+/// Reads a volume mesh chosen by the file's extension (any case): legacy `.vtk`, XML `.vtu`
+/// or Gmsh `.msh`; `None` for any other extension.
+pub fn read_mesh(path: &std::path::Path, max_darts: Option<u64>) -> Option<Result<gmap_core::LabelledGMap, FileError>> {
+    let ext = path.extension()?.to_string_lossy().to_lowercase();
+    Some(match ext.as_str() {
+        "vtk" => read_vtk(path, max_darts),
+        "vtu" => read_vtu(path, max_darts),
+        "msh" => read_msh(path, max_darts),
+        _ => return None,
+    })
+}
