@@ -43,6 +43,17 @@ fn known_sets() {
     assert_eq!(general(&[7, 7, 7], &bits), vec![2, 0, 2, 0]);
 }
 
+/// `n` cubes, each present with probability `density` percent, from a seeded LCG.
+fn random_bits(n: usize, density: u64, seed: u64) -> Vec<u8> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((s >> 33) % 100 < density) as u8
+        })
+        .collect()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(500))]
     #[test]
@@ -51,12 +62,7 @@ proptest! {
         density in 0u64..100,
         seed in any::<u64>(),
     ) {
-        let n: usize = shape.iter().product();
-        let mut s = seed;
-        let bits: Vec<u8> = (0..n).map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        }).collect();
+        let bits = random_bits(shape.iter().product(), density, seed);
         let (b, chi) = one_pass(&shape, &bits);
         let g = general(&shape, &bits);
         prop_assert_eq!(&b, &g);
@@ -79,12 +85,7 @@ proptest! {
         use gmap_homology::cubical_pass::{block_pass, merge_blocks};
         let mut shape = shape;
         shape[2] += extra;
-        let n: usize = shape.iter().product();
-        let mut s = seed;
-        let bits: Vec<u8> = (0..n).map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        }).collect();
+        let bits = random_bits(shape.iter().product(), density, seed);
         let mut ends: Vec<usize> = cuts.iter().map(|i| 1 + i.index(shape[2] - 1)).collect();
         ends.push(shape[2]);
         ends.sort();
