@@ -69,6 +69,7 @@ pub use gmap_core as core;
 pub use gmap_homology as homology;
 pub use gmap_ops as ops;
 
+mod arch_cells;
 pub mod bench;
 mod cell_name;
 pub mod demo;

@@ -16,7 +16,7 @@ use gmap_homology::arch::ArchComplex;
 use gmap_homology::dot::write_dot;
 use gmap_homology::json::write_json;
 use gmap_homology::lar::Lar;
-use gmap_ops::import::{FacePoset, PosetError};
+use gmap_ops::import::PosetError;
 
 use crate::error::{err, Error, ErrorKind, Result};
 use crate::input::{extension, split_lex_name, Input};
@@ -59,7 +59,7 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     match input {
         Input::Map(m) => save_map(m.map(), output),
         Input::Simplicial(sc) => save_map(&sc.to_gmap_within(o.max_darts)?, output),
-        Input::Arch(x) => save_arch(x, output, o.max_darts),
+        Input::Arch(x) => write_arch(x, x.path(), output, o.max_darts),
         Input::Cubical(_) => {
             Err(err!(Unsupported, "{}: a cubical set cannot be converted; use gmap homology", input.path().display()))
         }
@@ -186,37 +186,41 @@ fn write_text(path: &Path, text: &str) -> Result<()> {
 }
 
 /// Writes an architectural complex: `.json` and `.dot` directly; any other format through
-/// its G-map (the flag construction of a regular complex's face poset, gmap-ops).
+/// the G-map of its cells (the flag construction, gmap-ops), after cutting the regions that
+/// are not cells so that the map is the same space ([`crate::arch_cells`]; refused with the
+/// region's name where that cannot be done).
 pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Result<()> {
+    write_arch(x, Path::new(""), output, max_darts)
+}
+
+/// [`save_arch`] of a complex read from `input` (refusals name it first).
+fn write_arch(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match extension(output).as_str() {
         "json" if !is_lar(output) => write_text(output, &write_json(x)),
         "dot" => write_text(output, &write_dot(x)),
-        _ => {
-            let m = arch_to_map(x, max_darts).map_err(|e| match e {
-                PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
-                    err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", output.display())
-                }
-                e => Error::from_source(ErrorKind::Precondition, &e).context(format!(
-                    "{}: the complex is not the face poset of a regular cell complex",
-                    output.display()
-                )),
-            })?;
-            save_map(&m, output)
-        }
+        _ => save_map(&arch_to_map(x, max_darts, input, output)?, output),
     }
 }
 
-/// The G-map of an architectural complex whose entries between consecutive dimensions are
-/// the covering pairs of a regular cell complex's face poset.
-fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>) -> std::result::Result<DenseMap, PosetError> {
-    let mut p = FacePoset::new();
-    for r in x.regions() {
-        p.add_cell(r.dim);
-    }
-    for e in x.entries() {
-        if x.region(e.from).dim == x.region(e.to).dim + 1 {
-            p.add_cover(e.from, e.to);
+/// The G-map of an architectural complex's cells ([`crate::arch_cells`]).
+/// Refusals name the input first (`input`, when not empty) and say that `output` is not
+/// written.
+pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path, output: &Path) -> Result<DenseMap> {
+    let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_darts(x.dim()));
+    let not_written = format!("(nothing written to {})", output.display());
+    let named = |e: Error| {
+        let e = e.flattened(&format!(" {not_written}"));
+        if input.as_os_str().is_empty() { e } else { e.context(input.display().to_string()) }
+    };
+    let cells = crate::arch_cells::cells(x, limit).map_err(named)?;
+    cells.poset.to_gmap(limit).map_err(|e| match e {
+        PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
+            err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", output.display())
         }
-    }
-    p.to_gmap(max_darts.unwrap_or_else(|| gmap_ops::import::default_max_darts(x.dim())))
+        e => named(err!(
+            Precondition,
+            "the complex is not the face poset of a regular cell complex: {}",
+            crate::arch_cells::name_poset_error(x, &cells, &e)
+        )),
+    })
 }
