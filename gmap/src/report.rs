@@ -42,6 +42,79 @@ pub struct Report {
     pub generators: Option<Vec<NamedGenerator>>,
     /// a note on what was done instead of what was asked (`--simplify` skipped, and why)
     pub note: Option<String>,
+    /// for an architectural complex: which space the groups are those of
+    pub space: Option<ArchSpace>,
+}
+
+/// Which space the groups of an architectural complex (`.json`) are those of: the region
+/// complex (each region a cell glued along its recorded boundary, the completion by zero of
+/// AC Def. 3.9), or with `--topological` the space the regions make (Algorithm 8.16). The
+/// two differ where a region is not a ball, which `not_balls` lists.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct ArchSpace {
+    /// the groups are the topological ones (`--topological`)
+    pub topological: bool,
+    /// the regions that are not balls: their names ([`crate::arch_cells`]'s `region 7
+    /// ("kitchen")`), ids and Betti numbers
+    pub not_balls: Vec<(String, u64, Vec<usize>)>,
+}
+
+impl ArchSpace {
+    /// The statement for complex `x`. O(Σ closures of the regions).
+    pub fn of(x: &gmap_homology::arch::ArchComplex, topological: bool) -> Self {
+        let not_balls = (0..x.regions().len())
+            .filter_map(|r| {
+                let betti = x.region_betti(r);
+                // an edge on two vertices is a ball (its boundary is two points), whatever
+                // the count of boundary components says
+                let edge = x.region(r).dim == 1 && !x.has_region_betti(r) && x.down(r).len() == 2;
+                let ball = edge || (betti.first() == Some(&1) && betti[1..].iter().all(|&b| b == 0));
+                (!ball).then(|| (crate::arch_cells::region_name(x, r), x.region(r).id.0, betti))
+            })
+            .collect();
+        ArchSpace { topological, not_balls }
+    }
+
+    /// The lines `gmap homology` prints.
+    pub fn to_text(&self) -> String {
+        if self.topological {
+            return "space: the space the regions make (Algorithm 8.16, --topological)\n".to_string();
+        }
+        let mut out =
+            "space: the region complex (each region a cell glued along its recorded boundary, AC Def. 3.9)\n".to_string();
+        if !self.not_balls.is_empty() {
+            let shown: Vec<String> = self
+                .not_balls
+                .iter()
+                .take(3)
+                .map(|(name, _, b)| {
+                    format!("{name} (Betti numbers ({}))", b.iter().map(usize::to_string).collect::<Vec<_>>().join(", "))
+                })
+                .collect();
+            let more = match self.not_balls.len() {
+                n if n > 3 => format!(" and {} more", n - 3),
+                _ => String::new(),
+            };
+            let verb = if self.not_balls.len() == 1 { "is" } else { "are" };
+            out.push_str(&format!(
+                "hint: {}{more} {verb} not a ball; gmap homology --topological gives the groups of the space the regions make\n",
+                shown.join(", ")
+            ));
+        }
+        out
+    }
+
+    /// The members `gmap homology --json` adds: `"space"` (`"region complex"` or
+    /// `"topological"`) and, when a region is not a ball, `"not_balls"` and `"hint"`.
+    fn add_json(&self, v: &mut serde_json::Value) {
+        v["space"] = json!(if self.topological { "topological" } else { "region complex" });
+        if !self.topological && !self.not_balls.is_empty() {
+            v["not_balls"] =
+                json!(self.not_balls.iter().map(|(_, id, b)| json!({"region": id, "betti": b})).collect::<Vec<_>>());
+            v["hint"] = json!("a region is not a ball: --topological gives the groups of the space the regions make");
+        }
+    }
 }
 
 impl Report {
@@ -85,6 +158,9 @@ impl Report {
                 .collect();
             v["generators"] = json!(list);
         }
+        if let Some(space) = &self.space {
+            space.add_json(&mut v);
+        }
         v
     }
 
@@ -104,6 +180,9 @@ impl Report {
             let _ = writeln!(out, "H_{k} = {}", h.group_string(k));
         }
         let _ = writeln!(out, "euler characteristic {}", h.euler_characteristic());
+        if let Some(space) = &self.space {
+            out.push_str(&space.to_text());
+        }
         for x in self.generators.iter().flatten() {
             let order = match (x.order.to_u64(), self.field) {
                 (Some(0), None) => "Z".to_string(),
@@ -167,6 +246,7 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             groups,
             generators: None,
             note: None,
+            space: None,
         });
     }
     let image_set;
@@ -232,7 +312,11 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     } else {
         None
     };
-    Ok(Report { kind: input.kind(), dimension: dim, method: o.method, route, field: o.field, groups, generators, note })
+    let space = match input {
+        Input::Arch(x) => Some(ArchSpace::of(x, o.topological)),
+        _ => None,
+    };
+    Ok(Report { kind: input.kind(), dimension: dim, method: o.method, route, field: o.field, groups, generators, note, space })
 }
 
 /// [`homology`] of the file at `path`: the options are checked against the file's kind (by
