@@ -70,6 +70,7 @@ pub use gmap_homology as homology;
 pub use gmap_ops as ops;
 
 mod arch_cells;
+mod graph;
 pub mod bench;
 mod cell_name;
 pub mod demo;

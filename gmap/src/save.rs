@@ -27,12 +27,14 @@ use crate::input::{extension, split_lex_name, Input};
 pub struct SaveOptions {
     /// refuse to make maps of more darts than this (a complex written through its G-map)
     pub max_darts: Option<u64>,
+    /// refuse incidence graphs of more faces than this (a simplicial complex's face poset)
+    pub max_cells: Option<u64>,
 }
 
 impl SaveOptions {
     /// Options with a dart limit.
     pub fn max_darts(max_darts: Option<u64>) -> Self {
-        SaveOptions { max_darts }
+        SaveOptions { max_darts, max_cells: None }
     }
 }
 
@@ -44,7 +46,7 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     if let Input::Map(m) = input {
         // the labels of the cells live in the labelled map of a `.gmap` file
         let labelled_output = match extension(output).as_str() {
-            "gmap" | "vtk" | "dot" => true,
+            "gmap" | "vtk" | "dot" | "graphml" => true,
             "json" => !is_lar(output),
             _ => false,
         };
@@ -58,10 +60,21 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     }
     match input {
         Input::Map(m) => save_map(m.map(), output),
+        // the incidence graph of any complex is its face poset
+        Input::Simplicial(sc) if is_graph(output) => {
+            write_graph(&crate::graph::simplicial(sc, o.max_cells, &sc.path().display().to_string())?, output)
+        }
         Input::Simplicial(sc) => save_map(&sc.to_gmap_within(o.max_darts)?, output),
         Input::Arch(x) => write_arch(x, x.path(), output, o.max_darts),
-        Input::Cubical(_) => {
-            Err(err!(Unsupported, "{}: a cubical set cannot be converted; use gmap homology", input.path().display()))
+        Input::Cubical(set) if is_graph(output) => {
+            write_graph(&crate::graph::cubical(set, false, &set.path().display().to_string())?, output)
+        }
+        Input::Cubical(set) if extension(output) == "vtk" => {
+            gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
+        }
+        Input::Cubical(set) => {
+            let m = set.gmap(false).map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
+            save_map(&m, output)
         }
         // an image is written as an image: numpy's .npy as it is, DIPHA's as f64
         Input::Image(img) => {
@@ -138,8 +151,7 @@ pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
             let text = Lar::from_map(m).to_json().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
             write_text(output, &text)?
         }
-        "json" => write_text(output, &write_json(&arch_of(m, output)?))?,
-        "dot" => write_text(output, &write_dot(&arch_of(m, output)?))?,
+        "json" | "dot" | "graphml" => write_graph(&arch_of(m, output)?, output)?,
         other => {
             return Err(err!(
                 Unsupported,
@@ -163,9 +175,29 @@ fn write_labelled(g: &LabelledGMap, output: &Path) -> Result<()> {
                 Error::from_source(ErrorKind::Precondition, &e)
                     .context(format!("{}: cannot write the incidence graph", output.display()))
             })?;
-            write_text(output, &if ext == "dot" { write_dot(&x) } else { write_json(&x) })
+            let _ = ext;
+            write_graph(&x, output)
         }
     }
+}
+
+/// Whether the output is an incidence graph: `.json` (not `.lar.json`), `.dot`, `.graphml`.
+fn is_graph(p: &Path) -> bool {
+    match extension(p).as_str() {
+        "json" => !is_lar(p),
+        "dot" | "graphml" => true,
+        _ => false,
+    }
+}
+
+/// Writes an incidence graph in the format of the output's extension ([`is_graph`]).
+fn write_graph(x: &ArchComplex, output: &Path) -> Result<()> {
+    let text = match extension(output).as_str() {
+        "dot" => write_dot(x),
+        "graphml" => gmap_homology::graphml::write_graphml(x),
+        _ => write_json(x),
+    };
+    write_text(output, &text)
 }
 
 /// Whether the output is a LAR file (`.lar.json`) rather than an incidence graph.
@@ -196,8 +228,7 @@ pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Resu
 /// [`save_arch`] of a complex read from `input` (refusals name it first).
 fn write_arch(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match extension(output).as_str() {
-        "json" if !is_lar(output) => write_text(output, &write_json(x)),
-        "dot" => write_text(output, &write_dot(x)),
+        _ if is_graph(output) => write_graph(x, output),
         _ => save_map(&arch_to_map(x, max_darts, input, output)?, output),
     }
 }

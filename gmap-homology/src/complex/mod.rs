@@ -5,6 +5,7 @@ pub mod cubical;
 pub mod cubical_pass;
 pub mod dot;
 pub mod ep;
+pub mod graphml;
 pub mod json;
 pub mod lar;
 pub mod simplices;

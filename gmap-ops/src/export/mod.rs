@@ -15,8 +15,10 @@ use gmap_core::{AlphaSet, Attributes, Dart, DenseMap, GMap, Partition};
 mod error;
 pub mod html;
 mod vtk;
+mod voxels;
 
 pub use error::{write_atomic, ExportError};
+pub use voxels::{cubical_vtk_string, write_cubical_vtk};
 pub use vtk::{vtk_string, vtk_string_with_labels, write_vtk, write_vtk_with_labels};
 
 /// The OFF text of a 2-map with points: one vertex per 0-cell (numbered by its smallest
