@@ -265,6 +265,14 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
             let (file, name) = split_lex_name(path);
             complex(import::read_lex_complex(&file, name.as_deref())?)
         }
+        "json" if path.to_string_lossy().to_lowercase().ends_with(".lar.json") => {
+            return Err(err!(
+                Unsupported,
+                "{}: .lar.json (LAR) is written only, as an export: read the file it came from",
+                path.display()
+            )
+            .with_path(path))
+        }
         "json" => Input::Arch(sourced(gmap_homology::json::read_json_file(path).map_err(|e| {
             let kind = match e.error {
                 gmap_homology::json::JsonError::MemoryLimit(_) => crate::ErrorKind::Limit,
@@ -281,6 +289,15 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
                 Unsupported,
                 "{}: unsupported input format '.dot': it is written only, as a view (read the .gmap it came from)",
                 path.display()
+            )
+            .with_path(path))
+        }
+        "" => {
+            return Err(err!(
+                Unsupported,
+                "{}: the file name has no extension, which names the format: one of .{}",
+                path.display(),
+                INPUT_EXTENSIONS.join(", .")
             )
             .with_path(path))
         }

@@ -109,6 +109,14 @@ pub enum ReadErrorKind {
         /// the token (shortened to 40 characters)
         token: String,
     },
+    /// A token is an integer too large for its value (above `u64::MAX`).
+    #[error("{what}: `{token}` is out of range (at most 18446744073709551615)")]
+    OutOfRange {
+        /// which value
+        what: String,
+        /// the token (shortened to 40 characters)
+        token: String,
+    },
     /// A token is a negative integer.
     #[error("{what}: `{token}` is negative")]
     Negative {
@@ -554,6 +562,8 @@ pub(super) fn bad_number(what: String, tok: &[u8]) -> ReadErrorKind {
     let token = shorten(tok, 40);
     if negative {
         ReadErrorKind::Negative { what, token }
+    } else if !tok.is_empty() && tok.iter().all(u8::is_ascii_digit) {
+        ReadErrorKind::OutOfRange { what, token }
     } else {
         ReadErrorKind::NotANumber { what, token }
     }

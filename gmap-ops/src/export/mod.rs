@@ -121,6 +121,58 @@ pub fn write_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
     write_atomic(path, off_string(map)?.as_bytes())
 }
 
+/// The boundary of an n-map (n ≥ 1) as an (n-1)-map: the darts whose `alpha_n` is free, with
+/// `alpha_0 … alpha_{n-2}` kept and `alpha_{n-1}` the next boundary dart around the
+/// (n-2)-cell (walk `alpha_{n-1} alpha_n` until a free dart), each dart with the point of
+/// its vertex. A closed map has an empty boundary. The boundary surface of a 3-map is what
+/// `gmap convert --boundary` writes as `.off`. O(N n) plus the walks, O(N · the largest
+/// number of n-cells around an (n-2)-cell).
+pub fn boundary_map(map: &DenseMap) -> DenseMap {
+    let n = map.dim();
+    assert!(n >= 1, "the boundary of a 0-map");
+    let kept: Vec<Dart> = map.darts().filter(|&d| map.is_free(d, n)).collect();
+    let mut new_of = vec![u32::MAX; map.dart_count()];
+    for (k, d) in kept.iter().enumerate() {
+        new_of[d.index()] = k as u32;
+    }
+    let mut alpha = Vec::with_capacity(kept.len() * n);
+    for &d in &kept {
+        for i in 0..n - 1 {
+            alpha.push(new_of[map.alpha(d, i).index()]);
+        }
+        let mut e = map.alpha(d, n - 1);
+        while !map.is_free(e, n) {
+            e = map.alpha(map.alpha(e, n), n - 1);
+        }
+        alpha.push(new_of[e.index()]);
+    }
+    let mut b = DenseMap::from_flat_unchecked(n - 1, alpha).expect("the boundary of a valid map is a valid map");
+    if map.has_points() {
+        for (k, &d) in kept.iter().enumerate() {
+            b.set_point(Dart::new(k as u32), map.vertex_point(d));
+        }
+    }
+    b
+}
+
+/// The OFF text of the boundary surface of a 3-map with points ([`boundary_map`], then
+/// [`off_string`]: a closed surface that reads back as the same 2-map).
+pub fn boundary_off_string(map: &DenseMap) -> Result<String, ExportError> {
+    if map.dim() != 3 {
+        return Err(ExportError::Dimension { format: ".off of the boundary", expected: 3, found: map.dim() });
+    }
+    let b = boundary_map(map);
+    if b.dart_count() == 0 {
+        return Err(ExportError::NotAMesh { reason: "the 3-map is closed: its boundary is empty".into() });
+    }
+    off_string(&b)
+}
+
+/// Writes [`boundary_off_string`] to `path`.
+pub fn write_boundary_off(map: &DenseMap, path: &Path) -> Result<(), ExportError> {
+    write_atomic(path, boundary_off_string(map)?.as_bytes())
+}
+
 /// Checks that every vertex of an editable map has a finite point, naming a dart of the
 /// first one that has not. O(N).
 fn check_gmap_points<A: Attributes>(g: &GMap<A>) -> Result<(), ExportError> {

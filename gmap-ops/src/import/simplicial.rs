@@ -870,10 +870,13 @@ fn label_at(text: &str, i: usize) -> Option<(u64, usize)> {
 fn bad_label(text: &str, i: usize, line: usize) -> ImportError {
     let rest = &text[i..];
     let token = rest.find(|c: char| c.is_whitespace() || c == ',' || c == '#').map_or(rest, |e| &rest[..e]);
-    ImportError::Syntax {
-        line,
-        message: format!("'{}' is not a vertex label (a non-negative integer)", shorten(token.as_bytes(), 40)),
-    }
+    let shown = shorten(token.as_bytes(), 40);
+    let message = if !token.is_empty() && token.bytes().all(|b| b.is_ascii_digit()) {
+        format!("vertex label '{shown}' is out of range (at most {})", u64::MAX)
+    } else {
+        format!("'{shown}' is not a vertex label (a non-negative integer)")
+    };
+    ImportError::Syntax { line, message }
 }
 
 /// The dart limit of an import: `max_darts`, or the default ([`default_limit`]). Unless the
