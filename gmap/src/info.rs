@@ -20,6 +20,8 @@ pub struct InfoOptions {
     /// refuse maps of more darts than this (a simplicial complex's G-map; its faces when it
     /// has none)
     pub max_darts: Option<u64>,
+    /// refuse more faces than this where a simplicial complex's faces are counted
+    pub max_cells: Option<u64>,
     /// a cubical set's box is a torus (opposite faces identified)
     pub periodic: bool,
     /// an image's cubical set: the values `≤ T` (default: the non-zero values)
@@ -65,6 +67,33 @@ pub struct MapInfo {
     /// why the boundaries are not complete (text output only)
     #[serde(skip)]
     pub boundary_defect: Option<String>,
+    /// the vertices carry points
+    pub points: bool,
+    /// the names of the labels the cells carry, in order of first appearance, with the
+    /// number of cells that carry one (`.gmap` and mesh inputs)
+    pub labels: Vec<(String, usize)>,
+}
+
+/// The label names of a list of label sets, in order of first appearance, each with the
+/// number of sets that carry it.
+fn label_names<'a>(sets: impl Iterator<Item = &'a gmap_core::Labels>) -> Vec<(String, usize)> {
+    let mut out: Vec<(String, usize)> = Vec::new();
+    for l in sets {
+        for (name, _) in l.iter() {
+            match out.iter_mut().find(|(n, _)| n == name) {
+                Some((_, k)) => *k += 1,
+                None => out.push((name.to_string(), 1)),
+            }
+        }
+    }
+    out
+}
+
+fn labels_text(labels: &[(String, usize)]) -> String {
+    if labels.is_empty() {
+        return "none".to_string();
+    }
+    labels.iter().map(|(n, k)| format!("{n} ({k})")).collect::<Vec<_>>().join(", ")
 }
 
 /// The characteristics of an architectural complex (`.json`): the keys of a map's with
@@ -93,6 +122,8 @@ pub struct ArchInfo {
     pub regions: usize,
     /// number of defined entries of the partial boundary matrix
     pub incidences: usize,
+    /// the names of the labels the regions carry, with the number of regions that carry one
+    pub labels: Vec<(String, usize)>,
 }
 
 /// The characteristics of a cubical set: the keys of a map's with the cells of the closure,
@@ -157,7 +188,7 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         Input::Simplicial(sc) => match sc.get().to_gmap_within(o.max_darts) {
             Ok(map) => Err(map),
             Err(e) => match no_gmap_reason(sc, &e) {
-                Some(why) => Ok(simplicial_info(sc, o.max_darts, &file, why)?),
+                Some(why) => Ok(simplicial_info(sc, o.max_cells, &file, why)?),
                 None => return Err(limit_hint(gmap_ops::import::FileError::new(sc.path(), e).into())),
             },
         },
@@ -174,7 +205,13 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         return Err(err!(Usage, "{file}: --level applies to images (.npy, .complex)"));
     }
     Ok(match input {
-        Input::Map(m) => Info::Map(map_info(m.map())),
+        Input::Map(m) => {
+            let mut i = map_info(m.map());
+            if let Some(Ok((_, l))) = m.dense_labels() {
+                i.labels = label_names(l.of.iter().flatten());
+            }
+            Info::Map(i)
+        }
         Input::Simplicial(_) => Info::Map(map_info(&made_map)),
         Input::Arch(x) => Info::Arch(arch_info(x)),
         Input::Cubical(set) => Info::Cubical(cubical_info(set, o.periodic, &file)?),
@@ -205,6 +242,8 @@ pub fn map_info(map: &DenseMap) -> MapInfo {
         orientable: map.is_orientable(),
         euler_characteristic,
         boundary_defect: boundary.err().map(|e| e.to_string()),
+        points: map.has_points(),
+        labels: Vec::new(),
     }
 }
 
@@ -224,6 +263,7 @@ pub fn arch_info(x: &ArchComplex) -> ArchInfo {
         kind: "architectural complex",
         regions: x.regions().len(),
         incidences: x.entries().len(),
+        labels: label_names((0..x.regions().len()).map(|r| x.region_labels(r))),
     }
 }
 
@@ -266,11 +306,11 @@ fn no_gmap_reason(sc: &SimplicialComplex, e: &ImportError) -> Option<String> {
 /// the facets (`gmap_homology::simplices`).
 fn simplicial_info(
     sc: &Sourced<SimplicialComplex>,
-    max_darts: Option<u64>,
+    max_cells: Option<u64>,
     file: &str,
     why: String,
 ) -> Result<SimplicialInfo> {
-    let fc = crate::route::face_complex_within(sc, max_darts, file, false)?;
+    let fc = crate::route::face_complex_within(sc, max_cells, file, false)?;
     // components: the vertices' classes, joined along each facet
     let mut classes = gmap_core::union_find::UnionFind::new(fc.vertices.len());
     let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;
@@ -322,6 +362,8 @@ impl Info {
                     ("complete boundaries", complete),
                     ("orientable", yes(i.orientable)),
                     ("euler characteristic", i.euler_characteristic.to_string()),
+                    ("points", yes(i.points)),
+                    ("labels", labels_text(&i.labels)),
                 ]
             }
             Info::Arch(i) => vec![
@@ -334,6 +376,7 @@ impl Info {
                 ("valid", yes(i.valid)),
                 ("complete boundaries", yes(i.complete_boundaries)),
                 ("euler characteristic", i.euler_characteristic.to_string()),
+                ("labels", labels_text(&i.labels)),
             ],
             Info::Cubical(i) => vec![
                 file,

@@ -315,7 +315,7 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
 
 /// Adds the option that raises the limit to a refusal for darts.
 pub(crate) fn limit_hint(e: Error) -> Error {
-    if e.is_dart_limit() {
+    if e.is_dart_limit() && !e.to_string().contains("no limit raises it") {
         e.flattened("; raise the limit with --max-darts N")
     } else {
         e

@@ -306,8 +306,13 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     let groups = compute(&named, o).map_err(|e| e.context(file.clone()))?;
     let generators = if o.generators {
         o.progress.stage("computing generators and lifting them to the input's cells");
-        let g = gmap_homology::generators::generators(&named.chain, o.field)
-            .map_err(|e| Error::from(e).context(file.clone()))?;
+        let limit = o.max_generator_cells.unwrap_or(gmap_homology::generators::GENERATOR_CELL_LIMIT);
+        let g = gmap_homology::generators::generators_within(&named.chain, o.field, limit).map_err(|e| match e {
+            gmap_homology::HomologyError::GeneratorsTooLarge { .. } => {
+                err!(Limit, "{file}: {e}; the groups are computed without --generators, or raise the limit with --max-generator-cells N (the cost grows as its cube)")
+            }
+            e => Error::from(e).context(file.clone()),
+        })?;
         Some(g.into_iter().map(|x| name_generator(&named, x)).collect())
     } else {
         None

@@ -73,12 +73,18 @@ pub struct HomologyOptions {
     pub field: Option<u64>,
     /// a representative cycle for each summand
     pub generators: bool,
+    /// the most cells per dimension of the reduced complex for which generators are computed
+    /// (default: `gmap_homology::generators::GENERATOR_CELL_LIMIT`, 2,000)
+    pub max_generator_cells: Option<usize>,
     /// reduce a map by homology-preserving removals and contractions first
     pub simplify: bool,
     /// an architectural complex: Algorithm 8.16 first (topological Betti numbers)
     pub topological: bool,
-    /// refuse maps of more darts than this (the direct route: more faces)
+    /// refuse maps of more darts than this
     pub max_darts: Option<u64>,
+    /// the direct route of a simplicial complex: refuse more faces than this (default: what
+    /// the memory budget holds)
+    pub max_cells: Option<u64>,
     /// a simplicial complex's route (`None`: direct unless the options need the G-map)
     pub via: Option<Via>,
     /// a cubical set's box is a torus (opposite faces identified)
@@ -204,18 +210,24 @@ pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> 
 }
 
 /// The direct route's chain complex of a simplicial complex (every face of every facet a
-/// cell, `gmap_homology::simplices`), refused past `max_darts` faces (default: what the
-/// memory budget holds at its dimension), the error naming `file`; with `labels`, the
-/// vertices of every face (to name generators).
+/// cell, `gmap_homology::simplices`), refused past `max_cells` faces (default: what the
+/// memory budget holds at its dimension), the error naming `file` and the option that
+/// raises the limit; with `labels`, the vertices of every face (to name generators).
 pub fn face_complex_within(
     sc: &SimplicialComplex,
-    max_darts: Option<u64>,
+    max_cells: Option<u64>,
     file: &str,
     labels: bool,
 ) -> Result<FaceComplex> {
-    let limit = max_darts.unwrap_or_else(|| default_face_limit(sc));
+    let limit = max_cells.unwrap_or_else(|| default_face_limit(sc));
     face_complex_of(sc.facets(), limit, labels).map_err(|e| match e {
-        FaceError::TooManyFaces { .. } => err!(Limit, "{file}: {e}; raise the limit with --max-darts N").dart_limit(),
+        FaceError::TooManyFaces { .. } if max_cells.is_some() => {
+            err!(Limit, "{file}: {e}; raise the limit with --max-cells N")
+        }
+        FaceError::TooManyFaces { .. } => err!(
+            Limit,
+            "{file}: {e} (the faces the memory budget holds); raise the budget with --max-memory BYTES, or set the limit with --max-cells N"
+        ),
         e => Error::from_source(ErrorKind::Limit, &e).context(file.to_string()).flattened(""),
     })
 }
@@ -246,7 +258,7 @@ pub(crate) fn direct(sc: &SimplicialComplex, o: &HomologyOptions, file: &str) ->
             gmap_homology::simplices::face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
         ));
     }
-    let FaceComplex { chain, vertices, faces } = face_complex_within(sc, o.max_darts, file, o.generators)?;
+    let FaceComplex { chain, vertices, faces } = face_complex_within(sc, o.max_cells, file, o.generators)?;
     let name = Box::new(move |k: usize, j: u32| {
         let j = j as usize;
         CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())

@@ -29,12 +29,14 @@ pub struct SaveOptions {
     pub max_darts: Option<u64>,
     /// refuse incidence graphs of more faces than this (a simplicial complex's face poset)
     pub max_cells: Option<u64>,
+    /// `.off` of a 3-map: write its boundary surface
+    pub boundary: bool,
 }
 
 impl SaveOptions {
     /// Options with a dart limit.
     pub fn max_darts(max_darts: Option<u64>) -> Self {
-        SaveOptions { max_darts, max_cells: None }
+        SaveOptions { max_darts, max_cells: None, boundary: false }
     }
 }
 
@@ -43,6 +45,9 @@ impl SaveOptions {
 pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<()> {
     let output = output.as_ref();
     refuse_same_file(input.path(), output)?;
+    if o.boundary {
+        return save_boundary(input, output);
+    }
     if let Input::Map(m) = input {
         // the labels of the cells live in the labelled map of a `.gmap` file
         let labelled_output = match extension(output).as_str() {
@@ -95,12 +100,77 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     }
 }
 
+/// Writes the boundary surface of a 3-map (or of the G-map of a simplicial complex) as `.off`.
+fn save_boundary(input: &Input, output: &Path) -> Result<()> {
+    if extension(output) != "off" {
+        return Err(err!(Usage, "{}: --boundary writes the boundary surface of a 3-map as .off", output.display()));
+    }
+    let m = input.to_map()?;
+    if m.dim() != 3 {
+        return Err(err!(
+            Usage,
+            "{}: --boundary writes the boundary surface of a 3-map; this map has dimension {}",
+            input.path().display(),
+            m.dim()
+        ));
+    }
+    gmap_ops::export::write_boundary_off(&m, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// What writing `input` to `output` leaves out, for `gmap convert` to say (and to refuse
+/// without `--lossy`): `"the labels"` of its cells or regions, `"the points"` of its
+/// vertices. Empty when the output keeps everything (or cannot hold the input at all,
+/// which [`save`] refuses with that reason).
+/// Reads the labels of a `.gmap` input (once; [`MapInput::labelled`]).
+///
+/// [`MapInput::labelled`]: crate::MapInput::labelled
+pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static str> {
+    let ext = extension(output);
+    let graph = is_graph(output);
+    let mut out = Vec::new();
+    let (labels, keeps_labels) = match input {
+        Input::Map(m) => (
+            matches!(m.dense_labels(), Some(Ok((_, l))) if !l.is_empty()),
+            graph || matches!(ext.as_str(), "gmap" | "vtk"),
+        ),
+        Input::Arch(x) => ((0..x.regions().len()).any(|r| !x.region_labels(r).is_empty()), graph),
+        _ => (false, true),
+    };
+    if labels && (!keeps_labels || o.boundary) {
+        out.push("the labels");
+    }
+    let points = matches!(input, Input::Map(m) if m.map().has_points());
+    if points && !matches!(ext.as_str(), "gmap" | "moka" | "off" | "vtk") {
+        out.push("the points");
+    }
+    // an .off that cannot hold the map is refused for that, first
+    if ext == "off" && !o.boundary && input.dim() != 2 {
+        out.clear();
+    }
+    out
+}
+
 /// Reads `input` and writes it to `output` (`gmap convert`): the output is checked not to
 /// be the input file before anything is read.
 pub fn save_file(input: impl AsRef<Path>, output: impl AsRef<Path>, o: &SaveOptions) -> Result<()> {
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
     let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    save(&opened, output, o)
+}
+
+/// [`save_file`] that first hands what the output drops ([`dropped`]) to `check`, which may
+/// refuse (`gmap convert` without `--lossy`).
+pub fn save_checked(
+    input: impl AsRef<Path>,
+    output: impl AsRef<Path>,
+    o: &SaveOptions,
+    check: impl FnOnce(&[&'static str]) -> Result<()>,
+) -> Result<()> {
+    let (input, output) = (input.as_ref(), output.as_ref());
+    refuse_same_file(input, output)?;
+    let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    check(&dropped(&opened, output, o))?;
     save(&opened, output, o)
 }
 
@@ -144,6 +214,13 @@ pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
     match extension(output).as_str() {
         "gmap" => gmap_core::io::write_gmap(m, output)?,
         "moka" => gmap_core::io::write_moka(m, output)?,
+        "off" if m.dim() == 3 => {
+            return Err(err!(
+                Unsupported,
+                "{}: .off holds 2-maps (surfaces), this map has dimension 3; gmap convert --boundary writes its boundary surface",
+                output.display()
+            ))
+        }
         "off" => gmap_ops::export::write_off(m, output).map_err(|e| cannot_write(output, &e))?,
         "facets" => gmap_ops::export::write_barycentric_facets(m, output)?,
         "vtk" => gmap_ops::export::write_vtk(m, output).map_err(|e| cannot_write(output, &e))?,

@@ -55,9 +55,13 @@ enum Via {
 /// The options every command that reads a file shares.
 #[derive(Args, Debug)]
 struct Limits {
-    /// refuse inputs whose G-map would have more darts than this (direct route: more faces)
+    /// refuse inputs whose G-map would have more darts than this (at most 2^32 - 2)
     #[arg(long)]
     max_darts: Option<u64>,
+    /// refuse simplicial complexes with more faces than this on the direct route and in
+    /// incidence graphs (default: what the memory budget holds)
+    #[arg(long)]
+    max_cells: Option<u64>,
 }
 
 #[derive(Args, Debug)]
@@ -93,6 +97,10 @@ struct HomologyArgs {
     /// print a representative cycle for each summand
     #[arg(long)]
     generators: bool,
+    /// with --generators: the most cells per dimension of the reduced complex (default 2000;
+    /// the cost grows as its cube)
+    #[arg(long, value_name = "N", requires = "generators")]
+    max_generator_cells: Option<usize>,
     /// reduce the map by homology-preserving removals and contractions first
     #[arg(long)]
     simplify: bool,
@@ -129,12 +137,20 @@ struct BenchArgs {
 
 #[derive(Args, Debug)]
 struct ConvertArgs {
-    /// input file
+    /// input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     input: PathBuf,
-    /// output file
+    /// output file: .gmap, .moka, .off, .vtk, .facets, .lar.json, .npy, .complex, or the
+    /// incidence graph as .json, .dot, .graphml
     output: PathBuf,
     #[command(flatten)]
     limits: Limits,
+    /// write even when the output format drops what the input carries (labels, points,
+    /// volumes); what is dropped is said on stderr
+    #[arg(long)]
+    lossy: bool,
+    /// .off of a 3-map: write its boundary surface
+    #[arg(long)]
+    boundary: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -169,13 +185,7 @@ pub fn run() -> ExitCode {
         Command::Bench(a) => bench(a, quiet),
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
-        Command::Convert(a) => {
-            let progress = gmap::Progress::stderr("gmap convert", quiet);
-            progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
-            let done = gmap::save_file(&a.input, &a.output, &gmap::SaveOptions::max_darts(a.limits.max_darts));
-            progress.finish();
-            done.map(|()| String::new())
-        }
+        Command::Convert(a) => convert(a, quiet),
     };
     match text {
         // a reader of our output that went away (`gmap … | head`) ends the command quietly
@@ -199,6 +209,7 @@ fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts))?;
     let mut o = gmap::InfoOptions::default();
     (o.max_darts, o.periodic, o.level, o.progress) = (a.limits.max_darts, a.periodic, a.level, progress.clone());
+    o.max_cells = a.limits.max_cells;
     let info = gmap::info(&input, &o);
     progress.finish();
     let info = info?;
@@ -216,7 +227,8 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
         Via::Gmap => gmap::Via::Gmap,
     });
     (o.field, o.generators, o.simplify, o.topological) = (a.field, a.generators, a.simplify, a.topological);
-    (o.max_darts, o.periodic, o.level) = (a.limits.max_darts, a.periodic, a.level);
+    (o.max_darts, o.max_cells, o.periodic, o.level) = (a.limits.max_darts, a.limits.max_cells, a.periodic, a.level);
+    o.max_generator_cells = a.max_generator_cells;
     o.progress = gmap::Progress::stderr("gmap homology", quiet);
     let report = gmap::homology_file(&a.file, &o);
     o.progress.finish();
@@ -236,4 +248,27 @@ fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {
     } else {
         gmap::bench::to_markdown(&runs)
     })
+}
+
+/// `gmap convert`: refuses an output that drops what the input carries unless `--lossy`,
+/// and says on stderr what is dropped.
+fn convert(a: ConvertArgs, quiet: bool) -> gmap::Result<String> {
+    let progress = gmap::Progress::stderr("gmap convert", quiet);
+    progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
+    let mut o = gmap::SaveOptions::max_darts(a.limits.max_darts);
+    (o.max_cells, o.boundary) = (a.limits.max_cells, a.boundary);
+    let done = gmap::save::save_checked(&a.input, &a.output, &o, |dropped| {
+        if dropped.is_empty() {
+            return Ok(());
+        }
+        let what = format!("{} drops {} of {}", a.output.display(), dropped.join(", "), a.input.display());
+        if a.lossy {
+            eprintln!("gmap convert: {what}");
+            Ok(())
+        } else {
+            Err(gmap::Error::new(gmap::ErrorKind::Usage, format!("{what}; convert with --lossy to write it anyway")))
+        }
+    });
+    progress.finish();
+    done.map(|()| String::new())
 }

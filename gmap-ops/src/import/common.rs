@@ -50,8 +50,9 @@ pub enum ImportError {
         lines: Vec<usize>,
     },
     /// The G-map would have more darts than allowed.
-    #[error("{facets} facets of dimension {dim} make {} darts, over the limit of {limit} darts",
-        darts.map_or_else(|| "more than 2^64".to_string(), |d| d.to_string()))]
+    #[error("{facets} facets of dimension {dim} make {} darts, over the limit of {limit} darts{}",
+        darts.map_or_else(|| "more than 2^64".to_string(), |d| d.to_string()),
+        if *limit >= u32::MAX as u64 - 1 { " (the most a G-map indexes: no limit raises it)" } else { "" })]
     TooManyDarts {
         /// the number of facets (or polygons, or flags found so far)
         facets: usize,

@@ -333,20 +333,27 @@ impl SimplicialComplex {
     /// the memory estimate checked first (see [`SimplicialComplex::to_gmap`] for the other
     /// refusals).
     pub fn to_gmap_within(&self, max_darts: Option<u64>) -> Result<DenseMap, ImportError> {
+        // the true cause first: facets of several dimensions have no G-map at any size
+        if let Some((line, found)) = self.smaller {
+            return Err(ImportError::MixedDimension { line, expected: self.dim + 1, found });
+        }
         let limit = import_limit(self, max_darts)?;
         self.to_gmap(limit)
     }
 
     /// The G-map of the complex (module docs), refusing more than `max_darts` darts before
     /// allocating it. Every large buffer is reserved fallibly: memory that cannot be had is
-    /// an [`ImportError::OutOfMemory`] naming the bytes, not an abort. Errors, in this order: [`ImportError::TooManyDarts`],
-    /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order (among the
-    /// n-facets), [`ImportError::MixedDimension`] for the first facet smaller than n.
+    /// an [`ImportError::OutOfMemory`] naming the bytes, not an abort. Errors, in this order:
+    /// [`ImportError::MixedDimension`] for the first facet smaller than n, [`ImportError::TooManyDarts`],
+    /// [`ImportError::RidgeInManyFacets`] for the first such ridge in sorted order.
     /// O(F n log F) for the ridges and O(F (n+1)! n^2) for the darts.
     pub fn to_gmap(&self, max_darts: u64) -> Result<DenseMap, ImportError> {
         let n = self.dim;
         let m = n + 1;
         let nf = self.facet_count();
+        if let Some((line, found)) = self.smaller {
+            return Err(ImportError::MixedDimension { line, expected: m, found });
+        }
         let darts = self.dart_count();
         let limit = max_darts.min(u32::MAX as u64 - 1);
         match darts {
@@ -355,9 +362,6 @@ impl SimplicialComplex {
         }
         let darts = darts.unwrap_or(0) as usize;
         let partner = self.ridge_partners()?;
-        if let Some((line, found)) = self.smaller {
-            return Err(ImportError::MixedDimension { line, expected: m, found });
-        }
         let oom = |what: &str, bytes: usize| ImportError::OutOfMemory { what: what.into(), bytes: bytes as u64 };
         let table = PermTable::try_new(m).ok_or_else(|| {
             oom("the orderings of a facet", (factorial(m).unwrap_or(0) * table_bytes_per_ordering(n)) as usize)
