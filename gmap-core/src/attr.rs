@@ -787,35 +787,32 @@ pub enum AttributeDefect {
 }
 
 mod sealed {
-    use slotmap::SlotMap;
-
     use super::AttributeDefect;
-    use crate::darts::{DartData, DartId};
+    use crate::darts::{DartId, DartStore};
 
     /// The topology an attribute slot walks: the map's dimension and darts. Built by [`GMap`]
     /// for the duration of one call.
     pub struct Topo<'a> {
         pub(crate) dim: usize,
-        pub(crate) darts: &'a SlotMap<DartId, DartData>,
+        pub(crate) darts: &'a DartStore,
     }
 
     impl Topo<'_> {
         /// `alpha_j(d)` of a live dart.
         #[inline]
         pub(crate) fn alpha(&self, d: DartId, j: usize) -> DartId {
-            self.darts[d].alpha[j]
+            self.darts.alpha(d, j)
         }
 
         #[inline]
         pub(crate) fn live(&self, d: DartId) -> bool {
-            self.darts.contains_key(d)
+            self.darts.contains(d)
         }
 
-        /// A strict upper bound on the dart indices: slot numbers start at 1 and the capacity
-        /// counts the usable slots.
+        /// A strict upper bound on the dart indices.
         #[inline]
         pub(crate) fn bound(&self) -> usize {
-            self.darts.capacity() + 1
+            self.darts.bound()
         }
     }
 

@@ -1,12 +1,12 @@
 //! [`GMap`]: the editable map, with stable dart handles.
 //!
-//! Darts live in a [`slotmap::SlotMap`]: a [`DartId`] stays valid while other darts are
-//! created and removed, and a removed dart's handle is detected as stale rather than
-//! silently reused. Each dart stores its `n + 1` involution images inline (a `SmallVec`,
-//! no heap allocation up to dimension 3: a slot of 48 bytes, which the orbit walks of
-//! sews and attribute repairs touch one dart at a time; maps of dimension 4 and more keep
-//! their images on the heap). Editing goes through `link`/`unlink` (low
-//! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
+//! Darts live in a slot store (`DartStore`, one row of `u32` per dart: a version and the
+//! slot number of each involution image, 20 bytes in a 3-map): a [`DartId`] (slot number
+//! and version) stays valid while other darts are created and removed, and a removed
+//! dart's handle is detected as stale rather than silently reused. Attributes, points and
+//! marks are stored apart, by dart index, so the orbit walks of sews and attribute repairs
+//! read only the links. Editing goes through `link`/`unlink` (low level, may break
+//! validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
 //! [`GMap::to_dense_map`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.
 //!
@@ -14,14 +14,13 @@
 //! per vertex; `GMap` alone is `GMap<()>`, with no attribute and no per-dart cost for them.
 
 use rustc_hash::FxHashMap as HashMap;
-use slotmap::SlotMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
 pub use crate::darts::DartId;
-use crate::darts::{dart_index, DartData};
+use crate::darts::{dart_index, DartStore};
 use crate::dense::{DenseMap, Partition};
 use crate::error::{BoundaryDefect, OrientationConflict};
 use crate::ids::{Dart, Point};
@@ -179,7 +178,7 @@ fn refuse(e: EditError) -> ! {
 #[derive(Clone, Debug)]
 pub struct GMap<A: Attributes = ()> {
     dim: usize,
-    darts: SlotMap<DartId, DartData>,
+    darts: DartStore,
     marks: Marks,
     points: Points,
     attrs: A,
@@ -204,7 +203,7 @@ impl<A: Attributes> GMap<A> {
     /// yet). Panics if `dim > MAX_DIM`. Slots of `A` beyond `dim` stay empty.
     pub fn with_attributes(dim: usize) -> Self {
         assert!(dim <= MAX_DIM, "dimension {dim} exceeds MAX_DIM");
-        GMap { dim, darts: SlotMap::with_key(), marks: Marks::new(0), points: Points::default(), attrs: A::default() }
+        GMap { dim, darts: DartStore::new(dim), marks: Marks::new(0), points: Points::default(), attrs: A::default() }
     }
 
     /// The dimension n.
@@ -219,7 +218,7 @@ impl<A: Attributes> GMap<A> {
 
     /// Whether the handle names a live dart.
     pub fn contains(&self, d: DartId) -> bool {
-        self.darts.contains_key(d)
+        self.darts.contains(d)
     }
 
     /// The live darts, in storage order.
@@ -235,14 +234,12 @@ impl<A: Attributes> GMap<A> {
 
     /// An upper bound on [`GMap::dart_index`] of every live dart.
     pub fn index_bound(&self) -> usize {
-        // slot numbers start at 1; the capacity counts the usable slots
-        self.darts.capacity() + 1
+        self.darts.bound()
     }
 
     /// Creates a dart free for every involution.
     pub fn create_dart(&mut self) -> DartId {
-        let dim = self.dim;
-        let d = self.darts.insert_with_key(|k| DartData { alpha: SmallVec::from_elem(k, dim + 1) });
+        let d = self.darts.insert();
         let bound = self.dart_index(d) + 1;
         if self.marks.len() < bound {
             self.marks.resize(bound.max(self.marks.len() * 2));
@@ -260,6 +257,31 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
+    /// Creates `n` darts free for every involution in consecutive fresh slots (freed slots
+    /// are not reused) and returns the index of the first: dart `first + k` is
+    /// [`GMap::block_dart`]`(first + k)`, linked by [`GMap::link_block`]. O(n · dim).
+    pub(crate) fn create_block(&mut self, n: usize) -> usize {
+        let first = self.darts.insert_block(n);
+        let bound = self.index_bound();
+        if self.marks.len() < bound {
+            self.marks.resize(bound.max(self.marks.len() * 2));
+        }
+        first
+    }
+
+    /// The handle of the dart at index `k` of a block from [`GMap::create_block`].
+    #[inline]
+    pub(crate) fn block_dart(&self, k: usize) -> DartId {
+        self.darts.block_id(k)
+    }
+
+    /// `alpha_i` links the darts at indices `a` and `b` of a block from
+    /// [`GMap::create_block`], both i-free (the caller's precondition). O(1).
+    #[inline]
+    pub(crate) fn link_block(&mut self, a: usize, b: usize, i: usize) {
+        self.darts.link_slots(a, b, i);
+    }
+
     /// Gives the point `p` to the vertex whose darts are exactly `vertex`, live darts none
     /// of which has a point (the caller's precondition: a vertex just made), without walking
     /// it. O(|vertex|).
@@ -271,8 +293,8 @@ impl<A: Attributes> GMap<A> {
     /// `alpha_i(d) = e`, `alpha_i(e) = d` for live darts `d`, `e` that are both i-free and
     /// `i <= n` (the caller's precondition): [`GMap::link`] without its checks. O(1).
     pub(crate) fn link_free(&mut self, d: DartId, e: DartId, i: usize) {
-        self.darts[d].alpha[i] = e;
-        self.darts[e].alpha[i] = d;
+        self.darts.set_alpha(d, i, e);
+        self.darts.set_alpha(e, i, d);
     }
 
     /// Removes a dart, first making its partners free. Other handles stay valid.
@@ -314,7 +336,7 @@ impl<A: Attributes> GMap<A> {
     /// removed dart is refused even when a new dart reuses the slot).
     #[inline]
     fn live(&self, d: DartId) -> Result<(), EditError> {
-        if self.darts.contains_key(d) {
+        if self.darts.contains(d) {
             Ok(())
         } else {
             Err(EditError::NoSuchDart(d))
@@ -337,8 +359,8 @@ impl<A: Attributes> GMap<A> {
     #[inline]
     #[track_caller]
     pub fn alpha(&self, d: DartId, i: usize) -> DartId {
-        match self.darts.get(d).and_then(|x| x.alpha.get(i)) {
-            Some(&e) => e,
+        match self.darts.get_alpha(d, i) {
+            Some(e) => e,
             None => refuse(self.check_dart_index(d, i).expect_err("refused")),
         }
     }
@@ -346,7 +368,7 @@ impl<A: Attributes> GMap<A> {
     /// `alpha_i(d)`, or an error for a stale handle or `i > n`.
     pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, EditError> {
         self.check_dart_index(d, i)?;
-        Ok(self.darts[d].alpha[i])
+        Ok(self.darts.alpha(d, i))
     }
 
     /// The dart reached from `d` by applying the involutions of `word` in order, first
@@ -395,8 +417,8 @@ impl<A: Attributes> GMap<A> {
         self.check_dart_index(e, i)?;
         self.unlink_unchecked(d, i);
         self.unlink_unchecked(e, i);
-        self.darts[d].alpha[i] = e;
-        self.darts[e].alpha[i] = d;
+        self.darts.set_alpha(d, i, e);
+        self.darts.set_alpha(e, i, d);
         Ok(())
     }
 
@@ -421,12 +443,10 @@ impl<A: Attributes> GMap<A> {
 
     /// `unlink` for a live dart and an index checked by the caller.
     fn unlink_unchecked(&mut self, d: DartId, i: usize) {
-        let e = self.darts[d].alpha[i];
-        self.darts[d].alpha[i] = d;
-        if let Some(x) = self.darts.get_mut(e) {
-            if x.alpha[i] == d {
-                x.alpha[i] = e;
-            }
+        let e = self.darts.alpha(d, i);
+        self.darts.set_alpha(d, i, d);
+        if self.darts.contains(e) && self.darts.alpha(e, i) == d {
+            self.darts.set_alpha(e, i, e);
         }
     }
 
@@ -864,8 +884,8 @@ impl<A: Attributes> GMap<A> {
     pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), EditError> {
         let pairs = self.sew_pairs(d, e, i)?;
         for &(a, b) in &pairs {
-            self.darts[a].alpha[i] = b;
-            self.darts[b].alpha[i] = a;
+            self.darts.set_alpha(a, i, b);
+            self.darts.set_alpha(b, i, a);
         }
         if self.needs_reconcile() {
             // the same result as `reconcile_attributes` on the first sides then the second
@@ -916,7 +936,7 @@ impl<A: Attributes> GMap<A> {
         }
         let orbit = self.orbit(d, self.sew_set(i));
         let partners: Vec<DartId> =
-            if self.needs_reconcile() { orbit.iter().map(|&x| self.darts[x].alpha[i]).collect() } else { Vec::new() };
+            if self.needs_reconcile() { orbit.iter().map(|&x| self.darts.alpha(x, i)).collect() } else { Vec::new() };
         for &x in &orbit {
             self.unlink_unchecked(x, i);
         }
@@ -948,8 +968,9 @@ impl<A: Attributes> GMap<A> {
         }
         let w = self.dim + 1;
         let mut flat = Vec::with_capacity(self.darts.len() * w);
-        for (_, data) in &self.darts {
-            flat.extend(data.alpha.iter().map(|&x| (dart_index(x) - first) as u32));
+        let first = first as u32;
+        for (_, row) in self.darts.live_rows() {
+            flat.extend(row.iter().map(|&x| x - first));
         }
         self.dense_with_points(flat, self.darts.keys())
     }
@@ -966,7 +987,7 @@ impl<A: Attributes> GMap<A> {
         let mut flat = Vec::with_capacity(ids.len() * w);
         for &d in &ids {
             for i in 0..w {
-                flat.push(index[self.darts[d].alpha[i]]);
+                flat.push(index[self.darts.alpha(d, i)]);
             }
         }
         let dense = self.dense_with_points(flat, ids.iter().copied());
@@ -994,9 +1015,8 @@ impl<A: Attributes> GMap<A> {
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| g.create_dart()).collect();
         for d in m.darts() {
             let row = m.row(d);
-            let data = &mut g.darts[ids[d.index()]];
             for (i, &e) in row.iter().enumerate() {
-                data.alpha[i] = ids[e as usize];
+                g.darts.set_alpha(ids[d.index()], i, ids[e as usize]);
             }
         }
         if m.has_points() {
@@ -1090,7 +1110,7 @@ impl<A: Attributes> GMap<A> {
             k += 1;
             let cx = colour[&x];
             for i in 0..=self.dim {
-                let y = self.darts[x].alpha[i];
+                let y = self.darts.alpha(x, i);
                 if y == x {
                     continue;
                 }
@@ -1125,7 +1145,7 @@ impl<A: Attributes> GMap<A> {
             && self.orbit_iter(d, AlphaSet::all(self.dim)).all(|x| {
                 let mx = self.marks.is_marked(m, dart_index(x));
                 (0..=self.dim).all(|i| {
-                    let y = self.darts[x].alpha[i];
+                    let y = self.darts.alpha(x, i);
                     y == x || self.marks.is_marked(m, dart_index(y)) != mx
                 })
             })
