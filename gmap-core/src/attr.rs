@@ -625,15 +625,16 @@ impl<T: Clone> Cells<T> {
     /// a sew leaves in place, so the walk from `from` through them finds them all. O(r · n)
     /// for the r darts relabelled.
     fn fold(&mut self, topo: &Topo, i: usize, kept: u32, other: u32, from: DartId) {
-        let mut stack = std::mem::take(&mut self.scratch);
-        stack.clear();
-        self.handles[dart_index(from)] = kept;
-        stack.push(from);
+        // by slot number: the walk reads the rows of links and the handles only
+        let mut stack: SmallVec<[u32; 64]> = SmallVec::new();
+        let start = dart_index(from);
+        self.handles[start] = kept;
+        stack.push(start as u32);
         let mut moved: u32 = 1;
         while let Some(x) = stack.pop() {
             for j in (0..=topo.dim).filter(|&j| j != i) {
-                let y = topo.alpha(x, j);
-                let k = dart_index(y);
+                let y = topo.darts.slot_alpha(x, j);
+                let k = y as usize;
                 if self.handles[k] == other {
                     self.handles[k] = kept;
                     moved += 1;
@@ -641,7 +642,6 @@ impl<T: Clone> Cells<T> {
                 }
             }
         }
-        self.scratch = stack;
         self.entries[kept as usize].refs += moved;
         let e = &mut self.entries[other as usize];
         e.refs = e.refs.saturating_sub(moved);

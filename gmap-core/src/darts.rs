@@ -73,14 +73,20 @@ impl DartStore {
 
     /// The handle of the live dart in slot `k`. Precondition: the slot is live.
     #[inline]
-    fn id_at(&self, k: u32) -> DartId {
+    pub(crate) fn slot_id(&self, k: u32) -> DartId {
         Self::key(k, self.rows[k as usize * self.stride])
+    }
+
+    /// `alpha_i` of the live dart in slot `k`, as a slot number, for `i <= n`.
+    #[inline]
+    pub(crate) fn slot_alpha(&self, k: u32, i: usize) -> u32 {
+        self.rows[k as usize * self.stride + 1 + i]
     }
 
     /// `alpha_i(d)` for a live dart `d` and `i <= n` (the caller's precondition).
     #[inline]
     pub(crate) fn alpha(&self, d: DartId, i: usize) -> DartId {
-        self.id_at(self.rows[dart_index(d) * self.stride + 1 + i])
+        self.slot_id(self.rows[dart_index(d) * self.stride + 1 + i])
     }
 
     /// `alpha_i(d)`, or `None` when `d` is not live or `i > n`.
@@ -112,7 +118,7 @@ impl DartStore {
             }
         };
         self.live += 1;
-        self.id_at(k)
+        self.slot_id(k)
     }
 
     /// `n` new darts in fresh consecutive slots (the free slots are left for later),
@@ -127,12 +133,6 @@ impl DartStore {
         }
         self.live += n;
         first
-    }
-
-    /// The handle of the dart in slot `k` of a block just inserted.
-    #[inline]
-    pub(crate) fn block_id(&self, k: usize) -> DartId {
-        self.id_at(k as u32)
     }
 
     /// Links slots `a` and `b` by `alpha_i` (both sides), by slot number.
@@ -159,7 +159,7 @@ impl DartStore {
 
     /// The live darts, in slot order.
     pub(crate) fn keys(&self) -> impl Iterator<Item = DartId> + '_ {
-        (1..self.bound() as u32).filter(|&k| self.rows[k as usize * self.stride] & 1 == 1).map(|k| self.id_at(k))
+        (1..self.bound() as u32).filter(|&k| self.rows[k as usize * self.stride] & 1 == 1).map(|k| self.slot_id(k))
     }
 
     /// The live slots with their rows of images, in slot order.

@@ -103,13 +103,16 @@ pub enum MapDefect {
 /// The dart pairs a sew links, in the order of the parallel traversal (the given pair first).
 type Pairs = SmallVec<[(DartId, DartId); 16]>;
 
-/// The pairing of two sew orbits while it is built: the pairs in traversal order, looked
-/// up by a linear scan while they are few (sew orbits of surfaces and volumes have a few
-/// darts) and through two hash maps beyond [`Pairing::LINEAR`] pairs.
+/// The same pairs by slot number, as the traversal finds them.
+type SlotPairs = SmallVec<[(u32, u32); 16]>;
+
+/// The pairing of two sew orbits while it is built, by slot number: the pairs in traversal
+/// order, looked up by a linear scan while they are few (sew orbits of surfaces and volumes
+/// have a few darts) and through two hash maps beyond [`Pairing::LINEAR`] pairs.
 #[derive(Default)]
 struct Pairing {
-    pairs: Pairs,
-    index: Option<(HashMap<DartId, DartId>, HashMap<DartId, DartId>)>,
+    pairs: SlotPairs,
+    index: Option<(HashMap<u32, u32>, HashMap<u32, u32>)>,
 }
 
 impl Pairing {
@@ -117,7 +120,7 @@ impl Pairing {
     const LINEAR: usize = 32;
 
     /// Adds the pair `(a, b)`.
-    fn push(&mut self, a: DartId, b: DartId) {
+    fn push(&mut self, a: u32, b: u32) {
         self.pairs.push((a, b));
         match &mut self.index {
             Some((fwd, bwd)) => {
@@ -133,7 +136,8 @@ impl Pairing {
     }
 
     /// The partner of a first-side dart `a`.
-    fn forward(&self, a: DartId) -> Option<DartId> {
+    #[inline]
+    fn forward(&self, a: u32) -> Option<u32> {
         match &self.index {
             Some((fwd, _)) => fwd.get(&a).copied(),
             None => self.pairs.iter().find(|p| p.0 == a).map(|p| p.1),
@@ -141,7 +145,8 @@ impl Pairing {
     }
 
     /// The partner of a second-side dart `b`.
-    fn backward(&self, b: DartId) -> Option<DartId> {
+    #[inline]
+    fn backward(&self, b: u32) -> Option<u32> {
         match &self.index {
             Some((_, bwd)) => bwd.get(&b).copied(),
             None => self.pairs.iter().find(|p| p.1 == b).map(|p| p.0),
@@ -272,7 +277,7 @@ impl<A: Attributes> GMap<A> {
     /// The handle of the dart at index `k` of a block from [`GMap::create_block`].
     #[inline]
     pub(crate) fn block_dart(&self, k: usize) -> DartId {
-        self.darts.block_id(k)
+        self.darts.slot_id(k as u32)
     }
 
     /// `alpha_i` links the darts at indices `a` and `b` of a block from
@@ -818,7 +823,14 @@ impl<A: Attributes> GMap<A> {
     /// are i-free throughout and that the pairing is one-to-one. O(s · n) for orbits of
     /// s darts up to [`Pairing::LINEAR`] (no allocation below 16 pairs), O(s · n) expected
     /// beyond.
+    #[cfg(test)]
     fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Pairs, EditError> {
+        let slots = self.sew_slots(d, e, i)?;
+        Ok(slots.iter().map(|&(a, b)| (self.darts.slot_id(a), self.darts.slot_id(b))).collect())
+    }
+
+    /// [`GMap::sew_pairs`] by slot number: the traversal reads the rows of links only.
+    fn sew_slots(&self, d: DartId, e: DartId, i: usize) -> Result<SlotPairs, EditError> {
         if i > self.dim {
             return Err(EditError::BadIndex { alpha: i, dim: self.dim });
         }
@@ -827,10 +839,12 @@ impl<A: Attributes> GMap<A> {
                 return Err(EditError::NoSuchDart(x));
             }
         }
+        let store = &self.darts;
+        let id = |k: u32| store.slot_id(k);
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
-        let conflict = |at| EditError::NotIsomorphic { first: d, second: e, alpha: i, at };
+        let conflict = |at: u32| EditError::NotIsomorphic { first: d, second: e, alpha: i, at: id(at) };
         let mut pairing = Pairing::default();
-        pairing.push(d, e);
+        pairing.push(dart_index(d) as u32, dart_index(e) as u32);
         let mut k = 0;
         while k < pairing.pairs.len() {
             let (a, b) = pairing.pairs[k];
@@ -839,12 +853,12 @@ impl<A: Attributes> GMap<A> {
                 return Err(conflict(a));
             }
             for x in [a, b] {
-                if !self.is_free(x, i) {
-                    return Err(EditError::NotFree { dart: x, alpha: i });
+                if store.slot_alpha(x, i) != x {
+                    return Err(EditError::NotFree { dart: id(x), alpha: i });
                 }
             }
             for &j in &idx {
-                let (a2, b2) = (self.alpha(a, j), self.alpha(b, j));
+                let (a2, b2) = (store.slot_alpha(a, j), store.slot_alpha(b, j));
                 if (a2 == a) != (b2 == b) {
                     return Err(conflict(a));
                 }
@@ -873,7 +887,7 @@ impl<A: Attributes> GMap<A> {
     /// i-free and pair one-to-one by a parallel traversal. Equivalent to
     /// `try_sew` succeeding.
     pub fn is_sewable(&self, d: DartId, e: DartId, i: usize) -> bool {
-        self.sew_pairs(d, e, i).is_ok()
+        self.sew_slots(d, e, i).is_ok()
     }
 
     /// i-sews `d` and `e` (CGAL's semantics): the sew orbits of `d` and `e` are paired
@@ -882,12 +896,12 @@ impl<A: Attributes> GMap<A> {
     /// keep the attribute of the cell of `d` (the merge hook runs when both had one).
     /// O(orbit size · n), plus the reconciliation when attributes or points are in use.
     pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), EditError> {
-        let pairs = self.sew_pairs(d, e, i)?;
-        for &(a, b) in &pairs {
-            self.darts.set_alpha(a, i, b);
-            self.darts.set_alpha(b, i, a);
+        let slots = self.sew_slots(d, e, i)?;
+        for &(a, b) in &slots {
+            self.darts.link_slots(a as usize, b as usize, i);
         }
         if self.needs_reconcile() {
+            let pairs: Pairs = slots.iter().map(|&(a, b)| (self.darts.slot_id(a), self.darts.slot_id(b))).collect();
             // the same result as `reconcile_attributes` on the first sides then the second
             // sides of the pairs, from the pairing: the i-cells do not change, and the
             // other cells only merge
