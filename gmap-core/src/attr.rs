@@ -137,6 +137,9 @@ struct Entry<T> {
 pub struct Cells<T> {
     handles: Vec<u32>,
     entries: Vec<Entry<T>>,
+    /// bit `h` set when entry `h` holds a value: the liveness test of the sew's fast
+    /// path reads this (64 entries a word) instead of the entries
+    alive: Vec<u64>,
     free: Vec<u32>,
     live: usize,
     on_merge: Option<MergeHook<T>>,
@@ -153,6 +156,7 @@ impl<T> Default for Cells<T> {
         Cells {
             handles: Vec::new(),
             entries: Vec::new(),
+            alive: Vec::new(),
             free: Vec::new(),
             live: 0,
             on_merge: None,
@@ -169,6 +173,7 @@ impl<T: Clone> Clone for Cells<T> {
         Cells {
             handles: self.handles.clone(),
             entries: self.entries.clone(),
+            alive: self.alive.clone(),
             free: self.free.clone(),
             live: self.live,
             on_merge: self.on_merge.clone(),
@@ -275,7 +280,7 @@ impl<T> Cells<T> {
     /// A new entry with no dart counted yet.
     fn alloc(&mut self, value: T, dart: DartId) -> u32 {
         self.live += 1;
-        match self.free.pop() {
+        let h = match self.free.pop() {
             Some(h) => {
                 let e = &mut self.entries[h as usize];
                 e.value = Some(value);
@@ -285,9 +290,14 @@ impl<T> Cells<T> {
             }
             None => {
                 self.entries.push(Entry { value: Some(value), refs: 0, generation: 0, dart });
+                if self.alive.len() * 64 < self.entries.len() {
+                    self.alive.push(0);
+                }
                 (self.entries.len() - 1) as u32
             }
-        }
+        };
+        self.alive[h as usize / 64] |= 1 << (h % 64);
+        h
     }
 
     /// Frees an entry, returning its value.
@@ -295,6 +305,7 @@ impl<T> Cells<T> {
         let e = &mut self.entries[h as usize];
         let v = e.value.take();
         if v.is_some() {
+            self.alive[h as usize / 64] &= !(1 << (h % 64));
             e.generation = e.generation.wrapping_add(1);
             e.refs = 0;
             self.live -= 1;
@@ -570,7 +581,7 @@ impl<T: Clone> Cells<T> {
     /// Whether `h` names a live value.
     #[inline]
     fn is_live(&self, h: u32) -> bool {
-        h != NONE && self.entries.get(h as usize).is_some_and(|e| e.value.is_some())
+        h != NONE && self.alive.get(h as usize / 64).is_some_and(|w| w & (1 << (h % 64)) != 0)
     }
 
     /// The merges a sew of `pairs` causes, as `(kept, other, a dart holding other)` in the
