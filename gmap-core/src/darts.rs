@@ -113,7 +113,7 @@ impl DartStore {
             None => {
                 let k = u32::try_from(self.bound()).expect("fewer than 2^32 dart slots");
                 self.rows.push(1);
-                self.rows.extend(std::iter::repeat(k).take(self.stride - 1));
+                self.rows.extend(std::iter::repeat_n(k, self.stride - 1));
                 k
             }
         };
@@ -129,7 +129,7 @@ impl DartStore {
         self.rows.reserve(n * self.stride);
         for k in first as u32..(first + n) as u32 {
             self.rows.push(1);
-            self.rows.extend(std::iter::repeat(k).take(self.stride - 1));
+            self.rows.extend(std::iter::repeat_n(k, self.stride - 1));
         }
         self.live += n;
         first
@@ -164,6 +164,11 @@ impl DartStore {
 
     /// The live slots with their rows of images, in slot order.
     pub(crate) fn live_rows(&self) -> impl Iterator<Item = (usize, &[u32])> + '_ {
-        self.rows.chunks_exact(self.stride).enumerate().skip(1).filter(|(_, r)| r[0] & 1 == 1).map(|(k, r)| (k, &r[1..]))
+        self.rows
+            .chunks_exact(self.stride)
+            .enumerate()
+            .skip(1)
+            .filter(|(_, r)| r[0] & 1 == 1)
+            .map(|(k, r)| (k, &r[1..]))
     }
 }

@@ -173,7 +173,10 @@ fn check_edge<A: Attributes>(g: &GMap<A>, d: DartId, t: f64) -> Result<EdgePlan,
     for end in [du, dv] {
         let corners = check(g, end, t)?;
         if corners.len() != 3 {
-            return Err(ConstructError::BadShape { dart: end, what: "a vertex of degree 3 (an end of a chamfered edge)" });
+            return Err(ConstructError::BadShape {
+                dart: end,
+                what: "a vertex of degree 3 (an end of a chamfered edge)",
+            });
         }
     }
     let vertex_u: HashSet<DartId> = g.orbit(du, AlphaSet::range(1, 2)).into_iter().collect();

@@ -177,7 +177,7 @@ fn check_convex<A: Attributes>(
         let n = newell(&ring);
         let len = dot(n, n).sqrt();
         let not_convex = |vertex| ConstructError::NotConvex { volume: d, face: f, vertex };
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             return Err(not_convex(f));
         }
         let n = n.map(|x| x / len);
