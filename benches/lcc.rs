@@ -16,7 +16,9 @@
 //! Before the Criterion groups, each variant is timed (best of 5 interleaved rounds, building
 //! and sewing apart) and, when CGAL's headers and g++ are installed, CGAL's harness is run in
 //! the same sitting (`benches/anchors/run-cgal-lcc.sh 40 5`, best of 5 too); the ratios
-//! ours / CGAL's are printed.
+//! ours / CGAL's are printed. Then each variant is built once more in a fresh process on
+//! both sides (this bench with `LCC_ONLY=k`, the harness with the variant's name) for its
+//! peak resident memory.
 //!
 //! `cargo bench --bench lcc`
 
@@ -240,22 +242,60 @@ fn check_grids(g0: &GMap, g1: &GMap, g2: &Labelled) {
     assert!(g1.darts().any(|d| g1.point(d) == Some([K as f64; 3])));
 }
 
-/// CGAL's times for the three variants, from the anchor run in this sitting, or `None` when
-/// CGAL or g++ is missing or the harness fails.
-fn cgal_anchor() -> Option<Vec<Best>> {
+/// The variants by name, as CGAL's harness takes them (its third argument).
+const VARIANTS: [&str; 4] = ["plain", "lcc", "lcc_label", "same_facets"];
+
+/// Builds variant `k` once and returns this process's peak resident memory in bytes: run in
+/// a fresh process (`LCC_ONLY=k`), it is the memory that variant takes.
+fn run_only(s: &Setup, k: usize) -> Option<u64> {
+    let darts = match k {
+        0 => plain(s).0.dart_count(),
+        1 => with_points(s).0.dart_count(),
+        2 => with_labels(s).0.dart_count(),
+        _ => same_facets().0.dart_count(),
+    };
+    assert_eq!(darts, 48 * K * K * K);
+    gmap_core::resources::peak_rss()
+}
+
+/// The peak resident memory in kB of each variant, ours and CGAL's, each built once in a
+/// fresh process (this bench with `LCC_ONLY`, CGAL's harness with the variant's name): a
+/// pair per variant, `None` where a run failed or CGAL is missing.
+fn peaks() -> Vec<(Option<u64>, Option<u64>)> {
+    let exe = std::env::current_exe().ok();
+    (0..VARIANTS.len())
+        .map(|k| {
+            let ours = exe.as_ref().and_then(|exe| {
+                let out = Command::new(exe).env("LCC_ONLY", k.to_string()).arg("--bench").output().ok()?;
+                let text = String::from_utf8(out.stdout).ok()?;
+                text.lines().find_map(|l| l.strip_prefix("peak_rss_bytes ")?.trim().parse::<u64>().ok()).map(|b| b / 1024)
+            });
+            let cgal = cgal_run(&["1", VARIANTS[k]])
+                .and_then(|text| text.lines().next().and_then(|l| serde_json::from_str::<serde_json::Value>(l).ok()))
+                .and_then(|v| v["peak_rss_kb"].as_u64());
+            (ours, cgal)
+        })
+        .collect()
+}
+
+/// The output of CGAL's harness on the 40³ grid with `args` after K, or `None` when CGAL
+/// or g++ is missing or the harness fails.
+fn cgal_run(args: &[&str]) -> Option<String> {
     if !std::path::Path::new("/usr/include/CGAL/Linear_cell_complex_for_generalized_map.h").exists() {
         return None;
     }
-    let out = Command::new("bash")
-        .arg(common::anchor("run-cgal-lcc.sh"))
-        .args([K.to_string(), REPS.to_string()])
-        .output()
-        .ok()?;
+    let out = Command::new("bash").arg(common::anchor("run-cgal-lcc.sh")).arg(K.to_string()).args(args).output().ok()?;
     if !out.status.success() {
         eprintln!("lcc bench: CGAL anchor failed: {}", String::from_utf8_lossy(&out.stderr).trim());
         return None;
     }
-    let text = String::from_utf8(out.stdout).ok()?;
+    String::from_utf8(out.stdout).ok()
+}
+
+/// CGAL's times for the three variants, from the anchor run in this sitting, or `None` when
+/// CGAL or g++ is missing or the harness fails.
+fn cgal_anchor() -> Option<Vec<Best>> {
+    let text = cgal_run(&[&REPS.to_string()])?;
     text.lines()
         .map(|l| {
             let v: serde_json::Value = serde_json::from_str(l).ok()?;
@@ -267,6 +307,13 @@ fn cgal_anchor() -> Option<Vec<Best>> {
 
 fn bench(c: &mut Criterion) {
     let s = Setup { paths: sew_paths() };
+    if let Some(k) = std::env::var("LCC_ONLY").ok().and_then(|v| v.parse::<usize>().ok()) {
+        // a child of `peaks`: one variant, then its peak memory
+        if let Some(bytes) = run_only(&s, k.min(VARIANTS.len() - 1)) {
+            println!("peak_rss_bytes {bytes}");
+        }
+        std::process::exit(0);
+    }
     // REPS rounds of the three variants, interleaved so that a change in the machine's
     // load weighs on all three alike; the first round's grids are checked
     let mut best = [Best::new(); 4];
@@ -312,6 +359,11 @@ fn bench(c: &mut Criterion) {
             }
             None => eprintln!("lcc bench grid{K}, {name}: ours build {b:.3} s + sew {s:.3} s; CGAL anchor not run"),
         }
+    }
+    for (name, (ours, cgal)) in names.iter().zip(peaks()) {
+        let show = |kb: Option<u64>| kb.map_or("?".to_string(), |kb| format!("{:.0} MB", kb as f64 / 1024.0));
+        let ratio = ours.zip(cgal).map_or(String::new(), |(o, c)| format!("; ours / CGAL = {:.2}", o as f64 / c as f64));
+        eprintln!("lcc bench grid{K}, {name}: peak memory: ours {}, CGAL {}{ratio}", show(ours), show(cgal));
     }
     let mut group = c.benchmark_group(format!("lcc{K}"));
     group.sample_size(10);

@@ -10,7 +10,9 @@
 // sewing them, and for both, in wall-clock time and in the thread's CPU time (cpu_*); plus the cell counts and the number of vertex attributes left
 // (one per grid vertex when the sew merged the points correctly), checked once, untimed.
 // Build: g++ -O3 -DNDEBUG -DCGAL_NDEBUG -std=c++17 cgal_lcc_grid.cpp -o cgal_lcc_grid -lgmp -lmpfr
-// Run:   ./cgal_lcc_grid [K] [reps]     (or benches/anchors/run-cgal-lcc.sh [K] [reps])
+// Run:   ./cgal_lcc_grid [K] [reps] [variant]   (or benches/anchors/run-cgal-lcc.sh [K] [reps] [variant]);
+//        with a variant (plain, lcc, lcc_label, same_facets) only that one runs, and its
+//        JSON line's peak_rss_kb is the peak resident memory of building it.
 #include <CGAL/Generalized_map.h>
 #include <CGAL/Linear_cell_complex_for_generalized_map.h>
 #include <CGAL/Linear_cell_complex_traits.h>
@@ -35,6 +37,20 @@ static double cpu_now() {
   timespec t;
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+// The peak resident memory of this process so far, in kB (VmHWM of /proc/self/status, what
+// /usr/bin/time -v reports); 0 where it cannot be read. Run with one variant (third
+// argument), it is that variant's peak.
+static long peak_rss_kb() {
+  FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  long kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "VmHWM: %ld kB", &kb) == 1) break;
+  std::fclose(f);
+  return kb;
 }
 
 using Traits = CGAL::Linear_cell_complex_traits<3>;
@@ -213,9 +229,9 @@ void run(const char* name, int k, int reps, const SewPaths& s) {
   std::printf("{\"engine\":\"CGAL %s\",\"k\":%d,\"darts\":%zu,\"cells\":[%u,%u,%u,%u],"
               "\"components\":%u,\"vertex_attributes\":%zu,\"valid\":%s,"
               "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
-              "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
+              "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f,\"peak_rss_kb\":%ld}\n",
               name, k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
-              valid ? "true" : "false", b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
+              valid ? "true" : "false", b.build, b.sew, b.total, b.cpu_build, b.cpu_sew, peak_rss_kb());
   std::fflush(stdout);
 }
 
@@ -250,24 +266,28 @@ void run_same_facets(int k, int reps) {
               "\"k\":%d,\"darts\":%zu,\"cells\":[%u,%u,%u,%u],\"components\":%u,"
               "\"vertex_attributes\":%zu,\"valid\":%s,\"faces_sewn\":%u,"
               "\"build_s\":%.4f,\"sew_s\":%.4f,\"build_and_sew_s\":%.4f,"
-              "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f}\n",
+              "\"cpu_build_s\":%.4f,\"cpu_sew_s\":%.4f,\"peak_rss_kb\":%ld}\n",
               k, darts, cells[0], cells[1], cells[2], cells[3], cells[4], vattrs,
-              valid ? "true" : "false", sewn, b.build, b.sew, b.total, b.cpu_build, b.cpu_sew);
+              valid ? "true" : "false", sewn, b.build, b.sew, b.total, b.cpu_build, b.cpu_sew, peak_rss_kb());
   std::fflush(stdout);
 }
 
 int main(int argc, char** argv) {
   int k = argc > 1 ? std::atoi(argv[1]) : 40;
   int reps = argc > 2 ? std::atoi(argv[2]) : 3;
-  if (k < 1 || reps < 1) {
-    std::fprintf(stderr, "usage: cgal_lcc_grid [K>=1] [reps>=1]\n");
+  std::string only = argc > 3 ? argv[3] : "";
+  if (k < 1 || reps < 1 || !(only.empty() || only == "plain" || only == "lcc" || only == "lcc_label" ||
+                              only == "same_facets")) {
+    std::fprintf(stderr, "usage: cgal_lcc_grid [K>=1] [reps>=1] [plain|lcc|lcc_label|same_facets]\n");
     return 2;
   }
   SewPaths s = find_sew_paths();
-  run<Plain>("Generalized_map<3> (no attributes)", k, reps, s);
-  run<Lcc>("Linear_cell_complex_for_generalized_map<3> (points)", k, reps, s);
-  run<LccLabel>("Linear_cell_complex_for_generalized_map<3> (points, int label per volume)", k, reps,
-                s);
-  run_same_facets(k, reps);
+  if (only.empty() || only == "plain") run<Plain>("Generalized_map<3> (no attributes)", k, reps, s);
+  if (only.empty() || only == "lcc")
+    run<Lcc>("Linear_cell_complex_for_generalized_map<3> (points)", k, reps, s);
+  if (only.empty() || only == "lcc_label")
+    run<LccLabel>("Linear_cell_complex_for_generalized_map<3> (points, int label per volume)", k, reps,
+                  s);
+  if (only.empty() || only == "same_facets") run_same_facets(k, reps);
   return 0;
 }

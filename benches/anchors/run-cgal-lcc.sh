@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build CGAL's Linear_cell_complex grid harness (Debian's libcgal-dev) and run it.
-# usage: run-cgal-lcc.sh [K] [reps]      prints one JSON line per variant (see cgal_lcc_grid.cpp)
+# usage: run-cgal-lcc.sh [K] [reps] [variant]   prints one JSON line per variant (see cgal_lcc_grid.cpp)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 k=${1:-40}; reps=${2:-3}
@@ -8,4 +8,4 @@ k=${1:-40}; reps=${2:-3}
 bin="${TMPDIR:-/tmp}/cgal_lcc_grid"
 # (re)build when the binary is missing or older than its source
 [ "$bin" -nt "$here/cgal_lcc_grid.cpp" ] || g++ -O3 -DNDEBUG -DCGAL_NDEBUG -std=c++17 "$here/cgal_lcc_grid.cpp" -o "$bin" -lgmp -lmpfr
-exec "$bin" "$k" "$reps"
+exec "$bin" "$k" "$reps" ${3:+"$3"}

@@ -1,12 +1,12 @@
 //! [`GMap`]: the editable map, with stable dart handles.
 //!
-//! Darts live in a [`slotmap::SlotMap`]: a [`DartId`] stays valid while other darts are
-//! created and removed, and a removed dart's handle is detected as stale rather than
-//! silently reused. Each dart stores its `n + 1` involution images inline (a `SmallVec`,
-//! no heap allocation up to dimension 3: a slot of 48 bytes, which the orbit walks of
-//! sews and attribute repairs touch one dart at a time; maps of dimension 4 and more keep
-//! their images on the heap). Editing goes through `link`/`unlink` (low
-//! level, may break validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
+//! Darts live in a slot store (`DartStore`, one row of `u32` per dart: a version and the
+//! slot number of each involution image, 20 bytes in a 3-map): a [`DartId`] (slot number
+//! and version) stays valid while other darts are created and removed, and a removed
+//! dart's handle is detected as stale rather than silently reused. Attributes, points and
+//! marks are stored apart, by dart index, so the orbit walks of sews and attribute repairs
+//! read only the links. Editing goes through `link`/`unlink` (low level, may break
+//! validity) or `sew`/`unsew` (keep validity, CGAL's semantics).
 //! [`GMap::to_dense_map`] freezes the map into a [`DenseMap`] for analysis in one linear
 //! pass; [`GMap::from_dense`] thaws one back.
 //!
@@ -14,14 +14,13 @@
 //! per vertex; `GMap` alone is `GMap<()>`, with no attribute and no per-dart cost for them.
 
 use rustc_hash::FxHashMap as HashMap;
-use slotmap::SlotMap;
 use smallvec::SmallVec;
 use thiserror::Error;
 
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::attr::{AttrId, AttributeAt, AttributeDefect, Attributes, Points, Topo};
 pub use crate::darts::DartId;
-use crate::darts::{dart_index, DartData};
+use crate::darts::{dart_index, DartStore};
 use crate::dense::{DenseMap, Partition};
 use crate::error::{BoundaryDefect, OrientationConflict};
 use crate::ids::{Dart, Point};
@@ -104,13 +103,16 @@ pub enum MapDefect {
 /// The dart pairs a sew links, in the order of the parallel traversal (the given pair first).
 type Pairs = SmallVec<[(DartId, DartId); 16]>;
 
-/// The pairing of two sew orbits while it is built: the pairs in traversal order, looked
-/// up by a linear scan while they are few (sew orbits of surfaces and volumes have a few
-/// darts) and through two hash maps beyond [`Pairing::LINEAR`] pairs.
+/// The same pairs by slot number, as the traversal finds them.
+type SlotPairs = SmallVec<[(u32, u32); 16]>;
+
+/// The pairing of two sew orbits while it is built, by slot number: the pairs in traversal
+/// order, looked up by a linear scan while they are few (sew orbits of surfaces and volumes
+/// have a few darts) and through two hash maps beyond [`Pairing::LINEAR`] pairs.
 #[derive(Default)]
 struct Pairing {
-    pairs: Pairs,
-    index: Option<(HashMap<DartId, DartId>, HashMap<DartId, DartId>)>,
+    pairs: SlotPairs,
+    index: Option<(HashMap<u32, u32>, HashMap<u32, u32>)>,
 }
 
 impl Pairing {
@@ -118,7 +120,7 @@ impl Pairing {
     const LINEAR: usize = 32;
 
     /// Adds the pair `(a, b)`.
-    fn push(&mut self, a: DartId, b: DartId) {
+    fn push(&mut self, a: u32, b: u32) {
         self.pairs.push((a, b));
         match &mut self.index {
             Some((fwd, bwd)) => {
@@ -134,7 +136,8 @@ impl Pairing {
     }
 
     /// The partner of a first-side dart `a`.
-    fn forward(&self, a: DartId) -> Option<DartId> {
+    #[inline]
+    fn forward(&self, a: u32) -> Option<u32> {
         match &self.index {
             Some((fwd, _)) => fwd.get(&a).copied(),
             None => self.pairs.iter().find(|p| p.0 == a).map(|p| p.1),
@@ -142,7 +145,8 @@ impl Pairing {
     }
 
     /// The partner of a second-side dart `b`.
-    fn backward(&self, b: DartId) -> Option<DartId> {
+    #[inline]
+    fn backward(&self, b: u32) -> Option<u32> {
         match &self.index {
             Some((_, bwd)) => bwd.get(&b).copied(),
             None => self.pairs.iter().find(|p| p.1 == b).map(|p| p.0),
@@ -179,7 +183,7 @@ fn refuse(e: EditError) -> ! {
 #[derive(Clone, Debug)]
 pub struct GMap<A: Attributes = ()> {
     dim: usize,
-    darts: SlotMap<DartId, DartData>,
+    darts: DartStore,
     marks: Marks,
     points: Points,
     attrs: A,
@@ -204,7 +208,7 @@ impl<A: Attributes> GMap<A> {
     /// yet). Panics if `dim > MAX_DIM`. Slots of `A` beyond `dim` stay empty.
     pub fn with_attributes(dim: usize) -> Self {
         assert!(dim <= MAX_DIM, "dimension {dim} exceeds MAX_DIM");
-        GMap { dim, darts: SlotMap::with_key(), marks: Marks::new(0), points: Points::default(), attrs: A::default() }
+        GMap { dim, darts: DartStore::new(dim), marks: Marks::new(0), points: Points::default(), attrs: A::default() }
     }
 
     /// The dimension n.
@@ -219,7 +223,7 @@ impl<A: Attributes> GMap<A> {
 
     /// Whether the handle names a live dart.
     pub fn contains(&self, d: DartId) -> bool {
-        self.darts.contains_key(d)
+        self.darts.contains(d)
     }
 
     /// The live darts, in storage order.
@@ -235,14 +239,12 @@ impl<A: Attributes> GMap<A> {
 
     /// An upper bound on [`GMap::dart_index`] of every live dart.
     pub fn index_bound(&self) -> usize {
-        // slot numbers start at 1; the capacity counts the usable slots
-        self.darts.capacity() + 1
+        self.darts.bound()
     }
 
     /// Creates a dart free for every involution.
     pub fn create_dart(&mut self) -> DartId {
-        let dim = self.dim;
-        let d = self.darts.insert_with_key(|k| DartData { alpha: SmallVec::from_elem(k, dim + 1) });
+        let d = self.darts.insert();
         let bound = self.dart_index(d) + 1;
         if self.marks.len() < bound {
             self.marks.resize(bound.max(self.marks.len() * 2));
@@ -260,6 +262,31 @@ impl<A: Attributes> GMap<A> {
         }
     }
 
+    /// Creates `n` darts free for every involution in consecutive fresh slots (freed slots
+    /// are not reused) and returns the index of the first: dart `first + k` is
+    /// [`GMap::block_dart`]`(first + k)`, linked by [`GMap::link_block`]. O(n · dim).
+    pub(crate) fn create_block(&mut self, n: usize) -> usize {
+        let first = self.darts.insert_block(n);
+        let bound = self.index_bound();
+        if self.marks.len() < bound {
+            self.marks.resize(bound.max(self.marks.len() * 2));
+        }
+        first
+    }
+
+    /// The handle of the dart at index `k` of a block from [`GMap::create_block`].
+    #[inline]
+    pub(crate) fn block_dart(&self, k: usize) -> DartId {
+        self.darts.slot_id(k as u32)
+    }
+
+    /// `alpha_i` links the darts at indices `a` and `b` of a block from
+    /// [`GMap::create_block`], both i-free (the caller's precondition). O(1).
+    #[inline]
+    pub(crate) fn link_block(&mut self, a: usize, b: usize, i: usize) {
+        self.darts.link_slots(a, b, i);
+    }
+
     /// Gives the point `p` to the vertex whose darts are exactly `vertex`, live darts none
     /// of which has a point (the caller's precondition: a vertex just made), without walking
     /// it. O(|vertex|).
@@ -271,8 +298,8 @@ impl<A: Attributes> GMap<A> {
     /// `alpha_i(d) = e`, `alpha_i(e) = d` for live darts `d`, `e` that are both i-free and
     /// `i <= n` (the caller's precondition): [`GMap::link`] without its checks. O(1).
     pub(crate) fn link_free(&mut self, d: DartId, e: DartId, i: usize) {
-        self.darts[d].alpha[i] = e;
-        self.darts[e].alpha[i] = d;
+        self.darts.set_alpha(d, i, e);
+        self.darts.set_alpha(e, i, d);
     }
 
     /// Removes a dart, first making its partners free. Other handles stay valid.
@@ -314,7 +341,7 @@ impl<A: Attributes> GMap<A> {
     /// removed dart is refused even when a new dart reuses the slot).
     #[inline]
     fn live(&self, d: DartId) -> Result<(), EditError> {
-        if self.darts.contains_key(d) {
+        if self.darts.contains(d) {
             Ok(())
         } else {
             Err(EditError::NoSuchDart(d))
@@ -337,8 +364,8 @@ impl<A: Attributes> GMap<A> {
     #[inline]
     #[track_caller]
     pub fn alpha(&self, d: DartId, i: usize) -> DartId {
-        match self.darts.get(d).and_then(|x| x.alpha.get(i)) {
-            Some(&e) => e,
+        match self.darts.get_alpha(d, i) {
+            Some(e) => e,
             None => refuse(self.check_dart_index(d, i).expect_err("refused")),
         }
     }
@@ -346,7 +373,7 @@ impl<A: Attributes> GMap<A> {
     /// `alpha_i(d)`, or an error for a stale handle or `i > n`.
     pub fn try_alpha(&self, d: DartId, i: usize) -> Result<DartId, EditError> {
         self.check_dart_index(d, i)?;
-        Ok(self.darts[d].alpha[i])
+        Ok(self.darts.alpha(d, i))
     }
 
     /// The dart reached from `d` by applying the involutions of `word` in order, first
@@ -395,8 +422,8 @@ impl<A: Attributes> GMap<A> {
         self.check_dart_index(e, i)?;
         self.unlink_unchecked(d, i);
         self.unlink_unchecked(e, i);
-        self.darts[d].alpha[i] = e;
-        self.darts[e].alpha[i] = d;
+        self.darts.set_alpha(d, i, e);
+        self.darts.set_alpha(e, i, d);
         Ok(())
     }
 
@@ -421,12 +448,10 @@ impl<A: Attributes> GMap<A> {
 
     /// `unlink` for a live dart and an index checked by the caller.
     fn unlink_unchecked(&mut self, d: DartId, i: usize) {
-        let e = self.darts[d].alpha[i];
-        self.darts[d].alpha[i] = d;
-        if let Some(x) = self.darts.get_mut(e) {
-            if x.alpha[i] == d {
-                x.alpha[i] = e;
-            }
+        let e = self.darts.alpha(d, i);
+        self.darts.set_alpha(d, i, d);
+        if self.darts.contains(e) && self.darts.alpha(e, i) == d {
+            self.darts.set_alpha(e, i, e);
         }
     }
 
@@ -798,7 +823,14 @@ impl<A: Attributes> GMap<A> {
     /// are i-free throughout and that the pairing is one-to-one. O(s · n) for orbits of
     /// s darts up to [`Pairing::LINEAR`] (no allocation below 16 pairs), O(s · n) expected
     /// beyond.
+    #[cfg(test)]
     fn sew_pairs(&self, d: DartId, e: DartId, i: usize) -> Result<Pairs, EditError> {
+        let slots = self.sew_slots(d, e, i)?;
+        Ok(slots.iter().map(|&(a, b)| (self.darts.slot_id(a), self.darts.slot_id(b))).collect())
+    }
+
+    /// [`GMap::sew_pairs`] by slot number: the traversal reads the rows of links only.
+    fn sew_slots(&self, d: DartId, e: DartId, i: usize) -> Result<SlotPairs, EditError> {
         if i > self.dim {
             return Err(EditError::BadIndex { alpha: i, dim: self.dim });
         }
@@ -807,10 +839,12 @@ impl<A: Attributes> GMap<A> {
                 return Err(EditError::NoSuchDart(x));
             }
         }
+        let store = &self.darts;
+        let id = |k: u32| store.slot_id(k);
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
-        let conflict = |at| EditError::NotIsomorphic { first: d, second: e, alpha: i, at };
+        let conflict = |at: u32| EditError::NotIsomorphic { first: d, second: e, alpha: i, at: id(at) };
         let mut pairing = Pairing::default();
-        pairing.push(d, e);
+        pairing.push(dart_index(d) as u32, dart_index(e) as u32);
         let mut k = 0;
         while k < pairing.pairs.len() {
             let (a, b) = pairing.pairs[k];
@@ -819,12 +853,12 @@ impl<A: Attributes> GMap<A> {
                 return Err(conflict(a));
             }
             for x in [a, b] {
-                if !self.is_free(x, i) {
-                    return Err(EditError::NotFree { dart: x, alpha: i });
+                if store.slot_alpha(x, i) != x {
+                    return Err(EditError::NotFree { dart: id(x), alpha: i });
                 }
             }
             for &j in &idx {
-                let (a2, b2) = (self.alpha(a, j), self.alpha(b, j));
+                let (a2, b2) = (store.slot_alpha(a, j), store.slot_alpha(b, j));
                 if (a2 == a) != (b2 == b) {
                     return Err(conflict(a));
                 }
@@ -853,7 +887,7 @@ impl<A: Attributes> GMap<A> {
     /// i-free and pair one-to-one by a parallel traversal. Equivalent to
     /// `try_sew` succeeding.
     pub fn is_sewable(&self, d: DartId, e: DartId, i: usize) -> bool {
-        self.sew_pairs(d, e, i).is_ok()
+        self.sew_slots(d, e, i).is_ok()
     }
 
     /// i-sews `d` and `e` (CGAL's semantics): the sew orbits of `d` and `e` are paired
@@ -862,12 +896,12 @@ impl<A: Attributes> GMap<A> {
     /// keep the attribute of the cell of `d` (the merge hook runs when both had one).
     /// O(orbit size · n), plus the reconciliation when attributes or points are in use.
     pub fn try_sew(&mut self, d: DartId, e: DartId, i: usize) -> Result<(), EditError> {
-        let pairs = self.sew_pairs(d, e, i)?;
-        for &(a, b) in &pairs {
-            self.darts[a].alpha[i] = b;
-            self.darts[b].alpha[i] = a;
+        let slots = self.sew_slots(d, e, i)?;
+        for &(a, b) in &slots {
+            self.darts.link_slots(a as usize, b as usize, i);
         }
         if self.needs_reconcile() {
+            let pairs: Pairs = slots.iter().map(|&(a, b)| (self.darts.slot_id(a), self.darts.slot_id(b))).collect();
             // the same result as `reconcile_attributes` on the first sides then the second
             // sides of the pairs, from the pairing: the i-cells do not change, and the
             // other cells only merge
@@ -916,7 +950,7 @@ impl<A: Attributes> GMap<A> {
         }
         let orbit = self.orbit(d, self.sew_set(i));
         let partners: Vec<DartId> =
-            if self.needs_reconcile() { orbit.iter().map(|&x| self.darts[x].alpha[i]).collect() } else { Vec::new() };
+            if self.needs_reconcile() { orbit.iter().map(|&x| self.darts.alpha(x, i)).collect() } else { Vec::new() };
         for &x in &orbit {
             self.unlink_unchecked(x, i);
         }
@@ -948,8 +982,9 @@ impl<A: Attributes> GMap<A> {
         }
         let w = self.dim + 1;
         let mut flat = Vec::with_capacity(self.darts.len() * w);
-        for (_, data) in &self.darts {
-            flat.extend(data.alpha.iter().map(|&x| (dart_index(x) - first) as u32));
+        let first = first as u32;
+        for (_, row) in self.darts.live_rows() {
+            flat.extend(row.iter().map(|&x| x - first));
         }
         self.dense_with_points(flat, self.darts.keys())
     }
@@ -966,7 +1001,7 @@ impl<A: Attributes> GMap<A> {
         let mut flat = Vec::with_capacity(ids.len() * w);
         for &d in &ids {
             for i in 0..w {
-                flat.push(index[self.darts[d].alpha[i]]);
+                flat.push(index[self.darts.alpha(d, i)]);
             }
         }
         let dense = self.dense_with_points(flat, ids.iter().copied());
@@ -994,9 +1029,8 @@ impl<A: Attributes> GMap<A> {
         let ids: Vec<DartId> = (0..m.dart_count()).map(|_| g.create_dart()).collect();
         for d in m.darts() {
             let row = m.row(d);
-            let data = &mut g.darts[ids[d.index()]];
             for (i, &e) in row.iter().enumerate() {
-                data.alpha[i] = ids[e as usize];
+                g.darts.set_alpha(ids[d.index()], i, ids[e as usize]);
             }
         }
         if m.has_points() {
@@ -1090,7 +1124,7 @@ impl<A: Attributes> GMap<A> {
             k += 1;
             let cx = colour[&x];
             for i in 0..=self.dim {
-                let y = self.darts[x].alpha[i];
+                let y = self.darts.alpha(x, i);
                 if y == x {
                     continue;
                 }
@@ -1125,7 +1159,7 @@ impl<A: Attributes> GMap<A> {
             && self.orbit_iter(d, AlphaSet::all(self.dim)).all(|x| {
                 let mx = self.marks.is_marked(m, dart_index(x));
                 (0..=self.dim).all(|i| {
-                    let y = self.darts[x].alpha[i];
+                    let y = self.darts.alpha(x, i);
                     y == x || self.marks.is_marked(m, dart_index(y)) != mx
                 })
             })

@@ -244,12 +244,11 @@ impl<A: Attributes> GMap<A> {
     /// given; returns the copy of dart 0. Precondition: dimension `>= 2`. O(darts · n), no
     /// hashing and no vertex walk.
     fn instantiate(&mut self, t: &Template, points: Option<&[Point]>) -> DartId {
-        self.reserve_darts(t.rows.len());
-        let ids: SmallVec<[DartId; 64]> = t.rows.iter().map(|_| self.create_dart()).collect();
+        let first = self.create_block(t.rows.len());
         for (k, row) in t.rows.iter().enumerate() {
             for (i, &e) in row.iter().enumerate() {
                 if e as usize > k {
-                    self.link_free(ids[k], ids[e as usize], i);
+                    self.link_block(first + k, first + e as usize, i);
                 }
             }
         }
@@ -257,11 +256,11 @@ impl<A: Attributes> GMap<A> {
             let mut vertex: SmallVec<[DartId; 8]> = SmallVec::new();
             for (darts, &p) in t.corners.iter().zip(points) {
                 vertex.clear();
-                vertex.extend(darts.iter().map(|&x| ids[x as usize]));
+                vertex.extend(darts.iter().map(|&x| self.block_dart(first + x as usize)));
                 self.set_fresh_point(&vertex, p);
             }
         }
-        ids[0]
+        self.block_dart(first)
     }
 
     /// Adds a closed polygon for every face (a cycle of corner numbers), then `alpha_2`-links

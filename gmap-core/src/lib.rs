@@ -10,8 +10,8 @@
 //!
 //! ## Two representations
 //!
-//! * [`GMap`] is the editable map. Darts live in a slotmap, so a [`DartId`] survives the
-//!   removal of other darts; [`GMap::sew`]/[`GMap::unsew`] follow CGAL's semantics and keep
+//! * [`GMap`] is the editable map. Darts live in versioned slots (a row of `u32` links per
+//!   dart), so a [`DartId`] survives the removal of other darts; [`GMap::sew`]/[`GMap::unsew`] follow CGAL's semantics and keep
 //!   the map valid, [`GMap::link`]/[`GMap::unlink`] are the low-level operations that may
 //!   not. Marks are reserved without a cap ([`Marks`]). A `GMap<A>` carries typed attributes
 //!   on the cells of each dimension and a point per vertex, kept consistent through every
@@ -25,8 +25,7 @@
 //!   and the dual.
 //!
 //! The split follows the measurement that drove it: orbit traversals over a flat `u32`
-//! array touch one cache line per dart, while a slotmap lookup adds a version check and
-//! an indirection. [`GMap::to_dense_map`] and [`GMap::from_dense`] convert in one linear pass.
+//! array touch one cache line per dart, while a handle lookup adds a version check. [`GMap::to_dense_map`] and [`GMap::from_dense`] convert in one linear pass.
 //!
 //! Whole-map counts and checks avoid traversals where a sequential scan does: orbit counts
 //! ([`DenseMap::cell_counts_and_components`]) and orientability use union-find over the

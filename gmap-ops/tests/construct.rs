@@ -229,9 +229,121 @@ fn a_corner_of_a_cube_surface_chamfered_becomes_a_triangle() {
         c::try_chamfer_vertex(&mut g, f, 1.5),
         Err(ConstructError::BadParameter { what: "chamfer fraction", value: 1.5 })
     );
-    let mut h = GMap::new(3);
+    // chamfers work on surfaces and on the boundary of volumes, not in dimension 4
+    let mut h = GMap::new(4);
     let e = h.make_hexahedron(UNIT);
     assert!(matches!(c::try_chamfer_vertex(&mut h, e, 0.5), Err(ConstructError::BadDimension { .. })));
+}
+
+/// The corners of the face of `f`, sorted, without repeats.
+fn face_points<A: Attributes>(g: &GMap<A>, f: DartId) -> Vec<Point> {
+    let mut corners: Vec<Point> =
+        g.orbit(f, gmap_core::AlphaSet::range(0, 1)).iter().map(|&x| g.point(x).unwrap()).collect();
+    corners.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    corners.dedup();
+    corners
+}
+
+#[test]
+fn an_edge_of_a_cube_chamfered_becomes_a_quadrangle() {
+    // the surface (dimension 2) and the solid (dimension 3): the same bevel, Δχ = 0
+    for (dim, before, after) in [(2, vec![8, 12, 6], vec![10, 15, 7]), (3, vec![8, 12, 6, 1], vec![10, 15, 7, 1])] {
+        let mut g = GMap::new(dim);
+        // the dart at (0,0,0) on the edge to (0,0,1)
+        let d = g.make_hexahedron(UNIT);
+        assert_eq!(cells(&g), before);
+        let chi0 = chi(&g);
+        assert!(c::can_chamfer_edge(&g, d, 0.25));
+        let f = c::chamfer_edge(&mut g, d, 0.25);
+        assert_eq!((cells(&g), chi(&g)), (after, chi0));
+        g.validate().unwrap();
+        // the new face: a quadrangle with its corners a quarter along the four other edges
+        assert_eq!(g.orbit(f, gmap_core::AlphaSet::range(0, 1)).len(), 8);
+        assert_eq!(face_points(&g, f), vec![[0., 0.25, 0.], [0., 0.25, 1.], [0.25, 0., 0.], [0.25, 0., 1.]]);
+        // an edge of the new face ends at vertices of degree 3: chamfered in turn
+        assert!(c::can_chamfer_edge(&g, f, 0.5));
+        c::chamfer_edge(&mut g, f, 0.5);
+        assert_eq!(chi(&g), chi0);
+        g.validate().unwrap();
+    }
+}
+
+#[test]
+fn a_corner_of_a_solid_cube_chamfered_becomes_a_triangle() {
+    let mut g = GMap::new(3);
+    let d = g.make_hexahedron(UNIT);
+    assert!(c::can_chamfer_vertex(&g, d, 0.25));
+    let f = c::chamfer_vertex(&mut g, d, 0.25);
+    assert_eq!((cells(&g), chi(&g)), (vec![10, 15, 7, 1], 1));
+    assert_eq!(face_points(&g, f), vec![[0., 0., 0.25], [0., 0.25, 0.], [0.25, 0., 0.]]);
+    g.validate().unwrap();
+}
+
+#[test]
+fn chamfers_refuse_with_the_reason() {
+    // two cubes sewn: the shared face's vertices are not on the boundary of one volume
+    let mut g = GMap::new(3);
+    let a = g.make_hexahedron(UNIT);
+    let b = g.make_hexahedron(UNIT.map(|p| [p[0], p[1], p[2] + 1.]));
+    let top = top_face(&g);
+    let bottom = g
+        .darts()
+        .find(|&x| {
+            g.orbit(x, gmap_core::AlphaSet::range(0, 2)).contains(&b)
+                && g.orbit(x, gmap_core::AlphaSet::range(0, 1)).iter().all(|&y| g.point(y).unwrap()[2] == 1.0)
+        })
+        .unwrap();
+    let (p, q) = (g.point(top).unwrap(), g.point(g.alpha(top, 0)).unwrap());
+    let partner = g
+        .orbit(bottom, gmap_core::AlphaSet::range(0, 1))
+        .into_iter()
+        .find(|&y| g.point(y) == Some(p) && g.point(g.alpha(y, 0)) == Some(q))
+        .unwrap();
+    g.sew(top, partner, 3);
+    let before = cells(&g);
+    assert!(!c::can_chamfer_vertex(&g, top, 0.25));
+    assert!(matches!(c::try_chamfer_vertex(&mut g, top, 0.25), Err(ConstructError::BadShape { .. })));
+    assert!(matches!(c::try_chamfer_edge(&mut g, top, 0.25), Err(ConstructError::BadShape { .. })));
+    assert_eq!(
+        c::try_chamfer_edge(&mut g, a, 0.0),
+        Err(ConstructError::BadParameter { what: "chamfer fraction", value: 0.0 })
+    );
+    assert_eq!(cells(&g), before);
+    // an edge whose end has degree 4: the centre of a face triangulated around it
+    let mut s = GMap::new(2);
+    s.make_hexahedron(UNIT);
+    let top = top_face(&s);
+    let centre = c::triangulate_face_barycentric(&mut s, top);
+    assert!(!c::can_chamfer_edge(&s, centre, 0.25));
+    assert!(matches!(c::try_chamfer_edge(&mut s, centre, 0.25), Err(ConstructError::BadShape { .. })));
+    let mut line = GMap::new(1);
+    let e = line.make_segment([[0., 0., 0.], [1., 0., 0.]]);
+    assert!(matches!(c::try_chamfer_edge(&mut line, e, 0.5), Err(ConstructError::BadDimension { .. })));
+}
+
+#[test]
+fn only_convex_volumes_are_tetrahedralized() {
+    // a frustum: convex, with its top smaller
+    let mut g = GMap::new(3);
+    let frustum = UNIT.map(|p| if p[2] == 1. { [0.25 + 0.5 * p[0], 0.25 + 0.5 * p[1], 1.] } else { p });
+    let d = g.make_hexahedron(frustum);
+    assert!(c::can_tetrahedralize_volume(&g, d));
+    c::tetrahedralize_volume(&mut g, d);
+    assert_eq!((cells(&g), chi(&g)), (vec![9, 26, 30, 12], 1));
+    // the corner (1,1,1) pushed in to (0.6,0.6,0.6): not convex, refused naming the volume
+    let mut h = GMap::new(3);
+    let dented = UNIT.map(|p| if p == [1., 1., 1.] { [0.6, 0.6, 0.6] } else { p });
+    let v = h.make_hexahedron(dented);
+    assert!(!c::can_tetrahedralize_volume(&h, v));
+    match c::try_tetrahedralize_volume(&mut h, v) {
+        Err(ConstructError::NotConvex { volume, .. }) => assert_eq!(volume, v),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(cells(&h), vec![8, 12, 6, 1]);
+    // a flat hexahedron (every corner at z = 0) is not a convex volume either
+    let mut k = GMap::new(3);
+    let w = k.make_hexahedron(UNIT.map(|p| [p[0] + p[2], p[1], 0.]));
+    assert!(matches!(c::try_tetrahedralize_volume(&mut k, w), Err(ConstructError::NotConvex { .. })));
 }
 
 /// One random construction step; the numbers pick darts among the live ones.
@@ -243,6 +355,8 @@ enum Step {
     Tetrahedralize(usize),
     Merge(usize),
     Split(usize),
+    ChamferVertex(usize, u8),
+    ChamferEdge(usize, u8),
 }
 
 fn step() -> impl Strategy<Value = Step> {
@@ -255,6 +369,8 @@ fn step() -> impl Strategy<Value = Step> {
         1 => p.prop_map(Step::Tetrahedralize),
         2 => p.prop_map(Step::Merge),
         1 => p.prop_map(Step::Split),
+        2 => (p, 1u8..9).prop_map(|(a, t)| Step::ChamferVertex(a, t)),
+        2 => (p, 1u8..9).prop_map(|(a, t)| Step::ChamferEdge(a, t)),
     ]
 }
 
@@ -298,6 +414,20 @@ fn apply(g: &mut Full, s: &Step) -> Option<i64> {
             let d = pick(a);
             let ok = c::can_merge_volumes(g, d);
             let r = c::try_merge_volumes(g, d);
+            assert_eq!(ok, r.is_ok(), "{r:?}");
+            r.ok().map(|_| 0)
+        }
+        Step::ChamferVertex(a, t) => {
+            let (d, t) = (pick(a), f64::from(t) / 10.0);
+            let ok = c::can_chamfer_vertex(g, d, t);
+            let r = c::try_chamfer_vertex(g, d, t);
+            assert_eq!(ok, r.is_ok(), "{r:?}");
+            r.ok().map(|_| 0)
+        }
+        Step::ChamferEdge(a, t) => {
+            let (d, t) = (pick(a), f64::from(t) / 10.0);
+            let ok = c::can_chamfer_edge(g, d, t);
+            let r = c::try_chamfer_edge(g, d, t);
             assert_eq!(ok, r.is_ok(), "{r:?}");
             r.ok().map(|_| 0)
         }
@@ -363,12 +493,12 @@ proptest! {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
 
-    /// Random chamfers and triangulations of the cube's surface (a 2-map with an attribute
+    /// Random chamfers (of vertices and edges) and triangulations of the cube's surface (a 2-map with an attribute
     /// on every cell and a point on every vertex): valid, χ = 2 throughout, one attribute
     /// per cell and one point per vertex.
     #[test]
     fn random_chamfers_keep_the_sphere_and_its_attributes(
-        steps in proptest::collection::vec((0usize..3, any::<usize>(), 1u8..9), 1..8)
+        steps in proptest::collection::vec((0usize..4, any::<usize>(), 1u8..9), 1..8)
     ) {
         let mut g = Full::with_attributes(2);
         g.make_hexahedron(UNIT);
@@ -385,7 +515,14 @@ proptest! {
                     prop_assert_eq!(ok, r.is_ok(), "{:?}", r);
                     ok
                 }
-                1 => c::try_triangulate_face_fan(&mut g, d).is_ok(),
+                1 => {
+                    let t = f64::from(t) / 10.0;
+                    let ok = c::can_chamfer_edge(&g, d, t);
+                    let r = c::try_chamfer_edge(&mut g, d, t);
+                    prop_assert_eq!(ok, r.is_ok(), "{:?}", r);
+                    ok
+                }
+                2 => c::try_triangulate_face_fan(&mut g, d).is_ok(),
                 _ => c::try_triangulate_face_barycentric(&mut g, d).is_ok(),
             };
             if done {

@@ -1,7 +1,8 @@
 //! Homology of what the construction operations build ([`gmap::ops::construct`]), through
 //! [`gmap::homology`]: the revolved square's boundary is the torus surface (Z, Z², Z), the
 //! revolved square face the solid torus (Z, Z, 0, 0); and random sequences of extrusions,
-//! triangulations, tetrahedralizations, merges and splits from a hexahedron never change
+//! triangulations, tetrahedralizations, merges, splits and chamfers of vertices and edges
+//! from a hexahedron never change
 //! the homology of the ball (Z, 0, 0, 0) — each is a subdivision, its inverse or a
 //! collapse.
 
@@ -64,7 +65,7 @@ proptest! {
 
     #[test]
     fn random_constructions_keep_the_homology_of_the_ball(
-        steps in proptest::collection::vec((0usize..5, any::<usize>(), 0usize..3), 1..8)
+        steps in proptest::collection::vec((0usize..7, any::<usize>(), 0usize..3), 1..8)
     ) {
         let mut g = GMap::new(3);
         g.make_hexahedron(UNIT);
@@ -76,7 +77,9 @@ proptest! {
                 1 => c::try_triangulate_face_fan(&mut g, d).is_ok(),
                 2 => c::try_triangulate_face_barycentric(&mut g, d).is_ok(),
                 3 => g.dart_count() < 1500 && c::try_tetrahedralize_volume(&mut g, d).is_ok(),
-                _ => c::try_merge_volumes(&mut g, d).is_ok(),
+                4 => c::try_merge_volumes(&mut g, d).is_ok(),
+                5 => c::try_chamfer_vertex(&mut g, d, 0.25 + 0.25 * i as f64).is_ok(),
+                _ => c::try_chamfer_edge(&mut g, d, 0.25 + 0.25 * i as f64).is_ok(),
             };
             if done {
                 prop_assert!(g.validate().is_ok());

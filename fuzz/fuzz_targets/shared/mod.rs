@@ -202,7 +202,7 @@ pub fn check_simplicial_routes(sc: &gmap_ops::import::SimplicialComplex) {
 /// as legacy `.vtk` with its labels reads to a map with the same cells and labels.
 pub fn check_mesh(mesh: &gmap_ops::mesh::Mesh) {
     let Ok(g) = mesh.to_gmap(1 << 14) else { return };
-    assert!(g.check().is_ok(), "the map and its labels are consistent");
+    assert!(g.validate().is_ok(), "the map and its labels are consistent");
     let (dense, labels, _) = gmap_core::to_dense_labels(&g);
     assert!(dense.validate().is_ok());
     let Ok(text) = gmap_ops::export::vtk_string_with_labels(&dense, &labels) else { return };

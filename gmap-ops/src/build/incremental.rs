@@ -299,7 +299,7 @@ impl<'a, A: Attributes> IncrementalBuilder<'a, A> {
     /// O(k log k).
     pub fn face_dart(&self, vertices: &[usize]) -> Option<DartId> {
         let v: SmallVec<[u32; 8]> = vertices.iter().map(|&x| u32::try_from(x).unwrap_or(u32::MAX)).collect();
-        self.faces.get(&v).map(|e| e.first.fwd[0])
+        self.faces.get(&v).map(|e| e.first.dart)
     }
 
     /// The map built on.

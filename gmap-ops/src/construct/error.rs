@@ -66,6 +66,19 @@ pub enum ConstructError {
         /// what was expected
         what: &'static str,
     },
+    /// A volume that must be convex is not: a vertex of it lies outside the plane of one of
+    /// its faces (on the other side from the volume's barycentre), or the barycentre is not
+    /// strictly inside that plane (a flat volume, a face not planar).
+    #[error("the volume of dart {volume:?} is not convex: the vertex of dart {vertex:?} is beyond the plane of the face of dart {face:?}")]
+    NotConvex {
+        /// the dart given, naming the volume
+        volume: DartId,
+        /// a dart of the face whose plane is crossed
+        face: DartId,
+        /// a dart of the vertex beyond it (a dart of the face itself when the barycentre is
+        /// on the plane)
+        vertex: DartId,
+    },
     /// An Euler operator the construction is made of refused (its error says why).
     #[error(transparent)]
     Euler(#[from] EulerError),

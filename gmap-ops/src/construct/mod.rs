@@ -7,7 +7,7 @@
 //! | [`revolve`] | a profile about an axis in k steps, closing the loop ([`try_revolve`]) | `-χ(profile)` |
 //! | [`triangulate`] | a face by a fan or around its barycentre, a convex volume into tetrahedra | 0 |
 //! | [`volumes`] | two volumes merged across a face, a volume split by a loop of edges | 0 |
-//! | [`chamfer`] | a vertex of a surface cut off and replaced by a face | 0 |
+//! | [`chamfer`] | a vertex or an edge of a surface or of a volume's boundary replaced by a face | 0 |
 //!
 //! Each operation comes as a predicate (`can_…`), a `try_…` form returning a typed
 //! [`ConstructError`] (nothing changed on error) and a plain form that panics. Like the
@@ -31,7 +31,9 @@ pub mod revolve;
 pub mod triangulate;
 pub mod volumes;
 
-pub use chamfer::{can_chamfer_vertex, chamfer_vertex, try_chamfer_vertex};
+pub use chamfer::{
+    can_chamfer_edge, can_chamfer_vertex, chamfer_edge, chamfer_vertex, try_chamfer_edge, try_chamfer_vertex,
+};
 pub use error::ConstructError;
 pub use extrude::{
     can_extrude_cell, can_extrude_cell_along_path, can_extrude_edge, can_extrude_face, can_extrude_vertex,

@@ -127,20 +127,84 @@ fn check_volume<A: Attributes>(g: &GMap<A>, d: DartId) -> Result<(Point, Vec<Dar
         }
     }
     let c = g.barycenter(d, 3).ok_or(ConstructError::NoPoint(d))?;
-    if let Some(x) = g.orbit(d, gmap_core::AlphaSet::range(0, 2)).into_iter().find(|&x| g.point(x).is_none()) {
+    let volume = g.orbit(d, gmap_core::AlphaSet::range(0, 2));
+    if let Some(&x) = volume.iter().find(|&&x| g.point(x).is_none()) {
         return Err(ConstructError::NoPoint(x));
     }
+    check_convex(g, d, c, &faces, &volume)?;
     Ok((c, faces))
 }
 
+/// The normal of the polygon `p` by Newell's formula (twice its vector area): the plane's
+/// normal for a planar polygon, whatever its convexity. O(|p|).
+fn newell(p: &[Point]) -> Point {
+    let mut n = [0.0; 3];
+    for (j, a) in p.iter().enumerate() {
+        let b = p[(j + 1) % p.len()];
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    n
+}
+
+fn dot(a: Point, b: Point) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn sub(a: Point, b: Point) -> Point {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// Checks that the volume of `d` (darts `volume`, faces `faces`, barycentre `c`) is convex:
+/// for every face, the barycentre is strictly on one side of the face's plane and every
+/// vertex of the volume on that side or on the plane, up to a tolerance of 1e-9 of the
+/// volume's extent. This also refuses faces that are not planar (a vertex of the face off
+/// its plane) and flat volumes. [`ConstructError::NotConvex`] names the volume by `d`.
+/// O(faces · volume size).
+fn check_convex<A: Attributes>(
+    g: &GMap<A>,
+    d: DartId,
+    c: Point,
+    faces: &[DartId],
+    volume: &[DartId],
+) -> Result<(), ConstructError> {
+    let point = |x: DartId| g.point(x).expect("checked");
+    let extent = volume.iter().map(|&x| sub(point(x), c)).map(|v| dot(v, v).sqrt()).fold(0.0, f64::max);
+    let tol = 1e-9 * extent.max(f64::MIN_POSITIVE);
+    for &f in faces {
+        let ring: Vec<Point> = corners(g, f)?.into_iter().map(point).collect();
+        let n = newell(&ring);
+        let len = dot(n, n).sqrt();
+        let not_convex = |vertex| ConstructError::NotConvex { volume: d, face: f, vertex };
+        if len.is_nan() || len <= 0.0 {
+            return Err(not_convex(f));
+        }
+        let n = n.map(|x| x / len);
+        let p0 = ring[0];
+        // the side of the barycentre: the inside
+        let inside = dot(n, sub(c, p0));
+        if inside.abs() <= tol {
+            return Err(not_convex(f));
+        }
+        let s = inside.signum();
+        if let Some(&x) = volume.iter().find(|&&x| s * dot(n, sub(point(x), p0)) < -tol) {
+            return Err(not_convex(x));
+        }
+    }
+    Ok(())
+}
+
 /// Whether [`try_tetrahedralize_volume`] would succeed: `n >= 3`, the volume of `d` is
-/// closed (no 2-free dart), every face of it a closed polygon, every vertex with a point.
-/// Convexity is the caller's precondition (not checked). O(volume size · n).
+/// closed (no 2-free dart), every face of it a closed polygon, every vertex with a point,
+/// and the volume convex (every vertex on the inner side of every face's plane, the
+/// barycentre strictly inside; see [`ConstructError::NotConvex`]). O(faces · volume size).
 pub fn can_tetrahedralize_volume<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {
     check_volume(g, d).is_ok()
 }
 
-/// Cuts the convex volume of `d` into tetrahedra: every face of more than three sides fanned
+/// Cuts the convex volume of `d` into tetrahedra (a volume that is not convex is refused
+/// with [`ConstructError::NotConvex`], nothing changed): every face of more than three sides fanned
 /// ([`try_triangulate_face_fan`], also on the neighbouring volume's side), then a vertex at
 /// the volume's barycentre joined to every triangle (CGAL's
 /// `insert_barycenter_in_cell<3>`). A volume with f triangles after the fans becomes f

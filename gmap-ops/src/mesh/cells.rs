@@ -388,7 +388,7 @@ impl Mesh {
                             (0..k).all(|j| c.nodes[(r + j) % k] == e.first.cycle[j])
                                 || (0..k).all(|j| c.nodes[(r + k - j) % k] == e.first.cycle[j])
                         });
-                    same.then_some(e.first.fwd[0])
+                    same.then_some(e.first.dart)
                 }),
             };
             let d = d.ok_or_else(loose)?;

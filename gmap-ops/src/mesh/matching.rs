@@ -13,8 +13,8 @@
 //! in opposite orders.
 //!
 //! Cost: O(k log k) per facet of k vertices for the key, expected O(k) for the lookup and
-//! the match; memory: the key, the cycle and two darts per corner for every facet offered
-//! (kept after a match to catch a third facet and for [`FacetMatcher::facets`]).
+//! the match; memory: the key, the cycle, the cell and one dart for every key (kept after a
+//! match to catch a third facet and for [`FacetMatcher::facets`]).
 
 use rustc_hash::FxHashMap;
 use smallvec::SmallVec;
@@ -37,13 +37,24 @@ pub(crate) struct Facet<D> {
     pub back: SmallVec<[D; 4]>,
 }
 
+/// What is kept of the first facet offered with a key.
+#[derive(Clone, Debug)]
+pub(crate) struct Kept<D> {
+    /// its cell
+    pub owner: usize,
+    /// its vertex cycle
+    pub cycle: SmallVec<[u32; 4]>,
+    /// its dart at corner 0 towards corner 1
+    pub dart: D,
+}
+
 /// The state of one key.
 #[derive(Clone, Debug)]
 pub(crate) struct Entry<D> {
     /// the first facet offered
-    pub first: Facet<D>,
+    pub first: Kept<D>,
     /// the cell of the second, once matched
-    pub second: Option<(usize, SmallVec<[u32; 4]>)>,
+    pub second: Option<usize>,
 }
 
 /// What [`FacetMatcher::offer`] did.
@@ -101,11 +112,12 @@ impl<D: Copy> FacetMatcher<D> {
         let key = key_of(&facet.cycle);
         match self.entries.get_mut(&key) {
             None => {
-                self.entries.insert(key, Entry { first: facet, second: None });
+                let first = Kept { owner: facet.owner, dart: facet.fwd[0], cycle: facet.cycle };
+                self.entries.insert(key, Entry { first, second: None });
                 Ok(Offer::Waiting)
             }
             Some(e) => {
-                if let Some((second, _)) = &e.second {
+                if let Some(second) = &e.second {
                     return Err(MeshError::FacetInManyCells {
                         dim: self.dim,
                         vertices: key.iter().map(|&v| v as u64).collect(),
@@ -122,9 +134,9 @@ impl<D: Copy> FacetMatcher<D> {
                 // corner 0 of the first facet towards its corner 1 is, in this one, corner
                 // r towards r + 1 (same direction) or towards r - 1 (reversed)
                 let theirs = if reversed { facet.back[r] } else { facet.fwd[r] };
-                let darts = (e.first.fwd[0], theirs);
+                let darts = (e.first.dart, theirs);
                 let owner = e.first.owner;
-                e.second = Some((facet.owner, facet.cycle));
+                e.second = Some(facet.owner);
                 Ok(Offer::Matched { owner, darts })
             }
         }
@@ -162,7 +174,7 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
     let owners = |e: &Entry<D>| -> SmallVec<[usize; 2]> {
         let mut o: SmallVec<[usize; 2]> = SmallVec::new();
         o.push(e.first.owner);
-        if let Some((s, _)) = &e.second {
+        if let Some(s) = &e.second {
             o.push(*s);
         }
         o
