@@ -233,10 +233,11 @@ fn every_row_has_its_peak_memory_and_a_cubical_set_its_one_pass_row() {
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let rows = v["rows"].as_array().unwrap();
     let routes: Vec<&str> = rows.iter().map(|r| r["route"].as_str().unwrap()).collect();
-    assert_eq!(routes, ["one-pass", "cubical", "direct", "cellular", "simplicial"], "{v}");
+    assert_eq!(routes, ["one-pass", "slabs", "cubical", "direct", "cellular", "simplicial"], "{v}");
     // a hollow cube: H0 = Z, H2 = Z, by both routes
     assert_eq!(rows[0]["betti"], serde_json::json!([1, 0, 1, 0]));
     assert_eq!(rows[0]["betti"], rows[1]["betti"]);
+    assert_eq!(rows[0]["betti"], rows[2]["betti"]);
     assert_eq!(rows[0]["agree"], true);
     // the high-water mark is reset per row on Linux; it counts at least the program itself
     if gmap_core::resources::reset_peak_rss() {

@@ -5,8 +5,8 @@
 //! complex the direct route (every face of every facet a cell), then the two routes of its
 //! G-map, which say why they do not apply when the complex has none; for a G-map the cellular
 //! route (cells and the C1/C2 checks, border operator, reduction, Smith form) and the
-//! simplicial counterpart; for a cubical set the one-pass route (dimension ≤ 3) and the
-//! cubical complex; for an architectural
+//! simplicial counterpart; for a cubical set the one-pass route (dimension ≤ 3), the cubical
+//! complex reduced slab by slab and the whole cubical complex; for an architectural
 //! complex the completion by zero of its boundary matrix. A route that does not apply gives a
 //! run with its reason, and so does one whose estimated memory is over the policy
 //! (`gmap_core::resources`): it is skipped before anything is allocated.
@@ -64,7 +64,7 @@ pub struct RouteRun {
     /// the input as named
     pub input: String,
     /// `direct`, `cellular`, `simplicial`, `one-pass` (a cubical set of dimension ≤ 3),
-    /// `cubical`, or `read` for an input that could not be read
+    /// `slabs`, `cubical`, or `read` for an input that could not be read
     pub route: &'static str,
     /// cells per dimension of the chain complex reduced (empty when the route failed first)
     pub cells: Vec<usize>,
@@ -289,9 +289,10 @@ enum Cubes<'a> {
 
 type Push<'a> = dyn FnMut(&'static str, Vec<usize>, Times, std::result::Result<Homology, String>) + 'a;
 
-/// The rows of a cubical input: the one-pass route (dimension ≤ 3), then the cubical
-/// complex of the closure after collapses of free faces (an image made a bitmap first, timed
-/// as reading).
+/// The rows of a cubical input: the one-pass route (dimension ≤ 3), the cubical complex
+/// built and reduced slab by slab (read in memory order), then the whole cubical complex of
+/// the closure after collapses of free faces (an image made a bitmap first, timed as
+/// reading).
 fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
     let shape = match cubes {
         Cubes::Image(img) => img.memory_shape(),
@@ -319,6 +320,33 @@ fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
         });
         push("one-pass", Vec::new(), times, r.map_err(|e| e.to_string()));
     }
+    // the general route of `homology`: the cubical complex built and reduced slab by slab
+    let mut times = Times { read, ..Times::default() };
+    let t = Instant::now();
+    let slab = crate::route::slab_layers(&shape);
+    let c = match cubes {
+        Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
+            &shape,
+            |s, out| img.presence(gmap_ops::import::Level::Nonzero, s, out),
+            false,
+            slab,
+            false,
+        ),
+        Cubes::Set(set) => {
+            let bits = set.bits();
+            let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
+            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, false, slab, false)
+        }
+    };
+    times.border = Some(ms(t));
+    match c {
+        Ok(c) => {
+            let (cells, r) = reduce(&c.chain, &mut times);
+            push("slabs", cells, times, r);
+        }
+        Err(e) => push("slabs", Vec::new(), times, Err(e.to_string())),
+    }
+    // the whole cubical complex
     let mut times = Times { read, ..Times::default() };
     let t = Instant::now();
     let image_set;

@@ -202,6 +202,10 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             }
         }
         Input::Cubical(set) => (set.dim(), route::cubical(set, o, &file)?),
+        Input::Image(img) if !o.generators && !route::whole_grid_fits(&img.memory_shape(), o.periodic) => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            (img.memory_shape().len(), route::cubical_image(img, level, o, &file)?)
+        }
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
             o.progress.stage("the image's cubical set");

@@ -306,9 +306,14 @@ pub(crate) fn cubical_one_pass(
     Ok(Some(gmap_homology::Homology { coefficients, betti, torsion: vec![Vec::new(); d + 1] }))
 }
 
-/// The chain complex of a cubical set (after collapses of free faces) with its cells named
-/// by their minimal vertex and extent in the input's coordinates.
-pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+/// The layers of the slowest axis per slab of the slab-by-slab cubical complex: rows of
+/// about 32 MiB in all (two per layer), at least one layer and at most 64.
+pub(crate) fn slab_layers(shape: &[usize]) -> usize {
+    let row: usize = shape[..shape.len().saturating_sub(1)].iter().fold(1usize, |v, &l| v.saturating_mul(2 * l + 1));
+    ((32usize << 20) / row.max(1) / 2).clamp(1, 64)
+}
+
+fn check_cubical_options(o: &HomologyOptions, file: &str) -> Result<()> {
     if o.method == Method::Simplicial {
         return Err(err!(
             Precondition,
@@ -318,11 +323,73 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
     if o.simplify || o.topological {
         return Err(err!(Usage, "{file}: --simplify and --topological do not apply to cubical sets"));
     }
-    o.progress.stage("building the cubical complex");
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true)
-        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if o.generators {
-        let min = set.min();
+    Ok(())
+}
+
+/// The largest doubled grid whose whole cubical complex is built at once (about 1 GiB at
+/// [`gmap_core::resources::CUBICAL_BYTES_PER_POINT`]); larger ones go slab by slab.
+pub(crate) const WHOLE_GRID_POINTS: u64 = 1 << 27;
+
+/// Whether the whole cubical complex of a box of `shape` is built at once (faster: dense
+/// collapses over one array) rather than slab by slab (memory of a slab and the survivors).
+pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
+    gmap_core::resources::cubical_grid_points(shape, periodic).is_some_and(|p| p <= WHOLE_GRID_POINTS)
+}
+
+/// The chain complex of a cubical set with its cells named by their minimal vertex and
+/// extent in the input's coordinates: the whole complex after collapses of free faces up to
+/// [`WHOLE_GRID_POINTS`], else built and reduced slab by slab
+/// (`gmap_homology::cubical_slabs`; collapses only with generators, so that its cycles are
+/// the set's).
+pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+    check_cubical_options(o, file)?;
+    let c = if whole_grid_fits(set.shape(), o.periodic) {
+        o.progress.stage("building the cubical complex");
+        gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true)
+    } else {
+        o.progress.stage("building and reducing the cubical complex slab by slab");
+        let bits = set.bits();
+        let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
+        gmap_homology::cubical_slabs::cubical_complex_slabs(
+            set.shape(),
+            fill,
+            o.periodic,
+            slab_layers(set.shape()),
+            o.generators,
+        )
+    }
+    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    Ok(named_cubes(c, set.min(), o.generators))
+}
+
+/// The chain complex of an image's cubical set (the values at `level`) over
+/// [`WHOLE_GRID_POINTS`], read from the image one layer at a time in its memory order and
+/// reduced slab by slab: no bitmap of the whole image. Without generators (whose names need
+/// the input's axis order: [`cubical`]).
+pub(crate) fn cubical_image(
+    img: &gmap_ops::import::Image,
+    level: gmap_ops::import::Level,
+    o: &HomologyOptions,
+    file: &str,
+) -> Result<Named<'static>> {
+    check_cubical_options(o, file)?;
+    o.progress.stage("reading the image and reducing its cubical complex slab by slab");
+    let shape = img.memory_shape();
+    let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
+        &shape,
+        |s, out| img.presence(level, s, out),
+        o.periodic,
+        slab_layers(&shape),
+        false,
+    )
+    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    Ok(named_cubes(c, &[], false))
+}
+
+/// Names the cells of a cubical complex by minimal vertex (`min` the box's) and extent, when
+/// `generators` asks for names.
+fn named_cubes(c: gmap_homology::cubical::CubicalComplex, min: &[i64], generators: bool) -> Named<'static> {
+    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
         let name = |k: usize, i: usize| {
             let coords = c.coordinates(k, i);
             let lo = coords.iter().enumerate().map(|(a, &x)| min.get(a).copied().unwrap_or(0) + (x / 2) as i64);
@@ -336,7 +403,7 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
         let (min, extent) = names[k][j as usize].clone();
         CellName::Cube { min, extent }
     });
-    Ok(Named { chain: c.chain, name })
+    Named { chain: c.chain, name }
 }
 
 /// The map reduced by removals and contractions of cells, or the map itself where the
