@@ -341,7 +341,8 @@ fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
     times.border = Some(ms(t));
     match c {
         Ok(c) => {
-            let (cells, r) = reduce(&c.chain, &mut times);
+            let (cells, r) = reduce(&c.complex.chain, &mut times);
+            let r = r.and_then(|h| c.absolute(h).map_err(|e| e.to_string()));
             push("slabs", cells, times, r);
         }
         Err(e) => push("slabs", Vec::new(), times, Err(e.to_string())),

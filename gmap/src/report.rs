@@ -297,10 +297,14 @@ fn compute(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
             (1..c.counts().len()).map(|k| c.boundary(k).nnz()).sum::<usize>()
         ));
     }
-    Ok(match o.field {
+    let h = match o.field {
         Some(p) => homology_zp(c, p)?,
         None => homology_z(c)?,
-    })
+    };
+    match &named.relative {
+        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, &e)),
+        None => Ok(h),
+    }
 }
 
 fn name_generator(named: &Named<'_>, x: Generator) -> NamedGenerator {

@@ -94,6 +94,9 @@ pub struct HomologyOptions {
 pub(crate) struct Named<'a> {
     pub(crate) chain: ChainComplex,
     pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
+    /// the chain complex is relative to vertices set aside (a cubical set reduced slab by
+    /// slab): how its groups become the input's
+    pub(crate) relative: Option<gmap_homology::cubical_slabs::Relative>,
 }
 
 /// The route a simplicial complex takes, `None` for the other inputs; refuses options that
@@ -150,7 +153,11 @@ pub(crate) fn cellular<'a>(
     })?;
     let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
     let pts = points(map);
-    Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
+    Ok(Named {
+        chain: c.chain,
+        name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])),
+        relative: None,
+    })
 }
 
 /// Refuses a map whose simplicial counterpart is too big to build (exponential in the
@@ -191,6 +198,7 @@ pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> 
     let pts = points(map);
     let simplices = s.simplices;
     Named {
+        relative: None,
         chain: s.chain,
         name: Box::new(move |k, j| {
             let x = &simplices[k][j as usize];
@@ -251,7 +259,7 @@ pub(crate) fn direct(sc: &SimplicialComplex, o: &HomologyOptions, file: &str) ->
         let j = j as usize;
         CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())
     });
-    Ok(Named { chain, name })
+    Ok(Named { chain, name, relative: None })
 }
 
 /// The chain complex of an architectural complex (`.json`): the completion by zero of its
@@ -278,7 +286,11 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
     };
     let ids: Vec<Vec<u64>> =
         (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
-    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
+    Ok(Named {
+        chain: x.chain_complex(),
+        name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])),
+        relative: None,
+    })
 }
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
@@ -343,9 +355,9 @@ pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
 /// the set's).
 pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
     check_cubical_options(o, file)?;
-    let c = if whole_grid_fits(set.shape(), o.periodic) {
+    let (c, relative) = if whole_grid_fits(set.shape(), o.periodic) {
         o.progress.stage("building the cubical complex");
-        gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true)
+        gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true).map(|c| (c, None))
     } else {
         o.progress.stage("building and reducing the cubical complex slab by slab");
         let bits = set.bits();
@@ -357,9 +369,10 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
             slab_layers(set.shape()),
             o.generators,
         )
+        .map(|c| (c.complex, Some(c.relative)))
     }
     .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    Ok(named_cubes(c, set.min(), o.generators))
+    Ok(named_cubes(c, set.min(), o.generators, relative))
 }
 
 /// The chain complex of an image's cubical set (the values at `level`) over
@@ -383,12 +396,17 @@ pub(crate) fn cubical_image(
         false,
     )
     .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    Ok(named_cubes(c, &[], false))
+    Ok(named_cubes(c.complex, &[], false, Some(c.relative)))
 }
 
 /// Names the cells of a cubical complex by minimal vertex (`min` the box's) and extent, when
 /// `generators` asks for names.
-fn named_cubes(c: gmap_homology::cubical::CubicalComplex, min: &[i64], generators: bool) -> Named<'static> {
+fn named_cubes(
+    c: gmap_homology::cubical::CubicalComplex,
+    min: &[i64],
+    generators: bool,
+    relative: Option<gmap_homology::cubical_slabs::Relative>,
+) -> Named<'static> {
     let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
         let name = |k: usize, i: usize| {
             let coords = c.coordinates(k, i);
@@ -403,7 +421,7 @@ fn named_cubes(c: gmap_homology::cubical::CubicalComplex, min: &[i64], generator
         let (min, extent) = names[k][j as usize].clone();
         CellName::Cube { min, extent }
     });
-    Named { chain: c.chain, name }
+    Named { chain: c.chain, name, relative }
 }
 
 /// The map reduced by removals and contractions of cells, or the map itself where the

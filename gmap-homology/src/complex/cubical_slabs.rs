@@ -20,9 +20,22 @@
 //! cannot change are moved from dense rows (one byte per point) into a hash set of the
 //! surviving points.
 //!
-//! With `keep_subcomplex` only collapses are made: the survivors then form a subcomplex, whose
-//! cycles are cycles of the set (the generators' route). Without it, coreductions reduce
-//! further but the survivors' cycles are those of a quotient.
+//! **Starting the coreductions.** A set without free faces left (a loop, a closed surface)
+//! has no cell with a single face either. As in Mrozek and Batko's algorithm, a vertex `v` is
+//! then set aside: the complex becomes the relative one `(X, V)`, whose coreductions sweep on.
+//! Every vertex of a complete layer still alive after the slab's sweep is set aside, one at a
+//! time; two of them may lie in the same component (joined only through later layers), so the
+//! groups of X follow from those of `(X, V)` by `H_k(X) = H_k(X, V)` for `k ≥ 2`,
+//! `b_1(X) = b_1(X, V) - |V| + c_V` and `b_0(X) = b_0(X, V) + c_V`, with `c_V` the components of
+//! X meeting V (the sequence of the pair splits, V being discrete: torsion is unchanged). The
+//! components of X are counted on the way by a union-find over two layers of cubes at a time
+//! (cubes joined when they share any face), so `c_V = b_0(X) - b_0(X, V)`:
+//! [`SlabComplex::absolute`] makes the correction.
+//!
+//! With `keep_subcomplex` only collapses are made and no vertex is set aside: the survivors
+//! then form a subcomplex, whose cycles are cycles of the set (the generators' route).
+//! Without it, coreductions reduce further but the survivors' cycles are those of a quotient.
+//! A periodic box sets no vertex aside either (its components are not counted).
 //!
 //! Memory: `(2 · slab + 1)` rows of one byte per point of a doubled layer (two on a periodic
 //! slowest axis), one layer of cubes, and about 24 bytes per surviving point of the layers
@@ -35,15 +48,18 @@
 //! bits[13] = 0;
 //! let fill = |start: usize, out: &mut [u8]| out.copy_from_slice(&bits[start..start + out.len()]);
 //! let c = cubical_complex_slabs(&[3, 3, 3], fill, false, 1, false).unwrap();
-//! assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 0, 1, 0]);
+//! let h = c.absolute(homology_z(&c.complex.chain).unwrap()).unwrap();
+//! assert_eq!(h.betti, vec![1, 0, 1, 0]);
 //! ```
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
 use rustc_hash::{FxHashMap, FxHashSet};
 
+use gmap_core::union_find::UnionFind;
+
 use super::cubical::{CubicalComplex, CubicalError};
-use crate::{ChainComplex, SparseMatrix};
+use crate::{ChainComplex, Homology, SparseMatrix};
 
 const PRESENT: u8 = 1;
 const ALIVE: u8 = 2;
@@ -73,6 +89,8 @@ struct Slabs {
     coreductions: bool,
     /// cells to check
     queue: Vec<u64>,
+    /// vertices set aside (the complex is relative to them)
+    set_aside: u64,
 }
 
 impl Slabs {
@@ -270,6 +288,24 @@ impl Slabs {
         }
     }
 
+    /// Sets aside each vertex of layer `s` still alive, one at a time, each followed by the
+    /// coreductions it starts.
+    fn seed_layer(&mut self, s: usize) {
+        if s % 2 == 1 {
+            return;
+        }
+        let layer = self.layer;
+        for x in 0..layer {
+            let p = s as u64 * layer + x;
+            if self.alive(p) && (0..self.n.len() - 1).all(|a| self.coord(p, a) % 2 == 0) {
+                self.kill(p);
+                self.set_aside += 1;
+                self.push_neighbours(p, false);
+                self.reduce();
+            }
+        }
+    }
+
     /// Moves the survivors of layer `s` into the hash set and frees its row.
     fn release(&mut self, s: usize) {
         let layer = self.layer;
@@ -331,7 +367,8 @@ fn close_layer(shape: &[usize], n: &[usize], bits: &[u8], out: &mut [u8]) {
 /// (see the [module docs](self)). `periodic` identifies opposite faces of the box;
 /// `keep_subcomplex` makes collapses only, so that the cycles of the result are cycles of the
 /// set (for generators). The cells of the result are named by their doubled-grid points, as
-/// those of [`super::cubical::cubical_complex`], whose homology it has.
+/// those of [`super::cubical::cubical_complex`]; its homology, through
+/// [`SlabComplex::absolute`], is theirs.
 ///
 /// Refuses an empty shape, a grid past `u64`, or rows over the memory limit; the survivors
 /// are checked against the limit as each slab is released.
@@ -341,7 +378,7 @@ pub fn cubical_complex_slabs(
     periodic: bool,
     slab: usize,
     keep_subcomplex: bool,
-) -> Result<CubicalComplex, CubicalError> {
+) -> Result<SlabComplex, CubicalError> {
     let d = shape.len();
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));
@@ -377,7 +414,10 @@ pub fn cubical_complex_slabs(
         hold_zero: periodic,
         coreductions: !keep_subcomplex,
         queue: Vec::new(),
+        set_aside: 0,
     };
+    let seed = !keep_subcomplex && !periodic;
+    let mut components = Components::new(&shape[..d - 1]);
     let mut bits = vec![0u8; cubes_per_layer];
     let mut closed = vec![0u8; usize_layer];
     let top_of = |z: usize| if periodic && z + 1 == slow { 0 } else { 2 * z + 2 };
@@ -385,6 +425,9 @@ pub fn cubical_complex_slabs(
     let mut kept_from = 0usize;
     for z in 0..slow {
         fill(z * cubes_per_layer, &mut bits);
+        if seed {
+            components.layer(&bits);
+        }
         if d == 1 {
             closed[0] = bits[0];
         } else {
@@ -411,6 +454,12 @@ pub fn cubical_complex_slabs(
                 }
             }
             g.reduce();
+            if seed {
+                let end = if last { n[d - 1] } else { 2 * z + 2 };
+                for s in kept_from..end {
+                    g.seed_layer(s);
+                }
+            }
             if !last {
                 let start = if periodic { kept_from.max(1) } else { kept_from };
                 for s in start..2 * z + 2 {
@@ -433,7 +482,177 @@ pub fn cubical_complex_slabs(
         }
     }
     survivors.sort_unstable();
-    build(&g, &survivors)
+    let complex = build(&g, &survivors)?;
+    let components = if seed { Some(components.finish()) } else { None };
+    Ok(SlabComplex { complex, relative: Relative { set_aside: g.set_aside, components } })
+}
+
+/// What [`cubical_complex_slabs`] gives: the reduced complex, relative to the vertices set
+/// aside, and what [`SlabComplex::absolute`] needs to give the set's own groups.
+#[derive(Clone, Debug)]
+pub struct SlabComplex {
+    /// the reduced complex (relative to the vertices set aside)
+    pub complex: CubicalComplex,
+    /// the vertices set aside and the components of the set
+    pub relative: Relative,
+}
+
+impl SlabComplex {
+    /// The groups of the set from those of [`Self::complex`]: [`Relative::absolute`].
+    pub fn absolute(&self, h: Homology) -> Result<Homology, CubicalError> {
+        self.relative.absolute(h)
+    }
+
+    /// The vertices set aside.
+    pub fn set_aside(&self) -> u64 {
+        self.relative.set_aside
+    }
+}
+
+/// A complex relative to vertices set aside: how its groups become the set's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Relative {
+    /// the vertices set aside (`|V|`)
+    pub set_aside: u64,
+    /// the components of the set, where they were counted (vertices were set aside)
+    pub components: Option<u64>,
+}
+
+impl Relative {
+    /// The groups of the set from those of the complex relative to the vertices set aside
+    /// (see the [module docs](self)): unchanged without vertices set aside; else `b_0` the
+    /// components and `b_1 = b_1(X, V) - |V| + c_V`, over Z or a field alike. Refuses figures
+    /// that do not fit the pair's sequence.
+    pub fn absolute(&self, mut h: Homology) -> Result<Homology, CubicalError> {
+        let Some(b0) = self.components.filter(|_| self.set_aside > 0) else {
+            return Ok(h);
+        };
+        let relative = h.betti.clone();
+        let bad = || {
+            CubicalError::BadShape(format!(
+                "internal: relative groups {relative:?} with {} vertices set aside and {b0} components",
+                self.set_aside
+            ))
+        };
+        let (rel0, rel1) = (h.betti[0] as u64, h.betti.get(1).copied().unwrap_or(0) as u64);
+        let c_v = b0.checked_sub(rel0).ok_or_else(bad)?;
+        let b1 = (rel1 + c_v).checked_sub(self.set_aside).ok_or_else(bad)?;
+        h.betti[0] = usize::try_from(b0).map_err(|_| bad())?;
+        if h.betti.len() > 1 {
+            h.betti[1] = usize::try_from(b1).map_err(|_| bad())?;
+        } else if b1 != 0 {
+            return Err(bad());
+        }
+        Ok(h)
+    }
+}
+
+/// The components of a set of cubes counted one layer at a time: a union-find over the
+/// classes of the previous layer and the cubes of the current one, cubes joined when they
+/// share any face. A class of the previous layer that reaches no cube of the current one is
+/// finished. Memory: two layers of labels.
+struct Components {
+    shape: Vec<usize>,
+    stride: Vec<usize>,
+    /// the offsets of the `3^(d-1)` neighbours in a layer, per axis
+    offsets: Vec<Vec<isize>>,
+    /// per cube of the previous layer its class `0 .. classes`, or `u32::MAX`
+    prev: Vec<u32>,
+    classes: usize,
+    finished: u64,
+}
+
+impl Components {
+    fn new(shape: &[usize]) -> Self {
+        let e = shape.len();
+        let mut stride = vec![1usize; e];
+        for a in 1..e {
+            stride[a] = stride[a - 1] * shape[a - 1];
+        }
+        let mut offsets = vec![Vec::new()];
+        for _ in 0..e {
+            offsets = offsets
+                .into_iter()
+                .flat_map(|o: Vec<isize>| {
+                    (-1..=1).map(move |t| {
+                        let mut o = o.clone();
+                        o.push(t);
+                        o
+                    })
+                })
+                .collect();
+        }
+        let len = shape.iter().product();
+        Components { shape: shape.to_vec(), stride, offsets, prev: vec![u32::MAX; len], classes: 0, finished: 0 }
+    }
+
+    fn layer(&mut self, bits: &[u8]) {
+        let (m, e) = (self.classes, self.shape.len());
+        let mut uf = UnionFind::new(m + bits.len());
+        let mut x = vec![0usize; e];
+        for i in 0..bits.len() {
+            if bits[i] != 0 {
+                'offsets: for o in &self.offsets {
+                    let mut j = i as isize;
+                    for a in 0..e {
+                        let y = x[a] as isize + o[a];
+                        if y < 0 || y >= self.shape[a] as isize {
+                            continue 'offsets;
+                        }
+                        j += o[a] * self.stride[a] as isize;
+                    }
+                    let j = j as usize;
+                    if self.prev[j] != u32::MAX {
+                        uf.union((m + i) as u32, self.prev[j]);
+                    }
+                    if j < i && bits[j] != 0 {
+                        uf.union((m + i) as u32, (m + j) as u32);
+                    }
+                }
+            }
+            for a in 0..e {
+                x[a] += 1;
+                if x[a] < self.shape[a] {
+                    break;
+                }
+                x[a] = 0;
+            }
+        }
+        // classes of the previous layer that no cube of this one reached are finished
+        let mut label = vec![u32::MAX; m + bits.len()];
+        let mut reached = vec![false; m + bits.len()];
+        for i in 0..bits.len() {
+            if bits[i] != 0 {
+                let r = uf.find((m + i) as u32) as usize;
+                reached[r] = true;
+            }
+        }
+        for c in 0..m {
+            let r = uf.find(c as u32) as usize;
+            if !reached[r] {
+                reached[r] = true;
+                self.finished += 1;
+            }
+        }
+        let mut classes = 0u32;
+        for i in 0..bits.len() {
+            self.prev[i] = if bits[i] != 0 {
+                let r = uf.find((m + i) as u32) as usize;
+                if label[r] == u32::MAX {
+                    label[r] = classes;
+                    classes += 1;
+                }
+                label[r]
+            } else {
+                u32::MAX
+            };
+        }
+        self.classes = classes as usize;
+    }
+
+    fn finish(self) -> u64 {
+        self.finished + self.classes as u64
+    }
 }
 
 /// The chain complex of the surviving points: the boundary restricted to them.
