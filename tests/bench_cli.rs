@@ -170,7 +170,10 @@ fn rows_hold_our_figures_only() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let keys: Vec<&String> = v["rows"][0].as_object().unwrap().keys().collect();
-    assert_eq!(keys, ["agree", "betti", "cells", "error", "groups", "input", "route", "times_ms", "torsion"]);
+    assert_eq!(
+        keys,
+        ["agree", "betti", "cells", "error", "groups", "input", "peak_rss_bytes", "route", "times_ms", "torsion"]
+    );
     assert_eq!(gmap(&["bench", "--no-gudhi", &lutz("Barnette_sphere.facets")]).status.code(), Some(2));
 }
 
@@ -219,4 +222,34 @@ fn a_complex_without_a_gmap_has_a_direct_row() {
         let why = r["error"].as_str().unwrap();
         assert!(why.starts_with("does not apply: ") && why.contains("not a pseudo-manifold"), "{why}");
     }
+}
+
+#[test]
+fn every_row_has_its_peak_memory_and_a_cubical_set_its_one_pass_row() {
+    let f = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cubical/shell.cub");
+    let f = f.to_str().unwrap();
+    let o = gmap(&["bench", "--json", f, &lutz("Barnette_sphere.facets")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    let routes: Vec<&str> = rows.iter().map(|r| r["route"].as_str().unwrap()).collect();
+    assert_eq!(routes, ["one-pass", "slabs", "cubical", "direct", "cellular", "simplicial"], "{v}");
+    // a hollow cube: H0 = Z, H2 = Z, by both routes
+    assert_eq!(rows[0]["betti"], serde_json::json!([1, 0, 1, 0]));
+    assert_eq!(rows[0]["betti"], rows[1]["betti"]);
+    assert_eq!(rows[0]["betti"], rows[2]["betti"]);
+    assert_eq!(rows[0]["agree"], true);
+    // the high-water mark is reset per row on Linux; it counts at least the program itself
+    if gmap_core::resources::reset_peak_rss() {
+        for r in rows {
+            let peak = r["peak_rss_bytes"].as_u64().unwrap_or_else(|| panic!("{r}"));
+            assert!(peak > 1 << 20 && peak < 1 << 30, "{r}");
+        }
+    }
+    let o = gmap(&["bench", "--csv", f]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.lines().next().unwrap().ends_with(",agree,peak_rss_bytes"), "{text}");
+    let o = gmap(&["bench", f]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.lines().next().unwrap().ends_with("| agree | peak RSS MB |"), "{text}");
 }

@@ -234,6 +234,25 @@ pub fn peak_rss() -> Option<u64> {
     status("VmHWM:")
 }
 
+/// Resets the high-water mark that [`peak_rss`] reads to the resident memory of now (writes
+/// `5` to `/proc/self/clear_refs`, Linux ≥ 4.0), so that a later [`peak_rss`] is the peak of
+/// what ran in between. Returns whether the reset was made; where it was not (no `/proc`, a
+/// kernel or a sandbox that refuses the write), [`peak_rss`] stays the peak since the start.
+///
+/// ```
+/// use gmap_core::resources::{peak_rss, reset_peak_rss};
+/// if reset_peak_rss() {
+///     let big = vec![1u8; 64 << 20];
+///     assert!(peak_rss().unwrap() >= 64 << 20);
+///     drop(big);
+///     assert!(reset_peak_rss());
+///     assert!(peak_rss().unwrap() < 64 << 20);
+/// }
+/// ```
+pub fn reset_peak_rss() -> bool {
+    std::fs::write(Path::new("/proc").join("self").join("clear_refs"), b"5").is_ok()
+}
+
 /// The resident memory of this process now in bytes (`VmRSS` of `/proc/self/status`).
 pub fn current_rss() -> Option<u64> {
     status("VmRSS:")

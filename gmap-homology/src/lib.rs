@@ -71,7 +71,9 @@ pub mod engine;
 pub mod persistence;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
-pub use complex::{arch, cubical, cubical_pass, dot, ep, graphml, json, lar, simplices, tm};
+pub use complex::{
+    arch, cubical, cubical_pass, cubical_slabs, dot, ep, graphml, json, lar, simplices, tm,
+};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::CellularComplex;

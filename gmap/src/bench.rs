@@ -5,10 +5,20 @@
 //! complex the direct route (every face of every facet a cell), then the two routes of its
 //! G-map, which say why they do not apply when the complex has none; for a G-map the cellular
 //! route (cells and the C1/C2 checks, border operator, reduction, Smith form) and the
-//! simplicial counterpart; for a cubical set the cubical complex; for an architectural
+//! simplicial counterpart; for a cubical set the one-pass route (dimension ≤ 3), the cubical
+//! complex reduced slab by slab and the whole cubical complex; for an architectural
 //! complex the completion by zero of its boundary matrix. A route that does not apply gives a
 //! run with its reason, and so does one whose estimated memory is over the policy
 //! (`gmap_core::resources`): it is skipped before anything is allocated.
+//!
+//! **Peak memory per row.** Each row carries the peak resident memory of the process while
+//! it ran ([`RouteRun::peak_rss`]): the kernel's high-water mark (`VmHWM`) is reset to the
+//! resident memory of now through `/proc/self/clear_refs` before the file is read and again
+//! after each row, and read when the row ends. A row's peak therefore counts what the process
+//! already held (the program, the input as read, for the first row its reading too) and what
+//! the route added on top; routes run one after the other in the calling process. Where the
+//! reset is refused (no `/proc`, a sandbox) the field is `None` rather than the peak of the
+//! whole process so far.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -53,8 +63,8 @@ impl Times {
 pub struct RouteRun {
     /// the input as named
     pub input: String,
-    /// `direct`, `cellular`, `simplicial`, `cubical`, or `read` for an input that could
-    /// not be read
+    /// `direct`, `cellular`, `simplicial`, `one-pass` (a cubical set of dimension ≤ 3),
+    /// `slabs`, `cubical`, or `read` for an input that could not be read
     pub route: &'static str,
     /// cells per dimension of the chain complex reduced (empty when the route failed first)
     pub cells: Vec<usize>,
@@ -64,6 +74,31 @@ pub struct RouteRun {
     pub result: std::result::Result<Homology, String>,
     /// whether every route that applies to this input gives the same groups
     pub agree: bool,
+    /// the peak resident memory of the process while the row ran, in bytes (see the
+    /// [module docs](self)); `None` where the high-water mark cannot be reset or read
+    pub peak_rss: Option<u64>,
+}
+
+/// The high-water mark of resident memory, row by row.
+struct PeakMark {
+    resettable: bool,
+}
+
+impl PeakMark {
+    /// Resets the mark: what follows is measured from now.
+    fn start() -> Self {
+        PeakMark { resettable: gmap_core::resources::reset_peak_rss() }
+    }
+
+    /// The peak since the last reset, then a reset for the next row.
+    fn row(&self) -> Option<u64> {
+        if !self.resettable {
+            return None;
+        }
+        let peak = gmap_core::resources::peak_rss();
+        gmap_core::resources::reset_peak_rss();
+        peak
+    }
 }
 
 fn ms(t: Instant) -> f64 {
@@ -110,7 +145,8 @@ pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) ->
     let mut runs = Vec::new();
     for (f, in_folder) in &listed {
         progress.step(&f.display().to_string());
-        match bench_file(f, max_darts) {
+        let mark = PeakMark::start();
+        match bench_file_from(f, max_darts, &mark) {
             Ok(r) => runs.extend(r),
             Err(e) if *in_folder => runs.push(RouteRun {
                 input: f.display().to_string(),
@@ -119,6 +155,7 @@ pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) ->
                 times: Times::default(),
                 result: Err(format!("cannot read: {e}")),
                 agree: true,
+                peak_rss: mark.row(),
             }),
             Err(e) => return Err(e),
         }
@@ -128,37 +165,32 @@ pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) ->
 
 /// The runs of one file: reading it timed, then [`routes`].
 pub fn bench_file(path: &Path, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+    bench_file_from(path, max_darts, &PeakMark::start())
+}
+
+fn bench_file_from(path: &Path, max_darts: Option<u64>, mark: &PeakMark) -> Result<Vec<RouteRun>> {
     let t = Instant::now();
     let input = open_with(path, &OpenOptions::max_darts(max_darts))?;
     let read = ms(t);
-    routes_timed(&input, read, max_darts)
+    routes_timed(&input, read, max_darts, mark)
 }
 
 /// Every route of an input, run and timed (reading not included). A simplicial complex
 /// whose faces are over `max_darts` is an error (its direct route is where its groups come
 /// from); a route that does not apply is a run with the reason.
 pub fn routes(input: &Input, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
-    routes_timed(input, 0.0, max_darts)
+    routes_timed(input, 0.0, max_darts, &PeakMark::start())
 }
 
-fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>, mark: &PeakMark) -> Result<Vec<RouteRun>> {
     let name = input.path().display().to_string();
     let mut runs = Vec::new();
     let mut push = |route, cells: Vec<usize>, times, result| {
-        runs.push(RouteRun { input: name.clone(), route, cells, times, result, agree: true })
+        let peak_rss = mark.row();
+        runs.push(RouteRun { input: name.clone(), route, cells, times, result, agree: true, peak_rss })
     };
     let map_read;
     let owned;
-    let image_set;
-    let input_set = match input {
-        Input::Image(img) => {
-            image_set = img
-                .to_cubical_set(gmap_ops::import::Level::Nonzero)
-                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, &e))?;
-            Some(&image_set)
-        }
-        _ => None,
-    };
     let map = match input {
         Input::Simplicial(sc) => {
             // the direct route first (every face of every facet a cell, as `homology` does by
@@ -189,24 +221,14 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
             map_read = read;
             Some(m.map())
         }
-        Input::Cubical(_) | Input::Image(_) => {
-            let set = match input {
-                Input::Cubical(set) => set.get(),
-                _ => input_set.expect("an image's set"),
-            };
-            // the cubical complex of the closure, after collapses of free faces
+        Input::Cubical(set) => {
             map_read = read;
-            let mut times = Times { read, ..Times::default() };
-            let t = Instant::now();
-            let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
-            times.border = Some(ms(t));
-            match c {
-                Ok(c) => {
-                    let (cells, r) = reduce(&c.chain, &mut times);
-                    push("cubical", cells, times, r);
-                }
-                Err(e) => push("cubical", Vec::new(), times, Err(e.to_string())),
-            }
+            cubical_rows(Cubes::Set(set.get()), read, &mut push)?;
+            None
+        }
+        Input::Image(img) => {
+            map_read = read;
+            cubical_rows(Cubes::Image(img), read, &mut push)?;
             None
         }
         Input::Arch(x) => {
@@ -259,6 +281,99 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
     Ok(runs)
 }
 
+/// A cubical input: a set of cubes, or an image whose non-zero values are the cubes.
+enum Cubes<'a> {
+    Set(&'a gmap_ops::import::CubicalSet),
+    Image(&'a gmap_ops::import::Image),
+}
+
+type Push<'a> = dyn FnMut(&'static str, Vec<usize>, Times, std::result::Result<Homology, String>) + 'a;
+
+/// The rows of a cubical input: the one-pass route (dimension ≤ 3), the cubical complex
+/// built and reduced slab by slab (read in memory order), then the whole cubical complex of
+/// the closure after collapses of free faces (an image made a bitmap first, timed as
+/// reading).
+fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
+    let shape = match cubes {
+        Cubes::Image(img) => img.memory_shape(),
+        Cubes::Set(set) => set.shape().to_vec(),
+    };
+    if shape.len() <= 3 {
+        let mut times = Times { read, ..Times::default() };
+        let t = Instant::now();
+        let r = match cubes {
+            Cubes::Image(img) => gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
+                img.presence(gmap_ops::import::Level::Nonzero, s, out)
+            }),
+            Cubes::Set(set) => {
+                let bits = set.bits();
+                gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
+                    out.copy_from_slice(&bits[s..s + out.len()])
+                })
+            }
+        };
+        times.reduction = Some(ms(t));
+        let r = r.map(|p| Homology {
+            coefficients: gmap_homology::homology::Coefficients::Integers,
+            betti: p.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect(),
+            torsion: vec![Vec::new(); shape.len() + 1],
+        });
+        push("one-pass", Vec::new(), times, r.map_err(|e| e.to_string()));
+    }
+    // the general route of `homology`: the cubical complex built and reduced slab by slab
+    let mut times = Times { read, ..Times::default() };
+    let t = Instant::now();
+    let slab = crate::route::slab_layers(&shape);
+    let c = match cubes {
+        Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
+            &shape,
+            |s, out| img.presence(gmap_ops::import::Level::Nonzero, s, out),
+            false,
+            slab,
+            false,
+        ),
+        Cubes::Set(set) => {
+            let bits = set.bits();
+            let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
+            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, false, slab, false)
+        }
+    };
+    times.border = Some(ms(t));
+    match c {
+        Ok(c) => {
+            let (cells, r) = reduce(&c.complex.chain, &mut times);
+            let r = r.and_then(|h| c.absolute(h).map_err(|e| e.to_string()));
+            push("slabs", cells, times, r);
+        }
+        Err(e) => push("slabs", Vec::new(), times, Err(e.to_string())),
+    }
+    // the whole cubical complex
+    let mut times = Times { read, ..Times::default() };
+    let t = Instant::now();
+    let image_set;
+    let set = match cubes {
+        Cubes::Set(set) => set,
+        Cubes::Image(img) => {
+            image_set = img
+                .to_cubical_set(gmap_ops::import::Level::Nonzero)
+                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, &e))?;
+            times.read += ms(t);
+            &image_set
+        }
+    };
+    let t = Instant::now();
+    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
+    times.border = Some(ms(t));
+    match c {
+        Ok(c) => {
+            let (cells, r) = reduce(&c.chain, &mut times);
+            push("cubical", cells, times, r);
+        }
+        Err(e) => push("cubical", Vec::new(), times, Err(e.to_string())),
+    }
+    Ok(())
+}
+
 /// Integer homology of `c`, its sparse reduction and its Smith form timed apart.
 fn reduce(c: &ChainComplex, times: &mut Times) -> (Vec<usize>, std::result::Result<Homology, String>) {
     let (h, stages) = homology_z_staged(c);
@@ -300,6 +415,7 @@ pub fn to_json(runs: &[RouteRun]) -> Value {
                     "total": r.times.total(),
                 },
                 "agree": r.agree,
+                "peak_rss_bytes": r.peak_rss,
             });
             match &r.result {
                 Ok(h) => {
@@ -337,7 +453,7 @@ fn csv_field(s: &str) -> String {
 /// The runs as CSV: a header line, then one line per run.
 pub fn to_csv(runs: &[RouteRun]) -> String {
     let mut out = String::from(
-        "input,route,cells,read_ms,cells_ms,border_ms,reduction_ms,smith_ms,total_ms,groups,betti,torsion,agree\n",
+        "input,route,cells,read_ms,cells_ms,border_ms,reduction_ms,smith_ms,total_ms,groups,betti,torsion,agree,peak_rss_bytes\n",
     );
     for r in runs {
         let (betti, torsion) = match &r.result {
@@ -358,6 +474,7 @@ pub fn to_csv(runs: &[RouteRun]) -> String {
             betti,
             torsion,
             r.agree.to_string(),
+            r.peak_rss.map_or(String::new(), |b| b.to_string()),
         ];
         let line: Vec<String> = fields.iter().map(|f| csv_field(f)).collect();
         out.push_str(&line.join(","));
@@ -371,13 +488,13 @@ pub fn to_markdown(runs: &[RouteRun]) -> String {
     use std::fmt::Write as _;
     let dash = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.2}"));
     let mut out = String::from(
-        "| input | route | cells | read ms | cells+checks ms | border ms | reduction ms | Smith ms | total ms | homology | agree |\n\
-         |---|---|---|---:|---:|---:|---:|---:|---:|---|---|\n",
+        "| input | route | cells | read ms | cells+checks ms | border ms | reduction ms | Smith ms | total ms | homology | agree | peak RSS MB |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---|---|---:|\n",
     );
     for r in runs {
         let _ = writeln!(
             out,
-            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.2} | {} | {} |",
+            "| {} | {} | {} | {:.2} | {} | {} | {} | {} | {:.2} | {} | {} | {} |",
             r.input.replace('|', "\\|"),
             r.route,
             cells_text(r),
@@ -389,6 +506,7 @@ pub fn to_markdown(runs: &[RouteRun]) -> String {
             r.times.total(),
             groups(r).replace('|', "\\|"),
             if r.agree { "yes" } else { "NO" },
+            r.peak_rss.map_or("–".to_string(), |b| format!("{:.1}", b as f64 / (1 << 20) as f64)),
         );
     }
     out

@@ -282,6 +282,10 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             }
         }
         Input::Cubical(set) => (set.dim(), route::cubical(set, o, &file)?),
+        Input::Image(img) if !o.generators && !route::whole_grid_fits(&img.memory_shape(), o.periodic) => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            (img.memory_shape().len(), route::cubical_image(img, level, o, &file)?)
+        }
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
             o.progress.stage("the image's cubical set");
@@ -382,10 +386,14 @@ fn compute(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
             (1..c.counts().len()).map(|k| c.boundary(k).nnz()).sum::<usize>()
         ));
     }
-    Ok(match o.field {
+    let h = match o.field {
         Some(p) => homology_zp(c, p)?,
         None => homology_z(c)?,
-    })
+    };
+    match &named.relative {
+        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, &e)),
+        None => Ok(h),
+    }
 }
 
 fn name_generator(named: &Named<'_>, x: Generator) -> NamedGenerator {

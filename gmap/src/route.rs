@@ -100,6 +100,9 @@ pub struct HomologyOptions {
 pub(crate) struct Named<'a> {
     pub(crate) chain: ChainComplex,
     pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
+    /// the chain complex is relative to vertices set aside (a cubical set reduced slab by
+    /// slab): how its groups become the input's
+    pub(crate) relative: Option<gmap_homology::cubical_slabs::Relative>,
 }
 
 /// The route a simplicial complex takes, `None` for the other inputs; refuses options that
@@ -156,7 +159,11 @@ pub(crate) fn cellular<'a>(
     })?;
     let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
     let pts = points(map);
-    Ok(Named { chain: c.chain, name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])) })
+    Ok(Named {
+        chain: c.chain,
+        name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])),
+        relative: None,
+    })
 }
 
 /// Refuses a map whose simplicial counterpart is too big to build (exponential in the
@@ -197,6 +204,7 @@ pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> 
     let pts = points(map);
     let simplices = s.simplices;
     Named {
+        relative: None,
         chain: s.chain,
         name: Box::new(move |k, j| {
             let x = &simplices[k][j as usize];
@@ -263,7 +271,7 @@ pub(crate) fn direct(sc: &SimplicialComplex, o: &HomologyOptions, file: &str) ->
         let j = j as usize;
         CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())
     });
-    Ok(Named { chain, name })
+    Ok(Named { chain, name, relative: None })
 }
 
 /// The chain complex of an architectural complex (`.json`): the completion by zero of its
@@ -290,7 +298,11 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
     };
     let ids: Vec<Vec<u64>> =
         (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
-    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])) })
+    Ok(Named {
+        chain: x.chain_complex(),
+        name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])),
+        relative: None,
+    })
 }
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
@@ -318,9 +330,14 @@ pub(crate) fn cubical_one_pass(
     Ok(Some(gmap_homology::Homology { coefficients, betti, torsion: vec![Vec::new(); d + 1] }))
 }
 
-/// The chain complex of a cubical set (after collapses of free faces) with its cells named
-/// by their minimal vertex and extent in the input's coordinates.
-pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+/// The layers of the slowest axis per slab of the slab-by-slab cubical complex: rows of
+/// about 32 MiB in all (two per layer), at least one layer and at most 64.
+pub(crate) fn slab_layers(shape: &[usize]) -> usize {
+    let row: usize = shape[..shape.len().saturating_sub(1)].iter().fold(1usize, |v, &l| v.saturating_mul(2 * l + 1));
+    ((32usize << 20) / row.max(1) / 2).clamp(1, 64)
+}
+
+fn check_cubical_options(o: &HomologyOptions, file: &str) -> Result<()> {
     if o.method == Method::Simplicial {
         return Err(err!(
             Precondition,
@@ -330,11 +347,79 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
     if o.simplify || o.topological {
         return Err(err!(Usage, "{file}: --simplify and --topological do not apply to cubical sets"));
     }
-    o.progress.stage("building the cubical complex");
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true)
-        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if o.generators {
-        let min = set.min();
+    Ok(())
+}
+
+/// The largest doubled grid whose whole cubical complex is built at once (about 1 GiB at
+/// [`gmap_core::resources::CUBICAL_BYTES_PER_POINT`]); larger ones go slab by slab.
+pub(crate) const WHOLE_GRID_POINTS: u64 = 1 << 27;
+
+/// Whether the whole cubical complex of a box of `shape` is built at once (faster: dense
+/// collapses over one array) rather than slab by slab (memory of a slab and the survivors).
+pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
+    gmap_core::resources::cubical_grid_points(shape, periodic).is_some_and(|p| p <= WHOLE_GRID_POINTS)
+}
+
+/// The chain complex of a cubical set with its cells named by their minimal vertex and
+/// extent in the input's coordinates: the whole complex after collapses of free faces up to
+/// [`WHOLE_GRID_POINTS`], else built and reduced slab by slab
+/// (`gmap_homology::cubical_slabs`; collapses only with generators, so that its cycles are
+/// the set's).
+pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
+    check_cubical_options(o, file)?;
+    let (c, relative) = if whole_grid_fits(set.shape(), o.periodic) {
+        o.progress.stage("building the cubical complex");
+        gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true).map(|c| (c, None))
+    } else {
+        o.progress.stage("building and reducing the cubical complex slab by slab");
+        let bits = set.bits();
+        let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
+        gmap_homology::cubical_slabs::cubical_complex_slabs(
+            set.shape(),
+            fill,
+            o.periodic,
+            slab_layers(set.shape()),
+            o.generators,
+        )
+        .map(|c| (c.complex, Some(c.relative)))
+    }
+    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    Ok(named_cubes(c, set.min(), o.generators, relative))
+}
+
+/// The chain complex of an image's cubical set (the values at `level`) over
+/// [`WHOLE_GRID_POINTS`], read from the image one layer at a time in its memory order and
+/// reduced slab by slab: no bitmap of the whole image. Without generators (whose names need
+/// the input's axis order: [`cubical`]).
+pub(crate) fn cubical_image(
+    img: &gmap_ops::import::Image,
+    level: gmap_ops::import::Level,
+    o: &HomologyOptions,
+    file: &str,
+) -> Result<Named<'static>> {
+    check_cubical_options(o, file)?;
+    o.progress.stage("reading the image and reducing its cubical complex slab by slab");
+    let shape = img.memory_shape();
+    let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
+        &shape,
+        |s, out| img.presence(level, s, out),
+        o.periodic,
+        slab_layers(&shape),
+        false,
+    )
+    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    Ok(named_cubes(c.complex, &[], false, Some(c.relative)))
+}
+
+/// Names the cells of a cubical complex by minimal vertex (`min` the box's) and extent, when
+/// `generators` asks for names.
+fn named_cubes(
+    c: gmap_homology::cubical::CubicalComplex,
+    min: &[i64],
+    generators: bool,
+    relative: Option<gmap_homology::cubical_slabs::Relative>,
+) -> Named<'static> {
+    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
         let name = |k: usize, i: usize| {
             let coords = c.coordinates(k, i);
             let lo = coords.iter().enumerate().map(|(a, &x)| min.get(a).copied().unwrap_or(0) + (x / 2) as i64);
@@ -348,7 +433,7 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
         let (min, extent) = names[k][j as usize].clone();
         CellName::Cube { min, extent }
     });
-    Ok(Named { chain: c.chain, name })
+    Named { chain: c.chain, name, relative }
 }
 
 /// The map reduced by removals and contractions of cells, or the map itself where the

@@ -3,6 +3,7 @@
 pub mod arch;
 pub mod cubical;
 pub mod cubical_pass;
+pub mod cubical_slabs;
 pub mod dot;
 pub mod ep;
 pub mod graphml;
