@@ -9,6 +9,11 @@ with the command's routes, checks and messages.
 >>> gmap.homology([[0, 1, 2], [0, 2, 3], [0, 1, 3], [1, 2, 3]]).betti
 [1, 0, 1]
 
+``gmap.persistence(x)`` gives the persistence diagram of a grey numpy array, an image file,
+a ``.facets`` file with values or a map with a value per cell as a (k, 3) array of
+(dimension, birth, death); ``obj.view(path)`` writes a self-contained HTML page of any
+object (a notebook shows it inline through ``_repr_html_``).
+
 Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from facets) and
 :mod:`gmap.dask` (a corpus on a Dask cluster).
 """
@@ -37,6 +42,7 @@ from ._gmap import (
     _bench_json,
     homology,
     open,
+    persistence,
 )
 from . import build
 
@@ -59,6 +65,7 @@ __all__ = [
     "homology",
     "incidence_graph",
     "open",
+    "persistence",
 ]
 
 __version__ = "0.1.0"

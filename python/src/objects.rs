@@ -124,6 +124,28 @@ pub fn complex_of(facets: Vec<Vec<u64>>) -> Res<SimplicialComplex> {
 
 #[pymethods]
 impl PySimplicialComplex {
+    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
+    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
+    /// with generators=True the homology generators drawn) written to `path` (returned as
+    /// a str), or its HTML text when path is None. `color_by` names the label that colours
+    /// the cells (UsageError-like InputError when no cell has it).
+    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
+    fn view(
+        &self,
+        py: Python<'_>,
+        path: Option<std::path::PathBuf>,
+        generators: bool,
+        color_by: Option<String>,
+    ) -> PyResult<String> {
+        crate::page::view(py, &self.input, path, generators, color_by)
+    }
+
+    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
+    /// big to embed).
+    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
+        crate::page::repr_html(py, &self.input)
+    }
+
     /// SimplicialComplex(facets): facets as a sequence of sequences of non-negative ints or
     /// a 2-D integer array (one facet a row).
     #[new]
@@ -197,6 +219,7 @@ impl PyCubicalSet {
     /// array's, the minimal vertex `min` (numpy axis order; zeros by default).
     pub fn from_array(a: &Bound<'_, PyAny>, min: Option<Vec<i64>>) -> PyResult<Self> {
         let (shape, view, reversed) = array_bits(a)?;
+        check_complex_memory(&shape)?;
         let mut min = min.unwrap_or_else(|| vec![0; shape.len()]);
         if min.len() != shape.len() {
             return Err(Failure::input(format!("min has {} coordinates for {} axes", min.len(), shape.len())).into());
@@ -208,6 +231,15 @@ impl PyCubicalSet {
         let set = CubicalSet::new(min, shape, bits).map_err(Failure::from)?;
         Ok(PyCubicalSet { input: Input::Cubical(Sourced::new(set)), reversed })
     }
+}
+
+/// Refuses a box whose cubical complex (the general route's) is over the memory budget.
+pub fn check_complex_memory(shape: &[usize]) -> Res<()> {
+    gmap_core::resources::check_memory(
+        "the cubical complex of the array",
+        gmap_core::resources::cubical_set_estimate(shape),
+    )
+    .map_err(Failure::from)
 }
 
 /// The bytes of a cubical array: (shape with axis 0 fastest, the array as bytes, whether the
@@ -237,11 +269,6 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
         )
         .into());
     }
-    gmap_core::resources::check_memory(
-        "the cubical complex of the array",
-        gmap_core::resources::cubical_set_estimate(&np_shape),
-    )
-    .map_err(Failure::from)?;
     let kind = arr.dtype().kind();
     let one_byte = arr.dtype().itemsize() == 1 && matches!(kind, b'b' | b'u' | b'i');
     let contiguous = arr.is_c_contiguous() || arr.is_fortran_contiguous();
@@ -255,6 +282,8 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
             ))
             .into());
         }
+        // the byte per cube numpy makes
+        gmap_core::resources::check_memory("the array's cubes as bytes", volume).map_err(Failure::from)?;
         let np = py.import("numpy")?;
         np.call_method1("ascontiguousarray", (np.call_method1("not_equal", (a, 0))?,))?
             .call_method1("view", ("uint8",))?
@@ -268,6 +297,28 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
 
 #[pymethods]
 impl PyCubicalSet {
+    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
+    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
+    /// with generators=True the homology generators drawn) written to `path` (returned as
+    /// a str), or its HTML text when path is None. `color_by` names the label that colours
+    /// the cells (UsageError-like InputError when no cell has it).
+    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
+    fn view(
+        &self,
+        py: Python<'_>,
+        path: Option<std::path::PathBuf>,
+        generators: bool,
+        color_by: Option<String>,
+    ) -> PyResult<String> {
+        crate::page::view(py, &self.input, path, generators, color_by)
+    }
+
+    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
+    /// big to embed).
+    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
+        crate::page::repr_html(py, &self.input)
+    }
+
     /// CubicalSet(array, min=None): the cubes where the array (1 to 8 dimensions) is
     /// nonzero; array[i0, i1, …] is the cube with minimal vertex min + (i0, i1, …) (min: zeros
     /// by default).
@@ -371,6 +422,28 @@ use pyo3::types::IntoPyDict;
 
 #[pymethods]
 impl PyArchComplex {
+    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
+    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
+    /// with generators=True the homology generators drawn) written to `path` (returned as
+    /// a str), or its HTML text when path is None. `color_by` names the label that colours
+    /// the cells (UsageError-like InputError when no cell has it).
+    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
+    fn view(
+        &self,
+        py: Python<'_>,
+        path: Option<std::path::PathBuf>,
+        generators: bool,
+        color_by: Option<String>,
+    ) -> PyResult<String> {
+        crate::page::view(py, &self.input, path, generators, color_by)
+    }
+
+    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
+    /// big to embed).
+    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
+        crate::page::repr_html(py, &self.input)
+    }
+
     /// ArchComplex(text): an architectural complex from the text of a `.json` file.
     #[new]
     fn py_new(text: &str) -> PyResult<Self> {
