@@ -6,9 +6,7 @@
 use std::path::PathBuf;
 
 use gmap::PersistenceOptions;
-use gmap_homology::persistence::{
-    cubical_persistence, CellName, Construction, CubicalOptions, Diagram, PersistenceError,
-};
+use gmap_homology::persistence::{cubical_persistence, CellName, Construction, Diagram, PersistenceError};
 use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
@@ -16,16 +14,6 @@ use pyo3::types::{PyList, PyString, PyTuple};
 use crate::errors::{Failure, Kind};
 use crate::gmapobj::PyGMap;
 use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
-
-fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
-    CubicalOptions {
-        construction: o.construction,
-        superlevel: o.superlevel,
-        periodic: o.periodic,
-        field: o.field,
-        cycles: o.cycles,
-    }
-}
 
 /// The diagram of a numpy grey array (1 to 8 axes, numbers or booleans), in numpy's axis
 /// order; a float64 C-contiguous array is read in place, anything else converted once.
@@ -52,7 +40,7 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
     if let Some(i) = v.iter().position(|x| x.is_nan()) {
         return Err(Failure::input(format!("the grey array has NaN at flat index {i}")).into());
     }
-    let opts = cubical_options(o);
+    let opts = gmap::persistence::cubical_options(o);
     Ok(py.allow_threads(|| cubical_persistence(&shape, v, &opts)).map_err(engine_error)?)
 }
 
