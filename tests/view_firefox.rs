@@ -8,6 +8,8 @@
 #[path = "../examples/building.rs"]
 #[allow(dead_code)]
 mod building;
+#[path = "common/chromium.rs"]
+mod chromium;
 #[path = "common/firefox.rs"]
 mod firefox;
 

@@ -40,6 +40,8 @@ from ._gmap import (
     SimplicialComplex,
     ValidityError,
     _bench_json,
+    _page,
+    _page_frame,
     homology,
     open,
     persistence,
@@ -69,6 +71,35 @@ __all__ = [
 ]
 
 __version__ = "0.1.0"
+
+
+def _view(
+    self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex],
+    path: Union[None, str, "os.PathLike[str]"] = None,
+    *,
+    generators: bool = False,
+    color_by: Union[None, str] = None,
+) -> str:
+    """The page of ``gmap view``: one self-contained HTML file (nothing fetched; opens from
+    file:// in Chromium and Firefox) with the exploded darts and their alpha links (maps and
+    simplicial complexes), the cubes (cubical sets) or the regions (architectural
+    complexes), the cells coloured by the label ``color_by`` (default: the first text label
+    of the highest dimension with labels; an InputError when no cell has it), and with
+    ``generators=True`` each homology generator highlighted. Written to ``path`` (the path is
+    returned as a str), or returned as text when ``path`` is None."""
+    return _page(self, path, generators, color_by)
+
+
+def _repr_html_(self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]) -> str:
+    """The page of ``view()`` for Jupyter: an ``<iframe srcdoc>`` 600 px high holding the
+    escaped page, or a short note when the page is over 8 MB (write it with ``view(path)``)."""
+    return _page_frame(self)
+
+
+for _cls in (GMap, SimplicialComplex, CubicalSet, ArchComplex):
+    _cls.view = _view
+    _cls._repr_html_ = _repr_html_
+del _cls
 
 
 def incidence_graph(m: GMap) -> Any:

@@ -39,6 +39,16 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if o.via.is_some() {
         return Err(Failure::input("--via direct applies to simplicial complexes (.facets, .lex)"));
     }
+    let report = |groups, generators| Report {
+        kind: "cubical set",
+        dimension: c.shape.len(),
+        method: gmap::Method::Cellular,
+        route: None,
+        field: o.field,
+        groups,
+        generators,
+        note: None,
+    };
     // dimension ≤ 3, not periodic, no generators: the facade's one pass over the cubes,
     // read from the array a layer at a time
     let bits = c.bits;
@@ -46,16 +56,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
         gmap::route::cubical_one_pass(c.shape, |s, out| out.copy_from_slice(&bits[s..s + out.len()]), o, "the array")
             .map_err(Failure::from)?;
     if let Some(groups) = one_pass {
-        return Ok(Report {
-            kind: "cubical set",
-            dimension: c.shape.len(),
-            method: gmap::Method::Cellular,
-            route: None,
-            field: o.field,
-            groups,
-            generators: None,
-            note: None,
-        });
+        return Ok(report(groups, None));
     }
     crate::objects::check_complex_memory(c.shape)?;
     let cc = gmap_homology::cubical::cubical_complex_with(c.shape, c.bits, o.periodic, true)?;
@@ -87,16 +88,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     } else {
         None
     };
-    Ok(Report {
-        kind: "cubical set",
-        dimension: c.shape.len(),
-        method: gmap::Method::Cellular,
-        route: None,
-        field: o.field,
-        groups,
-        generators: gens,
-        note: None,
-    })
+    Ok(report(groups, gens))
 }
 
 /// Reverses the axes of the cubes named by a report's generators (a set whose numpy axes

@@ -540,28 +540,6 @@ impl PyGMap {
         m
     }
 
-    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
-    /// self-contained HTML file: the exploded darts with the alpha links, cells coloured by
-    /// a label, with generators=True the homology generators drawn) written to `path`
-    /// (returned as a str), or its HTML text when path is None. Points are the map's, or a
-    /// layout of its 1-skeleton when it has none.
-    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
-    fn view(
-        &self,
-        py: Python<'_>,
-        path: Option<std::path::PathBuf>,
-        generators: bool,
-        color_by: Option<String>,
-    ) -> PyResult<String> {
-        crate::page::view(py, &self.input(), path, generators, color_by)
-    }
-
-    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
-    /// big to embed).
-    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
-        crate::page::repr_html(py, &self.input())
-    }
-
     /// The text of the map in the `.gmap` format (points and labels kept).
     fn to_text(&self) -> String {
         String::from_utf8_lossy(&gmap_core::io::format_labelled_gmap(&self.g)).into_owned()

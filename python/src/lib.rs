@@ -478,6 +478,8 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(homology, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
     m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
+    m.add_function(wrap_pyfunction!(page::_page, m)?)?;
+    m.add_function(wrap_pyfunction!(page::_page_frame, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_json, m)?)?;
     m.add_function(wrap_pyfunction!(_build_grid, m)?)?;
     m.add_function(wrap_pyfunction!(_build_simplex, m)?)?;

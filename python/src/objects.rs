@@ -124,28 +124,6 @@ pub fn complex_of(facets: Vec<Vec<u64>>) -> Res<SimplicialComplex> {
 
 #[pymethods]
 impl PySimplicialComplex {
-    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
-    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
-    /// with generators=True the homology generators drawn) written to `path` (returned as
-    /// a str), or its HTML text when path is None. `color_by` names the label that colours
-    /// the cells (UsageError-like InputError when no cell has it).
-    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
-    fn view(
-        &self,
-        py: Python<'_>,
-        path: Option<std::path::PathBuf>,
-        generators: bool,
-        color_by: Option<String>,
-    ) -> PyResult<String> {
-        crate::page::view(py, &self.input, path, generators, color_by)
-    }
-
-    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
-    /// big to embed).
-    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
-        crate::page::repr_html(py, &self.input)
-    }
-
     /// SimplicialComplex(facets): facets as a sequence of sequences of non-negative ints or
     /// a 2-D integer array (one facet a row).
     #[new]
@@ -297,28 +275,6 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
 
 #[pymethods]
 impl PyCubicalSet {
-    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
-    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
-    /// with generators=True the homology generators drawn) written to `path` (returned as
-    /// a str), or its HTML text when path is None. `color_by` names the label that colours
-    /// the cells (UsageError-like InputError when no cell has it).
-    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
-    fn view(
-        &self,
-        py: Python<'_>,
-        path: Option<std::path::PathBuf>,
-        generators: bool,
-        color_by: Option<String>,
-    ) -> PyResult<String> {
-        crate::page::view(py, &self.input, path, generators, color_by)
-    }
-
-    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
-    /// big to embed).
-    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
-        crate::page::repr_html(py, &self.input)
-    }
-
     /// CubicalSet(array, min=None): the cubes where the array (1 to 8 dimensions) is
     /// nonzero; array[i0, i1, …] is the cube with minimal vertex min + (i0, i1, …) (min: zeros
     /// by default).
@@ -422,28 +378,6 @@ use pyo3::types::IntoPyDict;
 
 #[pymethods]
 impl PyArchComplex {
-    /// view(path=None, *, generators=False, color_by=None): the page of `gmap view` (one
-    /// self-contained HTML file: the exploded darts or cubes, cells coloured by a label,
-    /// with generators=True the homology generators drawn) written to `path` (returned as
-    /// a str), or its HTML text when path is None. `color_by` names the label that colours
-    /// the cells (UsageError-like InputError when no cell has it).
-    #[pyo3(signature = (path = None, *, generators = false, color_by = None))]
-    fn view(
-        &self,
-        py: Python<'_>,
-        path: Option<std::path::PathBuf>,
-        generators: bool,
-        color_by: Option<String>,
-    ) -> PyResult<String> {
-        crate::page::view(py, &self.input, path, generators, color_by)
-    }
-
-    /// The page of view() in an iframe, for Jupyter (a note instead when the page is too
-    /// big to embed).
-    fn _repr_html_(&self, py: Python<'_>) -> PyResult<String> {
-        crate::page::repr_html(py, &self.input)
-    }
-
     /// ArchComplex(text): an architectural complex from the text of a `.json` file.
     #[new]
     fn py_new(text: &str) -> PyResult<Self> {

@@ -1,5 +1,7 @@
 //! The page of `gmap::view` for Python: `obj.view(path)` writes it (or returns it), and
-//! `obj._repr_html_()` embeds it in a notebook as an `<iframe srcdoc="…">`.
+//! `obj._repr_html_()` embeds it in a notebook as an `<iframe srcdoc="…">`. The two methods
+//! are defined once, in `gmap/__init__.py`, for the four classes, on [`_page`] and
+//! [`_page_frame`].
 //!
 //! The page is self-contained (its script, styles and data inline), so the iframe needs
 //! nothing but the escaped text; a page over [`INLINE_LIMIT`] bytes is not embedded (a
@@ -12,6 +14,8 @@ use gmap::{Input, ViewOptions};
 use pyo3::prelude::*;
 
 use crate::errors::{Failure, Kind};
+use crate::gmapobj::PyGMap;
+use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
 
 /// The largest page embedded inline by `_repr_html_`, in bytes.
 pub const INLINE_LIMIT: usize = 8 << 20;
@@ -27,16 +31,36 @@ pub fn page(py: Python<'_>, input: &Input, generators: bool, color_by: Option<St
     Ok(py.allow_threads(|| gmap::view(input, &o)).map_err(Failure::from)?)
 }
 
-/// `obj.view(path=None, *, generators=False, color_by=None)`: the page written to `path`
+/// The facade input of a package object (a GMap's is a copy of its map with its labels).
+fn with_input<T>(x: &Bound<'_, PyAny>, f: impl FnOnce(&Input) -> PyResult<T>) -> PyResult<T> {
+    if let Ok(m) = x.downcast::<PyGMap>() {
+        let input = m.borrow().input();
+        return f(&input);
+    }
+    if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+        return f(&s.get().input);
+    }
+    if let Ok(c) = x.downcast::<PyCubicalSet>() {
+        return f(&c.get().input);
+    }
+    if let Ok(a) = x.downcast::<PyArchComplex>() {
+        return f(&a.get().input);
+    }
+    Err(Failure::input(format!("no page for a {}", x.get_type().name()?)).into())
+}
+
+/// _page(x, path, generators, color_by): `x.view(...)`: the page written to `path`
 /// (returned as a str), or its text when `path` is None.
-pub fn view(
+#[pyfunction]
+#[pyo3(signature = (x, path = None, generators = false, color_by = None))]
+pub fn _page(
     py: Python<'_>,
-    input: &Input,
+    x: &Bound<'_, PyAny>,
     path: Option<PathBuf>,
     generators: bool,
     color_by: Option<String>,
 ) -> PyResult<String> {
-    let html = page(py, input, generators, color_by)?;
+    let html = with_input(x, |input| page(py, input, generators, color_by))?;
     match path {
         None => Ok(html),
         Some(p) => {
@@ -47,9 +71,11 @@ pub fn view(
     }
 }
 
-/// The notebook's inline view: the page in an iframe, or a note when it is too big.
-pub fn repr_html(py: Python<'_>, input: &Input) -> PyResult<String> {
-    let html = page(py, input, false, None)?;
+/// _page_frame(x): `x._repr_html_()`, the notebook's inline view: the page in an iframe,
+/// or a note when it is too big.
+#[pyfunction]
+pub fn _page_frame(py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<String> {
+    let html = with_input(x, |input| page(py, input, false, None))?;
     Ok(frame(&html))
 }
 

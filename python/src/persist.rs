@@ -25,8 +25,11 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
     }
     use numpy::PyArrayDescrMethods;
     if !matches!(arr.dtype().kind(), b'b' | b'u' | b'i' | b'f') {
-        return Err(Failure::input(format!("a grey array holds numbers or booleans, not dtype {}", arr.dtype().str()?))
-            .into());
+        return Err(Failure::input(format!(
+            "a grey array holds numbers or booleans, not dtype {}",
+            arr.dtype().str()?
+        ))
+        .into());
     }
     let shape = arr.shape().to_vec();
     // the grid's values (2^d per pixel, 8 bytes each) under the memory policy

@@ -15,26 +15,15 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
+
+use crate::chromium::{can_unshare, find_browser};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
 /// The Firefox binary: `$GMAP_FIREFOX`, else `firefox` or `firefox-esr` on the `PATH`;
 /// `None` (with a notice printed) when there is none.
 pub fn firefox() -> Option<PathBuf> {
-    if let Some(p) = std::env::var_os("GMAP_FIREFOX") {
-        return Some(PathBuf::from(p));
-    }
-    let path = std::env::var_os("PATH").unwrap_or_default();
-    for name in ["firefox", "firefox-esr"] {
-        for dir in std::env::split_paths(&path) {
-            let c = dir.join(name);
-            if c.is_file() {
-                return Some(c);
-            }
-        }
-    }
-    eprintln!("NOTICE: no firefox on the PATH (apt-get install firefox-esr): the Firefox test is skipped");
-    None
+    find_browser("GMAP_FIREFOX", &["firefox", "firefox-esr"], "apt-get install firefox-esr")
 }
 
 /// What one run of a page reported.
@@ -68,10 +57,6 @@ user_pref("network.proxy.ssl", "127.0.0.1");
 user_pref("network.proxy.ssl_port", 9);
 user_pref("network.proxy.allow_hijacking_localhost", true);
 "#;
-
-fn can_unshare() -> bool {
-    Command::new("unshare").args(["-rn", "true"]).output().is_ok_and(|o| o.status.success())
-}
 
 /// Opens `page` with `#selftest` in headless Firefox (a fresh profile) and returns what it
 /// reported. Panics (a test failure) when the page logged no results.
