@@ -52,6 +52,18 @@ pub struct Run {
     pub isolated: bool,
 }
 
+/// The command that runs `browser` without network: inside `unshare -rn` where that works
+/// (the second value), else as is.
+pub fn offline(browser: &Path) -> (Command, bool) {
+    if can_unshare() {
+        let mut c = Command::new("unshare");
+        c.arg("-rn").arg(browser);
+        (c, true)
+    } else {
+        (Command::new(browser), false)
+    }
+}
+
 /// Whether `unshare -rn` works here (a user and network namespace).
 pub fn can_unshare() -> bool {
     Command::new("unshare").args(["-rn", "true"]).output().is_ok_and(|o| o.status.success())
@@ -82,14 +94,7 @@ pub fn run_selftest(browser: &Path, page: &Path) -> Run {
         "--dump-dom".into(),
         url,
     ];
-    let isolated = can_unshare();
-    let mut cmd = if isolated {
-        let mut c = Command::new("unshare");
-        c.arg("-rn").arg(browser);
-        c
-    } else {
-        Command::new(browser)
-    };
+    let (mut cmd, isolated) = offline(browser);
     let start = Instant::now();
     let out = cmd.args(&args).output().expect("run chromium");
     let wall = start.elapsed();

@@ -16,8 +16,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::chromium::{can_unshare, find_browser};
-use std::process::Command;
+use crate::chromium::{find_browser, offline};
 use std::time::{Duration, Instant};
 
 /// The Firefox binary: `$GMAP_FIREFOX`, else `firefox` or `firefox-esr` on the `PATH`;
@@ -67,14 +66,7 @@ pub fn run_selftest(browser: &Path, page: &Path) -> Run {
     std::fs::write(profile.join("user.js"), USER_JS).unwrap();
     let shot = tmp.path().join("shot.png");
     let url = format!("file://{}#selftest", page.canonicalize().unwrap().display());
-    let isolated = can_unshare();
-    let mut cmd = if isolated {
-        let mut c = Command::new("unshare");
-        c.arg("-rn").arg(browser);
-        c
-    } else {
-        Command::new(browser)
-    };
+    let (mut cmd, isolated) = offline(browser);
     cmd.env("LIBGL_ALWAYS_SOFTWARE", "1").env("EGL_PLATFORM", "surfaceless").env("MOZ_WEBGL_FORCE_EGL", "1");
     cmd.arg("--headless").arg("--no-remote").arg("--profile").arg(&profile);
     cmd.args(["--window-size", "1200,800", "--screenshot"]).arg(&shot).arg(&url);
