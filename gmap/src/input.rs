@@ -138,6 +138,13 @@ impl MapInput {
         MapInput { map, source: Source::default(), labelled: OnceLock::new() }
     }
 
+    /// A map with points and labels built in memory (no file): the labels are kept for
+    /// [`MapInput::labelled`] (the page of [`crate::view`] colours cells by them).
+    pub fn from_labelled(g: LabelledGMap) -> Self {
+        let map = g.to_dense_map();
+        MapInput { map, source: Source::default(), labelled: OnceLock::from(Ok(Box::new(g))) }
+    }
+
     /// The map.
     pub fn map(&self) -> &DenseMap {
         &self.map

@@ -59,7 +59,9 @@ fn compute(e: gmap_homology::persistence::PersistenceError) -> Error {
     Error::from_source(ErrorKind::Compute, &e)
 }
 
-fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
+/// The engine's options for an image (`gmap_homology::persistence::cubical_persistence`);
+/// public for callers that hold the values themselves (the Python package's numpy arrays).
+pub fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
     CubicalOptions {
         construction: o.construction,
         superlevel: o.superlevel,

@@ -307,8 +307,11 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
 /// (`gmap_homology::cubical_pass`), where no cubical complex is needed: not periodic, no
-/// generators, the cellular method. `None` where the cubical complex is needed.
-pub(crate) fn cubical_one_pass(
+/// generators, the cellular method. `None` where the cubical complex is needed. `fill(start,
+/// out)` writes the presence bytes of the cubes `start..start + out.len()` (axis 0
+/// fastest); `file` names the input in messages. Public for callers that hold the cubes
+/// elsewhere (the Python package reads a numpy array in place).
+pub fn cubical_one_pass(
     shape: &[usize],
     fill: impl Fn(usize, &mut [u8]) + Sync,
     o: &HomologyOptions,

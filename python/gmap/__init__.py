@@ -9,6 +9,11 @@ with the command's routes, checks and messages.
 >>> gmap.homology([[0, 1, 2], [0, 2, 3], [0, 1, 3], [1, 2, 3]]).betti
 [1, 0, 1]
 
+``gmap.persistence(x)`` gives the persistence diagram of a grey numpy array, an image file,
+a ``.facets`` file with values or a map with a value per cell as a (k, 3) array of
+(dimension, birth, death); ``obj.view(path)`` writes a self-contained HTML page of any
+object (a notebook shows it inline through ``_repr_html_``).
+
 Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from facets) and
 :mod:`gmap.dask` (a corpus on a Dask cluster).
 """
@@ -35,8 +40,11 @@ from ._gmap import (
     SimplicialComplex,
     ValidityError,
     _bench_json,
+    _page,
+    _page_frame,
     homology,
     open,
+    persistence,
 )
 from . import build
 
@@ -59,9 +67,39 @@ __all__ = [
     "homology",
     "incidence_graph",
     "open",
+    "persistence",
 ]
 
 __version__ = "0.1.0"
+
+
+def _view(
+    self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex],
+    path: Union[None, str, "os.PathLike[str]"] = None,
+    *,
+    generators: bool = False,
+    color_by: Union[None, str] = None,
+) -> str:
+    """The page of ``gmap view``: one self-contained HTML file (nothing fetched; opens from
+    file:// in Chromium and Firefox) with the exploded darts and their alpha links (maps and
+    simplicial complexes), the cubes (cubical sets) or the regions (architectural
+    complexes), the cells coloured by the label ``color_by`` (default: the first text label
+    of the highest dimension with labels; an InputError when no cell has it), and with
+    ``generators=True`` each homology generator highlighted. Written to ``path`` (the path is
+    returned as a str), or returned as text when ``path`` is None."""
+    return _page(self, path, generators, color_by)
+
+
+def _repr_html_(self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]) -> str:
+    """The page of ``view()`` for Jupyter: an ``<iframe srcdoc>`` 600 px high holding the
+    escaped page, or a short note when the page is over 8 MB (write it with ``view(path)``)."""
+    return _page_frame(self)
+
+
+for _cls in (GMap, SimplicialComplex, CubicalSet, ArchComplex):
+    _cls.view = _view
+    _cls._repr_html_ = _repr_html_
+del _cls
 
 
 def incidence_graph(m: GMap) -> Any:

@@ -111,6 +111,11 @@ class GMap:
     def labels(self, i: int) -> List[Dict[str, LabelValue]]: ...
     def set_label(self, i: int, d: int, name: str, value: LabelValue) -> None: ...
     def copy(self) -> "GMap": ...
+    def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
+        """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
+        is returned as a str), or its HTML text when path is None."""
+    def _repr_html_(self) -> str:
+        """The page in an iframe for Jupyter, or a note when it is too big to embed."""
     def save(self, path: PathLike) -> None: ...
     def incidences(self) -> List[Tuple[Tuple[int, int], Tuple[int, int]]]: ...
     def incidence_graph(self) -> Any:
@@ -149,6 +154,11 @@ class SimplicialComplex:
     def is_pure(self) -> bool: ...
     def to_gmap(self) -> GMap: ...
     def save(self, path: PathLike) -> None: ...
+    def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
+        """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
+        is returned as a str), or its HTML text when path is None."""
+    def _repr_html_(self) -> str:
+        """The page in an iframe for Jupyter, or a note when it is too big to embed."""
 
 class CubicalSet:
     """A full cubical set: the unit cubes of a box that belong to the set."""
@@ -165,6 +175,11 @@ class CubicalSet:
     def __len__(self) -> int: ...
     def to_gmap(self, periodic: bool = False) -> GMap: ...
     def save(self, path: PathLike) -> None: ...
+    def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
+        """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
+        is returned as a str), or its HTML text when path is None."""
+    def _repr_html_(self) -> str:
+        """The page in an iframe for Jupyter, or a note when it is too big to embed."""
 
 class ArchComplex:
     """An architectural complex (an incidence graph of regions, `.json`)."""
@@ -175,6 +190,11 @@ class ArchComplex:
     def __len__(self) -> int: ...
     def to_json(self) -> str: ...
     def save(self, path: PathLike) -> None: ...
+    def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
+        """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
+        is returned as a str), or its HTML text when path is None."""
+    def _repr_html_(self) -> str:
+        """The page in an iframe for Jupyter, or a note when it is too big to embed."""
 
 Input = Union[PathLike, GMap, SimplicialComplex, CubicalSet, ArchComplex, Facets, npt.NDArray[Any]]
 
@@ -188,10 +208,28 @@ def homology(
 ) -> Homology:
     """The homology groups of `x` over Z (or Z/field)."""
 
+Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
+
+def persistence(
+    x: Union[PathLike, GMap, CubicalSet, npt.NDArray[Any]],
+    *,
+    field: int = 2,
+    construction: str = "T",
+    superlevel: bool = False,
+    periodic: bool = False,
+    cycles: bool = False,
+    label: str = "value",
+) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], List[Cycle]]]:
+    """The persistence diagram of `x` over Z/field: a (k, 3) float64 array of (dimension,
+    birth, death), inf for essential classes; with cycles=True also a representative cycle
+    per pair, (cells, coefficients) in the input's terms."""
+
 def open(path: PathLike) -> Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]:
     """What the file holds."""
 
 def _bench_json(paths: Sequence[PathLike]) -> str: ...
+def _page(x: Any, path: Optional[PathLike] = None, generators: bool = False, color_by: Optional[str] = None) -> str: ...
+def _page_frame(x: Any) -> str: ...
 def _build_grid(shape: Sequence[int], periodic: Union[None, bool, Sequence[bool]] = None) -> GMap: ...
 def _build_simplex(n: int) -> GMap: ...
 def _build_cube(n: int) -> GMap: ...

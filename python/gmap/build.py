@@ -63,6 +63,8 @@ def surface(word: str) -> GMap:
 
 def from_facets(facets: Any) -> GMap:
     """The G-map of a pure pseudo-manifold (every ridge in at most two facets) given by its
-    facets (a sequence of sequences of non-negative ints or a 2-D integer array); generators
-    of its homology are named by the facets' vertex labels."""
+    facets (a sequence of sequences of non-negative ints or a 2-D integer array). The map
+    keeps the complex while its darts are not edited: the generators of
+    ``gmap.homology(m, generators=True)`` are then named by the facets' vertex labels (tuples,
+    as for the facet list itself); after ``sew``, ``unsew`` or an Euler operator, by darts."""
     return _build_from_facets(facets)

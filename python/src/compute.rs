@@ -19,9 +19,11 @@ pub struct Cubes<'a> {
     pub reversed: bool,
 }
 
-/// The homology of a borrowed cubical set, as the facade computes that of a `CubicalSet`
-/// (the cubical complex of the closure after collapses of free faces; `periodic`: the box a
-/// torus), with the facade's checks of the options.
+/// The homology of a borrowed cubical set, as the facade computes that of a `CubicalSet`:
+/// in one pass over the cubes where that applies (dimension ≤ 3, not periodic, no
+/// generators: `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array
+/// never copied whole), else the cubical complex of the closure after collapses of free
+/// faces (`periodic`: the box a torus), with the facade's checks of the options.
 pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if let Some(p) = o.field {
         if !gmap_homology::is_prime(p) || p >= 1 << 31 {
@@ -37,6 +39,26 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if o.via.is_some() {
         return Err(Failure::input("--via direct applies to simplicial complexes (.facets, .lex)"));
     }
+    let report = |groups, generators| Report {
+        kind: "cubical set",
+        dimension: c.shape.len(),
+        method: gmap::Method::Cellular,
+        route: None,
+        field: o.field,
+        groups,
+        generators,
+        note: None,
+    };
+    // dimension ≤ 3, not periodic, no generators: the facade's one pass over the cubes,
+    // read from the array a layer at a time
+    let bits = c.bits;
+    let one_pass =
+        gmap::route::cubical_one_pass(c.shape, |s, out| out.copy_from_slice(&bits[s..s + out.len()]), o, "the array")
+            .map_err(Failure::from)?;
+    if let Some(groups) = one_pass {
+        return Ok(report(groups, None));
+    }
+    crate::objects::check_complex_memory(c.shape)?;
     let cc = gmap_homology::cubical::cubical_complex_with(c.shape, c.bits, o.periodic, true)?;
     let groups = match o.field {
         Some(p) => homology_zp(&cc.chain, p),
@@ -66,16 +88,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     } else {
         None
     };
-    Ok(Report {
-        kind: "cubical set",
-        dimension: c.shape.len(),
-        method: gmap::Method::Cellular,
-        route: None,
-        field: o.field,
-        groups,
-        generators: gens,
-        note: None,
-    })
+    Ok(report(groups, gens))
 }
 
 /// Reverses the axes of the cubes named by a report's generators (a set whose numpy axes

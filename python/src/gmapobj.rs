@@ -12,6 +12,7 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
+use gmap::Input;
 use gmap_core::{AlphaSet, DartId, DenseMap, LabelValue, LabelledGMap, Labels, MAX_DIM};
 use gmap_ops::euler::ops as eops;
 
@@ -26,26 +27,52 @@ pub struct PyGMap {
     /// the dart number of each storage slot (`u32::MAX` for an empty slot)
     slot_index: Vec<u32>,
     dense: Option<Arc<DenseMap>>,
+    /// the simplicial complex the map was built from (`build.from_facets`), while no edit
+    /// changed its darts: generators are then named by the complex's vertex labels
+    source: Option<Arc<Input>>,
 }
 
 impl PyGMap {
     /// Wraps a dense map (no labels).
     pub fn from_dense(m: &DenseMap) -> Self {
         let (g, ids) = LabelledGMap::from_dense_with_attributes(m);
-        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None };
+        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None, source: None };
         m.index_slots();
         m
     }
 
     /// Wraps a labelled map.
     pub fn from_labelled(g: LabelledGMap) -> Self {
-        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None };
+        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None, source: None };
         m.refresh();
         m
     }
 
+    /// The map of a simplicial complex's facets, which keeps the complex to name its cells.
+    pub fn from_complex(m: &DenseMap, complex: Input) -> Self {
+        let mut g = PyGMap::from_dense(m);
+        g.source = Some(Arc::new(complex));
+        g
+    }
+
+    /// The map with its points and labels as a facade input (a copy).
+    pub fn input(&self) -> Input {
+        Input::Map(gmap::MapInput::from_labelled(self.g.clone()))
+    }
+
+    /// The complex the map was built from, while no edit changed its darts.
+    pub fn source(&self) -> Option<Arc<Input>> {
+        self.source.clone()
+    }
+
     /// Renumbers the darts after darts were made or removed.
     fn refresh(&mut self) {
+        self.source = None;
+        self.freeze();
+    }
+
+    /// Makes the frozen map and numbers the darts in storage order.
+    fn freeze(&mut self) {
         let (d, ids) = self.g.to_dense_with_ids();
         self.ids = ids;
         self.dense = Some(Arc::new(d));
@@ -69,12 +96,13 @@ impl PyGMap {
     /// Drops the frozen map after an edit that keeps the darts.
     fn touched(&mut self) {
         self.dense = None;
+        self.source = None;
     }
 
     /// The frozen map (made now if an edit dropped it).
     pub fn dense(&mut self) -> Arc<DenseMap> {
         if self.dense.is_none() {
-            self.refresh();
+            self.freeze();
         }
         self.dense.clone().expect("just made")
     }

@@ -7,7 +7,9 @@
 //!   result read back from its JSON;
 //! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex` (each holds a facade
 //!   `gmap::Input`), writing files;
-//! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators.
+//! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators;
+//! * [`persist`]: `gmap.persistence` (diagrams of paths, numpy grey arrays, objects);
+//! * [`page`]: the page of `gmap view` for `obj.view()` and a notebook's `_repr_html_`.
 
 use std::path::PathBuf;
 
@@ -19,6 +21,8 @@ mod compute;
 mod errors;
 mod gmapobj;
 mod objects;
+mod page;
+mod persist;
 
 use compute::Cubes;
 use errors::Failure;
@@ -304,7 +308,16 @@ fn homology(
         return finish(py, r);
     }
     if let Ok(m) = x.downcast::<PyGMap>() {
-        let d = m.borrow_mut().dense();
+        let mut m = m.borrow_mut();
+        if let (Some(sc), true, None) = (m.source(), o.generators, o.via) {
+            // the map of facets: the same darts through the complex's G-map route, so that
+            // the generators' cells are named by vertex labels
+            o.via = Some(Via::Gmap);
+            let mut r = py.allow_threads(|| gmap::homology(&sc, &o)).map_err(Failure::from)?;
+            (r.kind, r.route) = ("map", None);
+            return finish(py, r);
+        }
+        let d = m.dense();
         let r = py.allow_threads(|| gmap::homology(&Input::Map(MapInput::new((*d).clone())), &o));
         return finish(py, r.map_err(Failure::from)?);
     }
@@ -439,15 +452,17 @@ fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
     build_result(py, gmap_ops::build::schema(word))
 }
 
-/// build.from_facets(facets): the G-map of a pure pseudo-manifold given by its facets.
+/// build.from_facets(facets): the G-map of a pure pseudo-manifold given by its facets; the
+/// map keeps the complex (until an edit changes its darts) to name generators by labels.
 #[pyfunction]
 fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<PyGMap>> {
     let f = objects::facets_from_py(facets)?;
-    let m = py.allow_threads(|| {
-        let sc = objects::complex_of(f)?;
-        Sourced::new(sc).to_gmap().map_err(Failure::from)
+    let (m, sc) = py.allow_threads(|| {
+        let sc = Sourced::new(objects::complex_of(f)?);
+        let m = sc.to_gmap().map_err(Failure::from)?;
+        Ok::<_, Failure>((m, Input::Simplicial(sc)))
     })?;
-    Py::new(py, PyGMap::from_dense(&m))
+    Py::new(py, PyGMap::from_complex(&m, sc))
 }
 
 /// The compiled module.
@@ -462,6 +477,9 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyGenerator>()?;
     m.add_function(wrap_pyfunction!(homology, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
+    m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
+    m.add_function(wrap_pyfunction!(page::_page, m)?)?;
+    m.add_function(wrap_pyfunction!(page::_page_frame, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_json, m)?)?;
     m.add_function(wrap_pyfunction!(_build_grid, m)?)?;
     m.add_function(wrap_pyfunction!(_build_simplex, m)?)?;

@@ -197,6 +197,7 @@ impl PyCubicalSet {
     /// array's, the minimal vertex `min` (numpy axis order; zeros by default).
     pub fn from_array(a: &Bound<'_, PyAny>, min: Option<Vec<i64>>) -> PyResult<Self> {
         let (shape, view, reversed) = array_bits(a)?;
+        check_complex_memory(&shape)?;
         let mut min = min.unwrap_or_else(|| vec![0; shape.len()]);
         if min.len() != shape.len() {
             return Err(Failure::input(format!("min has {} coordinates for {} axes", min.len(), shape.len())).into());
@@ -208,6 +209,15 @@ impl PyCubicalSet {
         let set = CubicalSet::new(min, shape, bits).map_err(Failure::from)?;
         Ok(PyCubicalSet { input: Input::Cubical(Sourced::new(set)), reversed })
     }
+}
+
+/// Refuses a box whose cubical complex (the general route's) is over the memory budget.
+pub fn check_complex_memory(shape: &[usize]) -> Res<()> {
+    gmap_core::resources::check_memory(
+        "the cubical complex of the array",
+        gmap_core::resources::cubical_set_estimate(shape),
+    )
+    .map_err(Failure::from)
 }
 
 /// The bytes of a cubical array: (shape with axis 0 fastest, the array as bytes, whether the
@@ -237,11 +247,6 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
         )
         .into());
     }
-    gmap_core::resources::check_memory(
-        "the cubical complex of the array",
-        gmap_core::resources::cubical_set_estimate(&np_shape),
-    )
-    .map_err(Failure::from)?;
     let kind = arr.dtype().kind();
     let one_byte = arr.dtype().itemsize() == 1 && matches!(kind, b'b' | b'u' | b'i');
     let contiguous = arr.is_c_contiguous() || arr.is_fortran_contiguous();
@@ -255,6 +260,8 @@ pub fn array_bits<'py>(a: &Bound<'py, PyAny>) -> PyResult<(Vec<usize>, numpy::Py
             ))
             .into());
         }
+        // the byte per cube numpy makes
+        gmap_core::resources::check_memory("the array's cubes as bytes", volume).map_err(Failure::from)?;
         let np = py.import("numpy")?;
         np.call_method1("ascontiguousarray", (np.call_method1("not_equal", (a, 0))?,))?
             .call_method1("view", ("uint8",))?

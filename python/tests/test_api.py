@@ -134,7 +134,11 @@ def test_builders():
     assert s.cell_counts() == [4, 6, 4]
     h = gmap.homology(s, generators=True)
     assert h.route is None and h.betti == [1, 0, 1]
-    assert h.generators[1].cells.dtype == np.uint32  # a map's cells are named by darts
+    # the map of facets names its cells by the facets' labels, as the facet list does
+    assert h.generators[1].cells == gmap.homology(TETRA_BOUNDARY, generators=True, method="gmap").generators[1].cells
+    assert all(isinstance(c, tuple) for c in h.generators[1].cells)
+    # other maps by darts
+    assert gmap.homology(gmap.build.cube(2), generators=True).generators[0].cells.dtype == np.uint32
 
 
 def test_euler_operators_cgal_names():

@@ -16,11 +16,17 @@ use std::time::{Duration, Instant};
 /// The Chromium binary: `$GMAP_CHROMIUM`, else `chromium`, `chromium-browser` or
 /// `google-chrome` found on the `PATH`; `None` (with a notice printed) when there is none.
 pub fn chromium() -> Option<PathBuf> {
-    if let Some(p) = std::env::var_os("GMAP_CHROMIUM") {
+    find_browser("GMAP_CHROMIUM", &["chromium", "chromium-browser", "google-chrome"], "apt-get install chromium")
+}
+
+/// A browser binary: the path in the environment variable `var`, else the first of `names`
+/// found on the `PATH`; `None`, with a notice naming `install`, when there is none.
+pub fn find_browser(var: &str, names: &[&str], install: &str) -> Option<PathBuf> {
+    if let Some(p) = std::env::var_os(var) {
         return Some(PathBuf::from(p));
     }
     let path = std::env::var_os("PATH").unwrap_or_default();
-    for name in ["chromium", "chromium-browser", "google-chrome"] {
+    for name in names {
         for dir in std::env::split_paths(&path) {
             let c = dir.join(name);
             if c.is_file() {
@@ -28,7 +34,7 @@ pub fn chromium() -> Option<PathBuf> {
             }
         }
     }
-    eprintln!("NOTICE: no chromium on the PATH (apt-get install chromium): the browser test is skipped");
+    eprintln!("NOTICE: no {} on the PATH ({install}): the browser test is skipped", names[0]);
     None
 }
 
@@ -46,8 +52,20 @@ pub struct Run {
     pub isolated: bool,
 }
 
+/// The command that runs `browser` without network: inside `unshare -rn` where that works
+/// (the second value), else as is.
+pub fn offline(browser: &Path) -> (Command, bool) {
+    if can_unshare() {
+        let mut c = Command::new("unshare");
+        c.arg("-rn").arg(browser);
+        (c, true)
+    } else {
+        (Command::new(browser), false)
+    }
+}
+
 /// Whether `unshare -rn` works here (a user and network namespace).
-fn can_unshare() -> bool {
+pub fn can_unshare() -> bool {
     Command::new("unshare").args(["-rn", "true"]).output().is_ok_and(|o| o.status.success())
 }
 
@@ -76,14 +94,7 @@ pub fn run_selftest(browser: &Path, page: &Path) -> Run {
         "--dump-dom".into(),
         url,
     ];
-    let isolated = can_unshare();
-    let mut cmd = if isolated {
-        let mut c = Command::new("unshare");
-        c.arg("-rn").arg(browser);
-        c
-    } else {
-        Command::new(browser)
-    };
+    let (mut cmd, isolated) = offline(browser);
     let start = Instant::now();
     let out = cmd.args(&args).output().expect("run chromium");
     let wall = start.elapsed();

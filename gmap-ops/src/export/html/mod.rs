@@ -579,8 +579,9 @@ fn b64_u8(v: &[u8]) -> String {
     base64::engine::general_purpose::STANDARD.encode(v)
 }
 
-/// Text for HTML element content and attribute values.
-fn escape_html(s: &str) -> String {
+/// Text for HTML element content and double-quoted attribute values (`&`, `<`, `>`, `"`
+/// escaped).
+pub fn escape_html(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 

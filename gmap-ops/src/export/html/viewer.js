@@ -910,5 +910,7 @@
     r.totalMs = performance.now();
     setView(first); draw();
     selftestOut.textContent = JSON.stringify(r);
+    // for browsers whose headless mode prints the console but cannot dump the document (Firefox)
+    console.log('gmap-selftest ' + selftestOut.textContent);
   }
 })();

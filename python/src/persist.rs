@@ -1,0 +1,180 @@
+//! `gmap.persistence(x, …)`: the persistence diagram of a path, a numpy grey array or a
+//! package object, through the facade (`gmap::persistence`, `gmap::persistence_file`) and,
+//! for a numpy array read in place when it is float64 and contiguous, the facade's engine
+//! for images (`gmap_homology::persistence::cubical_persistence`).
+
+use std::path::PathBuf;
+
+use gmap::PersistenceOptions;
+use gmap_homology::persistence::{cubical_persistence, CellName, Construction, Diagram, PersistenceError};
+use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyString, PyTuple};
+
+use crate::errors::{Failure, Kind};
+use crate::gmapobj::PyGMap;
+use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
+
+/// The diagram of a numpy grey array (1 to 8 axes, numbers or booleans), in numpy's axis
+/// order; a float64 C-contiguous array is read in place, anything else converted once.
+fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -> PyResult<Diagram> {
+    let arr = x.downcast::<numpy::PyUntypedArray>()?;
+    let nd = arr.ndim();
+    if !(1..=8).contains(&nd) {
+        return Err(Failure::input(format!("a grey array has 1 to 8 dimensions, not {nd}")).into());
+    }
+    use numpy::PyArrayDescrMethods;
+    if !matches!(arr.dtype().kind(), b'b' | b'u' | b'i' | b'f') {
+        return Err(Failure::input(format!(
+            "a grey array holds numbers or booleans, not dtype {}",
+            arr.dtype().str()?
+        ))
+        .into());
+    }
+    let shape = arr.shape().to_vec();
+    // the grid's values (2^d per pixel, 8 bytes each) under the memory policy
+    let pixels = shape.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64));
+    let estimate = pixels.and_then(|p| p.checked_mul(8 << nd));
+    gmap_core::resources::check_memory("the cubical filtration of the array", estimate).map_err(Failure::from)?;
+    let np = py.import("numpy")?;
+    let values = np.call_method1("ascontiguousarray", (x, "float64"))?;
+    let values = values.downcast::<numpy::PyArrayDyn<f64>>()?.readonly();
+    let v = values.as_slice().map_err(|e| Failure::input(e.to_string()))?;
+    if let Some(i) = v.iter().position(|x| x.is_nan()) {
+        return Err(Failure::input(format!("the grey array has NaN at flat index {i}")).into());
+    }
+    let opts = gmap::persistence::cubical_options(o);
+    Ok(py.allow_threads(|| cubical_persistence(&shape, v, &opts)).map_err(engine_error)?)
+}
+
+/// The engine's refusal as the package's exception: LimitError past its sizes, else
+/// InputError.
+fn engine_error(e: PersistenceError) -> Failure {
+    match e {
+        PersistenceError::TooLarge(_) => Failure::new(Kind::Limit, e.to_string()),
+        e => Failure::input(e.to_string()),
+    }
+}
+
+/// The (k, 3) float64 array of (dimension, birth, death).
+fn pairs_array<'py>(py: Python<'py>, d: &Diagram) -> PyResult<Bound<'py, PyAny>> {
+    let mut flat = Vec::with_capacity(d.pairs.len() * 3);
+    for p in &d.pairs {
+        flat.extend_from_slice(&[p.dim as f64, p.birth, p.death]);
+    }
+    Ok(PyArray1::from_vec(py, flat).reshape([d.pairs.len(), 3])?.into_any())
+}
+
+/// One cycle as (cells, coefficients): cells an int64 array (m, d) of doubled-grid
+/// coordinates for images, a list of vertex-label tuples for simplices, an int64 array of
+/// cell numbers (a G-map's: the cell's smallest dart) for cell complexes.
+fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Bound<'py, PyTuple>> {
+    let coefficients: Vec<i64> = chain.iter().map(|(_, k)| i64::from(*k)).collect();
+    let coefficients = coefficients.to_pyarray(py).into_any();
+    let cells: Bound<'py, PyAny> = match chain.first().map(|(c, _)| c) {
+        Some(CellName::Grid(g)) => {
+            let d = g.len();
+            let mut flat = Vec::with_capacity(chain.len() * d);
+            for (c, _) in chain {
+                if let CellName::Grid(g) = c {
+                    flat.extend(g.iter().map(|&x| x as i64));
+                }
+            }
+            PyArray1::from_vec(py, flat).reshape([chain.len(), d])?.into_any()
+        }
+        Some(CellName::Simplex(_)) => {
+            let l = PyList::empty(py);
+            for (c, _) in chain {
+                if let CellName::Simplex(s) = c {
+                    l.append(PyTuple::new(py, s)?)?;
+                }
+            }
+            l.into_any()
+        }
+        _ => {
+            let ids: Vec<i64> = chain
+                .iter()
+                .map(|(c, _)| match c {
+                    CellName::Cell { index, .. } => *index as i64,
+                    _ => -1,
+                })
+                .collect();
+            ids.to_pyarray(py).into_any()
+        }
+    };
+    PyTuple::new(py, [cells, coefficients])
+}
+
+/// persistence(x, *, field=2, construction="T", superlevel=False, periodic=False,
+/// cycles=False, label="value")
+///
+/// The persistence diagram of `x` over Z/field as a (k, 3) float64 numpy array of
+/// (dimension, birth, death), sorted by dimension, birth, death; `inf` is the death of an
+/// essential class (`-inf` with superlevel=True). `x` is a path (str or os.PathLike: a
+/// grey image `.npy`, `.pgm`, `.png`, DIPHA `.complex`, a `.facets` file with a value per
+/// facet, a `.gmap` with a numeric label per cell), a numpy grey array of 1 to 8 axes
+/// (numbers or booleans), a GMap whose cells carry the numeric label `label` (an i-cell's
+/// value raised to the maximum of its faces'), or a CubicalSet (0 on its cubes, 1
+/// elsewhere). For images, `construction` is "T" (values on top cells, GUDHI's
+/// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default),
+/// `superlevel` filters from the top down and `periodic` identifies opposite faces.
+///
+/// With cycles=True the result is `(pairs, cycles)`: `cycles[i]` represents `pairs[i]` as
+/// `(cells, coefficients)` in the input's terms: for arrays and images an int64 array
+/// (m, d) of cells on the doubled grid in numpy's axis order (pixel (i, j) is the cell
+/// (2i+1, 2j+1) in the T-construction, the vertex (2i, 2j) in the V-construction), for
+/// `.facets` a list of vertex-label tuples, for maps an int64 array of cells (the smallest
+/// dart of each); coefficients in 1..field as int64.
+#[pyfunction]
+#[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value"))]
+#[allow(clippy::too_many_arguments)]
+pub fn persistence<'py>(
+    py: Python<'py>,
+    x: &Bound<'py, PyAny>,
+    field: u32,
+    construction: &str,
+    superlevel: bool,
+    periodic: bool,
+    cycles: bool,
+    label: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let construction: Construction = construction
+        .parse()
+        .map_err(|_| Failure::input(format!("construction {construction:?}: expected 'T' or 'V'")))?;
+    let mut o = PersistenceOptions::default();
+    (o.field, o.construction, o.superlevel, o.periodic, o.cycles) = (field, construction, superlevel, periodic, cycles);
+    o.label = label.to_string();
+    let diagram = if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
+        let path: PathBuf = x.extract()?;
+        py.allow_threads(|| gmap::persistence_file(&path, &o)).map_err(Failure::from)?.diagram
+    } else if let Ok(m) = x.downcast::<PyGMap>() {
+        let input = m.borrow().input();
+        py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?
+    } else if let Ok(c) = x.downcast::<PyCubicalSet>() {
+        let input = &c.get().input;
+        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+        let input = &s.get().input;
+        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if let Ok(a) = x.downcast::<PyArchComplex>() {
+        let input = &a.get().input;
+        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if x.downcast::<numpy::PyUntypedArray>().is_ok() {
+        array_diagram(py, x, &o)?
+    } else {
+        return Err(Failure::input(format!(
+            "persistence of a {}: give a path, a numpy array, a GMap or a CubicalSet",
+            x.get_type().name()?
+        ))
+        .into());
+    };
+    let pairs = pairs_array(py, &diagram)?;
+    if !cycles {
+        return Ok(pairs);
+    }
+    let list = PyList::empty(py);
+    for c in &diagram.cycles {
+        list.append(cycle_to_py(py, c)?)?;
+    }
+    Ok(PyTuple::new(py, [pairs, list.into_any()])?.into_any())
+}

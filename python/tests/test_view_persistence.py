@@ -1,0 +1,251 @@
+"""obj.view() and the notebook's _repr_html_, gmap.persistence against GUDHI, and the
+names of build.from_facets' generators."""
+
+import html
+import json
+import re
+from collections import Counter
+
+import numpy as np
+import pytest
+
+import gmap
+
+from conftest import DATA
+
+ROOMS = ["hall", "kitchen", "study"]
+
+
+def meta(page):
+    """The page's data: the JSON of its `gmap-meta` element."""
+    m = re.search(r'<script type="application/json" id="gmap-meta">(.*?)</script>', page, re.S)
+    assert m, "no gmap-meta element"
+    return json.loads(m.group(1))
+
+
+def three_rooms():
+    """Three cubes in a row, each 3-cell named after a room."""
+    m = gmap.build.grid((3, 1, 1))
+    darts = m.cells(3).tolist()
+    assert len(darts) == 3
+    for d, room in zip(darts, ROOMS):
+        m.set_label(3, d, "room", room)
+    return m
+
+
+# ---------------------------------------------------------------- view
+
+
+def test_view_of_a_labelled_map_lists_its_rooms_and_darts(tmp_path):
+    m = three_rooms()
+    page = m.view()
+    assert page.startswith("<!DOCTYPE html>")
+    data = meta(page)
+    assert data["darts"] == len(m)
+    assert data["counts"] == m.cell_counts()
+    assert data["colorBy"] == "room"
+    # each label as [name, [value, type]]
+    named = sorted(v[0] for _, labels in data["labels"][3] for n, v in labels if n == "room")
+    assert named == sorted(ROOMS)
+    assert "http://" not in page and "https://" not in page
+    # written to a file: the same page, the path given back
+    out = tmp_path / "rooms.html"
+    assert m.view(out) == str(out)
+    assert out.read_text(encoding="utf-8") == page
+
+
+def test_view_color_by_an_unknown_label_is_an_error():
+    with pytest.raises(gmap.GmapError, match="colour"):
+        three_rooms().view(color_by="colour")
+
+
+def test_view_with_generators_names_each_summand():
+    torus = gmap.build.surface("a b a^-1 b^-1")
+    data = meta(torus.view(generators=True))
+    assert [g["name"] for g in data["generators"]] == ["H0 #0 (Z)", "H1 #0 (Z)", "H1 #1 (Z)", "H2 #0 (Z)"]
+    assert data["view"] == "homology"
+    assert all(g["cells"] for g in data["generators"])
+    assert meta(torus.view())["generators"] == []
+
+
+@pytest.mark.parametrize(
+    "obj",
+    [
+        lambda: gmap.SimplicialComplex([[0, 1, 2], [0, 2, 3], [0, 1, 3], [1, 2, 3]]),
+        lambda: gmap.CubicalSet(np.array([[1, 1, 1], [1, 0, 1], [1, 1, 1]], dtype=bool)),
+        lambda: gmap.open(DATA / "arch" / "tetrahedron.json"),
+        lambda: gmap.open(DATA / "lutz" / "poincare.facets"),
+    ],
+    ids=["simplicial", "cubical", "arch", "lutz"],
+)
+def test_every_object_has_a_page_and_an_inline_frame(obj):
+    x = obj()
+    page = x.view(generators=True)
+    data = meta(page)
+    assert data["generators"], "generators drawn"
+    frame = x._repr_html_()
+    assert frame.startswith("<iframe srcdoc=\"") and "height: 600px" in frame
+    srcdoc = re.fullmatch(r'<iframe srcdoc="([^"]*)".*</iframe>', frame, re.S).group(1)
+    # nothing in the attribute can end it or open a tag; unescaped it is exactly the page
+    assert "<" not in srcdoc and '"' not in srcdoc
+    assert html.unescape(srcdoc) == x.view()
+
+
+def test_the_cubical_page_holds_its_cubes():
+    a = np.zeros((5, 6), dtype=bool)
+    a[1:4, 1:4] = True
+    a[2, 2] = False  # a ring of 8 squares
+    data = meta(gmap.CubicalSet(a).view(generators=True))
+    assert data["dim"] == 2
+    assert data["counts"][2] == int(a.sum())
+    assert [g["name"] for g in data["generators"]] == ["H0 #0 (Z)", "H1 #0 (Z)"]
+
+
+def test_a_page_too_big_for_a_notebook_is_not_embedded():
+    # about 1.2 M cubes: a page of many megabytes
+    rng = np.random.default_rng(7)
+    big = gmap.CubicalSet(rng.random((110, 110, 110)) < 0.9)
+    shown = big._repr_html_()
+    assert "<iframe" not in shown and "MB" in shown and "view(" in shown
+    assert len(shown) < 1000
+
+
+# ---------------------------------------------------------------- from_facets names
+
+
+def test_from_facets_generators_are_named_by_vertex_labels():
+    # the boundary of a tetrahedron on labels 10, 20, 30, 40 and a torus (Möbius-Kantor)
+    facets = [[10, 20, 30], [10, 30, 40], [10, 20, 40], [20, 30, 40]]
+    m = gmap.build.from_facets(facets)
+    h = gmap.homology(m, generators=True)
+    assert h.betti == [1, 0, 1]
+    ref = gmap.homology(facets, generators=True, method="gmap")
+    for g, r in zip(h.generators, ref.generators):
+        assert g.dim == r.dim
+        assert list(g.cells) == list(r.cells)
+        assert list(g.coefficients) == list(r.coefficients)
+    labels = {10, 20, 30, 40}
+    for g in h.generators:
+        assert all(isinstance(c, tuple) and set(c) <= labels and len(c) == g.dim + 1 for c in g.cells)
+    # the same groups as a map; the report is a map's
+    assert h.to_dict()["betti"] == [1, 0, 1]
+    assert h.route is None
+    # after an edit of the darts the complex no longer names them: darts again
+    m.unsew(0, 2)
+    g = gmap.homology(m, generators=True)
+    assert isinstance(g.generators[0].cells, np.ndarray)
+
+
+def test_from_facets_torus_generators_by_labels():
+    torus = [
+        [1, 2, 4], [2, 3, 5], [3, 1, 6], [4, 2, 5], [5, 3, 6], [6, 1, 4],
+        [4, 5, 7], [5, 6, 8], [6, 4, 9], [7, 5, 8], [8, 6, 9], [9, 4, 7],
+        [7, 8, 1], [8, 9, 2], [9, 7, 3], [1, 8, 2], [2, 9, 3], [3, 7, 1],
+    ]
+    h = gmap.homology(gmap.build.from_facets(torus), generators=True)
+    assert h.betti == [1, 2, 1]
+    h1 = [g for g in h.generators if g.dim == 1]
+    assert len(h1) == 2
+    for g in h1:
+        assert all(len(c) == 2 and set(c) <= set(range(1, 10)) for c in g.cells)
+
+
+# ---------------------------------------------------------------- persistence
+
+
+def gudhi_pairs(top, field, vertices=False):
+    gudhi = pytest.importorskip("gudhi")
+    if vertices:
+        cc = gudhi.CubicalComplex(vertices=top)
+    else:
+        cc = gudhi.CubicalComplex(top_dimensional_cells=top)
+    cc.compute_persistence(homology_coeff_field=field, min_persistence=0)
+    return Counter((d, float(b), float(e)) for d, (b, e) in cc.persistence() if b != e)
+
+
+def ours(x, **kw):
+    d = gmap.persistence(x, **kw)
+    assert d.dtype == np.float64 and d.ndim == 2 and d.shape[1] == 3
+    return Counter((int(k), float(b), float(e)) for k, b, e in d)
+
+
+@pytest.mark.parametrize("field", [2, 3])
+@pytest.mark.parametrize("shape", [(7,), (9, 8), (5, 6, 4), (3, 3, 4, 3)])
+def test_persistence_equals_gudhi_cubical(shape, field):
+    rng = np.random.default_rng(hash((shape, field)) % 2**32)
+    for _ in range(3):
+        a = rng.integers(0, 6, size=shape).astype(np.float64)
+        assert ours(a, field=field) == gudhi_pairs(a, field)
+
+
+@pytest.mark.parametrize("field", [2, 3])
+def test_persistence_v_construction_equals_gudhi_vertices(field):
+    rng = np.random.default_rng(11 + field)
+    for shape in [(8, 9), (5, 4, 6)]:
+        a = rng.integers(0, 5, size=shape).astype(np.float64)
+        assert ours(a, field=field, construction="V") == gudhi_pairs(a, field, vertices=True)
+
+
+def test_persistence_of_a_path_and_of_other_dtypes(tmp_path):
+    rng = np.random.default_rng(5)
+    a = rng.integers(0, 9, size=(12, 10))
+    p = tmp_path / "img.npy"
+    np.save(p, a)
+    ref = gmap.persistence(a.astype(np.float64))
+    assert np.array_equal(gmap.persistence(p), ref)
+    assert np.array_equal(gmap.persistence(str(p)), ref)
+    assert np.array_equal(gmap.persistence(a), ref)  # int64, converted
+    assert np.array_equal(gmap.persistence(np.asfortranarray(a)), ref)
+    # essential classes die at inf; one essential H0 on a box
+    d = gmap.persistence(a)
+    assert np.isinf(d[:, 2]).sum() == 1 and d[np.isinf(d[:, 2])][0, 0] == 0
+    # superlevel: births above deaths, the essential class dies at -inf
+    s = gmap.persistence(a, superlevel=True)
+    assert np.all(s[:, 1] >= s[:, 2]) and np.isneginf(s[:, 2]).sum() == 1
+
+
+def test_persistence_cycles_in_grid_coordinates():
+    a = np.ones((7, 7))
+    a[1:6, 1:6] = 0.0
+    a[2:5, 2:5] = 2.0  # a ring of value 0 around a hole filled at 2
+    pairs, cycles = gmap.persistence(a, cycles=True)
+    assert len(cycles) == len(pairs)
+    ring = [i for i, (k, b, e) in enumerate(pairs) if k == 1 and b == 0.0 and e == 2.0]
+    assert len(ring) == 1
+    cells, coefficients = cycles[ring[0]]
+    assert cells.shape[1] == 2 and len(cells) == len(coefficients) > 0
+    # edges of the doubled grid (one odd coordinate), on the ring of pixels 1..5
+    assert np.all(cells.sum(axis=1) % 2 == 1)
+    assert cells.min() >= 2 and cells.max() <= 12
+
+
+def test_persistence_errors():
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(np.zeros((2,) * 9))
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(np.array([1.0, np.nan]))
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(np.zeros((3, 3)), construction="X")
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(np.zeros((3, 3)), field=4)
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(gmap.SimplicialComplex([[0, 1]]))
+    with pytest.raises(gmap.GmapError):
+        gmap.persistence(3)
+
+
+def test_persistence_of_a_cubical_set_and_a_valued_map():
+    a = np.array([[1, 1, 1], [1, 0, 1], [1, 1, 1]], dtype=bool)
+    d = gmap.persistence(gmap.CubicalSet(a))
+    # the ring (value 0) has one essential H0 and an H1 filled at 1
+    assert ours(gmap.CubicalSet(a)) == Counter({(0, 0.0, float("inf")): 1, (1, 0.0, 1.0): 1})
+    assert d.shape == (2, 3)
+    # a map whose cells carry a value
+    m = gmap.build.polygon(4)
+    for i in range(3):
+        for k, dart in enumerate(m.cells(i).tolist()):
+            m.set_label(i, dart, "value", float(i))
+    p = gmap.persistence(m)
+    # four vertices at 0 joined by the edges at 1 (three die), the loop closed at 1 and
+    # filled by the face at 2
+    assert Counter(map(tuple, p.tolist())) == Counter({(0.0, 0.0, float("inf")): 1, (0.0, 0.0, 1.0): 3, (1.0, 1.0, 2.0): 1})
