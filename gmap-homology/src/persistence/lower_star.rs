@@ -62,10 +62,12 @@ pub(crate) fn diagram(
         Err(e) => return Some(Err(e)),
     };
     let order = sort_order(pixels);
-    let mut rank = vec![0u32; n];
+    // one node per pixel, [parent, rank]: the rank of a neighbour is read from the cache
+    // line its node is on
+    let mut pix = Forest::new(n);
     let mut sv = Vec::with_capacity(n);
     for (r, &p) in order.iter().enumerate() {
-        rank[p as usize] = r as u32;
+        pix.nodes[p as usize] = [p, r as u32];
         sv.push(pixels[p as usize]);
     }
     let mut out = Out { diagram: Diagram::new(opts.field), sv: &sv, sign };
@@ -74,9 +76,9 @@ pub(crate) fn diagram(
         _ => (shape[d - 2], shape[d - 1]),
     };
     match (d, construction) {
-        (3, _) => v3([shape[0], rows, cols], &order, &rank, field, &mut out),
-        (_, Construction::V) => v2(rows, cols, &order, &rank, &mut out),
-        (_, Construction::T) => t2(rows, cols, &order, &rank, &mut out),
+        (3, _) => v3([shape[0], rows, cols], &order, pix, field, &mut out),
+        (_, Construction::V) => v2(rows, cols, &order, pix, &mut out),
+        (_, Construction::T) => t2(rows, cols, &order, pix, &mut out),
     }
     out.push(0, 0, None);
     let mut diagram = out.diagram;
@@ -103,30 +105,33 @@ impl Out<'_> {
     }
 }
 
-/// The pixels in order of (value, index): a stable LSD radix sort of the values' keys.
+/// The pixels in order of (value, index): a stable LSD radix sort of the values' keys,
+/// 11 bits a pass.
 fn sort_order(values: &[f64]) -> Vec<u32> {
     let n = values.len();
     let mut keys: Vec<u64> = values.iter().map(|&v| key(v)).collect();
     let mut idx: Vec<u32> = (0..n as u32).collect();
-    let mut counts = vec![[0usize; 256]; 8];
+    const BITS: usize = 11;
+    const MASK: u64 = (1 << BITS) - 1;
+    let mut counts = vec![[0usize; 1 << BITS]; 64usize.div_ceil(BITS)];
     for &k in &keys {
         for (b, c) in counts.iter_mut().enumerate() {
-            c[((k >> (8 * b)) & 255) as usize] += 1;
+            c[((k >> (BITS * b)) & MASK) as usize] += 1;
         }
     }
     let (mut keys2, mut idx2) = (vec![0u64; n], vec![0u32; n]);
     for (b, c) in counts.iter().enumerate() {
         if c.contains(&n) {
-            continue; // every key has this byte
+            continue; // every key has these bits
         }
-        let mut pos = [0usize; 256];
+        let mut pos = [0usize; 1 << BITS];
         let mut s = 0;
         for (p, &x) in pos.iter_mut().zip(c) {
             *p = s;
             s += x;
         }
         for (&k, &i) in keys.iter().zip(&idx) {
-            let slot = &mut pos[((k >> (8 * b)) & 255) as usize];
+            let slot = &mut pos[((k >> (BITS * b)) & MASK) as usize];
             keys2[*slot] = k;
             idx2[*slot] = i;
             *slot += 1;
@@ -185,18 +190,38 @@ impl Forest {
     }
 }
 
+/// How many pixels ahead of the sweep their rows are read in (see [`touch_ahead`]).
+const AHEAD: usize = 12;
+
+/// Reads the node of the pixel `AHEAD` steps after `r` in the sweep's direction (`dir` 1:
+/// forward, 0: `r` is that pixel's step already) and the nodes of the rows above and below:
+/// the loads start early and overlap with the current step's work, so the step that needs
+/// them finds them in cache (the sweep visits pixels in value order, all over the image).
+#[inline]
+fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: usize) {
+    let Some(&q) = order.get(r + dir * AHEAD) else { return };
+    let q = q as usize;
+    let mut x = nodes[q][1];
+    if q >= cols {
+        x ^= nodes[q - cols][1];
+    }
+    if q + cols < nodes.len() {
+        x ^= nodes[q + cols][1];
+    }
+    std::hint::black_box(x);
+}
+
 /// 2-D V-construction (a 1-D image is one row).
-fn v2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
+fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     let n = rows * cols;
-    let mut f = Forest::new(n + 1);
     // dimension 0: each pixel's edges to earlier neighbours
     for (r, &p) in order.iter().enumerate() {
+        touch_ahead(&pix.nodes, order, r, cols, 1);
         let r = r as u32;
-        f.make(p, r);
         let (i, j) = (p as usize / cols, p as usize % cols);
         let mut link = |q: usize| {
-            if rank[q] < r {
-                if let Some(young) = f.union(p, q as u32, true) {
+            if pix.nodes[q][1] < r {
+                if let Some(young) = pix.union(p, q as u32, true) {
                     out.push(0, young, Some(r));
                 }
             }
@@ -218,6 +243,8 @@ fn v2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
         return;
     }
     // dimension 1 on the dual: squares by their lower-left pixel, the outside node `n`
+    let rank = |q: usize| pix.nodes[q][1];
+    let mut f = Forest::new(n + 1);
     let outside = n as u32;
     f.make(outside, u32::MAX);
     let square = |a: usize, b: usize| -> u32 {
@@ -228,9 +255,12 @@ fn v2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
         }
     };
     for (r, &p) in order.iter().enumerate().rev() {
+        if r >= AHEAD {
+            touch_ahead(&pix.nodes, order, r - AHEAD, cols, 0);
+        }
         let r = r as u32;
         let (i, j) = (p as usize / cols, p as usize % cols);
-        let early = |a: usize, b: usize| rank[a * cols + b] <= r;
+        let early = |a: usize, b: usize| rank(a * cols + b) <= r;
         // the squares whose latest corner is p
         for (a, b) in [(i.wrapping_sub(1), j.wrapping_sub(1)), (i.wrapping_sub(1), j), (i, j.wrapping_sub(1)), (i, j)] {
             if a < rows - 1 && b < cols - 1 && early(a, b) && early(a + 1, b) && early(a, b + 1) && early(a + 1, b + 1)
@@ -244,35 +274,33 @@ fn v2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
                 out.push(1, r, Some(young));
             }
         };
-        if j > 0 && rank[p as usize - 1] < r {
+        if j > 0 && rank(p as usize - 1) < r {
             edge(square(i.wrapping_sub(1), j - 1), square(i, j - 1));
         }
-        if j + 1 < cols && rank[p as usize + 1] < r {
+        if j + 1 < cols && rank(p as usize + 1) < r {
             edge(square(i.wrapping_sub(1), j), square(i, j));
         }
-        if i > 0 && rank[p as usize - cols] < r {
+        if i > 0 && rank(p as usize - cols) < r {
             edge(square(i - 1, j.wrapping_sub(1)), square(i - 1, j));
         }
-        if i + 1 < rows && rank[p as usize + cols] < r {
+        if i + 1 < rows && rank(p as usize + cols) < r {
             edge(square(i, j.wrapping_sub(1)), square(i, j));
         }
     }
 }
 
 /// 2-D T-construction (a 1-D image is one row): the pixels are the top cells.
-fn t2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
+fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     let n = rows * cols;
-    let mut f = Forest::new(n + 1);
     // dimension 0: pixels sharing a vertex
     for (r, &p) in order.iter().enumerate() {
         let r = r as u32;
-        f.make(p, r);
         let (i, j) = (p as usize / cols, p as usize % cols);
         for a in i.saturating_sub(1)..(i + 2).min(rows) {
             for b in j.saturating_sub(1)..(j + 2).min(cols) {
                 let q = a * cols + b;
-                if rank[q] < r {
-                    if let Some(young) = f.union(p, q as u32, true) {
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
                         out.push(0, young, Some(r));
                     }
                 }
@@ -280,6 +308,8 @@ fn t2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
         }
     }
     // dimension 1 on the dual: pixels sharing an edge, the border's edges to the outside
+    let rank = |q: usize| pix.nodes[q][1];
+    let mut f = Forest::new(n + 1);
     let outside = n as u32;
     f.make(outside, u32::MAX);
     for (r, &p) in order.iter().enumerate().rev() {
@@ -303,7 +333,7 @@ fn t2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
         .into_iter()
         .flatten()
         {
-            if rank[q] > r {
+            if rank(q) > r {
                 edge(q as u32);
             }
         }
@@ -312,13 +342,13 @@ fn t2(rows: usize, cols: usize, order: &[u32], rank: &[u32], out: &mut Out) {
 
 /// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
 /// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
-fn v3(shape: [usize; 3], order: &[u32], rank: &[u32], field: Zp, out: &mut Out) {
+fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
     let n = shape[0] * shape[1] * shape[2];
     let stride = [shape[1] * shape[2], shape[2], 1];
     let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
     // the 3 × 3 × 3 block around a pixel: bit `9(dz+1) + 3(dy+1) + (dx+1)` set when the
     // neighbour exists and comes no later than rank `r`
-    let early_mask = |p: usize, c: [usize; 3], r: u32| -> u32 {
+    let early_mask = |rank: &[u32], p: usize, c: [usize; 3], r: u32| -> u32 {
         let mut m = 0u32;
         for dz in 0..3usize {
             let z = (c[0] + dz).wrapping_sub(1);
@@ -379,24 +409,22 @@ fn v3(shape: [usize; 3], order: &[u32], rank: &[u32], field: Zp, out: &mut Out) 
     };
 
     // dimension 0
-    let mut f = Forest::new(n + 1);
     for (r, &p) in order.iter().enumerate() {
         let r = r as u32;
-        f.make(p, r);
         let c = coords(p as usize);
         for a in 0..3 {
             if c[a] > 0 {
                 let q = p as usize - stride[a];
-                if rank[q] < r {
-                    if let Some(young) = f.union(p, q as u32, true) {
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
                         out.push(0, young, Some(r));
                     }
                 }
             }
             if c[a] + 1 < shape[a] {
                 let q = p as usize + stride[a];
-                if rank[q] < r {
-                    if let Some(young) = f.union(p, q as u32, true) {
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
                         out.push(0, young, Some(r));
                     }
                 }
@@ -406,6 +434,9 @@ fn v3(shape: [usize; 3], order: &[u32], rank: &[u32], field: Zp, out: &mut Out) 
 
     // dimension 2 on the dual: cubes by their lower corner, the outside node `n`; marks the
     // positive 2-cells
+    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
+    drop(pix);
+    let mut f = Forest::new(n + 1);
     let outside = n as u32;
     f.make(outside, u32::MAX);
     let mut positive = vec![0u64; (3 * n).div_ceil(64)];
@@ -420,7 +451,7 @@ fn v3(shape: [usize; 3], order: &[u32], rank: &[u32], field: Zp, out: &mut Out) 
     for (r, &p) in order.iter().enumerate().rev() {
         let r = r as u32;
         let c = coords(p as usize);
-        let mask = early_mask(p as usize, c, r);
+        let mask = early_mask(&rank, p as usize, c, r);
         for corner in 0..8usize {
             let d = [(corner >> 2) & 1, (corner >> 1) & 1, corner & 1];
             if (0..3).any(|a| d[a] > c[a] || c[a] - d[a] + 1 >= shape[a]) {
@@ -481,7 +512,7 @@ fn v3(shape: [usize; 3], order: &[u32], rank: &[u32], field: Zp, out: &mut Out) 
     for (r, &p) in order.iter().enumerate() {
         let r = r as u32;
         let c = coords(p as usize);
-        let mask = early_mask(p as usize, c, r);
+        let mask = early_mask(&rank, p as usize, c, r);
         faces_at(p as usize, c, mask, &mut list);
         for &(id, _, _) in &list {
             if positive[id as usize / 64] >> (id % 64) & 1 == 1 {
