@@ -1,5 +1,6 @@
 //! `gmap persistence`: the command's JSON equals GUDHI's recorded diagram of a sample image,
-//! a valued `.facets` file is read, a composite field is refused.
+//! a valued `.facets` file is read, a composite field is refused, pictures are written as
+//! SVG and PNG.
 
 use std::process::Command;
 
@@ -48,4 +49,66 @@ fn valued_facets_and_refusals() {
     let out = gmap(&["persistence", f.to_str().unwrap(), "--field", "4"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("Z/4"));
+}
+
+/// Decodes a PNG file: (width, height, RGB bytes).
+fn decode_png(path: &std::path::Path) -> (u32, u32, Vec<u8>) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!((info.color_type, info.bit_depth), (png::ColorType::Rgb, png::BitDepth::Eight));
+    buf.truncate(info.buffer_size());
+    (info.width, info.height, buf)
+}
+
+#[test]
+fn pictures_as_png() {
+    let dir = tempfile::tempdir().unwrap();
+    // a ring of 1s around a 5 in a 3 × 3 image: one loop, born at 1, dead at 5
+    let img = dir.path().join("ring.pgm");
+    std::fs::write(&img, "P2\n3 3\n255\n1 1 1\n1 5 1\n1 1 0\n").unwrap();
+    let (plot, bars, cycle, svg) =
+        (dir.path().join("d.png"), dir.path().join("b.png"), dir.path().join("c.png"), dir.path().join("c.svg"));
+    let out = gmap(&[
+        "persistence",
+        img.to_str().unwrap(),
+        "--cycles",
+        "--plot",
+        plot.to_str().unwrap(),
+        "--barcode",
+        bars.to_str().unwrap(),
+        "--draw-cycle",
+        "1",
+        cycle.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let got: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(got["pairs"], serde_json::json!([[0, 0.0, "inf"], [1, 1.0, 5.0]]));
+    // the diagram: 500 × 500, white in a corner, a blue (H1) disc somewhere and a red (H0) one
+    let (w, h, rgb) = decode_png(&plot);
+    assert_eq!((w, h), (500, 500));
+    let px = |x: u32, y: u32| [0, 1, 2].map(|k| rgb[3 * (y * w + x) as usize + k]);
+    assert_eq!(px(w - 1, h - 1), [255, 255, 255]);
+    let count = |c: [u8; 3]| (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).filter(|&(x, y)| px(x, y) == c).count();
+    assert!(count([31, 119, 180]) >= 20, "the H1 point is drawn");
+    assert!(count([214, 39, 40]) >= 20, "the H0 point is drawn");
+    // the barcode: 600 wide, two bars
+    let (bw, bh, brgb) = decode_png(&bars);
+    assert_eq!((bw, bh), (600, 88));
+    assert!(brgb.chunks(3).any(|c| c == [31, 119, 180]) && brgb.chunks(3).any(|c| c == [214, 39, 40]));
+    // the image at 20 pixels a pixel, the loop in red around the middle pixel
+    let (cw, ch, crgb) = decode_png(&cycle);
+    assert_eq!((cw, ch), (60, 60));
+    let at = |x: u32, y: u32| [0, 1, 2].map(|k| crgb[3 * (y * cw + x) as usize + k]);
+    assert_eq!(at(30, 20), [255, 0, 0]);
+    assert_eq!(at(30, 30), [255, 255, 255]);
+    // the same picture as SVG, and a refused extension
+    let out = gmap(&["persistence", img.to_str().unwrap(), "--cycles", "--draw-cycle", "1", svg.to_str().unwrap()]);
+    assert!(out.status.success());
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("stroke=\"red\""));
+    let out = gmap(&["persistence", img.to_str().unwrap(), "--plot", dir.path().join("d.gif").to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains(".png"));
 }

@@ -148,18 +148,53 @@ pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persis
     Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false })
 }
 
-/// Writes the diagram as an SVG picture to `out` (`.svg`); with `barcode`, the barcode.
-/// Other extensions are refused.
-pub fn plot_file(p: &Persistence, out: &Path, barcode: bool) -> Result<()> {
-    if extension(out) != "svg" {
-        return Err(Error::new(ErrorKind::Unsupported, "plots are written as .svg").with_path(out));
-    }
-    let svg = if barcode { plot::barcode_svg(&p.diagram, 600) } else { plot::diagram_svg(&p.diagram, 500) };
-    gmap_core::io::write_atomic(out, svg.as_bytes())
-        .map_err(|e| Error::from_source(ErrorKind::Write, &e).with_path(out))
+/// A picture format, by the output's extension.
+enum PictureFormat {
+    Svg,
+    Png,
 }
 
-/// Writes the 2-D image with the cycle of pair `k` drawn over it, as SVG.
+fn picture_format(out: &Path) -> Result<PictureFormat> {
+    match extension(out).as_str() {
+        "svg" => Ok(PictureFormat::Svg),
+        "png" => Ok(PictureFormat::Png),
+        _ => Err(Error::new(ErrorKind::Unsupported, "plots are written as .svg or .png").with_path(out)),
+    }
+}
+
+/// A raster as PNG bytes (8-bit RGB).
+pub fn png_bytes(r: &plot::Raster) -> Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    let mut enc = png::Encoder::new(&mut bytes, r.width, r.height);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut w = enc.write_header().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    w.write_image_data(&r.rgb).map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    w.finish().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    Ok(bytes)
+}
+
+fn write_picture(out: &Path, svg: impl FnOnce() -> String, raster: impl FnOnce() -> plot::Raster) -> Result<()> {
+    let bytes = match picture_format(out)? {
+        PictureFormat::Svg => svg().into_bytes(),
+        PictureFormat::Png => png_bytes(&raster()).map_err(|e| e.with_path(out))?,
+    };
+    gmap_core::io::write_atomic(out, &bytes).map_err(|e| Error::from_source(ErrorKind::Write, &e).with_path(out))
+}
+
+/// Writes the diagram as a picture to `out`, SVG or PNG by its extension (other
+/// extensions are refused); with `barcode`, the barcode. The PNG has the SVG's marks
+/// without its text.
+pub fn plot_file(p: &Persistence, out: &Path, barcode: bool) -> Result<()> {
+    if barcode {
+        write_picture(out, || plot::barcode_svg(&p.diagram, 600), || plot::barcode_raster(&p.diagram, 600))
+    } else {
+        write_picture(out, || plot::diagram_svg(&p.diagram, 500), || plot::diagram_raster(&p.diagram, 500))
+    }
+}
+
+/// Writes the 2-D image with the cycle of pair `k` drawn over it, SVG or PNG by the
+/// extension of `out`.
 pub fn plot_cycle_file(p: &Persistence, k: usize, out: &Path) -> Result<()> {
     let (rows, cols, values) =
         p.image.as_ref().ok_or_else(|| Error::new(ErrorKind::Usage, "cycles are drawn over 2-D images only"))?;
@@ -170,7 +205,9 @@ pub fn plot_cycle_file(p: &Persistence, k: usize, out: &Path) -> Result<()> {
         )
     })?;
     let scale = (800 / (*rows).max(*cols)).clamp(1, 20) as u32;
-    let svg = plot::image_with_chain_svg(*rows, *cols, values, chain, p.vertex_centred, scale);
-    gmap_core::io::write_atomic(out, svg.as_bytes())
-        .map_err(|e| Error::from_source(ErrorKind::Write, &e).with_path(out))
+    write_picture(
+        out,
+        || plot::image_with_chain_svg(*rows, *cols, values, chain, p.vertex_centred, scale),
+        || plot::image_with_chain_raster(*rows, *cols, values, chain, p.vertex_centred, scale),
+    )
 }

@@ -41,14 +41,15 @@ pub(crate) struct PersistenceArgs {
     /// print one JSON object: {"field", "pairs": [[dim, birth, death], …], "cycles"}
     #[arg(long)]
     json: bool,
-    /// draw the persistence diagram to OUT.svg
+    /// draw the persistence diagram to OUT.svg or OUT.png
     #[arg(long)]
     plot: Option<PathBuf>,
-    /// draw the barcode to OUT.svg
+    /// draw the barcode to OUT.svg or OUT.png
     #[arg(long)]
     barcode: Option<PathBuf>,
-    /// with --cycles, on a 2-D image: draw the image with pair K's cycle to OUT.svg
-    #[arg(long, num_args = 2, value_names = ["K", "OUT"])]
+    /// with --cycles, on a 2-D image: draw the image with pair K's cycle (K counts the
+    /// printed pairs from 0) to OUT.svg or OUT.png
+    #[arg(long, num_args = 2, value_names = ["K", "OUT"], alias = "plot-cycle")]
     draw_cycle: Option<Vec<String>>,
 }
 

@@ -199,7 +199,12 @@ pub(crate) fn unkey(k: u64) -> f64 {
 /// dimension in filtration order.
 pub struct CubicalFiltration {
     grid: Grid,
-    vals: Vec<f64>,
+    /// the image's shape and values (times `sign`)
+    shape: Vec<usize>,
+    pixels: Vec<f64>,
+    construction: Construction,
+    /// every grid cell's value (times `sign`), made when the general route needs it
+    vals: std::sync::OnceLock<Vec<f64>>,
     /// per dimension, the cells in filtration order with their keys
     order: Vec<Option<Vec<(u64, u32)>>>,
     rank: Vec<u32>,
@@ -232,9 +237,17 @@ impl CubicalFiltration {
             .filter(|g| g.len < u32::MAX as usize)
             .ok_or_else(|| PersistenceError::TooLarge(format!("a grid of shape {shape:?}")))?;
         let sign = if opts.superlevel { -1.0 } else { 1.0 };
-        let vals = cell_values(&grid, values, opts.construction, sign);
         let d = grid.d();
-        Ok(CubicalFiltration { grid, vals, order: vec![None; d + 1], rank: Vec::new(), sign })
+        Ok(CubicalFiltration {
+            grid,
+            shape: shape.to_vec(),
+            pixels: values.iter().map(|&v| sign * v).collect(),
+            construction: opts.construction,
+            vals: std::sync::OnceLock::new(),
+            order: vec![None; d + 1],
+            rank: Vec::new(),
+            sign,
+        })
     }
 
     /// Points of the doubled grid per axis.
@@ -244,14 +257,19 @@ impl CubicalFiltration {
 
     /// The value of a grid cell in the input's sign.
     pub fn value(&self, g: usize) -> f64 {
-        self.sign * self.vals[g]
+        self.sign * self.vals()[g]
+    }
+
+    /// Every grid cell's value (times `sign`).
+    fn vals(&self) -> &[f64] {
+        self.vals.get_or_init(|| cell_values(&self.grid, &self.pixels, self.construction, 1.0))
     }
 
     /// Builds the sorted list of k-cells (and their ranks).
     fn ensure(&mut self, k: usize, with_rank: bool) {
         if self.order[k].is_none() {
             let mut keys: Vec<(u64, u32)> =
-                (0..self.grid.len).filter(|&g| self.grid.dim(g) == k).map(|g| (key(self.vals[g]), g as u32)).collect();
+                (0..self.grid.len).filter(|&g| self.grid.dim(g) == k).map(|g| (key(self.vals()[g]), g as u32)).collect();
             keys.sort_unstable();
             self.order[k] = Some(keys);
         }
@@ -278,6 +296,9 @@ impl CubicalFiltration {
 
     /// The persistence diagram (and cycles, if `opts.cycles`) of this filtration.
     pub fn diagram(mut self, opts: &CubicalOptions) -> Result<Diagram, PersistenceError> {
+        if let Some(d) = super::lower_star::diagram(&self.shape, &self.pixels, self.construction, self.sign, opts) {
+            return d;
+        }
         let field = check_field(opts.field)?;
         let d = self.grid.d();
         let mut diagram = Diagram::new(opts.field);
@@ -327,14 +348,14 @@ impl CubicalFiltration {
                     let cycle = opts.cycles.then(|| {
                         r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize].1 as usize), c)).collect()
                     });
-                    diagram.push(k - 1, self.vals[b], self.vals[e], self.sign, cycle);
+                    diagram.push(k - 1, self.vals()[b], self.vals()[e], self.sign, cycle);
                 }
                 for &col in &r.zero {
                     let g = hi[col as usize].1 as usize;
                     let cycle = opts
                         .cycles
                         .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c)).collect());
-                    diagram.push(k, self.vals[g], f64::INFINITY, self.sign, cycle);
+                    diagram.push(k, self.vals()[g], f64::INFINITY, self.sign, cycle);
                 }
                 claimed_below = Some(r.claimed);
             }
@@ -346,7 +367,7 @@ impl CubicalFiltration {
             for (i, &(_, g)) in self.list(0).iter().enumerate() {
                 if !claimed.get(i).copied().unwrap_or(false) {
                     let cycle = Some(vec![(self.name(g as usize), 1)]);
-                    diagram.push(0, self.vals[g as usize], f64::INFINITY, self.sign, cycle);
+                    diagram.push(0, self.vals()[g as usize], f64::INFINITY, self.sign, cycle);
                 }
             }
         } else {
@@ -357,7 +378,7 @@ impl CubicalFiltration {
                 let claimed = claimed_below.unwrap_or_default();
                 for (i, &(_, g)) in self.list(1).iter().enumerate() {
                     if positive[i] && !claimed.get(i).copied().unwrap_or(false) {
-                        diagram.push(1, self.vals[g as usize], f64::INFINITY, self.sign, None);
+                        diagram.push(1, self.vals()[g as usize], f64::INFINITY, self.sign, None);
                     }
                 }
             }
@@ -375,7 +396,7 @@ impl CubicalFiltration {
         let mut uf = Elder::new(
             (0..grid.len)
                 .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 0))
-                .map(|g| (!key(self.vals[g]), !(g as u32))),
+                .map(|g| (!key(self.vals()[g]), !(g as u32))),
         );
         let edges = if d >= 1 { self.list(1) } else { &[] };
         let mut positive = vec![false; edges.len()];
@@ -407,7 +428,7 @@ impl CubicalFiltration {
         let mut uf = Elder::new(
             (0..grid.len)
                 .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 1))
-                .map(|g| (key(self.vals[g]), g as u32))
+                .map(|g| (key(self.vals()[g]), g as u32))
                 .chain(std::iter::once((u64::MAX, u32::MAX))),
         );
         let outside = (uf.nodes.len() - 1) as u32;

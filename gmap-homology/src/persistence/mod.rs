@@ -26,6 +26,7 @@
 pub mod cubical;
 mod diagram;
 pub mod filtered;
+mod lower_star;
 pub mod plot;
 pub(crate) mod reduce;
 

@@ -54,7 +54,7 @@ impl Zp {
     }
 
     #[inline]
-    fn add(self, a: u32, b: u32) -> u32 {
+    pub(crate) fn add(self, a: u32, b: u32) -> u32 {
         if self.p == 2 {
             a ^ b
         } else {

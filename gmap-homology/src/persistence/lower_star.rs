@@ -1,0 +1,574 @@
+//! Persistence of 1- to 3-D images straight from the pixels, with no cell grid.
+//!
+//! Both constructions are driven by one order on the pixels, (value, index), found by a
+//! radix sort of the values' order-preserving bit patterns (passes whose byte is the same
+//! for every pixel are skipped, so an 8-bit image costs one pass):
+//!
+//! * **V-construction**: a cell's value is its latest vertex's; cells are ordered by (rank
+//!   of their latest vertex, dimension, id), a total order refining the filtration (the
+//!   lower star of each pixel, pixel after pixel).
+//! * **T-construction**: a cell's value is its earliest top cell's; cells are ordered by
+//!   (rank of that top cell, dimension, id).
+//!
+//! The diagram does not depend on how ties of value are broken, so these orders give
+//! GUDHI's pairs. Then:
+//!
+//! * **dimension 0** by union-find on the pixels in rank order (V: 2d neighbours; T: the
+//!   3^d - 1 pixels sharing a vertex), each component rooted at its oldest pixel (elder
+//!   rule), paths halved; the nodes are indexed by pixel, so the first step of every find
+//!   is a neighbour of the pixel at hand (cache-local), and a node is 8 bytes (parent,
+//!   birth rank);
+//! * **dimension d-1** by union-find on the dual in reverse rank order (Alexander
+//!   duality, CubicalRipser's `JoinPairs`): top cells and the outside are the nodes, a
+//!   (d-1)-cell joins its one or two cofaces, and a join of two components is a pair whose
+//!   death is the younger component's latest top cell;
+//! * **dimension 1 of a 3-D image** (V) by column reduction of the 2-cells over `Z/p`,
+//!   skipping the 2-cells the dual pass found positive (clearing): columns of four entries
+//!   computed from the ranks, keys `(rank << 32) | id`, an owner per edge, and only the
+//!   columns changed by a reduction stored. Most columns are apparent pairs and cost one
+//!   lookup.
+//!
+//! Cost: the sort `O(N)` passes, then `O(N α(N))` for the union-finds; the reduction is
+//! near-linear on images. Memory: the ranks (4 bytes per pixel), the values in rank order
+//! (8), the union-find (8), and in 3-D an owner per edge (12) and a bit per 2-cell.
+//!
+//! Periodic images, cycles, T-construction in 3-D and images of dimension 4 or more go
+//! through the general route of [`super::cubical`].
+
+use rustc_hash::FxHashMap;
+
+use super::cubical::{check_field, key, Construction, CubicalOptions};
+use super::reduce::Zp;
+use super::{Diagram, PersistenceError};
+
+/// The diagram by the pixel route, or `None` where it does not apply.
+pub(crate) fn diagram(
+    shape: &[usize],
+    pixels: &[f64],
+    construction: Construction,
+    sign: f64,
+    opts: &CubicalOptions,
+) -> Option<Result<Diagram, PersistenceError>> {
+    let d = shape.len();
+    let n = pixels.len();
+    if opts.periodic || opts.cycles || d == 0 || d > 3 || (d == 3 && construction == Construction::T) {
+        return None;
+    }
+    if n.checked_mul(3).is_none_or(|m| m >= u32::MAX as usize) {
+        return None;
+    }
+    let field = match check_field(opts.field) {
+        Ok(f) => f,
+        Err(e) => return Some(Err(e)),
+    };
+    let order = sort_order(pixels);
+    // one node per pixel, [parent, rank]: the rank of a neighbour is read from the cache
+    // line its node is on
+    let mut pix = Forest::new(n);
+    let mut sv = Vec::with_capacity(n);
+    for (r, &p) in order.iter().enumerate() {
+        pix.nodes[p as usize] = [p, r as u32];
+        sv.push(pixels[p as usize]);
+    }
+    let mut out = Out { diagram: Diagram::new(opts.field), sv: &sv, sign };
+    let (rows, cols) = match d {
+        1 => (1, shape[0]),
+        _ => (shape[d - 2], shape[d - 1]),
+    };
+    match (d, construction) {
+        (3, _) => v3([shape[0], rows, cols], &order, pix, field, &mut out),
+        (_, Construction::V) => v2(rows, cols, &order, pix, &mut out),
+        (_, Construction::T) => t2(rows, cols, &order, pix, &mut out),
+    }
+    out.push(0, 0, None);
+    let mut diagram = out.diagram;
+    diagram.finish();
+    Some(Ok(diagram))
+}
+
+/// The diagram being filled, with the values in rank order.
+struct Out<'a> {
+    diagram: Diagram,
+    sv: &'a [f64],
+    sign: f64,
+}
+
+impl Out<'_> {
+    /// A pair between ranks (`None`: essential).
+    #[inline]
+    fn push(&mut self, dim: usize, birth: u32, death: Option<u32>) {
+        let b = self.sv[birth as usize];
+        let e = death.map_or(f64::INFINITY, |r| self.sv[r as usize]);
+        if b != e {
+            self.diagram.push(dim, b, e, self.sign, None);
+        }
+    }
+}
+
+/// The pixels in order of (value, index): a stable LSD radix sort of the values' keys,
+/// 11 bits a pass.
+fn sort_order(values: &[f64]) -> Vec<u32> {
+    let n = values.len();
+    let mut keys: Vec<u64> = values.iter().map(|&v| key(v)).collect();
+    let mut idx: Vec<u32> = (0..n as u32).collect();
+    const BITS: usize = 11;
+    const MASK: u64 = (1 << BITS) - 1;
+    let mut counts = vec![[0usize; 1 << BITS]; 64usize.div_ceil(BITS)];
+    for &k in &keys {
+        for (b, c) in counts.iter_mut().enumerate() {
+            c[((k >> (BITS * b)) & MASK) as usize] += 1;
+        }
+    }
+    let (mut keys2, mut idx2) = (vec![0u64; n], vec![0u32; n]);
+    for (b, c) in counts.iter().enumerate() {
+        if c.contains(&n) {
+            continue; // every key has these bits
+        }
+        let mut pos = [0usize; 1 << BITS];
+        let mut s = 0;
+        for (p, &x) in pos.iter_mut().zip(c) {
+            *p = s;
+            s += x;
+        }
+        for (&k, &i) in keys.iter().zip(&idx) {
+            let slot = &mut pos[((k >> (BITS * b)) & MASK) as usize];
+            keys2[*slot] = k;
+            idx2[*slot] = i;
+            *slot += 1;
+        }
+        std::mem::swap(&mut keys, &mut keys2);
+        std::mem::swap(&mut idx, &mut idx2);
+    }
+    idx
+}
+
+/// Union-find nodes `[parent, time]`: the root's time names its component (the elder rule
+/// compares times), paths are halved.
+struct Forest {
+    nodes: Vec<[u32; 2]>,
+}
+
+impl Forest {
+    fn new(n: usize) -> Self {
+        Forest { nodes: vec![[0, 0]; n] }
+    }
+
+    #[inline]
+    fn make(&mut self, x: u32, time: u32) {
+        self.nodes[x as usize] = [x, time];
+    }
+
+    #[inline]
+    fn find(&mut self, mut x: u32) -> u32 {
+        loop {
+            let p = self.nodes[x as usize][0];
+            if p == x {
+                return x;
+            }
+            let g = self.nodes[p as usize][0];
+            if g == p {
+                return p;
+            }
+            self.nodes[x as usize][0] = g;
+            x = g;
+        }
+    }
+
+    /// Joins the components of `x` and `y`; the one whose root time is `keep`-er (smaller
+    /// with `keep_small`) stays root. Returns the lost root's time, `None` if already one.
+    #[inline]
+    fn union(&mut self, x: u32, y: u32, keep_small: bool) -> Option<u32> {
+        let (a, b) = (self.find(x), self.find(y));
+        if a == b {
+            return None;
+        }
+        let (ta, tb) = (self.nodes[a as usize][1], self.nodes[b as usize][1]);
+        let a_stays = if keep_small { ta < tb } else { ta > tb };
+        let (stay, lose, t) = if a_stays { (a, b, tb) } else { (b, a, ta) };
+        self.nodes[lose as usize][0] = stay;
+        Some(t)
+    }
+}
+
+/// How many pixels ahead of the sweep their rows are read in (see [`touch_ahead`]).
+const AHEAD: usize = 12;
+
+/// Reads the node of the pixel `AHEAD` steps after `r` in the sweep's direction (`dir` 1:
+/// forward, 0: `r` is that pixel's step already) and the nodes of the rows above and below:
+/// the loads start early and overlap with the current step's work, so the step that needs
+/// them finds them in cache (the sweep visits pixels in value order, all over the image).
+#[inline]
+fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: usize) {
+    let Some(&q) = order.get(r + dir * AHEAD) else { return };
+    let q = q as usize;
+    let mut x = nodes[q][1];
+    if q >= cols {
+        x ^= nodes[q - cols][1];
+    }
+    if q + cols < nodes.len() {
+        x ^= nodes[q + cols][1];
+    }
+    std::hint::black_box(x);
+}
+
+/// 2-D V-construction (a 1-D image is one row).
+fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
+    let n = rows * cols;
+    // dimension 0: each pixel's edges to earlier neighbours
+    for (r, &p) in order.iter().enumerate() {
+        touch_ahead(&pix.nodes, order, r, cols, 1);
+        let r = r as u32;
+        let (i, j) = (p as usize / cols, p as usize % cols);
+        let mut link = |q: usize| {
+            if pix.nodes[q][1] < r {
+                if let Some(young) = pix.union(p, q as u32, true) {
+                    out.push(0, young, Some(r));
+                }
+            }
+        };
+        if j > 0 {
+            link(p as usize - 1);
+        }
+        if j + 1 < cols {
+            link(p as usize + 1);
+        }
+        if i > 0 {
+            link(p as usize - cols);
+        }
+        if i + 1 < rows {
+            link(p as usize + cols);
+        }
+    }
+    if rows < 2 || cols < 2 {
+        return;
+    }
+    // dimension 1 on the dual: squares by their lower-left pixel, the outside node `n`
+    let rank = |q: usize| pix.nodes[q][1];
+    let mut f = Forest::new(n + 1);
+    let outside = n as u32;
+    f.make(outside, u32::MAX);
+    let square = |a: usize, b: usize| -> u32 {
+        if a < rows - 1 && b < cols - 1 {
+            (a * cols + b) as u32
+        } else {
+            outside
+        }
+    };
+    for (r, &p) in order.iter().enumerate().rev() {
+        if r >= AHEAD {
+            touch_ahead(&pix.nodes, order, r - AHEAD, cols, 0);
+        }
+        let r = r as u32;
+        let (i, j) = (p as usize / cols, p as usize % cols);
+        let early = |a: usize, b: usize| rank(a * cols + b) <= r;
+        // the squares whose latest corner is p
+        for (a, b) in [(i.wrapping_sub(1), j.wrapping_sub(1)), (i.wrapping_sub(1), j), (i, j.wrapping_sub(1)), (i, j)] {
+            if a < rows - 1 && b < cols - 1 && early(a, b) && early(a + 1, b) && early(a, b + 1) && early(a + 1, b + 1)
+            {
+                f.make((a * cols + b) as u32, r);
+            }
+        }
+        // the edges whose latest end is p join their two cofaces
+        let mut edge = |x: u32, y: u32| {
+            if let Some(young) = f.union(x, y, false) {
+                out.push(1, r, Some(young));
+            }
+        };
+        if j > 0 && rank(p as usize - 1) < r {
+            edge(square(i.wrapping_sub(1), j - 1), square(i, j - 1));
+        }
+        if j + 1 < cols && rank(p as usize + 1) < r {
+            edge(square(i.wrapping_sub(1), j), square(i, j));
+        }
+        if i > 0 && rank(p as usize - cols) < r {
+            edge(square(i - 1, j.wrapping_sub(1)), square(i - 1, j));
+        }
+        if i + 1 < rows && rank(p as usize + cols) < r {
+            edge(square(i, j.wrapping_sub(1)), square(i, j));
+        }
+    }
+}
+
+/// 2-D T-construction (a 1-D image is one row): the pixels are the top cells.
+fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
+    let n = rows * cols;
+    // dimension 0: pixels sharing a vertex
+    for (r, &p) in order.iter().enumerate() {
+        let r = r as u32;
+        let (i, j) = (p as usize / cols, p as usize % cols);
+        for a in i.saturating_sub(1)..(i + 2).min(rows) {
+            for b in j.saturating_sub(1)..(j + 2).min(cols) {
+                let q = a * cols + b;
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
+                        out.push(0, young, Some(r));
+                    }
+                }
+            }
+        }
+    }
+    // dimension 1 on the dual: pixels sharing an edge, the border's edges to the outside
+    let rank = |q: usize| pix.nodes[q][1];
+    let mut f = Forest::new(n + 1);
+    let outside = n as u32;
+    f.make(outside, u32::MAX);
+    for (r, &p) in order.iter().enumerate().rev() {
+        let r = r as u32;
+        f.make(p, r);
+        let (i, j) = (p as usize / cols, p as usize % cols);
+        let mut edge = |y: u32| {
+            if let Some(young) = f.union(p, y, false) {
+                out.push(1, r, Some(young));
+            }
+        };
+        if i == 0 || j == 0 || i + 1 == rows || j + 1 == cols {
+            edge(outside);
+        }
+        for q in [
+            (j > 0).then(|| p as usize - 1),
+            (j + 1 < cols).then(|| p as usize + 1),
+            (i > 0).then(|| p as usize - cols),
+            (i + 1 < rows).then(|| p as usize + cols),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            if rank(q) > r {
+                edge(q as u32);
+            }
+        }
+    }
+}
+
+/// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
+/// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
+fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
+    let n = shape[0] * shape[1] * shape[2];
+    let stride = [shape[1] * shape[2], shape[2], 1];
+    let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
+    // the 3 × 3 × 3 block around a pixel: bit `9(dz+1) + 3(dy+1) + (dx+1)` set when the
+    // neighbour exists and comes no later than rank `r`
+    let early_mask = |rank: &[u32], p: usize, c: [usize; 3], r: u32| -> u32 {
+        let mut m = 0u32;
+        for dz in 0..3usize {
+            let z = (c[0] + dz).wrapping_sub(1);
+            if z >= shape[0] {
+                continue;
+            }
+            for dy in 0..3usize {
+                let y = (c[1] + dy).wrapping_sub(1);
+                if y >= shape[1] {
+                    continue;
+                }
+                for dx in 0..3usize {
+                    let x = (c[2] + dx).wrapping_sub(1);
+                    if x >= shape[2] {
+                        continue;
+                    }
+                    let q = p + dz * stride[0] + dy * stride[1] + dx - stride[0] - stride[1] - 1;
+                    if rank[q] <= r {
+                        m |= 1 << (9 * dz + 3 * dy + dx);
+                    }
+                }
+            }
+        }
+        m
+    };
+    let bit = |d: [isize; 3]| 1u32 << ((9 * (d[0] + 1) + 3 * (d[1] + 1) + d[2] + 1) as u32);
+    // the 2-cells whose latest corner is p, as (id, lower corner, normal axis), by id
+    let faces_at = |p: usize, c: [usize; 3], mask: u32, list: &mut Vec<(u32, usize, usize)>| {
+        list.clear();
+        for normal in 0..3 {
+            let (a, b) = match normal {
+                0 => (1, 2),
+                1 => (0, 2),
+                _ => (0, 1),
+            };
+            for (da, db) in [(0isize, 0isize), (1, 0), (0, 1), (1, 1)] {
+                // the lower corner is p - da e_a - db e_b
+                if (da == 1 && c[a] == 0) || (db == 1 && c[b] == 0) {
+                    continue;
+                }
+                let mut corners_ok = true;
+                for (ea, eb) in [(0isize, 0isize), (1, 0), (0, 1), (1, 1)] {
+                    let mut off = [0isize; 3];
+                    off[a] = ea - da;
+                    off[b] = eb - db;
+                    if mask & bit(off) == 0 {
+                        corners_ok = false;
+                        break;
+                    }
+                }
+                if corners_ok {
+                    let low = p - da as usize * stride[a] - db as usize * stride[b];
+                    list.push(((3 * low + normal) as u32, low, normal));
+                }
+            }
+        }
+        list.sort_unstable_by_key(|x| x.0);
+    };
+
+    // dimension 0
+    for (r, &p) in order.iter().enumerate() {
+        let r = r as u32;
+        let c = coords(p as usize);
+        for a in 0..3 {
+            if c[a] > 0 {
+                let q = p as usize - stride[a];
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
+                        out.push(0, young, Some(r));
+                    }
+                }
+            }
+            if c[a] + 1 < shape[a] {
+                let q = p as usize + stride[a];
+                if pix.nodes[q][1] < r {
+                    if let Some(young) = pix.union(p, q as u32, true) {
+                        out.push(0, young, Some(r));
+                    }
+                }
+            }
+        }
+    }
+
+    // dimension 2 on the dual: cubes by their lower corner, the outside node `n`; marks the
+    // positive 2-cells
+    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
+    drop(pix);
+    let mut f = Forest::new(n + 1);
+    let outside = n as u32;
+    f.make(outside, u32::MAX);
+    let mut positive = vec![0u64; (3 * n).div_ceil(64)];
+    let cube = |c: [usize; 3], low: usize| -> u32 {
+        if (0..3).all(|a| c[a] + 1 < shape[a]) {
+            low as u32
+        } else {
+            outside
+        }
+    };
+    let mut list = Vec::with_capacity(12);
+    for (r, &p) in order.iter().enumerate().rev() {
+        let r = r as u32;
+        let c = coords(p as usize);
+        let mask = early_mask(&rank, p as usize, c, r);
+        for corner in 0..8usize {
+            let d = [(corner >> 2) & 1, (corner >> 1) & 1, corner & 1];
+            if (0..3).any(|a| d[a] > c[a] || c[a] - d[a] + 1 >= shape[a]) {
+                continue;
+            }
+            let all = (0..8usize).all(|k| {
+                let e = [(k >> 2) & 1, (k >> 1) & 1, k & 1];
+                mask & bit([0, 1, 2].map(|a| e[a] as isize - d[a] as isize)) != 0
+            });
+            if all {
+                let low = p as usize - d[0] * stride[0] - d[1] * stride[1] - d[2];
+                f.make(low as u32, r);
+            }
+        }
+        faces_at(p as usize, c, mask, &mut list);
+        for &(id, low, normal) in list.iter().rev() {
+            let lc = coords(low);
+            let above = cube(lc, low);
+            let below = if lc[normal] > 0 {
+                let mut bc = lc;
+                bc[normal] -= 1;
+                cube(bc, low - stride[normal])
+            } else {
+                outside
+            };
+            if let Some(young) = f.union(above, below, false) {
+                positive[id as usize / 64] |= 1 << (id % 64);
+                out.push(2, r, Some(young));
+            }
+        }
+    }
+    drop(f);
+
+    // dimension 1: the negative 2-cells' columns, reduced
+    let edge_key = |low: usize, axis: usize| -> u64 {
+        let t = rank[low].max(rank[low + stride[axis]]);
+        ((t as u64) << 32) | (3 * low + axis) as u64
+    };
+    let minus = field.of(-1);
+    let boundary = |id: u32, col: &mut Vec<(u64, u32)>| {
+        let (low, normal) = (id as usize / 3, id as usize % 3);
+        let (a, b) = match normal {
+            0 => (1, 2),
+            1 => (0, 2),
+            _ => (0, 1),
+        };
+        col.clear();
+        col.push((edge_key(low, a), 1));
+        col.push((edge_key(low + stride[a], b), 1));
+        col.push((edge_key(low + stride[b], a), minus));
+        col.push((edge_key(low, b), minus));
+        col.sort_unstable_by_key(|e| e.0);
+    };
+    const FREE: u32 = u32::MAX;
+    let mut owner = vec![FREE; 3 * n];
+    let mut stored: FxHashMap<u32, Vec<(u64, u32)>> = FxHashMap::default();
+    let (mut col, mut other, mut scratch) = (Vec::new(), Vec::new(), Vec::new());
+    for (r, &p) in order.iter().enumerate() {
+        let r = r as u32;
+        let c = coords(p as usize);
+        let mask = early_mask(&rank, p as usize, c, r);
+        faces_at(p as usize, c, mask, &mut list);
+        for &(id, _, _) in &list {
+            if positive[id as usize / 64] >> (id % 64) & 1 == 1 {
+                continue;
+            }
+            boundary(id, &mut col);
+            let mut changed = false;
+            while let Some(&(pivot, coef)) = col.last() {
+                let e = (pivot & 0xffff_ffff) as usize;
+                let o = owner[e];
+                if o == FREE {
+                    owner[e] = id;
+                    if changed {
+                        stored.insert(id, col.clone());
+                    }
+                    out.push(1, (pivot >> 32) as u32, Some(r));
+                    break;
+                }
+                let pcol: &[(u64, u32)] = match stored.get(&o) {
+                    Some(s) => s,
+                    None => {
+                        boundary(o, &mut other);
+                        &other
+                    }
+                };
+                let pc = pcol.last().expect("a pivot column is not zero").1;
+                let fac = field.neg(field.mul(coef, field.inv(pc)));
+                axpy(field, &col, fac, pcol, &mut scratch);
+                std::mem::swap(&mut col, &mut scratch);
+                changed = true;
+            }
+        }
+    }
+}
+
+/// `out = a + f · b` on columns sorted by key, zeros dropped.
+fn axpy(field: Zp, a: &[(u64, u32)], f: u32, b: &[(u64, u32)], out: &mut Vec<(u64, u32)>) {
+    out.clear();
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        let (ka, kb) = (a[i].0, b[j].0);
+        if ka < kb {
+            out.push(a[i]);
+            i += 1;
+        } else if kb < ka {
+            out.push((kb, field.mul(f, b[j].1)));
+            j += 1;
+        } else {
+            let c = field.add(a[i].1, field.mul(f, b[j].1));
+            if c != 0 {
+                out.push((ka, c));
+            }
+            i += 1;
+            j += 1;
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend(b[j..].iter().map(|&(k, c)| (k, field.mul(f, c))));
+}
