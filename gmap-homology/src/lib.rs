@@ -71,7 +71,7 @@ pub mod engine;
 pub mod persistence;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
-pub use complex::{arch, cubical, cubical_pass, dot, ep, json, lar, simplices, tm};
+pub use complex::{arch, cubical, cubical_blocks, cubical_pass, dot, ep, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::CellularComplex;

@@ -2,6 +2,7 @@
 
 pub mod arch;
 pub mod cubical;
+pub mod cubical_blocks;
 pub mod cubical_pass;
 pub mod dot;
 pub mod ep;
@@ -10,3 +11,4 @@ pub mod lar;
 pub mod simplices;
 pub mod tm;
 mod unique_keys;
+mod wire;
