@@ -7,6 +7,7 @@
 //! The messages between ranks are byte strings: a length (u64), then chunks of at most
 //! 2^30 bytes (MPI counts are `int`).
 
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -120,7 +121,8 @@ fn main() -> ExitCode {
         }
         Ok(None) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e} (rank {} of {})", world.rank(), world.size());
+            // one write: the ranks' lines reach mpirun's stderr whole, not interleaved
+            let _ = std::io::stderr().write_all(format!("error: {e}\n").as_bytes());
             ExitCode::FAILURE
         }
     }

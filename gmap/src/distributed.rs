@@ -242,14 +242,14 @@ pub fn run_in_process(path: &Path, processes: usize, o: &DistributedOptions) -> 
 }
 
 /// Every process learns whether any failed: process 0 collects the outcomes and sends back
-/// the first failure's message (lowest rank), which every process returns; else each keeps
-/// its value.
+/// the first failure (lowest rank), which every process returns as `rank R: message`; else
+/// each keeps its value.
 pub fn agree<T>(t: &dyn Transport, mine: Result<T>) -> Result<T> {
     let word = match &mine {
         Ok(_) => Vec::new(),
         Err(e) => {
             let mut w = vec![kind_code(e.kind())];
-            w.extend(e.to_string().into_bytes());
+            w.extend(format!("rank {}: {e}", t.rank()).into_bytes());
             w
         }
     };
