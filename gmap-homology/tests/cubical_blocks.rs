@@ -8,16 +8,8 @@ use gmap_homology::cubical_pass::{block_pass, merge_blocks, BlockSummary};
 use gmap_homology::{homology_z, Homology};
 use proptest::prelude::*;
 
-/// `n` cubes, each present with probability `density` percent, from a seeded LCG.
-fn random_bits(n: usize, density: u64, seed: u64) -> Vec<u8> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        })
-        .collect()
-}
+mod common;
+use common::random_bits;
 
 fn whole(shape: &[usize], bits: &[u8]) -> Homology {
     homology_z(&cubical_complex(shape, bits, false).unwrap().chain).unwrap()

@@ -5,7 +5,7 @@
 //! Built only with `--features mpi` (needs Open MPI's `mpirun`).
 #![cfg(feature = "mpi")]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
 use gmap_ops::import::image::{Image, Order};
@@ -59,29 +59,22 @@ fn check(path: &Path) -> serde_json::Value {
     last
 }
 
-fn random_image(dir: &Path, name: &str, shape: &[usize], density: u64, seed: u64) -> PathBuf {
-    let mut s = seed;
-    let values: Vec<u8> = (0..shape.iter().product::<usize>())
-        .map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        })
-        .collect();
-    let path = dir.join(name);
-    Image::from_values(shape, Order::C, values).unwrap().write_npy(&path).unwrap();
-    path
+/// `benches/anchors/make_images.py ARGS…` (python3 with numpy) writes an image.
+fn make_image(args: &[&str]) {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../benches/anchors/make_images.py");
+    let made = Command::new("python3").arg(script).args(args).status().expect("python3 (with numpy) runs");
+    assert!(made.success(), "make_images.py {args:?}");
 }
 
 #[test]
 fn random_images_in_2_3_and_4_dimensions() {
     let dir = tempfile::tempdir().unwrap();
-    let shapes: [&[usize]; 4] = [&[60, 70], &[24, 20, 30], &[6, 5, 7, 8], &[8, 4, 4, 5]];
-    for (i, shape) in shapes.iter().enumerate() {
-        for density in [35, 60] {
-            let path =
-                random_image(dir.path(), &format!("r{i}-{density}.npy"), shape, density, 11 * i as u64 + density);
+    for (dim, size) in [("2", "64"), ("3", "24"), ("4", "7")] {
+        for (density, seed) in [("0.35", "3"), ("0.6", "4")] {
+            let path = dir.path().join(format!("r{dim}-{density}.npy"));
+            make_image(&["random", path.to_str().unwrap(), size, dim, density, seed]);
             let v = check(&path);
-            let route = if shape.len() == 3 { "one-pass blocks" } else { "slab complexes" };
+            let route = if dim == "3" { "one-pass blocks" } else { "slab complexes" };
             assert_eq!(v["mpi"]["route"], route);
         }
     }
@@ -91,12 +84,7 @@ fn random_images_in_2_3_and_4_dimensions() {
 fn the_structured_image() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("structured.npy");
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../benches/anchors/make_images.py");
-    let made = Command::new("python3")
-        .args([script, "structured", path.to_str().unwrap(), "256"])
-        .status()
-        .expect("python3 (with numpy) writes the structured image");
-    assert!(made.success());
+    make_image(&["structured", path.to_str().unwrap(), "256"]);
     let v = check(&path);
     // 5 shells, 7 solid tori, 6 balls
     assert_eq!(v["betti"], serde_json::json!([18, 7, 5, 0]));

@@ -193,16 +193,9 @@ pub fn run(t: &dyn Transport, path: &Path, o: &DistributedOptions) -> Result<Opt
     let rank = t.rank();
     let message = guarded(|| plan.block(&img, level, rank).map_err(|e| e.context(file.clone())));
     let (message, cells_sent) = agree(t, message)?;
-    let mine = RankReport {
-        rank,
-        layers: plan.ranges[rank].clone(),
-        seconds: start.elapsed().as_secs_f64(),
-        peak_rss: gmap_core::resources::peak_rss(),
-        bytes_sent: message.len() as u64,
-        cells_sent,
-    };
+    let figures = plan.figures(rank, start, &message, cells_sent);
     let messages = t.gather(message);
-    let figures = t.gather(mine.to_json().to_string().into_bytes());
+    let figures = t.gather(figures);
     drop(img);
     let done = match (messages, figures) {
         (Some(messages), Some(figures)) => {
@@ -227,15 +220,7 @@ pub fn run_in_process(path: &Path, processes: usize, o: &DistributedOptions) -> 
     for rank in 0..plan.ranges.len() {
         let t0 = Instant::now();
         let (m, cells_sent) = plan.block(&img, level, rank).map_err(|e| e.context(file.clone()))?;
-        let r = RankReport {
-            rank,
-            layers: plan.ranges[rank].clone(),
-            seconds: t0.elapsed().as_secs_f64(),
-            peak_rss: gmap_core::resources::peak_rss(),
-            bytes_sent: m.len() as u64,
-            cells_sent,
-        };
-        figures.push(r.to_json().to_string().into_bytes());
+        figures.push(plan.figures(rank, t0, &m, cells_sent));
         messages.push(m);
     }
     finish(&plan, &messages, &figures, start).map_err(|e| e.context(file))
@@ -316,6 +301,19 @@ impl Plan {
         }
         let route = if d == 3 { SlabRoute::OnePass } else { SlabRoute::Complex };
         Ok(Plan { shape, route, ranges: gmap_core::parallel::split_ranges(n, processes) })
+    }
+
+    /// Process `rank`'s [`RankReport`] as the bytes it sends: `message` made since `start`.
+    fn figures(&self, rank: usize, start: Instant, message: &[u8], cells_sent: Option<u64>) -> Vec<u8> {
+        let r = RankReport {
+            rank,
+            layers: self.ranges[rank].clone(),
+            seconds: start.elapsed().as_secs_f64(),
+            peak_rss: gmap_core::resources::peak_rss(),
+            bytes_sent: message.len() as u64,
+            cells_sent,
+        };
+        r.to_json().to_string().into_bytes()
     }
 
     /// Process `rank`'s message (its block's summary or its reduced slab) and, for a slab,
