@@ -137,8 +137,8 @@ pub(crate) fn prereduce_keeping<R: Euclid>(
     let c = nonzero_part(ring, c);
     let mut sweep = Sweep::new(ring, &c, nnz);
     // lowest dimension first: the faces of a kept cell are kept, hence critical already
-    for k in 0..counts.len() {
-        for j in 0..counts[k] {
+    for (k, &m) in counts.iter().enumerate() {
+        for j in 0..m {
             if keep(k, j) {
                 let x = sweep.off[k] + j;
                 sweep.make_cell_critical(k, x);
