@@ -6,6 +6,9 @@ use gmap_homology::cubical_pass::betti_one_pass;
 use gmap_homology::homology_z;
 use proptest::prelude::*;
 
+mod common;
+use common::random_bits;
+
 fn one_pass(shape: &[usize], bits: &[u8]) -> (Vec<u64>, i64) {
     let r = betti_one_pass(shape, |s, out| out.copy_from_slice(&bits[s..s + out.len()])).unwrap();
     (r.betti, r.euler_characteristic)
@@ -41,17 +44,6 @@ fn known_sets() {
     }
     assert_eq!(one_pass(&[7, 7, 7], &bits), (vec![2, 0, 2, 0], 4));
     assert_eq!(general(&[7, 7, 7], &bits), vec![2, 0, 2, 0]);
-}
-
-/// `n` cubes, each present with probability `density` percent, from a seeded LCG.
-fn random_bits(n: usize, density: u64, seed: u64) -> Vec<u8> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        })
-        .collect()
 }
 
 proptest! {

@@ -51,7 +51,9 @@
 //! * [`view()`] ([`mod@view`]) writes one self-contained HTML page to look at the input (darts,
 //!   cells coloured by a label, generators) in a browser;
 //! * [`simplify_if_safe`] reduces a map by removals and contractions where that keeps the
-//!   groups.
+//!   groups;
+//! * [`distributed`] cuts one image across processes (the `gmap-mpi` binary runs it on MPI
+//!   ranks): each reduces its slab, process 0 glues them.
 //!
 //! Errors are one type, [`Error`], with a kind ([`ErrorKind`]: parse, limit, precondition,
 //! usage, …) and the message the command line prints.
@@ -74,6 +76,7 @@ mod graph;
 pub mod bench;
 mod cell_name;
 pub mod demo;
+pub mod distributed;
 mod error;
 pub mod info;
 pub mod input;

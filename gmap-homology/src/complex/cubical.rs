@@ -45,6 +45,9 @@ pub enum CubicalError {
     /// The estimated memory is over the limit (`--max-memory`).
     #[error(transparent)]
     MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
+    /// A block's message (between processes) is malformed.
+    #[error("bad block message: {0}")]
+    BadMessage(String),
     /// Memory could not be had.
     #[error("cannot allocate {bytes} bytes for {what}")]
     OutOfMemory {
@@ -105,6 +108,8 @@ pub const MAX_GRID_POINTS: u64 = u32::MAX as u64 - 1;
 
 const PRESENT: u8 = 1;
 const QUEUED: u8 = 2;
+/// a present cell that is never collapsed (shared with another slab)
+const FROZEN: u8 = 4;
 
 /// The doubled grid of a box.
 struct Grid {
@@ -158,6 +163,42 @@ pub fn cubical_complex_with(
     periodic: bool,
     collapse: bool,
 ) -> Result<CubicalComplex, CubicalError> {
+    let (g, mut state) = closed_grid(shape, bits, periodic)?;
+    if collapse {
+        collapse_free_faces(&g, &mut state);
+    }
+    build(&g, &state)
+}
+
+/// The cubical complex of a slab of a larger box (`shape`: the slab's cubes, the last axis
+/// across the cut), after collapses of the free faces that are not on a shared side: the
+/// cells on the first hyperplane of the last axis (`shared_first`) and on its last one
+/// (`shared_last`) are shared with the slabs beside it and never collapsed, whatever their
+/// cofaces here. Not periodic.
+pub(crate) fn slab_complex(
+    shape: &[usize],
+    bits: &[u8],
+    shared_first: bool,
+    shared_last: bool,
+) -> Result<CubicalComplex, CubicalError> {
+    let (g, mut state) = closed_grid(shape, bits, false)?;
+    let d = shape.len();
+    let (s, last) = (g.stride[d - 1], g.n[d - 1] - 1);
+    for (shared, c) in [(shared_first, 0), (shared_last, last)] {
+        if shared {
+            for x in &mut state[c * s..(c + 1) * s] {
+                if *x & PRESENT != 0 {
+                    *x |= FROZEN;
+                }
+            }
+        }
+    }
+    collapse_free_faces(&g, &mut state);
+    build(&g, &state)
+}
+
+/// The doubled grid of a box and the closure of its set: [`PRESENT`] on every cell of it.
+fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Vec<u8>), CubicalError> {
     let d = shape.len();
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));
@@ -221,20 +262,17 @@ pub fn cubical_complex_with(
             }
         }
     }
-    if collapse {
-        collapse_free_faces(&g, &mut state);
-    }
-    build(&g, &state)
+    Ok((g, state))
 }
 
 /// Elementary collapses of free faces (a present cell with exactly one present coface),
-/// until none is left, on the grid itself. Each removal queues the faces of the two cells
-/// removed, whose cofaces changed.
+/// until none is left, on the grid itself; [`FROZEN`] cells are never collapsed. Each removal
+/// queues the faces of the two cells removed, whose cofaces changed.
 fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
     let d = g.n.len();
     let mut stack: Vec<u32> = Vec::new();
     for p in (0..g.len).rev() {
-        if state[p] & PRESENT != 0 {
+        if state[p] & (PRESENT | FROZEN) == PRESENT {
             state[p] |= QUEUED;
             stack.push(p as u32);
         }
@@ -243,7 +281,7 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
     while let Some(p) = stack.pop() {
         let p = p as usize;
         state[p] &= !QUEUED;
-        if state[p] & PRESENT == 0 {
+        if state[p] & (PRESENT | FROZEN) != PRESENT {
             continue;
         }
         let mut found = None;

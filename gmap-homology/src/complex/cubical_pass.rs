@@ -45,6 +45,7 @@ use std::ops::Range;
 use gmap_core::union_find::UnionFind;
 
 use super::cubical::CubicalError;
+use super::wire::{Reader, Writer};
 
 /// What [`betti_one_pass`] found.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -151,6 +152,69 @@ pub struct BlockSummary {
     pub set_last: Vec<u32>,
     /// the same for the complement
     pub complement_last: Vec<u32>,
+}
+
+impl BlockSummary {
+    /// The message a process sends of it: the label arrays as runs of equal labels (a
+    /// label holds along a run of cubes), so O(runs of the shared layers) bytes.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut w = Writer::default();
+        w.u64(self.layers.start as u64);
+        w.u64(self.layers.end as u64);
+        w.u64(self.set_finished);
+        w.u64(self.complement_finished);
+        w.i64(self.euler);
+        w.u64(self.cubes);
+        for v in [&self.set_first, &self.complement_first, &self.set_last, &self.complement_last] {
+            w.runs(v);
+        }
+        w.bytes
+    }
+
+    /// Reads back what [`BlockSummary::to_bytes`] wrote, for a box of `shape`; a malformed
+    /// message is an error ([`CubicalError::BadMessage`]), never a panic.
+    pub fn from_bytes(shape: &[usize], bytes: &[u8]) -> Result<BlockSummary, CubicalError> {
+        let pp = padded_layer(shape)?;
+        let mut r = Reader::new(bytes, "a block summary");
+        let start = r.usize(usize::MAX)?;
+        let end = r.usize(usize::MAX)?;
+        let (set_finished, complement_finished, euler, cubes) = (r.u64()?, r.u64()?, r.i64()?, r.u64()?);
+        let mut labels = Vec::with_capacity(4);
+        for _ in 0..4 {
+            let v = r.runs(pp)?;
+            if !v.is_empty() && v.len() != pp {
+                return Err(r.error(&format!("{} labels for a padded layer of {pp} cubes", v.len())));
+            }
+            labels.push(v);
+        }
+        r.finish()?;
+        let n2 = if shape.len() == 3 { shape[2] } else { 1 };
+        if start >= end || end > n2 {
+            return Err(r.error(&format!("layers {start}..{end} of a box of {n2}")));
+        }
+        // a block past the first has its first layer's labels, one before the last its last's
+        for (i, need) in [start > 0, start > 0, end < n2, end < n2].into_iter().enumerate() {
+            if labels[i].is_empty() == need {
+                return Err(r.error(&format!(
+                    "label array {i} is {} for layers {start}..{end}",
+                    if need { "missing" } else { "unexpected" }
+                )));
+            }
+        }
+        let [set_first, complement_first, set_last, complement_last]: [Vec<u32>; 4] =
+            labels.try_into().map_err(|_| r.error("four label arrays"))?;
+        Ok(BlockSummary {
+            layers: start..end,
+            set_finished,
+            complement_finished,
+            euler,
+            cubes,
+            set_first,
+            complement_first,
+            set_last,
+            complement_last,
+        })
+    }
 }
 
 /// One block of layers `layers`: block 0 starts at layer 0; a later block (`shared`) starts

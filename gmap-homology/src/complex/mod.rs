@@ -2,6 +2,7 @@
 
 pub mod arch;
 pub mod cubical;
+pub mod cubical_blocks;
 pub mod cubical_pass;
 pub mod cubical_slabs;
 pub mod dot;
@@ -12,3 +13,4 @@ pub mod lar;
 pub mod simplices;
 pub mod tm;
 mod unique_keys;
+mod wire;

@@ -188,6 +188,44 @@ pub(crate) fn survivors<R: Euclid>(ring: &R, c: &ChainComplex) -> Option<Survivo
     Some(s)
 }
 
+/// A piece of a complex reduced apart from the rest ([`reduce_keeping`]): the surviving
+/// cells and the boundary between them.
+#[derive(Clone, Debug)]
+pub struct Reduced {
+    /// the reduced piece (cells renumbered)
+    pub chain: ChainComplex,
+    /// `ids[k][j]`: the input's number of surviving k-cell `j`, increasing
+    pub ids: Vec<Vec<u32>>,
+}
+
+/// Reduces the cells of `c` that `keep(k, j)` does not name, over `Z`, by collapses and
+/// coreductions (the fill-free pass of [`homology_z`], without its setting aside of one
+/// vertex per component): the kept cells are never paired and their columns are kept,
+/// the others leave in pairs with a unit entry, and a stuck cell stays. The kept cells
+/// must be closed under faces, and no cell that is not kept may have a coface outside `c`:
+/// then `c` is a piece of a larger complex that shares only its kept cells with the rest,
+/// and the reduced piece glued back in its place gives the same homology (the eliminated
+/// pairs are pairs of the larger complex too). Where the fill of the kept rows overflows
+/// `i64`, the piece is returned as it is. O(entries + cells + fill in the kept rows).
+///
+/// ```
+/// use gmap_homology::homology::reduce_keeping;
+/// use gmap_homology::{ChainComplex, SparseMatrix};
+/// // a path v0 - v1 - v2 whose two ends are shared: one edge from end to end is left
+/// let d1 = SparseMatrix::try_from_triplets(3, 2, &[(0, 0, -1), (1, 0, 1), (1, 1, -1), (2, 1, 1)]).unwrap();
+/// let c = ChainComplex::try_new(vec![3, 2], vec![d1]).unwrap();
+/// let r = reduce_keeping(&c, |k, j| k == 0 && j != 1);
+/// assert_eq!(r.chain.counts(), &[2, 1]);
+/// assert_eq!(r.ids[0], vec![0, 2]);
+/// assert_eq!(r.chain.boundary(1).col(0).1.iter().sum::<i64>(), 0);
+/// ```
+pub fn reduce_keeping(c: &ChainComplex, keep: impl Fn(usize, usize) -> bool) -> Reduced {
+    match crate::engine::morse::prereduce_keeping(&Zi64, c, keep) {
+        Some(r) => Reduced { chain: r.chain, ids: r.ids },
+        None => Reduced { chain: c.clone(), ids: c.counts().iter().map(|&m| (0..m as u32).collect()).collect() },
+    }
+}
+
 /// Stage 1 proper, on the complex left by the fill-free pass.
 fn survivors_of<R: Ring>(ring: &R, c: &ChainComplex) -> Option<Survivors<R::E>> {
     let n1 = c.counts().len();

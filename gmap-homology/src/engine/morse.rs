@@ -116,6 +116,40 @@ pub(crate) fn prereduce<R: Euclid>(ring: &R, c: &ChainComplex, freeze: bool) -> 
     sweep.restricted(freeze)
 }
 
+/// Collapses and coreductions of the cells that `keep(k, j)` does not name, the named ones
+/// being critical from the start (never paired; they take the fill of the coreductions in
+/// their rows); a stuck pass makes the lowest alive cell critical and goes on. No vertex is
+/// set aside, so the output is an algebraic reduction of `c` itself: a piece of a larger
+/// complex whose kept cells are the ones it shares with the other pieces reduces to a piece
+/// that glues to the same homology. The kept cells must be closed under faces. `None` when
+/// the fill overflows. O(entries + cells + fill in the critical rows).
+pub(crate) fn prereduce_keeping<R: Euclid>(
+    ring: &R,
+    c: &ChainComplex,
+    keep: impl Fn(usize, usize) -> bool,
+) -> Option<Restricted> {
+    let counts = c.counts();
+    let total: usize = counts.iter().sum();
+    let nnz: usize = c.boundaries().iter().map(SparseMatrix::nnz).sum();
+    if total >= LIMIT || nnz >= LIMIT {
+        return None;
+    }
+    let c = nonzero_part(ring, c);
+    let mut sweep = Sweep::new(ring, &c, nnz);
+    // lowest dimension first: the faces of a kept cell are kept, hence critical already
+    for (k, &m) in counts.iter().enumerate() {
+        for j in 0..m {
+            if keep(k, j) {
+                let x = sweep.off[k] + j;
+                sweep.make_cell_critical(k, x);
+            }
+        }
+    }
+    sweep.queue_ready();
+    sweep.run(true)?;
+    sweep.restricted(true)
+}
+
 /// `c` without its entries that are zero in `ring` (`c` itself when it has none, always the
 /// case over `Z`). O(entries).
 fn nonzero_part<'c, R: Ring>(ring: &R, c: &'c ChainComplex) -> Cow<'c, ChainComplex> {
@@ -393,6 +427,14 @@ impl<'a, R: Euclid> Sweep<'a, R> {
             }
         }
         let Some((k, x)) = pick else { return false };
+        self.make_cell_critical(k, x);
+        true
+    }
+
+    /// Makes alive cell `x` (global number, of dimension `k`) critical. Its faces must be
+    /// paired, set aside or critical already; its alive cofaces take its entries into their
+    /// critical rows.
+    fn make_cell_critical(&mut self, k: usize, x: usize) {
         let mut at = self.cells[x].head;
         self.leave(x, State::Critical);
         self.kept.push(x as u32);
@@ -414,7 +456,6 @@ impl<'a, R: Euclid> Sweep<'a, R> {
                 }
             }
         }
-        true
     }
 
     /// The pair `(k, a, b, coreduction)` — `a` a (k-1)-cell, `b` a k-cell — that alive
