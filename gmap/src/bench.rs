@@ -105,12 +105,36 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
 /// The runs of every input (files, or folders of them): a file found in a folder that
 /// cannot be read is a run with route `read` and the reason; one named is an error.
 pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) -> Result<Vec<RouteRun>> {
+    bench_with(inputs, &BenchOptions { max_darts, max_cells: max_darts, periodic: false }, progress)
+}
+
+/// The limits and options of [`bench_with`] (`gmap bench`'s flags).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct BenchOptions {
+    /// refuse maps of more darts than this
+    pub max_darts: Option<u64>,
+    /// the direct route: refuse more faces than this (default: what the memory budget holds)
+    pub max_cells: Option<u64>,
+    /// cubical sets: identify the opposite faces of the box (the torus)
+    pub periodic: bool,
+}
+
+impl BenchOptions {
+    /// The options of `gmap bench`'s flags.
+    pub fn new(max_darts: Option<u64>, max_cells: Option<u64>, periodic: bool) -> Self {
+        BenchOptions { max_darts, max_cells, periodic }
+    }
+}
+
+/// [`bench`] with its options.
+pub fn bench_with(inputs: &[PathBuf], o: &BenchOptions, progress: &Progress) -> Result<Vec<RouteRun>> {
     let listed = expand_inputs(inputs)?;
     progress.steps(listed.len() as u64, "");
     let mut runs = Vec::new();
     for (f, in_folder) in &listed {
         progress.step(&f.display().to_string());
-        match bench_file(f, max_darts) {
+        match bench_file_with(f, o) {
             Ok(r) => runs.extend(r),
             Err(e) if *in_folder => runs.push(RouteRun {
                 input: f.display().to_string(),
@@ -128,20 +152,25 @@ pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) ->
 
 /// The runs of one file: reading it timed, then [`routes`].
 pub fn bench_file(path: &Path, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+    bench_file_with(path, &BenchOptions { max_darts, max_cells: max_darts, periodic: false })
+}
+
+fn bench_file_with(path: &Path, o: &BenchOptions) -> Result<Vec<RouteRun>> {
     let t = Instant::now();
-    let input = open_with(path, &OpenOptions::max_darts(max_darts))?;
+    let input = open_with(path, &OpenOptions::max_darts(o.max_darts))?;
     let read = ms(t);
-    routes_timed(&input, read, max_darts)
+    routes_timed(&input, read, o)
 }
 
 /// Every route of an input, run and timed (reading not included). A simplicial complex
 /// whose faces are over `max_darts` is an error (its direct route is where its groups come
 /// from); a route that does not apply is a run with the reason.
 pub fn routes(input: &Input, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
-    routes_timed(input, 0.0, max_darts)
+    routes_timed(input, 0.0, &BenchOptions { max_darts, max_cells: max_darts, periodic: false })
 }
 
-fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
+fn routes_timed(input: &Input, read: f64, o: &BenchOptions) -> Result<Vec<RouteRun>> {
+    let max_darts = o.max_darts;
     let name = input.path().display().to_string();
     let mut runs = Vec::new();
     let mut push = |route, cells: Vec<usize>, times, result| {
@@ -165,7 +194,7 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
             // default): it applies to any complex, so one without a G-map still gets its groups
             let mut times = Times { read, ..Times::default() };
             let t = Instant::now();
-            let fc = face_complex_within(sc, max_darts, &name, false)?;
+            let fc = face_complex_within(sc, o.max_cells, &name, false)?;
             times.border = Some(ms(t));
             let (cells, r) = reduce(&fc.chain, &mut times);
             push("direct", cells, times, r);
@@ -194,11 +223,12 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>) -> Result<Vec<
                 Input::Cubical(set) => set.get(),
                 _ => input_set.expect("an image's set"),
             };
-            // the cubical complex of the closure, after collapses of free faces
+            // the cubical complex of the closure (of the torus with `periodic`), after
+            // collapses of free faces
             map_read = read;
             let mut times = Times { read, ..Times::default() };
             let t = Instant::now();
-            let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
+            let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true);
             times.border = Some(ms(t));
             match c {
                 Ok(c) => {

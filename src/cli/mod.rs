@@ -133,6 +133,9 @@ struct BenchArgs {
     csv: bool,
     #[command(flatten)]
     limits: Limits,
+    /// for cubical sets (.cub, .pbm, .npy, .complex): identify the opposite faces of the box (a torus)
+    #[arg(long)]
+    periodic: bool,
 }
 
 #[derive(Args, Debug)]
@@ -238,7 +241,8 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
 
 fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {
     let progress = gmap::Progress::stderr("gmap bench", quiet);
-    let runs = gmap::bench::bench(&a.inputs, a.limits.max_darts, &progress);
+    let o = gmap::bench::BenchOptions::new(a.limits.max_darts, a.limits.max_cells, a.periodic);
+    let runs = gmap::bench::bench_with(&a.inputs, &o, &progress);
     progress.finish();
     let runs = runs?;
     Ok(if a.json {
