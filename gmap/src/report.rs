@@ -217,6 +217,15 @@ pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
 /// limits ([`crate::ErrorKind::Limit`]).
 pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     let file = route::file_of(input);
+    if let Some((first, last)) = &o.cubical_box {
+        let Input::Cubical(set) = input else {
+            return Err(err!(Usage, "{file}: --box applies to cubical sets (.cub, .pbm)"));
+        };
+        let boxed = set.with_box(first, last).map_err(|e| err!(Usage, "{file}: --box: {e}"))?;
+        let mut inner = o.clone();
+        inner.cubical_box = None;
+        return homology(&Input::Cubical(set.with_value(boxed)), &inner);
+    }
     let cubical = matches!(input, Input::Cubical(_) | Input::Image(_));
     let route = check_options(&file, matches!(input, Input::Simplicial(_)), cubical, o)?;
     if o.level.is_some() && !matches!(input, Input::Image(_)) {

@@ -170,6 +170,10 @@ pub fn save_checked(
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
     let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    // a complex that cannot be cut into cells is refused for that first
+    if let (Input::Arch(x), false) = (&opened, is_graph(output)) {
+        arch_to_map(x, o.max_darts, input, output)?;
+    }
     check(&dropped(&opened, output, o))?;
     save(&opened, output, o)
 }
