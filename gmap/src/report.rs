@@ -81,15 +81,18 @@ impl ArchSpace {
         if self.topological {
             return "space: the space the regions make (Algorithm 8.16, --topological)\n".to_string();
         }
-        let mut out =
-            "space: the region complex (each region a cell glued along its recorded boundary, AC Def. 3.9)\n".to_string();
+        let mut out = "space: the region complex (each region a cell glued along its recorded boundary, AC Def. 3.9)\n"
+            .to_string();
         if !self.not_balls.is_empty() {
             let shown: Vec<String> = self
                 .not_balls
                 .iter()
                 .take(3)
                 .map(|(name, _, b)| {
-                    format!("{name} (Betti numbers ({}))", b.iter().map(usize::to_string).collect::<Vec<_>>().join(", "))
+                    format!(
+                        "{name} (Betti numbers ({}))",
+                        b.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+                    )
                 })
                 .collect();
             let more = match self.not_balls.len() {
@@ -330,7 +333,17 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
         Input::Arch(x) => Some(ArchSpace::of(x, o.topological)),
         _ => None,
     };
-    Ok(Report { kind: input.kind(), dimension: dim, method: o.method, route, field: o.field, groups, generators, note, space })
+    Ok(Report {
+        kind: input.kind(),
+        dimension: dim,
+        method: o.method,
+        route,
+        field: o.field,
+        groups,
+        generators,
+        note,
+        space,
+    })
 }
 
 /// [`homology`] of the file at `path`: the options are checked against the file's kind (by

@@ -77,7 +77,8 @@ impl CubicalSet {
                     "the box from {first:?} to {last:?} does not hold the cubes: along axis {a} they run from {lo} to {hi}"
                 )));
             }
-            shape.push(usize::try_from(last[a] - first[a] + 1).map_err(|_| ImportError::Format("an empty box".into()))?);
+            shape
+                .push(usize::try_from(last[a] - first[a] + 1).map_err(|_| ImportError::Format("an empty box".into()))?);
         }
         let volume = box_checked(&shape)? as usize;
         let mut bits = vec![0u8; volume];
@@ -318,7 +319,9 @@ pub fn parse_box(text: &str) -> Result<(Vec<i64>, Vec<i64>), String> {
         .map(str::trim)
         .filter(|s| !s.is_empty())
         .map(|s| {
-            let inner = s.strip_prefix('(').ok_or_else(|| format!("expected a box like (0,0) (3,0), found '{}'", text.trim()))?;
+            let inner = s
+                .strip_prefix('(')
+                .ok_or_else(|| format!("expected a box like (0,0) (3,0), found '{}'", text.trim()))?;
             inner
                 .split(|c: char| c == ',' || c.is_whitespace())
                 .filter(|t| !t.is_empty())
