@@ -4,7 +4,7 @@
 //! row that says so.
 
 mod common;
-use common::{gmap, lutz, stderr};
+use common::{gmap, lutz, p, stderr, stdout};
 use std::path::PathBuf;
 
 use serde_json::Value;
@@ -158,9 +158,17 @@ fn errors_and_usage() {
     assert_eq!(gmap(&["bench"]).status.code(), Some(2));
     assert_eq!(gmap(&["bench", "--json", "--csv", &lutz("Barnette_sphere.facets")]).status.code(), Some(2));
     assert_eq!(gmap(&["bench", "--max-darts", "x", &lutz("Barnette_sphere.facets")]).status.code(), Some(2));
-    let o = gmap(&["bench", "--max-darts", "10", &lutz("Barnette_sphere.facets")]);
+    // the direct route's faces have their own limit
+    let o = gmap(&["bench", "--max-cells", "10", &lutz("Barnette_sphere.facets")]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(stderr(&o).contains("--max-darts"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("over the limit of 10; raise the limit with --max-cells N"), "{}", stderr(&o));
+    // a periodic box: the cubical route of the torus
+    let dir = tempfile::tempdir().unwrap();
+    let ring = dir.path().join("row.cub");
+    std::fs::write(&ring, "(0)\n(1)\n(2)\n").unwrap();
+    let o = gmap(&["bench", "--json", "--periodic", p(&ring)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).contains(r#""betti":[1,1]"#), "{}", stdout(&o));
 }
 
 #[test]

@@ -154,8 +154,11 @@ fn gmap_to_gmap_keeps_points_and_labels() {
         text,
         "gmap 1 2\n1 0\n0 1\npoints 2\n0 0.0 0.0 0.0\n1 2.5 0.0 -1.0\nlabels 0 1\n1 hits=3\nlabels 1 1\n0 name=\"main \\\"beam\\\"\" length=2.5\n"
     );
+    // .moka keeps the points, not the labels: refused without --lossy
     let moka = dir.path().join("copy.moka");
     let o = gmap(&["convert", p(&out), p(&moka)]);
+    assert!(stderr(&o).contains("copy.moka drops the labels of"), "{}", stderr(&o));
+    let o = gmap(&["convert", "--lossy", p(&out), p(&moka)]);
     assert!(o.status.success(), "{}", stderr(&o));
     let back = gmap_core::io::read_moka(&moka).unwrap();
     assert_eq!(back.point(gmap_core::Dart::new(1)), Some([2.5, 0.0, -1.0]));

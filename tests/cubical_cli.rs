@@ -115,3 +115,26 @@ fn malformed_inputs_are_refused() {
     assert_eq!(code, 1);
     assert!(err.contains("--periodic"), "{err}");
 }
+
+#[test]
+fn periodic_takes_the_box_given_by_a_box_line_or_box() {
+    let dir = tempfile::tempdir().unwrap();
+    let row = dir.path().join("row.cub");
+    std::fs::write(&row, "(0)\n(1)\n(2)\n").unwrap();
+    let groups = |args: &[&str]| {
+        let (code, out, err) = gmap(args);
+        assert_eq!(code, 0, "{err}");
+        out.lines().filter(|l| l.starts_with("H_")).collect::<Vec<_>>().join(" ")
+    };
+    let path = row.to_str().unwrap();
+    // the bounding box: three cubes in a row close up into a circle
+    assert_eq!(groups(&["homology", "--periodic", path]), "H_0 = Z H_1 = Z");
+    // a box of six cubes: the row stays a segment in the circle
+    assert_eq!(groups(&["homology", "--periodic", "--box", "(0) (5)", path]), "H_0 = Z H_1 = 0");
+    let boxed = dir.path().join("boxed.cub");
+    std::fs::write(&boxed, "box (0) (5)\n(0)\n(1)\n(2)\n").unwrap();
+    assert_eq!(groups(&["homology", "--periodic", boxed.to_str().unwrap()]), "H_0 = Z H_1 = 0");
+    let (code, _, err) = gmap(&["homology", "--box", "(1) (2)", path]);
+    assert_eq!(code, 1);
+    assert!(err.contains("does not hold the cubes: along axis 0 they run from 0 to 2"), "{err}");
+}

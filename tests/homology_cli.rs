@@ -400,9 +400,9 @@ fn torsion_in_non_manifolds() {
     assert!(err.starts_with("error: ") && err.contains("line 2") && err.contains("repeats vertex 4"), "{err}");
     // too many faces: refused before enumerating, naming the estimate
     std::fs::write(&p, "1 2 3 4 5 6 7 8 9 10\n").unwrap();
-    let (code, _, err) = gmap(&["homology", p.to_str().unwrap(), "--max-darts", "1000"]);
+    let (code, _, err) = gmap(&["homology", p.to_str().unwrap(), "--max-cells", "1000"]);
     assert_eq!(code, 1);
-    assert!(err.contains("1023 faces") && err.contains("--max-darts"), "{err}");
+    assert!(err.contains("1023 faces") && err.contains("raise the limit with --max-cells N"), "{err}");
 }
 
 /// The direct route and the G-map route agree on every pseudo-manifold of the library

@@ -55,7 +55,10 @@ fn cubical_sets_write_gmap_and_voxels() {
     let dir = tempfile::tempdir().unwrap();
     let m = convert(dir.path(), "ell.cub", ELL, "gmap");
     let o = gmap(&["homology", p(&m)]);
-    assert_eq!(stdout(&o), "dimension 2, method cellular, coefficients Z\nH_0 = Z\nH_1 = 0\nH_2 = 0\neuler characteristic 1\n");
+    assert_eq!(
+        stdout(&o),
+        "dimension 2, method cellular, coefficients Z\nH_0 = Z\nH_1 = 0\nH_2 = 0\neuler characteristic 1\n"
+    );
     let vtk = std::fs::read_to_string(convert(dir.path(), "ell.cub", ELL, "vtk")).unwrap();
     assert!(vtk.contains("POINTS 8 double\n") && vtk.contains("CELL_TYPES 3\n9\n9\n9\n"), "{vtk}");
     // the voxels read back as a 2-map of the same space

@@ -316,7 +316,9 @@ fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize], max_darts:
         refuse(
             x,
             r,
-            format_args!("its boundary is not a sphere ({what}), so the {d}-region is not a ball and is not cut into cells here"),
+            format_args!(
+                "its boundary is not a sphere ({what}), so the {d}-region is not a ball and is not cut into cells here"
+            ),
         )
     };
     if let Some(dart) = m.darts().find(|&dart| m.is_free(dart, d - 1)) {
@@ -334,7 +336,10 @@ fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize], max_darts:
     } else {
         let h = gmap_homology::cellular_complex(&m)
             .map_err(|e| Error::from_source(crate::ErrorKind::Compute, &e))
-            .and_then(|c| gmap_homology::homology::homology_z(&c.chain).map_err(|e| Error::from_source(crate::ErrorKind::Compute, &e)))?;
+            .and_then(|c| {
+                gmap_homology::homology::homology_z(&c.chain)
+                    .map_err(|e| Error::from_source(crate::ErrorKind::Compute, &e))
+            })?;
         let mut sphere = vec![0; d];
         (sphere[0], sphere[d - 1]) = (1, 1);
         if h.betti != sphere || h.torsion.iter().any(|t| !t.is_empty()) {
@@ -361,11 +366,9 @@ fn cell_name(x: &ArchComplex, origin: &[usize], c: usize) -> String {
 fn poset_error(x: &ArchComplex, origin: &[usize], e: &PosetError, cell: impl Fn(usize) -> Option<usize>) -> String {
     let name = |k: usize| cell(k).map_or_else(|| format!("cell {k}"), |c| cell_name(x, origin, c));
     match *e {
-        PosetError::Diamond { lower, upper, dim, count } => format!(
-            "{count} cells of dimension {dim} lie between {} and {} (2 expected)",
-            name(lower),
-            name(upper)
-        ),
+        PosetError::Diamond { lower, upper, dim, count } => {
+            format!("{count} cells of dimension {dim} lie between {} and {} (2 expected)", name(lower), name(upper))
+        }
         PosetError::TooManyCofaces { cell, dim, count } => {
             format!("{} of dimension {dim} lies in {count} cells of dimension {} (at most 2)", name(cell), dim + 1)
         }

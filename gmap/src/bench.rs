@@ -140,13 +140,37 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
 /// The runs of every input (files, or folders of them): a file found in a folder that
 /// cannot be read is a run with route `read` and the reason; one named is an error.
 pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) -> Result<Vec<RouteRun>> {
+    bench_with(inputs, &BenchOptions { max_darts, max_cells: max_darts, periodic: false }, progress)
+}
+
+/// The limits and options of [`bench_with`] (`gmap bench`'s flags).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct BenchOptions {
+    /// refuse maps of more darts than this
+    pub max_darts: Option<u64>,
+    /// the direct route: refuse more faces than this (default: what the memory budget holds)
+    pub max_cells: Option<u64>,
+    /// cubical sets: identify the opposite faces of the box (the torus)
+    pub periodic: bool,
+}
+
+impl BenchOptions {
+    /// The options of `gmap bench`'s flags.
+    pub fn new(max_darts: Option<u64>, max_cells: Option<u64>, periodic: bool) -> Self {
+        BenchOptions { max_darts, max_cells, periodic }
+    }
+}
+
+/// [`bench`] with its options.
+pub fn bench_with(inputs: &[PathBuf], o: &BenchOptions, progress: &Progress) -> Result<Vec<RouteRun>> {
     let listed = expand_inputs(inputs)?;
     progress.steps(listed.len() as u64, "");
     let mut runs = Vec::new();
     for (f, in_folder) in &listed {
         progress.step(&f.display().to_string());
         let mark = PeakMark::start();
-        match bench_file_from(f, max_darts, &mark) {
+        match bench_file_from(f, o, &mark) {
             Ok(r) => runs.extend(r),
             Err(e) if *in_folder => runs.push(RouteRun {
                 input: f.display().to_string(),
@@ -165,24 +189,27 @@ pub fn bench(inputs: &[PathBuf], max_darts: Option<u64>, progress: &Progress) ->
 
 /// The runs of one file: reading it timed, then [`routes`].
 pub fn bench_file(path: &Path, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
-    bench_file_from(path, max_darts, &PeakMark::start())
+    let o = BenchOptions { max_darts, max_cells: max_darts, periodic: false };
+    bench_file_from(path, &o, &PeakMark::start())
 }
 
-fn bench_file_from(path: &Path, max_darts: Option<u64>, mark: &PeakMark) -> Result<Vec<RouteRun>> {
+fn bench_file_from(path: &Path, o: &BenchOptions, mark: &PeakMark) -> Result<Vec<RouteRun>> {
     let t = Instant::now();
-    let input = open_with(path, &OpenOptions::max_darts(max_darts))?;
+    let input = open_with(path, &OpenOptions::max_darts(o.max_darts))?;
     let read = ms(t);
-    routes_timed(&input, read, max_darts, mark)
+    routes_timed(&input, read, o, mark)
 }
 
 /// Every route of an input, run and timed (reading not included). A simplicial complex
 /// whose faces are over `max_darts` is an error (its direct route is where its groups come
 /// from); a route that does not apply is a run with the reason.
 pub fn routes(input: &Input, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
-    routes_timed(input, 0.0, max_darts, &PeakMark::start())
+    let o = BenchOptions { max_darts, max_cells: max_darts, periodic: false };
+    routes_timed(input, 0.0, &o, &PeakMark::start())
 }
 
-fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>, mark: &PeakMark) -> Result<Vec<RouteRun>> {
+fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> Result<Vec<RouteRun>> {
+    let max_darts = o.max_darts;
     let name = input.path().display().to_string();
     let mut runs = Vec::new();
     let mut push = |route, cells: Vec<usize>, times, result| {
@@ -197,7 +224,7 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>, mark: &PeakMar
             // default): it applies to any complex, so one without a G-map still gets its groups
             let mut times = Times { read, ..Times::default() };
             let t = Instant::now();
-            let fc = face_complex_within(sc, max_darts, &name, false)?;
+            let fc = face_complex_within(sc, o.max_cells, &name, false)?;
             times.border = Some(ms(t));
             let (cells, r) = reduce(&fc.chain, &mut times);
             push("direct", cells, times, r);
@@ -223,12 +250,12 @@ fn routes_timed(input: &Input, read: f64, max_darts: Option<u64>, mark: &PeakMar
         }
         Input::Cubical(set) => {
             map_read = read;
-            cubical_rows(Cubes::Set(set.get()), read, &mut push)?;
+            cubical_rows(Cubes::Set(set.get()), read, o.periodic, &mut push)?;
             None
         }
         Input::Image(img) => {
             map_read = read;
-            cubical_rows(Cubes::Image(img), read, &mut push)?;
+            cubical_rows(Cubes::Image(img), read, o.periodic, &mut push)?;
             None
         }
         Input::Arch(x) => {
@@ -292,13 +319,13 @@ type Push<'a> = dyn FnMut(&'static str, Vec<usize>, Times, std::result::Result<H
 /// The rows of a cubical input: the one-pass route (dimension ≤ 3), the cubical complex
 /// built and reduced slab by slab (read in memory order), then the whole cubical complex of
 /// the closure after collapses of free faces (an image made a bitmap first, timed as
-/// reading).
-fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
+/// reading). With `periodic` (the torus of the box) the one-pass route does not apply.
+fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Result<()> {
     let shape = match cubes {
         Cubes::Image(img) => img.memory_shape(),
         Cubes::Set(set) => set.shape().to_vec(),
     };
-    if shape.len() <= 3 {
+    if shape.len() <= 3 && !periodic {
         let mut times = Times { read, ..Times::default() };
         let t = Instant::now();
         let r = match cubes {
@@ -328,14 +355,14 @@ fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
         Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
             &shape,
             |s, out| img.presence(gmap_ops::import::Level::Nonzero, s, out),
-            false,
+            periodic,
             slab,
             false,
         ),
         Cubes::Set(set) => {
             let bits = set.bits();
             let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
-            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, false, slab, false)
+            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, periodic, slab, false)
         }
     };
     times.border = Some(ms(t));
@@ -362,7 +389,7 @@ fn cubical_rows(cubes: Cubes, read: f64, push: &mut Push) -> Result<()> {
         }
     };
     let t = Instant::now();
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), false, true);
+    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), periodic, true);
     times.border = Some(ms(t));
     match c {
         Ok(c) => {

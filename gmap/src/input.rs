@@ -214,6 +214,13 @@ impl<T> Sourced<T> {
     }
 }
 
+impl<T> Sourced<T> {
+    /// Another value from the same file.
+    pub(crate) fn with_value<U>(&self, value: U) -> Sourced<U> {
+        Sourced { value, source: self.source.clone() }
+    }
+}
+
 impl<T> std::ops::Deref for Sourced<T> {
     type Target = T;
     fn deref(&self) -> &T {

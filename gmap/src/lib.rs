@@ -72,12 +72,12 @@ pub use gmap_homology as homology;
 pub use gmap_ops as ops;
 
 mod arch_cells;
-mod graph;
 pub mod bench;
 mod cell_name;
 pub mod demo;
 pub mod distributed;
 mod error;
+mod graph;
 pub mod info;
 pub mod input;
 pub mod persistence;

@@ -81,15 +81,18 @@ impl ArchSpace {
         if self.topological {
             return "space: the space the regions make (Algorithm 8.16, --topological)\n".to_string();
         }
-        let mut out =
-            "space: the region complex (each region a cell glued along its recorded boundary, AC Def. 3.9)\n".to_string();
+        let mut out = "space: the region complex (each region a cell glued along its recorded boundary, AC Def. 3.9)\n"
+            .to_string();
         if !self.not_balls.is_empty() {
             let shown: Vec<String> = self
                 .not_balls
                 .iter()
                 .take(3)
                 .map(|(name, _, b)| {
-                    format!("{name} (Betti numbers ({}))", b.iter().map(usize::to_string).collect::<Vec<_>>().join(", "))
+                    format!(
+                        "{name} (Betti numbers ({}))",
+                        b.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+                    )
                 })
                 .collect();
             let more = match self.not_balls.len() {
@@ -217,6 +220,15 @@ pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
 /// limits ([`crate::ErrorKind::Limit`]).
 pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     let file = route::file_of(input);
+    if let Some((first, last)) = &o.cubical_box {
+        let Input::Cubical(set) = input else {
+            return Err(err!(Usage, "{file}: --box applies to cubical sets (.cub, .pbm)"));
+        };
+        let boxed = set.with_box(first, last).map_err(|e| err!(Usage, "{file}: --box: {e}"))?;
+        let mut inner = o.clone();
+        inner.cubical_box = None;
+        return homology(&Input::Cubical(set.with_value(boxed)), &inner);
+    }
     let cubical = matches!(input, Input::Cubical(_) | Input::Image(_));
     let route = check_options(&file, matches!(input, Input::Simplicial(_)), cubical, o)?;
     if o.level.is_some() && !matches!(input, Input::Image(_)) {
@@ -325,7 +337,17 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
         Input::Arch(x) => Some(ArchSpace::of(x, o.topological)),
         _ => None,
     };
-    Ok(Report { kind: input.kind(), dimension: dim, method: o.method, route, field: o.field, groups, generators, note, space })
+    Ok(Report {
+        kind: input.kind(),
+        dimension: dim,
+        method: o.method,
+        route,
+        field: o.field,
+        groups,
+        generators,
+        note,
+        space,
+    })
 }
 
 /// [`homology`] of the file at `path`: the options are checked against the file's kind (by

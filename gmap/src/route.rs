@@ -89,6 +89,9 @@ pub struct HomologyOptions {
     pub via: Option<Via>,
     /// a cubical set's box is a torus (opposite faces identified)
     pub periodic: bool,
+    /// a cubical set's box, as its first and last cubes (default: the cubes' bounding box,
+    /// or the `box` line of a `.cub`)
+    pub cubical_box: Option<(Vec<i64>, Vec<i64>)>,
     /// an image's cubical set: the values `≤ T` (default: the non-zero values)
     pub level: Option<f64>,
     /// where the stages are shown

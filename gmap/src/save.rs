@@ -78,7 +78,9 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
             gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
         }
         Input::Cubical(set) => {
-            let m = set.gmap(false).map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
+            let m = set
+                .gmap(false)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
             save_map(&m, output)
         }
         // an image is written as an image: numpy's .npy as it is, DIPHA's as f64
@@ -170,6 +172,10 @@ pub fn save_checked(
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
     let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    // a complex that cannot be cut into cells is refused for that first
+    if let (Input::Arch(x), false) = (&opened, is_graph(output)) {
+        arch_to_map(x, o.max_darts, input, output)?;
+    }
     check(&dropped(&opened, output, o))?;
     save(&opened, output, o)
 }
@@ -318,7 +324,11 @@ pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path,
     let not_written = format!("(nothing written to {})", output.display());
     let named = |e: Error| {
         let e = e.flattened(&format!(" {not_written}"));
-        if input.as_os_str().is_empty() { e } else { e.context(input.display().to_string()) }
+        if input.as_os_str().is_empty() {
+            e
+        } else {
+            e.context(input.display().to_string())
+        }
     };
     let cells = crate::arch_cells::cells(x, limit).map_err(named)?;
     cells.poset.to_gmap(limit).map_err(|e| match e {

@@ -292,7 +292,10 @@ fn what_cannot_be_cut_is_refused_with_the_region_and_why() {
         m.entry(room, f, s);
     }
     let e = refusal(&m.json(3));
-    assert!(e.contains(&format!("region {room} (\"hollow\"): a 3-region with Betti numbers (1, 0, 1, 0) is not a ball")), "{e}");
+    assert!(
+        e.contains(&format!("region {room} (\"hollow\"): a 3-region with Betti numbers (1, 0, 1, 0) is not a ball")),
+        "{e}"
+    );
 }
 
 proptest! {

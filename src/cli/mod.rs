@@ -30,6 +30,10 @@ pub struct Cli {
     quiet: bool,
 }
 
+fn parse_cubical_box(text: &str) -> Result<(Vec<i64>, Vec<i64>), String> {
+    gmap::ops::import::parse_box(text)
+}
+
 fn parse_max_memory(text: &str) -> Result<u64, String> {
     gmap::core::resources::parse_size(text).map_err(|e| e.to_string())
 }
@@ -115,6 +119,10 @@ struct HomologyArgs {
     /// for a cubical set (.cub, .pbm, .npy, .complex): identify the opposite faces of its box (a torus)
     #[arg(long)]
     periodic: bool,
+    /// for a cubical set (.cub, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
+    /// (default: the cubes' bounding box, or the file's `box` line)
+    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
+    cubical_box: Option<(Vec<i64>, Vec<i64>)>,
     /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
     #[arg(long, value_name = "T")]
     level: Option<f64>,
@@ -133,6 +141,9 @@ struct BenchArgs {
     csv: bool,
     #[command(flatten)]
     limits: Limits,
+    /// for cubical sets (.cub, .pbm, .npy, .complex): identify the opposite faces of the box (a torus)
+    #[arg(long)]
+    periodic: bool,
 }
 
 #[derive(Args, Debug)]
@@ -229,6 +240,7 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
     (o.field, o.generators, o.simplify, o.topological) = (a.field, a.generators, a.simplify, a.topological);
     (o.max_darts, o.max_cells, o.periodic, o.level) = (a.limits.max_darts, a.limits.max_cells, a.periodic, a.level);
     o.max_generator_cells = a.max_generator_cells;
+    o.cubical_box = a.cubical_box;
     o.progress = gmap::Progress::stderr("gmap homology", quiet);
     let report = gmap::homology_file(&a.file, &o);
     o.progress.finish();
@@ -238,7 +250,8 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
 
 fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {
     let progress = gmap::Progress::stderr("gmap bench", quiet);
-    let runs = gmap::bench::bench(&a.inputs, a.limits.max_darts, &progress);
+    let o = gmap::bench::BenchOptions::new(a.limits.max_darts, a.limits.max_cells, a.periodic);
+    let runs = gmap::bench::bench_with(&a.inputs, &o, &progress);
     progress.finish();
     let runs = runs?;
     Ok(if a.json {

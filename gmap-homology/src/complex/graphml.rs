@@ -127,8 +127,9 @@ mod tests {
     #[test]
     fn labels_become_typed_keys_and_text_is_escaped() {
         let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 1), (2, 0)], &[(1, 0, 1), (1, 2, -1)]).unwrap();
-        let l: Labels =
-            [("name", LabelValue::Text("a <b> & \"c\"\u{1}".into())), ("area", LabelValue::Real(2.5))].into_iter().collect();
+        let l: Labels = [("name", LabelValue::Text("a <b> & \"c\"\u{1}".into())), ("area", LabelValue::Real(2.5))]
+            .into_iter()
+            .collect();
         let x = x.with_region_labels(RegionId(1), l).unwrap();
         let l: Labels = [("area", LabelValue::Int(3)), ("storey", LabelValue::Int(-1))].into_iter().collect();
         let x = x.with_region_labels(RegionId(2), l).unwrap();
@@ -136,7 +137,10 @@ mod tests {
         assert!(g.contains(r#"<key id="l0" for="node" attr.name="name" attr.type="string"/>"#), "{g}");
         assert!(g.contains(r#"<key id="l1" for="node" attr.name="area" attr.type="double"/>"#), "{g}");
         assert!(g.contains(r#"<key id="l2" for="node" attr.name="storey" attr.type="long"/>"#), "{g}");
-        assert!(g.contains("<data key=\"l0\">a &lt;b&gt; &amp; &quot;c&quot;\u{FFFD}</data><data key=\"l1\">2.5</data>"), "{g}");
+        assert!(
+            g.contains("<data key=\"l0\">a &lt;b&gt; &amp; &quot;c&quot;\u{FFFD}</data><data key=\"l1\">2.5</data>"),
+            "{g}"
+        );
         assert!(g.contains(r#"<data key="l1">3.0</data><data key="l2">-1</data>"#), "{g}");
         assert!(g.contains(r#"<edge source="r1" target="r2"><data key="weight">-1</data></edge>"#), "{g}");
     }

@@ -14,8 +14,8 @@ use gmap_core::{AlphaSet, Attributes, Dart, DenseMap, GMap, Partition};
 
 mod error;
 pub mod html;
-mod vtk;
 mod voxels;
+mod vtk;
 
 pub use error::{write_atomic, ExportError};
 pub use voxels::{cubical_vtk_string, write_cubical_vtk};

@@ -42,7 +42,11 @@ pub fn cubical_vtk_string(set: &CubicalSet) -> Result<String, ExportError> {
         cells.push(corners);
     }
     let mut s = String::with_capacity(32 * points.len() + 48 * cells.len() + 256);
-    let _ = writeln!(s, "# vtk DataFile Version 3.0\ngmap: a cubical set of dimension {d}, {} cubes\nASCII\nDATASET UNSTRUCTURED_GRID", cells.len());
+    let _ = writeln!(
+        s,
+        "# vtk DataFile Version 3.0\ngmap: a cubical set of dimension {d}, {} cubes\nASCII\nDATASET UNSTRUCTURED_GRID",
+        cells.len()
+    );
     let _ = writeln!(s, "POINTS {} double", points.len());
     for p in &points {
         let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);

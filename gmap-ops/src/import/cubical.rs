@@ -58,6 +58,40 @@ impl CubicalSet {
         Ok(CubicalSet { min, shape, bits, count })
     }
 
+    /// The same cubes in another box: the cubes from `first` to `last` (inclusive) along
+    /// every axis, which must hold every cube of the set (`--periodic` then identifies that
+    /// box's opposite faces, not those of the cubes' bounding box). O(box).
+    pub fn with_box(&self, first: &[i64], last: &[i64]) -> Result<Self, ImportError> {
+        let d = self.dim();
+        if first.len() != d || last.len() != d {
+            return Err(ImportError::Format(format!(
+                "a box of dimension {} for a cubical set of dimension {d}",
+                first.len().max(last.len())
+            )));
+        }
+        let mut shape = Vec::with_capacity(d);
+        for a in 0..d {
+            let (lo, hi) = (self.min[a], self.min[a] + self.shape[a] as i64 - 1);
+            if first[a] > lo || last[a] < hi {
+                return Err(ImportError::Format(format!(
+                    "the box from {first:?} to {last:?} does not hold the cubes: along axis {a} they run from {lo} to {hi}"
+                )));
+            }
+            shape
+                .push(usize::try_from(last[a] - first[a] + 1).map_err(|_| ImportError::Format("an empty box".into()))?);
+        }
+        let volume = box_checked(&shape)? as usize;
+        let mut bits = vec![0u8; volume];
+        for c in self.cubes() {
+            let mut idx = 0usize;
+            for a in (0..d).rev() {
+                idx = idx * shape[a] + (c[a] - first[a]) as usize;
+            }
+            bits[idx] = 1;
+        }
+        CubicalSet::new(first.to_vec(), shape, bits)
+    }
+
     /// The dimension d.
     pub fn dim(&self) -> usize {
         self.shape.len()
@@ -193,9 +227,11 @@ fn syntax(line: usize, message: String) -> ImportError {
 
 /// Parses the text of a `.cub` file: one cube a line as its minimal vertex in parentheses,
 /// coordinates separated by commas or spaces (`(3,0,-7)`, `(3 0 -7)`); `;` starts a comment;
-/// lines beginning with `dimension` are skipped. All cubes have the same dimension; a cube
+/// lines beginning with `dimension` are skipped; a line `box (0,0) (3,0)` gives the box
+/// (its first and last cubes, [`CubicalSet::with_box`]) instead of the cubes' bounding box. All cubes have the same dimension; a cube
 /// listed twice counts once.
 pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
+    let mut given_box: Option<(Vec<i64>, Vec<i64>)> = None;
     let mut coords: Vec<i64> = Vec::new();
     let mut dim = 0usize;
     let mut dim_line = 0usize;
@@ -207,6 +243,11 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         };
         let t = raw.trim_ascii();
         if t.is_empty() || t.starts_with(b"dimension") {
+            continue;
+        }
+        if let Some(rest) = t.strip_prefix(b"box") {
+            let text = String::from_utf8_lossy(rest);
+            given_box = Some(parse_box(&text).map_err(|why| syntax(line, why))?);
             continue;
         }
         let bad = || syntax(line, format!("expected a cube like (0,1,2), found '{}'", shorten(t, 80)));
@@ -263,7 +304,35 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         }
         bits[idx] = 1;
     }
-    CubicalSet::new(lo, shape, bits)
+    let set = CubicalSet::new(lo, shape, bits)?;
+    match given_box {
+        Some((first, last)) => set.with_box(&first, &last),
+        None => Ok(set),
+    }
+}
+
+/// Parses a box given as its first and last cubes, `(0,0) (3,0)` (the `box` line of a
+/// `.cub` file, `--box`): the two corners, each a cube like the file's.
+pub fn parse_box(text: &str) -> Result<(Vec<i64>, Vec<i64>), String> {
+    let corners: Vec<Vec<i64>> = text
+        .split(')')
+        .map(str::trim)
+        .filter(|s| !s.is_empty())
+        .map(|s| {
+            let inner = s
+                .strip_prefix('(')
+                .ok_or_else(|| format!("expected a box like (0,0) (3,0), found '{}'", text.trim()))?;
+            inner
+                .split(|c: char| c == ',' || c.is_whitespace())
+                .filter(|t| !t.is_empty())
+                .map(|t| t.parse::<i64>().map_err(|_| format!("'{t}' is not an integer coordinate")))
+                .collect()
+        })
+        .collect::<Result<_, _>>()?;
+    match <[Vec<i64>; 2]>::try_from(corners) {
+        Ok([first, last]) if first.len() == last.len() && !first.is_empty() => Ok((first, last)),
+        _ => Err(format!("expected a box as its first and last cubes, like (0,0) (3,0), found '{}'", text.trim())),
+    }
 }
 
 /// Parses a Netpbm bitmap: `P1` (ASCII `0`/`1`, whitespace optional between pixels) or `P4`

@@ -19,7 +19,7 @@ pub mod vtk;
 pub mod vtu;
 
 pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};
-pub use cubical::{read_cub, read_pbm, CubicalSet};
+pub use cubical::{parse_box, read_cub, read_pbm, CubicalSet};
 pub use image::{Image, Level};
 pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
