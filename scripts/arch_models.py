@@ -1,3 +1,6 @@
+# Writes the architectural test models tests/data/arch/rooms_door_window.json (two rooms,
+# a door and a window in their common wall) and floor_court.json (a floor around a court):
+# string ids, points, no weights. Usage: python3 scripts/arch_models.py tests/data/arch
 import json, sys
 def model(faces, rooms, dim):
     verts=[]; edges=[]; regions=[]; inc=[]

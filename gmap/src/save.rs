@@ -59,7 +59,7 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     match input {
         Input::Map(m) => save_map(m.map(), output),
         Input::Simplicial(sc) => save_map(&sc.to_gmap_within(o.max_darts)?, output),
-        Input::Arch(x) => save_arch(x, output, o.max_darts),
+        Input::Arch(x) => save_arch_from(x, input.path(), output, o.max_darts),
         Input::Cubical(_) => {
             Err(err!(Unsupported, "{}: a cubical set cannot be converted; use gmap homology", input.path().display()))
         }
@@ -188,21 +188,57 @@ fn write_text(path: &Path, text: &str) -> Result<()> {
 /// Writes an architectural complex: `.json` and `.dot` directly; any other format through
 /// its G-map (the flag construction of a regular complex's face poset, gmap-ops).
 pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Result<()> {
+    save_arch_from(x, Path::new(""), output, max_darts)
+}
+
+/// [`save_arch`] of a complex read from `input`: a refusal names the input file and the
+/// regions by the file's ids and names.
+fn save_arch_from(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
+    let file = if input.as_os_str().is_empty() { output } else { input };
     match extension(output).as_str() {
         "json" if !is_lar(output) => write_text(output, &write_json(x)),
         "dot" => write_text(output, &write_dot(x)),
         _ => {
             let m = arch_to_map(x, max_darts).map_err(|e| match e {
                 PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
-                    err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", output.display())
+                    err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", file.display())
                 }
-                e => Error::from_source(ErrorKind::Precondition, &e).context(format!(
+                e => Error::new(ErrorKind::Precondition, poset_error_named(x, &e)).context(format!(
                     "{}: the complex is not the face poset of a regular cell complex",
-                    output.display()
+                    file.display()
                 )),
             })?;
             save_map(&m, output)
         }
+    }
+}
+
+/// A face-poset refusal with the regions named as the file names them (the poset's cells
+/// are the complex's regions, in order).
+fn poset_error_named(x: &ArchComplex, e: &PosetError) -> String {
+    let n = |c: usize| if c < x.regions().len() { x.region_name(c) } else { c.to_string() };
+    match *e {
+        PosetError::EdgeVertices { edge, vertices } => {
+            format!("edge {} has {vertices} vertices, not 2: not a regular complex", n(edge))
+        }
+        PosetError::Diamond { lower, upper, dim, count } => format!(
+            "diamond property fails: {count} regions of dimension {dim} lie between region {} and region {} (2 expected)",
+            n(lower),
+            n(upper)
+        ),
+        PosetError::TooManyCofaces { cell, dim, count } => {
+            format!("region {} of dimension {dim} lies in {count} regions of dimension {} (at most 2)", n(cell), dim + 1)
+        }
+        PosetError::NotPure { cell, dim, top } => {
+            format!("region {} of dimension {dim} is not part of any {top}-region: the complex is not pure", n(cell))
+        }
+        PosetError::NotConsecutive { higher, higher_dim, lower, lower_dim } => format!(
+            "region {} (dimension {lower_dim}) is given as a face of region {} (dimension {higher_dim}): dimensions must differ by one",
+            n(lower),
+            n(higher)
+        ),
+        PosetError::Duplicate { higher, lower } => format!("incidence ({}, {}) is given twice", n(higher), n(lower)),
+        ref other => other.to_string(),
     }
 }
 

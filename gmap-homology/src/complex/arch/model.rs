@@ -162,6 +162,8 @@ pub enum ArchError {
         dim: usize,
         /// why
         reason: String,
+        /// the region where it fails, if one
+        at: Option<RegionId>,
     },
     /// A region label whose value is a real that is not finite.
     LabelNotFinite {

@@ -143,8 +143,12 @@ impl fmt::Display for Named<'_> {
                 n(*id),
                 join_counts(betti)
             ),
-            ArchError::CannotOrient { id, dim, reason } => {
-                write!(f, "{dim}-region {} cannot be oriented: {reason}; give the incidence weights", n(*id))
+            ArchError::CannotOrient { id, dim, reason, at } => {
+                write!(f, "{dim}-region {} cannot be oriented: {reason}", n(*id))?;
+                if let Some(a) = at {
+                    write!(f, " at region {}", n(*a))?;
+                }
+                write!(f, "; give the incidence weights")
             }
             ArchError::LabelNotFinite { id, name } => {
                 write!(f, "region {}: the label `{name}` is not a finite real", n(*id))

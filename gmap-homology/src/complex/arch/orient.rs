@@ -17,7 +17,7 @@
 //!
 //! O(E · log E) over the entries, plus the propagation, linear in the entries of each region.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::{BTreeMap, HashMap, VecDeque};
 
 use super::model::{ArchError, Region, RegionId};
 
@@ -42,7 +42,7 @@ struct State<'a> {
 
 impl State<'_> {
     fn fail(&self, c: usize, reason: impl Into<String>) -> ArchError {
-        ArchError::CannotOrient { id: self.regions[c].id, dim: self.regions[c].dim, reason: reason.into() }
+        ArchError::CannotOrient { id: self.regions[c].id, dim: self.regions[c].dim, reason: reason.into(), at: None }
     }
 
     /// The ends (from, to) of an oriented edge, `None` for a loop.
@@ -93,7 +93,7 @@ impl State<'_> {
     /// component of the boundary (the first face of each component taken positively).
     fn face_signs(&self, c: usize) -> Result<Vec<Vec<(usize, i64)>>, ArchError> {
         let faces: Vec<usize> = self.down[c].iter().map(|x| x.0).collect();
-        let mut on: HashMap<usize, Vec<(usize, i64)>> = HashMap::new();
+        let mut on: BTreeMap<usize, Vec<(usize, i64)>> = BTreeMap::new();
         for (j, &f) in faces.iter().enumerate() {
             for &(r, w) in &self.down[f] {
                 if w != 0 {
@@ -136,10 +136,12 @@ impl State<'_> {
         for (&r, list) in &on {
             let sum: i64 = list.iter().map(|&(j, w)| sign[j] * w).sum();
             if sum != 0 {
-                return Err(self.fail(
-                    c,
-                    format!("its faces do not cancel on the {}-region {}", self.regions[r].dim, self.regions[r].id),
-                ));
+                return Err(ArchError::CannotOrient {
+                    id: self.regions[c].id,
+                    dim: self.regions[c].dim,
+                    reason: "its faces do not cancel".into(),
+                    at: Some(self.regions[r].id),
+                });
             }
         }
         Ok(components)
