@@ -80,6 +80,7 @@ pub mod progress;
 pub mod report;
 pub mod route;
 pub mod save;
+pub mod tm;
 pub mod view;
 
 pub use bench::{routes, RouteRun, Times};
@@ -91,4 +92,5 @@ pub use progress::Progress;
 pub use report::{homology, homology_file, CellName, NamedGenerator, Report};
 pub use route::{simplify_if_safe, HomologyOptions, Method, Via};
 pub use save::{save, save_file, SaveOptions};
+pub use tm::{tm_check, tm_check_file, tm_views, tm_views_file, TmCheck};
 pub use view::{view, ViewOptions};

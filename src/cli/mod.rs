@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod persistence;
+mod tm;
 mod view;
 
 /// Generalized maps: build, inspect, convert, and compute homology on the cells.
@@ -153,6 +154,8 @@ enum Command {
     View(view::ViewArgs),
     /// Persistence diagram of a filtration: an image, valued facets, a labelled .gmap.
     Persistence(persistence::PersistenceArgs),
+    /// Corbett's topological models (docs/TM.md): the edit check and the views of a model.
+    Tm(tm::TmArgs),
 }
 
 /// Runs the command line; returns the process exit code.
@@ -169,6 +172,7 @@ pub fn run() -> ExitCode {
         Command::Bench(a) => bench(a, quiet),
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
+        Command::Tm(a) => return tm::run(a),
         Command::Convert(a) => {
             let progress = gmap::Progress::stderr("gmap convert", quiet);
             progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
