@@ -156,6 +156,19 @@ enum Command {
     Persistence(persistence::PersistenceArgs),
     /// Corbett's topological models (docs/TM.md): the edit check and the views of a model.
     Tm(tm::TmArgs),
+    /// Rooms from walls: the 3-cells of faces in space (.off polygon soup, .json 2-complex
+    /// with points), written as a 3-complex whose volumes are the rooms (docs/LAR.md).
+    Rooms(RoomsArgs),
+}
+
+#[derive(Args, Debug)]
+struct RoomsArgs {
+    /// the faces: an .off polygon soup or a .json 2-complex with points
+    input: PathBuf,
+    /// the rooms: .json, .dot, or a map format (.gmap, .moka, .vtk, ...)
+    output: PathBuf,
+    #[command(flatten)]
+    limits: Limits,
 }
 
 /// Runs the command line; returns the process exit code.
@@ -173,6 +186,7 @@ pub fn run() -> ExitCode {
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
         Command::Tm(a) => return tm::run(a),
+        Command::Rooms(a) => gmap::rooms_file(&a.input, &a.output, a.limits.max_darts).map(|r| r.to_text()),
         Command::Convert(a) => {
             let progress = gmap::Progress::stderr("gmap convert", quiet);
             progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
