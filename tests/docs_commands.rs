@@ -229,3 +229,14 @@ fn the_matcher_reads_ellipses_and_wildcards() {
     assert!(!is_synopsis("gmap info tests/data/rp2.facets"));
     let _ = Path::new("");
 }
+
+#[test]
+fn help_lists_every_input_format() {
+    for cmd in ["info", "homology", "convert"] {
+        let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args([cmd, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&out.stdout);
+        for ext in gmap::input::INPUT_EXTENSIONS {
+            assert!(help.contains(&format!(".{ext}")), "gmap {cmd} --help does not name .{ext}:\n{help}");
+        }
+    }
+}

@@ -63,7 +63,7 @@ struct Limits {
 
 #[derive(Args, Debug)]
 struct InfoArgs {
-    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     file: PathBuf,
     /// print one JSON object
     #[arg(long)]
@@ -80,7 +80,7 @@ struct InfoArgs {
 
 #[derive(Args, Debug)]
 struct HomologyArgs {
-    /// the input file
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     file: PathBuf,
     /// cellular (default) or simplicial
     #[arg(long, value_enum, default_value_t = Method::Cellular)]
@@ -130,9 +130,10 @@ struct BenchArgs {
 
 #[derive(Args, Debug)]
 struct ConvertArgs {
-    /// input file
+    /// input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     input: PathBuf,
-    /// output file
+    /// output file (.gmap, .moka, .off, .facets, .vtk, .json, .lar.json, .dot; an image:
+    /// .npy, .complex)
     output: PathBuf,
     #[command(flatten)]
     limits: Limits,
