@@ -15,7 +15,7 @@ use std::path::Path;
 
 #[allow(dead_code)]
 #[path = "arch_rooms_door_window.rs"]
-mod rooms;
+pub mod rooms;
 
 /// The report on the floor.
 pub fn run(out: &mut dyn Write) -> Result<(), Box<dyn Error>> {

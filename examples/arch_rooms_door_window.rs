@@ -36,7 +36,8 @@ pub fn report(file: &Path, out: &mut dyn Write) -> Result<(), Box<dyn Error>> {
 /// The groups as `(Z, 0, Z^2)`.
 fn groups(r: &gmap::Report) -> String {
     let text = r.to_text();
-    let g: Vec<&str> = text.lines().filter_map(|l| l.strip_prefix("H_")).filter_map(|l| l.split(" = ").nth(1)).collect();
+    let g: Vec<&str> =
+        text.lines().filter_map(|l| l.strip_prefix("H_")).filter_map(|l| l.split(" = ").nth(1)).collect();
     format!("({})", g.join(", "))
 }
 

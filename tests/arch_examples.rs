@@ -7,12 +7,12 @@ mod common;
 use common::{gmap, p, stderr, stdout};
 
 #[allow(dead_code)]
-#[path = "../examples/arch_rooms_door_window.rs"]
-mod rooms;
-
-#[allow(dead_code)]
 #[path = "../examples/arch_floor_court.rs"]
 mod floor;
+use floor::rooms;
+
+/// An example's `run`.
+type Run = fn(&mut dyn std::io::Write) -> Result<(), Box<dyn std::error::Error>>;
 
 const ROOMS: &str = r#"homology of the region complex: (Z^2, 0, 0, 0)
 homology of the space (--topological): (Z, 0, 0, 0)
@@ -71,7 +71,7 @@ views of the 1-cells (TM 7:1) and the 2-cells on their sides (TM 7:3):
   e7: near nothing, far floor (ground floor); boundary 2 0-cells
 "#;
 
-fn run(f: fn(&mut dyn std::io::Write) -> Result<(), Box<dyn std::error::Error>>) -> String {
+fn run(f: Run) -> String {
     let mut out = Vec::new();
     f(&mut out).unwrap();
     String::from_utf8(out).unwrap()
@@ -101,7 +101,11 @@ fn tm_commands_print_what_the_examples_print() {
     );
     // a room by its name label; a 1-cell's section with its ends
     let kitchen = gmap(&["tm", "views", p(&file), "--cell", "kitchen"]);
-    assert!(stdout(&kitchen).starts_with("view (TM 7:1) of 3-cell room 1 (kitchen): 46 cells\n"), "{}", stdout(&kitchen));
+    assert!(
+        stdout(&kitchen).starts_with("view (TM 7:1) of 3-cell room 1 (kitchen): 46 cells\n"),
+        "{}",
+        stdout(&kitchen)
+    );
     let e2 = gmap(&["tm", "views", p(&file), "--cell", "e2"]);
     assert!(stdout(&e2).starts_with("section (TM 7:2) of 1-cell e2: "), "{}", stdout(&e2));
     assert!(stdout(&e2).contains("from v2 to v3 (TM 7:4)\n"), "{}", stdout(&e2));
@@ -137,8 +141,16 @@ fn tm_check_fails_with_the_cells_named() {
     assert!(text.ends_with("fails the edit check\n"), "{text}");
     // a cubical set has no TM model
     let cub = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cubical");
-    let any = std::fs::read_dir(cub).unwrap().map(|e| e.unwrap().path()).find(|p| p.extension().is_some_and(|e| e == "cub")).unwrap();
+    let any = std::fs::read_dir(cub)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .find(|p| p.extension().is_some_and(|e| e == "cub"))
+        .unwrap();
     let refused = gmap(&["tm", "check", p(&any)]);
     assert_eq!(refused.status.code(), Some(1));
-    assert!(stderr(&refused).contains("a TM model is made from an architectural complex (.json) or a G-map"), "{}", stderr(&refused));
+    assert!(
+        stderr(&refused).contains("a TM model is made from an architectural complex (.json) or a G-map"),
+        "{}",
+        stderr(&refused)
+    );
 }

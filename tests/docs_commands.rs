@@ -25,7 +25,10 @@ use std::process::Command;
 const NOT_RUN: &[(&str, &str)] = &[
     ("cargo run --release -- demo", "builds the release binary (fat LTO, minutes); `gmap demo` is run below instead"),
     ("scripts/test", "runs the whole test suite, this test included"),
-    ("cargo run --release --example view -- OUT_DIR", "writes the pages of every demo object; tests/view_cli.rs runs the example"),
+    (
+        "cargo run --release --example view -- OUT_DIR",
+        "writes the pages of every demo object; tests/view_cli.rs runs the example",
+    ),
     ("python3 benches/anchors/compare_gudhi.py", "a benchmark against GUDHI (minutes, needs the bench data)"),
     ("cargo bench --bench simplify_figures", "a benchmark"),
     ("cargo bench --bench simplify", "a benchmark"),
@@ -156,7 +159,9 @@ fn words(cmd: &str) -> Vec<String> {
 }
 
 fn is_synopsis(line: &str) -> bool {
-    line.contains('[') || line.contains(" | ") || line.split_whitespace().any(|w| ["FILE", "IN", "OUT", "DIR", "FILE|DIR...", "OUT_DIR"].contains(&w))
+    line.contains('[')
+        || line.contains(" | ")
+        || line.split_whitespace().any(|w| ["FILE", "IN", "OUT", "DIR", "FILE|DIR...", "OUT_DIR"].contains(&w))
 }
 
 #[test]

@@ -87,7 +87,10 @@ fn messages_name_regions_as_the_file_does() {
                     {"id": "ab", "dim": 1}, {"id": "bc", "dim": 1}, {"id": "room", "dim": 2}],
                    "incidence": [{"from": "ab", "to": "a"}, {"from": "ab", "to": "b"}, {"from": "bc", "to": "b"},
                     {"from": "bc", "to": "c"}, {"from": "room", "to": "ab"}, {"from": "room", "to": "bc"}]}"#;
-    assert_eq!(msg(open), "2-region room cannot be oriented: its faces do not cancel at region a; give the incidence weights");
+    assert_eq!(
+        msg(open),
+        "2-region room cannot be oriented: its faces do not cancel at region a; give the incidence weights"
+    );
     match read_json(open) {
         Err(JsonError::Arch(ArchError::CannotOrient { id, dim: 2, .. }, names)) => assert_eq!(names.get(id), "room"),
         other => panic!("{other:?}"),

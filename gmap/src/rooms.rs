@@ -46,7 +46,9 @@ fn json_faces(x: &ArchComplex, file: &str) -> Result<(Faces, Vec<usize>)> {
     let mut vertex = vec![u32::MAX; x.regions().len()];
     let mut points = Vec::new();
     for &v in x.regions_of_dim(0) {
-        let p = x.region_point(v as usize).ok_or_else(|| bad(format!("vertex {} has no point", x.region_name(v as usize))))?;
+        let p = x
+            .region_point(v as usize)
+            .ok_or_else(|| bad(format!("vertex {} has no point", x.region_name(v as usize))))?;
         vertex[v as usize] = points.len() as u32;
         points.push(p);
     }
@@ -87,8 +89,10 @@ fn json_faces(x: &ArchComplex, file: &str) -> Result<(Faces, Vec<usize>)> {
 
 fn rooms_error(e: &gmap_homology::lar::RoomsError, file: &str, names: Option<(&ArchComplex, &[usize])>) -> Error {
     let mut text = e.to_string();
-    if let (Some((x, regions)), gmap_homology::lar::RoomsError::BothSides { face } | gmap_homology::lar::RoomsError::Flat { face }) =
-        (names, e)
+    if let (
+        Some((x, regions)),
+        gmap_homology::lar::RoomsError::BothSides { face } | gmap_homology::lar::RoomsError::Flat { face },
+    ) = (names, e)
     {
         text = text.replacen(&format!("face {face}"), &format!("face {}", x.region_name(regions[*face])), 1);
     }
@@ -100,7 +104,8 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
     let file = path.display().to_string();
     let (faces, source) = match extension(path).as_str() {
         "off" => {
-            let text = std::fs::read_to_string(path).map_err(|e| err!(Parse, "{file}: cannot read: {e}").with_path(path))?;
+            let text =
+                std::fs::read_to_string(path).map_err(|e| err!(Parse, "{file}: cannot read: {e}").with_path(path))?;
             let mesh = gmap_ops::import::PolygonMesh::parse(&text)
                 .map_err(|e| Error::from_source(ErrorKind::Parse, &e).context(file.clone()).with_path(path))?;
             let polys = mesh.polygons.into_iter().map(|p| vec![p]).collect();
@@ -113,10 +118,10 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
             }
             other => {
                 return Err(err!(
-                    Unsupported,
-                    "{file}: rooms are found in faces with points, an .off polygon soup or a .json 2-complex, not in a {}",
-                    other.kind()
-                ))
+                Unsupported,
+                "{file}: rooms are found in faces with points, an .off polygon soup or a .json 2-complex, not in a {}",
+                other.kind()
+            ))
             }
         },
     };

@@ -183,17 +183,17 @@ pub fn tm_views(input: &Input, cell: Option<&str>) -> Result<String> {
         }
         let _ = writeln!(s, "views of the {}-cells (TM 7:1) and the {dim}-cells on their sides (TM 7:3):", dim - 1);
         for &c in t.regions_of_dim(dim - 1) {
-            let view = t.view(&SignedSet::cell(c as usize));
+            let view = t.view(&SignedSet::cell(c));
             let mut per_dim = vec![0usize; dim];
             for (x, _, _) in view.iter() {
                 per_dim[t.cell_dim(x)] += 1;
             }
             let parts: Vec<String> = (0..dim - 1).rev().map(|k| format!("{} {k}-cells", per_dim[k])).collect();
-            let sides = match t.try_sides(c as usize) {
+            let sides = match t.try_sides(c) {
                 Ok(sd) => format!("near {}, far {}", side(sd.near), side(sd.far)),
                 Err(e) => format!("no near and far: {e}"),
             };
-            let _ = writeln!(s, "  {}: {sides}; boundary {}", n.names[c as usize], parts.join(", "));
+            let _ = writeln!(s, "  {}: {sides}; boundary {}", n.names[c], parts.join(", "));
         }
         return Ok(s);
     };

@@ -86,12 +86,12 @@ pub enum JsonError {
     /// The data violates AC Def. 3.1 (or its signs left out cannot be chosen); the names
     /// are the file's (its ids, strings or numbers, and `name` labels).
     #[error("{}", .0.named(.1))]
-    Arch(ArchError, RegionNames),
+    Arch(ArchError, Box<RegionNames>),
 }
 
 impl From<ArchError> for JsonError {
     fn from(e: ArchError) -> Self {
-        JsonError::Arch(e, RegionNames::new())
+        JsonError::Arch(e, Box::default())
     }
 }
 
@@ -121,9 +121,10 @@ fn get_key(obj: &Value, at: At<'_>, key: &str) -> Result<Key, JsonError> {
     let v = field(obj, at, key)?;
     match v {
         Value::String(t) => Ok(Key::Str(t.clone())),
-        _ => v.as_u64().map(Key::Int).ok_or_else(|| {
-            schema(at.path(key), format!("expected a non-negative integer or a string, found {v}"))
-        }),
+        _ => v
+            .as_u64()
+            .map(Key::Int)
+            .ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer or a string, found {v}"))),
     }
 }
 
@@ -254,7 +255,10 @@ fn point(v: &[f64], index: usize) -> Result<[f64; 3], JsonError> {
     match *v {
         [x, y] => Ok([x, y, 0.0]),
         [x, y, z] => Ok([x, y, z]),
-        _ => Err(schema(At { list: "regions", index }.path("point"), format!("expected 2 or 3 coordinates, found {}", v.len()))),
+        _ => Err(schema(
+            At { list: "regions", index }.path("point"),
+            format!("expected 2 or 3 coordinates, found {}", v.len()),
+        )),
     }
 }
 
@@ -300,7 +304,12 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
 /// The complex of what the file says: string ids numbered after the largest number used,
 /// signs left out chosen, errors naming regions as the file does.
 fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
-    let mut next = p.regions.iter().filter_map(|(k, _)| if let Key::Int(i) = k { Some(*i) } else { None }).max().map_or(0, |m| m.saturating_add(1));
+    let mut next = p
+        .regions
+        .iter()
+        .filter_map(|(k, _)| if let Key::Int(i) = k { Some(*i) } else { None })
+        .max()
+        .map_or(0, |m| m.saturating_add(1));
     let mut numbers: std::collections::HashMap<Key, RegionId> = std::collections::HashMap::new();
     let mut names = RegionNames::new();
     let mut number = |k: &Key, names: &mut RegionNames| -> Result<RegionId, JsonError> {
@@ -342,7 +351,7 @@ fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
     for (f, t, w) in &p.entries {
         entries.push((number(f, &mut names)?, number(t, &mut names)?, *w));
     }
-    let wrap = |e: ArchError| JsonError::Arch(e, names.clone());
+    let wrap = |e: ArchError| JsonError::Arch(e, Box::new(names.clone()));
     let dim = p.dim.unwrap_or_else(|| regions.iter().map(|r| r.dim).max().unwrap_or(0));
     let pts: std::collections::HashMap<RegionId, [f64; 3]> =
         p.points.iter().map(|&(k, q)| (regions[k].id, q)).collect();
@@ -549,7 +558,10 @@ mod tests {
         assert_eq!(back.region_labels(2).get("length"), Some(&LabelValue::Real(2.0)));
         assert!(back.region_labels(0).is_empty());
         // the tree-based reader (taken when the fast one fails) keeps them too
-        assert_eq!(build(read_json_slow(&text).unwrap()).unwrap().region_labels(2).get("count"), Some(&LabelValue::Int(-7)));
+        assert_eq!(
+            build(read_json_slow(&text).unwrap()).unwrap().region_labels(2).get("count"),
+            Some(&LabelValue::Int(-7))
+        );
     }
 
     #[test]

@@ -281,7 +281,21 @@ impl ArchComplex {
         let betti = vec![None; nr];
         let labels = vec![Labels::new(); nr];
         let (keys, points) = (vec![None; nr], vec![None; nr]);
-        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim, betti, labels, keys, points }
+        ArchComplex {
+            dim,
+            regions,
+            by_id,
+            entries,
+            down_off,
+            up_off,
+            up,
+            rank_in_dim,
+            per_dim,
+            betti,
+            labels,
+            keys,
+            points,
+        }
     }
 
     /// The complex with region `id` given its own topology: the Betti numbers

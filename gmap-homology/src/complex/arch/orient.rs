@@ -24,7 +24,6 @@ use super::model::{ArchError, Region, RegionId};
 /// An entry whose weight may be left out.
 pub type LooseEntry = (RegionId, RegionId, Option<i64>);
 
-
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
@@ -221,7 +220,11 @@ pub fn orient_entries(
                             (Some(p), Some(q)) => p <= q,
                             _ => true,
                         };
-                        if first_low { vec![-1, 1] } else { vec![1, -1] }
+                        if first_low {
+                            vec![-1, 1]
+                        } else {
+                            vec![1, -1]
+                        }
                     }
                     _ => return Err(st.fail(c, format!("an edge has one or two ends, not {}", faces.len()))),
                 };

@@ -180,7 +180,10 @@ impl Faces {
             let (u, v) = edges[e];
             let d = sub(points[v as usize], points[u as usize]);
             // the direction from the edge into each face: n × (t d)
-            let into: Vec<P> = list.iter().map(|&(f, t)| cross(normals[f], [t as f64 * d[0], t as f64 * d[1], t as f64 * d[2]])).collect();
+            let into: Vec<P> = list
+                .iter()
+                .map(|&(f, t)| cross(normals[f], [t as f64 * d[0], t as f64 * d[1], t as f64 * d[2]]))
+                .collect();
             let e1 = into[0];
             let e2 = cross(d, e1);
             let mut order: Vec<(f64, usize)> =
