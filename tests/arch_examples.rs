@@ -154,3 +154,25 @@ fn tm_check_fails_with_the_cells_named() {
         stderr(&refused)
     );
 }
+
+#[test]
+fn generators_name_regions_by_the_files_ids_and_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("named.json");
+    let tet = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/arch/tetrahedron.json");
+    let text = std::fs::read_to_string(tet).unwrap();
+    std::fs::write(&file, text.replace(r#"{"id": 10, "dim": 2}"#, r#"{"id": 10, "dim": 2, "labels": {"name": "roof"}}"#))
+        .unwrap();
+    let o = gmap(&["homology", p(&file), "--generators"]);
+    assert!(
+        stdout(&o).ends_with("generator of H_2 (Z): -1 region 10 (roof) +1 region 11 -1 region 12 +1 region 13\n"),
+        "{}",
+        stdout(&o)
+    );
+    let o = gmap(&["homology", p(&file), "--generators", "--json"]);
+    assert!(stdout(&o).contains(r#"{"cell":{"name":"roof","region":10},"coefficient":-1}"#), "{}", stdout(&o));
+    // string ids: the file's id in the JSON
+    let floor = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/arch/floor_court.json");
+    let o = gmap(&["homology", p(&floor), "--generators", "--json"]);
+    assert!(stdout(&o).contains(r#"{"cell":{"region":"e4"},"coefficient":-1}"#), "{}", stdout(&o));
+}
