@@ -161,8 +161,11 @@ fn generators_name_regions_by_the_files_ids_and_names() {
     let file = dir.path().join("named.json");
     let tet = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/arch/tetrahedron.json");
     let text = std::fs::read_to_string(tet).unwrap();
-    std::fs::write(&file, text.replace(r#"{"id": 10, "dim": 2}"#, r#"{"id": 10, "dim": 2, "labels": {"name": "roof"}}"#))
-        .unwrap();
+    std::fs::write(
+        &file,
+        text.replace(r#"{"id": 10, "dim": 2}"#, r#"{"id": 10, "dim": 2, "labels": {"name": "roof"}}"#),
+    )
+    .unwrap();
     let o = gmap(&["homology", p(&file), "--generators"]);
     assert!(
         stdout(&o).ends_with("generator of H_2 (Z): -1 region 10 (roof) +1 region 11 -1 region 12 +1 region 13\n"),
