@@ -362,7 +362,7 @@ fn region_betti_numbers_in_json() {
     assert!(!write_json(&floor_plan()).contains("betti"));
     // refusals: numbers no region has, and a malformed field, each with the region or path
     let e = read_json(r#"{"regions": [{"id": 7, "dim": 2, "betti": [1, 1, 1]}], "incidence": []}"#).unwrap_err();
-    assert!(matches!(e, JsonError::Arch(ArchError::RegionBetti { id: RegionId(7), .. })), "{e}");
+    assert!(matches!(e, JsonError::Arch(ArchError::RegionBetti { id: RegionId(7), .. }, _)), "{e}");
     let e = read_json(r#"{"regions": [{"id": 7, "dim": 2, "betti": "torus"}], "incidence": []}"#).unwrap_err();
     assert_eq!(e.to_string(), r#"regions[0].betti: expected an array of non-negative integers, found "torus""#);
 }
@@ -415,7 +415,7 @@ fn dot_output() {
 
 fn arch_err(text: &str) -> ArchError {
     match read_json(text) {
-        Err(JsonError::Arch(e)) => e,
+        Err(JsonError::Arch(e, _)) => e,
         other => panic!("expected an AC error, got {other:?}"),
     }
 }
@@ -454,7 +454,7 @@ fn reader_rejects_each_violation() {
     // not JSON, or JSON of the wrong shape
     assert!(matches!(read_json("{\"regions\": [}"), Err(JsonError::Syntax { line: 1, .. })));
     let e = read_json(r#"{"regions": [{"id": -1, "dim": 0}], "incidence": []}"#).unwrap_err();
-    assert_eq!(e.to_string(), "regions[0].id: expected a non-negative integer, found -1");
+    assert_eq!(e.to_string(), "regions[0].id: expected a non-negative integer or a string, found -1");
     let e = read_json(r#"{"regions": [{"id": 1, "dim": 0}]}"#).unwrap_err();
     assert_eq!(e.to_string(), "incidence: missing");
 }

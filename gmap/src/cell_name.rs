@@ -21,6 +21,16 @@ pub enum CellName {
     },
     /// a region of an architectural complex by its id
     Region(u64),
+    /// a region of an architectural complex that its file names: its string id (`key`),
+    /// its `name` label, or both
+    NamedRegion {
+        /// the number the region has inside (its id when the file gives a number)
+        id: u64,
+        /// the string id of the file
+        key: Option<String>,
+        /// the region's `name` label
+        name: Option<String>,
+    },
     /// an elementary cube of a cubical set: its minimal vertex and its extent (0 or 1) per
     /// axis
     Cube {
@@ -47,11 +57,22 @@ impl CellName {
                 v
             }
             CellName::Region(id) => json!({ "region": id }),
+            CellName::NamedRegion { id, key, name } => {
+                let mut v = match key {
+                    Some(k) => json!({ "region": k }),
+                    None => json!({ "region": id }),
+                };
+                if let Some(n) = name {
+                    v["name"] = json!(n);
+                }
+                v
+            }
             CellName::Cube { min, extent } => json!({ "cube": min, "extent": extent }),
         }
     }
 
-    /// The text of the name: `[1,2,3]`, `dart 5 at (0, 1, 0)`, `region 7`, `[0,1]x2`.
+    /// The text of the name: `[1,2,3]`, `dart 5 at (0, 1, 0)`, `region 7`, `region door`,
+    /// `region 12 (kitchen)`, `[0,1]x2`.
     pub fn to_text(&self) -> String {
         let list = |v: &[u64]| v.iter().map(u64::to_string).collect::<Vec<_>>().join(",");
         match self {
@@ -68,6 +89,13 @@ impl CellName {
                 t
             }
             CellName::Region(id) => format!("region {id}"),
+            CellName::NamedRegion { id, key, name } => {
+                let base = key.clone().unwrap_or_else(|| id.to_string());
+                match name {
+                    Some(n) if *n != base => format!("region {base} ({n})"),
+                    _ => format!("region {base}"),
+                }
+            }
             CellName::Cube { min, extent } => min
                 .iter()
                 .zip(extent)

@@ -286,11 +286,13 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
             "{file}: an architectural complex has no simplicial counterpart; use --method cellular"
         ));
     }
+    let original = x;
     let topological;
     let x = if o.topological {
-        let t = x
-            .topological(ZeroWeightRule::Closed)
-            .map_err(|e| Error::from_source(ErrorKind::Precondition, &e).context(format!("{file}: Algorithm 8.16")))?;
+        let t = x.topological(ZeroWeightRule::Closed).map_err(|e| {
+            Error::new(ErrorKind::Precondition, e.named(&x.region_names()).to_string())
+                .context(format!("{file}: Algorithm 8.16"))
+        })?;
         for op in &t.operators {
             o.progress.stage(&format!("Algorithm 8.16: {op}"));
         }
@@ -299,13 +301,21 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
     } else {
         x
     };
-    let ids: Vec<Vec<u64>> =
-        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| x.region(r as usize).id.0).collect()).collect();
-    Ok(Named {
-        chain: x.chain_complex(),
-        name: Box::new(move |k, j| CellName::Region(ids[k][j as usize])),
-        relative: None,
-    })
+    // the file's names: a region Algorithm 8.16 added has none and goes by its number
+    let named = |r: usize| {
+        let id = x.region(r).id;
+        let k = original.index_of(id).filter(|&i| original.region(i).dim == x.region(r).dim);
+        let key = k.and_then(|i| original.region_key(i)).map(str::to_string);
+        let name = k.and_then(|i| original.name_label(i)).map(str::to_string);
+        if key.is_none() && name.is_none() {
+            CellName::Region(id.0)
+        } else {
+            CellName::NamedRegion { id: id.0, key, name }
+        }
+    };
+    let names: Vec<Vec<CellName>> =
+        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| named(r as usize)).collect()).collect();
+    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| names[k][j as usize].clone()), relative: None })
 }
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes

@@ -144,7 +144,7 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
                 for (g, name) in gens.iter().zip(generator_names(&gens)) {
                     let mut cells = Vec::with_capacity(g.chain.len());
                     for (c, _) in &g.chain {
-                        if let CellName::Region(id) = c {
+                        if let CellName::Region(id) | CellName::NamedRegion { id, .. } = c {
                             let r = x
                                 .index_of((*id).into())
                                 .ok_or_else(|| err!(Compute, "generator region {id} is unknown"))?;

@@ -136,7 +136,12 @@ pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
             return Some(CellName::Simplex(a.iter().map(|x| x.as_u64()).collect::<Option<Vec<_>>>()?));
         }
         if let Some(r) = c.get("region") {
-            return Some(CellName::Region(r.as_u64()?));
+            let name = c.get("name").and_then(|n| n.as_str()).map(str::to_string);
+            return Some(match (r.as_u64(), r.as_str()) {
+                (Some(id), _) if name.is_none() => CellName::Region(id),
+                (Some(id), _) => CellName::NamedRegion { id, key: None, name },
+                (None, key) => CellName::NamedRegion { id: 0, key: Some(key?.to_string()), name },
+            });
         }
         if let Some(cube) = c.get("cube") {
             let min = cube.as_array()?.iter().map(|x| x.as_i64()).collect::<Option<Vec<_>>>()?;
@@ -180,7 +185,7 @@ pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
     let kind = match (route, generators.as_ref().and_then(|g| g.iter().flat_map(|x| x.chain.first()).next())) {
         (Some(_), _) => "simplicial complex",
         (None, Some((CellName::Cube { .. }, _))) => "cubical set",
-        (None, Some((CellName::Region(_), _))) => "architectural complex",
+        (None, Some((CellName::Region(_) | CellName::NamedRegion { .. }, _))) => "architectural complex",
         _ => "map",
     };
     Some(Report {

@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod persistence;
+mod tm;
 mod view;
 
 /// Generalized maps: build, inspect, convert, and compute homology on the cells.
@@ -70,7 +71,7 @@ struct Limits {
 
 #[derive(Args, Debug)]
 struct InfoArgs {
-    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     file: PathBuf,
     /// print one JSON object
     #[arg(long)]
@@ -87,7 +88,7 @@ struct InfoArgs {
 
 #[derive(Args, Debug)]
 struct HomologyArgs {
-    /// the input file
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
     file: PathBuf,
     /// cellular (default) or simplicial
     #[arg(long, value_enum, default_value_t = Method::Cellular)]
@@ -180,6 +181,21 @@ enum Command {
     View(view::ViewArgs),
     /// Persistence diagram of a filtration: an image, valued facets, a labelled .gmap.
     Persistence(persistence::PersistenceArgs),
+    /// Corbett's topological models (docs/TM.md): the edit check and the views of a model.
+    Tm(tm::TmArgs),
+    /// Rooms from walls: the 3-cells of faces in space (.off polygon soup, .json 2-complex
+    /// with points), written as a 3-complex whose volumes are the rooms (docs/LAR.md).
+    Rooms(RoomsArgs),
+}
+
+#[derive(Args, Debug)]
+struct RoomsArgs {
+    /// the faces: an .off polygon soup or a .json 2-complex with points
+    input: PathBuf,
+    /// the rooms: .json, .dot, or a map format (.gmap, .moka, .vtk, ...)
+    output: PathBuf,
+    #[command(flatten)]
+    limits: Limits,
 }
 
 /// Runs the command line; returns the process exit code.
@@ -196,6 +212,8 @@ pub fn run() -> ExitCode {
         Command::Bench(a) => bench(a, quiet),
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
+        Command::Tm(a) => return tm::run(a),
+        Command::Rooms(a) => gmap::rooms_file(&a.input, &a.output, a.limits.max_darts).map(|r| r.to_text()),
         Command::Convert(a) => convert(a, quiet),
     };
     match text {

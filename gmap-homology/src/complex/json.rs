@@ -43,7 +43,7 @@ use thiserror::Error;
 
 use gmap_core::{LabelValue, Labels};
 
-use crate::complex::arch::{ArchComplex, ArchError, Region, RegionId};
+use crate::complex::arch::{orient_entries, ArchComplex, ArchError, Region, RegionId, RegionNames};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]
@@ -83,9 +83,16 @@ pub enum JsonError {
     /// The file could not be read.
     #[error("cannot read: {0}")]
     Io(String),
-    /// The data violates AC Def. 3.1.
-    #[error(transparent)]
-    Arch(#[from] ArchError),
+    /// The data violates AC Def. 3.1 (or its signs left out cannot be chosen); the names
+    /// are the file's (its ids, strings or numbers, and `name` labels).
+    #[error("{}", .0.named(.1))]
+    Arch(ArchError, Box<RegionNames>),
+}
+
+impl From<ArchError> for JsonError {
+    fn from(e: ArchError) -> Self {
+        JsonError::Arch(e, Box::default())
+    }
 }
 
 fn schema(path: impl Into<String>, problem: impl Into<String>) -> JsonError {
@@ -110,6 +117,17 @@ fn field<'a>(obj: &'a Value, at: At<'_>, key: &str) -> Result<&'a Value, JsonErr
     o.get(key).ok_or_else(|| schema(at.path(key), "missing"))
 }
 
+fn get_key(obj: &Value, at: At<'_>, key: &str) -> Result<Key, JsonError> {
+    let v = field(obj, at, key)?;
+    match v {
+        Value::String(t) => Ok(Key::Str(t.clone())),
+        _ => v
+            .as_u64()
+            .map(Key::Int)
+            .ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer or a string, found {v}"))),
+    }
+}
+
 fn get_u64(obj: &Value, at: At<'_>, key: &str) -> Result<u64, JsonError> {
     let v = field(obj, at, key)?;
     v.as_u64().ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer, found {v}")))
@@ -127,9 +145,17 @@ fn check_dim(d: u64, path: impl FnOnce() -> String) -> Result<usize, JsonError> 
         .ok_or_else(|| schema(path(), format!("dimension {d} is too large")))
 }
 
+/// A region's id in the file: a number or a string.
+#[derive(Clone, Debug, Deserialize, PartialEq, Eq, Hash)]
+#[serde(untagged)]
+enum Key {
+    Int(u64),
+    Str(String),
+}
+
 #[derive(Deserialize)]
 struct RawRegion {
-    id: u64,
+    id: Key,
     dim: u64,
     /// the region's own Betti numbers (AC Def. 8.1), when it is not a cell
     #[serde(default)]
@@ -137,6 +163,9 @@ struct RawRegion {
     /// the region's labels, in the order of the file
     #[serde(default)]
     labels: Option<RawLabels>,
+    /// a vertex's coordinates
+    #[serde(default)]
+    point: Option<Vec<f64>>,
 }
 
 /// A `"labels"` object, its members in the order of the text.
@@ -187,14 +216,6 @@ fn region_labels(members: &[(String, Value)], index: usize) -> Result<Labels, Js
     Ok(out)
 }
 
-/// The complex with the labels given to its regions (`(region id, labels)`).
-fn with_labels(mut x: ArchComplex, labels: Vec<(RegionId, Labels)>) -> Result<ArchComplex, JsonError> {
-    for (id, l) in labels {
-        x = x.with_region_labels(id, l)?;
-    }
-    Ok(x)
-}
-
 /// The optional `"betti"` of region `index`, as counts.
 fn betti_counts(v: &[u64], index: usize) -> Result<Vec<usize>, JsonError> {
     v.iter()
@@ -203,19 +224,13 @@ fn betti_counts(v: &[u64], index: usize) -> Result<Vec<usize>, JsonError> {
         .ok_or_else(|| schema(At { list: "regions", index }.path("betti"), "a Betti number is too large"))
 }
 
-/// The complex with the Betti numbers given to its regions (`(region id, numbers)`).
-fn with_betti(mut x: ArchComplex, betti: Vec<(RegionId, Vec<usize>)>) -> Result<ArchComplex, JsonError> {
-    for (id, b) in betti {
-        x = x.with_region_betti(id, b)?;
-    }
-    Ok(x)
-}
-
 #[derive(Deserialize)]
 struct RawEntry {
-    from: u64,
-    to: u64,
-    weight: i64,
+    from: Key,
+    to: Key,
+    /// left out: chosen so that every boundary is a cycle (`arch::orient_entries`)
+    #[serde(default)]
+    weight: Option<i64>,
 }
 
 #[derive(Deserialize)]
@@ -223,6 +238,28 @@ struct Raw {
     dimension: Option<u64>,
     regions: Vec<RawRegion>,
     incidence: Vec<RawEntry>,
+}
+
+/// What the file says, before the ids become numbers.
+struct Parsed {
+    dim: Option<usize>,
+    regions: Vec<(Key, usize)>,
+    betti: Vec<(usize, Vec<usize>)>,
+    labels: Vec<(usize, Labels)>,
+    points: Vec<(usize, [f64; 3])>,
+    entries: Vec<(Key, Key, Option<i64>)>,
+}
+
+/// A point of 2 or 3 finite coordinates (a missing z is 0).
+fn point(v: &[f64], index: usize) -> Result<[f64; 3], JsonError> {
+    match *v {
+        [x, y] => Ok([x, y, 0.0]),
+        [x, y, z] => Ok([x, y, z]),
+        _ => Err(schema(
+            At { list: "regions", index }.path("point"),
+            format!("expected 2 or 3 coordinates, found {}", v.len()),
+        )),
+    }
 }
 
 /// Parses and validates a `.json` architectural complex. See the module docs.
@@ -235,31 +272,115 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
     }
     let raw: Raw = match serde_json::from_str(text) {
         Ok(raw) => raw,
-        Err(_) => return read_json_slow(text),
+        Err(_) => return build(read_json_slow(text)?),
     };
-    let mut regions = Vec::with_capacity(raw.regions.len());
-    let mut betti = Vec::new();
-    let mut labels = Vec::new();
-    for (index, r) in raw.regions.iter().enumerate() {
+    let mut p = Parsed {
+        dim: match raw.dimension {
+            Some(d) => Some(check_dim(d, || "dimension".to_string())?),
+            None => None,
+        },
+        regions: Vec::with_capacity(raw.regions.len()),
+        betti: Vec::new(),
+        labels: Vec::new(),
+        points: Vec::new(),
+        entries: raw.incidence.into_iter().map(|e| (e.from, e.to, e.weight)).collect(),
+    };
+    for (index, r) in raw.regions.into_iter().enumerate() {
         let dim = check_dim(r.dim, || At { list: "regions", index }.path("dim"))?;
-        regions.push(Region { id: RegionId(r.id), dim });
+        p.regions.push((r.id, dim));
         if let Some(b) = &r.betti {
-            betti.push((RegionId(r.id), betti_counts(b, index)?));
+            p.betti.push((index, betti_counts(b, index)?));
         }
         if let Some(l) = &r.labels {
-            labels.push((RegionId(r.id), region_labels(&l.0, index)?));
+            p.labels.push((index, region_labels(&l.0, index)?));
+        }
+        if let Some(v) = &r.point {
+            p.points.push((index, point(v, index)?));
         }
     }
-    let dim = match raw.dimension {
-        Some(d) => check_dim(d, || "dimension".to_string())?,
-        None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
+    build(p)
+}
+
+/// The complex of what the file says: string ids numbered after the largest number used,
+/// signs left out chosen, errors naming regions as the file does.
+fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
+    let mut next = p
+        .regions
+        .iter()
+        .filter_map(|(k, _)| if let Key::Int(i) = k { Some(*i) } else { None })
+        .max()
+        .map_or(0, |m| m.saturating_add(1));
+    let mut numbers: std::collections::HashMap<Key, RegionId> = std::collections::HashMap::new();
+    let mut names = RegionNames::new();
+    let mut number = |k: &Key, names: &mut RegionNames| -> Result<RegionId, JsonError> {
+        match k {
+            Key::Int(i) => Ok(RegionId(*i)),
+            Key::Str(t) => {
+                if let Some(&id) = numbers.get(k) {
+                    return Ok(id);
+                }
+                if next == u64::MAX {
+                    return Err(ArchError::IdsExhausted.into());
+                }
+                let id = RegionId(next);
+                next += 1;
+                numbers.insert(k.clone(), id);
+                names.insert(id, t.clone());
+                Ok(id)
+            }
+        }
     };
-    let entries = raw.incidence.iter().map(|e| (RegionId(e.from), RegionId(e.to), e.weight)).collect();
-    with_labels(with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)?, labels)
+    let mut regions = Vec::with_capacity(p.regions.len());
+    for (k, dim) in &p.regions {
+        regions.push(Region { id: number(k, &mut names)?, dim: *dim });
+    }
+    for (k, l) in &p.labels {
+        let key = match &p.regions[*k].0 {
+            Key::Str(t) => Some(t.as_str()),
+            Key::Int(_) => None,
+        };
+        let name = match l.get("name") {
+            Some(LabelValue::Text(t)) => Some(t.as_str()),
+            _ => None,
+        };
+        if let Some(n) = RegionNames::name_of(regions[*k].id, key, name) {
+            names.insert(regions[*k].id, n);
+        }
+    }
+    let mut entries = Vec::with_capacity(p.entries.len());
+    for (f, t, w) in &p.entries {
+        entries.push((number(f, &mut names)?, number(t, &mut names)?, *w));
+    }
+    let wrap = |e: ArchError| JsonError::Arch(e, Box::new(names.clone()));
+    let dim = p.dim.unwrap_or_else(|| regions.iter().map(|r| r.dim).max().unwrap_or(0));
+    let pts: std::collections::HashMap<RegionId, [f64; 3]> =
+        p.points.iter().map(|&(k, q)| (regions[k].id, q)).collect();
+    let entries = if entries.iter().any(|e| e.2.is_none()) {
+        orient_entries(dim, &regions, &entries, &pts).map_err(wrap)?
+    } else {
+        entries.into_iter().map(|(f, t, w)| (f, t, w.unwrap_or(0))).collect()
+    };
+    let ids: Vec<RegionId> = regions.iter().map(|r| r.id).collect();
+    let mut x = ArchComplex::try_new(dim, regions, entries).map_err(wrap)?;
+    for (k, b) in p.betti {
+        x = x.with_region_betti(ids[k], b).map_err(wrap)?;
+    }
+    for (k, l) in p.labels {
+        x = x.with_region_labels(ids[k], l).map_err(wrap)?;
+    }
+    for (k, q) in p.points {
+        x = x.with_region_point(ids[k], q).map_err(wrap)?;
+    }
+    for (k, (key, _)) in p.regions.into_iter().enumerate() {
+        if let Key::Str(t) = key {
+            x = x.with_region_key(ids[k], t).map_err(wrap)?;
+        }
+    }
+    Ok(x)
 }
 
 /// The tree-based reader, for its precise messages on malformed input.
-fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
+fn read_json_slow(text: &str) -> Result<Parsed, JsonError> {
     let root: Value = serde_json::from_str(text).map_err(|e| JsonError::Syntax {
         line: e.line(),
         column: e.column(),
@@ -270,45 +391,53 @@ fn read_json_slow(text: &str) -> Result<ArchComplex, JsonError> {
     };
     let regs = obj.get("regions").ok_or_else(|| schema("regions", "missing"))?;
     let regs = regs.as_array().ok_or_else(|| schema("regions", "expected an array"))?;
-    let mut regions = Vec::with_capacity(regs.len());
-    let mut betti = Vec::new();
-    let mut labels = Vec::new();
+    let mut p = Parsed {
+        dim: None,
+        regions: Vec::with_capacity(regs.len()),
+        betti: Vec::new(),
+        labels: Vec::new(),
+        points: Vec::new(),
+        entries: Vec::new(),
+    };
     for (index, r) in regs.iter().enumerate() {
         let at = At { list: "regions", index };
-        let id = get_u64(r, at, "id")?;
+        let id = get_key(r, at, "id")?;
         let dim = check_dim(get_u64(r, at, "dim")?, || at.path("dim"))?;
-        regions.push(Region { id: RegionId(id), dim });
+        p.regions.push((id, dim));
         if let Some(v) = r.get("betti") {
             let list =
                 v.as_array().and_then(|a| a.iter().map(Value::as_u64).collect::<Option<Vec<u64>>>()).ok_or_else(
                     || schema(at.path("betti"), format!("expected an array of non-negative integers, found {v}")),
                 )?;
-            betti.push((RegionId(id), betti_counts(&list, index)?));
+            p.betti.push((index, betti_counts(&list, index)?));
         }
         if let Some(v) = r.get("labels") {
             let members = v
                 .as_object()
                 .ok_or_else(|| schema(at.path("labels"), format!("expected an object of labels, found {v}")))?;
             let members: Vec<(String, Value)> = members.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
-            labels.push((RegionId(id), region_labels(&members, index)?));
+            p.labels.push((index, region_labels(&members, index)?));
+        }
+        if let Some(v) = r.get("point") {
+            let c = v
+                .as_array()
+                .and_then(|a| a.iter().map(Value::as_f64).collect::<Option<Vec<f64>>>())
+                .ok_or_else(|| schema(at.path("point"), format!("expected an array of numbers, found {v}")))?;
+            p.points.push((index, point(&c, index)?));
         }
     }
-    let dim = match obj.get("dimension") {
-        Some(v) => {
-            let d =
-                v.as_u64().ok_or_else(|| schema("dimension", format!("expected a non-negative integer, found {v}")))?;
-            check_dim(d, || "dimension".to_string())?
-        }
-        None => regions.iter().map(|r| r.dim).max().unwrap_or(0),
-    };
+    if let Some(v) = obj.get("dimension") {
+        let d = v.as_u64().ok_or_else(|| schema("dimension", format!("expected a non-negative integer, found {v}")))?;
+        p.dim = Some(check_dim(d, || "dimension".to_string())?);
+    }
     let inc = obj.get("incidence").ok_or_else(|| schema("incidence", "missing"))?;
     let inc = inc.as_array().ok_or_else(|| schema("incidence", "expected an array"))?;
-    let mut entries = Vec::with_capacity(inc.len());
     for (index, e) in inc.iter().enumerate() {
         let at = At { list: "incidence", index };
-        entries.push((RegionId(get_u64(e, at, "from")?), RegionId(get_u64(e, at, "to")?), get_i64(e, at, "weight")?));
+        let w = if e.get("weight").is_some() { Some(get_i64(e, at, "weight")?) } else { None };
+        p.entries.push((get_key(e, at, "from")?, get_key(e, at, "to")?, w));
     }
-    with_labels(with_betti(ArchComplex::try_new(dim, regions, entries)?, betti)?, labels)
+    Ok(p)
 }
 
 /// Reads and validates a `.json` file; errors name the file (and the line for syntax).
@@ -339,6 +468,11 @@ fn json_string(t: &str) -> String {
     serde_json::Value::String(t.to_string()).to_string()
 }
 
+/// The id of region `k` as the file writes it: its string id quoted, or its number.
+fn key_text(x: &ArchComplex, k: usize) -> String {
+    x.region_key(k).map_or_else(|| x.region(k).id.to_string(), json_string)
+}
+
 /// Writes the complex in the `.json` format, one region or entry per line; a region given
 /// Betti numbers keeps them (`"betti"`), a region with labels keeps them (`"labels"`).
 pub fn write_json(x: &ArchComplex) -> String {
@@ -346,7 +480,10 @@ pub fn write_json(x: &ArchComplex) -> String {
     let _ = write!(s, "{{\"dimension\": {},\n \"regions\": [", x.dim());
     for (k, r) in x.regions().iter().enumerate() {
         let sep = if k == 0 { "" } else { ",\n  " };
-        let _ = write!(s, "{sep}{{\"id\": {}, \"dim\": {}", r.id, r.dim);
+        let _ = write!(s, "{sep}{{\"id\": {}, \"dim\": {}", key_text(x, k), r.dim);
+        if let Some([a, b, c]) = x.region_point(k) {
+            let _ = write!(s, ", \"point\": [{a:?}, {b:?}, {c:?}]");
+        }
         if x.has_region_betti(k) {
             let b: Vec<String> = x.region_betti(k).iter().map(|b| b.to_string()).collect();
             let _ = write!(s, ", \"betti\": [{}]", b.join(", "));
@@ -376,8 +513,9 @@ pub fn write_json(x: &ArchComplex) -> String {
         s.push('}');
     }
     s.push_str("],\n \"incidence\": [");
-    for (k, (f, t, w)) in x.entry_ids().into_iter().enumerate() {
+    for (k, e) in x.entries().iter().enumerate() {
         let sep = if k == 0 { "" } else { ",\n  " };
+        let (f, t, w) = (key_text(x, e.from), key_text(x, e.to), e.weight);
         let _ = write!(s, "{sep}{{\"from\": {f}, \"to\": {t}, \"weight\": {w}}}");
     }
     s.push_str("]}\n");
@@ -420,7 +558,10 @@ mod tests {
         assert_eq!(back.region_labels(2).get("length"), Some(&LabelValue::Real(2.0)));
         assert!(back.region_labels(0).is_empty());
         // the tree-based reader (taken when the fast one fails) keeps them too
-        assert_eq!(read_json_slow(&text).unwrap().region_labels(2).get("count"), Some(&LabelValue::Int(-7)));
+        assert_eq!(
+            build(read_json_slow(&text).unwrap()).unwrap().region_labels(2).get("count"),
+            Some(&LabelValue::Int(-7))
+        );
     }
 
     #[test]

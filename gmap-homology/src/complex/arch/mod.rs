@@ -43,9 +43,13 @@
 
 mod from_map;
 mod model;
+mod names;
+mod orient;
 mod topological;
 mod topology;
 
 pub use from_map::{all_cell_incidences, cell_incidences, CellIncidence, FromMapError};
 pub use model::{ArchComplex, ArchError, Entry, Region, RegionId};
+pub use names::{Named, RegionNames};
+pub use orient::orient_entries;
 pub use topological::{AppliedOperator, Step, Topological, ZeroWeightRule};

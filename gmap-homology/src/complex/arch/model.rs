@@ -4,7 +4,6 @@
 use std::collections::HashMap;
 
 use gmap_core::{LabelValue, Labels};
-use thiserror::Error;
 
 use crate::engine::chain::ChainComplex;
 use crate::engine::homology::{homology_z, homology_zp, Homology, HomologyError};
@@ -48,21 +47,19 @@ pub struct Entry {
     pub weight: i64,
 }
 
-/// Why data is not an architectural complex (AC Def. 3.1). Regions are named by id.
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
+/// Why data is not an architectural complex (AC Def. 3.1). Regions are named by id; with
+/// [`ArchError::named`], by the names of the file ([`RegionNames`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ArchError {
     /// A new region is needed but every `u64` id above the largest one is taken.
-    #[error("no region id is left above the largest id in use ({max})", max = u64::MAX)]
     IdsExhausted,
     /// Two regions share an id.
-    #[error("duplicate region id {id}")]
     DuplicateRegion {
         /// the id
         id: RegionId,
     },
     /// A region's dimension exceeds the complex's.
-    #[error("region {id} has dimension {dim}, above the complex's dimension {max}")]
     RegionDimension {
         /// the region
         id: RegionId,
@@ -72,7 +69,6 @@ pub enum ArchError {
         max: usize,
     },
     /// An entry names a region that does not exist.
-    #[error("incidence entry {from} -> {to} names the unknown region {missing}")]
     UnknownRegion {
         /// `from` of the entry
         from: RegionId,
@@ -82,7 +78,6 @@ pub enum ArchError {
         missing: RegionId,
     },
     /// The same pair appears twice.
-    #[error("duplicate incidence entry {from} -> {to}")]
     DuplicateEntry {
         /// `from`
         from: RegionId,
@@ -90,15 +85,11 @@ pub enum ArchError {
         to: RegionId,
     },
     /// The incidence graph has a directed cycle (listed in order, first id repeated last).
-    #[error("the incidence graph has a cycle: {}", join(cycle))]
     Cycle {
         /// the regions of the cycle
         cycle: Vec<RegionId>,
     },
     /// An entry does not go from a higher to a strictly lower dimension.
-    #[error(
-        "incidence entry {from} -> {to} goes from dimension {from_dim} to dimension {to_dim}: dimension must decrease"
-    )]
     DimensionNotDecreasing {
         /// `from`
         from: RegionId,
@@ -110,7 +101,6 @@ pub enum ArchError {
         to_dim: usize,
     },
     /// An entry across a dimension gap of two or more has a non-zero weight.
-    #[error("incidence entry {from} -> {to} crosses from dimension {from_dim} to {to_dim} with weight {weight}: an entry across a gap must be 0")]
     WeightAcrossGap {
         /// `from`
         from: RegionId,
@@ -124,7 +114,6 @@ pub enum ArchError {
         weight: i64,
     },
     /// `δ²` has a non-zero defined entry: the boundary of `from` has a non-zero boundary at `to`.
-    #[error("the boundary of the boundary of region {from} is {value} at region {to}, not 0: the partial boundary matrix does not square to zero (AC Def. 3.1)")]
     SquareNotZero {
         /// the upper region
         from: RegionId,
@@ -134,17 +123,12 @@ pub enum ArchError {
         value: i128,
     },
     /// An intermediate sum overflowed 128-bit integers (only with absurd weights).
-    #[error("integer overflow while checking δ² at region {from}")]
     Overflow {
         /// the upper region
         from: RegionId,
     },
     /// Betti numbers given to a region that no topological region of its dimension has
     /// (AC Def. 8.1: connected, orientable, bounded by closed orientable manifolds).
-    #[error(
-        "region {id} of dimension {dim} cannot have the Betti numbers ({}): {reason} (AC Def. 8.1)",
-        join_counts(betti)
-    )]
     RegionBetti {
         /// the region
         id: RegionId,
@@ -157,7 +141,6 @@ pub enum ArchError {
     },
     /// Algorithm 8.16 cannot cellulate a region from what the complex and its Betti numbers
     /// tell: the topological Betti numbers would be guessed, so none are given.
-    #[error("region {id} ({dim}-region with Betti numbers ({}) and {boundary} boundary component(s)): {reason}; Algorithm 8.16 cannot cellulate it (AC Def. 8.1, Theorem 8.11)", join_counts(betti))]
     RegionTopologyUnknown {
         /// the region
         id: RegionId,
@@ -170,22 +153,25 @@ pub enum ArchError {
         /// why
         reason: &'static str,
     },
+    /// Incidence signs were left out and cannot be chosen: the boundary of the region is
+    /// not a cycle for any choice of signs (or its points do not say which way it turns).
+    CannotOrient {
+        /// the region
+        id: RegionId,
+        /// its dimension
+        dim: usize,
+        /// why
+        reason: String,
+        /// the region where it fails, if one
+        at: Option<RegionId>,
+    },
     /// A region label whose value is a real that is not finite.
-    #[error("region {id}: the label `{name}` is not a finite real")]
     LabelNotFinite {
         /// the region
         id: RegionId,
         /// the label's name
         name: String,
     },
-}
-
-fn join_counts(v: &[usize]) -> String {
-    v.iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", ")
-}
-
-fn join(ids: &[RegionId]) -> String {
-    ids.iter().map(|i| i.to_string()).collect::<Vec<_>>().join(" -> ")
 }
 
 /// An architectural complex (AC Def. 3.1). Immutable once built; see the module docs.
@@ -213,10 +199,15 @@ pub struct ArchComplex {
     pub(super) betti: Vec<Option<Vec<usize>>>,
     /// the labels of each region (empty: none), e.g. a room's name
     pub(super) labels: Vec<Labels>,
+    /// the string id the file gave each region (`None`: its number is its id)
+    pub(super) keys: Vec<Option<String>>,
+    /// the point of each region (0-regions of a file with coordinates)
+    pub(super) points: Vec<Option<[f64; 3]>>,
 }
 
-/// Equality is an equivalence: the only reals a complex holds are region labels, and
-/// [`ArchComplex::with_region_labels`] refuses those that are not finite (NaN among them).
+/// Equality is an equivalence: the only reals a complex holds are region labels and points,
+/// which [`ArchComplex::with_region_labels`] and [`ArchComplex::with_region_point`] refuse
+/// when not finite (NaN among them).
 impl Eq for ArchComplex {}
 
 impl ArchComplex {
@@ -289,7 +280,22 @@ impl ArchComplex {
         }
         let betti = vec![None; nr];
         let labels = vec![Labels::new(); nr];
-        ArchComplex { dim, regions, by_id, entries, down_off, up_off, up, rank_in_dim, per_dim, betti, labels }
+        let (keys, points) = (vec![None; nr], vec![None; nr]);
+        ArchComplex {
+            dim,
+            regions,
+            by_id,
+            entries,
+            down_off,
+            up_off,
+            up,
+            rank_in_dim,
+            per_dim,
+            betti,
+            labels,
+            keys,
+            points,
+        }
     }
 
     /// The complex with region `id` given its own topology: the Betti numbers
@@ -343,6 +349,37 @@ impl ArchComplex {
         }
         self.labels[r] = labels;
         Ok(self)
+    }
+
+    /// The complex with region `id` known by the string `key` in its file (`.json` ids may
+    /// be strings; the region keeps its number inside). Fails with
+    /// [`ArchError::UnknownRegion`] for an unknown id. O(1).
+    pub fn with_region_key(mut self, id: RegionId, key: String) -> Result<Self, ArchError> {
+        let r = self.index_of(id).ok_or(ArchError::UnknownRegion { from: id, to: id, missing: id })?;
+        self.keys[r] = Some(key);
+        Ok(self)
+    }
+
+    /// The string id of region `index` in its file, if it had one. O(1).
+    pub fn region_key(&self, index: usize) -> Option<&str> {
+        self.keys[index].as_deref()
+    }
+
+    /// The complex with region `id` at the point `p` (a vertex's coordinates). Fails with
+    /// [`ArchError::UnknownRegion`] for an unknown id and [`ArchError::LabelNotFinite`]
+    /// (label `point`) for a coordinate that is not finite. O(1).
+    pub fn with_region_point(mut self, id: RegionId, p: [f64; 3]) -> Result<Self, ArchError> {
+        let r = self.index_of(id).ok_or(ArchError::UnknownRegion { from: id, to: id, missing: id })?;
+        if p.iter().any(|x| !x.is_finite()) {
+            return Err(ArchError::LabelNotFinite { id, name: "point".into() });
+        }
+        self.points[r] = Some(p);
+        Ok(self)
+    }
+
+    /// The point of region `index`, if it has one. O(1).
+    pub fn region_point(&self, index: usize) -> Option<[f64; 3]> {
+        self.points[index]
     }
 
     /// The labels of region `index` (empty when it has none). O(1).

@@ -14,7 +14,9 @@
 //!   top cells by the sign of their area or volume: [`Lar::signed_boundary_planar`],
 //!   [`Lar::signed_boundary_solid`]);
 //! * cycle extraction: the 2-cells of a planar arrangement from its edges
-//!   ([`PlanarGraph::extract`], the paper's stripes: [`PlanarGraph::stripes`]).
+//!   ([`PlanarGraph::extract`], the paper's stripes: [`PlanarGraph::stripes`]); one
+//!   dimension up, the 3-cells of faces in space, rooms from walls ([`Faces::cells`], the
+//!   δ∂ steps: [`Faces::extraction_steps`]).
 //!
 //! The item-by-item map of the lecture to this code and its tests is `docs/LAR.md`.
 //!
@@ -37,9 +39,11 @@
 //! ```
 
 mod cycles;
+mod rooms;
 mod signed;
 
 pub use cycles::{Arrangement, ArrangementError, Cycle, PlanarGraph, Stripe};
+pub use rooms::{Cells, ExtractionStep, Faces, RoomsError};
 
 mod model;
 pub use model::{characteristic_matrix, Lar, LarError, LarOp};

@@ -1,0 +1,247 @@
+//! The docs are tested: every command shown in README.md and docs/*.md runs here and its
+//! output is compared with the text shown.
+//!
+//! A command is shown in a fenced block whose info string is `console`: a line `$ gmap …`,
+//! then what it prints (stdout, then stderr), up to the next `$ ` line or the end of the
+//! block. In the expected text a line `...` stands for any number of lines and `[..]` for
+//! any part of a line. A command that fails shows `? N` (its exit code) as the first line of
+//! its output. Commands run from a temporary folder that links `tests`, `docs` and
+//! `examples` of the repository, so `tests/data/…` paths work as from the root and the files
+//! they write land in the temporary folder.
+//!
+//! Every other line that shows a command (an indented `    gmap …`, `$ gmap …` outside a
+//! `console` block, a `sh` block) must be a usage synopsis (it has a placeholder such as
+//! `FILE`, `IN`, `OUT` or `[`), be run by a `console` block somewhere in the docs, or be
+//! listed in [`NOT_RUN`] with the reason; so a command example cannot be added without
+//! being run.
+//!
+//! After a merge: `cargo test --profile test-release --test docs_commands` lists every
+//! mismatch at once (file, line, the command, expected and actual output).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Commands shown but not run, with the reason.
+const NOT_RUN: &[(&str, &str)] = &[
+    ("cargo run --release -- demo", "builds the release binary (fat LTO, minutes); `gmap demo` is run below instead"),
+    ("scripts/test", "runs the whole test suite, this test included"),
+    (
+        "cargo run --release --example view -- OUT_DIR",
+        "writes the pages of every demo object; tests/view_cli.rs runs the example",
+    ),
+    ("python3 benches/anchors/compare_gudhi.py", "a benchmark against GUDHI (minutes, needs the bench data)"),
+    ("cargo bench --bench simplify_figures", "a benchmark"),
+    ("cargo bench --bench simplify", "a benchmark"),
+];
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn doc_files() -> Vec<PathBuf> {
+    let mut v = vec![root().join("README.md")];
+    let mut docs: Vec<PathBuf> = std::fs::read_dir(root().join("docs"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    docs.sort();
+    v.extend(docs);
+    v
+}
+
+/// A command of a console block: its line in the file, the command, the expected output.
+struct Case {
+    line: usize,
+    command: String,
+    expected: Vec<String>,
+}
+
+/// The console blocks' commands, and the other command lines (line, text).
+fn parse(text: &str) -> (Vec<Case>, Vec<(usize, String)>) {
+    let mut cases = Vec::new();
+    let mut others = Vec::new();
+    let mut fence: Option<String> = None;
+    for (k, line) in text.lines().enumerate() {
+        let n = k + 1;
+        if let Some(info) = line.strip_prefix("```") {
+            fence = if fence.is_some() { None } else { Some(info.trim().to_string()) };
+            continue;
+        }
+        match fence.as_deref() {
+            Some("console") => {
+                if let Some(cmd) = line.strip_prefix("$ ") {
+                    cases.push(Case { line: n, command: cmd.to_string(), expected: Vec::new() });
+                } else if let Some(c) = cases.last_mut() {
+                    c.expected.push(line.to_string());
+                }
+            }
+            Some(info) => {
+                let t = line.trim_start();
+                let shown = t.strip_prefix("$ ").unwrap_or(t);
+                if (info == "sh" || info == "console" || t.starts_with("$ ")) && shown.starts_with("gmap") {
+                    others.push((n, shown.to_string()));
+                }
+            }
+            None => {
+                if let Some(t) = line.strip_prefix("    ") {
+                    let t = t.trim();
+                    if ["gmap ", "cargo ", "scripts/", "python3 "].iter().any(|p| t.starts_with(p)) {
+                        others.push((n, t.to_string()));
+                    }
+                }
+            }
+        }
+    }
+    for c in &mut cases {
+        while c.expected.last().is_some_and(|l| l.trim().is_empty()) {
+            c.expected.pop();
+        }
+    }
+    (cases, others)
+}
+
+/// Whether `line` matches `pattern`, where `[..]` matches any text.
+fn line_matches(pattern: &str, line: &str) -> bool {
+    let parts: Vec<&str> = pattern.split("[..]").collect();
+    if parts.len() == 1 {
+        return pattern == line;
+    }
+    let Some(mut rest) = line.strip_prefix(parts[0]) else { return false };
+    for (i, p) in parts.iter().enumerate().skip(1) {
+        if i == parts.len() - 1 {
+            return rest.ends_with(p);
+        }
+        match rest.find(p) {
+            Some(at) => rest = &rest[at + p.len()..],
+            None => return false,
+        }
+    }
+    true
+}
+
+/// Whether the lines match the expected ones, `...` standing for any number of lines.
+fn lines_match(expected: &[String], actual: &[&str]) -> bool {
+    match expected.split_first() {
+        None => actual.is_empty(),
+        Some((e, rest)) if e.trim() == "..." => (0..=actual.len()).any(|k| lines_match(rest, &actual[k..])),
+        Some((e, rest)) => actual.first().is_some_and(|a| line_matches(e, a)) && lines_match(rest, &actual[1..]),
+    }
+}
+
+/// Splits a command line into words: spaces separate, single and double quotes group.
+fn words(cmd: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut quote: Option<char> = None;
+    let mut any = false;
+    for ch in cmd.chars() {
+        match (quote, ch) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), c) => cur.push(c),
+            (None, '\'' | '"') => {
+                quote = Some(ch);
+                any = true;
+            }
+            (None, ' ') => {
+                if any || !cur.is_empty() {
+                    out.push(std::mem::take(&mut cur));
+                }
+                any = false;
+            }
+            (None, c) => cur.push(c),
+        }
+    }
+    if any || !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
+
+fn is_synopsis(line: &str) -> bool {
+    line.contains('[')
+        || line.contains(" | ")
+        || line.split_whitespace().any(|w| ["FILE", "IN", "OUT", "DIR", "FILE|DIR...", "OUT_DIR"].contains(&w))
+}
+
+#[test]
+fn every_command_in_the_docs_runs_as_shown() {
+    let work = tempfile::tempdir().unwrap();
+    for d in ["tests", "docs", "examples"] {
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(root().join(d), work.path().join(d)).unwrap();
+    }
+    let mut failures = Vec::new();
+    let mut ran = 0;
+    let mut shown = Vec::new();
+    let mut run_somewhere = std::collections::BTreeSet::new();
+    for file in doc_files() {
+        let text = std::fs::read_to_string(&file).unwrap();
+        let name = file.strip_prefix(root()).unwrap_or(&file).display().to_string();
+        let (cases, others) = parse(&text);
+        shown.extend(others.into_iter().map(|(line, cmd)| (name.clone(), line, cmd)));
+        for c in cases {
+            run_somewhere.insert(c.command.clone());
+            let w = words(&c.command);
+            if w.first().map(String::as_str) != Some("gmap") {
+                failures.push(format!("{name}:{}: `{}` is not a gmap command", c.line, c.command));
+                continue;
+            }
+            let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args(&w[1..]).current_dir(work.path()).output().unwrap();
+            ran += 1;
+            let mut actual = String::from_utf8_lossy(&out.stdout).into_owned();
+            actual.push_str(&String::from_utf8_lossy(&out.stderr));
+            let mut lines: Vec<&str> = actual.lines().collect();
+            let code = format!("? {}", out.status.code().unwrap_or(-1));
+            if !out.status.success() {
+                lines.insert(0, &code);
+            }
+            while lines.last().is_some_and(|l| l.trim().is_empty()) {
+                lines.pop();
+            }
+            if !lines_match(&c.expected, &lines) {
+                failures.push(format!(
+                    "{name}:{}: $ {}\n--- expected\n{}\n--- actual\n{}",
+                    c.line,
+                    c.command,
+                    c.expected.join("\n"),
+                    lines.join("\n")
+                ));
+            }
+        }
+    }
+    for (name, line, cmd) in shown {
+        if is_synopsis(&cmd) || run_somewhere.contains(&cmd) || NOT_RUN.iter().any(|(c, _)| cmd.starts_with(c)) {
+            continue;
+        }
+        failures.push(format!(
+            "{name}:{line}: `{cmd}` is shown but not run: put it in a ```console block with its output, or in NOT_RUN with the reason"
+        ));
+    }
+    assert!(failures.is_empty(), "{} mismatches:\n\n{}", failures.len(), failures.join("\n\n"));
+    assert!(ran >= 8, "only {ran} commands found");
+}
+
+#[test]
+fn the_matcher_reads_ellipses_and_wildcards() {
+    let e: Vec<String> = ["a", "...", "c [..] e"].iter().map(|s| s.to_string()).collect();
+    assert!(lines_match(&e, &["a", "b", "b", "c d e"]));
+    assert!(lines_match(&e, &["a", "c  e"]));
+    assert!(!lines_match(&e, &["a", "c d f"]));
+    assert!(!lines_match(&e, &["x", "c d e"]));
+    assert_eq!(words(r#"gmap homology 'a b.lex#x' --json"#), ["gmap", "homology", "a b.lex#x", "--json"]);
+    assert!(is_synopsis("gmap info FILE [--json]"));
+    assert!(!is_synopsis("gmap info tests/data/rp2.facets"));
+    let _ = Path::new("");
+}
+
+#[test]
+fn help_lists_every_input_format() {
+    for cmd in ["info", "homology", "convert"] {
+        let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args([cmd, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&out.stdout);
+        for ext in gmap::input::INPUT_EXTENSIONS {
+            assert!(help.contains(&format!(".{ext}")), "gmap {cmd} --help does not name .{ext}:\n{help}");
+        }
+    }
+}
