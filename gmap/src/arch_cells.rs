@@ -33,7 +33,6 @@
 
 use std::collections::HashMap;
 
-use gmap_core::LabelValue;
 use gmap_homology::arch::ArchComplex;
 use gmap_ops::import::{FacePoset, PosetError};
 
@@ -50,14 +49,10 @@ pub(crate) struct Cells {
     pub origin: Vec<usize>,
 }
 
-/// The name of region `r` in messages: `region 7 ("kitchen")`, from its id and its `name`
-/// label when it has one.
+/// The name of region `r` in messages: `region 7 (kitchen)`, `region door`: the file's id
+/// (string or number) and its `name` label ([`ArchComplex::region_name`]).
 pub(crate) fn region_name(x: &ArchComplex, r: usize) -> String {
-    let id = x.region(r).id;
-    match x.region_labels(r).get("name") {
-        Some(LabelValue::Text(name)) => format!("region {id} ({name:?})"),
-        _ => format!("region {id}"),
-    }
+    format!("region {}", x.region_name(r))
 }
 
 fn refuse(x: &ArchComplex, r: usize, why: impl std::fmt::Display) -> Error {

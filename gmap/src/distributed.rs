@@ -395,6 +395,7 @@ fn finish(plan: &Plan, messages: &[Vec<u8>], figures: &[Vec<u8>], start: Instant
         groups,
         generators: None,
         note: None,
+        space: None,
     };
     Ok(Distributed { report, route: plan.route, ranks, seconds: start.elapsed().as_secs_f64() })
 }

@@ -48,6 +48,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
         groups,
         generators,
         note: None,
+        space: None,
     };
     // dimension ≤ 3, not periodic, no generators: the facade's one pass over the cubes,
     // read from the array a layer at a time
@@ -197,5 +198,6 @@ pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
         groups: Homology { coefficients, betti, torsion },
         generators,
         note: None,
+        space: None,
     })
 }
