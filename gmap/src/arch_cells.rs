@@ -47,6 +47,10 @@ pub(crate) struct Cells {
     /// the region index of each cell of `poset`; the first `regions().len()` cells are the
     /// regions themselves (or the first of their pieces)
     pub origin: Vec<usize>,
+    /// the faces of each cell (the covers, from above)
+    down: Vec<Vec<usize>>,
+    /// the regions of dimension ≥ 3, whose boundaries [`check_solids`] checks
+    solids: Vec<usize>,
 }
 
 /// The name of region `r` in messages: `region 7 (kitchen)`, `region door`: the file's id
@@ -79,7 +83,7 @@ impl Builder {
 }
 
 /// The cells of `x` (module docs), or the refusal naming the region that cannot be cut.
-pub(crate) fn cells(x: &ArchComplex, max_darts: u64) -> Result<Cells> {
+pub(crate) fn cells(x: &ArchComplex) -> Result<Cells> {
     let nr = x.regions().len();
     let mut b = Builder { poset: FacePoset::new(), origin: Vec::with_capacity(nr), down: Vec::with_capacity(nr) };
     for (r, reg) in x.regions().iter().enumerate() {
@@ -120,11 +124,22 @@ pub(crate) fn cells(x: &ArchComplex, max_darts: u64) -> Result<Cells> {
             pieces[r] = match d {
                 1 => edge(x, &mut b, r, &faces)?,
                 2 => face(x, &mut b, r, &faces)?,
-                _ => solid(x, &mut b, r, &faces, max_darts)?,
+                _ => solid(x, &mut b, r, &faces)?,
             };
         }
     }
-    Ok(Cells { poset: b.poset, origin: b.origin })
+    let solids = (3..=x.dim()).flat_map(|d| x.regions_of_dim(d).iter().map(|&r| r as usize)).collect();
+    Ok(Cells { poset: b.poset, origin: b.origin, down: b.down, solids })
+}
+
+/// Checks that the boundary of every region of dimension d ≥ 3 is a (d-1)-sphere (module
+/// docs). Made after the whole complex's G-map passed its size and memory checks, since
+/// each boundary is a G-map of its own. O(Σ flags of the boundaries · d).
+pub(crate) fn check_solids(x: &ArchComplex, c: &Cells, max_darts: u64) -> Result<()> {
+    for &r in &c.solids {
+        solid_boundary(x, c, r, max_darts)?;
+    }
+    Ok(())
 }
 
 /// A 1-region over its vertices: a cell with two; cut at a new vertex with one or none.
@@ -260,7 +275,7 @@ fn face(x: &ArchComplex, b: &mut Builder, r: usize, edges: &[usize]) -> Result<V
 }
 
 /// A region of dimension d ≥ 3 over the pieces of its faces: a cell when they make a sphere.
-fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize], max_darts: u64) -> Result<Vec<usize>> {
+fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize]) -> Result<Vec<usize>> {
     let d = x.region(r).dim;
     let betti = x.region_betti(r);
     let mut ball = vec![0; d + 1];
@@ -285,9 +300,15 @@ fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize], max_darts:
     for &f in faces {
         b.cover(r, f);
     }
+    Ok(vec![r])
+}
+
+/// The boundary of region `r` (dimension d ≥ 3) is a (d-1)-sphere, or the refusal.
+fn solid_boundary(x: &ArchComplex, b: &Cells, r: usize, max_darts: u64) -> Result<()> {
+    let d = x.region(r).dim;
     // the boundary: the cells below r, as a poset of its own
     let mut index: HashMap<usize, usize> = HashMap::new();
-    let mut stack: Vec<usize> = faces.to_vec();
+    let mut stack: Vec<usize> = b.down[r].clone();
     let mut sub = FacePoset::new();
     let mut members = Vec::new();
     while let Some(c) = stack.pop() {
@@ -344,7 +365,7 @@ fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize], max_darts:
             )));
         }
     }
-    Ok(vec![r])
+    Ok(())
 }
 
 /// The name of cell `c` of the poset being built: its region, or a piece of one.

@@ -31,11 +31,11 @@ fn from_chain(chain: &ChainComplex, name: impl Fn(usize, usize) -> String) -> Re
         }
     }
     let mut x = ArchComplex::try_new(n, regions, entries).map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
-    for k in 0..=n {
+    for (k, &start) in first.iter().enumerate() {
         for j in 0..chain.count(k) {
             let labels: Labels = [("name", LabelValue::Text(name(k, j)))].into_iter().collect();
             x = x
-                .with_region_labels(RegionId(first[k] + j as u64), labels)
+                .with_region_labels(RegionId(start + j as u64), labels)
                 .map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
         }
     }

@@ -330,8 +330,8 @@ pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path,
             e.context(input.display().to_string())
         }
     };
-    let cells = crate::arch_cells::cells(x, limit).map_err(named)?;
-    cells.poset.to_gmap(limit).map_err(|e| match e {
+    let cells = crate::arch_cells::cells(x).map_err(named)?;
+    let map = cells.poset.to_gmap(limit).map_err(|e| match e {
         PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
             err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", output.display())
         }
@@ -340,5 +340,7 @@ pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path,
             "the complex is not the face poset of a regular cell complex: {}",
             crate::arch_cells::name_poset_error(x, &cells, &e)
         )),
-    })
+    })?;
+    crate::arch_cells::check_solids(x, &cells, limit).map_err(named)?;
+    Ok(map)
 }
