@@ -268,7 +268,9 @@ fn peaks() -> Vec<(Option<u64>, Option<u64>)> {
             let ours = exe.as_ref().and_then(|exe| {
                 let out = Command::new(exe).env("LCC_ONLY", k.to_string()).arg("--bench").output().ok()?;
                 let text = String::from_utf8(out.stdout).ok()?;
-                text.lines().find_map(|l| l.strip_prefix("peak_rss_bytes ")?.trim().parse::<u64>().ok()).map(|b| b / 1024)
+                text.lines()
+                    .find_map(|l| l.strip_prefix("peak_rss_bytes ")?.trim().parse::<u64>().ok())
+                    .map(|b| b / 1024)
             });
             let cgal = cgal_run(&["1", VARIANTS[k]])
                 .and_then(|text| text.lines().next().and_then(|l| serde_json::from_str::<serde_json::Value>(l).ok()))
@@ -284,7 +286,8 @@ fn cgal_run(args: &[&str]) -> Option<String> {
     if !std::path::Path::new("/usr/include/CGAL/Linear_cell_complex_for_generalized_map.h").exists() {
         return None;
     }
-    let out = Command::new("bash").arg(common::anchor("run-cgal-lcc.sh")).arg(K.to_string()).args(args).output().ok()?;
+    let out =
+        Command::new("bash").arg(common::anchor("run-cgal-lcc.sh")).arg(K.to_string()).args(args).output().ok()?;
     if !out.status.success() {
         eprintln!("lcc bench: CGAL anchor failed: {}", String::from_utf8_lossy(&out.stderr).trim());
         return None;
@@ -362,7 +365,8 @@ fn bench(c: &mut Criterion) {
     }
     for (name, (ours, cgal)) in names.iter().zip(peaks()) {
         let show = |kb: Option<u64>| kb.map_or("?".to_string(), |kb| format!("{:.0} MB", kb as f64 / 1024.0));
-        let ratio = ours.zip(cgal).map_or(String::new(), |(o, c)| format!("; ours / CGAL = {:.2}", o as f64 / c as f64));
+        let ratio =
+            ours.zip(cgal).map_or(String::new(), |(o, c)| format!("; ours / CGAL = {:.2}", o as f64 / c as f64));
         eprintln!("lcc bench grid{K}, {name}: peak memory: ours {}, CGAL {}{ratio}", show(ours), show(cgal));
     }
     let mut group = c.benchmark_group(format!("lcc{K}"));
