@@ -1,6 +1,9 @@
 //! The one-pass groups of cubical sets of dimension 1 to 3 equal the chain complex's, on
 //! known sets and random images of every density.
 
+mod random_image;
+use random_image::random_bits;
+
 use gmap_homology::cubical::cubical_complex;
 use gmap_homology::cubical_pass::betti_one_pass;
 use gmap_homology::homology_z;
@@ -41,17 +44,6 @@ fn known_sets() {
     }
     assert_eq!(one_pass(&[7, 7, 7], &bits), (vec![2, 0, 2, 0], 4));
     assert_eq!(general(&[7, 7, 7], &bits), vec![2, 0, 2, 0]);
-}
-
-/// `n` cubes, each present with probability `density` percent, from a seeded LCG.
-fn random_bits(n: usize, density: u64, seed: u64) -> Vec<u8> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        })
-        .collect()
 }
 
 proptest! {
