@@ -26,7 +26,7 @@ fn main() {
     }
     gmap_core::resources::reset_peak_rss();
     let t = std::time::Instant::now();
-    let h = gmap_homology::cellular_complex(&map).and_then(|c| Ok(gmap_homology::homology_z(&c.chain)));
+    let h = gmap_homology::cellular_complex(&map).map(|c| gmap_homology::homology_z(&c.chain));
     let wall = t.elapsed();
     let peak = gmap_core::resources::peak_rss().unwrap_or(0);
     match h {

@@ -2,6 +2,9 @@
 //! random images of every dimension 1 to 5, periodic or not, whatever the slab; with collapses
 //! only its cells are a subcomplex, whose cycles are cycles of the set.
 
+mod random_image;
+use random_image::random_bits;
+
 use gmap_homology::cubical::cubical_complex_with;
 use gmap_homology::cubical_slabs::cubical_complex_slabs;
 use gmap_homology::{homology_z, Homology};
@@ -19,17 +22,6 @@ fn slabs(shape: &[usize], bits: &[u8], periodic: bool, slab: usize, keep: bool) 
         assert_eq!(c.set_aside(), 0);
     }
     c.absolute(homology_z(&c.complex.chain).unwrap()).unwrap()
-}
-
-/// `n` cubes, each present with probability `density` percent, from a seeded LCG.
-fn random_bits(n: usize, density: u64, seed: u64) -> Vec<u8> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((s >> 33) % 100 < density) as u8
-        })
-        .collect()
 }
 
 #[test]

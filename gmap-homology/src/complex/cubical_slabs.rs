@@ -297,7 +297,7 @@ impl Slabs {
         let layer = self.layer;
         for x in 0..layer {
             let p = s as u64 * layer + x;
-            if self.alive(p) && (0..self.n.len() - 1).all(|a| self.coord(p, a) % 2 == 0) {
+            if self.alive(p) && (0..self.n.len() - 1).all(|a| self.coord(p, a).is_multiple_of(2)) {
                 self.kill(p);
                 self.set_aside += 1;
                 self.push_neighbours(p, false);
