@@ -268,8 +268,10 @@ impl CubicalFiltration {
     /// Builds the sorted list of k-cells (and their ranks).
     fn ensure(&mut self, k: usize, with_rank: bool) {
         if self.order[k].is_none() {
-            let mut keys: Vec<(u64, u32)> =
-                (0..self.grid.len).filter(|&g| self.grid.dim(g) == k).map(|g| (key(self.vals()[g]), g as u32)).collect();
+            let mut keys: Vec<(u64, u32)> = (0..self.grid.len)
+                .filter(|&g| self.grid.dim(g) == k)
+                .map(|g| (key(self.vals()[g]), g as u32))
+                .collect();
             keys.sort_unstable();
             self.order[k] = Some(keys);
         }

@@ -9,7 +9,8 @@ use std::fmt::Write;
 use super::{CellName, Chain, Diagram};
 
 const COLOURS: [&str; 6] = ["#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"];
-const RGB: [[u8; 3]; 6] = [[214, 39, 40], [31, 119, 180], [44, 160, 44], [148, 103, 189], [255, 127, 14], [140, 86, 75]];
+const RGB: [[u8; 3]; 6] =
+    [[214, 39, 40], [31, 119, 180], [44, 160, 44], [148, 103, 189], [255, 127, 14], [140, 86, 75]];
 
 fn colour(dim: usize) -> &'static str {
     COLOURS[dim % COLOURS.len()]
@@ -209,14 +210,12 @@ pub fn image_with_chain_svg(
     for mark in chain_marks(chain, vertex_centred, sc) {
         let _ = match mark {
             Mark::Dot { x, y, r } => writeln!(out, r#"<circle cx="{x}" cy="{y}" r="{r}" fill="red"/>"#),
-            Mark::Square { x, y, side } => writeln!(
-                out,
-                r#"<rect x="{x}" y="{y}" width="{side}" height="{side}" fill="red" fill-opacity="0.4"/>"#
-            ),
-            Mark::Segment { x1, y1, x2, y2, width } => writeln!(
-                out,
-                r#"<line x1="{x1}" y1="{y1}" x2="{x2}" y2="{y2}" stroke="red" stroke-width="{width}"/>"#
-            ),
+            Mark::Square { x, y, side } => {
+                writeln!(out, r#"<rect x="{x}" y="{y}" width="{side}" height="{side}" fill="red" fill-opacity="0.4"/>"#)
+            }
+            Mark::Segment { x1, y1, x2, y2, width } => {
+                writeln!(out, r#"<line x1="{x1}" y1="{y1}" x2="{x2}" y2="{y2}" stroke="red" stroke-width="{width}"/>"#)
+            }
         };
     }
     out.push_str("</svg>\n");
@@ -283,9 +282,9 @@ impl Raster {
             return;
         }
         let i = 3 * (y as usize * self.width as usize + x as usize);
-        for k in 0..3 {
-            let old = self.rgb[i + k] as f64;
-            self.rgb[i + k] = (old + (c[k] as f64 - old) * a).round() as u8;
+        for (px, &ck) in self.rgb[i..i + 3].iter_mut().zip(&c) {
+            let old = *px as f64;
+            *px = (old + (ck as f64 - old) * a).round() as u8;
         }
     }
 
