@@ -1,8 +1,6 @@
 //! The one-pass groups of cubical sets of dimension 1 to 3 equal the chain complex's, on
 //! known sets and random images of every density.
 
-mod random_image;
-use random_image::random_bits;
 
 use gmap_homology::cubical::cubical_complex;
 use gmap_homology::cubical_pass::betti_one_pass;

@@ -2,8 +2,8 @@
 //! random images of every dimension 1 to 5, periodic or not, whatever the slab; with collapses
 //! only its cells are a subcomplex, whose cycles are cycles of the set.
 
-mod random_image;
-use random_image::random_bits;
+mod common;
+use common::random_bits;
 
 use gmap_homology::cubical::cubical_complex_with;
 use gmap_homology::cubical_slabs::cubical_complex_slabs;
