@@ -32,6 +32,16 @@ const NOT_RUN: &[(&str, &str)] = &[
     ("python3 benches/anchors/compare_gudhi.py", "a benchmark against GUDHI (minutes, needs the bench data)"),
     ("cargo bench --bench simplify_figures", "a benchmark"),
     ("cargo bench --bench simplify", "a benchmark"),
+    (
+        "cargo build --release -p gmap-mpi --features mpi",
+        "needs Open MPI and libclang; .ci/run builds gmap-mpi and runs its tests under mpirun",
+    ),
+    (
+        "python3 benches/anchors/make_images.py",
+        "the MPI walkthrough's image; gmap-mpi's tests under mpirun make and read it",
+    ),
+    ("cargo test -p gmap-mpi --features mpi", "run by .ci/run after the workspace's tests (needs Open MPI)"),
+    ("cargo build --release --example persistence_image", "builds the persistence benchmark's binary (fat LTO)"),
 ];
 
 fn root() -> PathBuf {

@@ -44,21 +44,24 @@ fn good_gmap_exact_json() {
     assert_eq!(
         info_json(&p),
         json!({"dimension": 2, "darts": 8, "cells": [2, 3, 1], "components": 1, "valid": true,
-               "complete_boundaries": true, "orientable": true, "euler_characteristic": 0})
+               "complete_boundaries": true, "orientable": true, "euler_characteristic": 0,
+               "points": false, "labels": []})
     );
     // a segment: one edge, two vertices
     let p = write(dir.path(), "segment.gmap", b"gmap 1 2\n1 0\n0 1\n");
     assert_eq!(
         info_json(&p),
         json!({"dimension": 1, "darts": 2, "cells": [2, 1], "components": 1, "valid": true,
-               "complete_boundaries": true, "orientable": true, "euler_characteristic": 1})
+               "complete_boundaries": true, "orientable": true, "euler_characteristic": 1,
+               "points": false, "labels": []})
     );
     // one 0-free dart: an edge with an incomplete boundary (BO Def. 6 fails)
     let p = write(dir.path(), "half.gmap", b"gmap 1 1\n0 0\n");
     assert_eq!(
         info_json(&p),
         json!({"dimension": 1, "darts": 1, "cells": [1, 1], "components": 1, "valid": true,
-               "complete_boundaries": false, "orientable": true, "euler_characteristic": 0})
+               "complete_boundaries": false, "orientable": true, "euler_characteristic": 0,
+               "points": false, "labels": []})
     );
 }
 
@@ -73,7 +76,8 @@ fn good_moka_exact_json() {
     assert_eq!(
         info_json(&p),
         json!({"dimension": 3, "darts": 8, "cells": [1, 2, 1, 1], "components": 1, "valid": true,
-               "complete_boundaries": true, "orientable": false, "euler_characteristic": -1})
+               "complete_boundaries": true, "orientable": false, "euler_characteristic": -1,
+               "points": true, "labels": []})
     );
 }
 
@@ -85,12 +89,14 @@ fn human_output_is_aligned_lines() {
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines.len(), 9);
+    assert_eq!(lines.len(), 11);
     assert_eq!(lines[1], "dimension             1");
     assert_eq!(lines[2], "darts                 2");
     assert_eq!(lines[3], "cells (0..n)          1 1");
     assert_eq!(lines[6], "complete boundaries   yes");
     assert_eq!(lines[8], "euler characteristic  0");
+    assert_eq!(lines[9], "points                no");
+    assert_eq!(lines[10], "labels                none");
 }
 
 #[test]
@@ -210,12 +216,13 @@ fn simplicial_complex_without_a_gmap() {
     assert_eq!(v["valid"], true);
     assert!(v["gmap"].is_null() && v.as_object().unwrap().contains_key("gmap"));
     let why = v["why"].as_str().unwrap();
-    assert!(why.contains("ridge [1, 2] lies in 3 facets"), "{why}");
+    // the first cause: the facets' mixed dimensions (the book's ridge in 3 facets comes after)
+    assert!(why.contains("facet on line 4 has 2 vertices, but the largest facets have 3: mixed dimensions"), "{why}");
     let o = gmap(&["info", p.to_str().unwrap()]);
     assert!(o.status.success());
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(
-        text.contains("simplices (0..n)      7 8 3") && text.contains("gmap  ") && text.contains("lies in 3"),
+        text.contains("simplices (0..n)      7 8 3") && text.contains("gmap  ") && text.contains("mixed dimensions"),
         "{text}"
     );
     // mixed dimensions only

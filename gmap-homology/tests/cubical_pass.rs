@@ -1,7 +1,6 @@
 //! The one-pass groups of cubical sets of dimension 1 to 3 equal the chain complex's, on
 //! known sets and random images of every density.
 
-
 use gmap_homology::cubical::cubical_complex;
 use gmap_homology::cubical_pass::betti_one_pass;
 use gmap_homology::homology_z;

@@ -73,10 +73,11 @@ mod oracle {
             for tok in body.split(|c: char| c.is_whitespace() || c == ',').filter(|t| !t.is_empty()) {
                 let v = tok.parse::<u64>().map_err(|_| ImportError::Syntax {
                     line,
-                    message: format!(
-                        "'{}' is not a vertex label (a non-negative integer)",
-                        shorten(tok.as_bytes(), 40)
-                    ),
+                    message: if tok.bytes().all(|b| b.is_ascii_digit()) {
+                        format!("vertex label '{}' is out of range (at most {})", shorten(tok.as_bytes(), 40), u64::MAX)
+                    } else {
+                        format!("'{}' is not a vertex label (a non-negative integer)", shorten(tok.as_bytes(), 40))
+                    },
                 })?;
                 f.push(v);
             }
@@ -492,7 +493,7 @@ fn labels_are_what_str_parse_takes() {
     assert_eq!(sc.facet(0), &[5, 7, 42, u64::MAX][..]);
     assert_eq!(
         syntax("1 2\n3 18446744073709551616\n"),
-        (2, "'18446744073709551616' is not a vertex label (a non-negative integer)".into())
+        (2, "vertex label '18446744073709551616' is out of range (at most 18446744073709551615)".into())
     );
     assert_eq!(syntax("1 -0"), (1, "'-0' is not a vertex label (a non-negative integer)".into()));
     assert_eq!(syntax("+ 1"), (1, "'+' is not a vertex label (a non-negative integer)".into()));

@@ -35,51 +35,10 @@
 //! cells of the dimensions in use (4 bytes each, 16 while sorted), and for the reduction a
 //! rank per grid cell (4 bytes) and an owner per row (4 bytes).
 
-use super::reduce::{reduce_dim, Entry, Zp};
+pub(crate) use super::options::{check_field, key, unkey};
+pub use super::options::{Construction, CubicalOptions};
+use super::reduce::{reduce_dim, Entry};
 use super::{CellName, Diagram, PersistenceError};
-
-/// Where the array's values sit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-#[non_exhaustive]
-pub enum Construction {
-    /// values on top cells, lower cells take the minimum of their cofaces (GUDHI's default)
-    #[default]
-    T,
-    /// values on vertices, higher cells take the maximum of their vertices (CubicalRipser's)
-    V,
-}
-
-impl std::str::FromStr for Construction {
-    type Err = PersistenceError;
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        match s {
-            "T" | "t" | "top" => Ok(Construction::T),
-            "V" | "v" | "vertex" | "vertices" => Ok(Construction::V),
-            _ => Err(PersistenceError::BadOption(format!("construction {s:?} (want T or V)"))),
-        }
-    }
-}
-
-/// How to filter an image.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CubicalOptions {
-    /// T- or V-construction
-    pub construction: Construction,
-    /// superlevel sets (values taken from the top down)
-    pub superlevel: bool,
-    /// identify opposite faces of the box (a torus)
-    pub periodic: bool,
-    /// coefficients `Z/p`, `p` a prime below `2^31`
-    pub field: u32,
-    /// return a representative cycle per pair
-    pub cycles: bool,
-}
-
-impl Default for CubicalOptions {
-    fn default() -> Self {
-        CubicalOptions { construction: Construction::T, superlevel: false, periodic: false, field: 2, cycles: false }
-    }
-}
 
 /// The doubled grid, last axis fastest.
 #[derive(Clone, Debug)]
@@ -176,23 +135,6 @@ impl Grid {
         }
         r
     }
-}
-
-/// A total order on `f64` (finite values only reach here) as an unsigned key.
-#[inline]
-pub(crate) fn key(v: f64) -> u64 {
-    let b = v.to_bits();
-    if b >> 63 == 1 {
-        !b
-    } else {
-        b | (1 << 63)
-    }
-}
-
-/// The value of a [`key`].
-#[inline]
-pub(crate) fn unkey(k: u64) -> f64 {
-    f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k })
 }
 
 /// The cubical filtration of an image: the grid, every cell's value, the cells of each
@@ -498,13 +440,6 @@ impl Elder {
         self.nodes[hi as usize].best = keep;
         Some((keep, lose))
     }
-}
-
-pub(crate) fn check_field(p: u32) -> Result<Zp, PersistenceError> {
-    if p >= 1 << 31 || !crate::homology::is_prime(p as u64) {
-        return Err(PersistenceError::BadOption(format!("field Z/{p}: want a prime below 2^31")));
-    }
-    Ok(Zp::new(p))
 }
 
 /// Every grid cell's value (times `sign`), by one pass per axis: the V-construction takes

@@ -37,7 +37,7 @@
 
 use rustc_hash::FxHashMap;
 
-use super::cubical::{check_field, key, Construction, CubicalOptions};
+use super::options::{check_field, key, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
 

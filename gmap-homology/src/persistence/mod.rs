@@ -27,6 +27,7 @@ pub mod cubical;
 mod diagram;
 pub mod filtered;
 mod lower_star;
+mod options;
 pub mod plot;
 pub(crate) mod reduce;
 
