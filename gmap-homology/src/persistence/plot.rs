@@ -179,6 +179,12 @@ pub fn barcode_svg(d: &Diagram, width: u32) -> String {
     out
 }
 
+/// The lowest value of an image and the span its greys cover (1 for a constant image).
+fn grey_scale(values: &[f64]) -> (f64, f64) {
+    let (lo, hi) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+    (lo, if hi > lo { hi - lo } else { 1.0 })
+}
+
 /// A 2-D image (`rows × cols` values, row-major) in grey, `scale` pixels per value, with
 /// the cells of `chain` (doubled-grid names of the V- or T-construction of the same image)
 /// drawn over it in red: vertices as dots, edges as segments, squares filled.
@@ -191,8 +197,7 @@ pub fn image_with_chain_svg(
     scale: u32,
 ) -> String {
     let sc = scale as f64;
-    let (lo, hi) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-    let span = if hi > lo { hi - lo } else { 1.0 };
+    let (lo, span) = grey_scale(values);
     let (w, h) = (cols as f64 * sc, rows as f64 * sc);
     let mut out = String::new();
     let _ = writeln!(out, r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}">"#);
@@ -367,8 +372,7 @@ pub fn image_with_chain_raster(
     scale: u32,
 ) -> Raster {
     let sc = scale as f64;
-    let (lo, hi) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-    let span = if hi > lo { hi - lo } else { 1.0 };
+    let (lo, span) = grey_scale(values);
     let mut r = Raster::new(cols as u32 * scale, rows as u32 * scale);
     for i in 0..rows {
         for j in 0..cols {
