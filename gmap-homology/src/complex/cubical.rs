@@ -230,12 +230,23 @@ fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Ve
     state.try_reserve_exact(len).map_err(|_| CubicalError::OutOfMemory { what: "the grid", bytes: len as u64 })?;
     state.resize(len, 0);
 
+    mark_closure(shape, &g.n, &g.stride, bits, &mut state);
+    Ok((g, state))
+}
+
+/// Marks [`PRESENT`] in `out` (a byte per point of the doubled grid `n`, with strides
+/// `stride`, axis 0 fastest) the cubes of `bits` (doubled point 2x + 1 of cube x of a box of
+/// `shape`) and every face of them: their closure. A last odd coordinate of a periodic grid
+/// (`n` even) has its upper face at 0. O(points × dimension).
+pub(crate) fn mark_closure(shape: &[usize], n: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
+    let d = n.len();
+    let len = out.len();
     // the cubes: doubled point 2x + 1
     let mut x = vec![0usize; d];
     for &b in bits {
         if b != 0 {
-            let p: usize = (0..d).map(|a| (2 * x[a] + 1) * g.stride[a]).sum();
-            state[p] = PRESENT;
+            let p: usize = (0..d).map(|a| (2 * x[a] + 1) * stride[a]).sum();
+            out[p] = PRESENT;
         }
         for a in 0..d {
             x[a] += 1;
@@ -245,24 +256,23 @@ fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Ve
             x[a] = 0;
         }
     }
-    // the closure: along each axis in turn, a point with an odd coordinate marks its two faces
+    // along each axis in turn, a point with an odd coordinate marks its two faces
     for a in 0..d {
-        let (s, na) = (g.stride[a], g.n[a]);
+        let (s, na) = (stride[a], n[a]);
         let block = s * na;
         for base in (0..len).step_by(block) {
             for c in (1..na).step_by(2) {
                 let row = base + c * s;
                 let up = if c + 1 == na { base } else { row + s };
                 for lo in 0..s {
-                    if state[row + lo] != 0 {
-                        state[row - s + lo] = PRESENT;
-                        state[up + lo] = PRESENT;
+                    if out[row + lo] != 0 {
+                        out[row - s + lo] = PRESENT;
+                        out[up + lo] = PRESENT;
                     }
                 }
             }
         }
     }
-    Ok((g, state))
 }
 
 /// Elementary collapses of free faces (a present cell with exactly one present coface),

@@ -58,7 +58,7 @@ use rustc_hash::{FxHashMap, FxHashSet};
 
 use gmap_core::union_find::UnionFind;
 
-use super::cubical::{CubicalComplex, CubicalError};
+use super::cubical::{mark_closure, CubicalComplex, CubicalError};
 use crate::{ChainComplex, Homology, SparseMatrix};
 
 const PRESENT: u8 = 1;
@@ -322,43 +322,12 @@ impl Slabs {
 /// The closure of one layer of cubes in its doubled layer grid (axes `0 .. d - 1` of `n`): a
 /// byte per point, non-zero where a cube of `bits` has the point as a face.
 fn close_layer(shape: &[usize], n: &[usize], bits: &[u8], out: &mut [u8]) {
-    let e = n.len();
     out.fill(0);
-    let mut stride = vec![1usize; e];
-    for a in 1..e {
+    let mut stride = vec![1usize; n.len()];
+    for a in 1..n.len() {
         stride[a] = stride[a - 1] * n[a - 1];
     }
-    let mut x = vec![0usize; e];
-    for &b in bits {
-        if b != 0 {
-            let p: usize = (0..e).map(|a| (2 * x[a] + 1) * stride[a]).sum();
-            out[p] = 1;
-        }
-        for a in 0..e {
-            x[a] += 1;
-            if x[a] < shape[a] {
-                break;
-            }
-            x[a] = 0;
-        }
-    }
-    let len = out.len();
-    for a in 0..e {
-        let (s, na) = (stride[a], n[a]);
-        let block = s * na;
-        for base in (0..len).step_by(block) {
-            for c in (1..na).step_by(2) {
-                let row = base + c * s;
-                let up = if c + 1 == na { base } else { row + s };
-                for lo in 0..s {
-                    if out[row + lo] != 0 {
-                        out[row - s + lo] = 1;
-                        out[up + lo] = 1;
-                    }
-                }
-            }
-        }
-    }
+    mark_closure(shape, n, &stride, bits, out);
 }
 
 /// The cubical chain complex of the set of a box of `shape` cubes (axis 0 fastest, any
