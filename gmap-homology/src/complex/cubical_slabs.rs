@@ -177,17 +177,24 @@ impl Slabs {
         [lo, hi]
     }
 
+    /// The two faces (`faces = true`, `c` odd) or cofaces (`c` even) of `p` along axis `a`,
+    /// where `c` is `p`'s coordinate on it.
+    #[inline]
+    fn across(&self, p: u64, a: usize, c: usize, faces: bool) -> [Option<u64>; 2] {
+        if faces {
+            self.faces(p, a, c).map_or([None, None], |(l, u)| [Some(l), Some(u)])
+        } else {
+            self.cofaces(p, a, c)
+        }
+    }
+
     /// The alive faces (`faces = true`) or cofaces of `p`: their number, and one of them.
     fn neighbours(&self, p: u64, faces: bool) -> (usize, u64) {
         let (mut count, mut one) = (0, 0);
         for a in 0..self.n.len() {
             let c = self.coord(p, a);
             if (c % 2 == 1) == faces {
-                let pair = if faces {
-                    self.faces(p, a, c).map_or([None, None], |(l, u)| [Some(l), Some(u)])
-                } else {
-                    self.cofaces(p, a, c)
-                };
+                let pair = self.across(p, a, c, faces);
                 for q in pair.into_iter().flatten() {
                     if self.alive(q) {
                         count += 1;
@@ -204,11 +211,7 @@ impl Slabs {
         for a in 0..self.n.len() {
             let c = self.coord(p, a);
             if (c % 2 == 1) == faces {
-                let pair = if faces {
-                    self.faces(p, a, c).map_or([None, None], |(l, u)| [Some(l), Some(u)])
-                } else {
-                    self.cofaces(p, a, c)
-                };
+                let pair = self.across(p, a, c, faces);
                 for q in pair.into_iter().flatten() {
                     if self.alive(q) {
                         self.push(q);
