@@ -540,35 +540,10 @@ fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
                 };
                 let pc = pcol.last().expect("a pivot column is not zero").1;
                 let fac = field.neg(field.mul(coef, field.inv(pc)));
-                axpy(field, &col, fac, pcol, &mut scratch);
+                field.axpy(&col, fac, pcol, &mut scratch);
                 std::mem::swap(&mut col, &mut scratch);
                 changed = true;
             }
         }
     }
-}
-
-/// `out = a + f · b` on columns sorted by key, zeros dropped.
-fn axpy(field: Zp, a: &[(u64, u32)], f: u32, b: &[(u64, u32)], out: &mut Vec<(u64, u32)>) {
-    out.clear();
-    let (mut i, mut j) = (0, 0);
-    while i < a.len() && j < b.len() {
-        let (ka, kb) = (a[i].0, b[j].0);
-        if ka < kb {
-            out.push(a[i]);
-            i += 1;
-        } else if kb < ka {
-            out.push((kb, field.mul(f, b[j].1)));
-            j += 1;
-        } else {
-            let c = field.add(a[i].1, field.mul(f, b[j].1));
-            if c != 0 {
-                out.push((ka, c));
-            }
-            i += 1;
-            j += 1;
-        }
-    }
-    out.extend_from_slice(&a[i..]);
-    out.extend(b[j..].iter().map(|&(k, c)| (k, field.mul(f, c))));
 }

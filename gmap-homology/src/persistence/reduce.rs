@@ -87,8 +87,9 @@ impl Zp {
         r as u32
     }
 
-    /// `out = a + f * b`, entries sorted by row, zeros dropped.
-    pub(crate) fn axpy(self, a: &[Entry], f: u32, b: &[Entry], out: &mut Vec<Entry>) {
+    /// `out = a + f * b`, entries `(row, coefficient)` sorted by row (any ordered key: a
+    /// row number or a filtration key), zeros dropped. O(|a| + |b|).
+    pub(crate) fn axpy<K: Copy + Ord>(self, a: &[(K, u32)], f: u32, b: &[(K, u32)], out: &mut Vec<(K, u32)>) {
         out.clear();
         out.reserve(a.len() + b.len());
         let (mut i, mut j) = (0, 0);
