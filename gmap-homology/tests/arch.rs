@@ -455,6 +455,10 @@ fn reader_rejects_each_violation() {
     assert!(matches!(read_json("{\"regions\": [}"), Err(JsonError::Syntax { line: 1, .. })));
     let e = read_json(r#"{"regions": [{"id": -1, "dim": 0}], "incidence": []}"#).unwrap_err();
     assert_eq!(e.to_string(), "regions[0].id: expected a non-negative integer or a string, found -1");
+    let e = read_json(r#"{"regions": [{"id": 18446744073709551616, "dim": 0}], "incidence": []}"#).unwrap_err();
+    assert_eq!(e.to_string(), "regions[0].id: 18446744073709551616 does not fit a 64-bit integer");
+    let e = read_json(r#"{"regions": [{"id": 0, "dim": 1.5}], "incidence": []}"#).unwrap_err();
+    assert_eq!(e.to_string(), "regions[0].dim: expected a non-negative integer, found 1.5");
     let e = read_json(r#"{"regions": [{"id": 1, "dim": 0}]}"#).unwrap_err();
     assert_eq!(e.to_string(), "incidence: missing");
 }

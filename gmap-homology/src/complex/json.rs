@@ -121,16 +121,23 @@ fn get_key(obj: &Value, at: At<'_>, key: &str) -> Result<Key, JsonError> {
     let v = field(obj, at, key)?;
     match v {
         Value::String(t) => Ok(Key::Str(t.clone())),
-        _ => v
-            .as_u64()
-            .map(Key::Int)
-            .ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer or a string, found {v}"))),
+        _ => as_u64(v, || at.path(key), " or a string").map(Key::Int),
     }
 }
 
 fn get_u64(obj: &Value, at: At<'_>, key: &str) -> Result<u64, JsonError> {
-    let v = field(obj, at, key)?;
-    v.as_u64().ok_or_else(|| schema(at.path(key), format!("expected a non-negative integer, found {v}")))
+    as_u64(field(obj, at, key)?, || at.path(key), "")
+}
+
+/// `v` as a `u64`; an integer written without a fraction or exponent that is too large is
+/// said to be so, anything else is "expected a non-negative integer`{or}`".
+fn as_u64(v: &Value, at: impl Fn() -> String, or: &str) -> Result<u64, JsonError> {
+    v.as_u64().ok_or_else(|| match v {
+        Value::Number(x) if !x.to_string().contains(['.', 'e', 'E', '-']) => {
+            schema(at(), format!("{x} does not fit a 64-bit integer"))
+        }
+        _ => schema(at(), format!("expected a non-negative integer{or}, found {v}")),
+    })
 }
 
 fn get_i64(obj: &Value, at: At<'_>, key: &str) -> Result<i64, JsonError> {
@@ -427,7 +434,7 @@ fn read_json_slow(text: &str) -> Result<Parsed, JsonError> {
         }
     }
     if let Some(v) = obj.get("dimension") {
-        let d = v.as_u64().ok_or_else(|| schema("dimension", format!("expected a non-negative integer, found {v}")))?;
+        let d = as_u64(v, || "dimension".to_string(), "")?;
         p.dim = Some(check_dim(d, || "dimension".to_string())?);
     }
     let inc = obj.get("incidence").ok_or_else(|| schema("incidence", "missing"))?;
