@@ -150,7 +150,9 @@ def bench(paths: Union[str, os.PathLike, Iterable[Union[str, os.PathLike]]], gud
     """Times every route of each input in process, as ``gmap bench --json`` does: a list of
     dicts, one per input and route, with ``input``, ``route``, ``cells``, ``times_ms``
     (``read``, ``cells``, ``border``, ``reduction``, ``smith``, ``total``), ``groups``,
-    ``betti``, ``torsion``, ``error`` and ``agree``. For a simplicial complex, when ``gudhi``
+    ``betti``, ``torsion``, ``error``, ``agree`` and ``peak_rss_bytes`` (the process's peak
+    resident memory while the row ran, ``None`` where the kernel's high-water mark cannot be
+    reset). For a simplicial complex, when ``gudhi``
     is true and GUDHI is installed, ``gudhi_ms`` is GUDHI's time on the same facets (a
     SimplexTree and its persistence in all dimensions over Z/2) and ``gudhi_betti`` its Betti
     numbers.
