@@ -249,6 +249,8 @@ fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> 
             Some(m.map())
         }
         Input::Cubical(set) => {
+            set.require_full("the routes of cubes")
+                .map_err(|e| err!(Unsupported, "{}: {e}", set.path().display()).with_path(set.path()))?;
             map_read = read;
             cubical_rows(Cubes::Set(set.get()), read, o.periodic, &mut push)?;
             None

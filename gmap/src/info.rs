@@ -199,7 +199,7 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         Err(map) => map,
     };
     if o.periodic && !matches!(input, Input::Cubical(_) | Input::Image(_)) {
-        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm, .npy, .complex)"));
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .cel, .pbm, .npy, .complex)"));
     }
     if o.level.is_some() && !matches!(input, Input::Image(_)) {
         return Err(err!(Usage, "{file}: --level applies to images (.npy, .complex)"));
@@ -270,7 +270,8 @@ pub fn arch_info(x: &ArchComplex) -> ArchInfo {
 /// The characteristics of a cubical set: the cells of its closure (of the torus when
 /// `periodic`).
 pub fn cubical_info(set: &CubicalSet, periodic: bool, file: &str) -> Result<CubicalInfo> {
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), periodic, false)
+    let cells = set.lower_cells_in_box();
+    let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, false)
         .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
     Ok(CubicalInfo {
         dimension: set.dim(),

@@ -74,6 +74,13 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
         Input::Cubical(set) if is_graph(output) => {
             write_graph(&crate::graph::cubical(set, false, &set.path().display().to_string())?, output)
         }
+        // .vtk voxels and a G-map of d-cells hold the cubes only
+        Input::Cubical(set) if !set.is_full() => {
+            let what = if extension(output) == "vtk" { ".vtk (voxels)" } else { "a G-map of its cubes" };
+            let why = set.require_full(what).err().map(|e| e.to_string()).unwrap_or_default();
+            Err(err!(Unsupported, "{}: {why}; write .json, .dot or .graphml (every cell)", set.path().display())
+                .with_path(set.path()))
+        }
         Input::Cubical(set) if extension(output) == "vtk" => {
             gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
         }
