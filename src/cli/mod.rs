@@ -81,6 +81,10 @@ struct InfoArgs {
     /// for a cubical set (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of its box
     #[arg(long)]
     periodic: bool,
+    /// for a cubical set (.cub, .cel, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
+    /// (default: the cubes' bounding box, or the file's `box` line)
+    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
+    cubical_box: Option<(Vec<i64>, Vec<i64>)>,
     /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
     #[arg(long, value_name = "T")]
     level: Option<f64>,
@@ -239,6 +243,7 @@ fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     let mut o = gmap::InfoOptions::default();
     (o.max_darts, o.periodic, o.level, o.progress) = (a.limits.max_darts, a.periodic, a.level, progress.clone());
     o.max_cells = a.limits.max_cells;
+    o.cubical_box = a.cubical_box;
     let info = gmap::info(&input, &o);
     progress.finish();
     let info = info?;
