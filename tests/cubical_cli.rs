@@ -174,6 +174,14 @@ fn cubical_cell_complexes() {
         assert!(err.contains("6 cells of dimension below 2 on no 2-cube (the first: 0x[3,4])"), "{err}");
         assert!(!out.exists());
     }
+    // the page draws cubes and bench times the routes of cubes: both refuse, naming a cell
+    let page = dir.path().join("m.html");
+    for args in [vec!["view", &data("mixed.cub"), "-o", page.to_str().unwrap()], vec!["bench", &data("mixed.cub")]] {
+        let (code, _, err) = gmap(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(err.contains("(the first: 0x[3,4])"), "{args:?}: {err}");
+    }
+    assert!(!page.exists());
     // a complex whose lower cells all lie on its cubes is the full set: .gmap keeps it
     let faces = dir.path().join("faces.cel");
     std::fs::write(&faces, "[0,1]x[0,1]\n[0]x[0,1]\n[(0,0) (1,0)]\n").unwrap();
