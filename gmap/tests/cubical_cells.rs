@@ -1,7 +1,7 @@
 //! Cubical cell complexes (CHomP's cell syntax): the groups of known complexes, and the cell
 //! reading of the closure of random full cubes against their full-cube reading.
 
-use gmap::{homology, Input, InfoOptions, Sourced};
+use gmap::{homology, InfoOptions, Input, Sourced};
 use gmap_homology::cubical::{cubical_cell_complex_with, cubical_complex_with};
 use gmap_homology::homology_z;
 use gmap_ops::import::cubical::{parse_cub, CubicalSet};
@@ -24,7 +24,8 @@ fn known_complexes() {
     // the four edges of a square: a circle
     assert_eq!(betti("[0,1]x[0]\n[0,1]x[1]\n[0]x[0,1]\n[1]x[0,1]\n"), vec![1, 1, 0]);
     // the six 2-faces of a cube: a sphere
-    let sphere = "[0,1]x[0,1]x[0]\n[0,1]x[0,1]x[1]\n[0,1]x[0]x[0,1]\n[0,1]x[1]x[0,1]\n[0]x[0,1]x[0,1]\n[1]x[0,1]x[0,1]\n";
+    let sphere =
+        "[0,1]x[0,1]x[0]\n[0,1]x[0,1]x[1]\n[0,1]x[0]x[0,1]\n[0,1]x[1]x[0,1]\n[0]x[0,1]x[0,1]\n[1]x[0,1]x[0,1]\n";
     assert_eq!(betti(sphere), vec![1, 0, 1, 0]);
     // the twelve edges of a cube: a graph of 8 vertices and 12 edges, H_1 = Z^5
     let mut edges = String::new();

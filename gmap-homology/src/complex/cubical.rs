@@ -224,12 +224,7 @@ pub(crate) fn slab_complex(
 
 /// The doubled grid of a box and the closure of its set and of the lower `cells` (doubled
 /// coordinates relative to the box, `d` a cell): [`PRESENT`] on every cell of it.
-fn closed_grid(
-    shape: &[usize],
-    bits: &[u8],
-    cells: &[usize],
-    periodic: bool,
-) -> Result<(Grid, Vec<u8>), CubicalError> {
+fn closed_grid(shape: &[usize], bits: &[u8], cells: &[usize], periodic: bool) -> Result<(Grid, Vec<u8>), CubicalError> {
     let d = shape.len();
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));

@@ -281,7 +281,15 @@ impl CubicalSet {
 /// A cell of absolute doubled coordinates as a product of intervals and points, `[0,1]x2`.
 fn cell_name(c: &[i64]) -> String {
     c.iter()
-        .map(|&x| if x % 2 != 0 { format!("[{},{}]", x.div_euclid(2), x.div_euclid(2) + 1) } else { (x / 2).to_string() })
+        .map(
+            |&x| {
+                if x % 2 != 0 {
+                    format!("[{},{}]", x.div_euclid(2), x.div_euclid(2) + 1)
+                } else {
+                    (x / 2).to_string()
+                }
+            },
+        )
         .collect::<Vec<_>>()
         .join("x")
 }
@@ -511,10 +519,9 @@ fn interval(t: &[u8], line: usize) -> Option<Result<(i64, i64), ImportError>> {
     Some(match ends[..] {
         [a] => Ok((a, a)),
         [a, b] if b == a || b == a + 1 => Ok((a, b)),
-        [a, b] => Err(syntax(
-            line,
-            format!("bad interval [{a},{b}]: an elementary interval is [a,a+1] or a point [a]"),
-        )),
+        [a, b] => {
+            Err(syntax(line, format!("bad interval [{a},{b}]: an elementary interval is [a,a+1] or a point [a]")))
+        }
         _ => Err(syntax(line, format!("'{}' is not an interval [a,a+1] or a point [a]", shorten(t, 80)))),
     })
 }
