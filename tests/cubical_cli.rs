@@ -138,3 +138,105 @@ fn periodic_takes_the_box_given_by_a_box_line_or_box() {
     assert_eq!(code, 1);
     assert!(err.contains("does not hold the cubes: along axis 0 they run from 0 to 2"), "{err}");
 }
+
+#[test]
+fn cubical_cell_complexes() {
+    // CHomP's cell syntaxes: the square's four edges, the cube's six 2-faces, a mix
+    assert_eq!(betti(&data("square_edges.cel"), &[]).0, vec![1, 1, 0]);
+    assert_eq!(betti(&data("cube_faces.cel"), &[]).0, vec![1, 0, 1, 0]);
+    let (b, v) = betti(&data("mixed.cub"), &[]);
+    assert_eq!((b, v["euler_characteristic"].as_i64()), (vec![3, 1, 0], Some(2)));
+    // the square's edges on a 1 x 1 periodic box: all four vertices one point, the edges two
+    // circles of the torus
+    assert_eq!(betti(&data("square_edges.cel"), &["--periodic"]).0, vec![1, 2, 0]);
+    assert_eq!(betti(&data("square_edges.cel"), &["--periodic", "--box", "(0,0) (2,2)"]).0, vec![1, 1, 0]);
+    let (code, out, err) = gmap(&["homology", &data("square_edges.cel"), "--generators"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("generator of H_1 (Z): -1 [0,1]x0 +1 0x[0,1] -1 1x[0,1] +1 [0,1]x1"), "{out}");
+    let (code, out, err) = gmap(&["info", &data("cube_faces.cel"), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!((v["cubes"].as_u64(), v["lower_cells"].as_u64()), (Some(0), Some(6)));
+    assert_eq!(v["cells"], serde_json::json!([8, 12, 6, 0]));
+    // the face poset of every cell; .gmap and .vtk hold cubes only
+    let dir = tempfile::tempdir().unwrap();
+    for ext in ["json", "dot", "graphml"] {
+        let out = dir.path().join(format!("m.{ext}"));
+        let (code, _, err) = gmap(&["convert", &data("mixed.cub"), out.to_str().unwrap()]);
+        assert_eq!(code, 0, "{ext}: {err}");
+    }
+    let back = dir.path().join("m.json");
+    assert_eq!(betti(back.to_str().unwrap(), &[]).0, vec![3, 1, 0]);
+    for ext in ["gmap", "vtk"] {
+        let out = dir.path().join(format!("m.{ext}"));
+        let (code, _, err) = gmap(&["convert", &data("mixed.cub"), out.to_str().unwrap()]);
+        assert_eq!(code, 1, "{ext}");
+        assert!(err.contains("6 cells of dimension below 2 on no 2-cube (the first: 0x[3,4])"), "{err}");
+        assert!(!out.exists());
+    }
+    // the page draws cubes: refused, naming a cell; bench times the whole complex only
+    let page = dir.path().join("m.html");
+    let (code, _, err) = gmap(&["view", &data("mixed.cub"), "-o", page.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.contains("(the first: 0x[3,4])"), "{err}");
+    assert!(!page.exists());
+    let (code, out, err) = gmap(&["bench", &data("mixed.cub"), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.iter().map(|r| r["route"].as_str().unwrap()).collect::<Vec<_>>(), ["cubical"], "{v}");
+    assert_eq!(rows[0]["betti"], serde_json::json!([3, 1, 0]), "{v}");
+    // a complex whose lower cells all lie on its cubes is the full set: .gmap keeps it
+    let faces = dir.path().join("faces.cel");
+    std::fs::write(&faces, "[0,1]x[0,1]\n[0]x[0,1]\n[(0,0) (1,0)]\n").unwrap();
+    let out = dir.path().join("faces.gmap");
+    let (code, _, err) = gmap(&["convert", faces.to_str().unwrap(), out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(betti(out.to_str().unwrap(), &[]).0, vec![1, 0, 0]);
+    // errors name the file and the line
+    let cases: [(&str, &str, &str); 4] = [
+        ("interval.cel", "[0,1]x[0]\n; ok\n[0,2]x[1]\n", "line 3: bad interval [0,2]"),
+        ("mixed.cel", "[0,1]x[0]\n[0]x[0]x[0]\n", "line 2: mixed dimensions"),
+        ("far.cel", "[(0,0) (2,1)]\n", "line 1: the vertices of the cell '[(0,0) (2,1)]' differ by 2 along axis 0"),
+        ("overflow.cel", "[0,1]x[99999999999999999999]\n", "line 1: '99999999999999999999' is not an integer"),
+    ];
+    for (name, text, what) in cases {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        let (code, _, err) = gmap(&["info", p.to_str().unwrap()]);
+        assert_eq!(code, 1, "{name}");
+        assert!(err.contains(name) && err.contains(what), "{name}: {err}");
+    }
+}
+
+#[test]
+fn info_takes_a_box() {
+    let dir = tempfile::tempdir().unwrap();
+    let row = dir.path().join("row.cub");
+    std::fs::write(&row, "(0)\n(1)\n(2)\n").unwrap();
+    let path = row.to_str().unwrap();
+    let json = |args: &[&str]| {
+        let (code, out, err) = gmap(args);
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str::<serde_json::Value>(&out).unwrap()
+    };
+    let v = json(&["info", path, "--json", "--box", "(-1) (5)"]);
+    assert_eq!((v["box_min"].clone(), v["box_shape"].clone()), (serde_json::json!([-1]), serde_json::json!([7])));
+    assert_eq!(v["cells"], serde_json::json!([4, 3]));
+    // periodic on the box of seven: the row stays a segment; on its own box it closes up
+    let v = json(&["info", path, "--json", "--box", "(-1) (5)", "--periodic"]);
+    assert_eq!((v["cells"].clone(), v["periodic"].clone()), (serde_json::json!([4, 3]), serde_json::json!(true)));
+    let v = json(&["info", path, "--json", "--periodic"]);
+    assert_eq!(v["cells"], serde_json::json!([3, 3]));
+    let (code, out, _) = gmap(&["info", path, "--box", "(0) (5)"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("box shape             6"), "{out}");
+    let (code, _, err) = gmap(&["info", path, "--box", "(1) (2)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("--box: the box from [1] to [2] does not hold the cubes"), "{err}");
+    let facets = dir.path().join("t.facets");
+    std::fs::write(&facets, "0 1 2\n").unwrap();
+    let (code, _, err) = gmap(&["info", facets.to_str().unwrap(), "--box", "(0) (1)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("--box applies to cubical sets"), "{err}");
+}

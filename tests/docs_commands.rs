@@ -15,6 +15,10 @@
 //! listed in [`NOT_RUN`] with the reason; so a command example cannot be added without
 //! being run.
 //!
+//! The `gmap …` commands written in prose, as inline code spans, and the usage synopses are
+//! checked too: their subcommand exists and every option they show is one it takes
+//! (against `gmap SUBCOMMAND --help`), so the prose cannot drift either.
+//!
 //! After a merge: `cargo test --profile test-release --test docs_commands` lists every
 //! mismatch at once (file, line, the command, expected and actual output).
 
@@ -230,6 +234,145 @@ fn every_command_in_the_docs_runs_as_shown() {
     }
     assert!(failures.is_empty(), "{} mismatches:\n\n{}", failures.len(), failures.join("\n\n"));
     assert!(ran >= 8, "only {ran} commands found");
+}
+
+/// The `gmap …` commands written in prose as inline code spans (`` `gmap homology FILE
+/// --generators` ``, also across a line break), outside fenced blocks: (line, text).
+fn inline_commands(text: &str) -> Vec<(usize, String)> {
+    // the prose: fenced lines blanked, so that backticks pair up across lines
+    let mut fenced = false;
+    let prose: Vec<&str> = text
+        .lines()
+        .map(|line| {
+            if line.trim_start().starts_with("```") {
+                fenced = !fenced;
+                ""
+            } else if fenced {
+                ""
+            } else {
+                line
+            }
+        })
+        .collect();
+    let prose = prose.join("\n");
+    let mut out = Vec::new();
+    let mut line = 1;
+    // the odd pieces between single backticks are code
+    for (k, piece) in prose.split('`').enumerate() {
+        let span = piece.split_whitespace().collect::<Vec<_>>().join(" ");
+        if k % 2 == 1 && span.starts_with("gmap ") {
+            out.push((line, span));
+        }
+        line += piece.matches('\n').count();
+    }
+    out
+}
+
+/// The options and subcommands a `--help` text lists: its words that start with `-`, and
+/// the first word of each line under `Commands:`.
+fn help_words(help: &str) -> (std::collections::BTreeSet<String>, std::collections::BTreeSet<String>) {
+    let mut flags = std::collections::BTreeSet::new();
+    let mut commands = std::collections::BTreeSet::new();
+    let mut in_commands = false;
+    for line in help.lines() {
+        if line.ends_with(':') && !line.starts_with(' ') {
+            in_commands = line == "Commands:";
+            continue;
+        }
+        if in_commands {
+            if let Some(w) = line.split_whitespace().next() {
+                commands.insert(w.to_string());
+            }
+        }
+        for w in line.split_whitespace() {
+            let w = w.trim_end_matches(',');
+            let w = w.split(['=', '[', '<']).next().unwrap_or(w);
+            if w.starts_with('-') && w.len() > 1 {
+                flags.insert(w.to_string());
+            }
+        }
+    }
+    (flags, commands)
+}
+
+/// Why an inline `gmap …` command does not parse: an unknown subcommand, or a flag its
+/// subcommand does not take. `help` runs `gmap ARGS… --help` (cached by the caller).
+fn check_inline(cmd: &str, help: &mut dyn FnMut(&[String]) -> String) -> Option<String> {
+    let w = words(cmd);
+    // a message or a file's line that starts with the word (`gmap bench: [2/5] FILE`,
+    // `gmap <n> <darts>`), not a command
+    let command_like = |s: &str| s.starts_with('-') || s.chars().all(|c| c.is_ascii_lowercase() || c == '-');
+    if w.first().map(String::as_str) != Some("gmap") || !w.get(1).is_some_and(|s| command_like(s)) {
+        return None;
+    }
+    let (root_flags, root_commands) = help_words(&help(&[]));
+    let mut path: Vec<String> = Vec::new();
+    let mut commands = root_commands;
+    let mut flags = root_flags.clone();
+    for word in &w[1..] {
+        if word.starts_with('-') {
+            let flag = word.trim_matches(|c| "[]()|.…,;:".contains(c));
+            let flag = flag.split('=').next().unwrap_or(flag);
+            if flag.len() > 1 && !flags.contains(flag) && !root_flags.contains(flag) {
+                return Some(format!("`{flag}` is not an option of `gmap {}`", path.join(" ")));
+            }
+            continue;
+        }
+        if commands.is_empty() || !word.starts_with(|c: char| c.is_ascii_alphanumeric()) {
+            continue;
+        }
+        if !commands.contains(word.as_str()) {
+            if path.is_empty() {
+                return Some(format!("`{word}` is not a gmap subcommand"));
+            }
+            // the subcommand's own subcommands are optional; the rest are arguments
+            commands.clear();
+            continue;
+        }
+        path.push(word.clone());
+        (flags, commands) = help_words(&help(&path));
+    }
+    None
+}
+
+#[test]
+fn inline_commands_name_real_subcommands_and_options() {
+    let mut cache: std::collections::HashMap<Vec<String>, String> = std::collections::HashMap::new();
+    let mut help = |path: &[String]| {
+        cache
+            .entry(path.to_vec())
+            .or_insert_with(|| {
+                let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args(path).arg("--help").output().unwrap();
+                String::from_utf8_lossy(&out.stdout).into_owned()
+            })
+            .clone()
+    };
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for file in doc_files() {
+        let text = std::fs::read_to_string(&file).unwrap();
+        let name = file.strip_prefix(root()).unwrap_or(&file).display().to_string();
+        let (_, others) = parse(&text);
+        for (line, cmd) in inline_commands(&text).into_iter().chain(others) {
+            if !cmd.starts_with("gmap ") {
+                continue;
+            }
+            checked += 1;
+            if let Some(why) = check_inline(&cmd, &mut help) {
+                failures.push(format!("{name}:{line}: `{cmd}`: {why}"));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{} commands in the prose do not parse:\n{}", failures.len(), failures.join("\n"));
+    assert!(checked >= 20, "only {checked} inline commands found");
+    // the checker refuses what it should
+    assert!(check_inline("gmap homologie FILE", &mut help).is_some());
+    assert!(check_inline("gmap homology FILE --generator", &mut help).is_some());
+    assert!(check_inline("gmap info FILE --generators", &mut help).is_some());
+    assert!(check_inline("gmap tm check FILE --cell 3", &mut help).is_some());
+    assert_eq!(check_inline("gmap bench: [2/5] FILE", &mut help), None);
+    assert_eq!(check_inline("gmap homology FILE [--generators] --max-memory 1G -q", &mut help), None);
+    assert_eq!(check_inline("gmap tm views FILE --cell 3", &mut help), None);
 }
 
 #[test]

@@ -108,6 +108,50 @@ fn gmap_rooms_writes_a_three_map_whose_volumes_are_the_rooms() {
     assert_eq!(stdout(&o), "faces 13, edges 29, vertices 20\n3-cells 3: 2 rooms and the outer cell\nroom 1: 8 faces, volume 72; next to room 2\nroom 2: 8 faces, volume 72; next to room 1\n");
     let written = std::fs::read_to_string(&json).unwrap();
     assert!(written.contains(r#"{"id": "window", "dim": 2, "labels": {"kind": "window"}}"#), "{written}");
+    // .gmap: the faces' labels and ids on the 2-cells (the wall with the window cut in two
+    // pieces, both the wall's), the rooms' ids on the volumes, the vertices' points
+    let map = dir.path().join("rooms.gmap");
+    let o = gmap(&["rooms", p(&from), p(&map)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let g = gmap::core::io::read_labelled_gmap(&map).unwrap();
+    let (dense, labels, _) = gmap::core::to_dense_labels(&g);
+    assert_eq!(dense.cell_counts(), vec![20, 31, 14, 2]);
+    let text = |l: &gmap::core::Labels, k: &str| match l.get(k) {
+        Some(gmap::core::LabelValue::Text(t)) => t.clone(),
+        other => panic!("{k}: {other:?}"),
+    };
+    let mut faces: Vec<(String, String)> = labels.of[2].iter().map(|l| (text(l, "id"), text(l, "kind"))).collect();
+    faces.sort();
+    let want: Vec<(String, String)> = [
+        ("ceiling 1", "ceiling"),
+        ("ceiling 2", "ceiling"),
+        ("door", "door"),
+        ("east wall", "wall"),
+        ("floor 1", "floor"),
+        ("floor 2", "floor"),
+        ("north 1", "wall"),
+        ("north 2", "wall"),
+        ("south 1", "wall"),
+        ("south 2", "wall"),
+        ("wall", "wall"),
+        ("wall", "wall"),
+        ("west wall", "wall"),
+        ("window", "window"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    assert_eq!(faces, want);
+    let mut rooms: Vec<String> = labels.of[3].iter().map(|l| text(l, "id")).collect();
+    rooms.sort();
+    assert_eq!(rooms, ["room 1", "room 2"]);
+    assert!(g.has_points());
+    // and gmap convert keeps them: nothing dropped, no --lossy needed
+    let converted = dir.path().join("converted.gmap");
+    let o = gmap(&["convert", p(&json), p(&converted)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let again = gmap::core::io::read_labelled_gmap(&converted).unwrap();
+    assert_eq!(gmap::core::to_dense_labels(&again).1, labels);
     // a free-standing wall is refused with its name
     let free = dir.path().join("free.off");
     std::fs::write(&free, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").unwrap();

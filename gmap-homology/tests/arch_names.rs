@@ -105,3 +105,28 @@ fn messages_name_regions_as_the_file_does() {
     assert_eq!(x.region_name(1), "p");
     assert_eq!(x.region_name(0), "7");
 }
+
+#[test]
+fn unsigned_non_orientable_complexes_are_refused_with_a_region_name() {
+    // three squares in a ring: without a twist an annulus, read with its groups
+    let annulus = read_json(&data("annulus_unsigned.json")).unwrap();
+    assert_eq!(annulus.homology_z().unwrap().betti, vec![1, 1, 0]);
+    // the faces of neighbours cancel: every edge between two squares has weights ±1 summing to 0
+    let ch = annulus.chain_complex();
+    for row in ch.boundary(2).to_dense() {
+        let s: i64 = row.iter().sum();
+        assert!(s == 0 || row.iter().filter(|&&w| w != 0).count() == 1, "{row:?}");
+    }
+    // with a twist, a Möbius band: no orientation agrees all the way round
+    let text = data("moebius_unsigned.json");
+    match read_json(&text) {
+        Err(e @ JsonError::Arch(ArchError::CannotOrient { dim: 2, at: Some(_), .. }, _)) => {
+            let m = e.to_string();
+            assert!(m.contains("2-region square ") && m.contains("(panel "), "{m}");
+            assert!(m.contains("the complex is not orientable"), "{m}");
+            assert!(m.contains("at region rung "), "{m}");
+            assert!(m.ends_with("give the incidence weights"), "{m}");
+        }
+        other => panic!("{other:?}"),
+    }
+}

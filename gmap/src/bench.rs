@@ -319,12 +319,17 @@ type Push<'a> = dyn FnMut(&'static str, Vec<usize>, Times, std::result::Result<H
 /// The rows of a cubical input: the one-pass route (dimension ≤ 3), the cubical complex
 /// built and reduced slab by slab (read in memory order), then the whole cubical complex of
 /// the closure after collapses of free faces (an image made a bitmap first, timed as
-/// reading). With `periodic` (the torus of the box) the one-pass route does not apply.
+/// reading). With `periodic` (the torus of the box) the one-pass route does not apply; a
+/// cubical cell complex with cells on no cube takes the whole complex only (the other two
+/// routes read cubes).
 fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Result<()> {
     let shape = match cubes {
         Cubes::Image(img) => img.memory_shape(),
         Cubes::Set(set) => set.shape().to_vec(),
     };
+    if matches!(cubes, Cubes::Set(set) if !set.is_full()) {
+        return whole_cubical_row(cubes, read, periodic, push);
+    }
     if shape.len() <= 3 && !periodic {
         let mut times = Times { read, ..Times::default() };
         let t = Instant::now();
@@ -374,7 +379,12 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
         }
         Err(e) => push("slabs", Vec::new(), times, Err(e.to_string())),
     }
-    // the whole cubical complex
+    whole_cubical_row(cubes, read, periodic, push)
+}
+
+/// The row of the whole cubical complex of the closure of the cubes (and lower cells) after
+/// collapses of free faces.
+fn whole_cubical_row(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Result<()> {
     let mut times = Times { read, ..Times::default() };
     let t = Instant::now();
     let image_set;
@@ -389,7 +399,8 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
         }
     };
     let t = Instant::now();
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), periodic, true);
+    let cells = set.lower_cells_in_box();
+    let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, true);
     times.border = Some(ms(t));
     match c {
         Ok(c) => {

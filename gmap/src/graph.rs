@@ -63,9 +63,10 @@ pub(crate) fn simplicial(sc: &SimplicialComplex, max_cells: Option<u64>, file: &
     })
 }
 
-/// Every cell of the closure of a cubical set (no collapse).
+/// Every cell of the closure of a cubical set or cell complex (no collapse).
 pub(crate) fn cubical(set: &CubicalSet, periodic: bool, file: &str) -> Result<ArchComplex> {
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), periodic, false)
+    let cells = set.lower_cells_in_box();
+    let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, false)
         .map_err(|e| err!(Limit, "{file}: {e}"))?;
     from_chain(&c.chain, |k, j| c.cell_name(k, j, set.min()))
 }

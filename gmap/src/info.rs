@@ -24,6 +24,9 @@ pub struct InfoOptions {
     pub max_cells: Option<u64>,
     /// a cubical set's box is a torus (opposite faces identified)
     pub periodic: bool,
+    /// a cubical set's box as its first and last cubes (default: the cubes' bounding box, or
+    /// the file's `box` line)
+    pub cubical_box: Option<(Vec<i64>, Vec<i64>)>,
     /// an image's cubical set: the values `≤ T` (default: the non-zero values)
     pub level: Option<f64>,
     /// where the stages are shown
@@ -126,6 +129,10 @@ pub struct ArchInfo {
     pub labels: Vec<(String, usize)>,
 }
 
+fn is_zero(n: &usize) -> bool {
+    *n == 0
+}
+
 /// The characteristics of a cubical set: the keys of a map's with the cells of the closure,
 /// no darts, then its own.
 #[derive(Clone, Debug, Serialize)]
@@ -140,6 +147,10 @@ pub struct CubicalInfo {
     pub kind: &'static str,
     /// cubes of the set
     pub cubes: usize,
+    /// the listed cells of lower dimension on no cube (a cubical cell complex); absent for a
+    /// full set
+    #[serde(skip_serializing_if = "is_zero")]
+    pub lower_cells: usize,
     /// the box: minimal vertex
     pub box_min: Vec<i64>,
     /// the box: cubes per axis
@@ -183,6 +194,9 @@ pub struct SimplicialInfo {
 /// has one, else by its simplices with the reason it has none.
 pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
     let file = input.path().display().to_string();
+    if o.cubical_box.is_some() && !matches!(input, Input::Cubical(_)) {
+        return Err(err!(Usage, "{file}: --box applies to cubical sets (.cub, .cel, .pbm)"));
+    }
     o.progress.stage("computing");
     let simplicial = match input {
         Input::Simplicial(sc) => match sc.get().to_gmap_within(o.max_darts) {
@@ -199,7 +213,7 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         Err(map) => map,
     };
     if o.periodic && !matches!(input, Input::Cubical(_) | Input::Image(_)) {
-        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm, .npy, .complex)"));
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .cel, .pbm, .npy, .complex)"));
     }
     if o.level.is_some() && !matches!(input, Input::Image(_)) {
         return Err(err!(Usage, "{file}: --level applies to images (.npy, .complex)"));
@@ -214,7 +228,13 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         }
         Input::Simplicial(_) => Info::Map(map_info(&made_map)),
         Input::Arch(x) => Info::Arch(arch_info(x)),
-        Input::Cubical(set) => Info::Cubical(cubical_info(set, o.periodic, &file)?),
+        Input::Cubical(set) => match &o.cubical_box {
+            Some((first, last)) => {
+                let boxed = set.with_box(first, last).map_err(|e| err!(Usage, "{file}: --box: {e}"))?;
+                Info::Cubical(cubical_info(&boxed, o.periodic, &file)?)
+            }
+            None => Info::Cubical(cubical_info(set, o.periodic, &file)?),
+        },
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
             let set = img
@@ -270,7 +290,8 @@ pub fn arch_info(x: &ArchComplex) -> ArchInfo {
 /// The characteristics of a cubical set: the cells of its closure (of the torus when
 /// `periodic`).
 pub fn cubical_info(set: &CubicalSet, periodic: bool, file: &str) -> Result<CubicalInfo> {
-    let c = gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), periodic, false)
+    let cells = set.lower_cells_in_box();
+    let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, false)
         .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
     Ok(CubicalInfo {
         dimension: set.dim(),
@@ -279,6 +300,7 @@ pub fn cubical_info(set: &CubicalSet, periodic: bool, file: &str) -> Result<Cubi
         cells: c.chain.counts().to_vec(),
         kind: "cubical set",
         cubes: set.cube_count(),
+        lower_cells: set.lower_cell_count(),
         box_min: set.min().to_vec(),
         box_shape: set.shape().to_vec(),
         periodic,
@@ -378,17 +400,23 @@ impl Info {
                 ("euler characteristic", i.euler_characteristic.to_string()),
                 ("labels", labels_text(&i.labels)),
             ],
-            Info::Cubical(i) => vec![
-                file,
-                ("kind", i.kind.to_string()),
-                ("dimension", i.dimension.to_string()),
-                ("cubes", i.cubes.to_string()),
-                ("box min", i.box_min.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")),
-                ("box shape", list(&i.box_shape, " x ")),
-                ("periodic", yes(i.periodic)),
-                ("cells (0..n)", list(&i.cells, " ")),
-                ("euler characteristic", i.euler_characteristic.to_string()),
-            ],
+            Info::Cubical(i) => {
+                let mut rows = vec![
+                    file,
+                    ("kind", i.kind.to_string()),
+                    ("dimension", i.dimension.to_string()),
+                    ("cubes", i.cubes.to_string()),
+                    ("box min", i.box_min.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")),
+                    ("box shape", list(&i.box_shape, " x ")),
+                    ("periodic", yes(i.periodic)),
+                    ("cells (0..n)", list(&i.cells, " ")),
+                    ("euler characteristic", i.euler_characteristic.to_string()),
+                ];
+                if i.lower_cells > 0 {
+                    rows.insert(4, ("cells on no cube", i.lower_cells.to_string()));
+                }
+                rows
+            }
             Info::Simplicial(i) => vec![
                 file,
                 ("kind", i.kind.to_string()),

@@ -6,7 +6,7 @@
 //! | `.gmap`, `.moka`, `.off` | `gmap_core::io`, `gmap_ops::import` | [`Input::Map`] |
 //! | `.vtk`, `.vtu`, `.msh` (unstructured meshes) | `gmap_ops::import` (`gmap_ops::mesh`) | [`Input::Map`], with labels |
 //! | `.facets`, `.lex[#name]` | `gmap_ops::import::SimplicialComplex` | [`Input::Simplicial`] |
-//! | `.cub`, `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
+//! | `.cub`, `.cel` (CHomP's cubes and cells), `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
 //! | `.npy`, `.complex` (DIPHA) | `gmap_ops::import::Image`, memory-mapped | [`Input::Image`] |
 //! | `.json` | `gmap_homology::json` | [`Input::Arch`] |
 //!
@@ -27,7 +27,7 @@ use crate::error::{err, Error, Result};
 
 /// The extensions [`open`] reads (the files `gmap bench` takes from a folder).
 pub const INPUT_EXTENSIONS: &[&str] =
-    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "pbm", "vtk", "vtu", "msh", "npy", "complex"];
+    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "cel", "pbm", "vtk", "vtu", "msh", "npy", "complex"];
 
 /// Options of [`open_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -53,7 +53,7 @@ pub enum Input {
     Map(MapInput),
     /// a simplicial complex (`.facets`, `.lex`): every route starts from its facets
     Simplicial(Sourced<SimplicialComplex>),
-    /// a full cubical set (`.cub`, `.pbm`)
+    /// a cubical set (`.cub`, `.pbm`) or cubical cell complex (`.cub`, `.cel`)
     Cubical(Sourced<CubicalSet>),
     /// a grey-value image (`.npy`, DIPHA's `.complex`): a cubical set at a level
     /// (`HomologyOptions::level`; default: the non-zero values)
@@ -294,7 +294,7 @@ fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
             };
             Error::from_source(kind, &e).with_path(path)
         })?)),
-        "cub" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
+        "cub" | "cel" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
         "pbm" => Input::Cubical(Sourced { value: import::read_pbm(path)?, source: source.clone() }),
         "npy" | "complex" => Input::Image(Sourced { value: Image::read(path)?, source: source.clone() }),
         // a view: the drawing does not give back the map

@@ -85,6 +85,8 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
             f.diagram(opts.field, opts.cycles).map_err(compute)
         }
         Input::Cubical(c) => {
+            c.require_full("the image of 0 on the cubes and 1 elsewhere")
+                .map_err(|e| Error::new(ErrorKind::Unsupported, e.to_string()).with_path(c.path()))?;
             // the set's cubes, axis 0 fastest, as a C-order array of the reversed shape
             let mut shape = c.shape().to_vec();
             shape.reverse();

@@ -222,7 +222,7 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     let file = route::file_of(input);
     if let Some((first, last)) = &o.cubical_box {
         let Input::Cubical(set) = input else {
-            return Err(err!(Usage, "{file}: --box applies to cubical sets (.cub, .pbm)"));
+            return Err(err!(Usage, "{file}: --box applies to cubical sets (.cub, .cel, .pbm)"));
         };
         let boxed = set.with_box(first, last).map_err(|e| err!(Usage, "{file}: --box: {e}"))?;
         let mut inner = o.clone();
@@ -236,7 +236,7 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     }
     // dimension ≤ 3: the groups in one pass over the cubes, no cubical complex
     let one_pass = match input {
-        Input::Cubical(set) => {
+        Input::Cubical(set) if set.is_full() => {
             let bits = set.bits();
             route::cubical_one_pass(set.shape(), |s, out| out.copy_from_slice(&bits[s..s + out.len()]), o, &file)?
         }
@@ -358,7 +358,7 @@ pub fn homology_file(path: impl AsRef<std::path::Path>, o: &HomologyOptions) -> 
     check_options(
         &path.display().to_string(),
         matches!(ext.as_str(), "facets" | "lex"),
-        matches!(ext.as_str(), "cub" | "pbm" | "npy" | "complex"),
+        matches!(ext.as_str(), "cub" | "cel" | "pbm" | "npy" | "complex"),
         o,
     )?;
     o.progress.stage(&format!("reading {}", path.display()));
@@ -378,7 +378,7 @@ fn check_options(file: &str, simplicial: bool, cubical: bool, o: &HomologyOption
         ));
     }
     if o.periodic && !cubical {
-        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .pbm, .npy, .complex)"));
+        return Err(err!(Usage, "{file}: --periodic applies to cubical sets (.cub, .cel, .pbm, .npy, .complex)"));
     }
     Ok(route)
 }

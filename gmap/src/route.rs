@@ -383,9 +383,12 @@ pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
 /// the set's).
 pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
     check_cubical_options(o, file)?;
-    let (c, relative) = if whole_grid_fits(set.shape(), o.periodic) {
+    // a cell complex's lower cells are marked on the whole grid
+    let (c, relative) = if whole_grid_fits(set.shape(), o.periodic) || !set.is_full() {
         o.progress.stage("building the cubical complex");
-        gmap_homology::cubical::cubical_complex_with(set.shape(), set.bits(), o.periodic, true).map(|c| (c, None))
+        let cells = set.lower_cells_in_box();
+        gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, o.periodic, true)
+            .map(|c| (c, None))
     } else {
         o.progress.stage("building and reducing the cubical complex slab by slab");
         let bits = set.bits();

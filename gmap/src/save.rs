@@ -74,6 +74,13 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
         Input::Cubical(set) if is_graph(output) => {
             write_graph(&crate::graph::cubical(set, false, &set.path().display().to_string())?, output)
         }
+        // .vtk voxels and a G-map of d-cells hold the cubes only
+        Input::Cubical(set) if !set.is_full() => {
+            let what = if extension(output) == "vtk" { ".vtk (voxels)" } else { "a G-map of its cubes" };
+            let why = set.require_full(what).err().map(|e| e.to_string()).unwrap_or_default();
+            Err(err!(Unsupported, "{}: {why}; write .json, .dot or .graphml (every cell)", set.path().display())
+                .with_path(set.path()))
+        }
         Input::Cubical(set) if extension(output) == "vtk" => {
             gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
         }
@@ -135,7 +142,10 @@ pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static st
             matches!(m.dense_labels(), Some(Ok((_, l))) if !l.is_empty()),
             graph || matches!(ext.as_str(), "gmap" | "vtk"),
         ),
-        Input::Arch(x) => ((0..x.regions().len()).any(|r| !x.region_labels(r).is_empty()), graph),
+        Input::Arch(x) => (
+            (0..x.regions().len()).any(|r| !x.region_labels(r).is_empty()),
+            graph || (ext == "gmap" && x.dim() <= gmap_core::labels::MAX_LABELLED_DIM),
+        ),
         _ => (false, true),
     };
     if labels && (!keeps_labels || o.boundary) {
@@ -312,6 +322,8 @@ pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Resu
 fn write_arch(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
     match extension(output).as_str() {
         _ if is_graph(output) => write_graph(x, output),
+        // a .gmap holds the regions' labels on their cells and the vertices' points
+        "gmap" => Ok(gmap_core::io::write_labelled_gmap(&arch_to_labelled(x, max_darts, input, output)?, output)?),
         _ => save_map(&arch_to_map(x, max_darts, input, output)?, output),
     }
 }
@@ -320,6 +332,66 @@ fn write_arch(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u6
 /// Refusals name the input first (`input`, when not empty) and say that `output` is not
 /// written.
 pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path, output: &Path) -> Result<DenseMap> {
+    arch_to_flags(x, max_darts, input, output).map(|(map, _, _)| map)
+}
+
+/// The G-map of an architectural complex's cells with each cell's labels and each vertex's
+/// point: an `i`-cell of the map that is (a piece of) an `i`-region carries that region's
+/// labels (`i ≤ 5`) and its string id as the label `id` (unless it has one); the cells that
+/// cut a region (its new edges and vertices) carry none.
+/// Vertices get their regions' points when every vertex has one. O(darts · n).
+pub(crate) fn arch_to_labelled(
+    x: &ArchComplex,
+    max_darts: Option<u64>,
+    input: &Path,
+    output: &Path,
+) -> Result<LabelledGMap> {
+    let (map, flags, origin) = arch_to_flags(x, max_darts, input, output)?;
+    let w = map.dim() + 1;
+    // the region an i-cell of the map is, when it has the region's dimension
+    let region = |k: usize, i: usize| Some(origin[flags[k * w + i] as usize]).filter(|&r| x.region(r).dim == i);
+    let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&map);
+    let vertices = map.cells(0);
+    let points: Option<Vec<[f64; 3]>> =
+        vertices.reps.iter().map(|d| region(d.index(), 0).and_then(|r| x.region_point(r))).collect();
+    for (c, d) in vertices.reps.iter().enumerate() {
+        if let Some(p) = points.as_ref().map(|p| p[c]) {
+            g.set_point(ids[d.index()], Some(p));
+        }
+    }
+    for i in 0..=map.dim().min(gmap_core::labels::MAX_LABELLED_DIM) {
+        for d in map.cells(i).reps {
+            let Some(r) = region(d.index(), i) else { continue };
+            let mut l = x.region_labels(r).clone();
+            if let (Some(key), None) = (x.region_key(r), l.get("id")) {
+                l.set("id", gmap_core::LabelValue::Text(key.to_string()));
+            }
+            if l.is_empty() {
+                continue;
+            }
+            let at = ids[d.index()];
+            let set = match i {
+                0 => g.try_set_attribute::<0>(at, l).map(drop),
+                1 => g.try_set_attribute::<1>(at, l).map(drop),
+                2 => g.try_set_attribute::<2>(at, l).map(drop),
+                3 => g.try_set_attribute::<3>(at, l).map(drop),
+                4 => g.try_set_attribute::<4>(at, l).map(drop),
+                _ => g.try_set_attribute::<5>(at, l).map(drop),
+            };
+            set.map_err(|e| err!(Compute, "the labels of region {}: {e}", x.region_name(r)))?;
+        }
+    }
+    Ok(g)
+}
+
+/// [`arch_to_map`] with the flags of its darts and the region of each cell of the face
+/// poset the map was made from (`FacePoset::to_gmap_with_flags`).
+fn arch_to_flags(
+    x: &ArchComplex,
+    max_darts: Option<u64>,
+    input: &Path,
+    output: &Path,
+) -> Result<(DenseMap, Vec<u32>, Vec<usize>)> {
     let limit = max_darts.unwrap_or_else(|| gmap_ops::import::default_max_darts(x.dim()));
     let not_written = format!("(nothing written to {})", output.display());
     let named = |e: Error| {
@@ -331,7 +403,7 @@ pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path,
         }
     };
     let cells = crate::arch_cells::cells(x).map_err(named)?;
-    let map = cells.poset.to_gmap(limit).map_err(|e| match e {
+    let (map, flags) = cells.poset.to_gmap_with_flags(limit).map_err(|e| match e {
         PosetError::TooManyDarts { .. } | PosetError::MemoryLimit(_) => {
             err!(Limit, "{}: {e}; raise the limit with --max-darts N or --max-memory BYTES", output.display())
         }
@@ -342,5 +414,5 @@ pub(crate) fn arch_to_map(x: &ArchComplex, max_darts: Option<u64>, input: &Path,
         )),
     })?;
     crate::arch_cells::check_solids(x, &cells, limit).map_err(named)?;
-    Ok(map)
+    Ok((map, flags, cells.origin))
 }

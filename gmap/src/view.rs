@@ -99,6 +99,8 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
             Ok(scene)
         }
         Input::Cubical(set) => {
+            set.require_full("the page, which draws cubes,")
+                .map_err(|e| err!(Unsupported, "{}: {e}", set.path().display()).with_path(set.path()))?;
             let mut scene = Scene::from_cubical(set, &title);
             if o.generators {
                 let gens = report_of(input)?;

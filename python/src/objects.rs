@@ -321,9 +321,10 @@ impl PyCubicalSet {
     }
 
     /// The set as a bool array of the box's shape: array[i0, …] is the cube with minimal
-    /// vertex min + (i0, …).
+    /// vertex min + (i0, …). Refused for a cell complex with lower cells on no cube.
     #[getter]
     fn array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        self.set().require_full("an array of cubes").map_err(|e| Failure::input(e.to_string()))?;
         let flat = PyArray1::from_slice(py, self.set().bits());
         let order = if self.reversed { "C" } else { "F" };
         let shaped = flat.call_method("reshape", (self.np_shape(),), Some(&[("order", order)].into_py_dict(py)?))?;
@@ -348,6 +349,7 @@ impl PyCubicalSet {
             );
         }
         let set = self.set();
+        set.require_full("a .cub of cubes").map_err(|e| Failure::input(e.to_string()))?;
         let mut s = format!("dimension {}\n", set.dim());
         for mut c in set.cubes() {
             if self.reversed {

@@ -71,16 +71,20 @@ struct Limits {
 
 #[derive(Args, Debug)]
 struct InfoArgs {
-    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
     file: PathBuf,
     /// print one JSON object
     #[arg(long)]
     json: bool,
     #[command(flatten)]
     limits: Limits,
-    /// for a cubical set (.cub, .pbm, .npy, .complex): identify the opposite faces of its box
+    /// for a cubical set (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of its box
     #[arg(long)]
     periodic: bool,
+    /// for a cubical set (.cub, .cel, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
+    /// (default: the cubes' bounding box, or the file's `box` line)
+    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
+    cubical_box: Option<(Vec<i64>, Vec<i64>)>,
     /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
     #[arg(long, value_name = "T")]
     level: Option<f64>,
@@ -88,7 +92,7 @@ struct InfoArgs {
 
 #[derive(Args, Debug)]
 struct HomologyArgs {
-    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
+    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
     file: PathBuf,
     /// cellular (default) or simplicial
     #[arg(long, value_enum, default_value_t = Method::Cellular)]
@@ -117,10 +121,10 @@ struct HomologyArgs {
     /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
     #[arg(long, value_enum)]
     via: Option<Via>,
-    /// for a cubical set (.cub, .pbm, .npy, .complex): identify the opposite faces of its box (a torus)
+    /// for a cubical set (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of its box (a torus)
     #[arg(long)]
     periodic: bool,
-    /// for a cubical set (.cub, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
+    /// for a cubical set (.cub, .cel, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
     /// (default: the cubes' bounding box, or the file's `box` line)
     #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
     cubical_box: Option<(Vec<i64>, Vec<i64>)>,
@@ -142,14 +146,14 @@ struct BenchArgs {
     csv: bool,
     #[command(flatten)]
     limits: Limits,
-    /// for cubical sets (.cub, .pbm, .npy, .complex): identify the opposite faces of the box (a torus)
+    /// for cubical sets (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of the box (a torus)
     #[arg(long)]
     periodic: bool,
 }
 
 #[derive(Args, Debug)]
 struct ConvertArgs {
-    /// input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .pbm, .npy, .complex)
+    /// input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
     input: PathBuf,
     /// output file: .gmap, .moka, .off, .vtk, .facets, .lar.json, .npy, .complex, or the
     /// incidence graph as .json, .dot, .graphml
@@ -239,6 +243,7 @@ fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     let mut o = gmap::InfoOptions::default();
     (o.max_darts, o.periodic, o.level, o.progress) = (a.limits.max_darts, a.periodic, a.level, progress.clone());
     o.max_cells = a.limits.max_cells;
+    o.cubical_box = a.cubical_box;
     let info = gmap::info(&input, &o);
     progress.finish();
     let info = info?;

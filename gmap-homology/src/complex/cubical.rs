@@ -163,7 +163,32 @@ pub fn cubical_complex_with(
     periodic: bool,
     collapse: bool,
 ) -> Result<CubicalComplex, CubicalError> {
-    let (g, mut state) = closed_grid(shape, bits, periodic)?;
+    cubical_cell_complex_with(shape, bits, &[], periodic, collapse)
+}
+
+/// The cubical complex of a cubical cell complex: the closure of the cubes of `bits` (as in
+/// [`cubical_complex_with`]) and of the lower cells `cells`, each given by its doubled
+/// coordinates relative to the box (`2 (x_a - min_a) + e_a` along axis `a`, `e_a` 1 where the
+/// cell spans the axis, 0 where it is a point), `d` coordinates a cell, each at most `2 L_a`.
+/// On a periodic box the coordinate `2 L_a` is the coordinate 0 (the box's opposite faces
+/// are one). O(grid points × d + cells × d).
+///
+/// ```
+/// use gmap_homology::{cubical::cubical_cell_complex_with, homology_z};
+/// // the four edges of the unit square, no square: [0,1]x0, [0,1]x1, 0x[0,1], 1x[0,1]
+/// let edges = [1, 0, 1, 2, 0, 1, 2, 1];
+/// let c = cubical_cell_complex_with(&[1, 1], &[0], &edges, false, false).unwrap();
+/// assert_eq!(c.chain.counts(), &[4, 4, 0]);
+/// assert_eq!(homology_z(&c.chain).unwrap().betti, vec![1, 1, 0]);
+/// ```
+pub fn cubical_cell_complex_with(
+    shape: &[usize],
+    bits: &[u8],
+    cells: &[usize],
+    periodic: bool,
+    collapse: bool,
+) -> Result<CubicalComplex, CubicalError> {
+    let (g, mut state) = closed_grid(shape, bits, cells, periodic)?;
     if collapse {
         collapse_free_faces(&g, &mut state);
     }
@@ -181,7 +206,7 @@ pub(crate) fn slab_complex(
     shared_first: bool,
     shared_last: bool,
 ) -> Result<CubicalComplex, CubicalError> {
-    let (g, mut state) = closed_grid(shape, bits, false)?;
+    let (g, mut state) = closed_grid(shape, bits, &[], false)?;
     let d = shape.len();
     let (s, last) = (g.stride[d - 1], g.n[d - 1] - 1);
     for (shared, c) in [(shared_first, 0), (shared_last, last)] {
@@ -197,8 +222,9 @@ pub(crate) fn slab_complex(
     build(&g, &state)
 }
 
-/// The doubled grid of a box and the closure of its set: [`PRESENT`] on every cell of it.
-fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Vec<u8>), CubicalError> {
+/// The doubled grid of a box and the closure of its set and of the lower `cells` (doubled
+/// coordinates relative to the box, `d` a cell): [`PRESENT`] on every cell of it.
+fn closed_grid(shape: &[usize], bits: &[u8], cells: &[usize], periodic: bool) -> Result<(Grid, Vec<u8>), CubicalError> {
     let d = shape.len();
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));
@@ -230,7 +256,23 @@ fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Ve
     state.try_reserve_exact(len).map_err(|_| CubicalError::OutOfMemory { what: "the grid", bytes: len as u64 })?;
     state.resize(len, 0);
 
-    mark_closure(shape, &g.n, &g.stride, bits, &mut state);
+    if !cells.len().is_multiple_of(d) {
+        return Err(CubicalError::BadShape(format!("{} cell coordinates for dimension {d}", cells.len())));
+    }
+    mark_cubes(shape, &g.stride, bits, &mut state);
+    for cell in cells.chunks_exact(d) {
+        let mut p = 0usize;
+        for a in 0..d {
+            // the closed box's last hyperplane is the first one of a periodic box
+            let c = if periodic && cell[a] == g.n[a] { 0 } else { cell[a] };
+            if c >= g.n[a] {
+                return Err(CubicalError::BadShape(format!("the cell {cell:?} is outside the box {shape:?}")));
+            }
+            p += c * g.stride[a];
+        }
+        state[p] = PRESENT;
+    }
+    close_marked(&g.n, &g.stride, &mut state);
     Ok((g, state))
 }
 
@@ -239,9 +281,13 @@ fn closed_grid(shape: &[usize], bits: &[u8], periodic: bool) -> Result<(Grid, Ve
 /// `shape`) and every face of them: their closure. A last odd coordinate of a periodic grid
 /// (`n` even) has its upper face at 0. O(points × dimension).
 pub(crate) fn mark_closure(shape: &[usize], n: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
-    let d = n.len();
-    let len = out.len();
-    // the cubes: doubled point 2x + 1
+    mark_cubes(shape, stride, bits, out);
+    close_marked(n, stride, out);
+}
+
+/// Marks [`PRESENT`] the cubes of `bits` (doubled point 2x + 1 of cube x). O(cubes × d).
+fn mark_cubes(shape: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
+    let d = shape.len();
     let mut x = vec![0usize; d];
     for &b in bits {
         if b != 0 {
@@ -256,7 +302,12 @@ pub(crate) fn mark_closure(shape: &[usize], n: &[usize], stride: &[usize], bits:
             x[a] = 0;
         }
     }
-    // along each axis in turn, a point with an odd coordinate marks its two faces
+}
+
+/// Marks [`PRESENT`] every face of the marked cells of `out`: along each axis in turn, a
+/// point with an odd coordinate marks its two faces. O(points × d).
+fn close_marked(n: &[usize], stride: &[usize], out: &mut [u8]) {
+    let (d, len) = (n.len(), out.len());
     for a in 0..d {
         let (s, na) = (stride[a], n[a]);
         let block = s * na;

@@ -104,6 +104,12 @@ pub enum ExportError {
         /// the map's dimension
         found: usize,
     },
+    /// A cubical cell complex with lower cells on no cube, for a format of cubes only.
+    #[error("{reason}")]
+    LowerCells {
+        /// which cells and why the format drops them
+        reason: String,
+    },
     /// Writing failed.
     #[error("{path}: {source}")]
     Io {

@@ -3,7 +3,7 @@
 //! (`VTK_HEXAHEDRON` 12) in dimension 3, a quadrangle (`VTK_QUAD` 9) in dimension 2, a line
 //! (`VTK_LINE` 3) in dimension 1, corners in VTK's order (the bottom face counter-clockwise,
 //! then the top one), which every VTK reader and ours read — and the cell data `dim`. Sets of dimension above 3 are
-//! refused. O(cubes · 2^d).
+//! refused, so are cubical cell complexes with lower cells on no cube. O(cubes · 2^d).
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -22,6 +22,7 @@ pub fn cubical_vtk_string(set: &CubicalSet) -> Result<String, ExportError> {
         3 => (12, &[0, 1, 3, 2, 4, 5, 7, 6]),
         _ => return Err(ExportError::DimensionAbove { format: ".vtk (voxels)", max: 3, found: d }),
     };
+    set.require_full(".vtk (voxels)").map_err(|e| ExportError::LowerCells { reason: e.to_string() })?;
     let mut points: Vec<[i64; 3]> = Vec::new();
     let mut index: HashMap<[i64; 3], usize> = HashMap::new();
     let mut cells: Vec<Vec<usize>> = Vec::new();

@@ -1,8 +1,11 @@
-//! Full cubical sets: CHomP's `.cub` text format and 2D Netpbm bitmaps (`.pbm`, P1 and P4),
-//! read into a [`CubicalSet`], a bitmap over the bounding box (docs/FORMATS.md).
+//! Cubical sets: CHomP's `.cub` text format (full cubes and cells), its `.cel` cell lists and
+//! 2D Netpbm bitmaps (`.pbm`, P1 and P4), read into a [`CubicalSet`], a bitmap over the
+//! bounding box with the lower cells that lie on none of its cubes (docs/FORMATS.md).
 //!
-//! A set is the union of closed unit cubes `[x_1, x_1 + 1] × … × [x_d, x_d + 1]`, each given
-//! by its minimal vertex. [`CubicalSet::gmap`] builds the G-map of the union where that route
+//! A full set is the union of closed unit cubes `[x_1, x_1 + 1] × … × [x_d, x_d + 1]`, each
+//! given by its minimal vertex. A cubical cell complex adds elementary cubes of lower
+//! dimension, products of intervals `[a, a + 1]` and points `[a]` (`[0,1]x[2]`): the space is
+//! the union of the listed cells and all their faces. [`CubicalSet::gmap`] builds the G-map of the union where that route
 //! applies (every cube one d-cell, sewn to its neighbours along shared facets); the cubical
 //! chain complex itself is built by `gmap_homology::cubical`.
 //!
@@ -27,7 +30,9 @@ use super::common::{read_bytes, FileError, ImportError};
 /// ([`gmap_core::resources::cubical_set_estimate`], checked before the bitmap is allocated).
 pub const MAX_BOX_CUBES: u64 = 1 << 30;
 
-/// A full cubical set: the cubes of a box `min + [0, shape)` that belong to the set.
+/// A cubical set: the cubes of a box `min + [0, shape)` that belong to the set and, for a
+/// cubical cell complex, the listed cells of lower dimension that lie on none of them (the
+/// space is the union of the cubes, those cells and all their faces).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CubicalSet {
     min: Vec<i64>,
@@ -35,6 +40,9 @@ pub struct CubicalSet {
     /// one byte a cube (0 or 1), axis 0 fastest
     bits: Vec<u8>,
     count: usize,
+    /// the lower cells on no cube, `d` absolute doubled coordinates each (`2 x_a + e_a`, `e_a`
+    /// 1 where the cell spans axis `a`), sorted, without repeats; empty for a full set
+    cells: Vec<i64>,
 }
 
 impl CubicalSet {
@@ -55,7 +63,94 @@ impl CubicalSet {
             *b = (*b != 0) as u8;
             count += *b as usize;
         }
-        Ok(CubicalSet { min, shape, bits, count })
+        Ok(CubicalSet { min, shape, bits, count, cells: Vec::new() })
+    }
+
+    /// Whether the set is the union of its full cubes (no lower cell outside them): what
+    /// routes and writers that take cubes only (`.gmap` of d-cells, `.vtk` voxels, images,
+    /// persistence) need.
+    pub fn is_full(&self) -> bool {
+        self.cells.is_empty()
+    }
+
+    /// Refuses a set that is not full ([`CubicalSet::is_full`]) for `what`, which holds only
+    /// d-cubes and would drop the lower cells: the reason names the first of them.
+    pub fn require_full(&self, what: &str) -> Result<(), ImportError> {
+        match self.lower_cell_names().next() {
+            None => Ok(()),
+            Some(first) => Err(ImportError::Format(format!(
+                "a cubical cell complex with {} cells of dimension below {d} on no {d}-cube (the first: {first}): {what} holds {d}-cubes only and would drop them",
+                self.lower_cell_count(),
+                d = self.dim()
+            ))),
+        }
+    }
+
+    /// The number of lower cells that lie on no cube of the set (0 for a full set).
+    pub fn lower_cell_count(&self) -> usize {
+        self.cells.len() / self.dim().max(1)
+    }
+
+    /// The lower cells that lie on no cube, as products of intervals and points in the input's
+    /// coordinates (`[0,1]x2`), in doubled-coordinate order.
+    pub fn lower_cell_names(&self) -> impl Iterator<Item = String> + '_ {
+        self.cells.chunks_exact(self.dim().max(1)).map(cell_name)
+    }
+
+    /// The lower cells that lie on no cube in doubled coordinates relative to the box,
+    /// `2 (x_a - min_a) + e_a` (what `gmap_homology::cubical::cubical_cell_complex_with`
+    /// takes), `d` a cell.
+    pub fn lower_cells_in_box(&self) -> Vec<usize> {
+        let d = self.dim();
+        // each cell lies in the box: 0 ≤ offset ≤ 2 shape_a
+        self.cells.iter().enumerate().map(|(i, &x)| (x - 2 * self.min[i % d]) as usize).collect()
+    }
+
+    /// Adds lower cells (`d` absolute doubled coordinates each) to a set whose box holds them,
+    /// keeping those on no cube of the set.
+    fn with_lower_cells(mut self, cells: &[i64]) -> Result<Self, ImportError> {
+        let d = self.dim();
+        let mut kept: Vec<&[i64]> = Vec::new();
+        for c in cells.chunks_exact(d) {
+            if let Some(a) = (0..d).find(|&a| {
+                let (lo, hi) = (c[a].div_euclid(2), (c[a] + 1).div_euclid(2));
+                lo < self.min[a] || hi > self.min[a] + self.shape[a] as i64
+            }) {
+                return Err(ImportError::Format(format!(
+                    "the cell {} is outside the box along axis {a}",
+                    cell_name(c)
+                )));
+            }
+            if !self.on_a_cube(c) {
+                kept.push(c);
+            }
+        }
+        kept.sort_unstable();
+        kept.dedup();
+        self.cells = kept.concat();
+        Ok(self)
+    }
+
+    /// Whether the cell of absolute doubled coordinates `c` is a face of a cube of the set:
+    /// along each axis it does not span, the cube may sit on either side. O(2^(d - k) d).
+    fn on_a_cube(&self, c: &[i64]) -> bool {
+        let d = self.dim();
+        let free: Vec<usize> = (0..d).filter(|&a| c[a] % 2 == 0).collect();
+        (0u64..1 << free.len()).any(|mask| {
+            let mut idx = 0usize;
+            for a in (0..d).rev() {
+                let mut x = c[a].div_euclid(2);
+                if let Some(j) = free.iter().position(|&f| f == a) {
+                    x -= (mask >> j & 1) as i64;
+                }
+                let off = x - self.min[a];
+                if off < 0 || off >= self.shape[a] as i64 {
+                    return false;
+                }
+                idx = idx * self.shape[a] + off as usize;
+            }
+            self.bits[idx] != 0
+        })
     }
 
     /// The same cubes in another box: the cubes from `first` to `last` (inclusive) along
@@ -89,7 +184,7 @@ impl CubicalSet {
             }
             bits[idx] = 1;
         }
-        CubicalSet::new(first.to_vec(), shape, bits)
+        CubicalSet::new(first.to_vec(), shape, bits)?.with_lower_cells(&self.cells)
     }
 
     /// The dimension d.
@@ -144,9 +239,11 @@ impl CubicalSet {
     /// with `periodic`) restricted to the cubes of the set, each cube one d-cell sewn to its
     /// neighbours of the set along shared facets, the other facets free. Its cells are those
     /// of the union only where cubes meet along paths of facets (a solid box, a ring, a
-    /// shell): two cubes touching at a corner only make two components here. Precondition:
+    /// shell): two cubes touching at a corner only make two components here. A set with
+    /// lower cells on no cube is refused ([`CubicalSet::require_full`]). Precondition:
     /// `2^d d! × cubes < 2^32`.
     pub fn gmap(&self, periodic: bool) -> Result<DenseMap, ImportError> {
+        self.require_full("a G-map of its cubes")?;
         let d = self.dim();
         let grid = crate::build::grid(&self.shape, &vec![periodic; d])
             .map_err(|e| ImportError::Format(format!("the grid of the box: {e}")))?;
@@ -179,6 +276,22 @@ impl CubicalSet {
         }
         DenseMap::from_flat_unchecked(d, alpha).map_err(|e| ImportError::Format(e.to_string()))
     }
+}
+
+/// A cell of absolute doubled coordinates as a product of intervals and points, `[0,1]x2`.
+fn cell_name(c: &[i64]) -> String {
+    c.iter()
+        .map(
+            |&x| {
+                if x % 2 != 0 {
+                    format!("[{},{}]", x.div_euclid(2), x.div_euclid(2) + 1)
+                } else {
+                    (x / 2).to_string()
+                }
+            },
+        )
+        .collect::<Vec<_>>()
+        .join("x")
 }
 
 /// Checks the memory a set on a box of `shape` cubes would take (its bitmap and the grid of
@@ -225,14 +338,24 @@ fn syntax(line: usize, message: String) -> ImportError {
     ImportError::Syntax { line, message }
 }
 
-/// Parses the text of a `.cub` file: one cube a line as its minimal vertex in parentheses,
-/// coordinates separated by commas or spaces (`(3,0,-7)`, `(3 0 -7)`); `;` starts a comment;
-/// lines beginning with `dimension` are skipped; a line `box (0,0) (3,0)` gives the box
-/// (its first and last cubes, [`CubicalSet::with_box`]) instead of the cubes' bounding box. All cubes have the same dimension; a cube
-/// listed twice counts once.
+/// Parses the text of a `.cub` or `.cel` file, one element a line:
+/// * a cube by its minimal vertex in parentheses, coordinates separated by commas or spaces
+///   (`(3,0,-7)`, `(3 0 -7)`);
+/// * a cell (an elementary cube of any dimension) as a product of intervals `[a,a+1]` and
+///   points `[a]` joined by `x` (`[0,1] x [2] x [3,4]`, `(0,1)x(2)x(3,4)`), or as its two
+///   opposite vertices (`[(0,2,3) (1,2,4)]`, CHomP's `cub2cell` output), or in dimension 1
+///   as one interval (`[0,1]`, `[5]`);
+///
+/// `;` starts a comment; lines beginning with `dimension` are skipped; a line
+/// `box (0,0) (3,0)` gives the box (its first and last cubes, [`CubicalSet::with_box`])
+/// instead of the bounding box of the cells. All elements have the same dimension; one
+/// listed twice counts once. The set is the union of the cubes, the cells and their faces.
 pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
     let mut given_box: Option<(Vec<i64>, Vec<i64>)> = None;
     let mut coords: Vec<i64> = Vec::new();
+    // the lower cells, absolute doubled coordinates
+    let mut cells: Vec<i64> = Vec::new();
+    let mut first_lower = 0usize;
     let mut dim = 0usize;
     let mut dim_line = 0usize;
     for (i, raw) in text.split(|&b| b == b'\n').enumerate() {
@@ -250,48 +373,51 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
             given_box = Some(parse_box(&text).map_err(|why| syntax(line, why))?);
             continue;
         }
-        let bad = || syntax(line, format!("expected a cube like (0,1,2), found '{}'", shorten(t, 80)));
-        if t[0] != b'(' || *t.last().unwrap() != b')' {
-            return Err(bad());
-        }
-        let inner = &t[1..t.len() - 1];
-        let before = coords.len();
-        for tok in inner.split(|&b| b == b',' || b.is_ascii_whitespace()).filter(|s| !s.is_empty()) {
-            let v = std::str::from_utf8(tok)
-                .ok()
-                .and_then(|s| s.parse::<i64>().ok())
-                .ok_or_else(|| syntax(line, format!("'{}' is not an integer coordinate", shorten(tok, 80))))?;
-            if v.unsigned_abs() > 1 << 40 {
-                return Err(syntax(line, format!("coordinate {v} out of range (at most 2^40 in absolute value)")));
-            }
-            coords.push(v);
-        }
-        let n = coords.len() - before;
-        if n == 0 {
-            return Err(bad());
-        }
+        let (n, element) = parse_element(t, line)?;
         if dim == 0 {
             dim = n;
             dim_line = line;
         } else if n != dim {
             return Err(syntax(
                 line,
-                format!("cube of dimension {n}, but the cube on line {dim_line} has dimension {dim}: mixed dimensions"),
+                format!("mixed dimensions: this cell has dimension {n}, the one on line {dim_line} dimension {dim}"),
             ));
+        }
+        match element {
+            Element::Cube(x) => coords.extend(x),
+            Element::Cell(c) => {
+                if first_lower == 0 {
+                    first_lower = line;
+                }
+                cells.extend(c)
+            }
         }
     }
     if dim == 0 {
         return Err(ImportError::Format("no cube found".into()));
     }
+    if !cells.is_empty() && dim > MAX_CELL_DIM {
+        return Err(syntax(
+            first_lower,
+            format!("cells of lower dimension are read in dimension at most {MAX_CELL_DIM}, not {dim}"),
+        ));
+    }
+    // the box: from the least to the greatest vertex, at least one cube along each axis
     let mut lo = vec![i64::MAX; dim];
     let mut hi = vec![i64::MIN; dim];
     for c in coords.chunks_exact(dim) {
         for a in 0..dim {
             lo[a] = lo[a].min(c[a]);
-            hi[a] = hi[a].max(c[a]);
+            hi[a] = hi[a].max(c[a] + 1);
         }
     }
-    let shape: Vec<usize> = (0..dim).map(|a| (hi[a] - lo[a] + 1) as usize).collect();
+    for c in cells.chunks_exact(dim) {
+        for a in 0..dim {
+            lo[a] = lo[a].min(c[a].div_euclid(2));
+            hi[a] = hi[a].max((c[a] + 1).div_euclid(2));
+        }
+    }
+    let shape: Vec<usize> = (0..dim).map(|a| (hi[a] - lo[a]).max(1) as usize).collect();
     let volume = box_checked(&shape)? as usize;
     let mut bits = Vec::new();
     bits.try_reserve_exact(volume)
@@ -304,11 +430,132 @@ pub fn parse_cub(text: &[u8]) -> Result<CubicalSet, ImportError> {
         }
         bits[idx] = 1;
     }
-    let set = CubicalSet::new(lo, shape, bits)?;
+    let set = CubicalSet::new(lo, shape, bits)?.with_lower_cells(&cells)?;
     match given_box {
         Some((first, last)) => set.with_box(&first, &last),
         None => Ok(set),
     }
+}
+
+/// The largest dimension of a set with cells of lower dimension (finding whether a cell lies
+/// on a cube looks at its up to 2^d cofaces' cubes).
+pub const MAX_CELL_DIM: usize = 8;
+
+/// One element of a `.cub` or `.cel` line.
+enum Element {
+    /// a full cube by its minimal vertex
+    Cube(Vec<i64>),
+    /// a cell of lower dimension, absolute doubled coordinates `2 a + e`
+    Cell(Vec<i64>),
+}
+
+/// Parses one element (a cube or a cell) and gives its dimension. A cell spanning every axis
+/// is a cube.
+fn parse_element(t: &[u8], line: usize) -> Result<(usize, Element), ImportError> {
+    let bad = || {
+        syntax(line, format!("expected a cube like (0,1,2) or a cell like [0,1]x[2]x[3,4], found '{}'", shorten(t, 80)))
+    };
+    let (lo, hi): (Vec<i64>, Vec<i64>) = if t.iter().any(|&b| b == b'x' || b == b'X') {
+        let mut ends = (Vec::new(), Vec::new());
+        for part in t.split(|&b| b == b'x' || b == b'X') {
+            let (a, b) = interval(part.trim_ascii(), line).ok_or_else(bad)??;
+            ends.0.push(a);
+            ends.1.push(b);
+        }
+        ends
+    } else if t.starts_with(b"[") && t.ends_with(b"]") {
+        let inner = t[1..t.len() - 1].trim_ascii();
+        if inner.starts_with(b"(") {
+            // two opposite vertices
+            let k = inner.iter().position(|&b| b == b')').ok_or_else(bad)?;
+            let first = group(&inner[..=k], line).ok_or_else(bad)??;
+            let rest = inner[k + 1..].trim_ascii();
+            let rest = rest.strip_prefix(b",").unwrap_or(rest).trim_ascii();
+            let second = group(rest, line).ok_or_else(bad)??;
+            if first.len() != second.len() {
+                return Err(syntax(
+                    line,
+                    format!("the two vertices of the cell '{}' have different dimensions", shorten(t, 80)),
+                ));
+            }
+            if let Some(a) = (0..first.len()).find(|&a| !(0..=1).contains(&(second[a] - first[a]))) {
+                return Err(syntax(
+                    line,
+                    format!(
+                        "the vertices of the cell '{}' differ by {} along axis {a}: an elementary cube's differ by 0 or 1",
+                        shorten(t, 80),
+                        second[a] - first[a]
+                    ),
+                ));
+            }
+            (first, second)
+        } else {
+            let (a, b) = interval(t, line).ok_or_else(bad)??;
+            (vec![a], vec![b])
+        }
+    } else if t.starts_with(b"(") && t.ends_with(b")") {
+        let x = group(t, line).ok_or_else(bad)??;
+        if x.is_empty() {
+            return Err(bad());
+        }
+        return Ok((x.len(), Element::Cube(x)));
+    } else {
+        return Err(bad());
+    };
+    let d = lo.len();
+    if lo.iter().zip(&hi).all(|(a, b)| b - a == 1) {
+        return Ok((d, Element::Cube(lo)));
+    }
+    Ok((d, Element::Cell(lo.iter().zip(&hi).map(|(a, b)| 2 * a + (b - a)).collect())))
+}
+
+/// An interval `[a,a+1]`, `[a]`, `[a,a]` (or in parentheses): its two ends. `None` when the
+/// text is not one.
+fn interval(t: &[u8], line: usize) -> Option<Result<(i64, i64), ImportError>> {
+    let ends = match group(t, line)? {
+        Ok(ends) => ends,
+        Err(e) => return Some(Err(e)),
+    };
+    Some(match ends[..] {
+        [a] => Ok((a, a)),
+        [a, b] if b == a || b == a + 1 => Ok((a, b)),
+        [a, b] => {
+            Err(syntax(line, format!("bad interval [{a},{b}]: an elementary interval is [a,a+1] or a point [a]")))
+        }
+        _ => Err(syntax(line, format!("'{}' is not an interval [a,a+1] or a point [a]", shorten(t, 80)))),
+    })
+}
+
+/// Integers between matching parentheses or brackets, separated by commas or spaces. `None`
+/// when the text is not such a group.
+fn group(t: &[u8], line: usize) -> Option<Result<Vec<i64>, ImportError>> {
+    let close = match t.first()? {
+        b'(' => b')',
+        b'[' => b']',
+        _ => return None,
+    };
+    if t.len() < 2 || *t.last()? != close {
+        return None;
+    }
+    let inner = &t[1..t.len() - 1];
+    if inner.iter().any(|&b| matches!(b, b'(' | b')' | b'[' | b']')) {
+        return None;
+    }
+    let mut out = Vec::new();
+    for tok in inner.split(|&b| b == b',' || b.is_ascii_whitespace()).filter(|s| !s.is_empty()) {
+        let v = match std::str::from_utf8(tok).ok().and_then(|s| s.parse::<i64>().ok()) {
+            Some(v) => v,
+            None => return Some(Err(syntax(line, format!("'{}' is not an integer coordinate", shorten(tok, 80))))),
+        };
+        if v.unsigned_abs() > 1 << 40 {
+            return Some(Err(syntax(line, format!("coordinate {v} out of range (at most 2^40 in absolute value)"))));
+        }
+        out.push(v);
+    }
+    if out.is_empty() {
+        return None;
+    }
+    Some(Ok(out))
 }
 
 /// Parses a box given as its first and last cubes, `(0,0) (3,0)` (the `box` line of a
@@ -459,6 +706,52 @@ mod tests {
             Err(ImportError::MemoryLimit(e)) => assert_eq!(e.estimate, Some(2001u64.pow(3) + 9 * 4003u64.pow(3))),
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn cell_syntaxes() {
+        // the four edges of the unit square, in CHomP's three ways and RedHom's
+        let a = parse_cub(b"[0,1]x[0]\n[0,1] x [1]\n(0)x(0,1)\n[(1,0) (1,1)]\n").unwrap();
+        let b = parse_cub(b"dimension 2\n[(0,0),(1,0)] ; c\n[0,1]X[1,1]\n[0]x[0,1]\n[1]x[0,1]\n[1]x[0,1]\n").unwrap();
+        assert_eq!(a, b);
+        assert_eq!((a.min(), a.shape(), a.cube_count(), a.lower_cell_count()), (&[0, 0][..], &[1, 1][..], 0, 4));
+        assert_eq!(a.lower_cell_names().collect::<Vec<_>>(), ["0x[0,1]", "[0,1]x0", "[0,1]x1", "1x[0,1]"]);
+        assert_eq!(a.lower_cells_in_box(), [0, 1, 1, 0, 1, 2, 2, 1]);
+        // a full cell is a cube; its faces and a face of it listed add nothing
+        let full = parse_cub(b"[0,1]x[0,1]\n[0]x[0,1]\n[(1,1) (1,1)]\n").unwrap();
+        assert_eq!(full, parse_cub(b"(0,0)\n").unwrap());
+        assert!(full.is_full());
+        // a point and a segment (a cube) in dimension 1, negative coordinates
+        let s = parse_cub(b"[-3]\n[5,6]\n").unwrap();
+        assert_eq!((s.min(), s.shape(), s.cube_count(), s.lower_cell_count()), (&[-3][..], &[9][..], 1, 1));
+        // a box line holds cells too
+        let boxed = parse_cub(b"box (0,0) (2,2)\n[1]x[1]\n").unwrap();
+        assert_eq!((boxed.min(), boxed.shape(), boxed.lower_cells_in_box()), (&[0, 0][..], &[3, 3][..], vec![2, 2]));
+        assert!(parse_cub(b"box (0,0) (0,0)\n[3]x[1]\n").is_err());
+    }
+
+    #[test]
+    fn cell_refusals() {
+        let line_of = |t: &[u8]| match parse_cub(t) {
+            Err(ImportError::Syntax { line, message }) => (line, message),
+            other => panic!("{other:?}"),
+        };
+        let (line, m) = line_of(b"[0,1]x[0]\n; c\n[0,2]x[1]\n");
+        assert_eq!(line, 3);
+        assert!(m.contains("bad interval [0,2]"), "{m}");
+        let (line, m) = line_of(b"[0,1]x[0]\n[0,1]x[0]x[1]\n");
+        assert!(line == 2 && m.starts_with("mixed dimensions"), "{m}");
+        let (line, m) = line_of(b"(0,0)\n[(0,0) (2,1)]\n");
+        assert!(line == 2 && m.contains("differ by 2 along axis 0"), "{m}");
+        let (line, m) = line_of(b"[0,1]x[99999999999999999999]\n");
+        assert!(line == 1 && m.contains("not an integer"), "{m}");
+        let (line, m) = line_of(b"[0,1]x[2199023255553]\n");
+        assert!(line == 1 && m.contains("out of range"), "{m}");
+        assert_eq!(line_of(b"[0,1]x\n").0, 1);
+        assert_eq!(line_of(b"[0,1]x[1,0]\n").0, 1);
+        assert_eq!(line_of(b"[0,1,2]x[1]\n").0, 1);
+        assert_eq!(line_of(b"[(0,0) (1)]\n").0, 1);
+        assert_eq!(line_of(b"[0]x[0]x[0]x[0]x[0]x[0]x[0]x[0]x[0]\n").0, 1);
     }
 
     #[test]

@@ -163,6 +163,13 @@ impl FacePoset {
     /// numbered in the order of a depth-first enumeration from the n-cells in increasing
     /// number. O(F n d) for F flags and faces of degree at most d.
     pub fn to_gmap(&self, max_darts: u64) -> Result<DenseMap, PosetError> {
+        self.to_gmap_with_flags(max_darts).map(|(map, _)| map)
+    }
+
+    /// [`FacePoset::to_gmap`] with the flags: dart `k` is the flag
+    /// `flags[k (n + 1)..(k + 1) (n + 1)]`, its cells of dimension 0 to n, so the `i`-cell of
+    /// the map that holds dart `k` is the poset's cell `flags[k (n + 1) + i]`.
+    pub fn to_gmap_with_flags(&self, max_darts: u64) -> Result<(DenseMap, Vec<u32>), PosetError> {
         let (n, flags, down, up) = self.flags(max_darts.min(u32::MAX as u64 - 1))?;
         let w = n + 1;
         let count = flags.len() / w;
@@ -200,7 +207,8 @@ impl FacePoset {
         }
         let map = DenseMap::from_flat_unchecked(n, alpha).map_err(|_| PosetError::TooManyDarts { limit: max_darts })?;
         debug_assert!(map.validate().is_ok());
-        Ok(map)
+        drop(index);
+        Ok((map, flags))
     }
 
     /// Checks everything and enumerates the flags (flat, `n + 1` cells each).

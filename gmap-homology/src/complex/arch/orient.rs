@@ -12,8 +12,10 @@
 //! without points it is refused. The regions of the top dimension are then turned so that
 //! their orientations agree: with points, every 3-region has a positive volume (the normals
 //! of its faces point out of it) and a plane 2-region runs anticlockwise seen from +z;
-//! without points, neighbours take their common face with opposite signs, as far as the
-//! complex is orientable. Entries across a dimension gap get 0 (AC Def. 3.1).
+//! without points, neighbours take their common face with opposite signs; a complex where no
+//! choice does (a Möbius band of regions) is refused, naming the region where the
+//! propagation meets itself with the wrong sign and the face. Entries across a dimension gap
+//! get 0 (AC Def. 3.1).
 //!
 //! O(E · log E) over the entries, plus the propagation, linear in the entries of each region.
 
@@ -257,7 +259,7 @@ pub fn orient_entries(
             }
         }
     }
-    orient_top(&mut st, dim, &inferred_top);
+    orient_top(&mut st, dim, &inferred_top)?;
     for (c, list) in st.down.iter().enumerate() {
         if given[c] {
             continue;
@@ -268,8 +270,8 @@ pub fn orient_entries(
 }
 
 /// Turns the top regions whose signs were chosen so that their orientations agree (module
-/// docs).
-fn orient_top(st: &mut State<'_>, dim: usize, top: &[usize]) {
+/// docs); refuses a complex whose regions cannot agree.
+fn orient_top(st: &mut State<'_>, dim: usize, top: &[usize]) -> Result<(), ArchError> {
     let flip = |st: &mut State<'_>, c: usize| st.down[c].iter_mut().for_each(|x| x.1 = -x.1);
     if dim == 3 {
         let volumes: Option<Vec<f64>> = top.iter().map(|&c| st.volume6(&st.down[c])).collect();
@@ -279,7 +281,7 @@ fn orient_top(st: &mut State<'_>, dim: usize, top: &[usize]) {
                     flip(st, c);
                 }
             }
-            return;
+            return Ok(());
         }
     }
     // neighbours across a common face take it with opposite signs
@@ -307,6 +309,17 @@ fn orient_top(st: &mut State<'_>, dim: usize, top: &[usize]) {
                 }
                 let d = if list[0] == c { list[1] } else { list[0] };
                 if seen[d] {
+                    // both already turned: a loop of neighbours that comes back reversed
+                    if weight(st, c, f) * weight(st, d, f) > 0 {
+                        return Err(ArchError::CannotOrient {
+                            id: st.regions[d].id,
+                            dim,
+                            reason: "the complex is not orientable (a Möbius band, say): turned to agree with its \
+                                     neighbours one way round, it disagrees with the neighbour across the face"
+                                .into(),
+                            at: Some(st.regions[f].id),
+                        });
+                    }
                     continue;
                 }
                 seen[d] = true;
@@ -326,4 +339,5 @@ fn orient_top(st: &mut State<'_>, dim: usize, top: &[usize]) {
             }
         }
     }
+    Ok(())
 }
