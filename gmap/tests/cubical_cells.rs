@@ -150,3 +150,61 @@ proptest! {
         prop_assert_eq!(homology_z(&by_cells).unwrap(), homology_z(&by_cubes).unwrap());
     }
 }
+
+#[test]
+fn a_gmap_of_cubes_pinched_at_a_cell_is_refused() {
+    // two squares at a corner, two cubes along an edge
+    for (text, cell) in [("(0,0)\n(1,1)\n", "1x1"), ("(0,0,0)\n(1,1,0)\n", "1x1x0")] {
+        let set = parse_cub(text.as_bytes()).unwrap();
+        let e = set.gmap(false).unwrap_err().to_string();
+        assert!(e.contains(&format!("the cubes around the cell {cell} fall into 2 groups")), "{e}");
+    }
+    // joined below through three more cubes at the vertex (1,1,0), still pinched along the
+    // edge above it
+    let set = parse_cub(b"(0,0,0)\n(1,1,0)\n(0,0,-1)\n(1,0,-1)\n(1,1,-1)\n").unwrap();
+    assert_eq!(set.pinched_cell(false), Some(("1x1x[0,1]".to_string(), 2)));
+    // apart in their box, pinched across its wrap-around
+    let set = parse_cub(b"box (0,0) (2,2)\n(0,0)\n(2,2)\n").unwrap();
+    assert_eq!(set.pinched_cell(false), None);
+    assert!(set.gmap(false).is_ok());
+    assert_eq!(set.pinched_cell(true), Some(("0x0".to_string(), 2)));
+    // an L of three squares is not pinched
+    assert_eq!(parse_cub(b"(0,0)\n(1,1)\n(0,1)\n").unwrap().pinched_cell(false), None);
+    // the facade says so and names the input
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("corner.cub");
+    std::fs::write(&src, "(0,0)\n(1,1)\n").unwrap();
+    let out = dir.path().join("corner.gmap");
+    let e = gmap::save_file(&src, &out, &gmap::SaveOptions::default()).unwrap_err().to_string();
+    assert!(e.starts_with(&src.display().to_string()) && e.contains("cell 1x1"), "{e}");
+    assert!(!out.exists());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Random 2-D and 3-D sets, periodic or not: the G-map of the cubes is refused exactly
+    /// when a cell is pinched, and when it is made its groups are the cubical set's.
+    #[test]
+    fn a_gmap_of_cubes_keeps_the_space_or_is_refused(
+        d in 2usize..4,
+        periodic in any::<bool>(),
+        bits in prop::collection::vec(any::<bool>(), 27),
+    ) {
+        let n = 3usize.pow(d as u32);
+        let shape = vec![3usize; d];
+        let set = CubicalSet::new(vec![0; d], shape, bits[..n].iter().map(|&b| b as u8).collect()).unwrap();
+        prop_assume!(set.cube_count() > 0);
+        let pinched = set.pinched_cell(periodic);
+        match set.gmap(periodic) {
+            Err(e) => prop_assert!(pinched.is_some(), "{e}"),
+            Ok(m) => {
+                prop_assert!(pinched.is_none());
+                let r = homology(&Input::Map(gmap::MapInput::new(m)), &gmap::HomologyOptions::default()).unwrap();
+                let (betti, torsion) = groups(&set, periodic);
+                prop_assert_eq!(r.groups.betti, betti);
+                prop_assert_eq!(r.groups.torsion.iter().map(Vec::len).sum::<usize>(), torsion);
+            }
+        }
+    }
+}

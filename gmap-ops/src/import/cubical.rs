@@ -238,12 +238,18 @@ impl CubicalSet {
     /// The G-map of the union: the grid of the box ([`crate::build::grid`], axes periodic
     /// with `periodic`) restricted to the cubes of the set, each cube one d-cell sewn to its
     /// neighbours of the set along shared facets, the other facets free. Its cells are those
-    /// of the union only where cubes meet along paths of facets (a solid box, a ring, a
-    /// shell): two cubes touching at a corner only make two components here. A set with
-    /// lower cells on no cube is refused ([`CubicalSet::require_full`]). Precondition:
-    /// `2^d d! × cubes < 2^32`.
+    /// of the union exactly when the cubes around every cell meet along paths of facets (a
+    /// solid box, a ring, a shell); a set where they do not (two cubes touching at a corner
+    /// only) would become another space, and is refused with the first such cell
+    /// ([`CubicalSet::pinched_cell`]). A set with lower cells on no cube is refused
+    /// ([`CubicalSet::require_full`]). Precondition: `2^d d! × cubes < 2^32`.
     pub fn gmap(&self, periodic: bool) -> Result<DenseMap, ImportError> {
         self.require_full("a G-map of its cubes")?;
+        if let Some((cell, groups)) = self.pinched_cell(periodic) {
+            return Err(ImportError::Format(format!(
+                "the cubes around the cell {cell} fall into {groups} groups that share no facet there: a G-map sews cubes along facets only, so it would pull them apart (another space); .vtk, .cub and the incidence graphs keep it"
+            )));
+        }
         let d = self.dim();
         let grid = crate::build::grid(&self.shape, &vec![periodic; d])
             .map_err(|e| ImportError::Format(format!("the grid of the box: {e}")))?;
@@ -275,6 +281,102 @@ impl CubicalSet {
             }
         }
         DenseMap::from_flat_unchecked(d, alpha).map_err(|e| ImportError::Format(e.to_string()))
+    }
+}
+
+impl CubicalSet {
+    /// The first cell (in the order of the cubes, then of their faces) of dimension at most
+    /// d − 2 around which the cubes of the set holding it are not joined by a path of cubes
+    /// sharing facets that hold it, named as a product of intervals and points, with the
+    /// number of groups its cubes fall into; `None` when every cell's cubes are so joined,
+    /// that is when sewing the cubes along shared facets gives the union's own cells.
+    /// Axes wrap around with `periodic`. O(3^d 2^d) per cube.
+    ///
+    /// ```
+    /// use gmap_ops::import::cubical::parse_cub;
+    /// let corner = parse_cub(b"(0,0)\n(1,1)\n").unwrap();
+    /// assert_eq!(corner.pinched_cell(false), Some(("1x1".to_string(), 2)));
+    /// let ring = parse_cub(b"(0,0)\n(1,0)\n(2,0)\n(0,1)\n(2,1)\n(0,2)\n(1,2)\n(2,2)\n").unwrap();
+    /// assert_eq!(ring.pinched_cell(false), None);
+    /// ```
+    pub fn pinched_cell(&self, periodic: bool) -> Option<(String, usize)> {
+        let d = self.dim();
+        if d < 2 {
+            return None;
+        }
+        let strides: Vec<usize> =
+            self.shape.iter().scan(1usize, |acc, &l| Some(std::mem::replace(acc, *acc * l))).collect();
+        // the cube at `x` (box coordinates, possibly one step outside), if it is in the set
+        let present = |x: &[i64]| -> bool {
+            let mut i = 0usize;
+            for a in 0..d {
+                let l = self.shape[a] as i64;
+                let mut c = x[a];
+                if periodic {
+                    c = c.rem_euclid(l);
+                } else if c < 0 || c >= l {
+                    return false;
+                }
+                i += c as usize * strides[a];
+            }
+            self.bits[i] != 0
+        };
+        let faces = 3usize.pow(d as u32);
+        let mut x = vec![0i64; d];
+        let mut y = vec![0i64; d];
+        let mut seen = Vec::new();
+        let mut queue = Vec::new();
+        for (ci, _) in self.bits.iter().enumerate().filter(|(_, &b)| b != 0) {
+            let mut r = ci;
+            for a in 0..d {
+                x[a] = (r % self.shape[a]) as i64;
+                r /= self.shape[a];
+            }
+            for code in 0..faces {
+                // per axis: 0 the point x_a, 1 the interval [x_a, x_a + 1], 2 the point x_a + 1
+                let t: Vec<usize> = (0..d).map(|a| code / 3usize.pow(a as u32) % 3).collect();
+                let free: Vec<usize> = (0..d).filter(|&a| t[a] != 1).collect();
+                if free.len() < 2 {
+                    continue;
+                }
+                // the cubes around the cell: one bit per free axis, set for the cube above the point
+                let around = |mask: usize, y: &mut [i64]| {
+                    y.copy_from_slice(&x);
+                    for (j, &a) in free.iter().enumerate() {
+                        let p = x[a] + (t[a] / 2) as i64;
+                        y[a] = if mask >> j & 1 == 1 { p } else { p - 1 };
+                    }
+                };
+                let n = 1usize << free.len();
+                seen.clear();
+                seen.resize(n, false);
+                let mut groups = 0;
+                for m in 0..n {
+                    around(m, &mut y);
+                    if seen[m] || !present(&y) {
+                        continue;
+                    }
+                    groups += 1;
+                    seen[m] = true;
+                    queue.push(m);
+                    while let Some(u) = queue.pop() {
+                        for j in 0..free.len() {
+                            let v = u ^ (1 << j);
+                            around(v, &mut y);
+                            if !seen[v] && present(&y) {
+                                seen[v] = true;
+                                queue.push(v);
+                            }
+                        }
+                    }
+                }
+                if groups > 1 {
+                    let doubled: Vec<i64> = (0..d).map(|a| 2 * (self.min[a] + x[a]) + t[a] as i64).collect();
+                    return Some((cell_name(&doubled), groups));
+                }
+            }
+        }
+        None
     }
 }
 
