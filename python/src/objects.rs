@@ -332,7 +332,8 @@ impl PyCubicalSet {
     }
 
     /// The G-map of the set: every cube one d-cell, sewn to its neighbours (periodic: the
-    /// box's opposite faces identified).
+    /// box's opposite faces identified). Refused, naming the cell, when the cubes around a
+    /// cell share no facet there (two squares at a corner): the map would be another space.
     #[pyo3(signature = (periodic = false))]
     fn to_gmap(&self, py: Python<'_>, periodic: bool) -> PyResult<PyGMap> {
         let set = self.set();
