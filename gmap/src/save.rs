@@ -151,8 +151,18 @@ pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static st
     if labels && (!keeps_labels || o.boundary) {
         out.push("the labels");
     }
-    let points = matches!(input, Input::Map(m) if m.map().has_points());
-    if points && !matches!(ext.as_str(), "gmap" | "moka" | "off" | "vtk") {
+    let points = match input {
+        Input::Map(m) => m.map().has_points() && !matches!(ext.as_str(), "gmap" | "moka" | "off" | "vtk"),
+        // the regions' points: in an incidence graph's .json, and in a .gmap when every
+        // vertex of the cut map is a vertex region with a point (a cut may add vertices)
+        Input::Arch(x) if (0..x.regions().len()).any(|r| x.region_point(r).is_some()) => match ext.as_str() {
+            "json" if graph => false,
+            "gmap" => !matches!(arch_to_labelled(x, o.max_darts, Path::new(""), output), Ok(g) if g.has_points()),
+            _ => true,
+        },
+        _ => false,
+    };
+    if points {
         out.push("the points");
     }
     // an .off that cannot hold the map is refused for that, first

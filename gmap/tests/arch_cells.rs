@@ -325,3 +325,16 @@ proptest! {
         prop_assert_eq!(betti, vec![1, 0, 0, 0]);
     }
 }
+
+#[test]
+fn what_each_format_drops_of_an_architects_file() {
+    let x = gmap::open(data("rooms_door_window.json")).unwrap();
+    let o = gmap::SaveOptions::default();
+    let drops = |out: &str| gmap::save::dropped(&x, std::path::Path::new(out), &o);
+    // the incidence graph's .json and the .gmap of the cut map keep labels and points
+    assert!(drops("x.json").is_empty());
+    assert!(drops("x.gmap").is_empty());
+    assert_eq!(drops("x.dot"), vec!["the points"]);
+    assert_eq!(drops("x.moka"), vec!["the labels", "the points"]);
+    assert_eq!(drops("x.lar.json"), vec!["the labels", "the points"]);
+}
