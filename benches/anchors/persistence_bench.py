@@ -96,24 +96,33 @@ def inputs(out):
     return files
 
 
-def main():
+def options():
+    """The options both persistence scripts take."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--only", default="", help="comma-separated input names")
     ap.add_argument("--constructions", default="V,T")
     ap.add_argument("--gudhi-max", type=int, default=4_200_000)
-    ap.add_argument("--tools", default="gmap,cripser,gudhi", help="which sides to run")
     ap.add_argument("--out", default=os.path.join(ROOT, "target", "bench-data", "persistence"))
-    args = ap.parse_args()
+    return ap
+
+
+def selected(args):
+    """The inputs --only names (all without it), written if missing; prints the load."""
     os.makedirs(args.out, exist_ok=True)
     only = set(filter(None, args.only.split(",")))
     print("load average before:", open("/proc/loadavg").read().split()[:3])
+    return [x for x in inputs(args.out) if not only or x[0] in only]
+
+
+def main():
+    ap = options()
+    ap.add_argument("--tools", default="gmap,cripser,gudhi", help="which sides to run")
+    args = ap.parse_args()
     print("| input | constr. | gmap wall / CPU / in-process CPU s | MB | CubicalRipser wall / CPU / in-process CPU s "
           "| MB | ratio CPU / in-process | GUDHI wall / CPU / in-process CPU s | MB | ratio CPU / in-process |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
-    for name, path, shape in inputs(args.out):
-        if only and name not in only:
-            continue
+    for name, path, shape in selected(args):
         n = int(np.prod(shape))
         for cons in args.constructions.split(","):
             tools = {

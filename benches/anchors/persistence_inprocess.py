@@ -23,7 +23,6 @@ Each call is timed by `time.process_time()` (CPU of the process, all threads) an
 positive persistence is printed per side (GUDHI's and gmap's must agree: the tests compare
 the diagrams themselves). Prints a Markdown table and the load average before and after.
 """
-import argparse
 import gc
 import os
 import sys
@@ -32,7 +31,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from persistence_bench import ROOT, inputs  # noqa: E402
+from persistence_bench import options, selected  # noqa: E402
 
 
 def timed(f):
@@ -47,22 +46,11 @@ def main():
     import gmap
     import gudhi
 
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--reps", type=int, default=3)
-    ap.add_argument("--only", default="", help="comma-separated input names")
-    ap.add_argument("--constructions", default="V,T")
-    ap.add_argument("--gudhi-max", type=int, default=4_200_000)
-    ap.add_argument("--out", default=os.path.join(ROOT, "target", "bench-data", "persistence"))
-    args = ap.parse_args()
-    os.makedirs(args.out, exist_ok=True)
-    only = set(filter(None, args.only.split(",")))
-    print("load average before:", open("/proc/loadavg").read().split()[:3])
+    args = options().parse_args()
     print("| input | constr. | gmap CPU / wall s | CubicalRipser CPU / wall s | ratio CPU / wall "
           "| GUDHI CPU / wall s | ratio CPU / wall | pairs gmap / CR / GUDHI |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
-    for name, path, shape in inputs(args.out):
-        if only and name not in only:
-            continue
+    for name, path, shape in selected(args):
         arr = np.ascontiguousarray(np.load(path), dtype=np.float64)
         for cons in args.constructions.split(","):
             tools = {
