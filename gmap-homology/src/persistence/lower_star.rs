@@ -242,6 +242,16 @@ fn touch_block<T>(data: &[T], at: usize, steps: [usize; 2]) {
     }
 }
 
+/// The read-ahead of a 3-D dual pass (reverse order): the ranks and the union-find nodes
+/// around the voxel `AHEAD` steps before `r`.
+#[inline]
+fn touch_dual_ahead(order: &[u32], r: usize, rank: &[u32], nodes: &[[u32; 2]], stride: [usize; 3]) {
+    if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| order.get(a)) {
+        touch_block(rank, q as usize, [stride[0], stride[1]]);
+        touch_block(nodes, q as usize, [stride[0], stride[1]]);
+    }
+}
+
 /// 2-D V-construction (a 1-D image is one row).
 fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     let n = rows * cols;
@@ -483,10 +493,7 @@ fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
     };
     let mut list = Vec::with_capacity(12);
     for (r, &p) in order.iter().enumerate().rev() {
-        if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| order.get(a)) {
-            touch_block(&rank, q as usize, [stride[0], stride[1]]);
-            touch_block(&f.nodes, q as usize, [stride[0], stride[1]]);
-        }
+        touch_dual_ahead(order, r, &rank, &f.nodes, stride);
         let r = r as u32;
         let c = coords(p as usize);
         let mask = early_mask(&rank, p as usize, c, r);
@@ -717,10 +724,7 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
     let mut positive = vec![0u64; (3 * g[0] * gstride[0]).div_ceil(64)];
     let mut list = Vec::with_capacity(6);
     for (r, &p) in order.iter().enumerate().rev() {
-        if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| order.get(a)) {
-            touch_block(&rank, q as usize, [stride[0], stride[1]]);
-            touch_block(&f.nodes, q as usize, [stride[0], stride[1]]);
-        }
+        touch_dual_ahead(order, r, &rank, &f.nodes, stride);
         let r = r as u32;
         f.make(p, r);
         let c = coords(p as usize);
