@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Persistence of images: gmap against CubicalRipser and GUDHI, whole processes, one sitting.
 
-    cd python && maturin build --release && cd ..   # then pip install the wheel into a venv
-    VENV/bin/python benches/anchors/persistence_bench.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
+    cd python && maturin build --release && cd ..
+    python3 -m venv --system-site-packages /tmp/gmap-venv && /tmp/gmap-venv/bin/pip install python/target/wheels/gmap-*.whl
+    /tmp/gmap-venv/bin/python benches/anchors/persistence_bench.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
 
 Each input is a `.npy` array written once into --out (default target/bench-data/persistence):
 random floats (seeded) of 1000², 2000², 4000², 128³ and 256³, and scikit-image's sample

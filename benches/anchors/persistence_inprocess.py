@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Persistence of images in one Python process: gmap's package against GUDHI and CubicalRipser.
 
-    python3 benches/anchors/persistence_inprocess.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
+    /tmp/gmap-venv/bin/python benches/anchors/persistence_inprocess.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
 
 Needs the `gmap` package (`cd python && maturin build --release`, then pip install the wheel
 into a venv made with --system-site-packages, where gudhi and cripser are), and the `.npy`
