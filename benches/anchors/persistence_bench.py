@@ -1,25 +1,28 @@
 #!/usr/bin/env python3
 """Persistence of images: gmap against CubicalRipser and GUDHI, whole processes, one sitting.
 
-    cargo build --release --example persistence_image
-    python3 benches/anchors/persistence_bench.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
+    cd python && maturin build --release && cd ..
+    python3 -m venv --system-site-packages /tmp/gmap-venv && /tmp/gmap-venv/bin/pip install python/target/wheels/gmap-*.whl
+    /tmp/gmap-venv/bin/python benches/anchors/persistence_bench.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
 
 Each input is a `.npy` array written once into --out (default target/bench-data/persistence):
 random floats (seeded) of 1000², 2000², 4000², 128³ and 256³, and scikit-image's sample
-images at full size. Each tool runs in its own process on the same file and the same
-construction, one after the other, `reps` times:
+images at full size. Each tool runs in its own Python process (the interpreter running
+this script: a venv with the `gmap` package and, by --system-site-packages, gudhi and
+cripser) on the same file and the same construction, one after the other, `reps` times:
 
-* gmap: `persistence_image FILE V|T` (the library's `CubicalFiltration`, Z/2; reading
-  the file included in the process, its own timer around the diagram);
-* CubicalRipser: `cripser.computePH(arr)` (its default: V-construction, Z/2);
+* gmap: `gmap.persistence(arr, construction=C)` (the package, Z/2);
+* CubicalRipser: `cripser.computePH(arr)` for V (its default), `cripser.computePH_T(arr)`
+  for T;
 * GUDHI: `CubicalComplex(vertices=arr)` for V, `(top_dimensional_cells=arr)` for T,
-  `persistence(homology_coeff_field=2)`; its timer around both.
+  `persistence(homology_coeff_field=2)`, building included.
 
 Per side the minimum over the runs of: the process's wall time, its CPU time (user +
-system, `/usr/bin/time`), and the time of the computation alone as each side times it in
-process (the array already in memory); the largest peak memory. Ratios are the other
-side's figure over gmap's. GUDHI runs once (it takes minutes) and only on inputs of at most
---gudhi-max cells. Prints a Markdown table and the load average before and after.
+system, the rusage of the process), and the CPU time of the call alone as each process
+measures it (`time.process_time()` around the call, the array already loaded); the largest
+peak memory (`/usr/bin/time`'s maximum resident set). Ratios are the other side's figure
+over gmap's. GUDHI runs once (it takes minutes) and only on inputs of at most --gudhi-max
+cells. Prints a Markdown table and the load average before and after.
 """
 import argparse
 import os
@@ -31,27 +34,30 @@ import time
 import numpy as np
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-GMAP = os.path.join(ROOT, "target", "release", "examples", "persistence_image")
-
+# each prints `seconds CPU WALL PAIRS` for its one call, the array already loaded
+GMAP = (
+    "import sys, time, numpy as np, gmap; a = np.load(sys.argv[1]).astype(np.float64);"
+    "c, t = time.process_time(), time.perf_counter(); n = len(gmap.persistence(a, construction=sys.argv[2]));"
+    "print('seconds', time.process_time() - c, time.perf_counter() - t, n)"
+)
 CRIPSER = (
-    "import sys, time, numpy as np, cripser; a = np.load(sys.argv[1]); t = time.perf_counter();"
-    "r = cripser.computePH(a); print('seconds', time.perf_counter() - t, len(r))"
+    "import sys, time, numpy as np, cripser; a = np.load(sys.argv[1]).astype(np.float64);"
+    "c, t = time.process_time(), time.perf_counter();"
+    "r = cripser.computePH(a) if sys.argv[2] == 'V' else cripser.computePH_T(a);"
+    "print('seconds', time.process_time() - c, time.perf_counter() - t, len(r))"
 )
 GUDHI = (
-    "import sys, time, numpy as np, gudhi; a = np.load(sys.argv[1]).astype(np.float64); t = time.perf_counter();"
-    "c = gudhi.CubicalComplex(**{('vertices' if sys.argv[2] == 'V' else 'top_dimensional_cells'): a});"
-    "n = len(c.persistence(homology_coeff_field=2, min_persistence=0)); print('seconds', time.perf_counter() - t, n)"
+    "import sys, time, numpy as np, gudhi; a = np.load(sys.argv[1]).astype(np.float64);"
+    "c, t = time.process_time(), time.perf_counter();"
+    "x = gudhi.CubicalComplex(**{('vertices' if sys.argv[2] == 'V' else 'top_dimensional_cells'): a});"
+    "n = len(x.persistence(homology_coeff_field=2, min_persistence=0));"
+    "print('seconds', time.process_time() - c, time.perf_counter() - t, n)"
 )
 
 
 def seconds(text):
-    """The in-process time a tool printed: `seconds X` or the example's `diagram 1.2s`."""
-    m = re.search(r"seconds ([0-9.e-]+)", text)
-    if m:
-        return float(m.group(1))
-    m = re.search(r"values ([0-9.]+)(ms|µs|s), diagram ([0-9.]+)(ms|µs|s)", text)
-    unit = {"s": 1.0, "ms": 1e-3, "µs": 1e-6}
-    return float(m.group(1)) * unit[m.group(2)] + float(m.group(3)) * unit[m.group(4)]
+    """The in-process CPU time a tool printed (`seconds CPU WALL PAIRS`)."""
+    return float(re.search(r"seconds ([0-9.e-]+)", text).group(1))
 
 
 def run(cmd):
@@ -91,31 +97,42 @@ def inputs(out):
     return files
 
 
-def main():
+def options():
+    """The options both persistence scripts take."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--reps", type=int, default=3)
     ap.add_argument("--only", default="", help="comma-separated input names")
     ap.add_argument("--constructions", default="V,T")
     ap.add_argument("--gudhi-max", type=int, default=4_200_000)
     ap.add_argument("--out", default=os.path.join(ROOT, "target", "bench-data", "persistence"))
-    ap.add_argument("--gmap", default=GMAP)
-    args = ap.parse_args()
+    return ap
+
+
+def selected(args):
+    """The inputs --only names (all without it), written if missing; prints the load."""
     os.makedirs(args.out, exist_ok=True)
     only = set(filter(None, args.only.split(",")))
     print("load average before:", open("/proc/loadavg").read().split()[:3])
-    print("| input | constr. | gmap wall / CPU / in-process s | MB | CubicalRipser wall / CPU / in-process s | MB "
-          "| ratio CPU / in-process | GUDHI wall / CPU / in-process s | MB | ratio CPU / in-process |")
+    return [x for x in inputs(args.out) if not only or x[0] in only]
+
+
+def main():
+    ap = options()
+    ap.add_argument("--tools", default="gmap,cripser,gudhi", help="which sides to run")
+    args = ap.parse_args()
+    print("| input | constr. | gmap wall / CPU / in-process CPU s | MB | CubicalRipser wall / CPU / in-process CPU s "
+          "| MB | ratio CPU / in-process | GUDHI wall / CPU / in-process CPU s | MB | ratio CPU / in-process |")
     print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
-    for name, path, shape in inputs(args.out):
-        if only and name not in only:
-            continue
+    for name, path, shape in selected(args):
         n = int(np.prod(shape))
         for cons in args.constructions.split(","):
-            tools = {"gmap": ([args.gmap, path, cons], args.reps)}
-            if cons == "V":
-                tools["cripser"] = ([sys.executable, "-c", CRIPSER, path], args.reps)
+            tools = {
+                "gmap": ([sys.executable, "-c", GMAP, path, cons], args.reps),
+                "cripser": ([sys.executable, "-c", CRIPSER, path, cons], args.reps),
+            }
             if n <= args.gudhi_max:
                 tools["gudhi"] = ([sys.executable, "-c", GUDHI, path, cons], 1)
+            tools = {k: v for k, v in tools.items() if k in args.tools.split(",")}
             best, mem = {}, {}
             for rep in range(args.reps):
                 for k, (cmd, reps) in tools.items():
@@ -125,7 +142,7 @@ def main():
                     old = best.get(k, (float("inf"),) * 3)
                     best[k] = (min(old[0], w), min(old[1], c), min(old[2], s))
                     mem[k] = max(mem.get(k, 0.0), m)
-            g = best["gmap"]
+            g = best.get("gmap", (float("nan"),) * 3)
 
             def cell(k):
                 if k not in best:
@@ -135,7 +152,7 @@ def main():
                         f"{b[1] / g[1]:.1f}× / {b[2] / g[2]:.1f}×")
 
             shape_s = "×".join(map(str, shape))
-            print(f"| {name} {shape_s} | {cons} | {g[0]:.2f} / {g[1]:.2f} / {g[2]:.3f} | {mem['gmap']:.0f} | "
+            print(f"| {name} {shape_s} | {cons} | {g[0]:.2f} / {g[1]:.2f} / {g[2]:.3f} | {mem.get('gmap', 0):.0f} | "
                   f"{cell('cripser')} | {cell('gudhi')} |", flush=True)
     print("load average after:", open("/proc/loadavg").read().split()[:3])
 

@@ -186,6 +186,16 @@ def test_persistence_v_construction_equals_gudhi_vertices(field):
         assert ours(a, field=field, construction="V") == gudhi_pairs(a, field, vertices=True)
 
 
+@pytest.mark.parametrize("field", [2, 3])
+@pytest.mark.parametrize("construction", ["T", "V"])
+def test_persistence_of_3d_arrays_equals_gudhi(construction, field):
+    # big enough for the middle dimension's long columns (added in place) and ties
+    rng = np.random.default_rng(17 + field)
+    for a in [rng.integers(0, 8, size=(16, 13, 15)).astype(np.float64), rng.random((14, 15, 12))]:
+        want = gudhi_pairs(a, field, vertices=construction == "V")
+        assert ours(a, field=field, construction=construction) == want
+
+
 def test_persistence_of_a_path_and_of_other_dtypes(tmp_path):
     rng = np.random.default_rng(5)
     a = rng.integers(0, 9, size=(12, 10))
