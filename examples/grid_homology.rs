@@ -28,19 +28,25 @@ fn thread_cpu() -> Vec<(String, f64)> {
     out
 }
 
-/// Runs and reports the stages of one pipeline against the map's resident size `base`.
+/// The stages of one pipeline, measured against the map's resident size `base`: each
+/// [`Stages::start`] closes the stage open (and reports it) and opens the next.
 struct Stages {
     base: u64,
     darts: usize,
     worst: u64,
+    /// the stage open: its name, the threads' CPU and the time at its start
+    open: Option<(&'static str, Vec<(String, f64)>, Instant)>,
 }
 
 impl Stages {
-    fn run<T>(&mut self, name: &str, f: impl FnOnce() -> T) -> T {
+    fn start(&mut self, name: &'static str) {
+        self.finish();
         reset_peak_rss();
-        let before = thread_cpu();
-        let t = Instant::now();
-        let out = f();
+        self.open = Some((name, thread_cpu(), Instant::now()));
+    }
+
+    fn finish(&mut self) {
+        let Some((name, before, t)) = self.open.take() else { return };
         let wall = t.elapsed();
         let peak = peak_rss().unwrap_or(0);
         let after = thread_cpu();
@@ -52,7 +58,8 @@ impl Stages {
         let pool: Vec<f64> = used.iter().filter(|u| u.0.starts_with("gmap-")).map(|u| u.1).collect();
         let busiest = pool.iter().copied().fold(0.0, f64::max);
         let spread = if busiest > 0.0 {
-            format!("{:.0}% over {} pool threads", 100.0 * pool.iter().sum::<f64>() / (pool.len() as f64 * busiest), pool.len())
+            let share = 100.0 * pool.iter().sum::<f64>() / (pool.len() as f64 * busiest);
+            format!("{share:.0}% over {} pool threads", pool.len())
         } else {
             "serial".to_string()
         };
@@ -60,13 +67,11 @@ impl Stages {
         let beyond = peak.saturating_sub(self.base);
         self.worst = self.worst.max(beyond);
         eprintln!(
-            "{name}: wall {:.2?}, CPU {total:.2} s ({}; {spread}); peak beyond the map {:.1} MB, {:.1} bytes per dart",
-            wall,
+            "{name}: wall {wall:.2?}, CPU {total:.2} s ({}; {spread}); peak beyond the map {:.1} MB, {:.1} bytes per dart",
             threads.join(", "),
             beyond as f64 / 1e6,
-            beyond as f64 / self.darts as f64
+            beyond as f64 / self.darts.max(1) as f64
         );
-        out
     }
 }
 
@@ -78,12 +83,19 @@ fn fail(e: impl std::fmt::Display) -> ! {
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let start = Instant::now();
-    let idle = current_rss().unwrap_or(0);
     let map = match (args.get(1).map(String::as_str), args.get(2)) {
         (Some("--read"), Some(path)) => {
-            let mut s = Stages { base: idle, darts: 1, worst: 0 };
-            let map = s.run("read", || gmap_core::io::read_gmap(path).unwrap_or_else(|e| fail(e)));
-            eprintln!("(the reading stage's figure is beyond the program's resident size before reading)");
+            reset_peak_rss();
+            let (before, t) = (thread_cpu(), Instant::now());
+            let map = gmap_core::io::read_gmap(path).unwrap_or_else(|e| fail(e));
+            let cpu: f64 = thread_cpu().iter().map(|(n, c)| c - before.iter().find(|b| &b.0 == n).map_or(0.0, |b| b.1)).sum();
+            let beyond = peak_rss().unwrap_or(0).saturating_sub(current_rss().unwrap_or(0));
+            eprintln!(
+                "read: wall {:.2?}, CPU {cpu:.2} s (serial); peak beyond the map read {:.1} MB, {:.1} bytes per dart",
+                t.elapsed(),
+                beyond as f64 / 1e6,
+                beyond as f64 / map.dart_count().max(1) as f64
+            );
             map
         }
         (Some(k), _) if k.parse::<usize>().is_ok() => {
@@ -110,12 +122,13 @@ fn main() {
         (map.flat().len() * 4) as f64 / darts as f64,
         base as f64 / 1e6
     );
-    let mut s = Stages { base, darts, worst: 0 };
+    let mut s = Stages { base, darts, worst: 0, open: None };
     let t = Instant::now();
-    let oriented = s.run("cells and C1/C2", || gmap_homology::check_preconditions(&map).unwrap_or_else(|e| fail(e)));
-    let c = s.run("border", || gmap_homology::border::border_from_oriented(&map, &oriented));
-    drop(oriented);
-    let h = s.run("reduction", || gmap_homology::homology_z(&c.chain).unwrap_or_else(|e| fail(e)));
+    let c = gmap_homology::cellular::checked::cellular_complex_staged(&map, &mut |name| s.start(name))
+        .unwrap_or_else(|e| fail(e));
+    s.start("reduction");
+    let h = gmap_homology::homology_z(&c.chain).unwrap_or_else(|e| fail(e));
+    s.finish();
     let wall: Duration = t.elapsed();
     println!(
         "{h}: {wall:.3?}; peak {:.1} bytes per dart beyond the map's resident {:.1} MB",
