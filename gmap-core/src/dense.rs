@@ -751,9 +751,10 @@ impl DenseMap {
     ///
     /// ```
     /// let m = gmap_core::examples::torus().embedded(3).unwrap();
-    /// assert!(m.oriented_cells_3d_of(&[3, 2]).is_none(), "2-free darts: no ring walks");
-    /// let all = gmap_core::DenseMap::new(2, 0).oriented_cells_3d_of(&[0]);
-    /// assert!(all.is_none(), "not a 3-map");
+    /// let all = m.oriented_cells_3d().unwrap();
+    /// let two = m.oriented_cells_3d_of(&[3, 1]).unwrap();
+    /// assert_eq!(two, vec![all.cells[3].clone(), all.cells[1].clone()]);
+    /// assert!(gmap_core::DenseMap::new(2, 0).oriented_cells_3d_of(&[0]).is_none(), "not a 3-map");
     /// ```
     pub fn oriented_cells_3d_of(&self, dims: &[usize]) -> Option<Vec<(Partition, BitVec)>> {
         if self.dim != 3 || dims.iter().any(|&i| i > 3) {
