@@ -314,7 +314,8 @@ fn read_tail(s: &mut Scanner, name: &str, dim: usize, darts: u64) -> Result<Sect
 const CHUNK: usize = 1 << 22;
 
 /// Reads a well-formed `.gmap` file a chunk at a time, so that nothing but the map (and one
-/// chunk, and the sections) is ever held: `None` at the first thing out of the ordinary (a
+/// chunk, and the sections) is ever held, and from the second chunk on (a quarter of a chunk
+/// of whole lines at least) the lines are read by several threads: `None` at the first thing out of the ordinary (a
 /// bad header or line, a dart limit or memory estimate exceeded, a map that is not valid, an
 /// I/O error), for which the caller parses the whole file to name the fault exactly.
 /// Accepts exactly what [`parse_gmap_with`] accepts, and gives the same map. O(file size)
@@ -364,23 +365,15 @@ fn stream_gmap(path: &Path, name: &str, opts: &ReadOptions, chunk: usize) -> Opt
             let content = is_content(text.strip_suffix(b"\n").unwrap_or(text));
             match header {
                 Some((dim, darts)) if (alpha.len() as u64) < darts * (dim as u64 + 1) => {
-                    let w = dim + 1;
-                    if fast_line(text, 0, w, darts, &mut alpha).is_none() {
-                        std::str::from_utf8(text).ok()?;
-                        if content {
-                            let mut s = Scanner { b: text, pos: 0, line };
-                            for _ in 0..w {
-                                match s.number() {
-                                    Num::Value(v) if v < darts => alpha.push(v as u32),
-                                    _ => return None,
-                                }
-                            }
-                            s.skip_blank();
-                            if !s.at_eol() {
-                                return None;
-                            }
+                    if pos == 0 && end >= chunk / 4 {
+                        // the whole buffer at once, in pieces on the stages' threads, when
+                        // its lines are all dart lines (else line by line below)
+                        if let Some(lines) = dart_lines_parallel(&buf[..end], dim + 1, darts, &mut alpha) {
+                            line += lines;
+                            break;
                         }
                     }
+                    dart_line(text, content, dim + 1, darts, &mut alpha)?;
                 }
                 Some(_) => {
                     tail = Some((buf[pos..end].to_vec(), line));
@@ -417,6 +410,66 @@ fn stream_gmap(path: &Path, name: &str, opts: &ReadOptions, chunk: usize) -> Opt
     sections.check(&map, name, dim).ok()?;
     sections.apply_points(&mut map);
     Some(map)
+}
+
+/// Reads one line of the dart section onto `alpha`: `w` values below `darts` (nothing for a
+/// blank or comment line, `content` false); `None` if the line is anything else.
+fn dart_line(text: &[u8], content: bool, w: usize, darts: u64, alpha: &mut Vec<u32>) -> Option<()> {
+    if fast_line(text, 0, w, darts, alpha).is_some() {
+        return Some(());
+    }
+    std::str::from_utf8(text).ok()?;
+    if content {
+        let mut s = Scanner::new(text);
+        for _ in 0..w {
+            match s.number() {
+                Num::Value(v) if v < darts => alpha.push(v as u32),
+                _ => return None,
+            }
+        }
+        s.skip_blank();
+        if !s.at_eol() {
+            return None;
+        }
+    }
+    Some(())
+}
+
+/// Reads `lines` (complete lines) as dart lines, cut at line ends into one piece per thread
+/// of [`crate::parallel`] (run as its tasks), and appends their values to `alpha` in order: the number of lines
+/// read, or `None` (with `alpha` untouched) when a line is not a dart line or the lines
+/// hold more darts than the `darts` announced, which are read line by line instead.
+fn dart_lines_parallel(lines: &[u8], w: usize, darts: u64, alpha: &mut Vec<u32>) -> Option<usize> {
+    let threads = crate::parallel::max_threads();
+    let mut cuts = vec![0];
+    for k in 1..threads {
+        let at = (lines.len() * k / threads).max(*cuts.last()?);
+        let next = lines[at..].iter().position(|&c| c == b'\n').map_or(lines.len(), |p| at + p + 1);
+        cuts.push(next);
+    }
+    cuts.push(lines.len());
+    let pieces: Vec<&[u8]> = cuts.windows(2).map(|c| &lines[c[0]..c[1]]).collect();
+    let parsed = crate::parallel::map_parts(pieces, |piece| {
+        let mut values = Vec::with_capacity(piece.len() / 4);
+        let mut count = 0;
+        for text in piece.split_inclusive(|&c| c == b'\n') {
+            let content = is_content(text.strip_suffix(b"\n").unwrap_or(text));
+            dart_line(text, content, w, darts, &mut values)?;
+            count += 1;
+        }
+        Some((values, count))
+    });
+    let parsed: Vec<(Vec<u32>, usize)> = parsed.into_iter().collect::<Option<_>>()?;
+    let values: usize = parsed.iter().map(|p| p.0.len()).sum();
+    if (alpha.len() + values) as u64 > darts * w as u64 {
+        return None;
+    }
+    let mut lines = 0;
+    for (v, count) in parsed {
+        alpha.extend_from_slice(&v);
+        lines += count;
+    }
+    Some(lines)
 }
 
 /// The dimension and dart count of a header line that [`parse_parts`] accepts within `opts`.
@@ -727,6 +780,15 @@ mod tests {
         }
         let pointed = parse_gmap(&format_gmap(&pointed), "x").unwrap();
         files.push(format_gmap(&pointed));
+        // many lines, a comment among them: the pieces read in parallel
+        let mut big = DenseMap::new(1, 2000);
+        for d in (0..2000).step_by(2) {
+            big.link(Dart::new(d), Dart::new(d + 1), 0);
+        }
+        let text = format_gmap(&big);
+        let middle = text.len() / 2 + text[text.len() / 2..].iter().position(|&c| c == b'\n').unwrap() + 1;
+        files.push([&text[..middle], b"  # a comment\n\n", &text[middle..]].concat());
+        files.push([&text[..middle], b"0 x\n", &text[middle..]].concat());
         for text in [
             &b"# a comment\n\n  # another\r\ngmap 1 2\r\n1\t1\r\n\n# mid\n0 0  \r\n\n"[..],
             b"gmap 1 2\n1 1\n0 0",
@@ -754,7 +816,7 @@ mod tests {
             std::fs::write(&path, bytes).unwrap();
             let name = path.display().to_string();
             let whole = parse_gmap_with(bytes, &name, &ReadOptions::default());
-            for chunk in [CHUNK, 64, 7, 3, 2, 1] {
+            for chunk in [CHUNK, 4096, 64, 7, 3, 2, 1] {
                 let streamed = stream_gmap(&path, &name, &ReadOptions::default(), chunk);
                 assert_eq!(streamed.as_ref(), whole.as_ref().ok(), "file {k}, chunk {chunk}");
             }
