@@ -49,30 +49,38 @@ impl Stages {
         let Some((name, before, t)) = self.open.take() else { return };
         let wall = t.elapsed();
         let peak = peak_rss().unwrap_or(0);
-        let after = thread_cpu();
-        let used: Vec<(String, f64)> = after
-            .iter()
-            .map(|(n, c)| (n.clone(), c - before.iter().find(|(m, _)| m == n).map_or(0.0, |b| b.1)))
-            .collect();
-        let total: f64 = used.iter().map(|u| u.1).sum();
-        let pool: Vec<f64> = used.iter().filter(|u| u.0.starts_with("gmap-")).map(|u| u.1).collect();
-        let busiest = pool.iter().copied().fold(0.0, f64::max);
-        let spread = if busiest > 0.0 {
-            let share = 100.0 * pool.iter().sum::<f64>() / (pool.len() as f64 * busiest);
-            format!("{share:.0}% over {} pool threads", pool.len())
-        } else {
-            "serial".to_string()
-        };
-        let threads: Vec<String> = used.iter().filter(|u| u.1 > 0.0).map(|u| format!("{} {:.2}", u.0, u.1)).collect();
         let beyond = peak.saturating_sub(self.base);
         self.worst = self.worst.max(beyond);
         eprintln!(
-            "{name}: wall {wall:.2?}, CPU {total:.2} s ({}; {spread}); peak beyond the map {:.1} MB, {:.1} bytes per dart",
-            threads.join(", "),
+            "{name}: wall {wall:.2?}, {}; peak beyond the map {:.1} MB, {:.1} bytes per dart",
+            cpu_since(&before),
             beyond as f64 / 1e6,
             beyond as f64 / self.darts.max(1) as f64
         );
     }
+}
+
+/// The CPU time of each thread since `before`, their sum, and how evenly the threads of the
+/// stages' pool shared it: their sum over (threads × the busiest one's), or "serial".
+fn cpu_since(before: &[(String, f64)]) -> String {
+    let used: Vec<(String, f64)> = thread_cpu()
+        .into_iter()
+        .map(|(n, c)| {
+            let b = before.iter().find(|(m, _)| *m == n).map_or(0.0, |b| b.1);
+            (n, c - b)
+        })
+        .collect();
+    let total: f64 = used.iter().map(|u| u.1).sum();
+    let pool: Vec<f64> = used.iter().filter(|u| u.0.starts_with("gmap-")).map(|u| u.1).collect();
+    let busiest = pool.iter().copied().fold(0.0, f64::max);
+    let spread = if busiest > 0.0 {
+        let share = 100.0 * pool.iter().sum::<f64>() / (pool.len() as f64 * busiest);
+        format!("{share:.0}% over {} pool threads", pool.len())
+    } else {
+        "serial".to_string()
+    };
+    let threads: Vec<String> = used.iter().filter(|u| u.1 > 0.0).map(|u| format!("{} {:.2}", u.0, u.1)).collect();
+    format!("CPU {total:.2} s ({}; {spread})", threads.join(", "))
 }
 
 fn fail(e: impl std::fmt::Display) -> ! {
@@ -88,11 +96,11 @@ fn main() {
             reset_peak_rss();
             let (before, t) = (thread_cpu(), Instant::now());
             let map = gmap_core::io::read_gmap(path).unwrap_or_else(|e| fail(e));
-            let cpu: f64 = thread_cpu().iter().map(|(n, c)| c - before.iter().find(|b| &b.0 == n).map_or(0.0, |b| b.1)).sum();
             let beyond = peak_rss().unwrap_or(0).saturating_sub(current_rss().unwrap_or(0));
             eprintln!(
-                "read: wall {:.2?}, CPU {cpu:.2} s (serial); peak beyond the map read {:.1} MB, {:.1} bytes per dart",
+                "read: wall {:.2?}, {}; peak beyond the map read {:.1} MB, {:.1} bytes per dart",
                 t.elapsed(),
+                cpu_since(&before),
                 beyond as f64 / 1e6,
                 beyond as f64 / map.dart_count().max(1) as f64
             );

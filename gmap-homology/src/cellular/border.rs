@@ -87,7 +87,8 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
 
 /// `∂_1` by the two ends of each edge, column by column.
 pub(crate) fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> SparseMatrix {
-    SparseMatrix::try_from_column_fn(vertices.cells.len(), edges.cells.len(), |e, col| {
+    let nnz = 2 * edges.cells.len();
+    SparseMatrix::try_from_column_fn(vertices.cells.len(), edges.cells.len(), nnz, |e, col| {
         let r = edges.cells.reps[e].get();
         let other = map.alpha(Dart::new(r), 0).get();
         for x in [r, other] {
@@ -101,7 +102,8 @@ pub(crate) fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCel
 /// transpose) one by one, then transposed.
 pub(crate) fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> SparseMatrix {
     let n = map.dim();
-    SparseMatrix::try_from_column_fn(top.cells.len(), facets.cells.len(), |f, row| {
+    let nnz = 2 * facets.cells.len();
+    SparseMatrix::try_from_column_fn(top.cells.len(), facets.cells.len(), nnz, |f, row| {
         let r = facets.cells.reps[f].get();
         let other = map.alpha(Dart::new(r), n).get();
         row.push((top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
@@ -122,7 +124,9 @@ pub(crate) fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells)
 /// Built column by column. C1 assumed (no free dart in a face side).
 pub(crate) fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> SparseMatrix {
     let rows: &[[u32; 4]] = map.flat().as_chunks::<4>().0;
-    SparseMatrix::try_from_column_fn(edges.cells.len(), faces.cells.len(), |f, col| {
+    // a face side's positive darts: half its ring, a quarter of a face with two sides
+    let nnz = map.dart_count() / 4;
+    SparseMatrix::try_from_column_fn(edges.cells.len(), faces.cells.len(), nnz, |f, col| {
         let r = faces.cells.reps[f].get();
         let a3 = rows[r as usize][3];
         let s = faces.sign(r);

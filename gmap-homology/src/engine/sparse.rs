@@ -343,29 +343,33 @@ impl SparseMatrix {
     /// A matrix built column by column, without a list of entries: `fill(j, col)` pushes the
     /// entries `(row, value)` of column `j` onto the empty `col`, in any order (duplicates
     /// are summed, overflow checked, zeros dropped). The columns are cut into contiguous
-    /// ranges filled on the threads of [`gmap_core::parallel`], then joined. Besides the
-    /// matrix, one column at a time per thread. O(nnz log(column length) + cols).
+    /// ranges filled on the threads of [`gmap_core::parallel`], then joined; `nnz_hint`, an
+    /// estimate of the number of entries, sizes each range's arrays up front (an estimate
+    /// above the truth reserves address space only; growing the arrays would copy them and
+    /// leave the old copies to the allocator). Besides the matrix, one column at a time per
+    /// thread. O(nnz log(column length) + cols).
     ///
     /// ```
     /// use gmap_homology::SparseMatrix;
     /// // column j holds +1 in row j and -1 in row j + 1 (mod 3), given in any order
-    /// let m = SparseMatrix::try_from_column_fn(3, 3, |j, col| {
+    /// let m = SparseMatrix::try_from_column_fn(3, 3, 6, |j, col| {
     ///     col.push((((j + 1) % 3) as u32, -1));
     ///     col.push((j as u32, 1));
     /// })
     /// .unwrap();
     /// assert_eq!(m.get(0, 2), -1);
     /// assert_eq!(m.get(2, 2), 1);
-    /// assert!(SparseMatrix::try_from_column_fn(2, 1, |_, col| col.push((2, 1))).is_err());
+    /// assert!(SparseMatrix::try_from_column_fn(2, 1, 1, |_, col| col.push((2, 1))).is_err());
     /// ```
-    pub fn try_from_column_fn<F>(rows: usize, cols: usize, fill: F) -> Result<Self, SparseError>
+    pub fn try_from_column_fn<F>(rows: usize, cols: usize, nnz_hint: usize, fill: F) -> Result<Self, SparseError>
     where
         F: Fn(usize, &mut Vec<(u32, i64)>) + Sync,
     {
         let ranges = gmap_core::parallel::split_ranges(cols, gmap_core::parallel::threads_for(cols, cols));
         let parts = gmap_core::parallel::map_parts(ranges, |range| {
             let mut ends = Vec::with_capacity(range.len());
-            let (mut row_idx, mut vals) = (Vec::new(), Vec::new());
+            let hint = (nnz_hint as u128 * range.len() as u128 / cols.max(1) as u128) as usize + 16;
+            let (mut row_idx, mut vals) = (Vec::with_capacity(hint), Vec::with_capacity(hint));
             let mut col = Vec::new();
             for j in range {
                 col.clear();
@@ -375,19 +379,17 @@ impl SparseMatrix {
             }
             Ok::<_, SparseError>((ends, row_idx, vals))
         });
+        let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+        let nnz = parts.iter().map(|p| p.1.len()).sum();
         let mut col_ptr = Vec::with_capacity(cols + 1);
         col_ptr.push(0);
-        let (mut row_idx, mut vals) = (Vec::new(), Vec::new());
-        for part in parts {
-            let (ends, r, v) = part?;
+        let (mut row_idx, mut vals) = (Vec::with_capacity(nnz), Vec::with_capacity(nnz));
+        // each part is dropped once copied
+        for (ends, r, v) in parts {
             let base = row_idx.len();
             col_ptr.extend(ends.iter().map(|e| base + e));
-            if row_idx.is_empty() {
-                (row_idx, vals) = (r, v);
-            } else {
-                row_idx.extend_from_slice(&r);
-                vals.extend_from_slice(&v);
-            }
+            row_idx.extend_from_slice(&r);
+            vals.extend_from_slice(&v);
         }
         Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
     }
