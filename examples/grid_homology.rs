@@ -11,8 +11,11 @@ use std::time::{Duration, Instant};
 
 use gmap_core::resources::{current_rss, peak_rss, reset_peak_rss};
 
+/// CPU seconds (user + system) of each thread, by thread name.
+type ThreadCpu = Vec<(String, f64)>;
+
 /// CPU seconds (user + system) of each thread of this process, by thread name.
-fn thread_cpu() -> Vec<(String, f64)> {
+fn thread_cpu() -> ThreadCpu {
     let mut out = Vec::new();
     let Ok(dir) = std::fs::read_dir("/proc/self/task") else { return out };
     for t in dir.flatten() {
@@ -35,7 +38,7 @@ struct Stages {
     darts: usize,
     worst: u64,
     /// the stage open: its name, the threads' CPU and the time at its start
-    open: Option<(&'static str, Vec<(String, f64)>, Instant)>,
+    open: Option<(&'static str, ThreadCpu, Instant)>,
 }
 
 impl Stages {

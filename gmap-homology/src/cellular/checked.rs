@@ -8,8 +8,8 @@ use crate::cellular::border::{border_from_oriented, ends, pairs, sides, Cellular
 use crate::cellular::precond::{
     check_chi, check_faces_unfolded, check_preconditions, chi_of_volumes, OrientedCells, PreconditionError,
 };
-use crate::engine::chain::ChainComplex;
 use crate::cellular::simplicial::{simplicial_complex_with_simplices, tau_matrix, ChainMapTau};
+use crate::engine::chain::ChainComplex;
 use crate::engine::homology::{homology_z, Homology, HomologyError};
 
 /// Builds the border operator of `map` after checking C1 and C2 on every cell.

@@ -168,11 +168,9 @@ fn cell_homology(sub: &DenseMap) -> Result<Homology, HomologyError> {
 pub(crate) fn check_chi(chi: &[i64], reps: &[Dart]) -> Result<(), PreconditionError> {
     match chi.iter().position(|&x| x != 2) {
         None => Ok(()),
-        Some(c) => Err(PreconditionError::C2 {
-            dim: 3,
-            dart: reps[c],
-            found: format!("Euler characteristic {}", chi[c]),
-        }),
+        Some(c) => {
+            Err(PreconditionError::C2 { dim: 3, dart: reps[c], found: format!("Euler characteristic {}", chi[c]) })
+        }
     }
 }
 
