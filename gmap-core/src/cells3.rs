@@ -42,14 +42,7 @@ pub(crate) type Cells = (Vec<u32>, Vec<Dart>, Vec<usize>);
 /// boundary of each volume; `None` when a cell is not of the shapes of the module docs.
 /// The four dimensions are tasks of [`parallel::map_tasks`]. O(N α(N)).
 pub(crate) fn oriented_cells_3(rows: &[[u32; 4]]) -> Option<([Cells; 4], Vec<i64>)> {
-    // (first involution of the ring, second, does each flip the colour, link every pair)
-    let mut parts = parallel::map_tasks(4, rows.len(), |k| match k {
-        0 => glued(rows, 1, 2, false, false, true),
-        1 => glued(rows, 0, 2, true, false, true),
-        2 => glued(rows, 0, 1, true, true, false),
-        _ => oriented_by(rows.len(), |x| &rows[x][..], 3).ok().map(|c| (c, Vec::new())),
-    })
-    .into_iter();
+    let mut parts = parallel::map_tasks(4, rows.len(), |k| cells_of(rows, k)).into_iter();
     let mut next = || parts.next().flatten();
     let ((v, corners), (e, sides), (f, rings), (c, _)) = (next()?, next()?, next()?, next()?);
     let vol = &c.0;
@@ -61,6 +54,24 @@ pub(crate) fn oriented_cells_3(rows: &[[u32; 4]]) -> Option<([Cells; 4], Vec<i64
         chi[vol[x as usize] as usize] -= 1;
     }
     Some(([v, e, f, c], chi))
+}
+
+/// The oriented i-cells of a 3-map for each `i` of `dims`, in that order, each a task of
+/// [`parallel::map_tasks`]; `None` when a cell of one of these dimensions is not of the
+/// shapes of the module docs. O(N α(N)) per dimension.
+pub(crate) fn oriented_cells_3_of(rows: &[[u32; 4]], dims: &[usize]) -> Option<Vec<Cells>> {
+    parallel::map_tasks(dims.len(), rows.len(), |t| cells_of(rows, dims[t]).map(|(c, _)| c)).into_iter().collect()
+}
+
+/// The oriented `i`-cells (`i <= 3`) and, below 3, the first dart of every ring.
+fn cells_of(rows: &[[u32; 4]], i: usize) -> Option<(Cells, Vec<u32>)> {
+    // (first involution of the ring, second, does each flip the colour, link every pair)
+    match i {
+        0 => glued(rows, 1, 2, false, false, true),
+        1 => glued(rows, 0, 2, true, false, true),
+        2 => glued(rows, 0, 1, true, true, false),
+        _ => oriented_by(rows.len(), |x| &rows[x][..], 3).ok().map(|c| (c, Vec::new())),
+    }
 }
 
 /// The i-cells whose darts, inside a volume, form rings of `alpha_a` and `alpha_b`, glued

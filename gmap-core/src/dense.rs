@@ -742,6 +742,29 @@ impl DenseMap {
         Some(OrientedCells3d { cells, euler })
     }
 
+    /// The oriented i-cells of a 3-map for each `i` of `dims` (entry `k` for `dims[k]`), as
+    /// [`DenseMap::oriented_cells_3d`] walks them, without the other dimensions: a caller
+    /// that needs two dimensions at a time holds two partitions, not four. `None` when the
+    /// map is not of dimension 3, a dimension is above 3, or a cell of these dimensions is
+    /// not of the shapes of the ring walks. The dimensions are tasks of [`crate::parallel`].
+    /// O(N α(N)) per dimension.
+    ///
+    /// ```
+    /// let m = gmap_core::examples::torus().embedded(3).unwrap();
+    /// let all = m.oriented_cells_3d().unwrap();
+    /// let two = m.oriented_cells_3d_of(&[3, 1]).unwrap();
+    /// assert_eq!(two, vec![all.cells[3].clone(), all.cells[1].clone()]);
+    /// assert!(gmap_core::DenseMap::new(2, 0).oriented_cells_3d_of(&[0]).is_none(), "not a 3-map");
+    /// ```
+    pub fn oriented_cells_3d_of(&self, dims: &[usize]) -> Option<Vec<(Partition, BitVec)>> {
+        if self.dim != 3 || dims.iter().any(|&i| i > 3) {
+            return None;
+        }
+        let rows: &[[u32; 4]] = self.alpha.as_chunks::<4>().0;
+        let cells = crate::cells3::oriented_cells_3_of(rows, dims)?;
+        Some(cells.into_iter().map(|c| oriented_parts(c, rows.len())).collect())
+    }
+
     /// Checks C1 for every dimension; returns the first failing cell.
     pub fn check_cells_orientable(&self) -> Result<(), CellDefect> {
         for i in 0..=self.dim {

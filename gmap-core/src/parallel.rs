@@ -104,6 +104,21 @@ where
     }
 }
 
+/// `(a(), b())`, as two rayon jobs on the stages' pool, or one after the other on the
+/// calling thread when [`threads_for`]`(items, 2)` is 1.
+pub fn join<A, B, RA, RB>(items: usize, a: A, b: B) -> (RA, RB)
+where
+    A: FnOnce() -> RA + Send,
+    B: FnOnce() -> RB + Send,
+    RA: Send,
+    RB: Send,
+{
+    if threads_for(items, 2) == 1 {
+        return (a(), b());
+    }
+    install(|| rayon::join(a, b))
+}
+
 /// `f(0), …, f(tasks - 1)` in order, each task its own rayon job on the stages' pool (so
 /// uneven tasks balance), or on the calling thread when [`threads_for`]`(items, tasks)` is 1.
 /// `items` is the size of the whole input, deciding whether threads pay at all.

@@ -39,6 +39,7 @@ use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
 
 use gmap_core::{AlphaSet, BoundaryDefect, CellDefect, Dart, DenseMap, GMap};
+use gmap_homology::border::border_from_oriented;
 use gmap_homology::{
     cellular_complex, chain_map_tau, check_by_dimension, check_preconditions, homology_z, homology_zp,
     simplicial_complex, ChainComplex, Homology, PreconditionError,
@@ -315,7 +316,11 @@ fn judge(m: &DenseMap) -> Result<Verdict, TestCaseError> {
     prop_assert_eq!(hs.z.betti[0], m.component_count());
     // the ring walks of 3-maps give the cells, colours and error of the per-dimension check
     prop_assert_eq!(check_preconditions(m), check_by_dimension(m));
-    match cellular_complex(m) {
+    // the two phases of 3-maps give the complex (or the error) of all dimensions at once
+    let whole = check_by_dimension(m).map(|o| border_from_oriented(m, &o));
+    let staged = cellular_complex(m);
+    prop_assert_eq!(staged.as_ref().map(|c| (&c.chain, &c.reps)), whole.as_ref().map(|c| (&c.chain, &c.reps)));
+    match staged {
         Ok(c) => {
             prop_assert_eq!(c.chain.check_dd(), Ok(()));
             prop_assert_eq!(c.chain.euler_characteristic(), m.euler_characteristic());

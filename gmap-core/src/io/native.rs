@@ -61,8 +61,16 @@ pub fn read_gmap(path: impl AsRef<Path>) -> Result<DenseMap, ReadError> {
 }
 
 /// [`read_gmap`] with options (a cap on the number of darts).
+///
+/// The file is read a chunk at a time: beyond the map, the reader holds one chunk of the
+/// file and its sections. A file that is not a valid map is then read whole to name the
+/// fault.
 pub fn read_gmap_with(path: impl AsRef<Path>, opts: &ReadOptions) -> Result<DenseMap, ReadError> {
-    let (bytes, name) = gmap_bytes(path.as_ref(), opts)?;
+    let path = path.as_ref();
+    if let Some(map) = stream_gmap(path, &path.display().to_string(), opts, CHUNK) {
+        return Ok(map);
+    }
+    let (bytes, name) = gmap_bytes(path, opts)?;
     parse_gmap_with(&bytes, &name, opts)
 }
 
@@ -279,20 +287,206 @@ fn parse_parts(bytes: &[u8], name: &str, opts: &ReadOptions) -> Result<(DenseMap
         }
         s.next_line();
     }
+    let sections = read_tail(&mut s, name, dim, darts)?;
+    let map = DenseMap::from_flat_unchecked(dim, alpha)
+        .map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
+    map.validate().map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
+    Ok((map, sections))
+}
+
+/// The sections after the dart lines, from `s` (just after the last dart line) to the end;
+/// a data line there is one dart too many.
+fn read_tail(s: &mut Scanner, name: &str, dim: usize, darts: u64) -> Result<Sections, ReadError> {
     s.skip_empty_lines();
     let mut sections = Sections::default();
     if !s.at_end() {
         let mut peek = Scanner { b: s.b, pos: s.pos, line: s.line };
         peek.skip_blank();
         if peek.b.get(peek.pos).is_some_and(u8::is_ascii_digit) {
-            return Err(err(s.line, ReadErrorKind::ExtraLines { expected: darts }));
+            return Err(ReadError::new(name, Some(s.line), ReadErrorKind::ExtraLines { expected: darts }));
         }
-        read_sections(&mut s, name, dim, darts, &mut sections)?;
+        read_sections(s, name, dim, darts, &mut sections)?;
     }
-    let map = DenseMap::from_flat_unchecked(dim, alpha)
-        .map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
-    map.validate().map_err(|e| validity_to_read_error(e, name, bytes, data_start, data_line))?;
-    Ok((map, sections))
+    Ok(sections)
+}
+
+/// Bytes read from the file at a time by [`stream_gmap`].
+const CHUNK: usize = 1 << 22;
+
+/// Reads a well-formed `.gmap` file a chunk at a time, so that nothing but the map (and one
+/// chunk, and the sections) is ever held, and from the second chunk on (a quarter of a chunk
+/// of whole lines at least) the lines are read by several threads: `None` at the first thing out of the ordinary (a
+/// bad header or line, a dart limit or memory estimate exceeded, a map that is not valid, an
+/// I/O error), for which the caller parses the whole file to name the fault exactly.
+/// Accepts exactly what [`parse_gmap_with`] accepts, and gives the same map. O(file size)
+/// plus the validation.
+fn stream_gmap(path: &Path, name: &str, opts: &ReadOptions, chunk: usize) -> Option<DenseMap> {
+    use std::io::Read as _;
+    let mut file = std::fs::File::open(path).ok()?;
+    let size = file.metadata().ok()?.len();
+    let mut buf: Vec<u8> = Vec::with_capacity(chunk + 64);
+    // (dimension, darts) once the header is read; the values; the physical line of the next
+    // line; the bytes of the file from the end of the dart lines on
+    let mut header: Option<(usize, u64)> = None;
+    let mut alpha: Vec<u32> = Vec::new();
+    let mut line = 1usize;
+    let mut tail: Option<(Vec<u8>, usize)> = None;
+    let mut eof = false;
+    while !eof {
+        // keep the unfinished last line, then read up to a chunk more
+        let mut k = buf.len();
+        buf.resize(k + chunk, 0);
+        while k < buf.len() {
+            match file.read(&mut buf[k..]) {
+                Ok(0) => {
+                    eof = true;
+                    break;
+                }
+                Ok(r) => k += r,
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(_) => return None,
+            }
+        }
+        buf.truncate(k);
+        // the complete lines of the buffer (all of it at the end of the file)
+        let end = if eof { buf.len() } else { buf.iter().rposition(|&c| c == b'\n').map_or(0, |p| p + 1) };
+        if end == 0 && !eof {
+            // a line longer than a chunk: read on
+            continue;
+        }
+        let mut pos = 0;
+        while pos < end {
+            if let Some((t, _)) = &mut tail {
+                t.extend_from_slice(&buf[pos..end]);
+                break;
+            }
+            let stop = buf[pos..end].iter().position(|&c| c == b'\n').map_or(end, |p| pos + p + 1);
+            let text = &buf[pos..stop];
+            let content = is_content(text.strip_suffix(b"\n").unwrap_or(text));
+            match header {
+                Some((dim, darts)) if (alpha.len() as u64) < darts * (dim as u64 + 1) => {
+                    if pos == 0 && end >= chunk / 4 {
+                        // the whole buffer at once, in pieces on the stages' threads, when
+                        // its lines are all dart lines (else line by line below)
+                        if let Some(lines) = dart_lines_parallel(&buf[..end], dim + 1, darts, &mut alpha) {
+                            line += lines;
+                            break;
+                        }
+                    }
+                    dart_line(text, content, dim + 1, darts, &mut alpha)?;
+                }
+                Some(_) => {
+                    tail = Some((buf[pos..end].to_vec(), line));
+                    break;
+                }
+                None => {
+                    std::str::from_utf8(text).ok()?;
+                    if content {
+                        let (dim, darts) = stream_header(text, opts)?;
+                        let total = usize::try_from(darts * (dim as u64 + 1)).ok()?;
+                        crate::resources::check_memory("the map", Some(total as u64 * 4)).ok()?;
+                        let reserve = total.min(usize::try_from(size / 2).ok()? + dim + 1);
+                        alpha.try_reserve_exact(reserve).ok()?;
+                        header = Some((dim, darts));
+                    }
+                }
+            }
+            line += 1;
+            pos = stop;
+        }
+        buf.drain(..end);
+    }
+    let (dim, darts) = header?;
+    if (alpha.len() as u64) < darts * (dim as u64 + 1) {
+        return None;
+    }
+    drop(buf);
+    let (bytes, tail_line) = tail.unwrap_or((Vec::new(), line));
+    std::str::from_utf8(&bytes).ok()?;
+    let mut s = Scanner { b: &bytes, pos: 0, line: tail_line };
+    let sections = read_tail(&mut s, name, dim, darts).ok()?;
+    let mut map = DenseMap::from_flat_unchecked(dim, alpha).ok()?;
+    map.validate().ok()?;
+    sections.check(&map, name, dim).ok()?;
+    sections.apply_points(&mut map);
+    Some(map)
+}
+
+/// Reads one line of the dart section onto `alpha`: `w` values below `darts` (nothing for a
+/// blank or comment line, `content` false); `None` if the line is anything else.
+fn dart_line(text: &[u8], content: bool, w: usize, darts: u64, alpha: &mut Vec<u32>) -> Option<()> {
+    if fast_line(text, 0, w, darts, alpha).is_some() {
+        return Some(());
+    }
+    std::str::from_utf8(text).ok()?;
+    if content {
+        let mut s = Scanner::new(text);
+        for _ in 0..w {
+            match s.number() {
+                Num::Value(v) if v < darts => alpha.push(v as u32),
+                _ => return None,
+            }
+        }
+        s.skip_blank();
+        if !s.at_eol() {
+            return None;
+        }
+    }
+    Some(())
+}
+
+/// Reads `lines` (complete lines) as dart lines, cut at line ends into one piece per thread
+/// of [`crate::parallel`] (run as its tasks), and appends their values to `alpha` in order: the number of lines
+/// read, or `None` (with `alpha` untouched) when a line is not a dart line or the lines
+/// hold more darts than the `darts` announced, which are read line by line instead.
+fn dart_lines_parallel(lines: &[u8], w: usize, darts: u64, alpha: &mut Vec<u32>) -> Option<usize> {
+    let threads = crate::parallel::max_threads();
+    let mut cuts = vec![0];
+    for k in 1..threads {
+        let at = (lines.len() * k / threads).max(*cuts.last()?);
+        let next = lines[at..].iter().position(|&c| c == b'\n').map_or(lines.len(), |p| at + p + 1);
+        cuts.push(next);
+    }
+    cuts.push(lines.len());
+    let pieces: Vec<&[u8]> = cuts.windows(2).map(|c| &lines[c[0]..c[1]]).collect();
+    let parsed = crate::parallel::map_parts(pieces, |piece| {
+        let mut values = Vec::with_capacity(piece.len() / 4);
+        let mut count = 0;
+        for text in piece.split_inclusive(|&c| c == b'\n') {
+            let content = is_content(text.strip_suffix(b"\n").unwrap_or(text));
+            dart_line(text, content, w, darts, &mut values)?;
+            count += 1;
+        }
+        Some((values, count))
+    });
+    let parsed: Vec<(Vec<u32>, usize)> = parsed.into_iter().collect::<Option<_>>()?;
+    let values: usize = parsed.iter().map(|p| p.0.len()).sum();
+    if (alpha.len() + values) as u64 > darts * w as u64 {
+        return None;
+    }
+    let mut lines = 0;
+    for (v, count) in parsed {
+        alpha.extend_from_slice(&v);
+        lines += count;
+    }
+    Some(lines)
+}
+
+/// The dimension and dart count of a header line that [`parse_parts`] accepts within `opts`.
+fn stream_header(text: &[u8], opts: &ReadOptions) -> Option<(usize, u64)> {
+    let mut s = Scanner::new(text);
+    if s.token() != Some(b"gmap") {
+        return None;
+    }
+    let (Num::Value(dim), Num::Value(darts)) = (s.number(), s.number()) else { return None };
+    if s.token().is_some() || dim > MAX_DIM as u64 || darts >= u32::MAX as u64 {
+        return None;
+    }
+    let total = darts.checked_mul(dim + 1).and_then(|t| usize::try_from(t).ok())?;
+    if total > isize::MAX as usize / 4 || opts.max_darts.is_some_and(|limit| darts > limit) {
+        return None;
+    }
+    Some((dim as usize, darts))
 }
 
 const POINTS_HEADER: &str = "points <count>";
@@ -569,6 +763,70 @@ mod tests {
         let empty = DenseMap::new(3, 0);
         assert_eq!(format_gmap(&empty), b"gmap 3 0\n");
         assert_eq!(parse_gmap(b"gmap 3 0\n", "x").unwrap(), empty);
+    }
+
+    /// The chunked reader gives the map the whole-file parser gives, whatever the chunk
+    /// boundaries, and gives up (for the whole-file parser to name the fault) exactly where
+    /// that one fails; `read_gmap` reports the same either way.
+    #[test]
+    fn streaming_equals_whole_file() {
+        let mut files: Vec<Vec<u8>> = [examples::fig1_surface(), examples::cylinder(), examples::klein_bottle()]
+            .iter()
+            .map(format_gmap)
+            .collect();
+        let mut pointed = examples::torus();
+        for d in 0..pointed.dart_count() as u32 {
+            pointed.set_point(Dart::new(d), Some([f64::from(d % 3), 1.5, 0.0]));
+        }
+        let pointed = parse_gmap(&format_gmap(&pointed), "x").unwrap();
+        files.push(format_gmap(&pointed));
+        // many lines, a comment among them: the pieces read in parallel
+        let mut big = DenseMap::new(1, 2000);
+        for d in (0..2000).step_by(2) {
+            big.link(Dart::new(d), Dart::new(d + 1), 0);
+        }
+        let text = format_gmap(&big);
+        let middle = text.len() / 2 + text[text.len() / 2..].iter().position(|&c| c == b'\n').unwrap() + 1;
+        files.push([&text[..middle], b"  # a comment\n\n", &text[middle..]].concat());
+        files.push([&text[..middle], b"0 x\n", &text[middle..]].concat());
+        for text in [
+            &b"# a comment\n\n  # another\r\ngmap 1 2\r\n1\t1\r\n\n# mid\n0 0  \r\n\n"[..],
+            b"gmap 1 2\n1 1\n0 0",
+            b"gmap 3 0\n",
+            b"gmap 1 2\n1 1\n0 0\nlabels 0 1\n0 name=\"a\"\n",
+            b"",
+            b"map 1 2\n",
+            b"gmap 1 2 3\n",
+            b"gmap 2 4000000000\n0 0 0\n",
+            b"gmap 1 3\n0 0\n1 1\n",
+            b"gmap 1 1\n0 0\n0 0\n",
+            b"gmap 1 2\n0 0\n1\n",
+            b"gmap 1 2\n0 0\n1 2\n",
+            b"gmap 1 2\n0 0\n1 \xff\n",
+            b"gmap 1 2\n0 0\n# \xff\n1 1\n",
+            b"gmap 1 3\n1 0\n2 1\n1 2\n",
+            b"gmap 1 2\n1 1\n0 0\npoints 1\n0 1 2\n",
+            b"gmap 1 2\n1 1\n0 0\npoints 2\n0 1 2\n1 1 2\n",
+        ] {
+            files.push(text.to_vec());
+        }
+        let dir = tempfile::tempdir().unwrap();
+        for (k, bytes) in files.iter().enumerate() {
+            let path = dir.path().join(format!("{k}.gmap"));
+            std::fs::write(&path, bytes).unwrap();
+            let name = path.display().to_string();
+            let whole = parse_gmap_with(bytes, &name, &ReadOptions::default());
+            for chunk in [CHUNK, 4096, 64, 7, 3, 2, 1] {
+                let streamed = stream_gmap(&path, &name, &ReadOptions::default(), chunk);
+                assert_eq!(streamed.as_ref(), whole.as_ref().ok(), "file {k}, chunk {chunk}");
+            }
+            assert_eq!(read_gmap(&path), whole, "file {k}");
+        }
+        // a dart limit below the header's count: refused by the whole-file path's message
+        let path = dir.path().join("0.gmap");
+        let opts = ReadOptions { max_darts: Some(3) };
+        assert!(stream_gmap(&path, "x", &opts, CHUNK).is_none());
+        assert!(read_gmap_with(&path, &opts).unwrap_err().to_string().contains("3"));
     }
 
     #[test]

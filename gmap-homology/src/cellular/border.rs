@@ -48,17 +48,17 @@ pub fn border_from_oriented(map: &DenseMap, oriented: &[OrientedCells]) -> Cellu
     let n = map.dim();
     let counts: Vec<usize> = oriented.iter().map(|c| c.cells.len()).collect();
     let matrix = |i: usize| {
-        let entries = if i == 1 {
+        if i == 1 {
             ends(map, &oriented[1], &oriented[0])
         } else if i == n {
             pairs(map, &oriented[n], &oriented[n - 1])
         } else if i == 2 && n == 3 {
             sides(map, &oriented[2], &oriented[1])
         } else {
-            incidence_terms(map, &oriented[i], &oriented[i - 1])
-        };
-        SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
-            .expect("indices come from partitions of the same map; entries are small")
+            let entries = incidence_terms(map, &oriented[i], &oriented[i - 1]);
+            SparseMatrix::try_from_entries(counts[i - 1], counts[i], &entries)
+                .expect("indices come from partitions of the same map; entries are small")
+        }
     };
     // one task per dimension, on as many threads as the setting allows (∂_2, the largest
     // in 3D, is taken second, so it starts at once on a second thread)
@@ -85,30 +85,34 @@ pub fn border_by_walks(map: &DenseMap, oriented: &[OrientedCells]) -> CellularCo
     CellularComplex { chain, reps }
 }
 
-/// `∂_1` by the two ends of each edge.
-fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> Vec<(u32, u32, i64)> {
-    let mut out = Vec::with_capacity(2 * edges.cells.len());
-    for (e, r) in edges.cells.reps.iter().map(|d| d.get()).enumerate() {
+/// `∂_1` by the two ends of each edge, column by column.
+pub(crate) fn ends(map: &DenseMap, edges: &OrientedCells, vertices: &OrientedCells) -> SparseMatrix {
+    let nnz = 2 * edges.cells.len();
+    SparseMatrix::try_from_column_fn(vertices.cells.len(), edges.cells.len(), nnz, |e, col| {
+        let r = edges.cells.reps[e].get();
         let other = map.alpha(Dart::new(r), 0).get();
         for x in [r, other] {
-            out.push((vertices.cells.of[x as usize], e as u32, edges.sign(x) * vertices.sign(x)));
+            col.push((vertices.cells.of[x as usize], edges.sign(x) * vertices.sign(x)));
         }
-    }
-    out
+    })
+    .expect("indices come from partitions of the same map; entries are small")
 }
 
-/// `∂_n` by the `alpha_n`-pair of one dart of each (n-1)-cell.
-fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u32, u32, i64)> {
+/// `∂_n` by the `alpha_n`-pair of one dart of each (n-1)-cell: its rows (the columns of its
+/// transpose) one by one, then transposed.
+pub(crate) fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> SparseMatrix {
     let n = map.dim();
-    let mut out = Vec::with_capacity(2 * facets.cells.len());
-    for (f, r) in facets.cells.reps.iter().map(|d| d.get()).enumerate() {
+    let nnz = 2 * facets.cells.len();
+    SparseMatrix::try_from_column_fn(top.cells.len(), facets.cells.len(), nnz, |f, row| {
+        let r = facets.cells.reps[f].get();
         let other = map.alpha(Dart::new(r), n).get();
-        out.push((f as u32, top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
+        row.push((top.cells.of[r as usize], top.sign(r) * facets.sign(r)));
         if other != r {
-            out.push((f as u32, top.cells.of[other as usize], top.sign(other) * facets.sign(other)));
+            row.push((top.cells.of[other as usize], top.sign(other) * facets.sign(other)));
         }
-    }
-    out
+    })
+    .expect("indices come from partitions of the same map; entries are small")
+    .transpose()
 }
 
 /// `∂_2` of a 3-map by the `<alpha_0, alpha_3>`-orbits, face by face: each orbit
@@ -117,32 +121,37 @@ fn pairs(map: &DenseMap, top: &OrientedCells, facets: &OrientedCells) -> Vec<(u3
 /// every orbit of the face once at a positive dart; on a face folded onto itself both pairs
 /// lie on that ring, and the orbit is counted at the smaller positive dart. The value is
 /// the same at every dart of an orbit (`alpha_0` flips both signs, `alpha_3` keeps both).
-/// Entries come out column by column. C1 assumed (no free dart in a face side).
-fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> Vec<(u32, u32, i64)> {
+/// Built column by column. C1 assumed (no free dart in a face side).
+pub(crate) fn sides(map: &DenseMap, faces: &OrientedCells, edges: &OrientedCells) -> SparseMatrix {
     let rows: &[[u32; 4]] = map.flat().as_chunks::<4>().0;
-    let mut out = Vec::with_capacity(map.dart_count() / 4 + 1);
-    // the positive darts of the ring being walked
-    let mut ring: Vec<u32> = Vec::with_capacity(16);
-    for (f, r) in faces.cells.reps.iter().map(|d| d.get()).enumerate() {
-        ring.clear();
+    // a face side's positive darts: half its ring, a quarter of a face with two sides
+    let nnz = map.dart_count() / 4;
+    SparseMatrix::try_from_column_fn(edges.cells.len(), faces.cells.len(), nnz, |f, col| {
+        let r = faces.cells.reps[f].get();
+        let a3 = rows[r as usize][3];
+        let s = faces.sign(r);
+        // the ring's positive darts; the face is folded when alpha_3 maps the ring to itself
+        let mut folded = false;
         let mut x = r;
         loop {
-            ring.push(x);
+            folded |= x == a3 && a3 != r;
             x = rows[rows[x as usize][0] as usize][1];
             if x == r {
                 break;
             }
         }
-        let a3 = rows[r as usize][3];
-        let folded = a3 != r && ring.contains(&a3);
-        let s = faces.sign(r);
-        for &x in &ring {
+        let mut x = r;
+        loop {
             if !folded || rows[x as usize][3] >= x {
-                out.push((edges.cells.of[x as usize], f as u32, s * edges.sign(x)));
+                col.push((edges.cells.of[x as usize], s * edges.sign(x)));
+            }
+            x = rows[rows[x as usize][0] as usize][1];
+            if x == r {
+                break;
             }
         }
-    }
-    out
+    })
+    .expect("indices come from partitions of the same map; entries are small")
 }
 
 #[cfg(test)]

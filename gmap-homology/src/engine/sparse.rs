@@ -100,6 +100,35 @@ pub struct SparseMatrix {
     vals: Vec<i64>,
 }
 
+/// Appends column `c` to `row_idx`/`vals`: its entries `col` sorted by row (stably, so that
+/// equal rows are summed in their given order), duplicates summed, zeros dropped.
+fn push_column(
+    rows: usize,
+    c: usize,
+    col: &mut [(u32, i64)],
+    row_idx: &mut Vec<u32>,
+    vals: &mut Vec<i64>,
+) -> Result<(), SparseError> {
+    if let Some(&(r, _)) = col.iter().find(|e| e.0 as usize >= rows) {
+        return Err(SparseError::RowOutOfRange { col: c, row: r as usize, rows });
+    }
+    col.sort_by_key(|e| e.0);
+    let mut i = 0;
+    while i < col.len() {
+        let (r, mut v) = col[i];
+        i += 1;
+        while i < col.len() && col[i].0 == r {
+            v = v.checked_add(col[i].1).ok_or(SparseError::Overflow { row: r as usize, col: c })?;
+            i += 1;
+        }
+        if v != 0 {
+            row_idx.push(r);
+            vals.push(v);
+        }
+    }
+    Ok(())
+}
+
 impl SparseMatrix {
     /// The `rows × cols` zero matrix. O(cols).
     pub fn zeros(rows: usize, cols: usize) -> Self {
@@ -298,32 +327,69 @@ impl SparseMatrix {
             col.clear();
             while k < entries.len() && entries[k].1 == c {
                 let (r, _, v) = entries[k];
-                if r as usize >= rows {
-                    return Err(SparseError::RowOutOfRange { col: c as usize, row: r as usize, rows });
-                }
                 col.push((r, v));
                 k += 1;
             }
-            // stable, as the counting sorts are: equal rows keep their order before summing
-            col.sort_by_key(|e| e.0);
-            let mut i = 0;
-            while i < col.len() {
-                let (r, mut v) = col[i];
-                i += 1;
-                while i < col.len() && col[i].0 == r {
-                    v = v.checked_add(col[i].1).ok_or(SparseError::Overflow { row: r as usize, col: c as usize })?;
-                    i += 1;
-                }
-                if v != 0 {
-                    row_idx.push(r);
-                    vals.push(v);
-                }
-            }
+            push_column(rows, c as usize, &mut col, &mut row_idx, &mut vals)?;
             col_ptr[c as usize + 1] = row_idx.len();
         }
         // columns without entries take the pointer of the column before
         for j in 0..cols {
             col_ptr[j + 1] = col_ptr[j + 1].max(col_ptr[j]);
+        }
+        Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
+    }
+
+    /// A matrix built column by column, without a list of entries: `fill(j, col)` pushes the
+    /// entries `(row, value)` of column `j` onto the empty `col`, in any order (duplicates
+    /// are summed, overflow checked, zeros dropped). The columns are cut into contiguous
+    /// ranges filled on the threads of [`gmap_core::parallel`], then joined; `nnz_hint`, an
+    /// estimate of the number of entries, sizes each range's arrays up front (an estimate
+    /// above the truth reserves address space only; growing the arrays would copy them and
+    /// leave the old copies to the allocator). Besides the matrix, one column at a time per
+    /// thread. O(nnz log(column length) + cols).
+    ///
+    /// ```
+    /// use gmap_homology::SparseMatrix;
+    /// // column j holds +1 in row j and -1 in row j + 1 (mod 3), given in any order
+    /// let m = SparseMatrix::try_from_column_fn(3, 3, 6, |j, col| {
+    ///     col.push((((j + 1) % 3) as u32, -1));
+    ///     col.push((j as u32, 1));
+    /// })
+    /// .unwrap();
+    /// assert_eq!(m.get(0, 2), -1);
+    /// assert_eq!(m.get(2, 2), 1);
+    /// assert!(SparseMatrix::try_from_column_fn(2, 1, 1, |_, col| col.push((2, 1))).is_err());
+    /// ```
+    pub fn try_from_column_fn<F>(rows: usize, cols: usize, nnz_hint: usize, fill: F) -> Result<Self, SparseError>
+    where
+        F: Fn(usize, &mut Vec<(u32, i64)>) + Sync,
+    {
+        let ranges = gmap_core::parallel::split_ranges(cols, gmap_core::parallel::threads_for(cols, cols));
+        let parts = gmap_core::parallel::map_parts(ranges, |range| {
+            let mut ends = Vec::with_capacity(range.len());
+            let hint = (nnz_hint as u128 * range.len() as u128 / cols.max(1) as u128) as usize + 16;
+            let (mut row_idx, mut vals) = (Vec::with_capacity(hint), Vec::with_capacity(hint));
+            let mut col = Vec::new();
+            for j in range {
+                col.clear();
+                fill(j, &mut col);
+                push_column(rows, j, &mut col, &mut row_idx, &mut vals)?;
+                ends.push(row_idx.len());
+            }
+            Ok::<_, SparseError>((ends, row_idx, vals))
+        });
+        let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+        let nnz = parts.iter().map(|p| p.1.len()).sum();
+        let mut col_ptr = Vec::with_capacity(cols + 1);
+        col_ptr.push(0);
+        let (mut row_idx, mut vals) = (Vec::with_capacity(nnz), Vec::with_capacity(nnz));
+        // each part is dropped once copied
+        for (ends, r, v) in parts {
+            let base = row_idx.len();
+            col_ptr.extend(ends.iter().map(|e| base + e));
+            row_idx.extend_from_slice(&r);
+            vals.extend_from_slice(&v);
         }
         Ok(SparseMatrix { rows, cols, col_ptr, row_idx, vals })
     }
