@@ -28,8 +28,10 @@
 //! summaries along the shared layers. A process or a machine per block (the MPI route)
 //! sends only its [`BlockSummary`]: O(layer) numbers, whatever the block's size.
 //!
-//! Periodic boxes (a torus, where Alexander duality does not hold) and dimensions ≥ 4 take
-//! the chain-complex route ([`super::cubical`]).
+//! Periodic boxes (a torus, where Alexander duality in the sphere does not hold) have their
+//! own one-pass route ([`super::cubical_torus`]: duality in the torus, with the winding
+//! lattice of the complement); dimensions ≥ 4 take the chain-complex route
+//! ([`super::cubical`]).
 //!
 //! ```
 //! use gmap_homology::cubical_pass::betti_one_pass;
