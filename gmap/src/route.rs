@@ -334,7 +334,8 @@ pub fn cubical_one_pass(
     if shape.len() > 3 || o.generators || o.method != Method::Cellular || o.simplify || o.topological {
         return Ok(None);
     }
-    let limit = |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
+    let limit =
+        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
     let d = shape.len();
     let (betti, torsion): (Vec<u64>, Vec<Vec<u64>>) = if o.periodic {
         o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
@@ -355,9 +356,7 @@ pub fn cubical_one_pass(
         // universal coefficients: a factor divisible by p adds a Z/p to H_k and one to H_{k+1}
         Some(p) => {
             let hits: Vec<usize> = torsion.iter().map(|t| t.iter().filter(|&&s| s % p == 0).count()).collect();
-            let betti = (0..=d)
-                .map(|k| to_usize(betti[k]) + hits[k] + if k > 0 { hits[k - 1] } else { 0 })
-                .collect();
+            let betti = (0..=d).map(|k| to_usize(betti[k]) + hits[k] + if k > 0 { hits[k - 1] } else { 0 }).collect();
             gmap_homology::Homology {
                 coefficients: gmap_homology::homology::Coefficients::Field(p),
                 betti,

@@ -368,12 +368,12 @@ fn complement_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, Lattic
     let mut lattice = Lattice::default();
     let (mut first, mut prev, mut cur) = (vec![0u8; m], vec![0u8; m], vec![0u8; m]);
     let (mut absent, mut unions) = (0u64, 0u64);
-    let mut edge = |uf: &mut WindingForest, a: usize, b: usize, cross: [i32; 3]| match uf.join(a as u32, b as u32, cross)
-    {
-        Joined::Merged => unions += 1,
-        Joined::Cycle(w) => lattice.insert(w),
-        Joined::Same => {}
-    };
+    let mut edge =
+        |uf: &mut WindingForest, a: usize, b: usize, cross: [i32; 3]| match uf.join(a as u32, b as u32, cross) {
+            Joined::Merged => unions += 1,
+            Joined::Cycle(w) => lattice.insert(w),
+            Joined::Same => {}
+        };
     for z in 0..l.layers {
         std::mem::swap(&mut prev, &mut cur);
         l.read(z, &mut cur, fill);
