@@ -28,6 +28,7 @@ T-construction reports no pairs of dimension 0, so its counts are shown, not com
 import argparse
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -63,20 +64,24 @@ print(json.dumps({"read_s": t1 - t0, "homology_s": t2 - t1, "betti": [int(x) for
 def timed(cmd, timeout=None):
     """Runs cmd under /usr/bin/time: its last stdout line as JSON (None when it failed), its
     stderr, and the resources."""
+    # a process group of its own, so that a run stopped at the timeout stops whole
+    p = subprocess.Popen(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
-        p = subprocess.run(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, capture_output=True, text=True,
-                           timeout=timeout)
+        stdout, stderr = p.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
-        return None, f"stopped after {timeout} s", None
-    lines = [l for l in p.stderr.splitlines() if l.startswith("TIME ")]
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        return None, f"stopped after {timeout:.0f} s", None
+    lines = [l for l in stderr.splitlines() if l.startswith("TIME ")]
     res = None
     if lines:
         t = lines[-1].split()
         res = {"wall": float(t[1]), "cpu": float(t[2]) + float(t[3]), "rss_mb": int(t[4]) / 1024}
     if p.returncode != 0:
-        err = [l for l in p.stderr.splitlines() if not l.startswith("TIME ") and "exited" not in l]
+        err = [l for l in stderr.splitlines() if not l.startswith("TIME ") and "exited" not in l]
         return None, (err[-1] if err else f"exit {p.returncode}")[-300:], res
-    return json.loads(p.stdout.strip().splitlines()[-1]), p.stderr, res
+    return json.loads(stdout.strip().splitlines()[-1]), stderr, res
 
 
 def gmap_timings(stderr):
@@ -139,6 +144,16 @@ def measure(tool, f, a, gmap, timeout):
     return {**out, **res}
 
 
+def short(msg):
+    """A refusal in a few words: the generators' limit, a timeout, or the message's start."""
+    import re
+
+    m = re.search(r"dimension (\d+) keeps (\d+)", msg)
+    if m:
+        return f"refused: the reduced complex keeps {int(m.group(2)):,} cells of dimension {m.group(1)} (limit 2,000)"
+    return msg[:120]
+
+
 def table(path):
     rows = {}
     order = []
@@ -167,20 +182,23 @@ def table(path):
             if x is None:
                 return "—"
             if "failed" in x:
-                return f"failed: {x['failed']}"
+                return short(x["failed"]) if f is not rss else "—"
             return f(x)
+
+        def rss(x):
+            return f"{x['rss_mb']:.0f}"
 
         gcol = cell(g, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
         gwall = cell(g, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
-        grss = cell(g, lambda x: f"{x['rss_mb']:.0f}")
+        grss = cell(g, rss)
         ccol = cell(c, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
         cwall = cell(c, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
-        crss = cell(c, lambda x: f"{x['rss_mb']:.0f}")
+        crss = cell(c, rss)
         ratio = f"{c['cpu'] / max(g['cpu'], 1e-2):.1f}×" if ok(g) and ok(c) else "—"
         ewall = cell(e, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
         eratio = f"{c['cpu'] / max(e['cpu'], 1e-2):.1f}×" if ok(e) and ok(c) else "—"
         uwall = cell(u, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
-        urss = cell(u, lambda x: f"{x['rss_mb']:.0f}")
+        urss = cell(u, rss)
         check = f"gmap {g['betti']}" if ok(g) else ""
         if ok(u) and ok(g):
             check += " = GUDHI" if u["betti"] == g["betti"] else f" ≠ GUDHI {u['betti']}"

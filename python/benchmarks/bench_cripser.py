@@ -76,6 +76,16 @@ def run(tool, a):
     return {**r, "betti": b}
 
 
+def short(msg):
+    """A refusal in a few words: the generators' limit, a timeout, or the message's start."""
+    import re
+
+    m = re.search(r"dimension (\d+) keeps (\d+)", msg)
+    if m:
+        return f"refused: the reduced complex keeps {int(m.group(2)):,} cells of dimension {m.group(1)} (limit 2,000)"
+    return msg[:120]
+
+
 def table(path):
     rows, order = {}, []
     with open(path) as fh:
@@ -103,7 +113,7 @@ def table(path):
         def cell(x, f):
             if x is None:
                 return "—"
-            return f"refused: {x['failed']}" if "failed" in x else f(x)
+            return short(x["failed"]) if "failed" in x else f(x)
 
         ratio = "—"
         if ok(g) and ok(c):
