@@ -87,7 +87,7 @@ fn a_complement_winding_twice_gives_torsion() {
     // step t: x = t mod 8 on ring position t / 2; twice around x for once around the ring
     for t in 0..2 * nx {
         put(t % nx, ring[t / 2 % 8]);
-        put(t % nx, ring[(t + 1) / 2 % 8]);
+        put(t % nx, ring[t.div_ceil(2) % 8]);
     }
     let want = (vec![1, 3, 2, 0], vec![vec![], vec![2], vec![], vec![]]);
     let ((betti, torsion), chi) = one_pass(&[nx, n, n], &bits);

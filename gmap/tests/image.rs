@@ -62,7 +62,7 @@ fn periodic_images_take_the_one_pass_route() {
     let ring = [(1, 1), (1, 2), (1, 3), (2, 3), (3, 3), (3, 2), (3, 1), (2, 1)];
     let mut v = vec![1u8; nx * n * n];
     for t in 0..2 * nx {
-        for k in [t / 2 % 8, (t + 1) / 2 % 8] {
+        for k in [t / 2 % 8, t.div_ceil(2) % 8] {
             let (y, z) = ring[k];
             v[t % nx + nx * (y + n * z)] = 0; // C order: a[z][y][x]
         }

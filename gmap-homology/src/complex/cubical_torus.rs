@@ -296,10 +296,7 @@ fn set_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, u64, i64) {
     }
     // the last layer meets the first around the torus (the same layer when there is one)
     let last = (l.layers - 1) * m;
-    for i in 0..m {
-        if cur[i] == 0 {
-            continue;
-        }
+    for (i, _) in cur.iter().enumerate().filter(|(_, &b)| b != 0) {
         for &(dx, dy) in &across {
             let j = l.shift(i, dx, dy);
             if first[j] != 0 {
@@ -446,11 +443,11 @@ impl WindingForest {
         let mut acc = [0i32; 3];
         for &y in self.path.iter().rev() {
             let w = &mut self.winding[y as usize];
-            for a in 0..3 {
-                // |winding| < the cubes of the box ≤ i32::MAX (the forest's paths are simple)
-                acc[a] += w[a];
-                w[a] = acc[a];
+            // |winding| < the cubes of the box ≤ i32::MAX (the forest's paths are simple)
+            for (s, &x) in acc.iter_mut().zip(w.iter()) {
+                *s += x;
             }
+            *w = acc;
             self.parent[y as usize] = r;
         }
         (r, self.winding[x as usize])
