@@ -97,10 +97,10 @@ fn a_complement_winding_twice_gives_torsion() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(ProptestConfig::with_cases(1000))]
     #[test]
     fn random_periodic_images_agree_with_the_chain_complex(
-        shape in prop::collection::vec(1usize..7, 1..4),
+        shape in prop::collection::vec(1usize..9, 1..4),
         density in 0u64..100,
         seed in any::<u64>(),
     ) {
