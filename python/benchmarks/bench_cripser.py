@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benches" / "anchors"))
-from compare_cripser import cases, make  # noqa: E402
+from compare_cripser import cases, make, short  # noqa: E402
 
 
 def timed(read, compute):
@@ -74,16 +74,6 @@ def run(tool, a):
     if isinstance(b, Exception):
         return {**r, "failed": str(b)[:300]}
     return {**r, "betti": b}
-
-
-def short(msg):
-    """A refusal in a few words: the generators' limit, a timeout, or the message's start."""
-    import re
-
-    m = re.search(r"dimension (\d+) keeps (\d+)", msg)
-    if m:
-        return f"refused: the reduced complex keeps {int(m.group(2)):,} cells of dimension {m.group(1)} (limit 2,000)"
-    return msg[:120]
 
 
 def table(path):

@@ -252,23 +252,42 @@ impl Layout {
     }
 }
 
+/// The first, the previous and the current layer of a pass over the layers.
+struct Window {
+    first: Vec<u8>,
+    prev: Vec<u8>,
+    cur: Vec<u8>,
+}
+
+impl Window {
+    fn new(m: usize) -> Window {
+        Window { first: vec![0; m], prev: vec![0; m], cur: vec![0; m] }
+    }
+
+    /// Reads layer `z` as the current one; the current one becomes the previous one.
+    fn advance(&mut self, l: &Layout, z: usize, fill: &impl Fn(usize, &mut [u8])) {
+        std::mem::swap(&mut self.prev, &mut self.cur);
+        l.read(z, &mut self.cur, fill);
+        if z == 0 {
+            self.first.copy_from_slice(&self.cur);
+        }
+    }
+}
+
 /// The set's cubes, its components (cubes joined across any shared face, around the torus)
 /// and χ of its closure.
 fn set_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, u64, i64) {
     let m = l.layer();
     let mut uf = UnionFind::new(m * l.layers);
     let mut sets = uf.view();
-    let (mut first, mut prev, mut cur) = (vec![0u8; m], vec![0u8; m], vec![0u8; m]);
+    let mut w = Window::new(m);
     let (inside, across) = (l.neighbours(false), l.neighbours(true));
     let table = euler_table(if l.three { 3 } else { 2 });
     let (mut cubes, mut unions, mut chi) = (0u64, 0u64, 0i64);
     let mut join = |a: usize, b: usize| unions += sets.union(a as u32, b as u32) as u64;
     for z in 0..l.layers {
-        std::mem::swap(&mut prev, &mut cur);
-        l.read(z, &mut cur, fill);
-        if z == 0 {
-            first.copy_from_slice(&cur);
-        }
+        w.advance(l, z, fill);
+        let (prev, cur) = (&w.prev, &w.cur);
         let base = z * m;
         for i in 0..m {
             if cur[i] == 0 {
@@ -291,9 +310,10 @@ fn set_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, u64, i64) {
             }
         }
         if z > 0 {
-            chi += vertex_layer(l, &prev, &cur, &table);
+            chi += vertex_layer(l, prev, cur, &table);
         }
     }
+    let (first, cur) = (&w.first, &w.cur);
     // the last layer meets the first around the torus (the same layer when there is one)
     let last = (l.layers - 1) * m;
     for (i, _) in cur.iter().enumerate().filter(|(_, &b)| b != 0) {
@@ -304,7 +324,7 @@ fn set_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, u64, i64) {
             }
         }
     }
-    chi += vertex_layer(l, &cur, &first, &table);
+    chi += vertex_layer(l, cur, first, &table);
     (cubes, cubes - unions, chi)
 }
 
@@ -363,7 +383,7 @@ fn complement_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, Lattic
     let m = l.layer();
     let mut uf = WindingForest::new(m * l.layers);
     let mut lattice = Lattice::default();
-    let (mut first, mut prev, mut cur) = (vec![0u8; m], vec![0u8; m], vec![0u8; m]);
+    let mut w = Window::new(m);
     let (mut absent, mut unions) = (0u64, 0u64);
     let mut edge =
         |uf: &mut WindingForest, a: usize, b: usize, cross: [i32; 3]| match uf.join(a as u32, b as u32, cross) {
@@ -372,11 +392,8 @@ fn complement_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, Lattic
             Joined::Same => {}
         };
     for z in 0..l.layers {
-        std::mem::swap(&mut prev, &mut cur);
-        l.read(z, &mut cur, fill);
-        if z == 0 {
-            first.copy_from_slice(&cur);
-        }
+        w.advance(l, z, fill);
+        let (prev, cur) = (&w.prev, &w.cur);
         let base = z * m;
         for i in 0..m {
             if cur[i] != 0 {
@@ -400,7 +417,7 @@ fn complement_pass(l: &Layout, fill: &impl Fn(usize, &mut [u8])) -> (u64, Lattic
     }
     let last = (l.layers - 1) * m;
     for i in 0..m {
-        if cur[i] == 0 && first[i] == 0 {
+        if w.cur[i] == 0 && w.first[i] == 0 {
             edge(&mut uf, last + i, i, [0, 0, 1]);
         }
     }
