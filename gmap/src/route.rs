@@ -321,7 +321,8 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
 /// (`gmap_homology::cubical_pass`, or `gmap_homology::cubical_torus` for a periodic box),
 /// where no cubical complex is needed: no generators, the cellular method. `None` where the
-/// cubical complex is needed. `fill(start, out)` writes the presence bytes of the cubes
+/// cubical complex is needed (and for a periodic box whose union-finds would not fit in
+/// memory). `fill(start, out)` writes the presence bytes of the cubes
 /// `start..start + out.len()` (axis 0 fastest); `file` names the input in messages. Public
 /// for callers that hold the cubes elsewhere (the Python package reads a numpy array in
 /// place).
@@ -338,6 +339,13 @@ pub fn cubical_one_pass(
         |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
     let d = shape.len();
     let (betti, torsion): (Vec<u64>, Vec<Vec<u64>>) = if o.periodic {
+        // union-finds over the whole box: where they do not fit, the cubical complex (slab by
+        // slab, its memory growing with the reduced complex) may still
+        let what = "the periodic one-pass route";
+        if gmap_core::resources::check_memory(what, gmap_homology::cubical_torus::bytes_needed(shape)).is_err() {
+            o.progress.note("the periodic one-pass route does not fit in memory: the cubical complex instead");
+            return Ok(None);
+        }
         o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
         let r = gmap_homology::cubical_torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
         (r.betti, r.torsion)

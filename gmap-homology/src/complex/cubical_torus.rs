@@ -107,6 +107,17 @@ pub const BYTES_PER_CUBE: u64 = 16;
 /// The most cubes a box may have: windings relative to a root stay within `i32`.
 pub const MAX_CUBES: usize = i32::MAX as usize;
 
+/// The bytes [`betti_one_pass_periodic`] needs for a box of `shape` (its union-finds;
+/// `None` past `u64`): [`BYTES_PER_CUBE`] per cube in 3-D, 4 in 2-D, none in 1-D.
+pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
+    let per_cube = match shape.len() {
+        3 => BYTES_PER_CUBE,
+        2 => 4,
+        _ => 0,
+    };
+    shape.iter().try_fold(per_cube, |v, &s| v.checked_mul(s as u64))
+}
+
 /// The groups of the set of a periodic box of `shape` cubes (axis 0 fastest, `1 ≤ d ≤ 3`;
 /// opposite faces identified), whose presence bytes (non-zero: in the set) `fill(start,
 /// out)` writes for the cubes `start .. start + out.len()`. `fill` is called once or twice
@@ -148,10 +159,9 @@ pub fn betti_one_pass_periodic(shape: &[usize], fill: impl Fn(usize, &mut [u8]))
             winding: Vec::new(),
         });
     }
-    let per_cube = if d == 3 { BYTES_PER_CUBE } else { 4 };
     gmap_core::resources::check_memory(
         "the union-finds of the periodic one-pass cubical homology",
-        (volume as u64).checked_mul(per_cube),
+        bytes_needed(shape),
     )?;
     let layout = Layout::new(shape);
     let (cubes, set_components, chi) = set_pass(&layout, &fill);
