@@ -154,6 +154,24 @@ def short(msg):
     return msg[:120]
 
 
+def ok(x):
+    """A measurement that did not fail."""
+    return x is not None and "failed" not in x
+
+
+def groups(g, e, c, u):
+    """The groups column: gmap's, checked against GUDHI's and gmap's with generators, and
+    CubicalRipser's counts."""
+    check = f"gmap {g['betti']}" if ok(g) else ""
+    if ok(u) and ok(g):
+        check += " = GUDHI" if u["betti"] == g["betti"] else f" ≠ GUDHI {u['betti']}"
+    if ok(e) and ok(g) and e["betti"] != g["betti"]:
+        check += f" ≠ with generators {e['betti']}"
+    if ok(c):
+        check += f"; cripser {c['betti']}"
+    return check
+
+
 def table(path):
     rows = {}
     order = []
@@ -174,9 +192,6 @@ def table(path):
         t = rows[name]
         g, c, e, u = (t.get(k) for k in ("gmap", "cripser", "gen", "gudhi"))
         cubes = next((x["cubes"] for x in t.values() if "cubes" in x), 0)
-
-        def ok(x):
-            return x is not None and "failed" not in x
 
         def cell(x, f):
             if x is None:
@@ -199,13 +214,7 @@ def table(path):
         eratio = f"{c['cpu'] / max(e['cpu'], 1e-2):.1f}×" if ok(e) and ok(c) else "—"
         uwall = cell(u, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
         urss = cell(u, rss)
-        check = f"gmap {g['betti']}" if ok(g) else ""
-        if ok(u) and ok(g):
-            check += " = GUDHI" if u["betti"] == g["betti"] else f" ≠ GUDHI {u['betti']}"
-        if ok(e) and ok(g) and e["betti"] != g["betti"]:
-            check += f"; --generators {e['betti']}"
-        if ok(c):
-            check += f"; cripser {c['betti']}"
+        check = groups(g, e, c, u)
         print(f"| {name} | {cubes:,} | {gcol} | {gwall} | {grss} | {ccol} | {cwall} | {crss} | {ratio} "
               f"| {ewall} | {eratio} | {uwall} | {urss} | {check} |")
 

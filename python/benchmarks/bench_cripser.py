@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benches" / "anchors"))
-from compare_cripser import cases, make, short  # noqa: E402
+from compare_cripser import cases, groups, make, ok, short  # noqa: E402
 
 
 def timed(read, compute):
@@ -92,9 +92,6 @@ def table(path):
           "| GUDHI CPU (s) | GUDHI wall (s) | groups |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
 
-    def ok(x):
-        return x is not None and "failed" not in x
-
     for name in order:
         t = rows[name]
         g, c, e, u = (t.get(k) for k in ("gmap", "cripser", "gen", "gudhi"))
@@ -110,13 +107,7 @@ def table(path):
             ratio = (f"{c['cpu'] / max(g['cpu'], 1e-3):.1f}× ; "
                      f"{(c['cpu'] + c['read_cpu']) / max(g['cpu'] + g['read_cpu'], 1e-3):.1f}×")
         eratio = f"{c['cpu'] / max(e['cpu'], 1e-3):.1f}×" if ok(e) and ok(c) else "—"
-        check = f"gmap {g['betti']}" if ok(g) else ""
-        if ok(u) and ok(g):
-            check += " = GUDHI" if u["betti"] == g["betti"] else f" ≠ GUDHI {u['betti']}"
-        if ok(e) and ok(g) and e["betti"] != g["betti"]:
-            check += f" ≠ with generators {e['betti']}"
-        if ok(c):
-            check += f"; cripser {c['betti']}"
+        check = groups(g, e, c, u)
         def stages(x):
             return "%.3f + %.3f" % (x["read_cpu"], x["cpu"])
 
