@@ -2,14 +2,21 @@
 processes on .npy files, in one sitting; prints a Markdown table (docs/PERFORMANCE.md).
 
     python3 benches/anchors/compare_cripser.py [--gmap CMD] [--quick] [--gudhi-max N] [--dir DIR]
+        [--only NAME,...] [--tools gmap,gen,cripser,gudhi] [--results FILE.jsonl] [--table]
+
+Each row's array is made from its own seed, so rows and tools can run in separate
+invocations (`--only`, `--tools`); every measurement is appended to --results (JSON lines)
+and `--table` prints the table from that file (the newest measurement of each row and tool).
 
 Each image holds the values 0 and 1 (uint8); the cubical set is the sublevel set at 0.5 (the
 cubes of value 0, which make the given density), the T-construction: each value a closed
 square or cube. Every tool runs as its own process under /usr/bin/time (wall and CPU
 seconds, maximum resident set size):
 
-* gmap: `CMD FILE.npy --level 0.5 --json` (default CMD: `target/release/gmap homology`),
-  its JSON giving the reading and the homology stages apart;
+* gmap: `CMD FILE.npy --level 0.5 --json --timings` (default CMD: `target/release/gmap
+  homology`): `--timings` prints the reading stage (header and memory map) and the homology
+  apart; the pages of the mapped file are read during the homology;
+* gmap with generators: the same with `--generators` (the cubical complex's route);
 * CubicalRipser: `np.load`, `astype(float64)` (the reading stage), then
   `cripser.computePH(a, maxdim=d-1, top_dim=True, location="no")`;
 * GUDHI: `gudhi.CubicalComplex(top_dimensional_cells=a).persistence()`, up to --gudhi-max
@@ -21,6 +28,7 @@ T-construction reports no pairs of dimension 0, so its counts are shown, not com
 import argparse
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -53,15 +61,36 @@ print(json.dumps({"read_s": t1 - t0, "homology_s": t2 - t1, "betti": [int(x) for
 """
 
 
-def timed(cmd):
-    """Runs cmd under /usr/bin/time; its last stdout line as JSON, and the resources."""
-    p = subprocess.run(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, capture_output=True, text=True)
+def timed(cmd, timeout=None):
+    """Runs cmd under /usr/bin/time: its last stdout line as JSON (None when it failed), its
+    stderr, and the resources."""
+    # a process group of its own, so that a run stopped at the timeout stops whole
+    p = subprocess.Popen(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        stdout, stderr = p.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        return None, f"stopped after {timeout:.0f} s", None
+    lines = [l for l in stderr.splitlines() if l.startswith("TIME ")]
+    res = None
+    if lines:
+        t = lines[-1].split()
+        res = {"wall": float(t[1]), "cpu": float(t[2]) + float(t[3]), "rss_mb": int(t[4]) / 1024}
     if p.returncode != 0:
-        raise RuntimeError(f"{cmd} failed: {p.stderr[-2000:]}")
-    line = [l for l in p.stderr.splitlines() if l.startswith("TIME ")][-1].split()
-    wall, user, sys_, rss = float(line[1]), float(line[2]), float(line[3]), int(line[4])
-    out = json.loads(p.stdout.strip().splitlines()[-1])
-    return out, {"wall": wall, "cpu": user + sys_, "rss_mb": rss / 1024}
+        err = [l for l in stderr.splitlines() if not l.startswith("TIME ") and "exited" not in l]
+        return None, (err[-1] if err else f"exit {p.returncode}")[-300:], res
+    return json.loads(stdout.strip().splitlines()[-1]), stderr, res
+
+
+def gmap_timings(stderr):
+    """`timings: read X s, homology Y s` from gmap's stderr."""
+    for l in stderr.splitlines():
+        if l.startswith("timings:"):
+            w = l.replace(",", " ").split()
+            return float(w[2]), float(w[5])
+    return None, None
 
 
 def betti_of(j, d):
@@ -73,30 +102,121 @@ def betti_of(j, d):
 
 
 def cases(quick):
-    rng = np.random.default_rng(2026)
     sizes2 = [1000] if quick else [1000, 2000, 4000]
     sizes3 = [128] if quick else [128, 256, 512]
     for n in sizes2:
         for dens in (0.3, 0.5, 0.7):
-            yield f"2-D {n}² random {dens}", (n, n), dens, rng
+            yield f"2-D {n}² random {dens}", (n, n), dens
     for n in sizes3:
         for dens in (0.3, 0.5, 0.7):
-            yield f"3-D {n}³ random {dens}", (n, n, n), dens, rng
-    yield "camera 512² at its median", None, None, None
+            yield f"3-D {n}³ random {dens}", (n, n, n), dens
+    yield "camera 512² at its median", None, None
 
 
-def make(shape, dens, rng):
+def make(name, shape, dens):
+    """The row's array: value 0 (in the set) with probability dens, from the row's own seed."""
     if shape is None:
         from skimage import data
 
         cam = data.camera()
         return (cam > np.median(cam)).astype(np.uint8)
-    # value 0 (in the set) with probability dens
+    rng = np.random.default_rng(int.from_bytes(name.encode(), "little") % (1 << 63))
     a = np.empty(shape, dtype=np.uint8)
     step = max(1, (1 << 24) // int(np.prod(shape[1:])))
     for i in range(0, shape[0], step):
         a[i : i + step] = rng.random((min(step, shape[0] - i),) + shape[1:], dtype=np.float32) >= dens
     return a
+
+
+def measure(tool, f, a, gmap, timeout):
+    """One tool on the file: a dict for the results file."""
+    if tool in ("gmap", "gen"):
+        cmd = gmap + [f, "--level", "0.5", "--json", "--timings"] + (["--generators"] if tool == "gen" else [])
+        out, err, res = timed(cmd, timeout)
+        if out is None:
+            return {"failed": err, **(res or {})}
+        read, hom = gmap_timings(err)
+        return {"read_s": read, "homology_s": hom, "betti": betti_of(out, a.ndim), **res}
+    script = CRIPSER if tool == "cripser" else GUDHI
+    out, err, res = timed([sys.executable, "-c", script, f], timeout)
+    if out is None:
+        return {"failed": err, **(res or {})}
+    return {**out, **res}
+
+
+def short(msg):
+    """A refusal in a few words: the generators' limit, a timeout, or the message's start."""
+    import re
+
+    m = re.search(r"dimension (\d+) keeps (\d+)", msg)
+    if m:
+        return f"refused: the reduced complex keeps {int(m.group(2)):,} cells of dimension {m.group(1)} (limit 2,000)"
+    return msg[:120]
+
+
+def ok(x):
+    """A measurement that did not fail."""
+    return x is not None and "failed" not in x
+
+
+def groups(g, e, c, u):
+    """The groups column: gmap's, checked against GUDHI's and gmap's with generators, and
+    CubicalRipser's counts."""
+    check = f"gmap {g['betti']}" if ok(g) else ""
+    if ok(u) and ok(g):
+        check += " = GUDHI" if u["betti"] == g["betti"] else f" ≠ GUDHI {u['betti']}"
+    if ok(e) and ok(g) and e["betti"] != g["betti"]:
+        check += f" ≠ with generators {e['betti']}"
+    if ok(c):
+        check += f"; cripser {c['betti']}"
+    return check
+
+
+def table(path):
+    rows = {}
+    order = []
+    with open(path) as fh:
+        for line in fh:
+            r = json.loads(line)
+            if r["image"] not in rows:
+                rows[r["image"]] = {}
+                order.append(r["image"])
+            rows[r["image"]][r["tool"]] = r
+    order = [n for n, _, _ in cases(False) if n in rows] + [n for n in order if n not in {c[0] for c in cases(False)}]
+    print("| image | cubes | gmap read + homology (s) | gmap wall / CPU (s) | gmap max RSS (MB) "
+          "| cripser read + PH (s) | cripser wall / CPU (s) | cripser max RSS (MB) | CPU ratio cripser / gmap "
+          "| gmap --generators wall / CPU (s) | CPU ratio cripser / gmap --generators "
+          "| GUDHI wall / CPU (s) | GUDHI max RSS (MB) | groups |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+    for name in order:
+        t = rows[name]
+        g, c, e, u = (t.get(k) for k in ("gmap", "cripser", "gen", "gudhi"))
+        cubes = next((x["cubes"] for x in t.values() if "cubes" in x), 0)
+
+        def cell(x, f):
+            if x is None:
+                return "—"
+            if "failed" in x:
+                return short(x["failed"]) if f is not rss else "—"
+            return f(x)
+
+        def rss(x):
+            return f"{x['rss_mb']:.0f}"
+
+        gcol = cell(g, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
+        gwall = cell(g, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        grss = cell(g, rss)
+        ccol = cell(c, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
+        cwall = cell(c, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        crss = cell(c, rss)
+        ratio = f"{c['cpu'] / max(g['cpu'], 1e-2):.1f}×" if ok(g) and ok(c) else "—"
+        ewall = cell(e, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        eratio = f"{c['cpu'] / max(e['cpu'], 1e-2):.1f}×" if ok(e) and ok(c) else "—"
+        uwall = cell(u, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        urss = cell(u, rss)
+        check = groups(g, e, c, u)
+        print(f"| {name} | {cubes:,} | {gcol} | {gwall} | {grss} | {ccol} | {cwall} | {crss} | {ratio} "
+              f"| {ewall} | {eratio} | {uwall} | {urss} | {check} |")
 
 
 def main():
@@ -105,36 +225,35 @@ def main():
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--gudhi-max", type=int, default=1 << 24)
     ap.add_argument("--dir", default=None)
+    ap.add_argument("--only", default=None, help="comma-separated row names (substrings)")
+    ap.add_argument("--tools", default="gmap,gen,cripser,gudhi")
+    ap.add_argument("--results", default=None, help="JSON lines file the measurements are appended to")
+    ap.add_argument("--timeout", type=float, default=None, help="seconds before a tool's run is stopped")
+    ap.add_argument("--table", action="store_true", help="print the table of --results and stop")
     args = ap.parse_args()
+    results = args.results or os.path.join(tempfile.mkdtemp(prefix="cripser_"), "results.jsonl")
+    if args.table:
+        table(results)
+        return
     gmap = args.gmap.split()
     d = args.dir or tempfile.mkdtemp(prefix="cripser_")
-    print("| image | cubes | gmap read + homology (s) | gmap wall / CPU (s) | gmap max RSS (MB) "
-          "| cripser read + PH (s) | cripser wall / CPU (s) | cripser max RSS (MB) "
-          "| ratio wall / CPU | GUDHI wall (s) | groups |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
-    for name, shape, dens, rng in cases(args.quick):
-        a = make(shape, dens, rng)
+    tools = args.tools.split(",")
+    for name, shape, dens in cases(args.quick):
+        if args.only and not any(o in name for o in args.only.split(",")):
+            continue
+        a = make(name, shape, dens)
         f = os.path.join(d, "img.npy")
         np.save(f, a)
-        n = a.size
-        g, gt = timed(gmap + [f, "--level", "0.5", "--json"])
-        c, ct = timed([sys.executable, "-c", CRIPSER, f])
-        gb = betti_of(g, a.ndim)
-        check = f"gmap {gb}"
-        gudhi_wall = "—"
-        if n <= args.gudhi_max:
-            u, ut = timed([sys.executable, "-c", GUDHI, f])
-            gudhi_wall = f"{ut['wall']:.2f}"
-            check += " = GUDHI" if u["betti"] == gb else f" ≠ GUDHI {u['betti']}"
-        check += f"; cripser {c['betti']}"
-        print(
-            f"| {name} | {n:,} | {g.get('read_s', 0):.3f} + {g.get('homology_s', 0):.3f} "
-            f"| {gt['wall']:.2f} / {gt['cpu']:.2f} | {gt['rss_mb']:.0f} "
-            f"| {c['read_s']:.3f} + {c['homology_s']:.3f} | {ct['wall']:.2f} / {ct['cpu']:.2f} | {ct['rss_mb']:.0f} "
-            f"| {ct['wall'] / gt['wall']:.1f}× / {ct['cpu'] / max(gt['cpu'], 1e-3):.1f}× | {gudhi_wall} | {check} |",
-            flush=True,
-        )
+        for tool in tools:
+            if tool == "gudhi" and a.size > args.gudhi_max:
+                continue
+            r = measure(tool, f, a, gmap, args.timeout)
+            r.update(image=name, tool=tool, cubes=int(a.size))
+            with open(results, "a") as fh:
+                fh.write(json.dumps(r) + "\n")
+            print(json.dumps(r), flush=True)
         os.remove(f)
+    table(results)
 
 
 if __name__ == "__main__":

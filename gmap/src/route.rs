@@ -319,31 +319,59 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
 }
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
-/// (`gmap_homology::cubical_pass`), where no cubical complex is needed: not periodic, no
-/// generators, the cellular method. `None` where the cubical complex is needed. `fill(start,
-/// out)` writes the presence bytes of the cubes `start..start + out.len()` (axis 0
-/// fastest); `file` names the input in messages. Public for callers that hold the cubes
-/// elsewhere (the Python package reads a numpy array in place).
+/// (`gmap_homology::cubical_pass`, or `gmap_homology::cubical_torus` for a periodic box),
+/// where no cubical complex is needed: no generators, the cellular method. `None` where the
+/// cubical complex is needed (and for a periodic box whose union-finds would not fit in
+/// memory). `fill(start, out)` writes the presence bytes of the cubes
+/// `start..start + out.len()` (axis 0 fastest); `file` names the input in messages. Public
+/// for callers that hold the cubes elsewhere (the Python package reads a numpy array in
+/// place).
 pub fn cubical_one_pass(
     shape: &[usize],
     fill: impl Fn(usize, &mut [u8]) + Sync,
     o: &HomologyOptions,
     file: &str,
 ) -> Result<Option<gmap_homology::Homology>> {
-    if shape.len() > 3 || o.periodic || o.generators || o.method != Method::Cellular || o.simplify || o.topological {
+    if shape.len() > 3 || o.generators || o.method != Method::Cellular || o.simplify || o.topological {
         return Ok(None);
     }
-    o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
-    let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill)
-        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    let limit =
+        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
     let d = shape.len();
-    let coefficients = match o.field {
-        Some(p) => gmap_homology::homology::Coefficients::Field(p),
-        None => gmap_homology::homology::Coefficients::Integers,
+    let (betti, torsion): (Vec<u64>, Vec<Vec<u64>>) = if o.periodic {
+        // union-finds over the whole box: where they do not fit, the cubical complex (slab by
+        // slab, its memory growing with the reduced complex) may still
+        let what = "the periodic one-pass route";
+        if gmap_core::resources::check_memory(what, gmap_homology::cubical_torus::bytes_needed(shape)).is_err() {
+            o.progress.note("the periodic one-pass route does not fit in memory: the cubical complex instead");
+            return Ok(None);
+        }
+        o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
+        let r = gmap_homology::cubical_torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
+        (r.betti, r.torsion)
+    } else {
+        o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
+        let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill).map_err(limit)?;
+        (r.betti, vec![Vec::new(); d + 1])
     };
-    // free groups in dimension ≤ 3: the same ranks over any field
-    let betti = r.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect();
-    Ok(Some(gmap_homology::Homology { coefficients, betti, torsion: vec![Vec::new(); d + 1] }))
+    let to_usize = |b: u64| usize::try_from(b).unwrap_or(usize::MAX);
+    Ok(Some(match o.field {
+        None => gmap_homology::Homology {
+            coefficients: gmap_homology::homology::Coefficients::Integers,
+            betti: betti.into_iter().map(to_usize).collect(),
+            torsion: torsion.into_iter().map(|t| t.into_iter().map(Into::into).collect()).collect(),
+        },
+        // universal coefficients: a factor divisible by p adds a Z/p to H_k and one to H_{k+1}
+        Some(p) => {
+            let hits: Vec<usize> = torsion.iter().map(|t| t.iter().filter(|&&s| s % p == 0).count()).collect();
+            let betti = (0..=d).map(|k| to_usize(betti[k]) + hits[k] + if k > 0 { hits[k - 1] } else { 0 }).collect();
+            gmap_homology::Homology {
+                coefficients: gmap_homology::homology::Coefficients::Field(p),
+                betti,
+                torsion: vec![Vec::new(); d + 1],
+            }
+        }
+    }))
 }
 
 /// The layers of the slowest axis per slab of the slab-by-slab cubical complex: rows of

@@ -20,9 +20,9 @@ pub struct Cubes<'a> {
 }
 
 /// The homology of a borrowed cubical set, as the facade computes that of a `CubicalSet`:
-/// in one pass over the cubes where that applies (dimension ≤ 3, not periodic, no
-/// generators: `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array
-/// never copied whole), else the cubical complex of the closure after collapses of free
+/// in one pass over the cubes where that applies (dimension ≤ 3, no generators:
+/// `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array never copied
+/// whole; periodic: `gmap_homology::cubical_torus`, a union-find over the whole box), else the cubical complex of the closure after collapses of free
 /// faces (`periodic`: the box a torus), with the facade's checks of the options.
 pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if let Some(p) = o.field {
@@ -50,7 +50,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
         note: None,
         space: None,
     };
-    // dimension ≤ 3, not periodic, no generators: the facade's one pass over the cubes,
+    // dimension ≤ 3, no generators: the facade's one pass over the cubes,
     // read from the array a layer at a time
     let bits = c.bits;
     let one_pass =

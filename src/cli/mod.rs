@@ -131,6 +131,9 @@ struct HomologyArgs {
     /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
     #[arg(long, value_name = "T")]
     level: Option<f64>,
+    /// print the seconds of the reading stage and of the homology on stderr
+    #[arg(long)]
+    timings: bool,
 }
 
 #[derive(Args, Debug)]
@@ -265,7 +268,18 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
     o.max_generator_cells = a.max_generator_cells;
     o.cubical_box = a.cubical_box;
     o.progress = gmap::Progress::stderr("gmap homology", quiet);
-    let report = gmap::homology_file(&a.file, &o);
+    let report = if a.timings {
+        // the two stages apart: reading (an image: its header and a map) and homology
+        let t = std::time::Instant::now();
+        let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts));
+        let read = t.elapsed().as_secs_f64();
+        let t = std::time::Instant::now();
+        let report = input.and_then(|input| gmap::homology(&input, &o));
+        eprintln!("timings: read {read:.6} s, homology {:.6} s", t.elapsed().as_secs_f64());
+        report
+    } else {
+        gmap::homology_file(&a.file, &o)
+    };
     o.progress.finish();
     let report = report?;
     Ok(if a.json { format!("{}\n", report.to_json()) } else { report.to_text() })

@@ -14,6 +14,9 @@
 //!   summed over the grid's vertices from a table of the 256 patterns of the 8 cubes around
 //!   each.
 //!
+//! A 2-D set is computed as the same set in a box one cube thick (`n0 × 1 × n1`): its rows
+//! are the layers.
+//!
 //! The box is read one layer of cubes (across its slowest axis) at a time from a `fill`
 //! callback, and each of the two union-finds holds two layers: the labels of the previous
 //! layer and the cubes of the current one. A class of the previous layer that reaches no cube
@@ -28,8 +31,10 @@
 //! summaries along the shared layers. A process or a machine per block (the MPI route)
 //! sends only its [`BlockSummary`]: O(layer) numbers, whatever the block's size.
 //!
-//! Periodic boxes (a torus, where Alexander duality does not hold) and dimensions ≥ 4 take
-//! the chain-complex route ([`super::cubical`]).
+//! Periodic boxes (a torus, where Alexander duality in the sphere does not hold) have their
+//! own one-pass route ([`super::cubical_torus`]: duality in the torus, with the winding
+//! lattice of the complement); dimensions ≥ 4 take the chain-complex route
+//! ([`super::cubical`]).
 //!
 //! ```
 //! use gmap_homology::cubical_pass::betti_one_pass;
@@ -100,7 +105,16 @@ pub fn betti_one_pass(shape: &[usize], fill: impl Fn(usize, &mut [u8]) + Sync) -
             blocks: 1,
         });
     }
-    let layers = if d == 3 { shape[2] } else { 1 };
+    if d == 2 {
+        // the same space as the set of the n0 × 1 × n1 box (the cubes in the same order):
+        // its rows become layers, streamed in blocks, one per thread, O(row) memory, where
+        // the plane as one layer would hold the whole image; its b2 is 0, and its holes
+        // (the bounded components of the complement in the plane) are b1
+        let r = betti_one_pass(&[shape[0], 1, shape[1]], fill)?;
+        let holes = if r.cubes == 0 { 0 } else { r.betti[1] };
+        return Ok(OnePass { betti: vec![r.betti[0], r.betti[1], 0], complement_components: holes + 1, ..r });
+    }
+    let layers = shape[2];
     let pp = padded_layer(shape)?;
     let volume = shape.iter().product::<usize>();
     // blocks of at least 8 layers
