@@ -46,6 +46,10 @@ const NOT_RUN: &[(&str, &str)] = &[
     ),
     ("cargo test -p gmap-mpi --features mpi", "run by .ci/run after the workspace's tests (needs Open MPI)"),
     ("cargo build --release --example persistence_image", "builds the persistence benchmark's binary (fat LTO)"),
+    (
+        "python3 -m venv --system-site-packages /tmp/gmap-venv",
+        "the persistence benchmarks' environment (a release wheel installed in it; minutes); python/run-tests.sh makes the tests' own",
+    ),
 ];
 
 fn root() -> PathBuf {

@@ -86,7 +86,7 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
         }
         Input::Cubical(set) => {
             let m = set
-                .gmap(false)
+                .gmap_of_union(false)
                 .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
             save_map(&m, output)
         }

@@ -70,7 +70,7 @@ fn periodic_cells_wrap() {
 #[test]
 fn cubes_only_routes_refuse_lower_cells() {
     let set = parse_cub(b"(0,0)\n[5]x[5]\n").unwrap();
-    let e = set.gmap(false).unwrap_err().to_string();
+    let e = set.gmap_of_union(false).unwrap_err().to_string();
     assert!(e.contains("1 cells of dimension below 2 on no 2-cube (the first: 5x5)"), "{e}");
     assert!(gmap_ops::export::cubical_vtk_string(&set).is_err());
     let p = gmap::persistence(&Input::Cubical(Sourced::new(set)), &Default::default()).unwrap_err();
@@ -156,7 +156,7 @@ fn a_gmap_of_cubes_pinched_at_a_cell_is_refused() {
     // two squares at a corner, two cubes along an edge
     for (text, cell) in [("(0,0)\n(1,1)\n", "1x1"), ("(0,0,0)\n(1,1,0)\n", "1x1x0")] {
         let set = parse_cub(text.as_bytes()).unwrap();
-        let e = set.gmap(false).unwrap_err().to_string();
+        let e = set.gmap_of_union(false).unwrap_err().to_string();
         assert!(e.contains(&format!("the cubes around the cell {cell} fall into 2 groups")), "{e}");
     }
     // joined below through three more cubes at the vertex (1,1,0), still pinched along the
@@ -166,7 +166,7 @@ fn a_gmap_of_cubes_pinched_at_a_cell_is_refused() {
     // apart in their box, pinched across its wrap-around
     let set = parse_cub(b"box (0,0) (2,2)\n(0,0)\n(2,2)\n").unwrap();
     assert_eq!(set.pinched_cell(false), None);
-    assert!(set.gmap(false).is_ok());
+    assert!(set.gmap_of_union(false).is_ok());
     assert_eq!(set.pinched_cell(true), Some(("0x0".to_string(), 2)));
     // an L of three squares is not pinched
     assert_eq!(parse_cub(b"(0,0)\n(1,1)\n(0,1)\n").unwrap().pinched_cell(false), None);
@@ -196,7 +196,7 @@ proptest! {
         let set = CubicalSet::new(vec![0; d], shape, bits[..n].iter().map(|&b| b as u8).collect()).unwrap();
         prop_assume!(set.cube_count() > 0);
         let pinched = set.pinched_cell(periodic);
-        match set.gmap(periodic) {
+        match set.gmap_of_union(periodic) {
             Err(e) => prop_assert!(pinched.is_some(), "{e}"),
             Ok(m) => {
                 prop_assert!(pinched.is_none());

@@ -337,7 +337,7 @@ impl PyCubicalSet {
     #[pyo3(signature = (periodic = false))]
     fn to_gmap(&self, py: Python<'_>, periodic: bool) -> PyResult<PyGMap> {
         let set = self.set();
-        let m = py.allow_threads(|| set.gmap(periodic)).map_err(Failure::from)?;
+        let m = py.allow_threads(|| set.gmap_of_union(periodic)).map_err(Failure::from)?;
         Ok(PyGMap::from_dense(&m))
     }
 

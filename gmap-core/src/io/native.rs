@@ -335,6 +335,8 @@ fn stream_gmap(path: &Path, name: &str, opts: &ReadOptions, chunk: usize) -> Opt
     while !eof {
         // keep the unfinished last line, then read up to a chunk more
         let mut k = buf.len();
+        // a line that outgrows the memory left: the whole-file parser names the fault
+        buf.try_reserve(chunk).ok()?;
         buf.resize(k + chunk, 0);
         while k < buf.len() {
             match file.read(&mut buf[k..]) {
@@ -351,12 +353,17 @@ fn stream_gmap(path: &Path, name: &str, opts: &ReadOptions, chunk: usize) -> Opt
         // the complete lines of the buffer (all of it at the end of the file)
         let end = if eof { buf.len() } else { buf.iter().rposition(|&c| c == b'\n').map_or(0, |p| p + 1) };
         if end == 0 && !eof {
-            // a line longer than a chunk: read on
+            // a line longer than a chunk: read on, up to 64 chunks (no map's line is that
+            // long: the whole-file parser, after its memory check, names the fault)
+            if buf.len() >= 64 * chunk {
+                return None;
+            }
             continue;
         }
         let mut pos = 0;
         while pos < end {
             if let Some((t, _)) = &mut tail {
+                t.try_reserve(end - pos).ok()?;
                 t.extend_from_slice(&buf[pos..end]);
                 break;
             }

@@ -235,21 +235,29 @@ impl CubicalSet {
         })
     }
 
-    /// The G-map of the union: the grid of the box ([`crate::build::grid`], axes periodic
-    /// with `periodic`) restricted to the cubes of the set, each cube one d-cell sewn to its
-    /// neighbours of the set along shared facets, the other facets free. Its cells are those
-    /// of the union exactly when the cubes around every cell meet along paths of facets (a
-    /// solid box, a ring, a shell); a set where they do not (two cubes touching at a corner
-    /// only) would become another space, and is refused with the first such cell
-    /// ([`CubicalSet::pinched_cell`]). A set with lower cells on no cube is refused
-    /// ([`CubicalSet::require_full`]). Precondition: `2^d d! × cubes < 2^32`.
-    pub fn gmap(&self, periodic: bool) -> Result<DenseMap, ImportError> {
+    /// The G-map of the union, refused when it would be another space: [`CubicalSet::gmap`]
+    /// after [`CubicalSet::pinched_cell`] found no cell around which the cubes share no
+    /// facet (two cubes touching at a corner only), the error naming the first such cell.
+    /// What `gmap convert` and the Python package's `to_gmap` write.
+    pub fn gmap_of_union(&self, periodic: bool) -> Result<DenseMap, ImportError> {
         self.require_full("a G-map of its cubes")?;
         if let Some((cell, groups)) = self.pinched_cell(periodic) {
             return Err(ImportError::Format(format!(
                 "the cubes around the cell {cell} fall into {groups} groups that share no facet there: a G-map sews cubes along facets only, so it would pull them apart (another space); .vtk, .cub and the incidence graphs keep it"
             )));
         }
+        self.gmap(periodic)
+    }
+
+    /// The G-map of the cubes: the grid of the box ([`crate::build::grid`], axes periodic
+    /// with `periodic`) restricted to the cubes of the set, each cube one d-cell sewn to its
+    /// neighbours of the set along shared facets, the other facets free. Its cells are those
+    /// of the union only where the cubes around every cell meet along paths of facets (a
+    /// solid box, a ring, a shell); two cubes touching at a corner only make two components
+    /// here ([`CubicalSet::gmap_of_union`] refuses such a set). A set with lower cells on no
+    /// cube is refused ([`CubicalSet::require_full`]). Precondition: `2^d d! × cubes < 2^32`.
+    pub fn gmap(&self, periodic: bool) -> Result<DenseMap, ImportError> {
+        self.require_full("a G-map of its cubes")?;
         let d = self.dim();
         let grid = crate::build::grid(&self.shape, &vec![periodic; d])
             .map_err(|e| ImportError::Format(format!("the grid of the box: {e}")))?;
