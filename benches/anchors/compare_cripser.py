@@ -172,17 +172,23 @@ def groups(g, e, c, u):
     return check
 
 
-def table(path):
-    rows = {}
-    order = []
+def results(path):
+    """The rows of a results file: {image: {tool: record}}, and the images in table order
+    (the known cases first, in their order, then any other in the file's order)."""
+    rows, seen = {}, []
     with open(path) as fh:
         for line in fh:
             r = json.loads(line)
             if r["image"] not in rows:
                 rows[r["image"]] = {}
-                order.append(r["image"])
+                seen.append(r["image"])
             rows[r["image"]][r["tool"]] = r
-    order = [n for n, _, _ in cases(False) if n in rows] + [n for n in order if n not in {c[0] for c in cases(False)}]
+    known = [n for n, _, _ in cases(False)]
+    return rows, [n for n in known if n in rows] + [n for n in seen if n not in known]
+
+
+def table(path):
+    rows, order = results(path)
     print("| image | cubes | gmap read + homology (s) | gmap wall / CPU (s) | gmap max RSS (MB) "
           "| cripser read + PH (s) | cripser wall / CPU (s) | cripser max RSS (MB) | CPU ratio cripser / gmap "
           "| gmap --generators wall / CPU (s) | CPU ratio cripser / gmap --generators "

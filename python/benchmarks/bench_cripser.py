@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benches" / "anchors"))
-from compare_cripser import cases, groups, make, ok, short  # noqa: E402
+from compare_cripser import cases, groups, make, ok, results, short  # noqa: E402
 
 
 def timed(read, compute):
@@ -77,15 +77,7 @@ def run(tool, a):
 
 
 def table(path):
-    rows, order = {}, []
-    with open(path) as fh:
-        for line in fh:
-            r = json.loads(line)
-            if r["image"] not in rows:
-                rows[r["image"]], _ = {}, order.append(r["image"])
-            rows[r["image"]][r["tool"]] = r
-    known = [n for n, _, _ in cases(False)]
-    order = [n for n in known if n in rows] + [n for n in order if n not in known]
+    rows, order = results(path)
     print("| image | cubes | gmap read + homology CPU (s) | gmap wall (s) | cripser read + PH CPU (s) "
           "| cripser wall (s) | CPU ratio cripser / gmap (homology; with reading) "
           "| gmap with generators CPU (s) | CPU ratio cripser / gmap with generators "
