@@ -43,7 +43,7 @@ use std::path::Path;
 
 use super::common::{
     bad_number, check_utf8, is_content, push_u32, read_bytes, scan_lines, shorten, validity_to_read_error,
-    write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
+    write_atomic_with, write_atomically, Num, ReadError, ReadErrorKind, ReadOptions, Scanner, WriteError,
 };
 use crate::alpha::{AlphaSet, MAX_DIM};
 use crate::dense::DenseMap;
@@ -712,17 +712,33 @@ fn fast_line(b: &[u8], pos: usize, w: usize, darts: u64, out: &mut Vec<u32>) -> 
 /// The `.gmap` text of a map (no comment line): the dart lines, then a `points` section when
 /// some dart has a point (one line per vertex, from its first dart with a point). O(N n).
 pub fn format_gmap(map: &DenseMap) -> Vec<u8> {
-    let w = map.dim() + 1;
     let mut out = Vec::with_capacity(32 + map.flat().len() * 8);
-    out.extend_from_slice(format!("gmap {} {}\n", map.dim(), map.dart_count()).as_bytes());
+    // a Vec takes every write
+    let _ = write_gmap_to(map, &mut out);
+    out
+}
+
+/// The size of the pieces [`write_gmap_to`] formats before handing them to the writer.
+const WRITE_PIECE: usize = 1 << 20;
+
+/// Writes `map` to any writer in the `.gmap` format, formatted a piece of about a MiB at a
+/// time (a map of any size is not held twice).
+pub fn write_gmap_to(map: &DenseMap, out: &mut impl std::io::Write) -> std::io::Result<()> {
+    let w = map.dim() + 1;
+    let mut buf = Vec::with_capacity(WRITE_PIECE + 128);
+    buf.extend_from_slice(format!("gmap {} {}\n", map.dim(), map.dart_count()).as_bytes());
     for row in map.flat().chunks_exact(w) {
         for (i, &v) in row.iter().enumerate() {
             if i > 0 {
-                out.push(b' ');
+                buf.push(b' ');
             }
-            push_u32(&mut out, v);
+            push_u32(&mut buf, v);
         }
-        out.push(b'\n');
+        buf.push(b'\n');
+        if buf.len() >= WRITE_PIECE {
+            out.write_all(&buf)?;
+            buf.clear();
+        }
     }
     if map.has_points() {
         let vertices = map.cells(0);
@@ -734,23 +750,25 @@ pub fn format_gmap(map: &DenseMap) -> Vec<u8> {
             }
         }
         let lines: Vec<(u32, Point)> = first.into_iter().flatten().collect();
-        out.extend_from_slice(format!("points {}\n", lines.len()).as_bytes());
+        buf.extend_from_slice(format!("points {}\n", lines.len()).as_bytes());
         for (d, p) in lines {
-            out.extend_from_slice(format!("{d} {:?} {:?} {:?}\n", p[0], p[1], p[2]).as_bytes());
+            buf.extend_from_slice(format!("{d} {:?} {:?} {:?}\n", p[0], p[1], p[2]).as_bytes());
+            if buf.len() >= WRITE_PIECE {
+                out.write_all(&buf)?;
+                buf.clear();
+            }
         }
     }
-    out
-}
-
-/// Writes `map` to any writer in the `.gmap` format.
-pub fn write_gmap_to(map: &DenseMap, out: &mut impl std::io::Write) -> std::io::Result<()> {
-    out.write_all(&format_gmap(map))
+    out.write_all(&buf)
 }
 
 /// Writes `map` to `path` in the `.gmap` format, through a temporary file in the same
-/// directory renamed over `path` (no partial file on failure).
+/// directory renamed over `path` (no partial file on failure), streamed: beyond the map,
+/// a piece of about a MiB is held.
 pub fn write_gmap(map: &DenseMap, path: impl AsRef<Path>) -> Result<(), WriteError> {
-    write_atomically(path.as_ref(), &format_gmap(map))
+    let path = path.as_ref();
+    write_atomic_with(path, |mut w| write_gmap_to(map, &mut w))
+        .map_err(|source| WriteError::Io { path: path.to_path_buf(), source })
 }
 
 #[cfg(test)]
@@ -760,6 +778,19 @@ mod tests {
 
     fn msg(bytes: &[u8]) -> String {
         parse_gmap(bytes, "f.gmap").unwrap_err().to_string()
+    }
+
+    #[test]
+    fn a_map_written_in_pieces_is_the_formatted_map() {
+        // 200,000 free darts: about 5 MB of text, several pieces
+        let m = DenseMap::new(3, 200_000);
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("big.gmap");
+        write_gmap(&m, &p).unwrap();
+        let written = std::fs::read(&p).unwrap();
+        assert!(written.len() > 4 * WRITE_PIECE);
+        assert_eq!(written, format_gmap(&m));
+        assert_eq!(read_gmap(&p).unwrap(), m);
     }
 
     #[test]
