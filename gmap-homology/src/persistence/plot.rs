@@ -179,10 +179,12 @@ pub fn barcode_svg(d: &Diagram, width: u32) -> String {
     out
 }
 
-/// The lowest value of an image and the span its greys cover (1 for a constant image).
-fn grey_scale(values: &[f64]) -> (f64, f64) {
+/// The grey level (0 black to 255 white) of each value of an image, its lowest value black
+/// and its highest white (a constant image black).
+fn greys(values: &[f64]) -> Vec<u8> {
     let (lo, hi) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
-    (lo, if hi > lo { hi - lo } else { 1.0 })
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    values.iter().map(|&v| ((v - lo) / span * 255.0).round() as u8).collect()
 }
 
 /// A 2-D image (`rows × cols` values, row-major) in grey, `scale` pixels per value, with
@@ -197,13 +199,13 @@ pub fn image_with_chain_svg(
     scale: u32,
 ) -> String {
     let sc = scale as f64;
-    let (lo, span) = grey_scale(values);
+    let grey = greys(values);
     let (w, h) = (cols as f64 * sc, rows as f64 * sc);
     let mut out = String::new();
     let _ = writeln!(out, r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}">"#);
     for r in 0..rows {
         for c in 0..cols {
-            let g = ((values[r * cols + c] - lo) / span * 255.0).round() as u8;
+            let g = grey[r * cols + c];
             let _ = writeln!(
                 out,
                 r#"<rect x="{}" y="{}" width="{sc}" height="{sc}" fill="rgb({g},{g},{g})"/>"#,
@@ -372,11 +374,11 @@ pub fn image_with_chain_raster(
     scale: u32,
 ) -> Raster {
     let sc = scale as f64;
-    let (lo, span) = grey_scale(values);
+    let grey = greys(values);
     let mut r = Raster::new(cols as u32 * scale, rows as u32 * scale);
     for i in 0..rows {
         for j in 0..cols {
-            let g = ((values[i * cols + j] - lo) / span * 255.0).round() as u8;
+            let g = grey[i * cols + j];
             r.rect(j as f64 * sc, i as f64 * sc, (j + 1) as f64 * sc, (i + 1) as f64 * sc, [g, g, g], 1.0);
         }
     }
