@@ -334,6 +334,10 @@ impl CubicalSet {
         let mut y = vec![0i64; d];
         let mut seen = Vec::new();
         let mut queue = Vec::new();
+        // per axis of the face at hand: 0 the point x_a, 1 the interval [x_a, x_a + 1], 2 the
+        // point x_a + 1; and the axes it does not span
+        let mut t = vec![0usize; d];
+        let mut free = Vec::with_capacity(d);
         for (ci, _) in self.bits.iter().enumerate().filter(|(_, &b)| b != 0) {
             let mut r = ci;
             for a in 0..d {
@@ -341,9 +345,13 @@ impl CubicalSet {
                 r /= self.shape[a];
             }
             for code in 0..faces {
-                // per axis: 0 the point x_a, 1 the interval [x_a, x_a + 1], 2 the point x_a + 1
-                let t: Vec<usize> = (0..d).map(|a| code / 3usize.pow(a as u32) % 3).collect();
-                let free: Vec<usize> = (0..d).filter(|&a| t[a] != 1).collect();
+                let mut rest = code;
+                for ta in t.iter_mut() {
+                    *ta = rest % 3;
+                    rest /= 3;
+                }
+                free.clear();
+                free.extend((0..d).filter(|&a| t[a] != 1));
                 if free.len() < 2 {
                     continue;
                 }
