@@ -72,8 +72,8 @@ pub mod persistence;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
 pub use complex::{
-    arch, cubical, cubical_blocks, cubical_pass, cubical_slabs, cubical_torus, dot, ep, graphml, json, lar, simplices,
-    tm,
+    arch, cubical, cubical_blocks, cubical_gens, cubical_pass, cubical_slabs, cubical_torus, dot, ep, graphml, json,
+    lar, simplices, tm,
 };
 pub use engine::{chain, generators, homology, sparse};
 

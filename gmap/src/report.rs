@@ -167,6 +167,70 @@ impl Report {
         v
     }
 
+    /// [`Report::to_json`] as text, the same bytes as its `to_string()`, with the generators
+    /// written straight into the text instead of built as JSON values first (a cube's name
+    /// as a value is a map of two lists: millions of them take gigabytes).
+    pub fn to_json_string(&self) -> String {
+        use std::fmt::Write as _;
+        let Some(gens) = &self.generators else { return self.to_json().to_string() };
+        // the report without its generators, a marker in their place (keys are sorted, so
+        // the marker sits where the generators belong)
+        const MARK: &str = r"\u0000generators\u0000";
+        let mut v = self.clone_without_generators().to_json();
+        v["generators"] = json!("\u{0}generators\u{0}");
+        let text = v.to_string();
+        let Some(at) = text.find(&format!("\"{MARK}\"")) else { return self.to_json().to_string() };
+        let mut out = String::with_capacity(text.len() + gens.iter().map(|g| 48 * g.chain.len() + 32).sum::<usize>());
+        out.push_str(&text[..at]);
+        out.push('[');
+        for (i, g) in gens.iter().enumerate() {
+            if i > 0 {
+                out.push(',');
+            }
+            out.push_str("{\"chain\":[");
+            for (j, (cell, coef)) in g.chain.iter().enumerate() {
+                if j > 0 {
+                    out.push(',');
+                }
+                out.push_str("{\"cell\":");
+                match cell {
+                    CellName::Cube { min, extent } => {
+                        out.push_str("{\"cube\":[");
+                        for (a, x) in min.iter().enumerate() {
+                            let _ = write!(out, "{}{x}", if a > 0 { "," } else { "" });
+                        }
+                        out.push_str("],\"extent\":[");
+                        for (a, x) in extent.iter().enumerate() {
+                            let _ = write!(out, "{}{x}", if a > 0 { "," } else { "" });
+                        }
+                        out.push_str("]}");
+                    }
+                    other => out.push_str(&other.to_json().to_string()),
+                }
+                let _ = write!(out, ",\"coefficient\":{coef}}}");
+            }
+            let _ = write!(out, "],\"dim\":{},\"order\":{}}}", g.dim, json!(g.order));
+        }
+        out.push(']');
+        out.push_str(&text[at + MARK.len() + 2..]);
+        out
+    }
+
+    /// A copy of the report without its generators (cheap: the groups and names only).
+    fn clone_without_generators(&self) -> Report {
+        Report {
+            kind: self.kind,
+            dimension: self.dimension,
+            method: self.method,
+            route: self.route,
+            field: self.field,
+            groups: self.groups.clone(),
+            generators: None,
+            note: self.note.clone(),
+            space: self.space.clone(),
+        }
+    }
+
     /// The text `gmap homology` prints: a header line, one line per group, the Euler
     /// characteristic, then a line per generator.
     pub fn to_text(&self) -> String {
@@ -261,6 +325,34 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             space: None,
         });
     }
+    // dimension ≤ 2 with generators: read off the one-pass structures, no chain complex
+    let with_generators = match input {
+        Input::Cubical(set) if set.is_full() => {
+            cubical_generators(set.shape(), set.bits(), set.min(), false, o, &file)?
+        }
+        Input::Image(img) if o.generators && img.memory_shape().len() <= 2 && !o.periodic => {
+            let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
+            o.progress.stage("the image's cubical set");
+            let set = img
+                .to_cubical_set(level)
+                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            cubical_generators(set.shape(), set.bits(), set.min(), false, o, &file)?
+        }
+        _ => None,
+    };
+    if let Some((groups, generators)) = with_generators {
+        return Ok(Report {
+            kind: input.kind(),
+            dimension: input.dim(),
+            method: o.method,
+            route,
+            field: o.field,
+            groups,
+            generators: Some(generators),
+            note: None,
+            space: None,
+        });
+    }
     let image_set;
     let mut note = None;
     // the complex names the G-map's cells by labels while the darts are those of the import
@@ -348,6 +440,79 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
         note,
         space,
     })
+}
+
+/// The groups and a basis of cycles of a full cubical set of dimension 1 or 2 in a box that
+/// is not periodic, from the structures of the one-pass route (`gmap_homology::cubical_gens`:
+/// a vertex per component, the outline of each hole), in time linear in the cells: `shape` and `bits` as for `gmap_homology::cubical_gens`, the
+/// cells named by minimal vertex (offset by `min`, the box's minimal vertex) and extent, their
+/// axes reversed with `reversed` (a C-ordered array). Over Z/p the same cycles, their
+/// coefficients taken in `0..p`. `None` where this route does not apply (no generators asked
+/// for, another dimension, a periodic box, the simplicial method); the cycles then come from
+/// the cubical complex. Public for callers that hold the cubes elsewhere (the Python package).
+pub fn cubical_generators(
+    shape: &[usize],
+    bits: &[u8],
+    min: &[i64],
+    reversed: bool,
+    o: &HomologyOptions,
+    file: &str,
+) -> Result<Option<(gmap_homology::Homology, Vec<NamedGenerator>)>> {
+    if !o.generators
+        || shape.len() > 2
+        || o.periodic
+        || o.method != route::Method::Cellular
+        || o.simplify
+        || o.topological
+    {
+        return Ok(None);
+    }
+    check_field(o.field)?;
+    o.progress
+        .stage("one pass over the cells: components, the complement's components, the loops of a spanning forest");
+    let g = gmap_homology::cubical_gens::cubical_generators(shape, bits)
+        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    let d = shape.len();
+    let betti: Vec<usize> = g.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect();
+    let groups = gmap_homology::Homology {
+        coefficients: match o.field {
+            None => gmap_homology::homology::Coefficients::Integers,
+            Some(p) => gmap_homology::homology::Coefficients::Field(p),
+        },
+        betti,
+        torsion: vec![Vec::new(); d + 1],
+    };
+    let coefficient = |c: i64| match o.field {
+        Some(p) => c.rem_euclid(p as i64),
+        None => c,
+    };
+    let grid = &g.grid;
+    let name = |point: u64| {
+        let mut p = point as usize;
+        let mut lo = Vec::with_capacity(d);
+        let mut extent = Vec::with_capacity(d);
+        for (a, &n) in grid.iter().enumerate() {
+            let c = p % n;
+            p /= n;
+            lo.push(min.get(a).copied().unwrap_or(0) + (c / 2) as i64);
+            extent.push((c % 2) as u8);
+        }
+        if reversed {
+            lo.reverse();
+            extent.reverse();
+        }
+        CellName::Cube { min: lo, extent }
+    };
+    let generators = g
+        .generators
+        .into_iter()
+        .map(|z| NamedGenerator {
+            dim: z.dim,
+            order: gmap_homology::Natural::from(0u64),
+            chain: z.chain.into_iter().map(|(p, c)| (name(p), coefficient(c))).collect(),
+        })
+        .collect();
+    Ok(Some((groups, generators)))
 }
 
 /// [`homology`] of the file at `path`: the options are checked against the file's kind (by

@@ -20,7 +20,9 @@ pub struct Cubes<'a> {
 }
 
 /// The homology of a borrowed cubical set, as the facade computes that of a `CubicalSet`:
-/// in one pass over the cubes where that applies (dimension ≤ 3, no generators:
+/// with generators in dimension ≤ 2, from the one-pass structures
+/// (`gmap::report::cubical_generators`); in one pass over the cubes where that applies
+/// (dimension ≤ 3, no generators:
 /// `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array never copied
 /// whole; periodic: `gmap_homology::cubical_torus`, a union-find over the whole box), else the cubical complex of the closure after collapses of free
 /// faces (`periodic`: the box a torus), with the facade's checks of the options.
@@ -58,6 +60,13 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
             .map_err(Failure::from)?;
     if let Some(groups) = one_pass {
         return Ok(report(groups, None));
+    }
+    // dimension ≤ 2 with generators: the facade's cycles read off the one-pass structures
+    // (the cells' axes given back in the caller's order)
+    if let Some((groups, gens)) =
+        gmap::report::cubical_generators(c.shape, c.bits, &[], c.reversed, o, "the array").map_err(Failure::from)?
+    {
+        return Ok(report(groups, Some(gens)));
     }
     crate::objects::check_complex_memory(c.shape)?;
     let cc = gmap_homology::cubical::cubical_complex_with(c.shape, c.bits, o.periodic, true)?;

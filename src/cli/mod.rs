@@ -282,7 +282,7 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
     };
     o.progress.finish();
     let report = report?;
-    Ok(if a.json { format!("{}\n", report.to_json()) } else { report.to_text() })
+    Ok(if a.json { format!("{}\n", report.to_json_string()) } else { report.to_text() })
 }
 
 fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {

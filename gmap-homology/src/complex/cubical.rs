@@ -48,6 +48,9 @@ pub enum CubicalError {
     /// A block's message (between processes) is malformed.
     #[error("bad block message: {0}")]
     BadMessage(String),
+    /// A check of a result failed (a bug, reported rather than a wrong answer).
+    #[error("internal error: {0}")]
+    Internal(String),
     /// Memory could not be had.
     #[error("cannot allocate {bytes} bytes for {what}")]
     OutOfMemory {
