@@ -16,7 +16,9 @@ seconds, maximum resident set size):
 * gmap: `CMD FILE.npy --level 0.5 --json --timings` (default CMD: `target/release/gmap
   homology`): `--timings` prints the reading stage (header and memory map) and the homology
   apart; the pages of the mapped file are read during the homology;
-* gmap with generators: the same with `--generators` (the cubical complex's route);
+* gmap with generators: `CMD FILE.npy --level 0.5 --timings --generators`, its text written
+  to a file (`gen`; `genjson` the same with `--json`, about four times the bytes): in 1-D and
+  2-D the cycles read off two union-finds, in 3-D the cubical complex's route;
 * CubicalRipser: `np.load`, `astype(float64)` (the reading stage), then
   `cripser.computePH(a, maxdim=d-1, top_dim=True, location="no")`;
 * GUDHI: `gudhi.CubicalComplex(top_dimensional_cells=a).persistence()`, up to --gudhi-max
@@ -61,11 +63,13 @@ print(json.dumps({"read_s": t1 - t0, "homology_s": t2 - t1, "betti": [int(x) for
 """
 
 
-def timed(cmd, timeout=None):
+def timed(cmd, timeout=None, stdout_path=None):
     """Runs cmd under /usr/bin/time: its last stdout line as JSON (None when it failed), its
-    stderr, and the resources."""
+    stderr, and the resources. With stdout_path the output goes to that file instead, and
+    the first value is {}."""
     # a process group of its own, so that a run stopped at the timeout stops whole
-    p = subprocess.Popen(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, stdout=subprocess.PIPE,
+    sink = open(stdout_path, "w") if stdout_path else subprocess.PIPE
+    p = subprocess.Popen(["/usr/bin/time", "-f", "TIME %e %U %S %M"] + cmd, stdout=sink,
                          stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
         stdout, stderr = p.communicate(timeout=timeout)
@@ -81,7 +85,26 @@ def timed(cmd, timeout=None):
     if p.returncode != 0:
         err = [l for l in stderr.splitlines() if not l.startswith("TIME ") and "exited" not in l]
         return None, (err[-1] if err else f"exit {p.returncode}")[-300:], res
+    if stdout_path:
+        sink.close()
+        return {}, stderr, res
     return json.loads(stdout.strip().splitlines()[-1]), stderr, res
+
+
+def betti_of_text(path, d):
+    """The Betti numbers from the `H_k = ...` lines of gmap's text output (free groups: `0`,
+    `Z`, `Z^n`)."""
+    b = [0] * d
+    with open(path) as fh:
+        for line in fh:
+            if line.startswith("generator"):
+                break
+            if line.startswith("H_"):
+                k, g = line[2:].split(" = ")
+                g = g.strip()
+                if int(k) < d:
+                    b[int(k)] = 0 if g == "0" else 1 if g == "Z" else int(g.split("^")[1])
+    return b
 
 
 def gmap_timings(stderr):
@@ -130,13 +153,29 @@ def make(name, shape, dens):
 
 def measure(tool, f, a, gmap, timeout):
     """One tool on the file: a dict for the results file."""
-    if tool in ("gmap", "gen"):
-        cmd = gmap + [f, "--level", "0.5", "--json", "--timings"] + (["--generators"] if tool == "gen" else [])
-        out, err, res = timed(cmd, timeout)
+    if tool == "gmap":
+        out, err, res = timed(gmap + [f, "--level", "0.5", "--json", "--timings"], timeout)
         if out is None:
             return {"failed": err, **(res or {})}
         read, hom = gmap_timings(err)
         return {"read_s": read, "homology_s": hom, "betti": betti_of(out, a.ndim), **res}
+    if tool in ("gen", "genjson"):
+        # the cycles written to a file, as a user keeps them: the text of `gmap homology
+        # --generators`, or its --json
+        path = f + (".gen.json" if tool == "genjson" else ".gen.txt")
+        cmd = gmap + [f, "--level", "0.5", "--timings", "--generators"] + (["--json"] if tool == "genjson" else [])
+        out, err, res = timed(cmd, timeout, stdout_path=path)
+        if out is None:
+            return {"failed": err, **(res or {})}
+        read, hom = gmap_timings(err)
+        if tool == "genjson":
+            with open(path) as fh:
+                betti = json.loads(fh.read(4096).split(',"coefficients"')[0] + "}")["betti"][: a.ndim]
+        else:
+            betti = betti_of_text(path, a.ndim)
+        size = os.path.getsize(path) / 2**20
+        os.remove(path)
+        return {"read_s": read, "homology_s": hom, "betti": betti, "output_mb": size, **res}
     script = CRIPSER if tool == "cripser" else GUDHI
     out, err, res = timed([sys.executable, "-c", script, f], timeout)
     if out is None:

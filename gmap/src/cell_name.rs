@@ -2,6 +2,7 @@
 //! A leaf: the routes make names, the report prints them.
 
 use serde_json::json;
+use smallvec::SmallVec;
 
 /// A cell of the input, in the input's own terms.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,12 +33,12 @@ pub enum CellName {
         name: Option<String>,
     },
     /// an elementary cube of a cubical set: its minimal vertex and its extent (0 or 1) per
-    /// axis
+    /// axis (held inline up to dimension 4: the generators of a large image name millions)
     Cube {
         /// the minimal vertex
-        min: Vec<i64>,
+        min: SmallVec<[i64; 4]>,
         /// 1 along the axes the cube spans, 0 along the others
-        extent: Vec<u8>,
+        extent: SmallVec<[u8; 4]>,
     },
 }
 
@@ -67,7 +68,7 @@ impl CellName {
                 }
                 v
             }
-            CellName::Cube { min, extent } => json!({ "cube": min, "extent": extent }),
+            CellName::Cube { min, extent } => json!({ "cube": min.as_slice(), "extent": extent.as_slice() }),
         }
     }
 

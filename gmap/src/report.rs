@@ -167,23 +167,36 @@ impl Report {
         v
     }
 
-    /// [`Report::to_json`] as text, the same bytes as its `to_string()`, with the generators
-    /// written straight into the text instead of built as JSON values first (a cube's name
-    /// as a value is a map of two lists: millions of them take gigabytes).
+    /// [`Report::to_json`] as text, the same bytes as its `to_string()`: see
+    /// [`Report::write_json`].
     pub fn to_json_string(&self) -> String {
+        let mut out = Vec::new();
+        // writing into memory does not fail
+        let _ = self.write_json(&mut out);
+        String::from_utf8(out).unwrap_or_default()
+    }
+
+    /// Writes [`Report::to_json`] as text (the same bytes as its `to_string()`), the
+    /// generators straight from the report instead of built as JSON values first (a cube's
+    /// name as a value is a map of two lists: millions of them take gigabytes), one
+    /// generator at a time.
+    pub fn write_json(&self, w: &mut impl std::io::Write) -> std::io::Result<()> {
         use std::fmt::Write as _;
-        let Some(gens) = &self.generators else { return self.to_json().to_string() };
+        let Some(gens) = &self.generators else { return w.write_all(self.to_json().to_string().as_bytes()) };
         // the report without its generators, a marker in their place (keys are sorted, so
         // the marker sits where the generators belong)
         const MARK: &str = r"\u0000generators\u0000";
         let mut v = self.clone_without_generators().to_json();
         v["generators"] = json!("\u{0}generators\u{0}");
         let text = v.to_string();
-        let Some(at) = text.find(&format!("\"{MARK}\"")) else { return self.to_json().to_string() };
-        let mut out = String::with_capacity(text.len() + gens.iter().map(|g| 48 * g.chain.len() + 32).sum::<usize>());
-        out.push_str(&text[..at]);
-        out.push('[');
+        let Some(at) = text.find(&format!("\"{MARK}\"")) else {
+            return w.write_all(self.to_json().to_string().as_bytes());
+        };
+        w.write_all(&text.as_bytes()[..at])?;
+        w.write_all(b"[")?;
+        let mut out = String::new();
         for (i, g) in gens.iter().enumerate() {
+            out.clear();
             if i > 0 {
                 out.push(',');
             }
@@ -196,24 +209,22 @@ impl Report {
                 match cell {
                     CellName::Cube { min, extent } => {
                         out.push_str("{\"cube\":[");
-                        for (a, x) in min.iter().enumerate() {
-                            let _ = write!(out, "{}{x}", if a > 0 { "," } else { "" });
-                        }
+                        push_list(&mut out, min.iter().copied());
                         out.push_str("],\"extent\":[");
-                        for (a, x) in extent.iter().enumerate() {
-                            let _ = write!(out, "{}{x}", if a > 0 { "," } else { "" });
-                        }
+                        push_list(&mut out, extent.iter().map(|&e| i64::from(e)));
                         out.push_str("]}");
                     }
                     other => out.push_str(&other.to_json().to_string()),
                 }
-                let _ = write!(out, ",\"coefficient\":{coef}}}");
+                out.push_str(",\"coefficient\":");
+                out.push_str(itoa::Buffer::new().format(*coef));
+                out.push('}');
             }
             let _ = write!(out, "],\"dim\":{},\"order\":{}}}", g.dim, json!(g.order));
+            w.write_all(out.as_bytes())?;
         }
-        out.push(']');
-        out.push_str(&text[at + MARK.len() + 2..]);
-        out
+        w.write_all(b"]")?;
+        w.write_all(&text.as_bytes()[at + MARK.len() + 2..])
     }
 
     /// A copy of the report without its generators (cheap: the groups and names only).
@@ -234,6 +245,14 @@ impl Report {
     /// The text `gmap homology` prints: a header line, one line per group, the Euler
     /// characteristic, then a line per generator.
     pub fn to_text(&self) -> String {
+        let mut out = Vec::new();
+        // writing into memory does not fail
+        let _ = self.write_text(&mut out);
+        String::from_utf8(out).unwrap_or_default()
+    }
+
+    /// Writes [`Report::to_text`], one generator at a time.
+    pub fn write_text(&self, w: &mut impl std::io::Write) -> std::io::Result<()> {
         use std::fmt::Write as _;
         let h = &self.groups;
         let via = self.route.map(|r| format!(", route {}", r.name())).unwrap_or_default();
@@ -250,17 +269,56 @@ impl Report {
         if let Some(space) = &self.space {
             out.push_str(&space.to_text());
         }
+        w.write_all(out.as_bytes())?;
         for x in self.generators.iter().flatten() {
+            out.clear();
             let order = match (x.order.to_u64(), self.field) {
                 (Some(0), None) => "Z".to_string(),
                 (Some(0), Some(p)) => format!("Z/{p}"),
                 _ => format!("Z/{}", x.order),
             };
-            let terms: Vec<String> =
-                x.chain.iter().map(|(cell, coef)| format!("{coef:+} {}", cell.to_text())).collect();
-            let _ = writeln!(out, "generator of H_{} ({order}): {}", x.dim, terms.join(" "));
+            let _ = write!(out, "generator of H_{} ({order}):", x.dim);
+            let mut digits = itoa::Buffer::new();
+            for (cell, coef) in &x.chain {
+                out.push_str(if *coef >= 0 { " +" } else { " " });
+                out.push_str(digits.format(*coef));
+                out.push(' ');
+                match cell {
+                    // a cube's name written in place: `[0,1]x2` (as `CellName::to_text`)
+                    CellName::Cube { min, extent } => {
+                        for (a, (&lo, &e)) in min.iter().zip(extent).enumerate() {
+                            if a > 0 {
+                                out.push('x');
+                            }
+                            if e == 1 {
+                                out.push('[');
+                                out.push_str(digits.format(lo));
+                                out.push(',');
+                                out.push_str(digits.format(lo + 1));
+                                out.push(']');
+                            } else {
+                                out.push_str(digits.format(lo));
+                            }
+                        }
+                    }
+                    other => out.push_str(&other.to_text()),
+                }
+            }
+            out.push('\n');
+            w.write_all(out.as_bytes())?;
         }
-        out
+        Ok(())
+    }
+}
+
+/// Appends integers separated by commas.
+fn push_list(out: &mut String, values: impl Iterator<Item = i64>) {
+    let mut digits = itoa::Buffer::new();
+    for (i, x) in values.enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        out.push_str(digits.format(x));
     }
 }
 
@@ -489,8 +547,8 @@ pub fn cubical_generators(
     let grid = &g.grid;
     let name = |point: u64| {
         let mut p = point as usize;
-        let mut lo = Vec::with_capacity(d);
-        let mut extent = Vec::with_capacity(d);
+        let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
+        let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
         for (a, &n) in grid.iter().enumerate() {
             let c = p % n;
             p /= n;

@@ -477,8 +477,8 @@ fn named_cubes(
         vec![Vec::new(); c.cells.len()]
     };
     let name = Box::new(move |k: usize, j: u32| {
-        let (min, extent) = names[k][j as usize].clone();
-        CellName::Cube { min, extent }
+        let (min, extent) = &names[k][j as usize];
+        CellName::Cube { min: min.as_slice().into(), extent: extent.as_slice().into() }
     });
     Named { chain: c.chain, name, relative }
 }

@@ -84,7 +84,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
                 min.reverse();
                 extent.reverse();
             }
-            CellName::Cube { min, extent }
+            CellName::Cube { min: min.into(), extent: extent.into() }
         };
         Some(
             g.into_iter()
@@ -157,7 +157,7 @@ pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
             let min = cube.as_array()?.iter().map(|x| x.as_i64()).collect::<Option<Vec<_>>>()?;
             let extent =
                 c["extent"].as_array()?.iter().map(|x| x.as_u64().map(|e| e as u8)).collect::<Option<Vec<_>>>()?;
-            return Some(CellName::Cube { min, extent });
+            return Some(CellName::Cube { min: min.into(), extent: extent.into() });
         }
         let dart = c.get("dart")?.as_u64()? as u32;
         let simplex = match c.get("simplex") {

@@ -215,7 +215,31 @@ pub fn run() -> ExitCode {
     let text = match cli.command {
         Command::Demo => Ok(gmap::demo::demo_table()),
         Command::Info(a) => info(a, quiet),
-        Command::Homology(a) => homology(a, quiet),
+        Command::Homology(a) => {
+            // written as it is formed: the generators of a large image are hundreds of MB
+            let json = a.json;
+            return match homology(a, quiet) {
+                Ok(report) => {
+                    let mut out = std::io::BufWriter::with_capacity(1 << 20, std::io::stdout().lock());
+                    let written = if json {
+                        report.write_json(&mut out).and_then(|()| out.write_all(b"\n"))
+                    } else {
+                        report.write_text(&mut out)
+                    };
+                    match written.and_then(|()| out.flush()) {
+                        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                            eprintln!("error: {e}");
+                            ExitCode::from(1)
+                        }
+                        _ => ExitCode::SUCCESS,
+                    }
+                }
+                Err(e) => {
+                    eprintln!("error: {}", e.to_string().replace('\n', " "));
+                    ExitCode::from(1)
+                }
+            };
+        }
         Command::Bench(a) => bench(a, quiet),
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
@@ -253,7 +277,7 @@ fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     Ok(if a.json { format!("{}\n", info.to_json()) } else { info.to_text(&a.file.display().to_string()) })
 }
 
-fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
+fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<gmap::Report> {
     let mut o = gmap::HomologyOptions::default();
     o.method = match a.method {
         Method::Cellular => gmap::Method::Cellular,
@@ -281,8 +305,7 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<String> {
         gmap::homology_file(&a.file, &o)
     };
     o.progress.finish();
-    let report = report?;
-    Ok(if a.json { format!("{}\n", report.to_json_string()) } else { report.to_text() })
+    report
 }
 
 fn bench(a: BenchArgs, quiet: bool) -> gmap::Result<String> {

@@ -360,28 +360,24 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
             facets(&c, v, &mut |_, _| sizes[id] += 1);
         }
     });
-    let mut start = Vec::with_capacity(sizes.len() + 1);
-    start.push(0usize);
-    for s in &sizes {
-        start.push(start.last().copied().unwrap_or(0) + s);
-    }
-    let mut flat = try_vec(*start.last().unwrap_or(&0), (0u64, 0i64), "the boundaries of the complement's components")?;
-    let mut fill = start.clone();
+    let mut chains: Vec<Vec<(u64, i64)>> = Vec::new();
+    chains.try_reserve_exact(sizes.len()).map_err(|_| CubicalError::OutOfMemory {
+        what: "the boundaries of the complement's components",
+        bytes: sizes.len() as u64 * 24,
+    })?;
+    chains.extend(sizes.iter().map(|&n| Vec::with_capacity(n)));
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
         if bits[v] != 0 || on_border(&c) {
             return;
         }
         let Some(id) = number_of(&uf, v) else { return };
-        facets(&c, v, &mut |p, s| {
-            flat[fill[id]] = (p as u64, s);
-            fill[id] += 1;
-        });
+        facets(&c, v, &mut |p, s| chains[id].push((p as u64, s)));
     });
     drop(uf);
-    Ok((0..sizes.len())
-        .map(|id| {
-            let mut chain = flat[start[id]..start[id + 1]].to_vec();
+    Ok(chains
+        .into_iter()
+        .map(|mut chain| {
             chain.sort_unstable();
             CubeCycle { dim: d - 1, chain }
         })
