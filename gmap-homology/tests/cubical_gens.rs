@@ -1,4 +1,4 @@
-//! The generators of the one-pass route (`cubical_gens`, dimensions 1 and 2) are a basis over Z of the homology of
+//! The generators of the one-pass route (`cubical_gens`) are a basis over Z of the homology of
 //! the set: each is a cycle of the set's cubical complex, there are `b_k` of them in each
 //! dimension, and coning them off kills all homology (torsion included), which holds exactly
 //! when they generate `H_k` over Z.
@@ -9,13 +9,19 @@ use common::random_bits;
 use std::collections::HashMap;
 
 use gmap_homology::cubical::cubical_complex_with;
-use gmap_homology::cubical_gens::{cubical_generators, CubicalGenerators};
+use gmap_homology::cubical_gens::{cubical_generators, cubical_generators_pairing, CubicalGenerators};
 use gmap_homology::{homology_z, ChainComplex, SparseMatrix};
 use proptest::prelude::*;
 
 /// Checks the generators against the whole cubical complex; returns its Betti numbers.
 fn check(shape: &[usize], bits: &[u8]) -> Vec<usize> {
-    let g: CubicalGenerators = cubical_generators(shape, bits).unwrap();
+    check_pairing(shape, bits, usize::MAX)
+}
+
+/// [`check`] with the 3-D sweep's eliminations above the vertices bounded by `pairs` (the
+/// rest made critical and reduced by the general route).
+fn check_pairing(shape: &[usize], bits: &[u8], pairs: usize) -> Vec<usize> {
+    let g: CubicalGenerators = cubical_generators_pairing(shape, bits, pairs).unwrap();
     let c = cubical_complex_with(shape, bits, false, false).unwrap();
     let h = homology_z(&c.chain).unwrap();
     assert!(h.torsion.iter().all(Vec::is_empty));
@@ -81,6 +87,30 @@ fn check(shape: &[usize], bits: &[u8]) -> Vec<usize> {
 fn known_sets() {
     // a ring of 8 squares: one loop, the boundary of its hole
     assert_eq!(check(&[3, 3], &[1, 1, 1, 1, 0, 1, 1, 1, 1]), vec![1, 1, 0]);
+    // a hollow cube: one cavity; a solid torus (a ring one cube thick); two of them; a cube
+    // with a tunnel and a cavity
+    let mut shell = vec![1u8; 27];
+    shell[13] = 0;
+    assert_eq!(check(&[3, 3, 3], &shell), vec![1, 0, 1, 0]);
+    let mut torus = vec![1u8; 9];
+    torus[4] = 0;
+    assert_eq!(check(&[3, 3, 1], &torus), vec![1, 1, 0, 0]);
+    let two: Vec<u8> = (0..7 * 3 * 2)
+        .map(|i| {
+            let (x, y, z) = (i % 7, (i / 7) % 3, i / 21);
+            u8::from(x != 3 && !(x % 4 == 1 && y == 1) && z == 1)
+        })
+        .collect();
+    assert_eq!(check(&[7, 3, 2], &two), vec![2, 2, 0, 0]);
+    let holed: Vec<u8> = (0..125)
+        .map(|i| {
+            let (x, y, z) = (i % 5, (i / 5) % 5, i / 25);
+            u8::from(!((x, y) == (1, 1) || (x, y, z) == (3, 3, 2)))
+        })
+        .collect();
+    assert_eq!(check(&[5, 5, 5], &holed), vec![1, 1, 1, 0]);
+    assert_eq!(check(&[2, 3, 2], &[0; 12]), vec![0, 0, 0, 0]);
+    assert_eq!(check(&[4, 3, 5], &[1; 60]), vec![1, 0, 0, 0]);
     // two rings side by side, and a ring inside a ring (the inner one in the outer's hole)
     let two: Vec<u8> = (0..7 * 3).map(|i| u8::from(i % 7 != 3 && !(i % 7 % 4 == 1 && i / 7 == 1))).collect();
     assert_eq!(check(&[7, 3], &two), vec![2, 2, 0]);
@@ -106,18 +136,17 @@ fn known_sets() {
 #[test]
 fn refusals() {
     assert!(cubical_generators(&[2, 2, 2, 2], &[1; 16]).is_err());
-    // 3-D sets take the cubical complex
-    assert!(cubical_generators(&[2, 2, 2], &[1; 8]).is_err());
+
     assert!(cubical_generators(&[3, 3], &[1; 8]).is_err());
     assert!(cubical_generators(&[0, 3], &[]).is_err());
 }
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(160))]
-    /// Random sets of dimension 1 and 2 at densities from sparse to nearly full.
+    /// Random sets of dimension 1 to 3 at densities from sparse to nearly full.
     #[test]
     fn random_sets(
-        shape in prop::collection::vec(1usize..9, 1..=2),
+        shape in prop::collection::vec(1usize..8, 1..=3),
         density in 10u64..95,
         seed in any::<u64>(),
     ) {
@@ -126,10 +155,27 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    /// The 3-D sweep stopped early: the cells left are made critical, and the cycles of the
+    /// critical edges, lifted, are a basis all the same.
+    #[test]
+    fn stopped_sweeps(
+        shape in prop::collection::vec(2usize..6, 3),
+        density in 30u64..90,
+        seed in any::<u64>(),
+        pairs in 0usize..60,
+    ) {
+        let n: usize = shape.iter().product();
+        check_pairing(&shape, &random_bits(n, density, seed), pairs);
+    }
+}
+
 #[test]
 fn larger_random_boxes() {
     for (seed, density) in [(1, 30), (2, 50), (3, 70), (4, 85)] {
         check(&[40, 37], &random_bits(1480, density, seed));
+        check(&[11, 9, 10], &random_bits(990, density, seed));
         check(&[300], &random_bits(300, density, seed));
     }
 }

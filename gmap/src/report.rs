@@ -383,12 +383,12 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
             space: None,
         });
     }
-    // dimension ≤ 2 with generators: read off the one-pass structures, no chain complex
+    // dimension ≤ 3 with generators: read off union-finds and a sweep, no chain complex
     let with_generators = match input {
         Input::Cubical(set) if set.is_full() => {
             cubical_generators(set.shape(), set.bits(), set.min(), false, o, &file)?
         }
-        Input::Image(img) if o.generators && img.memory_shape().len() <= 2 && !o.periodic => {
+        Input::Image(img) if o.generators && img.memory_shape().len() <= 3 && !o.periodic => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
             o.progress.stage("the image's cubical set");
             let set = img
@@ -500,14 +500,17 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
     })
 }
 
-/// The groups and a basis of cycles of a full cubical set of dimension 1 or 2 in a box that
-/// is not periodic, from the structures of the one-pass route (`gmap_homology::cubical_gens`:
-/// a vertex per component, the outline of each hole), in time linear in the cells: `shape` and `bits` as for `gmap_homology::cubical_gens`, the
-/// cells named by minimal vertex (offset by `min`, the box's minimal vertex) and extent, their
-/// axes reversed with `reversed` (a C-ordered array). Over Z/p the same cycles, their
-/// coefficients taken in `0..p`. `None` where this route does not apply (no generators asked
-/// for, another dimension, a periodic box, the simplicial method); the cycles then come from
-/// the cubical complex. Public for callers that hold the cubes elsewhere (the Python package).
+/// The groups and a basis of cycles of a full cubical set of dimension ≤ 3 in a box that is
+/// not periodic, from union-finds and a sweep over the grid (`gmap_homology::cubical_gens`:
+/// a vertex per component, the boundary of each hole or cavity, in 3-D the fundamental
+/// cycles of the sweep's forest), in time linear in the cells plus the cycles' length:
+/// `shape` and `bits` as for `gmap_homology::cubical_gens`, the cells named by minimal vertex
+/// (offset by `min`, the box's minimal vertex) and extent, their axes reversed with
+/// `reversed` (a C-ordered array). Over Z/p the same cycles, their coefficients taken in
+/// `0..p`. `None` where this route does not apply (no generators asked for, another
+/// dimension, a periodic box, the simplicial method) or hands the set on (a 3-D sweep that
+/// stops at a vertex, said in a note); the cycles then come from the cubical complex. Public
+/// for callers that hold the cubes elsewhere (the Python package).
 pub fn cubical_generators(
     shape: &[usize],
     bits: &[u8],
@@ -517,7 +520,7 @@ pub fn cubical_generators(
     file: &str,
 ) -> Result<Option<(gmap_homology::Homology, Vec<NamedGenerator>)>> {
     if !o.generators
-        || shape.len() > 2
+        || shape.len() > 3
         || o.periodic
         || o.method != route::Method::Cellular
         || o.simplify
@@ -528,8 +531,14 @@ pub fn cubical_generators(
     check_field(o.field)?;
     o.progress
         .stage("one pass over the cells: components, the complement's components, the loops of a spanning forest");
-    let g = gmap_homology::cubical_gens::cubical_generators(shape, bits)
-        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+    let g = match gmap_homology::cubical_gens::cubical_generators(shape, bits) {
+        Ok(g) => g,
+        Err(gmap_homology::cubical::CubicalError::NotReduced(why)) => {
+            o.progress.note(&format!("{why}: the cubical complex instead"));
+            return Ok(None);
+        }
+        Err(e) => return Err(Error::from_source(ErrorKind::Limit, &e).context(file.to_string())),
+    };
     let d = shape.len();
     let betti: Vec<usize> = g.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect();
     let groups = gmap_homology::Homology {

@@ -20,7 +20,7 @@ pub struct Cubes<'a> {
 }
 
 /// The homology of a borrowed cubical set, as the facade computes that of a `CubicalSet`:
-/// with generators in dimension ≤ 2, from the one-pass structures
+/// with generators in dimension ≤ 3, from union-finds and a sweep over the grid
 /// (`gmap::report::cubical_generators`); in one pass over the cubes where that applies
 /// (dimension ≤ 3, no generators:
 /// `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array never copied
@@ -61,7 +61,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if let Some(groups) = one_pass {
         return Ok(report(groups, None));
     }
-    // dimension ≤ 2 with generators: the facade's cycles read off the one-pass structures
+    // dimension ≤ 3 with generators: the facade's cycles from union-finds and a sweep
     // (the cells' axes given back in the caller's order)
     if let Some((groups, gens)) =
         gmap::report::cubical_generators(c.shape, c.bits, &[], c.reversed, o, "the array").map_err(Failure::from)?

@@ -48,6 +48,10 @@ pub enum CubicalError {
     /// A block's message (between processes) is malformed.
     #[error("bad block message: {0}")]
     BadMessage(String),
+    /// A route could not reduce the set and hands it on (the generators of a 3-D set whose
+    /// sweep stops at a vertex: the cubical complex's route takes it).
+    #[error("{0}")]
+    NotReduced(String),
     /// A check of a result failed (a bug, reported rather than a wrong answer).
     #[error("internal error: {0}")]
     Internal(String),

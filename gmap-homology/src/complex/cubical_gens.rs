@@ -1,28 +1,30 @@
-//! Representative cycles of a cubical set of dimension 1 or 2 in time linear in the cells,
-//! read off the structures of the one-pass route rather than off a reduced chain complex.
+//! Representative cycles of a cubical set of dimension ≤ 3 in time linear in the cells (plus
+//! the length of the cycles), read off union-finds and a sweep over the grid rather than off
+//! a chain complex built first.
 //!
-//! A set X of closed unit squares in the plane has torsion-free homology, and a basis of each
-//! group comes from two union-finds:
+//! A set X of closed unit cubes in `R^d`, `d ≤ 3`, has torsion-free homology, and a basis of
+//! each group comes from:
 //!
 //! * **`H_0`**: one vertex per component of X (the smallest in the grid's order), the roots of
 //!   a union-find over the vertices and edges of X.
-//! * **`H_1`** (2-D): the boundary of each bounded component C of the complement (absent
-//!   squares joined across shared edges; those on the box's border join the unbounded
-//!   outside): `∂(Σ_{v ∈ C} v)`, the edges between a square of C and a square of X, with the
-//!   signs of `∂v`. It is a cycle of X (each of its edges lies on a square of X), and by
-//!   Alexander duality (`H̃_1(X) ≅ H̃^0(S^2 \ X)`, the winding number of the boundary of `C_i`
-//!   around a point of `C_j` being `δ_ij`) these cycles are a basis over Z: each is a hole's
-//!   own outline, as short as the hole's perimeter.
+//! * **`H_{d-1}`** (d ≥ 2): the boundary of each bounded component C of the complement (absent
+//!   cubes joined across shared facets; those on the box's border join the unbounded
+//!   outside): `∂(Σ_{v ∈ C} v)`, the facets between a cube of C and a cube of X, with the
+//!   signs of `∂v`. It is a cycle of X (each of its facets lies on a cube of X), and by
+//!   Alexander duality (`H̃_{d-1}(X) ≅ H̃^0(S^d \ X)`, the linking number of the boundary of
+//!   `C_i` with a point of `C_j` being `δ_ij`) these cycles are a basis over Z: in 2-D each
+//!   hole's outline, in 3-D each cavity's skin.
+//! * **`H_1` of a 3-D set**: collapses and coreductions over the cells on the grid itself
+//!   (the sweep of [`crate::generators`], without building the complex), which pair each
+//!   vertex but one per component with an edge, in a forest grown inside small aligned blocks
+//!   first. The edges the sweep leaves are a basis, each lifted to its fundamental cycle: the
+//!   edge and the path of the forest between its ends. Where the sweep stalls, a cell is
+//!   made critical and the few critical edges are finished by [`crate::generators`].
 //!
 //! The Betti numbers so found are checked against the Euler characteristic counted on the
-//! cells. Time O(cells · α); memory a byte per point of the doubled grid and a `u32` per
-//! vertex, or two `u32` per square while the complement is labelled.
-//!
-//! In 3-D, `H_0` and `H_2` (the boundaries of the cavities) would come the same way, but a
-//! basis of `H_1` needs loops that no union-find gives: a fixed spanning forest contracted
-//! first leaves sweeps stuck on random sets (every edge on two squares, every square with two
-//! edges), so 3-D sets take the cubical complex ([`crate::cubical`]) and
-//! [`crate::generators`].
+//! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: three
+//! bits more per point for the waiting cells), or two `u32` per cube while the complement is
+//! labelled.
 //!
 //! ```
 //! use gmap_homology::cubical_gens::cubical_generators;
@@ -35,7 +37,13 @@
 //! assert_eq!((loop1.dim, loop1.chain.len()), (1, 4));
 //! ```
 
+#![allow(clippy::needless_range_loop)] // axes index several arrays at once
+
+use std::collections::VecDeque;
+
 use super::cubical::CubicalError;
+use crate::engine::chain::ChainComplex;
+use crate::engine::sparse::SparseMatrix;
 
 /// A representative cycle of one free summand of `H_dim`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -61,16 +69,17 @@ pub struct CubicalGenerators {
     pub grid: Vec<usize>,
 }
 
-/// The bytes [`cubical_generators`] holds for a box of `shape` squares besides its input and
+/// The bytes [`cubical_generators`] holds for a box of `shape` cubes besides its input and
 /// its output (`None` past `u64`).
 pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
     let prod = |f: &dyn Fn(usize) -> u64| shape.iter().try_fold(1u64, |v, &l| v.checked_mul(f(l)));
     let grid = prod(&|l| 2 * l as u64 + 1)?;
     let vertices = prod(&|l| l as u64 + 1)?;
-    let squares = prod(&|l| l as u64)?;
-    // the doubled grid and a u32 per vertex, or two u32 per square while the complement is
-    // labelled
-    Some(grid.checked_add(vertices.checked_mul(4)?)?.max(squares.checked_mul(8)?))
+    let cubes = prod(&|l| l as u64)?;
+    // the doubled grid and a u32 per vertex, in 3-D three bits per grid point for the
+    // sweep's waiting cells; or two u32 per cube while the complement is labelled
+    let sweep = if shape.len() == 3 { grid.div_ceil(8).checked_mul(3)? } else { 0 };
+    Some(grid.checked_add(vertices.checked_mul(4)?)?.checked_add(sweep)?.max(cubes.checked_mul(8)?))
 }
 
 /// A cell of the closure, in the doubled grid's bytes.
@@ -121,6 +130,19 @@ impl Box {
 
     fn cube_count(&self) -> usize {
         self.n.iter().product()
+    }
+
+    /// The doubled coordinates of grid point `p`.
+    #[inline]
+    fn coords(&self, p: usize) -> [usize; 3] {
+        [p % self.g[0], (p / self.gs[1]) % self.g[1], p / self.gs[2]]
+    }
+
+    /// The vertex number of grid point `p` (even coordinates).
+    #[inline]
+    fn vertex_of(&self, p: usize) -> usize {
+        let c = self.coords(p);
+        (c[0] / 2) * self.vs[0] + (c[1] / 2) * self.vs[1] + (c[2] / 2) * self.vs[2]
     }
 }
 
@@ -179,16 +201,30 @@ fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Result<Vec<T>,
     Ok(v)
 }
 
-/// A basis of the homology of the set of a box of `shape` squares (axis 0 fastest, d = 1 or
-/// 2, not periodic) whose presence bytes are `bits` (non-zero: in the set): a cycle per free
-/// summand, in the cells of the doubled grid. See the [module docs](self). Refuses another
-/// dimension, a shape not matching `bits`, a doubled grid past `u32` numbers, and memory over
-/// the limit. O(cells · α).
+/// A basis of the homology of the set of a box of `shape` cubes (axis 0 fastest,
+/// `1 ≤ d ≤ 3`, not periodic) whose presence bytes are `bits` (non-zero: in the set): a cycle
+/// per free summand, dimension by dimension, in the cells of the doubled grid. See the
+/// [module docs](self). Refuses another dimension, a shape not matching `bits`, a doubled
+/// grid past `u32` numbers, memory over the limit, and (3-D) a set whose sweep stops at a
+/// vertex or leaves over 2,000 cells critical ([`CubicalError::NotReduced`]: the cubical
+/// complex's route then applies). O(cells · α + the length of the cycles).
 pub fn cubical_generators(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerators, CubicalError> {
+    cubical_generators_pairing(shape, bits, usize::MAX)
+}
+
+/// [`cubical_generators`] with at most `pairs` eliminations between cells of dimension ≥ 1
+/// in the 3-D sweep, the rest made critical (for the tests of that part; any `pairs` gives a
+/// basis).
+#[doc(hidden)]
+pub fn cubical_generators_pairing(
+    shape: &[usize],
+    bits: &[u8],
+    pairs: usize,
+) -> Result<CubicalGenerators, CubicalError> {
     let d = shape.len();
-    if !(1..=2).contains(&d) || shape.contains(&0) {
+    if !(1..=3).contains(&d) || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!(
-            "the one-pass generators take dimensions 1 and 2, not the shape {shape:?}"
+            "the one-pass generators take dimensions 1 to 3, not the shape {shape:?}"
         )));
     }
     let cubes = shape.iter().try_fold(1usize, |v, &l| v.checked_mul(l));
@@ -208,19 +244,29 @@ pub fn cubical_generators(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerat
     gmap_core::resources::check_memory("the generators of a cubical set", bytes_needed(shape))?;
     let bx = Box::new(shape);
     let mut betti = vec![0u64; d + 1];
-    // H_1 first: its union-find over the squares is freed before the grid is built
-    let holes = if d == 2 { complement_boundaries(&bx, bits)? } else { Vec::new() };
+    // H_{d-1} first: its union-find over the cubes is freed before the grid is built
+    let top = if d >= 2 { complement_boundaries(&bx, bits)? } else { Vec::new() };
     let mut st = try_vec(bx.grid_len(), 0u8, "the cells of the doubled grid")?;
     let cells = mark_closure(&bx, bits, &mut st);
     let euler_characteristic: i64 = cells.iter().enumerate().map(|(k, &c)| if k % 2 == 0 { c } else { -c }).sum();
     let mut forest = try_vec(bx.vertex_count(), 0u32, "the components of the vertices")?;
     let roots = components(&bx, &st, &mut forest);
     betti[0] = roots.len() as u64;
-    betti[1] = holes.len() as u64;
     let mut generators: Vec<CubeCycle> =
         roots.iter().map(|&p| CubeCycle { dim: 0, chain: vec![(p as u64, 1)] }).collect();
-    generators.extend(holes);
-    if betti[0] as i64 - betti[1] as i64 != euler_characteristic {
+    if d == 3 {
+        // the union-find's memory becomes the depths in the forest
+        let loops = loops(&bx, &mut st, &mut forest, &roots, pairs)?;
+        betti[1] = loops.len() as u64;
+        generators.extend(loops);
+    }
+    if d >= 2 {
+        betti[d - 1] = top.len() as u64;
+        generators.extend(top);
+    }
+    let alternating: i64 =
+        betti.iter().enumerate().map(|(k, &b)| if k % 2 == 0 { b as i64 } else { -(b as i64) }).sum();
+    if alternating != euler_characteristic {
         return Err(CubicalError::Internal(format!(
             "the Betti numbers {betti:?} do not sum to the Euler characteristic {euler_characteristic}"
         )));
@@ -382,4 +428,515 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
             CubeCycle { dim: d - 1, chain }
         })
         .collect())
+}
+
+/// Cell states of the doubled grid during the 3-D sweep, besides [`PRESENT`]: eliminated
+/// (paired or frozen), and two 3-bit counts: the faces and the cofaces still alive (for an
+/// eliminated vertex the faces' bits hold the direction of its parent in the forest).
+const DEAD: u8 = 2;
+const FACES_SHIFT: u8 = 2;
+const COFACES_SHIFT: u8 = 5;
+/// the parent direction of a root
+const ROOT: u8 = 7;
+
+#[inline]
+fn faces(s: u8) -> u8 {
+    (s >> FACES_SHIFT) & 7
+}
+
+#[inline]
+fn cofaces(s: u8) -> u8 {
+    s >> COFACES_SHIFT
+}
+
+#[inline]
+fn with_faces(s: u8, c: u8) -> u8 {
+    (s & !(7 << FACES_SHIFT)) | (c << FACES_SHIFT)
+}
+
+#[inline]
+fn with_cofaces(s: u8, c: u8) -> u8 {
+    (s & !(7 << COFACES_SHIFT)) | (c << COFACES_SHIFT)
+}
+
+#[inline]
+fn alive(s: u8) -> bool {
+    s & (PRESENT | DEAD) == PRESENT
+}
+
+/// The faces of grid point `p` (coordinates `c`): its two neighbours along each odd axis.
+#[inline]
+fn for_faces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize)) {
+    for a in 0..bx.d {
+        if c[a] % 2 == 1 {
+            f(p - bx.gs[a]);
+            f(p + bx.gs[a]);
+        }
+    }
+}
+
+/// The cofaces of grid point `p` within the grid: its neighbours along each even axis.
+#[inline]
+fn for_cofaces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize)) {
+    for a in 0..bx.d {
+        if c[a].is_multiple_of(2) {
+            if c[a] > 0 {
+                f(p - bx.gs[a]);
+            }
+            if c[a] + 1 < bx.g[a] {
+                f(p + bx.gs[a]);
+            }
+        }
+    }
+}
+
+#[inline]
+fn dim_of(c: &[usize; 3]) -> usize {
+    c.iter().filter(|&&x| x % 2 == 1).count()
+}
+
+/// The level of the cell at coordinates `c`: the largest over its odd axes of
+/// `trailing_zeros(x + 1)`, x its lower end along the axis (an edge of level l lies inside an
+/// aligned block of `2^(l+1)` vertices per axis, in none smaller).
+#[inline]
+fn level(c: &[usize; 3]) -> usize {
+    c.iter().filter(|&&x| x % 2 == 1).map(|&x| (x / 2 + 1).trailing_zeros() as usize).max().unwrap_or(0)
+}
+
+/// `∂[e, q]`: the coefficient of edge `e` in the boundary of the square at `q` (coordinates
+/// `cq`): along its first odd axis the upper face +1, along its second −1, the lower ones the
+/// opposite.
+#[inline]
+fn square_sign(bx: &Box, cq: &[usize; 3], q: usize, e: usize) -> i64 {
+    let first = (0..bx.d).find(|&a| cq[a] % 2 == 1).unwrap_or(0);
+    let upper = e > q;
+    let along_first = e.abs_diff(q) == bx.gs[first];
+    match (along_first, upper) {
+        (true, true) | (false, false) => 1,
+        _ => -1,
+    }
+}
+
+/// The cells waiting for the sweep, in this order: vertices (lowest point first); edges with
+/// one alive face (their coreductions grow the forest), lowest level first, so that the
+/// forest grows inside small blocks before it crosses larger ones and its paths stay short;
+/// edges with one alive coface, then squares, highest level first (an edge left over is a
+/// cycle of its own, lifted through the forest: those paired away first are the ones whose
+/// paths would be long); cubes (lowest point first). Within a level, first come first.
+struct Waiting {
+    /// vertices and cubes, a bit per grid point
+    bits: [Vec<u64>; 2],
+    cursor: [usize; 2],
+    pending: [usize; 2],
+    /// per level: edges to coreduce, edges to collapse, squares
+    grow: Vec<VecDeque<u32>>,
+    collapse: Vec<VecDeque<u32>>,
+    squares: Vec<VecDeque<u32>>,
+}
+
+impl Waiting {
+    fn new(len: usize) -> Result<Self, CubicalError> {
+        let w = len.div_ceil(64);
+        let v = || try_vec(w, 0u64, "the sweep's waiting cells");
+        let levels = || (0..usize::BITS).map(|_| VecDeque::new()).collect::<Vec<_>>();
+        Ok(Waiting {
+            bits: [v()?, v()?],
+            cursor: [0; 2],
+            pending: [0; 2],
+            grow: levels(),
+            collapse: levels(),
+            squares: levels(),
+        })
+    }
+
+    /// Queues the cell at `p` (coordinates `c`), ready `by_faces` (one alive face) or by its
+    /// cofaces.
+    #[inline]
+    fn push(&mut self, c: &[usize; 3], p: usize, by_faces: bool) {
+        let k = dim_of(c);
+        match k {
+            1 if by_faces => self.grow[level(c)].push_back(p as u32),
+            1 => self.collapse[level(c)].push_back(p as u32),
+            2 => self.squares[level(c)].push_back(p as u32),
+            _ => {
+                let i = usize::from(k == 3);
+                let (w, b) = (p / 64, 1u64 << (p % 64));
+                if self.bits[i][w] & b == 0 {
+                    self.bits[i][w] |= b;
+                    self.pending[i] += 1;
+                    self.cursor[i] = self.cursor[i].min(w);
+                }
+            }
+        }
+    }
+
+    fn pop(&mut self) -> Option<usize> {
+        if self.pending[0] > 0 {
+            return Some(self.pop_bit(0));
+        }
+        let first = |q: &mut VecDeque<u32>| q.pop_front().map(|p| p as usize);
+        if let Some(q) = self.grow.iter_mut().find(|q| !q.is_empty()) {
+            return first(q);
+        }
+        if let Some(q) = self.collapse.iter_mut().rev().find(|q| !q.is_empty()) {
+            return first(q);
+        }
+        if let Some(q) = self.squares.iter_mut().rev().find(|q| !q.is_empty()) {
+            return first(q);
+        }
+        (self.pending[1] > 0).then(|| self.pop_bit(1))
+    }
+
+    /// The lowest waiting point of `bits[i]` (one is waiting).
+    fn pop_bit(&mut self, i: usize) -> usize {
+        let bits = &mut self.bits[i];
+        let mut w = self.cursor[i];
+        while bits[w] == 0 {
+            w += 1;
+        }
+        let b = bits[w].trailing_zeros() as usize;
+        bits[w] &= bits[w] - 1;
+        self.cursor[i] = w;
+        self.pending[i] -= 1;
+        w * 64 + b
+    }
+}
+
+/// What the 3-D sweep keeps of the edges it had to make critical: their rows of `∂_2` on the
+/// squares still standing (the fill of later coreductions included).
+#[derive(Default)]
+struct Frozen {
+    /// the frozen edges, as grid points
+    edges: Vec<usize>,
+    /// per square with an entry in a frozen row: `(frozen edge number, coefficient)`
+    rows: std::collections::HashMap<usize, Vec<(u32, i64)>>,
+}
+
+impl Frozen {
+    /// `rows[target] -= lambda · rows[source]` (sorted by frozen edge, zeros dropped).
+    fn subtract(&mut self, target: usize, lambda: i64, source: &[(u32, i64)]) -> Result<(), CubicalError> {
+        let old = self.rows.remove(&target).unwrap_or_default();
+        let mut out = Vec::with_capacity(old.len() + source.len());
+        let (mut i, mut j) = (0, 0);
+        let overflow = || CubicalError::Internal("a coefficient of the sweep's fill overflows".to_string());
+        while i < old.len() || j < source.len() {
+            let take_old = j == source.len() || (i < old.len() && old[i].0 < source[j].0);
+            let take_new = i == old.len() || (j < source.len() && source[j].0 < old[i].0);
+            let (k, v) = if take_old {
+                i += 1;
+                old[i - 1]
+            } else if take_new {
+                j += 1;
+                (source[j - 1].0, source[j - 1].1.checked_mul(-lambda).ok_or_else(overflow)?)
+            } else {
+                i += 1;
+                j += 1;
+                let v = old[i - 1].1.checked_sub(lambda.checked_mul(source[j - 1].1).ok_or_else(overflow)?);
+                (old[i - 1].0, v.ok_or_else(overflow)?)
+            };
+            if v != 0 {
+                out.push((k, v));
+            }
+        }
+        if !out.is_empty() {
+            self.rows.insert(target, out);
+        }
+        Ok(())
+    }
+}
+
+/// `H_1` of a 3-D set: collapses and coreductions over all the cells, from one vertex set
+/// aside per component (Mrozek and Batko's coreductions with collapses, as the sweep of
+/// [`crate::generators`] does on a chain complex, here on the grid itself). A cell with one
+/// alive face is paired with it, a cell with one alive coface with that, in the order of
+/// [`Waiting`]. A vertex paired with an edge by a
+/// coreduction records the edge's other end as its parent (already eliminated: set aside,
+/// or paired the same way), so those pairs make a forest rooted at the set-aside vertices.
+///
+/// When no cell is ready the lowest cell of the lowest dimension with an alive face or
+/// coface is made critical (frozen): an edge keeps its row of `∂_2` on the squares still
+/// standing, updated by the later coreductions of edges into squares (the fill); squares
+/// and cubes need nothing for `H_1`. At the end the edges never paired are cycles on no
+/// square, a basis element each; the frozen edges and the squares with entries in their rows
+/// make a small complex whose `H_1` comes from [`crate::generators`]. Every cycle is lifted
+/// to X through the forest: an edge becomes its fundamental cycle. A vertex that would have
+/// to be frozen is refused ([`CubicalError::NotReduced`]). `pairs` bounds the eliminations
+/// between cells of dimension ≥ 1 (tests of the frozen part).
+fn loops(
+    bx: &Box,
+    st: &mut [u8],
+    depth: &mut [u32],
+    roots: &[usize],
+    mut pairs: usize,
+) -> Result<Vec<CubeCycle>, CubicalError> {
+    let point = |c: [usize; 3]| c[0] * bx.gs[0] + c[1] * bx.gs[1] + c[2] * bx.gs[2];
+    let mut waiting = Waiting::new(bx.grid_len())?;
+    for_each_point([0; 3], [1; 3], bx.g, |c| {
+        let p = point(c);
+        if st[p] & PRESENT == 0 {
+            return;
+        }
+        let mut k = 0u8;
+        for_cofaces(bx, &c, p, |q| k += st[q] & PRESENT);
+        st[p] = with_cofaces(with_faces(st[p], 2 * dim_of(&c) as u8), k);
+        if k == 1 {
+            waiting.push(&c, p, false);
+        }
+    });
+    // a cell no longer alive: its alive faces lose a coface, its alive cofaces a face
+    let release = |st: &mut [u8], waiting: &mut Waiting, y: usize| {
+        let c = bx.coords(y);
+        for_faces(bx, &c, y, |x| {
+            if alive(st[x]) {
+                let n = cofaces(st[x]) - 1;
+                st[x] = with_cofaces(st[x], n);
+                if n == 1 {
+                    waiting.push(&bx.coords(x), x, false);
+                }
+            }
+        });
+        for_cofaces(bx, &c, y, |z| {
+            if alive(st[z]) {
+                let n = faces(st[z]) - 1;
+                st[z] = with_faces(st[z], n);
+                if n == 1 {
+                    waiting.push(&bx.coords(z), z, true);
+                }
+            }
+        });
+    };
+    for &r in roots {
+        st[r] = with_faces(st[r] | DEAD, ROOT);
+        depth[bx.vertex_of(r)] = 0;
+        release(st, &mut waiting, r);
+    }
+    let mut frozen = Frozen::default();
+    // where the search for a cell to freeze goes on, per dimension (cells only lose entries)
+    let mut scan = [0usize; 4];
+    loop {
+        let p = match waiting.pop() {
+            Some(p) => p,
+            None => {
+                // nothing ready: freeze the lowest cell with entries of the lowest dimension
+                let Some((k, p)) = next_with_entries(bx, st, &mut scan) else { break };
+                match k {
+                    0 => {
+                        return Err(CubicalError::NotReduced(format!(
+                            "the sweep of the cells stopped at the vertex at grid point {p}"
+                        )))
+                    }
+                    1 => {
+                        let c = bx.coords(p);
+                        let id = frozen.edges.len() as u32;
+                        for_cofaces(bx, &c, p, |q| {
+                            if alive(st[q]) {
+                                let sign = square_sign(bx, &bx.coords(q), q, p);
+                                frozen.rows.entry(q).or_default().push((id, sign));
+                            }
+                        });
+                        frozen.edges.push(p);
+                    }
+                    _ => {}
+                }
+                st[p] |= DEAD;
+                release(st, &mut waiting, p);
+                continue;
+            }
+        };
+        let s = st[p];
+        if !alive(s) || (faces(s) != 1 && cofaces(s) != 1) {
+            continue;
+        }
+        let c = bx.coords(p);
+        let k = dim_of(&c);
+        let coreduction = faces(s) == 1;
+        if (k >= 2 || (k == 1 && !coreduction)) && pairs == 0 {
+            continue;
+        }
+        let (lower, upper) = if coreduction {
+            let mut a = p;
+            for_faces(bx, &c, p, |x| {
+                if alive(st[x]) {
+                    a = x;
+                }
+            });
+            (a, p)
+        } else {
+            let mut b = p;
+            for_cofaces(bx, &c, p, |z| {
+                if alive(st[z]) {
+                    b = z;
+                }
+            });
+            (p, b)
+        };
+        if dim_of(&bx.coords(lower)) >= 1 {
+            pairs -= 1;
+        }
+        match (k, coreduction) {
+            (1, true) => {
+                // a vertex paired with its edge: its parent is the edge's other end
+                let u = 2 * p - lower;
+                let axis = (0..bx.d).find(|&b| c[b] % 2 == 1).unwrap_or(0);
+                depth[bx.vertex_of(lower)] = depth[bx.vertex_of(u)] + 1;
+                st[lower] = with_faces(st[lower], 2 * axis as u8 + u8::from(u > lower));
+            }
+            (2, true) => {
+                // an edge into a square: the squares on the edge take the square's entries
+                // in the frozen rows
+                if let Some(source) = frozen.rows.remove(&upper) {
+                    let eps = square_sign(bx, &c, upper, lower);
+                    let ce = bx.coords(lower);
+                    let mut others = Vec::new();
+                    for_cofaces(bx, &ce, lower, |q| {
+                        if q != upper && alive(st[q]) {
+                            others.push(q);
+                        }
+                    });
+                    for q in others {
+                        let alpha = square_sign(bx, &bx.coords(q), q, lower);
+                        frozen.subtract(q, alpha * eps, &source)?;
+                    }
+                }
+            }
+            _ => {}
+        }
+        // a square paired away takes its column with it
+        for y in [lower, upper] {
+            if dim_of(&bx.coords(y)) == 2 {
+                frozen.rows.remove(&y);
+            }
+        }
+        st[lower] |= DEAD;
+        st[upper] |= DEAD;
+        release(st, &mut waiting, lower);
+        release(st, &mut waiting, upper);
+    }
+    // the edges never paired nor frozen: a basis element each
+    let mut out = Vec::new();
+    let mut start = [0usize; 3];
+    for a in 0..bx.d {
+        start[a] = 1;
+        for_each_point(start, [2; 3], bx.g, |c| {
+            let e = point(c);
+            if alive(st[e]) {
+                let mut chain = Vec::new();
+                fundamental_cycle(bx, st, depth, e, 1, &mut chain);
+                chain.sort_unstable();
+                out.push(CubeCycle { dim: 1, chain });
+            }
+        });
+        start[a] = 0;
+    }
+    if !frozen.edges.is_empty() {
+        out.extend(frozen_loops(bx, st, depth, &frozen)?);
+    }
+    Ok(out)
+}
+
+/// The lowest alive cell of the lowest dimension with an alive face or coface, from the
+/// scan's positions on.
+fn next_with_entries(bx: &Box, st: &[u8], scan: &mut [usize; 4]) -> Option<(usize, usize)> {
+    for k in 0..4 {
+        while scan[k] < st.len() {
+            let p = scan[k];
+            let s = st[p];
+            if alive(s) && (faces(s) > 0 || cofaces(s) > 0) && dim_of(&bx.coords(p)) == k {
+                return Some((k, p));
+            }
+            scan[k] += 1;
+        }
+    }
+    None
+}
+
+/// The cycles of the frozen part: the complex `C_2 → C_1 → 0` of the squares with entries in
+/// the frozen rows and the frozen edges, handed to [`crate::generators::generators`]; each
+/// cycle found, a sum of frozen edges, is lifted to the sum of their fundamental cycles.
+fn frozen_loops(bx: &Box, st: &[u8], depth: &[u32], frozen: &Frozen) -> Result<Vec<CubeCycle>, CubicalError> {
+    let mut squares: Vec<&usize> = frozen.rows.keys().collect();
+    squares.sort_unstable();
+    let columns: Vec<Vec<(u32, i64)>> = squares.iter().map(|q| frozen.rows[*q].clone()).collect();
+    let bad = |what: String| CubicalError::Internal(what);
+    let n = frozen.edges.len();
+    let d2 = SparseMatrix::try_from_columns(n, &columns).map_err(|e| bad(e.to_string()))?;
+    let complex = ChainComplex::try_new_unchecked_dd(vec![0, n, squares.len()], vec![SparseMatrix::zeros(0, n), d2])
+        .map_err(|e| bad(e.to_string()))?;
+    let found = crate::generators::generators(&complex, None).map_err(|e| match e {
+        crate::HomologyError::GeneratorsTooLarge { .. } => {
+            CubicalError::NotReduced(format!("the part of the sweep made critical is too large: {e}"))
+        }
+        e => bad(format!("the part of the sweep made critical: {e}")),
+    })?;
+    let mut out = Vec::new();
+    for g in found.into_iter().filter(|g| g.dim == 1) {
+        if g.order != 0 {
+            return Err(bad("torsion in H_1 of a cubical set of dimension 3".to_string()));
+        }
+        let mut chain = Vec::new();
+        for &(i, coef) in &g.chain {
+            fundamental_cycle(bx, st, depth, frozen.edges[i as usize], coef, &mut chain);
+        }
+        out.push(CubeCycle { dim: 1, chain: merged(chain) });
+    }
+    Ok(out)
+}
+
+/// The vertex one step up the forest from vertex `x`, the edge between them, and the edge's
+/// coefficient when walked that way.
+#[inline]
+fn step_up(bx: &Box, st: &[u8], x: usize) -> (usize, usize, i64) {
+    let dir = faces(st[x]) as usize;
+    let (a, up) = (dir / 2, dir % 2 == 1);
+    let s = bx.gs[a];
+    if up {
+        (x + 2 * s, x + s, 1)
+    } else {
+        (x - 2 * s, x - s, -1)
+    }
+}
+
+/// `sign` times the edge at grid point `e` plus the path of the forest between its ends: a
+/// cycle of X, added to `out`.
+fn fundamental_cycle(bx: &Box, st: &[u8], depth: &[u32], e: usize, sign: i64, out: &mut Vec<(u64, i64)>) {
+    let c = bx.coords(e);
+    let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
+    out.push((e as u64, sign));
+    // ∂e = upper − lower: the path from the upper end to the lower one closes it
+    let (mut x, mut y) = (e + bx.gs[a], e - bx.gs[a]);
+    let (mut dx, mut dy) = (depth[bx.vertex_of(x)], depth[bx.vertex_of(y)]);
+    while dx > dy {
+        let (nx, edge, k) = step_up(bx, st, x);
+        out.push((edge as u64, sign * k));
+        x = nx;
+        dx -= 1;
+    }
+    while dy > dx {
+        let (ny, edge, k) = step_up(bx, st, y);
+        out.push((edge as u64, -sign * k));
+        y = ny;
+        dy -= 1;
+    }
+    while x != y {
+        let (nx, ex, kx) = step_up(bx, st, x);
+        let (ny, ey, ky) = step_up(bx, st, y);
+        out.push((ex as u64, sign * kx));
+        out.push((ey as u64, -sign * ky));
+        x = nx;
+        y = ny;
+    }
+}
+
+/// The chain with its cells sorted, their coefficients summed and the zeros dropped.
+fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
+    chain.sort_unstable_by_key(|x| x.0);
+    let mut out: Vec<(u64, i64)> = Vec::with_capacity(chain.len());
+    for (p, c) in chain {
+        match out.last_mut() {
+            Some(last) if last.0 == p => last.1 += c,
+            _ => out.push((p, c)),
+        }
+    }
+    out.retain(|x| x.1 != 0);
+    out
 }

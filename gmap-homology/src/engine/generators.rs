@@ -13,10 +13,11 @@
 //!
 //! Each cycle found is then lifted back through the eliminated pairs (the chain map of each
 //! reduction, `morse` (private)) to a chain of the input's cells in the same class, and checked
-//! to be a cycle of the input before it is returned. Stage 2 is dense — O(m^3) for m cells of
-//! a dimension — so it is limited to [`GENERATOR_CELL_LIMIT`] cells per dimension *after*
-//! stage 1; stage 1 and the lifting are near-linear, so generators of complexes with millions
-//! of cells are within reach.
+//! to be a cycle of the input before it is returned. A cell of the small complex on no entry
+//! (its boundary zero, in no boundary) is a generator by itself; stage 2 sees the others. It
+//! is dense — O(m^3) for m cells of a dimension — so it is limited to
+//! [`GENERATOR_CELL_LIMIT`] cells with entries per dimension *after* stage 1; stage 1 is
+//! near-linear, and the lifting costs the log of stage 1 per generator.
 
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
@@ -30,6 +31,10 @@ use crate::engine::snf::smith_tracked;
 /// Largest number of cells in one dimension of the reduced complex for which generators are
 /// computed.
 pub const GENERATOR_CELL_LIMIT: usize = 2000;
+
+/// The most steps of lifting (a generator times the eliminated pairs of its dimension) done
+/// before [`HomologyError::GeneratorsLiftTooLong`]: about ten seconds.
+pub const LIFT_WORK_LIMIT: u128 = 10_000_000_000;
 
 /// A representative cycle of one cyclic summand of `H_dim`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -81,16 +86,33 @@ pub fn generators_within(c: &ChainComplex, field: Option<u64>, limit: usize) -> 
 /// Stage 1, stage 2 on what is left, and the lifting with its cycle check.
 fn reduced_then_lifted<R: Euclid>(ring: &R, c: &ChainComplex, limit: usize) -> Result<Vec<Generator>, HomologyError> {
     let pre = prereduce(ring, c, true).or_else(|| prereduce(ring, c, false)).ok_or(HomologyError::GeneratorOverflow)?;
-    for k in 0..pre.chain.counts().len() {
-        if pre.chain.count(k) > limit {
-            return Err(HomologyError::GeneratorsTooLarge { dim: k, cells: pre.chain.count(k), limit });
+    let (linked, isolated) = split_isolated(&pre.chain)?;
+    for k in 0..linked.complex.counts().len() {
+        if linked.complex.count(k) > limit {
+            return Err(HomologyError::GeneratorsTooLarge { dim: k, cells: linked.complex.count(k), limit });
         }
     }
-    let small = compute(ring, &pre.chain).unwrap_or(Err(HomologyError::GeneratorOverflow))?;
+    // the cells on no entry are cycles that bound nothing, a free summand each; the dense
+    // stage sees the others only
+    let dense = compute(ring, &linked.complex).unwrap_or(Err(HomologyError::GeneratorOverflow))?;
+    let mut small: Vec<Generator> = Vec::with_capacity(dense.len() + isolated.iter().map(Vec::len).sum::<usize>());
+    for (k, cells) in isolated.iter().enumerate() {
+        small.extend(cells.iter().map(|&j| Generator { dim: k, order: Natural::from(0u64), chain: vec![(j, 1)] }));
+        small.extend(dense.iter().filter(|g| g.dim == k && g.order == 0).map(|g| linked.renumbered(g)));
+        small.extend(dense.iter().filter(|g| g.dim == k && g.order != 0).map(|g| linked.renumbered(g)));
+    }
+    // each lifting walks back over the pairs of its dimension: refused up front past a few
+    // seconds of that work rather than run for hours
+    let pairs = pre.pairs_per_dimension();
+    let work: u128 = small.iter().map(|g| pairs.get(g.dim).copied().unwrap_or(0) as u128).sum();
+    if work > LIFT_WORK_LIMIT {
+        return Err(HomologyError::GeneratorsLiftTooLong { generators: small.len(), steps: work });
+    }
     let mut out = Vec::with_capacity(small.len());
     for g in small {
         let chain: Vec<(u32, R::E)> = g.chain.iter().map(|&(j, v)| (j, ring.of_i64(v))).collect();
-        let lifted = lift(ring, c, &pre, g.dim, &chain).ok_or(HomologyError::GeneratorOverflow)?;
+        let pairs_k = pairs.get(g.dim).copied().unwrap_or(0);
+        let lifted = lift(ring, c, &pre, g.dim, pairs_k, &chain).ok_or(HomologyError::GeneratorOverflow)?;
         if !is_cycle(ring, c, g.dim, &lifted).ok_or(HomologyError::GeneratorOverflow)? {
             return Err(HomologyError::Internal("a lifted generator is not a cycle"));
         }
@@ -103,20 +125,104 @@ fn reduced_then_lifted<R: Euclid>(ring: &R, c: &ChainComplex, limit: usize) -> R
     Ok(out)
 }
 
+/// The part of a complex whose cells have an entry (in their column or their row), with the
+/// numbers they have in the whole.
+struct Linked {
+    complex: ChainComplex,
+    /// `ids[k][i]`: the number in the whole of the part's k-cell i
+    ids: Vec<Vec<u32>>,
+}
+
+impl Linked {
+    /// A generator of the part, its cells numbered as in the whole.
+    fn renumbered(&self, g: &Generator) -> Generator {
+        let chain = g.chain.iter().map(|&(i, v)| (self.ids[g.dim][i as usize], v)).collect();
+        Generator { dim: g.dim, order: g.order.clone(), chain }
+    }
+}
+
+/// Splits a complex into the cells with an entry, as a complex of their own, and the others
+/// (`isolated[k]`, increasing): the homology is that of the part plus a free summand per
+/// isolated cell. O(cells + entries).
+fn split_isolated(c: &ChainComplex) -> Result<(Linked, Vec<Vec<u32>>), HomologyError> {
+    let n1 = c.counts().len();
+    let mut touched: Vec<Vec<bool>> = c.counts().iter().map(|&m| vec![false; m]).collect();
+    for k in 1..n1 {
+        let b = c.boundary(k);
+        for j in 0..b.cols() {
+            let (rows, _) = b.col(j);
+            if !rows.is_empty() {
+                touched[k][j] = true;
+                for &r in rows {
+                    touched[k - 1][r as usize] = true;
+                }
+            }
+        }
+    }
+    let mut ids: Vec<Vec<u32>> = Vec::with_capacity(n1);
+    let mut isolated: Vec<Vec<u32>> = Vec::with_capacity(n1);
+    let mut new_index: Vec<Vec<u32>> = Vec::with_capacity(n1);
+    for t in &touched {
+        let (mut kept, mut alone, mut index) = (Vec::new(), Vec::new(), vec![u32::MAX; t.len()]);
+        for (j, &x) in t.iter().enumerate() {
+            if x {
+                index[j] = kept.len() as u32;
+                kept.push(j as u32);
+            } else {
+                alone.push(j as u32);
+            }
+        }
+        ids.push(kept);
+        isolated.push(alone);
+        new_index.push(index);
+    }
+    let mut boundaries = Vec::with_capacity(n1.saturating_sub(1));
+    for k in 1..n1 {
+        let b = c.boundary(k);
+        let columns: Vec<Vec<(u32, i64)>> = ids[k]
+            .iter()
+            .map(|&j| {
+                let (rows, values) = b.col(j as usize);
+                rows.iter().zip(values).map(|(&r, &v)| (new_index[k - 1][r as usize], v)).collect()
+            })
+            .collect();
+        let m = crate::engine::sparse::SparseMatrix::try_from_columns(ids[k - 1].len(), &columns)
+            .map_err(|_| HomologyError::Internal("the part of the reduced complex with entries"))?;
+        boundaries.push(m);
+    }
+    let complex = ChainComplex::try_new_unchecked_dd(ids.iter().map(Vec::len).collect(), boundaries)
+        .map_err(|_| HomologyError::Internal("the part of the reduced complex with entries"))?;
+    Ok((Linked { complex, ids }, isolated))
+}
+
 /// Whether a k-chain of `c` has zero boundary over the ring. `None` on overflow.
+/// O(e log e) for the e entries of the chain's cells.
 fn is_cycle<R: Euclid>(ring: &R, c: &ChainComplex, k: usize, chain: &[(u32, R::E)]) -> Option<bool> {
     if k == 0 {
         return Some(true);
     }
     let m = c.boundary(k);
-    let mut bd = vec![ring.of_i64(0); m.rows()];
+    let mut terms: Vec<(u32, R::E)> = Vec::new();
     for (j, v) in chain {
         let (ri, rv) = m.col(*j as usize);
         for (&r, &x) in ri.iter().zip(rv) {
-            bd[r as usize] = ring.sub_mul(&bd[r as usize], &ring.of_i64(-x), v)?;
+            terms.push((r, ring.sub_mul(&ring.of_i64(0), &ring.of_i64(-x), v)?));
         }
     }
-    Some(bd.iter().all(|x| ring.is_zero(x)))
+    terms.sort_unstable_by_key(|t| t.0);
+    let mut i = 0;
+    while i < terms.len() {
+        let mut sum = ring.of_i64(0);
+        let row = terms[i].0;
+        while i < terms.len() && terms[i].0 == row {
+            sum = ring.sub_mul(&sum, &ring.of_i64(-1), &terms[i].1)?;
+            i += 1;
+        }
+        if !ring.is_zero(&sum) {
+            return Some(false);
+        }
+    }
+    Some(true)
 }
 
 fn dense<R: Euclid>(ring: &R, c: &ChainComplex, k: usize) -> Vec<Vec<R::E>> {

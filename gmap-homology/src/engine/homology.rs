@@ -120,8 +120,9 @@ pub enum HomologyError {
         /// alternating sum of the Betti numbers
         betti: i64,
     },
-    /// Generators asked of a complex whose reduction keeps too many cells in one dimension.
-    #[error("generators are computed when the reduced complex keeps at most {limit} cells per dimension; dimension {dim} keeps {cells}")]
+    /// Generators asked of a complex whose reduction keeps too many cells with entries in
+    /// one dimension.
+    #[error("generators are computed when the reduced complex keeps at most {limit} cells with entries per dimension; dimension {dim} keeps {cells}")]
     GeneratorsTooLarge {
         /// the dimension
         dim: usize,
@@ -129,6 +130,15 @@ pub enum HomologyError {
         cells: usize,
         /// the limit
         limit: usize,
+    },
+    /// Generators whose lifting to the input's cells would take too long (each walks back
+    /// over the eliminated pairs of its dimension).
+    #[error("lifting {generators} generators to the input's cells would take {steps} steps (limit 10^10)")]
+    GeneratorsLiftTooLong {
+        /// the generators found on the reduced complex
+        generators: usize,
+        /// their number times the pairs of their dimensions
+        steps: u128,
     },
     /// The generator computation overflowed `i64`.
     #[error("a generator's coefficients overflow i64")]

@@ -84,6 +84,15 @@ pub(crate) struct Restricted {
 }
 
 impl Restricted {
+    /// The eliminated pairs `(a, b)` per dimension of `b` (what a lifting walks over).
+    pub(crate) fn pairs_per_dimension(&self) -> Vec<usize> {
+        let mut n = vec![0usize; self.off.len().max(1)];
+        for &(_, b) in &self.log {
+            n[self.dim_of(b)] += 1;
+        }
+        n
+    }
+
     /// The dimension of global cell `x`.
     fn dim_of(&self, x: u32) -> usize {
         self.off.partition_point(|&o| o <= x) - 1
@@ -769,21 +778,30 @@ fn axpy<R: Ring>(
 /// Lifts a k-chain of the reduced complex (numbered as in `pre.chain`) to a k-chain of the
 /// input `c` through the eliminated pairs, last first: each pair `(a, b)` with `b` a k-cell
 /// subtracts `(⟨∂z, a⟩ / ⟨∂b, a⟩) b`, which is the chain map of the reduction. A cycle lifts
-/// to a cycle in the same homology class. `None` on overflow.
-/// O(log length + entries of the k-cells met).
+/// to a cycle in the same homology class. `pairs_k` is the number of pairs with `b` a k-cell
+/// ([`Restricted::pairs_per_dimension`]): with none the chain is its own lift. `None` on
+/// overflow. O(log length + entries of the k-cells met), O(chain) without pairs.
 pub(crate) fn lift<R: Ring>(
     ring: &R,
     c: &ChainComplex,
     pre: &Restricted,
     k: usize,
+    pairs_k: usize,
     chain: &[(u32, R::E)],
 ) -> Option<Vec<(u32, R::E)>> {
+    if k == 0 || pairs_k == 0 {
+        // no pair to walk back over: the cells themselves, in increasing order
+        let mut z: Vec<(u32, R::E)> = chain.iter().map(|(j, v)| (pre.ids[k][*j as usize], v.clone())).collect();
+        z.sort_unstable_by_key(|x| x.0);
+        z.retain(|x| !ring.is_zero(&x.1));
+        return Some(z);
+    }
     let zero = ring.of_i64(0);
     let mut z: Vec<R::E> = vec![zero.clone(); c.count(k)];
     for (j, v) in chain {
         z[pre.ids[k][*j as usize] as usize] = v.clone();
     }
-    if k == 0 || pre.log.is_empty() {
+    if pre.log.is_empty() {
         return Some(z.into_iter().enumerate().filter(|(_, v)| !ring.is_zero(v)).map(|(i, v)| (i as u32, v)).collect());
     }
     let m = c.boundary(k);
