@@ -52,6 +52,10 @@ pub enum CubicalError {
     /// sweep stops at a vertex: the cubical complex's route takes it).
     #[error("{0}")]
     NotReduced(String),
+    /// The generators of the part a sweep made critical could not be computed (over the
+    /// limits of [`crate::generators`]).
+    #[error("the edges the sweep of the cells made critical: {0}")]
+    Generators(crate::HomologyError),
     /// A check of a result failed (a bug, reported rather than a wrong answer).
     #[error("internal error: {0}")]
     Internal(String),

@@ -205,9 +205,10 @@ fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Result<Vec<T>,
 /// `1 ≤ d ≤ 3`, not periodic) whose presence bytes are `bits` (non-zero: in the set): a cycle
 /// per free summand, dimension by dimension, in the cells of the doubled grid. See the
 /// [module docs](self). Refuses another dimension, a shape not matching `bits`, a doubled
-/// grid past `u32` numbers, memory over the limit, and (3-D) a set whose sweep stops at a
-/// vertex or leaves over 2,000 cells critical ([`CubicalError::NotReduced`]: the cubical
-/// complex's route then applies). O(cells · α + the length of the cycles).
+/// grid past `u32` numbers, memory over the limit, and in 3-D a set whose sweep stops at a
+/// vertex ([`CubicalError::NotReduced`]: the cubical complex's route then applies) or leaves
+/// more critical edges than [`crate::generators`] takes ([`CubicalError::Generators`]).
+/// O(cells · α + the length of the cycles).
 pub fn cubical_generators(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerators, CubicalError> {
     cubical_generators_pairing(shape, bits, usize::MAX)
 }
@@ -256,6 +257,7 @@ pub fn cubical_generators_pairing(
         roots.iter().map(|&p| CubeCycle { dim: 0, chain: vec![(p as u64, 1)] }).collect();
     if d == 3 {
         // the union-find's memory becomes the depths in the forest
+        fill_lone_cavities(&bx, bits, &mut st);
         let loops = loops(&bx, &mut st, &mut forest, &roots, pairs)?;
         betti[1] = loops.len() as u64;
         generators.extend(loops);
@@ -645,6 +647,20 @@ impl Frozen {
     }
 }
 
+/// Marks present the absent cubes whose six neighbours are in the set (cavities of one cube)
+/// for the sweep of `H_1`: such a cube meets X in its whole boundary, a sphere, so adding it
+/// leaves `H_1` (and the 1-skeleton) as they are, and its skin then collapses through it
+/// instead of stalling the sweep. (`H_2` is read before, from the complement.)
+fn fill_lone_cavities(bx: &Box, bits: &[u8], st: &mut [u8]) {
+    let point = |c: [usize; 3]| (0..3).map(|a| (2 * c[a] + 1) * bx.gs[a]).sum::<usize>();
+    for_each_point([1; 3], [1; 3], [bx.n[0] - 1, bx.n[1] - 1, bx.n[2] - 1], |c| {
+        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        if bits[v] == 0 && (0..3).all(|a| bits[v - bx.cs[a]] != 0 && bits[v + bx.cs[a]] != 0) {
+            st[point(c)] |= PRESENT;
+        }
+    });
+}
+
 /// `H_1` of a 3-D set: collapses and coreductions over all the cells, from one vertex set
 /// aside per component (Mrozek and Batko's coreductions with collapses, as the sweep of
 /// [`crate::generators`] does on a chain complex, here on the grid itself). A cell with one
@@ -862,11 +878,11 @@ fn frozen_loops(bx: &Box, st: &[u8], depth: &[u32], frozen: &Frozen) -> Result<V
     let d2 = SparseMatrix::try_from_columns(n, &columns).map_err(|e| bad(e.to_string()))?;
     let complex = ChainComplex::try_new_unchecked_dd(vec![0, n, squares.len()], vec![SparseMatrix::zeros(0, n), d2])
         .map_err(|e| bad(e.to_string()))?;
+    // past its limits the reduced complex's route would stop the same way, after building
+    // the whole complex: refused here, with the reason
     let found = crate::generators::generators(&complex, None).map_err(|e| match e {
-        crate::HomologyError::GeneratorsTooLarge { .. } => {
-            CubicalError::NotReduced(format!("the part of the sweep made critical is too large: {e}"))
-        }
-        e => bad(format!("the part of the sweep made critical: {e}")),
+        crate::HomologyError::Internal(what) => bad(format!("the part of the sweep made critical: {what}")),
+        e => CubicalError::Generators(e),
     })?;
     let mut out = Vec::new();
     for g in found.into_iter().filter(|g| g.dim == 1) {
