@@ -65,6 +65,35 @@ fn generators_name_cubical_cells() {
     assert!(out.contains("x"), "{out}");
 }
 
+/// A 3-D set's generators by the command: the cavity of the hollow cube is its skin, the six
+/// squares around the middle cube, oriented outwards of the cavity; the JSON says the same;
+/// over Z/3 the coefficients are 1 and 2.
+#[test]
+fn generators_of_a_cavity() {
+    let (code, out, err) = gmap(&["homology", &data("shell.cub"), "--generators"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = out.lines().filter(|l| l.starts_with("generator")).collect();
+    assert_eq!(
+        lines,
+        vec![
+            "generator of H_0 (Z): +1 0x0x0",
+            "generator of H_2 (Z): -1 [1,2]x[1,2]x1 +1 [1,2]x1x[1,2] -1 1x[1,2]x[1,2] +1 2x[1,2]x[1,2] -1 [1,2]x2x[1,2] +1 [1,2]x[1,2]x2",
+        ]
+    );
+    let (code, out, err) = gmap(&["homology", &data("shell.cub"), "--generators", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let skin = &v["generators"][1];
+    assert_eq!((skin["dim"].as_u64(), skin["chain"].as_array().map(Vec::len)), (Some(2), Some(6)));
+    assert_eq!(
+        skin["chain"][0],
+        serde_json::json!({"cell": {"cube": [1, 1, 1], "extent": [1, 1, 0]}, "coefficient": -1})
+    );
+    let (code, out, err) = gmap(&["homology", &data("shell.cub"), "--generators", "--field", "3"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("generator of H_2 (Z/3): +2 [1,2]x[1,2]x1 +1 [1,2]x1x[1,2]"), "{out}");
+}
+
 #[test]
 fn info_on_a_cubical_set() {
     let (code, out, err) = gmap(&["info", &data("shell.cub"), "--json"]);

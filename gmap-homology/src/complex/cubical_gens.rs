@@ -22,9 +22,9 @@
 //!   made critical and the few critical edges are finished by [`crate::generators`].
 //!
 //! The Betti numbers so found are checked against the Euler characteristic counted on the
-//! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: three
-//! bits more per point for the waiting cells), or two `u32` per cube while the complement is
-//! labelled.
+//! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: the
+//! sweep's waiting cells, up to 6 bytes more per point), or two `u32` per cube while the
+//! complement is labelled; plus the cycles given.
 //!
 //! ```
 //! use gmap_homology::cubical_gens::cubical_generators;
@@ -76,9 +76,11 @@ pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
     let grid = prod(&|l| 2 * l as u64 + 1)?;
     let vertices = prod(&|l| l as u64 + 1)?;
     let cubes = prod(&|l| l as u64)?;
-    // the doubled grid and a u32 per vertex, in 3-D three bits per grid point for the
-    // sweep's waiting cells; or two u32 per cube while the complement is labelled
-    let sweep = if shape.len() == 3 { grid.div_ceil(8).checked_mul(3)? } else { 0 };
+    // the doubled grid and a u32 per vertex, in 3-D the sweep's waiting cells: two bits per
+    // grid point (vertices, cubes) and queues of u32 that hold each edge and square at most
+    // twice (3/4 of the points: 6 bytes per point at worst); or two u32 per cube while the
+    // complement is labelled
+    let sweep = if shape.len() == 3 { grid.div_ceil(4).checked_add(grid.checked_mul(6)?)? } else { 0 };
     Some(grid.checked_add(vertices.checked_mul(4)?)?.checked_add(sweep)?.max(cubes.checked_mul(8)?))
 }
 
