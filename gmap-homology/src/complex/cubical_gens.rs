@@ -134,6 +134,24 @@ impl Box {
         self.n.iter().product()
     }
 
+    /// The number of the cube at cube coordinates `c`.
+    #[inline]
+    fn cube(&self, c: &[usize; 3]) -> usize {
+        c[0] * self.cs[0] + c[1] * self.cs[1] + c[2] * self.cs[2]
+    }
+
+    /// The grid point of the cube at cube coordinates `c` (odd along every axis).
+    #[inline]
+    fn centre(&self, c: &[usize; 3]) -> usize {
+        (0..self.d).map(|a| (2 * c[a] + 1) * self.gs[a]).sum()
+    }
+
+    /// The grid point at doubled coordinates `c`.
+    #[inline]
+    fn point(&self, c: &[usize; 3]) -> usize {
+        c[0] * self.gs[0] + c[1] * self.gs[1] + c[2] * self.gs[2]
+    }
+
     /// The doubled coordinates of grid point `p`.
     #[inline]
     fn coords(&self, p: usize) -> [usize; 3] {
@@ -289,11 +307,11 @@ fn mark_closure(bx: &Box, bits: &[u8], st: &mut [u8]) -> [i64; 4] {
     }
     let mut cells = [0i64; 4];
     for_each_point([0; 3], [1; 3], bx.n, |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] == 0 {
             return;
         }
-        let centre = (0..3).map(|a| if a < d { (2 * c[a] + 1) * bx.gs[a] } else { 0 }).sum::<usize>() as isize;
+        let centre = bx.centre(&c) as isize;
         for &(o, k) in &offsets {
             let p = (centre + o) as usize;
             if st[p] & PRESENT == 0 {
@@ -328,7 +346,7 @@ fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
     }
     let mut roots = Vec::new();
     for_each_point([0; 3], [2, 2, 2], bx.g, |c| {
-        let p = c[0] * bx.gs[0] + c[1] * bx.gs[1] + c[2] * bx.gs[2];
+        let p = bx.point(&c);
         if st[p] & PRESENT != 0 {
             let v = (c[0] / 2) * bx.vs[0] + (c[1] / 2) * bx.vs[1] + (c[2] / 2) * bx.vs[2];
             if forest[v] == v as u32 {
@@ -339,8 +357,8 @@ fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
     roots
 }
 
-/// `H_1` of a 2-D set: the boundaries of the bounded components of the complement (absent
-/// squares joined across shared edges), ordered by their smallest square.
+/// `H_{d-1}`: the boundaries of the bounded components of the complement (absent cubes joined
+/// across shared facets), ordered by their smallest cube.
 fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, CubicalError> {
     let d = bx.d;
     let m = bx.cube_count();
@@ -349,7 +367,7 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         *x = i as u32;
     }
     for_each_point([0; 3], [1; 3], bx.n, |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] != 0 {
             return;
         }
@@ -368,7 +386,7 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
     let mut outside = vec![0u64; m.div_ceil(64)];
     let on_border = |c: &[usize; 3]| (0..d).any(|a| c[a] == 0 || c[a] + 1 == bx.n[a]);
     for_each_point([0; 3], [1; 3], bx.n, |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] == 0 && on_border(&c) {
             let r = uf[v] as usize;
             outside[r / 64] |= 1 << (r % 64);
@@ -378,10 +396,9 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
     // its class): `uf[root] = number | NUMBERED`, the other members keep their root
     const NUMBERED: u32 = 1 << 31;
     let mut sizes: Vec<usize> = Vec::new();
-    let centre = |c: &[usize; 3]| (0..d).map(|a| (2 * c[a] + 1) * bx.gs[a]).sum::<usize>();
     // the facets of an absent cube v on a present neighbour, with the signs of ∂v
     let facets = |c: &[usize; 3], v: usize, f: &mut dyn FnMut(usize, i64)| {
-        let p = centre(c);
+        let p = bx.centre(c);
         for a in 0..d {
             let sign = if a % 2 == 0 { 1 } else { -1 };
             if bits[v + bx.cs[a]] != 0 {
@@ -398,7 +415,7 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         (uf[r] & NUMBERED != 0).then_some((uf[r] & !NUMBERED) as usize)
     };
     for_each_point([0; 3], [1; 3], bx.n, |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] != 0 || on_border(&c) {
             return;
         }
@@ -417,7 +434,7 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
     })?;
     chains.extend(sizes.iter().map(|&n| Vec::with_capacity(n)));
     for_each_point([0; 3], [1; 3], bx.n, |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] != 0 || on_border(&c) {
             return;
         }
@@ -654,11 +671,10 @@ impl Frozen {
 /// leaves `H_1` (and the 1-skeleton) as they are, and its skin then collapses through it
 /// instead of stalling the sweep. (`H_2` is read before, from the complement.)
 fn fill_lone_cavities(bx: &Box, bits: &[u8], st: &mut [u8]) {
-    let point = |c: [usize; 3]| (0..3).map(|a| (2 * c[a] + 1) * bx.gs[a]).sum::<usize>();
     for_each_point([1; 3], [1; 3], [bx.n[0] - 1, bx.n[1] - 1, bx.n[2] - 1], |c| {
-        let v = c[0] * bx.cs[0] + c[1] * bx.cs[1] + c[2] * bx.cs[2];
+        let v = bx.cube(&c);
         if bits[v] == 0 && (0..3).all(|a| bits[v - bx.cs[a]] != 0 && bits[v + bx.cs[a]] != 0) {
-            st[point(c)] |= PRESENT;
+            st[bx.centre(&c)] |= PRESENT;
         }
     });
 }
@@ -687,10 +703,9 @@ fn loops(
     roots: &[usize],
     mut pairs: usize,
 ) -> Result<Vec<CubeCycle>, CubicalError> {
-    let point = |c: [usize; 3]| c[0] * bx.gs[0] + c[1] * bx.gs[1] + c[2] * bx.gs[2];
     let mut waiting = Waiting::new(bx.grid_len())?;
     for_each_point([0; 3], [1; 3], bx.g, |c| {
-        let p = point(c);
+        let p = bx.point(&c);
         if st[p] & PRESENT == 0 {
             return;
         }
@@ -836,7 +851,7 @@ fn loops(
     for a in 0..bx.d {
         start[a] = 1;
         for_each_point(start, [2; 3], bx.g, |c| {
-            let e = point(c);
+            let e = bx.point(&c);
             if alive(st[e]) {
                 let mut chain = Vec::new();
                 fundamental_cycle(bx, st, depth, e, 1, &mut chain);
