@@ -13,7 +13,7 @@
 
 use std::path::PathBuf;
 
-use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, ToPyArray};
+use numpy::{IntoPyArray, PyArrayDescrMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
@@ -91,9 +91,19 @@ fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> 
                         ex.extend_from_slice(extent);
                     }
                 }
+                // each array made in its shape at once (a reshape would make a second object)
+                let shaped = |e: numpy::ndarray::ShapeError| Failure::input(e.to_string());
                 (
-                    PyArray1::from_vec(py, lo).reshape([n, d])?.into_any().unbind(),
-                    PyArray1::from_vec(py, ex).reshape([n, d])?.into_any().unbind(),
+                    numpy::ndarray::Array2::from_shape_vec((n, d), lo)
+                        .map_err(shaped)?
+                        .into_pyarray(py)
+                        .into_any()
+                        .unbind(),
+                    numpy::ndarray::Array2::from_shape_vec((n, d), ex)
+                        .map_err(shaped)?
+                        .into_pyarray(py)
+                        .into_any()
+                        .unbind(),
                 )
             }
             Some(CellName::Dart { .. }) => {
