@@ -106,8 +106,8 @@ struct HomologyArgs {
     /// print a representative cycle for each summand
     #[arg(long)]
     generators: bool,
-    /// with --generators: the most cells per dimension of the reduced complex (default 2000;
-    /// the cost grows as its cube)
+    /// with --generators: the most cells with entries per dimension of the reduced complex
+    /// (default 2000; the cost grows as its cube; full cubical sets of dimension ≤ 3 need none)
     #[arg(long, value_name = "N", requires = "generators")]
     max_generator_cells: Option<usize>,
     /// reduce the map by homology-preserving removals and contractions first

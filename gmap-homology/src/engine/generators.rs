@@ -28,8 +28,8 @@ use crate::engine::natural::Natural;
 use crate::engine::ring::{Euclid, ZBig, Zi64, Zp};
 use crate::engine::snf::smith_tracked;
 
-/// Largest number of cells in one dimension of the reduced complex for which generators are
-/// computed.
+/// Largest number of cells with entries in one dimension of the reduced complex for which
+/// generators are computed (the dense stage's size; cells on no entry do not count).
 pub const GENERATOR_CELL_LIMIT: usize = 2000;
 
 /// The most steps of lifting (a generator times the eliminated pairs of its dimension) done
@@ -63,7 +63,7 @@ pub fn generators(c: &ChainComplex, field: Option<u64>) -> Result<Vec<Generator>
     generators_within(c, field, GENERATOR_CELL_LIMIT)
 }
 
-/// [`generators`] with another limit on the cells per dimension of the reduced complex
+/// [`generators`] with another limit on the cells with entries per dimension of the reduced complex
 /// (the dense elimination costs O(cells³) per dimension: 2,000 cells take well under a
 /// second, 20,000 minutes).
 pub fn generators_within(c: &ChainComplex, field: Option<u64>, limit: usize) -> Result<Vec<Generator>, HomologyError> {
