@@ -119,6 +119,12 @@ impl UnionFind {
         (Sets { parent: a, base: 0 }, Sets { parent: b, base: mid as u32 })
     }
 
+    /// The parent array, given back for its memory (a scan done with the classes reuses it
+    /// for a `u32` per item).
+    pub fn into_parents(self) -> Vec<u32> {
+        self.parent
+    }
+
     /// Class labels `0..k` in order of each class's smallest item, and `k`. O(len).
     pub fn labels(&mut self) -> (Vec<u32>, usize) {
         let n = self.parent.len();

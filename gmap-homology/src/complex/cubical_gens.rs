@@ -41,6 +41,8 @@
 
 use std::collections::VecDeque;
 
+use gmap_core::union_find::UnionFind;
+
 use super::cubical::CubicalError;
 use crate::engine::chain::ChainComplex;
 use crate::engine::sparse::SparseMatrix;
@@ -190,27 +192,6 @@ fn for_each_point(start: [usize; 3], step: [usize; 3], end: [usize; 3], mut f: i
     }
 }
 
-/// Union-find over `u32` numbers linking the larger root under the smaller, paths halved:
-/// every root is the smallest member of its class, and `parent[x] ≤ x`.
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[x as usize];
-        parent[x as usize] = parent[p as usize];
-        x = p;
-    }
-    x
-}
-
-fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    if ra == rb {
-        return false;
-    }
-    let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-    parent[hi as usize] = lo;
-    true
-}
-
 fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Result<Vec<T>, CubicalError> {
     let mut v = Vec::new();
     v.try_reserve_exact(len).map_err(|_| CubicalError::OutOfMemory {
@@ -270,15 +251,15 @@ pub fn cubical_generators_pairing(
     let mut st = try_vec(bx.grid_len(), 0u8, "the cells of the doubled grid")?;
     let cells = mark_closure(&bx, bits, &mut st);
     let euler_characteristic: i64 = cells.iter().enumerate().map(|(k, &c)| if k % 2 == 0 { c } else { -c }).sum();
-    let mut forest = try_vec(bx.vertex_count(), 0u32, "the components of the vertices")?;
-    let roots = components(&bx, &st, &mut forest);
+    let (forest, roots) = components(&bx, &st);
     betti[0] = roots.len() as u64;
     let mut generators: Vec<CubeCycle> =
         roots.iter().map(|&p| CubeCycle { dim: 0, chain: vec![(p as u64, 1)] }).collect();
     if d == 3 {
         // the union-find's memory becomes the depths in the forest
+        let mut depth = forest.into_parents();
         fill_lone_cavities(&bx, bits, &mut st);
-        let loops = loops(&bx, &mut st, &mut forest, &roots, pairs)?;
+        let loops = loops(&bx, &mut st, &mut depth, &roots, pairs)?;
         betti[1] = loops.len() as u64;
         generators.extend(loops);
     }
@@ -323,13 +304,11 @@ fn mark_closure(bx: &Box, bits: &[u8], st: &mut [u8]) -> [i64; 4] {
     cells
 }
 
-/// The union-find of the present vertices over the present edges: the grid points of the
-/// roots, increasing (the smallest vertex of each component).
-fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
+/// The union-find of the present vertices over the present edges, and the grid points of
+/// its roots, increasing (the smallest vertex of each component).
+fn components(bx: &Box, st: &[u8]) -> (UnionFind, Vec<usize>) {
     let d = bx.d;
-    for (i, x) in forest.iter_mut().enumerate() {
-        *x = i as u32;
-    }
+    let mut uf = UnionFind::new(bx.vertex_count());
     for a in 0..d {
         let mut end = [1usize; 3];
         for (e, &n) in end.iter_mut().zip(&bx.n).take(d) {
@@ -340,7 +319,7 @@ fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
             let p = (0..d).map(|b| 2 * c[b] * bx.gs[b]).sum::<usize>() + bx.gs[a];
             if st[p] & PRESENT != 0 {
                 let v = (0..d).map(|b| c[b] * bx.vs[b]).sum::<usize>();
-                union(forest, v as u32, (v + bx.vs[a]) as u32);
+                uf.union(v as u32, (v + bx.vs[a]) as u32);
             }
         });
     }
@@ -349,12 +328,12 @@ fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
         let p = bx.point(&c);
         if st[p] & PRESENT != 0 {
             let v = (c[0] / 2) * bx.vs[0] + (c[1] / 2) * bx.vs[1] + (c[2] / 2) * bx.vs[2];
-            if forest[v] == v as u32 {
+            if uf.find(v as u32) == v as u32 {
                 roots.push(p);
             }
         }
     });
-    roots
+    (uf, roots)
 }
 
 /// `H_{d-1}`: the boundaries of the bounded components of the complement (absent cubes joined
@@ -362,10 +341,7 @@ fn components(bx: &Box, st: &[u8], forest: &mut [u32]) -> Vec<usize> {
 fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, CubicalError> {
     let d = bx.d;
     let m = bx.cube_count();
-    let mut uf = try_vec(m, 0u32, "the components of the complement")?;
-    for (i, x) in uf.iter_mut().enumerate() {
-        *x = i as u32;
-    }
+    let mut uf = UnionFind::new(m);
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = bx.cube(&c);
         if bits[v] != 0 {
@@ -373,28 +349,25 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         }
         for a in 0..d {
             if c[a] + 1 < bx.n[a] && bits[v + bx.cs[a]] == 0 {
-                union(&mut uf, v as u32, (v + bx.cs[a]) as u32);
+                uf.union(v as u32, (v + bx.cs[a]) as u32);
             }
         }
     });
-    // every class to its root (parents are smaller: one forward pass), then the outside's
-    // roots: a component with a cube on the box's border is unbounded
-    for v in 0..m {
-        let p = uf[v] as usize;
-        uf[v] = uf[p];
-    }
-    let mut outside = vec![0u64; m.div_ceil(64)];
+    // the classes labelled in order of their smallest cube; a class with a cube on the box's
+    // border is unbounded
+    let (label, classes) = uf.labels();
+    drop(uf);
+    let mut outside = vec![0u64; classes.div_ceil(64)];
     let on_border = |c: &[usize; 3]| (0..d).any(|a| c[a] == 0 || c[a] + 1 == bx.n[a]);
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = bx.cube(&c);
         if bits[v] == 0 && on_border(&c) {
-            let r = uf[v] as usize;
-            outside[r / 64] |= 1 << (r % 64);
+            let l = label[v] as usize;
+            outside[l / 64] |= 1 << (l % 64);
         }
     });
-    // the bounded roots numbered in the order of their smallest cube (a root comes first in
-    // its class): `uf[root] = number | NUMBERED`, the other members keep their root
-    const NUMBERED: u32 = 1 << 31;
+    // the bounded classes numbered in the same order
+    let mut number = vec![u32::MAX; classes];
     let mut sizes: Vec<usize> = Vec::new();
     // the facets of an absent cube v on a present neighbour, with the signs of ∂v
     let facets = |c: &[usize; 3], v: usize, f: &mut dyn FnMut(usize, i64)| {
@@ -409,23 +382,21 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
             }
         }
     };
-    // the number of the bounded component of absent cube v, once its root is numbered
-    let number_of = |uf: &[u32], v: usize| -> Option<usize> {
-        let r = if uf[v] & NUMBERED != 0 { v } else { uf[v] as usize };
-        (uf[r] & NUMBERED != 0).then_some((uf[r] & !NUMBERED) as usize)
-    };
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = bx.cube(&c);
         if bits[v] != 0 || on_border(&c) {
             return;
         }
-        if uf[v] as usize == v && outside[v / 64] >> (v % 64) & 1 == 0 {
-            uf[v] = sizes.len() as u32 | NUMBERED;
+        let l = label[v] as usize;
+        if outside[l / 64] >> (l % 64) & 1 != 0 {
+            return;
+        }
+        if number[l] == u32::MAX {
+            number[l] = sizes.len() as u32;
             sizes.push(0);
         }
-        if let Some(id) = number_of(&uf, v) {
-            facets(&c, v, &mut |_, _| sizes[id] += 1);
-        }
+        let id = number[l] as usize;
+        facets(&c, v, &mut |_, _| sizes[id] += 1);
     });
     let mut chains: Vec<Vec<(u64, i64)>> = Vec::new();
     chains.try_reserve_exact(sizes.len()).map_err(|_| CubicalError::OutOfMemory {
@@ -438,10 +409,12 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         if bits[v] != 0 || on_border(&c) {
             return;
         }
-        let Some(id) = number_of(&uf, v) else { return };
-        facets(&c, v, &mut |p, s| chains[id].push((p as u64, s)));
+        let id = number[label[v] as usize];
+        if id == u32::MAX {
+            return;
+        }
+        facets(&c, v, &mut |p, s| chains[id as usize].push((p as u64, s)));
     });
-    drop(uf);
     Ok(chains
         .into_iter()
         .map(|mut chain| {
