@@ -226,18 +226,9 @@ pub fn run() -> ExitCode {
                     } else {
                         report.write_text(&mut out)
                     };
-                    match written.and_then(|()| out.flush()) {
-                        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-                            eprintln!("error: {e}");
-                            ExitCode::from(1)
-                        }
-                        _ => ExitCode::SUCCESS,
-                    }
+                    exit_after_writing(written.and_then(|()| out.flush()))
                 }
-                Err(e) => {
-                    eprintln!("error: {}", e.to_string().replace('\n', " "));
-                    ExitCode::from(1)
-                }
+                Err(e) => exit_after_error(&e),
             };
         }
         Command::Bench(a) => bench(a, quiet),
@@ -248,19 +239,27 @@ pub fn run() -> ExitCode {
         Command::Convert(a) => convert(a, quiet),
     };
     match text {
-        // a reader of our output that went away (`gmap … | head`) ends the command quietly
-        Ok(text) => match std::io::stdout().lock().write_all(text.as_bytes()) {
-            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-                eprintln!("error: {e}");
-                ExitCode::from(1)
-            }
-            _ => ExitCode::SUCCESS,
-        },
-        Err(e) => {
-            eprintln!("error: {}", e.to_string().replace('\n', " "));
+        Ok(text) => exit_after_writing(std::io::stdout().lock().write_all(text.as_bytes())),
+        Err(e) => exit_after_error(&e),
+    }
+}
+
+/// The exit code once the output is written: a reader of our output that went away
+/// (`gmap … | head`) ends the command quietly, another write error is reported.
+fn exit_after_writing(written: std::io::Result<()>) -> ExitCode {
+    match written {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            eprintln!("error: {e}");
             ExitCode::from(1)
         }
+        _ => ExitCode::SUCCESS,
     }
+}
+
+/// Reports a failed command on one line of stderr; exit code 1.
+fn exit_after_error(e: &gmap::Error) -> ExitCode {
+    eprintln!("error: {}", e.to_string().replace('\n', " "));
+    ExitCode::from(1)
 }
 
 fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
