@@ -69,6 +69,7 @@ pub mod cellular;
 pub mod complex;
 pub mod engine;
 pub mod persistence;
+mod prefetch;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
 pub use complex::{

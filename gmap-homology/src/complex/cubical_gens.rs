@@ -46,6 +46,7 @@ use gmap_core::union_find::UnionFind;
 use super::cubical::CubicalError;
 use crate::engine::chain::ChainComplex;
 use crate::engine::sparse::SparseMatrix;
+use crate::prefetch::prefetch;
 
 /// A representative cycle of one free summand of `H_dim`.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -100,6 +101,33 @@ struct Box {
     vs: [usize; 3],
     /// cube strides
     cs: [usize; 3],
+    /// `g[0]` and `gs[1]`, `gs[2]` as dividers (the grid's points fit in `u32`)
+    div: [Divider; 3],
+}
+
+/// Division of a `u32` by a fixed divisor with a multiplication (Lemire, Kaser and Kurz,
+/// "Faster remainder by direct computation", 2019): the sweep turns grid points into
+/// coordinates millions of times, and a hardware division costs several times more.
+#[derive(Clone, Copy)]
+struct Divider {
+    m: u64,
+}
+
+impl Divider {
+    fn new(d: usize) -> Self {
+        let d = d.max(1) as u64;
+        Divider { m: (u64::MAX / d).wrapping_add(1) }
+    }
+
+    /// `n / d` for `n < 2^32` (the divisor 1 gives `m = 0`: handled apart).
+    #[inline]
+    fn div(self, n: usize) -> usize {
+        if self.m == 0 {
+            n
+        } else {
+            ((u128::from(self.m) * n as u128) >> 64) as usize
+        }
+    }
 }
 
 impl Box {
@@ -121,7 +149,8 @@ impl Box {
             v *= if a < d { n[a] + 1 } else { 1 };
             c *= n[a];
         }
-        Box { d, n, g, gs, vs, cs }
+        let div = [Divider::new(g[0]), Divider::new(gs[1]), Divider::new(gs[2])];
+        Box { d, n, g, gs, vs, cs, div }
     }
 
     fn grid_len(&self) -> usize {
@@ -157,7 +186,10 @@ impl Box {
     /// The doubled coordinates of grid point `p`.
     #[inline]
     fn coords(&self, p: usize) -> [usize; 3] {
-        [p % self.g[0], (p / self.gs[1]) % self.g[1], p / self.gs[2]]
+        let z = self.div[2].div(p);
+        let r = p - z * self.gs[2];
+        let y = self.div[1].div(r);
+        [r - y * self.gs[1], y, z]
     }
 
     /// The vertex number of grid point `p` (even coordinates).
@@ -458,30 +490,41 @@ fn alive(s: u8) -> bool {
     s & (PRESENT | DEAD) == PRESENT
 }
 
-/// The faces of grid point `p` (coordinates `c`): its two neighbours along each odd axis.
+/// The faces of grid point `p` (coordinates `c`): its two neighbours along each odd axis,
+/// `f(q, a, x)` with the face's point, the axis it lies along from `p` and its coordinate
+/// there.
 #[inline]
-fn for_faces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize)) {
+fn for_faces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize, usize, usize)) {
     for a in 0..bx.d {
         if c[a] % 2 == 1 {
-            f(p - bx.gs[a]);
-            f(p + bx.gs[a]);
+            f(p - bx.gs[a], a, c[a] - 1);
+            f(p + bx.gs[a], a, c[a] + 1);
         }
     }
 }
 
-/// The cofaces of grid point `p` within the grid: its neighbours along each even axis.
+/// The cofaces of grid point `p` within the grid: its neighbours along each even axis,
+/// `f(q, a, x)` as for [`for_faces`].
 #[inline]
-fn for_cofaces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize)) {
+fn for_cofaces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize, usize, usize)) {
     for a in 0..bx.d {
         if c[a].is_multiple_of(2) {
             if c[a] > 0 {
-                f(p - bx.gs[a]);
+                f(p - bx.gs[a], a, c[a] - 1);
             }
             if c[a] + 1 < bx.g[a] {
-                f(p + bx.gs[a]);
+                f(p + bx.gs[a], a, c[a] + 1);
             }
         }
     }
+}
+
+/// The coordinates `c` with `x` along axis `a`.
+#[inline]
+fn moved(c: &[usize; 3], a: usize, x: usize) -> [usize; 3] {
+    let mut n = *c;
+    n[a] = x;
+    n
 }
 
 #[inline]
@@ -494,7 +537,17 @@ fn dim_of(c: &[usize; 3]) -> usize {
 /// aligned block of `2^(l+1)` vertices per axis, in none smaller).
 #[inline]
 fn level(c: &[usize; 3]) -> usize {
-    c.iter().filter(|&&x| x % 2 == 1).map(|&x| (x / 2 + 1).trailing_zeros() as usize).max().unwrap_or(0)
+    axis_level(c[0]).max(axis_level(c[1])).max(axis_level(c[2]))
+}
+
+/// A coordinate's share of [`level`]: `trailing_zeros(x / 2 + 1)` if odd, else 0.
+#[inline]
+fn axis_level(x: usize) -> usize {
+    if x % 2 == 1 {
+        (x / 2 + 1).trailing_zeros() as usize
+    } else {
+        0
+    }
 }
 
 /// `∂[e, q]`: the coefficient of edge `e` in the boundary of the square at `q` (coordinates
@@ -526,6 +579,12 @@ struct Waiting {
     grow: Vec<VecDeque<u32>>,
     collapse: Vec<VecDeque<u32>>,
     squares: Vec<VecDeque<u32>>,
+    /// per kind (grow, collapse, squares): a bit per level whose queue is not empty, so that
+    /// a pop finds its level in one instruction instead of a scan of the 64 queues
+    nonempty: [u64; 3],
+    /// the cell a few pops after the last one in its queue, if any: its state is read in
+    /// ahead of time (the queues jump all over the grid)
+    ahead: usize,
 }
 
 impl Waiting {
@@ -540,18 +599,29 @@ impl Waiting {
             grow: levels(),
             collapse: levels(),
             squares: levels(),
+            nonempty: [0; 3],
+            ahead: usize::MAX,
         })
     }
 
     /// Queues the cell at `p` (coordinates `c`), ready `by_faces` (one alive face) or by its
     /// cofaces.
     #[inline]
-    fn push(&mut self, c: &[usize; 3], p: usize, by_faces: bool) {
-        let k = dim_of(c);
+    /// The cell at `p`, of dimension `k` and [`level`] `l`.
+    fn push(&mut self, k: usize, l: usize, p: usize, by_faces: bool) {
+        let queue = |me: &mut Self, kind: usize| {
+            me.nonempty[kind] |= 1 << l;
+            let q = match kind {
+                0 => &mut me.grow[l],
+                1 => &mut me.collapse[l],
+                _ => &mut me.squares[l],
+            };
+            q.push_back(p as u32);
+        };
         match k {
-            1 if by_faces => self.grow[level(c)].push_back(p as u32),
-            1 => self.collapse[level(c)].push_back(p as u32),
-            2 => self.squares[level(c)].push_back(p as u32),
+            1 if by_faces => queue(self, 0),
+            1 => queue(self, 1),
+            2 => queue(self, 2),
             _ => {
                 let i = usize::from(k == 3);
                 let (w, b) = (p / 64, 1u64 << (p % 64));
@@ -568,15 +638,24 @@ impl Waiting {
         if self.pending[0] > 0 {
             return Some(self.pop_bit(0));
         }
-        let first = |q: &mut VecDeque<u32>| q.pop_front().map(|p| p as usize);
-        if let Some(q) = self.grow.iter_mut().find(|q| !q.is_empty()) {
-            return first(q);
-        }
-        if let Some(q) = self.collapse.iter_mut().rev().find(|q| !q.is_empty()) {
-            return first(q);
-        }
-        if let Some(q) = self.squares.iter_mut().rev().find(|q| !q.is_empty()) {
-            return first(q);
+        // grow: the lowest level first; collapse and squares: the highest
+        for kind in 0..3 {
+            let m = self.nonempty[kind];
+            if m == 0 {
+                continue;
+            }
+            let l = if kind == 0 { m.trailing_zeros() } else { 63 - m.leading_zeros() } as usize;
+            let q = match kind {
+                0 => &mut self.grow[l],
+                1 => &mut self.collapse[l],
+                _ => &mut self.squares[l],
+            };
+            let p = q.pop_front().map(|p| p as usize);
+            self.ahead = q.get(AHEAD).map_or(usize::MAX, |&a| a as usize);
+            if q.is_empty() {
+                self.nonempty[kind] &= !(1 << l);
+            }
+            return p;
         }
         (self.pending[1] > 0).then(|| self.pop_bit(1))
     }
@@ -595,6 +674,9 @@ impl Waiting {
         w * 64 + b
     }
 }
+
+/// How many cells ahead of the sweep's pops their states are read in.
+const AHEAD: usize = 8;
 
 /// What the 3-D sweep keeps of the edges it had to make critical: their rows of `∂_2` on the
 /// squares still standing (the fill of later coreductions included).
@@ -683,30 +765,41 @@ fn loops(
             return;
         }
         let mut k = 0u8;
-        for_cofaces(bx, &c, p, |q| k += st[q] & PRESENT);
+        for_cofaces(bx, &c, p, |q, _, _| k += st[q] & PRESENT);
         st[p] = with_cofaces(with_faces(st[p], 2 * dim_of(&c) as u8), k);
         if k == 1 {
-            waiting.push(&c, p, false);
+            waiting.push(dim_of(&c), level(&c), p, false);
         }
     });
     // a cell no longer alive: its alive faces lose a coface, its alive cofaces a face
     let release = |st: &mut [u8], waiting: &mut Waiting, y: usize| {
         let c = bx.coords(y);
-        for_faces(bx, &c, y, |x| {
+        let k = dim_of(&c);
+        let la = [axis_level(c[0]), axis_level(c[1]), axis_level(c[2])];
+        // the level of the neighbour at x along axis a
+        let level_with = |a: usize, x: usize| {
+            let others = match a {
+                0 => la[1].max(la[2]),
+                1 => la[0].max(la[2]),
+                _ => la[0].max(la[1]),
+            };
+            others.max(axis_level(x))
+        };
+        for_faces(bx, &c, y, |x, a, v| {
             if alive(st[x]) {
                 let n = cofaces(st[x]) - 1;
                 st[x] = with_cofaces(st[x], n);
                 if n == 1 {
-                    waiting.push(&bx.coords(x), x, false);
+                    waiting.push(k - 1, level_with(a, v), x, false);
                 }
             }
         });
-        for_cofaces(bx, &c, y, |z| {
+        for_cofaces(bx, &c, y, |z, a, v| {
             if alive(st[z]) {
                 let n = faces(st[z]) - 1;
                 st[z] = with_faces(st[z], n);
                 if n == 1 {
-                    waiting.push(&bx.coords(z), z, true);
+                    waiting.push(k + 1, level_with(a, v), z, true);
                 }
             }
         });
@@ -734,9 +827,9 @@ fn loops(
                     1 => {
                         let c = bx.coords(p);
                         let id = frozen.edges.len() as u32;
-                        for_cofaces(bx, &c, p, |q| {
+                        for_cofaces(bx, &c, p, |q, a, v| {
                             if alive(st[q]) {
-                                let sign = square_sign(bx, &bx.coords(q), q, p);
+                                let sign = square_sign(bx, &moved(&c, a, v), q, p);
                                 frozen.rows.entry(q).or_default().push((id, sign));
                             }
                         });
@@ -749,6 +842,14 @@ fn loops(
                 continue;
             }
         };
+        let a = waiting.ahead;
+        if a != usize::MAX {
+            prefetch(st, a);
+            prefetch(st, a.wrapping_sub(bx.gs[1]));
+            prefetch(st, a + bx.gs[1]);
+            prefetch(st, a.wrapping_sub(bx.gs[2]));
+            prefetch(st, a + bx.gs[2]);
+        }
         let s = st[p];
         if !alive(s) || (faces(s) != 1 && cofaces(s) != 1) {
             continue;
@@ -761,7 +862,7 @@ fn loops(
         }
         let (lower, upper) = if coreduction {
             let mut a = p;
-            for_faces(bx, &c, p, |x| {
+            for_faces(bx, &c, p, |x, _, _| {
                 if alive(st[x]) {
                     a = x;
                 }
@@ -769,7 +870,7 @@ fn loops(
             (a, p)
         } else {
             let mut b = p;
-            for_cofaces(bx, &c, p, |z| {
+            for_cofaces(bx, &c, p, |z, _, _| {
                 if alive(st[z]) {
                     b = z;
                 }
@@ -794,13 +895,13 @@ fn loops(
                     let eps = square_sign(bx, &c, upper, lower);
                     let ce = bx.coords(lower);
                     let mut others = Vec::new();
-                    for_cofaces(bx, &ce, lower, |q| {
+                    for_cofaces(bx, &ce, lower, |q, a, v| {
                         if q != upper && alive(st[q]) {
-                            others.push(q);
+                            others.push((q, moved(&ce, a, v)));
                         }
                     });
-                    for q in others {
-                        let alpha = square_sign(bx, &bx.coords(q), q, lower);
+                    for (q, cq) in others {
+                        let alpha = square_sign(bx, &cq, q, lower);
                         frozen.subtract(q, alpha * eps, &source)?;
                     }
                 }
@@ -808,9 +909,11 @@ fn loops(
             _ => {}
         }
         // a square paired away takes its column with it
-        for y in [lower, upper] {
-            if dim_of(&bx.coords(y)) == 2 {
-                frozen.rows.remove(&y);
+        if !frozen.rows.is_empty() {
+            for y in [lower, upper] {
+                if dim_of(&bx.coords(y)) == 2 {
+                    frozen.rows.remove(&y);
+                }
             }
         }
         st[lower] |= DEAD;
@@ -945,4 +1048,26 @@ fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
     }
     out.retain(|x| x.1 != 0);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Divider;
+
+    /// The multiplication gives the quotient of every `u32` by the divisors a grid has,
+    /// checked at the ends of the range and around the multiples.
+    #[test]
+    fn divider_equals_division() {
+        for d in [1usize, 2, 3, 7, 255, 257, 513, 1025, 65_535, 263_169, 16_581_375, u32::MAX as usize] {
+            let div = Divider::new(d);
+            let mut ns = vec![0usize, 1, u32::MAX as usize - 1, u32::MAX as usize];
+            for k in [1usize, 2, 3, 1000, (u32::MAX as usize) / d] {
+                let m = k * d;
+                ns.extend([m.saturating_sub(1), m, m + 1].into_iter().filter(|&n| n <= u32::MAX as usize));
+            }
+            for n in ns {
+                assert_eq!(div.div(n), n / d, "{n} / {d}");
+            }
+        }
+    }
 }

@@ -45,6 +45,7 @@ use rustc_hash::FxHashMap;
 use super::options::{check_field, key, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
+use crate::prefetch::prefetch;
 
 /// The diagram by the pixel route, or `None` where it does not apply.
 pub(crate) fn diagram(
@@ -212,21 +213,6 @@ fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: us
     prefetch(nodes, q);
     prefetch(nodes, q.wrapping_sub(cols));
     prefetch(nodes, q + cols);
-}
-
-/// Asks the processor to bring the cache line of `data[i]` in (nothing if `i` is out of
-/// bounds): the load does not wait for it, unlike reading the entry.
-#[inline(always)]
-fn prefetch<T>(data: &[T], i: usize) {
-    #[cfg(target_arch = "x86_64")]
-    if i < data.len() {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        // SAFETY: a prefetch is a hint that never faults nor reads into the program's
-        // state; the address is inside `data`, and SSE is part of x86_64.
-        unsafe { _mm_prefetch::<_MM_HINT_T0>(data.as_ptr().add(i) as *const i8) };
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    std::hint::black_box(data.get(i).map(|x| x as *const T));
 }
 
 /// Reads `data` at `at + i · steps[0] + j · steps[1]` for `i, j` in -1, 0, 1 (the nine
