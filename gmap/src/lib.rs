@@ -95,7 +95,7 @@ pub use info::{info, Info, InfoOptions};
 pub use input::{open, open_with, Input, MapInput, OpenOptions, Sourced};
 pub use persistence::{persistence, persistence_file, Persistence, PersistenceOptions};
 pub use progress::Progress;
-pub use report::{homology, homology_file, ArchSpace, CellName, NamedGenerator, Report};
+pub use report::{homology, homology_file, ArchSpace, CellName, Chain, CubeGrid, NamedGenerator, Report};
 pub use rooms::{rooms_file, rooms_of, Rooms};
 pub use route::{simplify_if_safe, HomologyOptions, Method, Via};
 pub use save::{save, save_file, SaveOptions};

@@ -19,7 +19,133 @@ pub struct NamedGenerator {
     /// its order: 0 for a free summand (Z, or the field), k for Z/k
     pub order: gmap_homology::Natural,
     /// the cycle: cells with their coefficients
-    pub chain: Vec<(CellName, i64)>,
+    pub chain: Chain,
+}
+
+/// The cells of a generator with their coefficients: named one by one, or, for the cubes of
+/// a cubical set's one-pass route, as points of the set's doubled grid named when read (that
+/// route gives millions of cells: a [`CellName`] each would take several times their memory
+/// and most of the time of writing them out).
+#[derive(Clone, Debug)]
+pub enum Chain {
+    /// cells with their names
+    Named(Vec<(CellName, i64)>),
+    /// points of a doubled grid (cells of the cubes) with their coefficients
+    Grid {
+        /// `(point, coefficient)`
+        cells: Vec<(u64, i64)>,
+        /// how a point is named
+        grid: std::sync::Arc<CubeGrid>,
+    },
+}
+
+/// How the points of a cubical set's doubled grid name cubes: `2L + 1` points per axis (axis
+/// 0 fastest, a cell odd along the axes it spans), the box's minimal vertex added, the axes
+/// given in reverse order when `reversed` (a C-ordered array read in storage order).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CubeGrid {
+    points: Vec<usize>,
+    min: Vec<i64>,
+    reversed: bool,
+}
+
+impl CubeGrid {
+    /// The grid of `points` per axis (storage order), the box's minimal vertex `min` (zeros
+    /// where shorter), named in reverse axis order if `reversed`.
+    pub fn new(points: &[usize], min: &[i64], reversed: bool) -> Self {
+        let min = (0..points.len()).map(|a| min.get(a).copied().unwrap_or(0)).collect();
+        CubeGrid { points: points.to_vec(), min, reversed }
+    }
+
+    /// The number of axes.
+    pub fn dim(&self) -> usize {
+        self.points.len()
+    }
+
+    /// The cube of grid point `point`: its minimal vertex and extent, in naming order.
+    pub fn cube(&self, point: u64) -> (smallvec::SmallVec<[i64; 4]>, smallvec::SmallVec<[u8; 4]>) {
+        let mut p = point as usize;
+        let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
+        let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
+        for (a, &n) in self.points.iter().enumerate() {
+            let c = p % n;
+            p /= n;
+            lo.push(self.min[a] + (c / 2) as i64);
+            extent.push((c % 2) as u8);
+        }
+        if self.reversed {
+            lo.reverse();
+            extent.reverse();
+        }
+        (lo, extent)
+    }
+
+    /// The name of grid point `point`.
+    pub fn name(&self, point: u64) -> CellName {
+        let (min, extent) = self.cube(point);
+        CellName::Cube { min, extent }
+    }
+}
+
+impl Chain {
+    /// The number of cells.
+    pub fn len(&self) -> usize {
+        match self {
+            Chain::Named(v) => v.len(),
+            Chain::Grid { cells, .. } => cells.len(),
+        }
+    }
+
+    /// No cells.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The cells with their coefficients, in order (a grid's cells named as they come).
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = (CellName, i64)> + '_ {
+        (0..self.len()).map(move |i| match self {
+            Chain::Named(v) => v[i].clone(),
+            Chain::Grid { cells, grid } => (grid.name(cells[i].0), cells[i].1),
+        })
+    }
+
+    /// The first cell and its coefficient.
+    pub fn first(&self) -> Option<(CellName, i64)> {
+        self.iter().next()
+    }
+
+    /// The coefficients, in order.
+    pub fn coefficients(&self) -> Vec<i64> {
+        match self {
+            Chain::Named(v) => v.iter().map(|x| x.1).collect(),
+            Chain::Grid { cells, .. } => cells.iter().map(|x| x.1).collect(),
+        }
+    }
+
+    /// Reverses the axes of the cubes named (a set whose caller's axes are the reverse of
+    /// its storage's); other cells are left as they are.
+    pub fn reverse_cube_axes(&mut self) {
+        match self {
+            Chain::Named(v) => {
+                for (cell, _) in v.iter_mut() {
+                    if let CellName::Cube { min, extent } = cell {
+                        min.reverse();
+                        extent.reverse();
+                    }
+                }
+            }
+            Chain::Grid { grid, .. } => {
+                let g = std::sync::Arc::make_mut(grid);
+                g.reversed = !g.reversed;
+            }
+        }
+    }
+}
+
+impl From<Vec<(CellName, i64)>> for Chain {
+    fn from(v: Vec<(CellName, i64)>) -> Self {
+        Chain::Named(v)
+    }
 }
 
 /// The result of [`homology`]: the groups, how they were computed, and the generators when
@@ -206,7 +332,7 @@ impl Report {
                     out.push(',');
                 }
                 out.push_str("{\"cell\":");
-                match cell {
+                match &cell {
                     CellName::Cube { min, extent } => {
                         out.push_str("{\"cube\":[");
                         push_list(&mut out, min.iter().copied());
@@ -217,7 +343,7 @@ impl Report {
                     other => out.push_str(&other.to_json().to_string()),
                 }
                 out.push_str(",\"coefficient\":");
-                out.push_str(itoa::Buffer::new().format(*coef));
+                out.push_str(itoa::Buffer::new().format(coef));
                 out.push('}');
             }
             let _ = write!(out, "],\"dim\":{},\"order\":{}}}", g.dim, json!(g.order));
@@ -279,11 +405,11 @@ impl Report {
             };
             let _ = write!(out, "generator of H_{} ({order}):", x.dim);
             let mut digits = itoa::Buffer::new();
-            for (cell, coef) in &x.chain {
-                out.push_str(if *coef >= 0 { " +" } else { " " });
-                out.push_str(digits.format(*coef));
+            for (cell, coef) in x.chain.iter() {
+                out.push_str(if coef >= 0 { " +" } else { " " });
+                out.push_str(digits.format(coef));
                 out.push(' ');
-                match cell {
+                match &cell {
                     // a cube's name written in place: `[0,1]x2` (as `CellName::to_text`)
                     CellName::Cube { min, extent } => {
                         for (a, (&lo, &e)) in min.iter().zip(extent).enumerate() {
@@ -553,30 +679,22 @@ pub fn cubical_generators(
         Some(p) => c.rem_euclid(p as i64),
         None => c,
     };
-    let grid = &g.grid;
-    let name = |point: u64| {
-        let mut p = point as usize;
-        let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
-        let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
-        for (a, &n) in grid.iter().enumerate() {
-            let c = p % n;
-            p /= n;
-            lo.push(min.get(a).copied().unwrap_or(0) + (c / 2) as i64);
-            extent.push((c % 2) as u8);
-        }
-        if reversed {
-            lo.reverse();
-            extent.reverse();
-        }
-        CellName::Cube { min: lo, extent }
-    };
+    let grid = std::sync::Arc::new(CubeGrid::new(&g.grid, min, reversed));
     let generators = g
         .generators
         .into_iter()
-        .map(|z| NamedGenerator {
-            dim: z.dim,
-            order: gmap_homology::Natural::from(0u64),
-            chain: z.chain.into_iter().map(|(p, c)| (name(p), coefficient(c))).collect(),
+        .map(|z| {
+            let mut cells = z.chain;
+            if o.field.is_some() {
+                for x in cells.iter_mut() {
+                    x.1 = coefficient(x.1);
+                }
+            }
+            NamedGenerator {
+                dim: z.dim,
+                order: gmap_homology::Natural::from(0u64),
+                chain: Chain::Grid { cells, grid: grid.clone() },
+            }
         })
         .collect();
     Ok(Some((groups, generators)))
@@ -654,6 +772,6 @@ fn name_generator(named: &Named<'_>, x: Generator) -> NamedGenerator {
     NamedGenerator {
         dim: x.dim,
         order: x.order.clone(),
-        chain: x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect(),
+        chain: Chain::Named(x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect()),
     }
 }

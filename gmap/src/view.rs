@@ -106,9 +106,9 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
                 let gens = report_of(input)?;
                 for (g, name) in gens.iter().zip(generator_names(&gens)) {
                     let mut cells = Vec::with_capacity(g.chain.len());
-                    for (c, _) in &g.chain {
+                    for (c, _) in g.chain.iter() {
                         if let CellName::Cube { min, extent } = c {
-                            cells.push(scene.add_cube(min, extent)?);
+                            cells.push(scene.add_cube(&min, &extent)?);
                         }
                     }
                     scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
@@ -145,10 +145,10 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
                 let gens = report_of(input)?;
                 for (g, name) in gens.iter().zip(generator_names(&gens)) {
                     let mut cells = Vec::with_capacity(g.chain.len());
-                    for (c, _) in &g.chain {
+                    for (c, _) in g.chain.iter() {
                         if let CellName::Region(id) | CellName::NamedRegion { id, .. } = c {
                             let r = x
-                                .index_of((*id).into())
+                                .index_of(id.into())
                                 .ok_or_else(|| err!(Compute, "generator region {id} is unknown"))?;
                             cells.push(x.rank_in_dim(r) as u32);
                         }
@@ -180,10 +180,10 @@ fn add_map_generators(scene: &mut Scene, map: &DenseMap, gens: &[NamedGenerator]
     for (g, name) in gens.iter().zip(generator_names(gens)) {
         let cells_of = map.cells(g.dim);
         let mut cells = Vec::with_capacity(g.chain.len());
-        for (c, _) in &g.chain {
+        for (c, _) in g.chain.iter() {
             match c {
-                CellName::Dart { dart, simplex: None, .. } if (*dart as usize) < map.dart_count() => {
-                    cells.push(cells_of.of[*dart as usize]);
+                CellName::Dart { dart, simplex: None, .. } if (dart as usize) < map.dart_count() => {
+                    cells.push(cells_of.of[dart as usize]);
                 }
                 other => return Err(err!(Compute, "a generator names {}, not a cell of the map", other.to_text())),
             }

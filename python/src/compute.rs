@@ -3,7 +3,7 @@
 //! back from its JSON (how results cross process boundaries). Both give the facade's
 //! [`gmap::Report`], so the rest of the package sees one result type.
 
-use gmap::{CellName, HomologyOptions, NamedGenerator, Report};
+use gmap::{CellName, Chain, HomologyOptions, NamedGenerator, Report};
 use gmap_homology::generators::generators;
 use gmap_homology::{homology_z, homology_zp, Homology, Natural};
 
@@ -90,7 +90,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
             g.into_iter()
                 .map(|x| NamedGenerator {
                     dim: x.dim,
-                    chain: x.chain.iter().map(|&(cell, k)| (name(x.dim, cell), k)).collect(),
+                    chain: Chain::Named(x.chain.iter().map(|&(cell, k)| (name(x.dim, cell), k)).collect()),
                     order: x.order,
                 })
                 .collect(),
@@ -105,12 +105,7 @@ pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
 /// are the reverse of its storage's).
 pub fn reverse_cube_axes(r: &mut Report) {
     for g in r.generators.iter_mut().flatten() {
-        for (cell, _) in g.chain.iter_mut() {
-            if let CellName::Cube { min, extent } = cell {
-                min.reverse();
-                extent.reverse();
-            }
-        }
+        g.chain.reverse_cube_axes();
     }
 }
 
@@ -182,10 +177,12 @@ pub fn report_from_json(v: &serde_json::Value) -> Option<Report> {
                     Some(NamedGenerator {
                         dim: x["dim"].as_u64()? as usize,
                         order: nat(&x["order"])?,
-                        chain: chain
-                            .iter()
-                            .map(|e| Some((cell(&e["cell"])?, e["coefficient"].as_i64()?)))
-                            .collect::<Option<Vec<_>>>()?,
+                        chain: Chain::Named(
+                            chain
+                                .iter()
+                                .map(|e| Some((cell(&e["cell"])?, e["coefficient"].as_i64()?)))
+                                .collect::<Option<Vec<_>>>()?,
+                        ),
                     })
                 })
                 .collect::<Option<Vec<_>>>()?,

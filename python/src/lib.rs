@@ -12,9 +12,11 @@
 //! * [`page`]: the page of `gmap view` for `obj.view()` and a notebook's `_repr_html_`.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use numpy::{IntoPyArray, PyArrayDescrMethods, ToPyArray};
 use pyo3::prelude::*;
+use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyList, PyString, PyTuple};
 
 mod compute;
@@ -26,43 +28,84 @@ mod persist;
 
 use compute::Cubes;
 use errors::Failure;
-use gmap::{CellName, HomologyOptions, Input, MapInput, Method, Report, Sourced, Via};
+use gmap::{CellName, Chain, HomologyOptions, Input, MapInput, Method, NamedGenerator, Report, Sourced, Via};
 use gmapobj::PyGMap;
 use objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
 
-/// One summand's representative cycle, in the input's own terms.
-#[pyclass(name = "Generator", module = "gmap", frozen, get_all)]
+/// One summand's representative cycle, in the input's own terms. Its arrays are made when
+/// first read (a large image has hundreds of thousands of generators: their cells stay in
+/// the result, compact, until asked for).
+#[pyclass(name = "Generator", module = "gmap", frozen)]
 pub struct PyGenerator {
-    /// the dimension k of the homology group
-    dim: usize,
-    /// 0 for a free summand (Z, or the field), t for Z/t (an exact int)
+    /// the result the generator belongs to, and its place there
+    report: Arc<Report>,
+    index: usize,
+    /// `order` as a Python int
     order: PyObject,
-    /// the cells of the chain: tuples of vertex labels (simplicial complexes), a uint32
-    /// array of darts (G-maps), an int64 array (m, d) of cubes' minimal vertices (cubical
-    /// sets), a uint64 array of region ids (architectural complexes)
-    cells: PyObject,
-    /// for cubical sets: a uint8 array (m, d), 1 along the axes a cell spans; else None
-    extents: PyObject,
-    /// the coefficient of each cell, an int64 array
-    coefficients: PyObject,
+    /// `(cells, extents, coefficients)`, once read
+    arrays: GILOnceCell<(PyObject, PyObject, PyObject)>,
+}
+
+impl PyGenerator {
+    /// The generator in its report (made from there: a `None` would be a mistake of this
+    /// module, reported as an error rather than a panic).
+    fn generator(&self) -> PyResult<&NamedGenerator> {
+        self.report
+            .generators
+            .as_deref()
+            .and_then(|g| g.get(self.index))
+            .ok_or_else(|| Failure::input(format!("generator {} is not in its result", self.index)).into())
+    }
+
+    fn arrays(&self, py: Python<'_>) -> PyResult<&(PyObject, PyObject, PyObject)> {
+        self.arrays.get_or_try_init(py, || chain_arrays(py, &self.generator()?.chain))
+    }
 }
 
 #[pymethods]
 impl PyGenerator {
-    fn __repr__(&self, py: Python<'_>) -> String {
-        format!(
-            "<gmap.Generator dim={} order={} cells={}>",
-            self.dim,
-            self.order.bind(py),
-            self.coefficients.bind(py).len().unwrap_or(0)
-        )
+    /// the dimension k of the homology group
+    #[getter]
+    fn dim(&self) -> PyResult<usize> {
+        Ok(self.generator()?.dim)
+    }
+
+    /// 0 for a free summand (Z, or the field), t for Z/t (an exact int)
+    #[getter]
+    fn order(&self, py: Python<'_>) -> PyObject {
+        self.order.clone_ref(py)
+    }
+
+    /// the cells of the chain: tuples of vertex labels (simplicial complexes), a uint32
+    /// array of darts (G-maps), an int64 array (m, d) of cubes' minimal vertices (cubical
+    /// sets), a uint64 array of region ids (architectural complexes)
+    #[getter]
+    fn cells(&self, py: Python<'_>) -> PyResult<PyObject> {
+        Ok(self.arrays(py)?.0.clone_ref(py))
+    }
+
+    /// for cubical sets: a uint8 array (m, d), 1 along the axes a cell spans; else None
+    #[getter]
+    fn extents(&self, py: Python<'_>) -> PyResult<PyObject> {
+        Ok(self.arrays(py)?.1.clone_ref(py))
+    }
+
+    /// the coefficient of each cell, an int64 array
+    #[getter]
+    fn coefficients(&self, py: Python<'_>) -> PyResult<PyObject> {
+        Ok(self.arrays(py)?.2.clone_ref(py))
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let g = self.generator()?;
+        Ok(format!("<gmap.Generator dim={} order={} cells={}>", g.dim, self.order.bind(py), g.chain.len()))
     }
 }
 
 /// The homology groups of an input: H_k = Z^betti[k] + Z/t for t in torsion[k].
 #[pyclass(name = "Homology", module = "gmap", frozen)]
 pub struct PyHomology {
-    report: Report,
+    report: Arc<Report>,
     generators: Option<Py<PyList>>,
 }
 
@@ -73,62 +116,73 @@ fn natural_to_py(py: Python<'_>, n: &gmap_homology::Natural) -> PyResult<PyObjec
     })
 }
 
-fn generators_to_py(py: Python<'_>, r: &Report) -> PyResult<Option<Py<PyList>>> {
+/// A generator per summand of the report, each reading its cells from the shared report.
+fn generators_to_py(py: Python<'_>, r: &Arc<Report>) -> PyResult<Option<Py<PyList>>> {
     let Some(gens) = &r.generators else { return Ok(None) };
-    let out = PyList::empty(py);
-    for g in gens {
-        let coefficients = g.chain.iter().map(|(_, k)| *k).collect::<Vec<i64>>().to_pyarray(py).into_any().unbind();
-        let cells_of = || g.chain.iter().map(|(c, _)| c);
-        let n = g.chain.len();
-        let (cells, extents): (PyObject, PyObject) = match g.chain.first().map(|(c, _)| c) {
-            Some(CellName::Cube { min, .. }) => {
-                let d = min.len();
-                let mut lo = Vec::with_capacity(n * d);
-                let mut ex = Vec::with_capacity(n * d);
-                for c in cells_of() {
-                    if let CellName::Cube { min, extent } = c {
-                        lo.extend_from_slice(min);
-                        ex.extend_from_slice(extent);
-                    }
-                }
-                // each array made in its shape at once (a reshape would make a second object)
-                let shaped = |e: numpy::ndarray::ShapeError| Failure::input(e.to_string());
-                (
-                    numpy::ndarray::Array2::from_shape_vec((n, d), lo)
-                        .map_err(shaped)?
-                        .into_pyarray(py)
-                        .into_any()
-                        .unbind(),
-                    numpy::ndarray::Array2::from_shape_vec((n, d), ex)
-                        .map_err(shaped)?
-                        .into_pyarray(py)
-                        .into_any()
-                        .unbind(),
-                )
-            }
-            Some(CellName::Dart { .. }) => {
-                let darts: Vec<u32> =
-                    cells_of().map(|c| if let CellName::Dart { dart, .. } = c { *dart } else { 0 }).collect();
-                (darts.to_pyarray(py).into_any().unbind(), py.None())
-            }
-            Some(CellName::Region(_)) => {
-                let ids: Vec<u64> = cells_of().map(|c| if let CellName::Region(r) = c { *r } else { 0 }).collect();
-                (ids.to_pyarray(py).into_any().unbind(), py.None())
-            }
-            _ => {
-                let l = PyList::empty(py);
-                for c in cells_of() {
-                    if let CellName::Simplex(v) = c {
-                        l.append(PyTuple::new(py, v)?)?;
-                    }
-                }
-                (l.into_any().unbind(), py.None())
-            }
-        };
-        let x = PyGenerator { dim: g.dim, order: natural_to_py(py, &g.order)?, cells, extents, coefficients };
-        out.append(Py::new(py, x)?)?;
+    let mut list = Vec::with_capacity(gens.len());
+    for (index, g) in gens.iter().enumerate() {
+        let x =
+            PyGenerator { report: r.clone(), index, order: natural_to_py(py, &g.order)?, arrays: GILOnceCell::new() };
+        list.push(Py::new(py, x)?);
     }
-    Ok(Some(out.unbind()))
+    Ok(Some(PyList::new(py, list)?.unbind()))
+}
+
+/// The arrays of a chain: `(cells, extents, coefficients)` as [`PyGenerator`] gives them.
+fn chain_arrays(py: Python<'_>, chain: &Chain) -> PyResult<(PyObject, PyObject, PyObject)> {
+    let coefficients = chain.coefficients().into_pyarray(py).into_any().unbind();
+    let n = chain.len();
+    // each array made in its shape at once (a reshape would make a second object)
+    let shaped = |e: numpy::ndarray::ShapeError| Failure::input(e.to_string());
+    let cubes = |lo: Vec<i64>, ex: Vec<u8>, d: usize| -> PyResult<(PyObject, PyObject)> {
+        Ok((
+            numpy::ndarray::Array2::from_shape_vec((n, d), lo).map_err(shaped)?.into_pyarray(py).into_any().unbind(),
+            numpy::ndarray::Array2::from_shape_vec((n, d), ex).map_err(shaped)?.into_pyarray(py).into_any().unbind(),
+        ))
+    };
+    if let Chain::Grid { cells, grid } = chain {
+        let d = grid.dim();
+        let (mut lo, mut ex) = (Vec::with_capacity(n * d), Vec::with_capacity(n * d));
+        for &(p, _) in cells {
+            let (min, extent) = grid.cube(p);
+            lo.extend_from_slice(&min);
+            ex.extend_from_slice(&extent);
+        }
+        let (cells, extents) = cubes(lo, ex, d)?;
+        return Ok((cells, extents, coefficients));
+    }
+    let (cells, extents): (PyObject, PyObject) = match chain.first().map(|(c, _)| c) {
+        Some(CellName::Cube { min, .. }) => {
+            let d = min.len();
+            let (mut lo, mut ex) = (Vec::with_capacity(n * d), Vec::with_capacity(n * d));
+            for (c, _) in chain.iter() {
+                if let CellName::Cube { min, extent } = c {
+                    lo.extend_from_slice(&min);
+                    ex.extend_from_slice(&extent);
+                }
+            }
+            cubes(lo, ex, d)?
+        }
+        Some(CellName::Dart { .. }) => {
+            let darts: Vec<u32> =
+                chain.iter().map(|(c, _)| if let CellName::Dart { dart, .. } = c { dart } else { 0 }).collect();
+            (darts.to_pyarray(py).into_any().unbind(), py.None())
+        }
+        Some(CellName::Region(_)) => {
+            let ids: Vec<u64> = chain.iter().map(|(c, _)| if let CellName::Region(r) = c { r } else { 0 }).collect();
+            (ids.to_pyarray(py).into_any().unbind(), py.None())
+        }
+        _ => {
+            let l = PyList::empty(py);
+            for (c, _) in chain.iter() {
+                if let CellName::Simplex(v) = c {
+                    l.append(PyTuple::new(py, v)?)?;
+                }
+            }
+            (l.into_any().unbind(), py.None())
+        }
+    };
+    Ok((cells, extents, coefficients))
 }
 
 #[pymethods]
@@ -261,6 +315,7 @@ fn field_of(field: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
 }
 
 fn finish(py: Python<'_>, report: Report) -> PyResult<PyHomology> {
+    let report = Arc::new(report);
     let generators = generators_to_py(py, &report)?;
     Ok(PyHomology { report, generators })
 }
