@@ -82,6 +82,7 @@ pub mod edit;
 pub mod ep;
 pub mod error;
 pub mod examples;
+pub mod fastdiv;
 pub mod geometry;
 pub mod ids;
 pub mod io;

@@ -47,6 +47,8 @@ pub struct CubeGrid {
     points: Vec<usize>,
     min: Vec<i64>,
     reversed: bool,
+    /// the points per axis as dividers, when the grid's points fit in `u32`
+    div: Option<Vec<gmap_core::fastdiv::Divider>>,
 }
 
 impl CubeGrid {
@@ -54,7 +56,9 @@ impl CubeGrid {
     /// where shorter), named in reverse axis order if `reversed`.
     pub fn new(points: &[usize], min: &[i64], reversed: bool) -> Self {
         let min = (0..points.len()).map(|a| min.get(a).copied().unwrap_or(0)).collect();
-        CubeGrid { points: points.to_vec(), min, reversed }
+        let fits = points.iter().try_fold(1usize, |v, &n| v.checked_mul(n)).is_some_and(|t| t <= u32::MAX as usize);
+        let div = fits.then(|| points.iter().map(|&n| gmap_core::fastdiv::Divider::new(n)).collect()).flatten();
+        CubeGrid { points: points.to_vec(), min, reversed, div }
     }
 
     /// The number of axes.
@@ -68,8 +72,14 @@ impl CubeGrid {
         let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
         let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
         for (a, &n) in self.points.iter().enumerate() {
-            let c = p % n;
-            p /= n;
+            let (q, c) = match &self.div {
+                Some(div) => {
+                    let q = div[a].quotient(p);
+                    (q, p - q * n)
+                }
+                None => (p / n, p % n),
+            };
+            p = q;
             lo.push(self.min[a] + (c / 2) as i64);
             extent.push((c % 2) as u8);
         }
@@ -78,6 +88,36 @@ impl CubeGrid {
             extent.reverse();
         }
         (lo, extent)
+    }
+
+    /// Appends the name of grid point `point` as text, as [`CellName::to_text`] writes it
+    /// (`[0,1]x2`), without making the name.
+    pub fn push_text(&self, point: u64, out: &mut String) {
+        const MAX: usize = 8;
+        let d = self.points.len();
+        if d > MAX {
+            let (min, extent) = self.cube(point);
+            return push_cube_text(out, &min, &extent);
+        }
+        let (mut lo, mut ex) = ([0i64; MAX], [0u8; MAX]);
+        let mut p = point as usize;
+        for (a, &n) in self.points.iter().enumerate() {
+            let (q, c) = match &self.div {
+                Some(div) => {
+                    let q = div[a].quotient(p);
+                    (q, p - q * n)
+                }
+                None => (p / n, p % n),
+            };
+            p = q;
+            lo[a] = self.min[a] + (c / 2) as i64;
+            ex[a] = (c % 2) as u8;
+        }
+        if self.reversed {
+            lo[..d].reverse();
+            ex[..d].reverse();
+        }
+        push_cube_text(out, &lo[..d], &ex[..d]);
     }
 
     /// The name of grid point `point`.
@@ -405,35 +445,52 @@ impl Report {
             };
             let _ = write!(out, "generator of H_{} ({order}):", x.dim);
             let mut digits = itoa::Buffer::new();
-            for (cell, coef) in x.chain.iter() {
+            let mut term = |out: &mut String, coef: i64| {
                 out.push_str(if coef >= 0 { " +" } else { " " });
                 out.push_str(digits.format(coef));
                 out.push(' ');
-                match &cell {
-                    // a cube's name written in place: `[0,1]x2` (as `CellName::to_text`)
-                    CellName::Cube { min, extent } => {
-                        for (a, (&lo, &e)) in min.iter().zip(extent).enumerate() {
-                            if a > 0 {
-                                out.push('x');
-                            }
-                            if e == 1 {
-                                out.push('[');
-                                out.push_str(digits.format(lo));
-                                out.push(',');
-                                out.push_str(digits.format(lo + 1));
-                                out.push(']');
-                            } else {
-                                out.push_str(digits.format(lo));
-                            }
+            };
+            match &x.chain {
+                // a grid's cubes named as they are written, without a `CellName` each
+                Chain::Grid { cells, grid } => {
+                    for &(p, coef) in cells {
+                        term(&mut out, coef);
+                        grid.push_text(p, &mut out);
+                    }
+                }
+                Chain::Named(cells) => {
+                    for (cell, coef) in cells {
+                        term(&mut out, *coef);
+                        match cell {
+                            CellName::Cube { min, extent } => push_cube_text(&mut out, min, extent),
+                            other => out.push_str(&other.to_text()),
                         }
                     }
-                    other => out.push_str(&other.to_text()),
                 }
             }
             out.push('\n');
             w.write_all(out.as_bytes())?;
         }
         Ok(())
+    }
+}
+
+/// Appends a cube's name as [`CellName::to_text`] writes it: `[0,1]x2`.
+fn push_cube_text(out: &mut String, min: &[i64], extent: &[u8]) {
+    let mut digits = itoa::Buffer::new();
+    for (a, (&lo, &e)) in min.iter().zip(extent).enumerate() {
+        if a > 0 {
+            out.push('x');
+        }
+        if e == 1 {
+            out.push('[');
+            out.push_str(digits.format(lo));
+            out.push(',');
+            out.push_str(digits.format(lo + 1));
+            out.push(']');
+        } else {
+            out.push_str(digits.format(lo));
+        }
     }
 }
 

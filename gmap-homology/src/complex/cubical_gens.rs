@@ -41,6 +41,7 @@
 
 use std::collections::VecDeque;
 
+use gmap_core::fastdiv::Divider;
 use gmap_core::union_find::UnionFind;
 
 use super::cubical::CubicalError;
@@ -105,33 +106,8 @@ struct Box {
     div: [Divider; 3],
 }
 
-/// Division of a `u32` by a fixed divisor with a multiplication (Lemire, Kaser and Kurz,
-/// "Faster remainder by direct computation", 2019): the sweep turns grid points into
-/// coordinates millions of times, and a hardware division costs several times more.
-#[derive(Clone, Copy)]
-struct Divider {
-    m: u64,
-}
-
-impl Divider {
-    fn new(d: usize) -> Self {
-        let d = d.max(1) as u64;
-        Divider { m: (u64::MAX / d).wrapping_add(1) }
-    }
-
-    /// `n / d` for `n < 2^32` (the divisor 1 gives `m = 0`: handled apart).
-    #[inline]
-    fn div(self, n: usize) -> usize {
-        if self.m == 0 {
-            n
-        } else {
-            ((u128::from(self.m) * n as u128) >> 64) as usize
-        }
-    }
-}
-
 impl Box {
-    fn new(shape: &[usize]) -> Self {
+    fn new(shape: &[usize]) -> Result<Self, CubicalError> {
         let d = shape.len();
         let mut n = [1usize; 3];
         let mut g = [1usize; 3];
@@ -149,8 +125,11 @@ impl Box {
             v *= if a < d { n[a] + 1 } else { 1 };
             c *= n[a];
         }
-        let div = [Divider::new(g[0]), Divider::new(gs[1]), Divider::new(gs[2])];
-        Box { d, n, g, gs, vs, cs, div }
+        // the caller checked that the grid's points fit in u32: so do its strides
+        let div = [g[0], gs[1], gs[2]]
+            .map(|x| Divider::new(x).ok_or(CubicalError::TooLarge { points: x.to_string(), limit: u32::MAX as u64 }));
+        let [a, b, c] = div;
+        Ok(Box { d, n, g, gs, vs, cs, div: [a?, b?, c?] })
     }
 
     fn grid_len(&self) -> usize {
@@ -186,9 +165,9 @@ impl Box {
     /// The doubled coordinates of grid point `p`.
     #[inline]
     fn coords(&self, p: usize) -> [usize; 3] {
-        let z = self.div[2].div(p);
+        let z = self.div[2].quotient(p);
         let r = p - z * self.gs[2];
-        let y = self.div[1].div(r);
+        let y = self.div[1].quotient(r);
         [r - y * self.gs[1], y, z]
     }
 
@@ -276,7 +255,7 @@ pub fn cubical_generators_pairing(
         }
     }
     gmap_core::resources::check_memory("the generators of a cubical set", bytes_needed(shape))?;
-    let bx = Box::new(shape);
+    let bx = Box::new(shape)?;
     let mut betti = vec![0u64; d + 1];
     // H_{d-1} first: its union-find over the cubes is freed before the grid is built
     let top = if d >= 2 { complement_boundaries(&bx, bits)? } else { Vec::new() };
@@ -1048,26 +1027,4 @@ fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
     }
     out.retain(|x| x.1 != 0);
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Divider;
-
-    /// The multiplication gives the quotient of every `u32` by the divisors a grid has,
-    /// checked at the ends of the range and around the multiples.
-    #[test]
-    fn divider_equals_division() {
-        for d in [1usize, 2, 3, 7, 255, 257, 513, 1025, 65_535, 263_169, 16_581_375, u32::MAX as usize] {
-            let div = Divider::new(d);
-            let mut ns = vec![0usize, 1, u32::MAX as usize - 1, u32::MAX as usize];
-            for k in [1usize, 2, 3, 1000, (u32::MAX as usize) / d] {
-                let m = k * d;
-                ns.extend([m.saturating_sub(1), m, m + 1].into_iter().filter(|&n| n <= u32::MAX as usize));
-            }
-            for n in ns {
-                assert_eq!(div.div(n), n / d, "{n} / {d}");
-            }
-        }
-    }
 }
