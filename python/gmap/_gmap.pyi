@@ -36,7 +36,8 @@ class ComputationError(GmapError):
     """A computation that could not finish (overflow, internal check)."""
 
 class Generator:
-    """One summand's representative cycle, in the input's own terms."""
+    """One summand's representative cycle, in the input's own terms (its arrays are made
+    when first read, then kept)."""
 
     dim: int
     order: int

@@ -69,6 +69,14 @@ def test_cubical_generators_are_coordinates():
     assert loop.cells.shape[1] == 2 and loop.extents.shape == loop.cells.shape
     # every edge of the loop lies on the ring (not through the hole's inside)
     assert loop.extents.sum(axis=1).tolist() == [1] * len(loop.cells)
+    # the four edges around the hole, in the array's axis order: [0,1] along an axis is the
+    # hole's side at 1 along the other
+    assert sorted(map(tuple, np.hstack([loop.cells, loop.extents]).tolist())) == [
+        (1, 1, 0, 1), (1, 1, 1, 0), (1, 2, 1, 0), (2, 1, 0, 1)]
+    # the arrays are made once, when first read, and kept; the repr does not make them
+    assert "cells=4" in repr(loop)
+    assert loop.cells is loop.cells and loop.coefficients is loop.coefficients
+    assert sorted(loop.coefficients.tolist()) == [-1, -1, 1, 1]
 
 
 def test_cubical_arrays_any_layout():
