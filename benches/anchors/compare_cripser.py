@@ -18,7 +18,8 @@ seconds, maximum resident set size):
   apart; the pages of the mapped file are read during the homology;
 * gmap with generators: `CMD FILE.npy --level 0.5 --timings --generators`, its text written
   to a file (`gen`; `genjson` the same with `--json`, about four times the bytes): in 1-D and
-  2-D the cycles read off two union-finds, in 3-D the cubical complex's route;
+  2-D the cycles read off two union-finds, in 3-D those and the loops of a sweep over the
+  grid (`gmap_homology::cubical_gens`);
 * CubicalRipser: `np.load`, `astype(float64)` (the reading stage), then
   `cripser.computePH(a, maxdim=d-1, top_dim=True, location="no")`;
 * GUDHI: `gudhi.CubicalComplex(top_dimensional_cells=a).persistence()`, up to --gudhi-max
