@@ -19,7 +19,8 @@
 //!   vertex but one per component with an edge, in a forest grown inside small aligned blocks
 //!   first. The edges the sweep leaves are a basis, each lifted to its fundamental cycle: the
 //!   edge and the path of the forest between its ends. Where the sweep stalls, a cell is
-//!   made critical and the few critical edges are finished by [`crate::generators`].
+//!   made critical; the critical edges are finished by elimination with unit pivots (their
+//!   `H_1` is the cokernel of `∂_2`), or by [`crate::generators`] where a unit is missing.
 //!
 //! The Betti numbers so found are checked against the Euler characteristic counted on the
 //! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: the
@@ -219,7 +220,8 @@ fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Result<Vec<T>,
 /// [module docs](self). Refuses another dimension, a shape not matching `bits`, a doubled
 /// grid past `u32` numbers, memory over the limit, and in 3-D a set whose sweep stops at a
 /// vertex ([`CubicalError::NotReduced`]: the cubical complex's route then applies) or leaves
-/// more critical edges than [`crate::generators`] takes ([`CubicalError::Generators`]).
+/// critical edges that unit pivots do not clear and that are more than
+/// [`crate::generators`] takes ([`CubicalError::Generators`]).
 /// O(cells · α + the length of the cycles).
 pub fn cubical_generators(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerators, CubicalError> {
     cubical_generators_pairing(shape, bits, usize::MAX)
@@ -726,7 +728,7 @@ fn fill_lone_cavities(bx: &Box, bits: &[u8], st: &mut [u8]) {
 /// standing, updated by the later coreductions of edges into squares (the fill); squares
 /// and cubes need nothing for `H_1`. At the end the edges never paired are cycles on no
 /// square, a basis element each; the frozen edges and the squares with entries in their rows
-/// make a small complex whose `H_1` comes from [`crate::generators`]. Every cycle is lifted
+/// make a small complex whose `H_1` comes from [`frozen_loops`]. Every cycle is lifted
 /// to X through the forest: an edge becomes its fundamental cycle. A vertex that would have
 /// to be frozen is refused ([`CubicalError::NotReduced`]). `pairs` bounds the eliminations
 /// between cells of dimension ≥ 1 (tests of the frozen part).
@@ -939,14 +941,28 @@ fn next_with_entries(bx: &Box, st: &[u8], scan: &mut [usize; 4]) -> Option<(usiz
 }
 
 /// The cycles of the frozen part: the complex `C_2 → C_1 → 0` of the squares with entries in
-/// the frozen rows and the frozen edges, handed to [`crate::generators::generators`]; each
-/// cycle found, a sum of frozen edges, is lifted to the sum of their fundamental cycles.
+/// the frozen rows and the frozen edges. Its `H_1` is the cokernel of `∂_2`: where
+/// [`cokernel_by_unit_pivots`] clears every column, the edges it leaves are a basis;
+/// otherwise the complex goes to [`crate::generators::generators`] (dense past its cells with
+/// entries: limited). Each cycle found, a sum of frozen edges, is lifted to the sum of their
+/// fundamental cycles.
 fn frozen_loops(bx: &Box, st: &[u8], depth: &[u32], frozen: &Frozen) -> Result<Vec<CubeCycle>, CubicalError> {
     let mut squares: Vec<&usize> = frozen.rows.keys().collect();
     squares.sort_unstable();
     let columns: Vec<Vec<(u32, i64)>> = squares.iter().map(|q| frozen.rows[*q].clone()).collect();
     let bad = |what: String| CubicalError::Internal(what);
     let n = frozen.edges.len();
+    // most often unit pivots clear every column: the edges left are a basis, no dense stage
+    if let Some(free) = cokernel_by_unit_pivots(n, columns.clone()) {
+        return Ok(free
+            .into_iter()
+            .map(|i| {
+                let mut chain = Vec::new();
+                fundamental_cycle(bx, st, depth, frozen.edges[i as usize], 1, &mut chain);
+                CubeCycle { dim: 1, chain: merged(chain) }
+            })
+            .collect());
+    }
     let d2 = SparseMatrix::try_from_columns(n, &columns).map_err(|e| bad(e.to_string()))?;
     let complex = ChainComplex::try_new_unchecked_dd(vec![0, n, squares.len()], vec![SparseMatrix::zeros(0, n), d2])
         .map_err(|e| bad(e.to_string()))?;
@@ -968,6 +984,85 @@ fn frozen_loops(bx: &Box, st: &[u8], depth: &[u32], frozen: &Frozen) -> Result<V
         out.push(CubeCycle { dim: 1, chain: merged(chain) });
     }
     Ok(out)
+}
+
+/// A basis of `Z^n / ⟨columns⟩` made of unit vectors, when elimination with pivots ±1 clears
+/// every column: the rows never chosen as a pivot. A pivot `(e, u)` of a column c, `u = ±1`,
+/// says `e ≡ −u·(c − u·e)` modulo the columns, so `e` is dropped from the generators and
+/// from every other column (`c' −= u·c'[e]·c`: unimodular, the quotient unchanged); a
+/// column left without a unit entry, or a coefficient past `i64`, gives `None` (the dense
+/// stage of [`crate::generators`] then decides). The pivot of a column is its unit entry in
+/// the fewest other columns, which keeps the fill small. `columns`: `(row, coefficient)`,
+/// rows below `n`, increasing.
+fn cokernel_by_unit_pivots(n: usize, mut columns: Vec<Column>) -> Option<Vec<u32>> {
+    // the columns each row has an entry in (some no longer: checked when used)
+    let mut rows: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for (j, c) in columns.iter().enumerate() {
+        for &(e, _) in c {
+            rows[e as usize].push(j as u32);
+        }
+    }
+    let mut pivot = vec![false; n];
+    let mut waiting: Vec<usize> = (0..columns.len()).rev().collect();
+    let mut deferred = Vec::new();
+    let mut progress = true;
+    while progress {
+        progress = false;
+        while let Some(j) = waiting.pop() {
+            if columns[j].is_empty() {
+                continue;
+            }
+            let unit = columns[j].iter().filter(|x| x.1.abs() == 1).min_by_key(|x| rows[x.0 as usize].len());
+            let Some(&(e, u)) = unit else {
+                deferred.push(j);
+                continue;
+            };
+            progress = true;
+            let source = std::mem::take(&mut columns[j]);
+            pivot[e as usize] = true;
+            for k in std::mem::take(&mut rows[e as usize]) {
+                let k = k as usize;
+                let Ok(at) = columns[k].binary_search_by_key(&e, |x| x.0) else { continue };
+                let factor = columns[k][at].1.checked_mul(u)?;
+                let (sum, new_rows) = minus_multiple(&columns[k], factor, &source)?;
+                for r in new_rows {
+                    rows[r as usize].push(k as u32);
+                }
+                columns[k] = sum;
+            }
+        }
+        waiting.append(&mut deferred);
+    }
+    waiting.iter().all(|&j| columns[j].is_empty()).then(|| (0..n as u32).filter(|&e| !pivot[e as usize]).collect())
+}
+
+/// A sparse column: `(row, coefficient)`, rows increasing.
+type Column = Vec<(u32, i64)>;
+
+/// `target − factor·source` (both sorted by row) without its zeros, and the rows it has that
+/// `target` had not; `None` past `i64`.
+fn minus_multiple(target: &[(u32, i64)], factor: i64, source: &[(u32, i64)]) -> Option<(Column, Vec<u32>)> {
+    let mut out = Vec::with_capacity(target.len() + source.len());
+    let mut new_rows = Vec::new();
+    let (mut i, mut j) = (0, 0);
+    while i < target.len() || j < source.len() {
+        if j == source.len() || (i < target.len() && target[i].0 < source[j].0) {
+            out.push(target[i]);
+            i += 1;
+        } else if i == target.len() || source[j].0 < target[i].0 {
+            new_rows.push(source[j].0);
+            out.push((source[j].0, factor.checked_mul(source[j].1)?.checked_neg()?));
+            j += 1;
+        } else {
+            let v = target[i].1.checked_sub(factor.checked_mul(source[j].1)?)?;
+            if v != 0 {
+                out.push((target[i].0, v));
+            }
+            i += 1;
+            j += 1;
+        }
+    }
+    Some((out, new_rows))
 }
 
 /// The vertex one step up the forest from vertex `x`, the edge between them, and the edge's
@@ -1027,4 +1122,28 @@ fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
     }
     out.retain(|x| x.1 != 0);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::cokernel_by_unit_pivots;
+
+    #[test]
+    fn unit_pivots_give_a_basis_of_the_cokernel() {
+        // Z³ / ⟨e0 + e1, e1 − e2⟩ ≅ Z, generated by e1 (e0 and e2 are pivots: each in fewer
+        // columns than e1)
+        assert_eq!(cokernel_by_unit_pivots(3, vec![vec![(0, 1), (1, 1)], vec![(1, 1), (2, -1)]]), Some(vec![1]));
+        // a column equal to an earlier one is cleared by it
+        assert_eq!(cokernel_by_unit_pivots(2, vec![vec![(0, 1), (1, 1)], vec![(0, 1), (1, 1)]]), Some(vec![1]));
+        // the fill of one pivot gives the next its unit: ⟨e0 + 2e1, e0 + 3e1⟩ is all of Z²
+        assert_eq!(cokernel_by_unit_pivots(2, vec![vec![(0, 1), (1, 2)], vec![(0, 1), (1, 3)]]), Some(vec![]));
+        // no relation: every row is free
+        assert_eq!(cokernel_by_unit_pivots(2, vec![]), Some(vec![0, 1]));
+        // Z / 2Z has torsion: no unit pivot, the dense stage decides
+        assert_eq!(cokernel_by_unit_pivots(1, vec![vec![(0, 2)]]), None);
+        // a column left with 2e1 after e0 is pivoted: refused the same way
+        assert_eq!(cokernel_by_unit_pivots(2, vec![vec![(0, 1), (1, 1)], vec![(0, 1), (1, 3)]]), None);
+        // coefficients past i64 refuse instead of wrapping
+        assert_eq!(cokernel_by_unit_pivots(2, vec![vec![(0, 1), (1, i64::MAX)], vec![(0, -1), (1, i64::MAX)]]), None);
+    }
 }
