@@ -40,8 +40,6 @@
 //! Periodic images, cycles and images of dimension 4 or more go through the general route
 //! of [`super::cubical`].
 
-use rustc_hash::FxHashMap;
-
 use super::options::{check_field, key, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
@@ -62,7 +60,8 @@ pub(crate) fn diagram(
     }
     // edges and 2-cells are named `3 · vertex + axis` (T: on the grid of (s + 1)^d vertices)
     let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 1));
-    if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize) {
+    // (and 4 + the number of 2-cells is a u32: see `Middle`'s owners)
+    if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize - 4) {
         return None;
     }
     let field = match check_field(opts.field) {
@@ -106,6 +105,9 @@ impl Out<'_> {
     /// A pair between ranks (`None`: essential).
     #[inline]
     fn push(&mut self, dim: usize, birth: u32, death: Option<u32>) {
+        if death == Some(birth) {
+            return; // one rank, one value: most pairs, found without reading the values
+        }
         let b = self.sv[birth as usize];
         let e = death.map_or(f64::INFINITY, |r| self.sv[r as usize]);
         if b != e {
@@ -521,7 +523,7 @@ fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
         let t = rank[low].max(rank[low + stride[axis]]);
         ((t as u64) << 32) | (3 * low + axis) as u64
     };
-    let mut middle = Middle::new(3 * n, field);
+    let mut middle = Middle::new(3 * n, stride, field);
     for (r, &p) in order.iter().enumerate() {
         if let Some(&q) = order.get(r + AHEAD) {
             touch_block(&rank, q as usize, [stride[0], stride[1]]);
@@ -570,28 +572,59 @@ const SHORT: usize = 8;
 
 /// The column reduction of the middle dimension of a 3-D image: the negative 2-cells in
 /// filtration order, each column reduced until its pivot (latest edge, the largest key
-/// `(rank << 32) | edge`) has no owner. An owner per edge; only the columns changed by a
-/// reduction are stored, the others are recomputed from the boundary when needed. A short
-/// column added into a long one goes in place, each entry found by bisection (a merge
-/// would copy the long column for four entries: on 128³ random T, columns of 500 entries
-/// on average).
+/// `(rank << 32) | edge`) has no owner. Only the columns changed by a reduction are stored
+/// (one after the other in one array); the others are recomputed from the boundary when
+/// needed. An edge's owner is one `u32`: [`Middle::FREE`], the place `k < 4` of an
+/// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + s` for
+/// the stored column `s`, so that finding the column to add reads no table. A short column
+/// added into a long one goes in place, each entry found by bisection (a merge would copy
+/// the long column for four entries: on 128³ random T, columns of 500 entries on average).
 struct Middle {
     field: Zp,
+    /// the point strides of the grid the edges and 2-cells are named on
+    stride: [usize; 3],
     owner: Vec<u32>,
-    stored: FxHashMap<u32, Vec<(u64, u32)>>,
+    /// the stored columns: column `s` is `entries[starts[s]..starts[s + 1]]`
+    entries: Vec<(u64, u32)>,
+    starts: Vec<usize>,
     col: Vec<(u64, u32)>,
     other: Vec<(u64, u32)>,
     scratch: Vec<(u64, u32)>,
 }
 
+/// The `k`-th of the four 2-cells containing the edge `e = 3 · point + axis` on a grid of
+/// point strides `stride`: spanned by the edge's axis and the other axis `o` (the first of
+/// the two others for `k < 2`), lower corner the edge's point minus `(k & 1) · e_o`.
+#[inline]
+fn coface(e: u32, k: u32, stride: [usize; 3]) -> u32 {
+    let (v, axis) = (e as usize / 3, e as usize % 3);
+    let others = OTHERS[axis];
+    let (o, normal) = if k < 2 { (others[0], others[1]) } else { (others[1], others[0]) };
+    (3 * (v - (k as usize & 1) * stride[o]) + normal) as u32
+}
+
+/// The place of the 2-cell `id` among the cofaces of its edge `e` ([`coface`]).
+#[inline]
+fn coface_place(e: u32, id: u32) -> u32 {
+    let (v, axis) = (e as usize / 3, e as usize % 3);
+    let (low, normal) = (id as usize / 3, id as usize % 3);
+    let first = OTHERS[axis][1] == normal;
+    2 * u32::from(!first) + u32::from(low != v)
+}
+
+/// The two axes other than each axis, in increasing order.
+const OTHERS: [[usize; 2]; 3] = [[1, 2], [0, 2], [0, 1]];
+
 impl Middle {
     const FREE: u32 = u32::MAX;
 
-    fn new(edges: usize, field: Zp) -> Self {
+    fn new(edges: usize, stride: [usize; 3], field: Zp) -> Self {
         Middle {
             field,
+            stride,
             owner: vec![Self::FREE; edges],
-            stored: FxHashMap::default(),
+            entries: Vec::new(),
+            starts: vec![0],
             col: Vec::new(),
             other: Vec::new(),
             scratch: Vec::new(),
@@ -606,22 +639,27 @@ impl Middle {
         boundary(id, &mut self.col);
         let mut changed = false;
         while let Some(&(pivot, coef)) = self.col.last() {
-            let e = (pivot & 0xffff_ffff) as usize;
-            let o = self.owner[e];
+            let e = (pivot & 0xffff_ffff) as u32;
+            let o = self.owner[e as usize];
             if o == Self::FREE {
-                self.owner[e] = id;
-                if changed {
-                    self.stored.insert(id, self.col.clone());
-                }
+                self.owner[e as usize] = if changed {
+                    // fewer stored columns than 2-cells: `diagram` keeps 4 + their number a u32
+                    let slot = self.starts.len() - 1;
+                    self.entries.extend_from_slice(&self.col);
+                    self.starts.push(self.entries.len());
+                    (4 + slot) as u32
+                } else {
+                    coface_place(e, id)
+                };
                 out.push(1, (pivot >> 32) as u32, Some(death));
                 return;
             }
-            let pcol: &[(u64, u32)] = match self.stored.get(&o) {
-                Some(s) => s,
-                None => {
-                    boundary(o, &mut self.other);
-                    &self.other
-                }
+            let pcol: &[(u64, u32)] = if o < 4 {
+                boundary(coface(e, o, self.stride), &mut self.other);
+                &self.other
+            } else {
+                let s = (o - 4) as usize;
+                &self.entries[self.starts[s]..self.starts[s + 1]]
             };
             let pc = pcol.last().expect("a pivot column is not zero").1;
             let fac = field.neg(field.mul(coef, field.inv(pc)));
@@ -744,7 +782,7 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
         }
         ((t as u64) << 32) | (3 * v + axis) as u64
     };
-    let mut middle = Middle::new(3 * g[0] * gstride[0], field);
+    let mut middle = Middle::new(3 * g[0] * gstride[0], gstride, field);
     for (r, &p) in order.iter().enumerate() {
         if let Some(&q) = order.get(r + AHEAD) {
             touch_block(&rank, q as usize, [stride[0], stride[1]]);
@@ -756,6 +794,56 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
         for &(id, _) in &list {
             if positive[id as usize / 64] >> (id % 64) & 1 == 0 {
                 middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{cubical_persistence, Construction, CubicalOptions, Diagram};
+
+    /// Values from a xorshift generator: `levels` distinct values (ties), or all distinct
+    /// (`levels` 0).
+    fn values(n: usize, seed: u64, levels: u64) -> Vec<f64> {
+        let mut x = seed;
+        (0..n)
+            .map(|_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                if levels == 0 {
+                    (x >> 11) as f64 / (1u64 << 53) as f64
+                } else {
+                    (x % levels) as f64
+                }
+            })
+            .collect()
+    }
+
+    fn pairs(d: &Diagram) -> Vec<(usize, u64, u64)> {
+        let mut v: Vec<_> = d.pairs.iter().map(|p| (p.dim, p.birth.to_bits(), p.death.to_bits())).collect();
+        v.sort_unstable();
+        v
+    }
+
+    /// The pixel route's 3-D diagrams equal the general route's (the one that gives
+    /// cycles) on arrays large enough for long columns, stored columns and every kind of
+    /// addition in the middle dimension.
+    #[test]
+    fn pixel_route_equals_general_route_in_3d() {
+        for (shape, seed, levels) in
+            [([20, 18, 16], 7, 0), ([17, 19, 13], 11, 0), ([12, 14, 15], 5, 4), ([9, 10, 11], 3, 2)]
+        {
+            let vals = values(shape.iter().product(), seed, levels);
+            for construction in [Construction::V, Construction::T] {
+                for (field, superlevel) in [(2, false), (3, false), (2, true)] {
+                    let mut opts = CubicalOptions { construction, superlevel, periodic: false, field, cycles: false };
+                    let fast = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    opts.cycles = true;
+                    let general = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    assert_eq!(pairs(&fast), pairs(&general), "{shape:?} {construction:?} Z/{field} {superlevel}");
+                }
             }
         }
     }
