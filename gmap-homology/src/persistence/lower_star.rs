@@ -58,8 +58,8 @@ pub(crate) fn diagram(
     if opts.periodic || opts.cycles || d == 0 || d > 3 {
         return None;
     }
-    // edges and 2-cells are named `3 · vertex + axis` (T: on the grid of (s + 1)^d vertices)
-    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 1));
+    // edges and 2-cells are named `3 · point + axis` (T: on a grid of (s + 2)^d points)
+    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 2));
     // (and 4 + the number of 2-cells is a u32: see `Middle`'s owners)
     if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize - 4) {
         return None;
@@ -83,8 +83,11 @@ pub(crate) fn diagram(
         _ => (shape[d - 2], shape[d - 1]),
     };
     match (d, construction) {
-        (3, Construction::V) => v3([shape[0], rows, cols], &order, pix, field, &mut out),
-        (3, Construction::T) => t3([shape[0], rows, cols], &order, pix, field, &mut out),
+        // over Z/2 a column entry is its key alone (coefficient 1)
+        (3, Construction::V) if opts.field == 2 => v3::<u64>([shape[0], rows, cols], &order, pix, field, &mut out),
+        (3, Construction::V) => v3::<(u64, u32)>([shape[0], rows, cols], &order, pix, field, &mut out),
+        (3, Construction::T) if opts.field == 2 => t3::<u64>([shape[0], rows, cols], &order, pix, field, &mut out),
+        (3, Construction::T) => t3::<(u64, u32)>([shape[0], rows, cols], &order, pix, field, &mut out),
         (_, Construction::V) => v2(rows, cols, &order, pix, &mut out),
         (_, Construction::T) => t2(rows, cols, &order, pix, &mut out),
     }
@@ -371,7 +374,7 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
 
 /// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
 /// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
-fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
+fn v3<E: Entry>(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
     let n = shape[0] * shape[1] * shape[2];
     let stride = [shape[1] * shape[2], shape[2], 1];
     let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
@@ -523,7 +526,7 @@ fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
         let t = rank[low].max(rank[low + stride[axis]]);
         ((t as u64) << 32) | (3 * low + axis) as u64
     };
-    let mut middle = Middle::new(3 * n, stride, field);
+    let mut middle = Middle::<E>::new(3 * n, stride, field);
     for (r, &p) in order.iter().enumerate() {
         if let Some(&q) = order.get(r + AHEAD) {
             touch_block(&rank, q as usize, [stride[0], stride[1]]);
@@ -545,30 +548,110 @@ fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
 /// (the corner's point grid): `+e(c, a) + e(c + e_a, b) - e(c + e_b, a) - e(c, b)` for
 /// the other axes `a < b`, edges keyed by `edge_key(corner, axis)`, sorted by key.
 #[inline]
-fn square_boundary(
+fn square_boundary<E: Entry>(
     id: u32,
     stride: [usize; 3],
     field: Zp,
     edge_key: impl Fn(usize, usize) -> u64,
-    col: &mut Vec<(u64, u32)>,
+    col: &mut Vec<E>,
 ) {
     let (low, normal) = (id as usize / 3, id as usize % 3);
-    let (a, b) = match normal {
-        0 => (1, 2),
-        1 => (0, 2),
-        _ => (0, 1),
-    };
+    let [a, b] = OTHERS[normal];
     let minus = field.of(-1);
     col.clear();
-    col.push((edge_key(low, a), 1));
-    col.push((edge_key(low + stride[a], b), 1));
-    col.push((edge_key(low + stride[b], a), minus));
-    col.push((edge_key(low, b), minus));
-    col.sort_unstable_by_key(|e| e.0);
+    col.push(E::new(edge_key(low, a), 1));
+    col.push(E::new(edge_key(low + stride[a], b), 1));
+    col.push(E::new(edge_key(low + stride[b], a), minus));
+    col.push(E::new(edge_key(low, b), minus));
+    col.sort_unstable_by_key(|e| e.key());
 }
 
-/// Columns of at most this many entries are added into a long column in place.
-const SHORT: usize = 8;
+/// An entry of a column of the middle dimension: a key `(rank << 32) | edge` and a
+/// coefficient, or over Z/2 the key alone (8 bytes instead of 16: the merges and the
+/// stored columns read half as much).
+trait Entry: Copy + Default {
+    fn new(key: u64, coef: u32) -> Self;
+    fn key(self) -> u64;
+    fn coef(self) -> u32;
+
+    /// `out = a + f · b` for entries sorted by key, zeros dropped.
+    #[inline]
+    fn merge(field: Zp, a: &[Self], f: u32, b: &[Self], out: &mut Vec<Self>) {
+        out.clear();
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() && j < b.len() {
+            let (ka, kb) = (a[i].key(), b[j].key());
+            if ka < kb {
+                out.push(a[i]);
+                i += 1;
+            } else if kb < ka {
+                out.push(Self::new(kb, field.mul(f, b[j].coef())));
+                j += 1;
+            } else {
+                let c = field.add(a[i].coef(), field.mul(f, b[j].coef()));
+                if c != 0 {
+                    out.push(Self::new(ka, c));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+        out.extend_from_slice(&a[i..]);
+        out.extend(b[j..].iter().map(|x| Self::new(x.key(), field.mul(f, x.coef()))));
+    }
+}
+
+impl Entry for u64 {
+    #[inline(always)]
+    fn new(key: u64, _: u32) -> Self {
+        key
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        self
+    }
+    #[inline(always)]
+    fn coef(self) -> u32 {
+        1
+    }
+
+    /// Over Z/2 the sum is the symmetric difference.
+    #[inline]
+    fn merge(_: Zp, a: &[u64], _: u32, b: &[u64], out: &mut Vec<u64>) {
+        out.clear();
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() && j < b.len() {
+            let (x, y) = (a[i], b[j]);
+            if x < y {
+                out.push(x);
+                i += 1;
+            } else if y < x {
+                out.push(y);
+                j += 1;
+            } else {
+                i += 1;
+                j += 1;
+            }
+        }
+        out.extend_from_slice(&a[i..]);
+        out.extend_from_slice(&b[j..]);
+    }
+}
+
+impl Entry for (u64, u32) {
+    #[inline(always)]
+    fn new(key: u64, coef: u32) -> Self {
+        (key, coef)
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        self.0
+    }
+    #[inline(always)]
+    fn coef(self) -> u32 {
+        self.1
+    }
+}
 
 /// The column reduction of the middle dimension of a 3-D image: the negative 2-cells in
 /// filtration order, each column reduced until its pivot (latest edge, the largest key
@@ -576,20 +659,22 @@ const SHORT: usize = 8;
 /// (one after the other in one array); the others are recomputed from the boundary when
 /// needed. An edge's owner is one `u32`: [`Middle::FREE`], the place `k < 4` of an
 /// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + s` for
-/// the stored column `s`, so that finding the column to add reads no table. A short column
-/// added into a long one goes in place, each entry found by bisection (a merge would copy
-/// the long column for four entries: on 128³ random T, columns of 500 entries on average).
-struct Middle {
+/// the stored column `s`, so that finding the column to add reads no table. A column is
+/// added by merging only the part of the working column from the added column's first
+/// key up (the rest stays in place): the added columns are mostly boundaries of four
+/// entries near the pivot, and the working column can be long (on 128³ random T, 1,300
+/// entries on average when a boundary is added).
+struct Middle<E> {
     field: Zp,
     /// the point strides of the grid the edges and 2-cells are named on
     stride: [usize; 3],
     owner: Vec<u32>,
     /// the stored columns: column `s` is `entries[starts[s]..starts[s + 1]]`
-    entries: Vec<(u64, u32)>,
+    entries: Vec<E>,
     starts: Vec<usize>,
-    col: Vec<(u64, u32)>,
-    other: Vec<(u64, u32)>,
-    scratch: Vec<(u64, u32)>,
+    col: Vec<E>,
+    other: Vec<E>,
+    scratch: Vec<E>,
 }
 
 /// The `k`-th of the four 2-cells containing the edge `e = 3 · point + axis` on a grid of
@@ -615,7 +700,7 @@ fn coface_place(e: u32, id: u32) -> u32 {
 /// The two axes other than each axis, in increasing order.
 const OTHERS: [[usize; 2]; 3] = [[1, 2], [0, 2], [0, 1]];
 
-impl Middle {
+impl<E: Entry> Middle<E> {
     const FREE: u32 = u32::MAX;
 
     fn new(edges: usize, stride: [usize; 3], field: Zp) -> Self {
@@ -634,11 +719,12 @@ impl Middle {
     /// Reduces the column of the 2-cell `id` at rank `death`; `boundary(id, col)` fills
     /// `col` with a 2-cell's boundary, sorted by key. Records the pair it makes.
     #[inline]
-    fn column(&mut self, id: u32, death: u32, out: &mut Out, boundary: impl Fn(u32, &mut Vec<(u64, u32)>)) {
+    fn column(&mut self, id: u32, death: u32, out: &mut Out, boundary: impl Fn(u32, &mut Vec<E>)) {
         let field = self.field;
         boundary(id, &mut self.col);
         let mut changed = false;
-        while let Some(&(pivot, coef)) = self.col.last() {
+        while let Some(&top) = self.col.last() {
+            let pivot = top.key();
             let e = (pivot & 0xffff_ffff) as u32;
             let o = self.owner[e as usize];
             if o == Self::FREE {
@@ -654,33 +740,21 @@ impl Middle {
                 out.push(1, (pivot >> 32) as u32, Some(death));
                 return;
             }
-            let pcol: &[(u64, u32)] = if o < 4 {
+            let pcol: &[E] = if o < 4 {
                 boundary(coface(e, o, self.stride), &mut self.other);
                 &self.other
             } else {
                 let s = (o - 4) as usize;
                 &self.entries[self.starts[s]..self.starts[s + 1]]
             };
-            let pc = pcol.last().expect("a pivot column is not zero").1;
-            let fac = field.neg(field.mul(coef, field.inv(pc)));
-            if pcol.len() <= SHORT && self.col.len() > 4 * SHORT {
-                // a short column into a long one: in place, each entry found by bisection
-                for &(k, c) in pcol.iter().rev() {
-                    let c = field.mul(fac, c);
-                    match self.col.binary_search_by_key(&k, |e| e.0) {
-                        Ok(i) => match field.add(self.col[i].1, c) {
-                            0 => {
-                                self.col.remove(i);
-                            }
-                            s => self.col[i].1 = s,
-                        },
-                        Err(i) => self.col.insert(i, (k, c)),
-                    }
-                }
-            } else {
-                field.axpy(&self.col, fac, pcol, &mut self.scratch);
-                std::mem::swap(&mut self.col, &mut self.scratch);
-            }
+            let pc = pcol.last().expect("a pivot column is not zero").coef();
+            let fac = field.neg(field.mul(top.coef(), field.inv(pc)));
+            // the entries below the added column's first key stay
+            let first = pcol[0].key();
+            let lo = self.col.partition_point(|x| x.key() < first);
+            E::merge(field, &self.col[lo..], fac, pcol, &mut self.scratch);
+            self.col.truncate(lo);
+            self.col.extend_from_slice(&self.scratch);
             changed = true;
         }
         unreachable!("a negative 2-cell's column does not reduce to zero");
@@ -691,13 +765,15 @@ impl Middle {
 /// the grid of `(s + 1)^3` points; edges and 2-cells are named `3 · point + axis` (a
 /// 2-cell by its lower corner and its normal axis). A cell's time is the rank of its
 /// earliest voxel.
-fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
+fn t3<E: Entry>(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
     let n = shape[0] * shape[1] * shape[2];
     let stride = [shape[1] * shape[2], shape[2], 1];
     let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
-    let g = [shape[0] + 1, shape[1] + 1, shape[2] + 1];
+    let g = [shape[0] + 2, shape[1] + 2, shape[2] + 2];
     let gstride = [g[1] * g[2], g[2], 1];
     let point = |c: [usize; 3]| c[0] * gstride[0] + c[1] * gstride[1] + c[2];
+    // the voxel c is also the point c + (1, 1, 1) of the grid, in `prank`
+    let inner = gstride[0] + gstride[1] + 1;
 
     // dimension 0: voxels sharing a vertex
     for (r, &p) in order.iter().enumerate() {
@@ -719,7 +795,17 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
             }
         }
     }
-    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
+    // the ranks on the grid, the voxel c at the point c + (1, 1, 1) and u32::MAX (never
+    // earlier) on the border: an edge's four voxels are read with no test of the bounds
+    let mut prank = vec![u32::MAX; g[0] * gstride[0]];
+    for z in 0..shape[0] {
+        for y in 0..shape[1] {
+            let (src, dst) = (z * stride[0] + y * stride[1], point([z, y, 0]) + inner);
+            for (t, node) in prank[dst..dst + shape[2]].iter_mut().zip(&pix.nodes[src..src + shape[2]]) {
+                *t = node[1];
+            }
+        }
+    }
     drop(pix);
 
     // the 2-cells whose earliest voxel is p (at rank r), as (id, the other voxel or None),
@@ -730,11 +816,11 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
         for a in 0..3 {
             let normal = 3 * v + a;
             let below = (c[a] > 0).then(|| p - stride[a]);
-            if below.is_none_or(|q| rank[q] > r) {
+            if prank[v + inner - gstride[a]] > r {
                 list.push((normal as u32, below.map(|q| q as u32)));
             }
             let above = (c[a] + 1 < shape[a]).then(|| p + stride[a]);
-            if above.is_none_or(|q| rank[q] > r) {
+            if prank[v + inner + gstride[a]] > r {
                 list.push(((normal + 3 * gstride[a]) as u32, above.map(|q| q as u32)));
             }
         }
@@ -748,7 +834,10 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
     let mut positive = vec![0u64; (3 * g[0] * gstride[0]).div_ceil(64)];
     let mut list = Vec::with_capacity(6);
     for (r, &p) in order.iter().enumerate().rev() {
-        touch_dual_ahead(order, r, &rank, &f.nodes, stride);
+        if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| order.get(a)) {
+            touch_block(&prank, point(coords(q as usize)) + inner, [gstride[0], gstride[1]]);
+            touch_block(&f.nodes, q as usize, [stride[0], stride[1]]);
+        }
         let r = r as u32;
         f.make(p, r);
         let c = coords(p as usize);
@@ -764,29 +853,18 @@ fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Ou
 
     // dimension 1: an edge's time is its earliest voxel's
     let edge_key = |v: usize, axis: usize| -> u64 {
-        let pc = [v / gstride[0], (v / gstride[1]) % g[1], v % g[2]];
-        let (b, c) = match axis {
-            0 => (1, 2),
-            1 => (0, 2),
-            _ => (0, 1),
-        };
-        let mut t = u32::MAX;
-        for (db, dc) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            if pc[b] < db || pc[c] < dc || pc[b] - db >= shape[b] || pc[c] - dc >= shape[c] {
-                continue;
-            }
-            let mut vc = pc;
-            vc[b] -= db;
-            vc[c] -= dc;
-            t = t.min(rank[vc[0] * stride[0] + vc[1] * stride[1] + vc[2]]);
-        }
+        let [b, c] = OTHERS[axis];
+        let at = v + inner;
+        let t =
+            prank[at].min(prank[at - gstride[b]]).min(prank[at - gstride[c]]).min(prank[at - gstride[b] - gstride[c]]);
         ((t as u64) << 32) | (3 * v + axis) as u64
     };
-    let mut middle = Middle::new(3 * g[0] * gstride[0], gstride, field);
+    let mut middle = Middle::<E>::new(3 * g[0] * gstride[0], gstride, field);
     for (r, &p) in order.iter().enumerate() {
         if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&rank, q as usize, [stride[0], stride[1]]);
-            touch_block(&middle.owner, 3 * point(coords(q as usize)), [3 * gstride[0], 3 * gstride[1]]);
+            let v = point(coords(q as usize));
+            touch_block(&prank, v + inner, [gstride[0], gstride[1]]);
+            touch_block(&middle.owner, 3 * v, [3 * gstride[0], 3 * gstride[1]]);
         }
         let r = r as u32;
         let c = coords(p as usize);
