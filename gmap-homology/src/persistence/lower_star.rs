@@ -69,27 +69,30 @@ pub(crate) fn diagram(
         Err(e) => return Some(Err(e)),
     };
     let order = sort_order(pixels);
-    // one node per pixel, [parent, rank]: the rank of a neighbour is read from the cache
-    // line its node is on
-    let mut pix = Forest::new(n);
-    let mut sv = Vec::with_capacity(n);
-    for (r, &p) in order.iter().enumerate() {
-        pix.nodes[p as usize] = [p, r as u32];
-        sv.push(pixels[p as usize]);
-    }
+    let sv: Vec<f64> = order.iter().map(|&p| pixels[p as usize]).collect();
     let mut out = Out { diagram: Diagram::new(opts.field), sv: &sv, sign };
-    let (rows, cols) = match d {
-        1 => (1, shape[0]),
-        _ => (shape[d - 2], shape[d - 1]),
-    };
-    match (d, construction) {
-        // over Z/2 a column entry is its key alone (coefficient 1)
-        (3, Construction::V) if opts.field == 2 => v3::<u64>([shape[0], rows, cols], &order, pix, field, &mut out),
-        (3, Construction::V) => v3::<(u64, u32)>([shape[0], rows, cols], &order, pix, field, &mut out),
-        (3, Construction::T) if opts.field == 2 => t3::<u64>([shape[0], rows, cols], &order, pix, field, &mut out),
-        (3, Construction::T) => t3::<(u64, u32)>([shape[0], rows, cols], &order, pix, field, &mut out),
-        (_, Construction::V) => v2(rows, cols, &order, pix, &mut out),
-        (_, Construction::T) => t2(rows, cols, &order, pix, &mut out),
+    if d == 3 {
+        let (grid, pix) = Padded::new([shape[0], shape[1], shape[2]], &order);
+        drop(order);
+        match construction {
+            // over Z/2 a column entry is its key alone (coefficient 1)
+            Construction::V if opts.field == 2 => v3::<u64>(grid, pix, field, &mut out),
+            Construction::V => v3::<(u64, u32)>(grid, pix, field, &mut out),
+            Construction::T if opts.field == 2 => t3::<u64>(grid, pix, field, &mut out),
+            Construction::T => t3::<(u64, u32)>(grid, pix, field, &mut out),
+        }
+    } else {
+        // one node per pixel, [parent, rank]: the rank of a neighbour is read from the
+        // cache line its node is on
+        let mut pix = Forest::new(n);
+        for (r, &p) in order.iter().enumerate() {
+            pix.nodes[p as usize] = [p, r as u32];
+        }
+        let (rows, cols) = if d == 1 { (1, shape[0]) } else { (shape[0], shape[1]) };
+        match construction {
+            Construction::V => v2(rows, cols, &order, pix, &mut out),
+            Construction::T => t2(rows, cols, &order, pix, &mut out),
+        }
     }
     out.push(0, 0, None);
     let mut diagram = out.diagram;
@@ -364,41 +367,25 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
 
 /// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
 /// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
-fn v3<E: Entry>(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
-    let stride = [shape[1] * shape[2], shape[2], 1];
-    let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
-
-    // dimension 0
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [stride[0], stride[1]]);
+fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+    let Padded { g, gstride, at } = grid;
+    // dimension 0: the six neighbours
+    for (r, &v) in at.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD) {
+            touch_block(&pix.nodes, q as usize, [gstride[0], gstride[1]]);
         }
         let r = r as u32;
-        let c = coords(p as usize);
-        for a in 0..3 {
-            if c[a] > 0 {
-                let q = p as usize - stride[a];
+        for s in gstride {
+            for q in [v as usize - s, v as usize + s] {
                 if pix.nodes[q][1] < r {
-                    if let Some(young) = pix.union(p, q as u32, true) {
-                        out.push(0, young, Some(r));
-                    }
-                }
-            }
-            if c[a] + 1 < shape[a] {
-                let q = p as usize + stride[a];
-                if pix.nodes[q][1] < r {
-                    if let Some(young) = pix.union(p, q as u32, true) {
+                    if let Some(young) = pix.union(v, q as u32, true) {
                         out.push(0, young, Some(r));
                     }
                 }
             }
         }
     }
-
-    // from here the pixels are points of the grid padded by one on every side, whose border
-    // has rank u32::MAX (never early): the 3 × 3 × 3 block around a pixel is read with no
-    // test of the bounds, and `at[r]` is the point of the pixel of rank `r`
-    let Padded { g, gstride, rank, at } = Padded::new(shape, order, &pix);
+    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
     drop(pix);
     let points = g[0] * gstride[0];
     let block = block_offsets(gstride);
@@ -478,41 +465,37 @@ fn v3<E: Entry>(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, ou
     }
 }
 
-/// The ranks of a 3-D image on the grid of its points padded by one on every side: the
-/// pixel c at the point c + (1, 1, 1), u32::MAX on the border.
+/// A 3-D image on the grid of its points padded by one on every side: the pixel c at the
+/// point c + (1, 1, 1). The border's rank is u32::MAX (never early), so that the
+/// neighbours of a pixel are read with no test of the bounds.
 struct Padded {
     /// the padded grid's shape and strides
     g: [usize; 3],
     gstride: [usize; 3],
-    rank: Vec<u32>,
     /// the point of the pixel of each rank
     at: Vec<u32>,
 }
 
 impl Padded {
-    fn new(shape: [usize; 3], order: &[u32], pix: &Forest) -> Self {
+    /// The grid, and one union-find node per point, `[point, rank]` (the rank of a
+    /// neighbour is read from the cache line its node is on).
+    fn new(shape: [usize; 3], order: &[u32]) -> (Self, Forest) {
         let g = [shape[0] + 2, shape[1] + 2, shape[2] + 2];
         let gstride = [g[1] * g[2], g[2], 1];
-        let mut rank = vec![u32::MAX; g[0] * gstride[0]];
         let inner = gstride[0] + gstride[1] + 1;
-        for z in 0..shape[0] {
-            for y in 0..shape[1] {
-                let src = (z * shape[1] + y) * shape[2];
-                let dst = z * gstride[0] + y * gstride[1] + inner;
-                for (t, node) in rank[dst..dst + shape[2]].iter_mut().zip(&pix.nodes[src..src + shape[2]]) {
-                    *t = node[1];
-                }
-            }
-        }
+        let mut pix = Forest { nodes: (0..(g[0] * gstride[0]) as u32).map(|v| [v, u32::MAX]).collect() };
         let at = order
             .iter()
-            .map(|&p| {
+            .enumerate()
+            .map(|(r, &p)| {
                 let p = p as usize;
                 let (z, y, x) = (p / (shape[1] * shape[2]), (p / shape[2]) % shape[1], p % shape[2]);
-                (z * gstride[0] + y * gstride[1] + x + inner) as u32
+                let v = z * gstride[0] + y * gstride[1] + x + inner;
+                pix.nodes[v][1] = r as u32;
+                v as u32
             })
             .collect();
-        Padded { g, gstride, rank, at }
+        (Padded { g, gstride, at }, pix)
     }
 }
 
@@ -694,6 +677,9 @@ impl Entry for (u64, u32) {
     }
 }
 
+/// Columns of at most this many entries are added into a long column in place.
+const SHORT: usize = 8;
+
 /// The column reduction of the middle dimension of a 3-D image: the negative 2-cells in
 /// filtration order, each column reduced until its pivot (latest edge, the largest key
 /// `(rank << 32) | edge`) has no owner. Only the columns changed by a reduction are stored
@@ -790,12 +776,28 @@ impl<E: Entry> Middle<E> {
             };
             let pc = pcol.last().expect("a pivot column is not zero").coef();
             let fac = field.neg(field.mul(top.coef(), field.inv(pc)));
-            // the entries below the added column's first key stay
-            let first = pcol[0].key();
-            let lo = self.col.partition_point(|x| x.key() < first);
-            E::merge(field, &self.col[lo..], fac, pcol, &mut self.scratch);
-            self.col.truncate(lo);
-            self.col.extend_from_slice(&self.scratch);
+            if pcol.len() <= SHORT && self.col.len() > 4 * SHORT {
+                // a short column into a long one: in place, each entry found by bisection
+                for &x in pcol.iter().rev() {
+                    let (k, c) = (x.key(), field.mul(fac, x.coef()));
+                    match self.col.binary_search_by_key(&k, |e| e.key()) {
+                        Ok(i) => match field.add(self.col[i].coef(), c) {
+                            0 => {
+                                self.col.remove(i);
+                            }
+                            s => self.col[i] = E::new(k, s),
+                        },
+                        Err(i) => self.col.insert(i, E::new(k, c)),
+                    }
+                }
+            } else {
+                // the entries below the added column's first key stay
+                let first = pcol[0].key();
+                let lo = self.col.partition_point(|x| x.key() < first);
+                E::merge(field, &self.col[lo..], fac, pcol, &mut self.scratch);
+                self.col.truncate(lo);
+                self.col.extend_from_slice(&self.scratch);
+            }
             changed = true;
         }
         unreachable!("a negative 2-cell's column does not reduce to zero");
@@ -806,36 +808,25 @@ impl<E: Entry> Middle<E> {
 /// the grid of `(s + 1)^3` points; edges and 2-cells are named `3 · point + axis` (a
 /// 2-cell by its lower corner and its normal axis). A cell's time is the rank of its
 /// earliest voxel.
-fn t3<E: Entry>(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
-    let stride = [shape[1] * shape[2], shape[2], 1];
-    let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
-
-    // dimension 0: voxels sharing a vertex
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [stride[0], stride[1]]);
+fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+    let Padded { g, gstride, at } = grid;
+    let block = block_offsets(gstride);
+    // dimension 0: the 26 voxels sharing a vertex
+    for (r, &v) in at.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD) {
+            touch_block(&pix.nodes, q as usize, [gstride[0], gstride[1]]);
         }
         let r = r as u32;
-        let c = coords(p as usize);
-        for z in c[0].saturating_sub(1)..(c[0] + 2).min(shape[0]) {
-            for y in c[1].saturating_sub(1)..(c[1] + 2).min(shape[1]) {
-                for x in c[2].saturating_sub(1)..(c[2] + 2).min(shape[2]) {
-                    let q = z * stride[0] + y * stride[1] + x;
-                    if pix.nodes[q][1] < r {
-                        if let Some(young) = pix.union(p, q as u32, true) {
-                            out.push(0, young, Some(r));
-                        }
-                    }
+        for &o in &block {
+            let q = (v as usize).wrapping_add_signed(o);
+            if pix.nodes[q][1] < r {
+                if let Some(young) = pix.union(v, q as u32, true) {
+                    out.push(0, young, Some(r));
                 }
             }
         }
     }
-    // from here the voxels are points of the grid padded by one on every side (the voxel c
-    // at the point c + (1, 1, 1), `at[r]` the point of the voxel of rank r), whose border has
-    // rank u32::MAX (never early): an edge's four voxels and a voxel's six neighbours are
-    // read with no test of the bounds. Vertices, edges and 2-cells live on the same grid
-    // (the lower corner of the voxel at v is v - inner).
-    let Padded { g, gstride, rank, at } = Padded::new(shape, order, &pix);
+    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
     drop(pix);
     let points = g[0] * gstride[0];
     let inner = gstride[0] + gstride[1] + 1;
