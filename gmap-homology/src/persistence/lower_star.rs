@@ -223,18 +223,26 @@ fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: us
     prefetch(nodes, q + cols);
 }
 
-/// Reads `data` at `at + i · steps[0] + j · steps[1]` for `i, j` in -1, 0, 1 (the nine
-/// rows around a point of a 3-D array) so that their cache lines load while the current
-/// step works: the sweeps visit the voxels in value order, all over the array.
+/// Reads `data` at `at + i · steps[0] + j · steps[1]` for the `(i, j)` of `rows` (rows of
+/// a 3-D array around a point) so that their cache lines load while the current step
+/// works: the sweeps visit the voxels in value order, all over the array. Only the rows the
+/// step will read: more hints than the processor has loads in flight hold it up.
 #[inline]
-fn touch_block<T>(data: &[T], at: usize, steps: [usize; 2]) {
-    for i in 0..3 {
-        for j in 0..3 {
-            let k = (at + i * steps[0] + j * steps[1]).wrapping_sub(steps[0] + steps[1]);
-            prefetch(data, k);
-        }
+fn touch_rows<T>(data: &[T], at: usize, steps: [usize; 2], rows: &[(isize, isize)]) {
+    for &(i, j) in rows {
+        prefetch(data, at.wrapping_add_signed(i * steps[0] as isize + j * steps[1] as isize));
     }
 }
+
+/// The nine rows around a point.
+const BLOCK: [(isize, isize); 9] = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 0), (0, 1), (1, -1), (1, 0), (1, 1)];
+/// A point's row and the four next to it (its six neighbours).
+const CROSS: [(isize, isize); 5] = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)];
+/// The rows of the points below a point along the first two axes (V: lower corners of the
+/// cubes and 2-cells at a point).
+const LOWER: [(isize, isize); 4] = [(-1, -1), (-1, 0), (0, -1), (0, 0)];
+/// The rows of the points above (T: the corners of a voxel of lower corner the point).
+const UPPER: [(isize, isize); 4] = [(0, 0), (0, 1), (1, 0), (1, 1)];
 
 /// 2-D V-construction (a 1-D image is one row).
 fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
@@ -372,7 +380,7 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     // dimension 0: the six neighbours
     for (r, &v) in at.iter().enumerate() {
         if let Some(&q) = at.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [gstride[0], gstride[1]]);
+            touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
         }
         let r = r as u32;
         for s in gstride {
@@ -410,8 +418,8 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     let mut negative = vec![0u16; at.len()];
     for r in (0..at.len()).rev() {
         if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| at.get(a)) {
-            touch_block(&rank, q as usize, [gstride[0], gstride[1]]);
-            touch_block(&f.nodes, q as usize, [gstride[0], gstride[1]]);
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&f.nodes, q as usize, [gstride[0], gstride[1]], &LOWER);
         }
         let v = at[r] as usize;
         let r = r as u32;
@@ -450,9 +458,9 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     };
     let mut middle = Middle::<E>::new(3 * points, gstride, field);
     for (r, &neg) in negative.iter().enumerate() {
-        if let Some(&q) = at.get(r + AHEAD) {
-            touch_block(&rank, q as usize, [gstride[0], gstride[1]]);
-            touch_block(&middle.owner, 3 * q as usize, [3 * gstride[0], 3 * gstride[1]]);
+        if let Some(&q) = at.get(r + AHEAD).filter(|_| negative[r + AHEAD] != 0) {
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&middle.owner, 3 * q as usize, [3 * gstride[0], 3 * gstride[1]], &LOWER);
         }
         let (v, r) = (at[r] as usize, r as u32);
         let mut neg = neg;
@@ -460,7 +468,11 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
             let face = &faces[neg.trailing_zeros() as usize];
             neg &= neg - 1;
             let id = (3 * v).wrapping_add_signed(face.id) as u32;
-            middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+            // most 2-cells pair with their latest edge at once (its first coface): no column
+            // to build, and a pair of one rank to leave out
+            if !middle.take((3 * v).wrapping_add_signed(face.pivot) as u32, id) {
+                middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+            }
         }
     }
 }
@@ -535,6 +547,9 @@ fn cube_templates(gstride: [usize; 3]) -> [Template; 8] {
 struct FaceTemplate {
     corners: u32,
     id: isize,
+    /// the offset of its latest edge from three times the point (V: of its two edges
+    /// at the point, the one of larger id)
+    pivot: isize,
     cofaces: [Template; 2],
 }
 
@@ -557,9 +572,12 @@ fn face_templates(gstride: [usize; 3]) -> Vec<FaceTemplate> {
             let mut below = low;
             below[normal] -= 1;
             let at: isize = (0..3).map(|x| low[x] * gstride[x] as isize).sum();
+            // the edges at the point: along a from low + db e_b, along b from low + da e_a
+            let pivot = (-3 * da * gstride[a] as isize + a as isize).max(-3 * db * gstride[b] as isize + b as isize);
             faces.push(FaceTemplate {
                 corners,
                 id: 3 * at + normal as isize,
+                pivot,
                 cofaces: [cube_at(low, gstride), cube_at(below, gstride)],
             });
         }
@@ -743,6 +761,17 @@ impl<E: Entry> Middle<E> {
         }
     }
 
+    /// Makes the 2-cell `id` the owner of its pivot `e` if `e` has none yet (its column is
+    /// then reduced as it is: its boundary) and says whether it did.
+    #[inline]
+    fn take(&mut self, e: u32, id: u32) -> bool {
+        let free = self.owner[e as usize] == Self::FREE;
+        if free {
+            self.owner[e as usize] = coface_place(e, id);
+        }
+        free
+    }
+
     /// Reduces the column of the 2-cell `id` at rank `death`; `boundary(id, col)` fills
     /// `col` with a 2-cell's boundary, sorted by key. Records the pair it makes.
     #[inline]
@@ -814,7 +843,7 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     // dimension 0: the 26 voxels sharing a vertex
     for (r, &v) in at.iter().enumerate() {
         if let Some(&q) = at.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [gstride[0], gstride[1]]);
+            touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &BLOCK);
         }
         let r = r as u32;
         for &o in &block {
@@ -851,8 +880,8 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     let mut negative = vec![0u8; at.len()];
     for r in (0..at.len()).rev() {
         if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| at.get(a)) {
-            touch_block(&rank, q as usize, [gstride[0], gstride[1]]);
-            touch_block(&f.nodes, q as usize, [gstride[0], gstride[1]]);
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &CROSS);
+            touch_rows(&f.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
         }
         let v = at[r] as usize;
         let r = r as u32;
@@ -884,10 +913,10 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     };
     let mut middle = Middle::<E>::new(3 * points, gstride, field);
     for (r, &neg) in negative.iter().enumerate() {
-        if let Some(&q) = at.get(r + AHEAD) {
+        if let Some(&q) = at.get(r + AHEAD).filter(|_| negative[r + AHEAD] != 0) {
             let v = q as usize - inner;
-            touch_block(&rank, q as usize, [gstride[0], gstride[1]]);
-            touch_block(&middle.owner, 3 * v, [3 * gstride[0], 3 * gstride[1]]);
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&middle.owner, 3 * v, [3 * gstride[0], 3 * gstride[1]], &UPPER);
         }
         let (low, r) = (at[r] as usize - inner, r as u32);
         let mut neg = neg;
