@@ -25,17 +25,32 @@
 //! * **dimension 1 of a 3-D image** (V and T) by column reduction of the 2-cells over
 //!   `Z/p` ([`Middle`]), skipping the 2-cells the dual pass found positive (clearing):
 //!   columns of four entries computed from the ranks, keys `(rank << 32) | id`, an owner
-//!   per edge, only the columns changed by a reduction stored, a short column added into
-//!   a long one in place. (Cohomology, CubicalRipser's choice for this dimension, made
-//!   columns 25 times longer on random 128³ arrays.)
+//!   per edge (a `u32` that also says where the owner's column is: no hash map), only the
+//!   columns changed by a reduction stored (one after the other in one array), over Z/2 an
+//!   entry its key alone, a short column added into a long one in place. (Cohomology,
+//!   CubicalRipser's choice for this dimension, made columns 25 times longer on random
+//!   128³ arrays.)
+//!
+//! In 3-D the pixels are the points of a grid padded by one on every side whose border is
+//! never early ([`Padded`]): the neighbours of a pixel, the voxels of an edge (T) and the
+//! 3 × 3 × 3 block around a pixel (V: read into two bit masks, early and inside, that
+//! precomputed templates test for the cubes and 2-cells at the pixel) are read with no test
+//! of the bounds and no division. The dual pass writes, for each rank, which 2-cells of
+//! its pixel are left for the middle pass (a bit per template), which then reads that
+//! array in order instead of finding the 2-cells again; in V a 2-cell whose latest edge
+//! (known from its template) has no owner yet is paired without building its column (84%
+//! of them on random 128³).
 //!
 //! The sweeps visit pixels in value order, all over the image: each step prefetches the
-//! rows the step twelve pixels ahead will read.
+//! rows the step twelve pixels ahead will read (in 3-D only those it reads, and in the
+//! middle pass only for pixels with columns).
 //!
 //! Cost: the sort `O(N)` passes, then `O(N α(N))` for the union-finds; the reduction is
-//! near-linear on images. Memory: the ranks (4 bytes per pixel), the values in rank order
-//! (8), the union-find (8), and in 3-D an owner per edge (12) and a bit per 2-cell (T:
-//! edges and 2-cells on the grid of `(s + 1)^3` points).
+//! near-linear on images. Memory: the values in rank order (8 bytes per pixel); in 1-D
+//! and 2-D the union-find (8); in 3-D, per point of the padded grid of `(s + 2)^3`, the
+//! union-find (8), then the ranks (4) and an owner per edge (12), per pixel its point (4)
+//! and its 2-cells left to reduce (1 or 2), and the stored columns (8 bytes an entry over
+//! Z/2, 16 otherwise).
 //!
 //! Periodic images, cycles and images of dimension 4 or more go through the general route
 //! of [`super::cubical`].
@@ -373,8 +388,9 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     }
 }
 
-/// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
-/// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
+/// 3-D V-construction on the padded grid ([`Padded`]). Edges and 2-cells are named
+/// `3 · point + axis`: an edge by its lower end and its axis, a 2-cell by its lower corner
+/// and the axis it is normal to.
 fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     let Padded { g, gstride, at } = grid;
     // dimension 0: the six neighbours
@@ -704,11 +720,12 @@ const SHORT: usize = 8;
 /// (one after the other in one array); the others are recomputed from the boundary when
 /// needed. An edge's owner is one `u32`: [`Middle::FREE`], the place `k < 4` of an
 /// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + s` for
-/// the stored column `s`, so that finding the column to add reads no table. A column is
-/// added by merging only the part of the working column from the added column's first
-/// key up (the rest stays in place): the added columns are mostly boundaries of four
-/// entries near the pivot, and the working column can be long (on 128³ random T, 1,300
-/// entries on average when a boundary is added).
+/// the stored column `s`, so that finding the column to add reads no table. A short
+/// column (at most [`SHORT`] entries) added into a long one goes in place, each entry found
+/// by bisection and moved in (on 128³ random T the working column is 1,280 entries long on
+/// average when a boundary is added, and two thirds of the entries go within 8 of its
+/// top); otherwise the part of the working column from the added column's first key up is
+/// merged with it, the rest staying in place.
 struct Middle<E> {
     field: Zp,
     /// the point strides of the grid the edges and 2-cells are named on
@@ -833,10 +850,10 @@ impl<E: Entry> Middle<E> {
     }
 }
 
-/// 3-D T-construction: the voxels are the top cells. Vertices, edges and 2-cells live on
-/// the grid of `(s + 1)^3` points; edges and 2-cells are named `3 · point + axis` (a
-/// 2-cell by its lower corner and its normal axis). A cell's time is the rank of its
-/// earliest voxel.
+/// 3-D T-construction: the voxels are the top cells. Voxels, vertices, edges and 2-cells
+/// live on the padded grid ([`Padded`]: the voxel c at the point c + (1, 1, 1), its lower
+/// corner at the point c); edges and 2-cells are named `3 · point + axis` (a 2-cell by its
+/// lower corner and its normal axis). A cell's time is the rank of its earliest voxel.
 fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
     let Padded { g, gstride, at } = grid;
     let block = block_offsets(gstride);
