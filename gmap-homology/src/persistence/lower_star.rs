@@ -25,27 +25,42 @@
 //! * **dimension 1 of a 3-D image** (V and T) by column reduction of the 2-cells over
 //!   `Z/p` ([`Middle`]), skipping the 2-cells the dual pass found positive (clearing):
 //!   columns of four entries computed from the ranks, keys `(rank << 32) | id`, an owner
-//!   per edge, only the columns changed by a reduction stored, a short column added into
-//!   a long one in place. (Cohomology, CubicalRipser's choice for this dimension, made
-//!   columns 25 times longer on random 128³ arrays.)
+//!   per edge (a `u32` that also says where the owner's column is: no hash map), only the
+//!   columns changed by a reduction stored (one after the other in one array), over Z/2 an
+//!   entry its key alone, a short column added into a long one in place. (Cohomology,
+//!   CubicalRipser's choice for this dimension, made columns 25 times longer on random
+//!   128³ arrays.)
+//!
+//! In 3-D the pixels are the points of a grid padded by one on every side whose border is
+//! never early ([`Padded`]): the neighbours of a pixel, the voxels of an edge (T) and the
+//! 3 × 3 × 3 block around a pixel (V: read into two bit masks, early and inside, that
+//! precomputed templates test for the cubes and 2-cells at the pixel) are read with no test
+//! of the bounds and no division. The dual pass writes, for each rank, which 2-cells of
+//! its pixel are left for the middle pass (a bit per template), which then reads that
+//! array in order instead of finding the 2-cells again; in V a 2-cell whose latest edge
+//! (known from its template) has no owner yet is paired without building its column (84%
+//! of them on random 128³).
 //!
 //! The sweeps visit pixels in value order, all over the image: each step prefetches the
-//! rows the step twelve pixels ahead will read.
+//! rows the step twelve pixels ahead will read (in 3-D only those it reads, and in the
+//! middle pass only for pixels with columns), and the union-find nodes, the ranks (3-D)
+//! and the owners are asked for 2 MB pages (`crate::prefetch::filled`: with 4 KB pages
+//! nearly every such read also misses the TLB).
 //!
 //! Cost: the sort `O(N)` passes, then `O(N α(N))` for the union-finds; the reduction is
-//! near-linear on images. Memory: the ranks (4 bytes per pixel), the values in rank order
-//! (8), the union-find (8), and in 3-D an owner per edge (12) and a bit per 2-cell (T:
-//! edges and 2-cells on the grid of `(s + 1)^3` points).
+//! near-linear on images. Memory: the values in rank order (8 bytes per pixel); in 1-D
+//! and 2-D the union-find (8); in 3-D, per point of the padded grid of `(s + 2)^3`, the
+//! union-find (8), then the ranks (4) and an owner per edge (12), per pixel its point (4)
+//! and its 2-cells left to reduce (1 or 2), and the stored columns (8 bytes an entry over
+//! Z/2, 16 otherwise).
 //!
 //! Periodic images, cycles and images of dimension 4 or more go through the general route
 //! of [`super::cubical`].
 
-use rustc_hash::FxHashMap;
-
 use super::options::{check_field, key, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
-use crate::prefetch::prefetch;
+use crate::prefetch::{filled, prefetch};
 
 /// The diagram by the pixel route, or `None` where it does not apply.
 pub(crate) fn diagram(
@@ -60,9 +75,10 @@ pub(crate) fn diagram(
     if opts.periodic || opts.cycles || d == 0 || d > 3 {
         return None;
     }
-    // edges and 2-cells are named `3 · vertex + axis` (T: on the grid of (s + 1)^d vertices)
-    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 1));
-    if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize) {
+    // edges and 2-cells are named `3 · point + axis` (T: on a grid of (s + 2)^d points)
+    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 2));
+    // (and 4 + the number of 2-cells is a u32: see `Middle`'s owners)
+    if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize - 4) {
         return None;
     }
     let field = match check_field(opts.field) {
@@ -70,24 +86,30 @@ pub(crate) fn diagram(
         Err(e) => return Some(Err(e)),
     };
     let order = sort_order(pixels);
-    // one node per pixel, [parent, rank]: the rank of a neighbour is read from the cache
-    // line its node is on
-    let mut pix = Forest::new(n);
-    let mut sv = Vec::with_capacity(n);
-    for (r, &p) in order.iter().enumerate() {
-        pix.nodes[p as usize] = [p, r as u32];
-        sv.push(pixels[p as usize]);
-    }
+    let sv: Vec<f64> = order.iter().map(|&p| pixels[p as usize]).collect();
     let mut out = Out { diagram: Diagram::new(opts.field), sv: &sv, sign };
-    let (rows, cols) = match d {
-        1 => (1, shape[0]),
-        _ => (shape[d - 2], shape[d - 1]),
-    };
-    match (d, construction) {
-        (3, Construction::V) => v3([shape[0], rows, cols], &order, pix, field, &mut out),
-        (3, Construction::T) => t3([shape[0], rows, cols], &order, pix, field, &mut out),
-        (_, Construction::V) => v2(rows, cols, &order, pix, &mut out),
-        (_, Construction::T) => t2(rows, cols, &order, pix, &mut out),
+    if d == 3 {
+        let (grid, pix) = Padded::new([shape[0], shape[1], shape[2]], &order);
+        drop(order);
+        match construction {
+            // over Z/2 a column entry is its key alone (coefficient 1)
+            Construction::V if opts.field == 2 => v3::<u64>(grid, pix, field, &mut out),
+            Construction::V => v3::<(u64, u32)>(grid, pix, field, &mut out),
+            Construction::T if opts.field == 2 => t3::<u64>(grid, pix, field, &mut out),
+            Construction::T => t3::<(u64, u32)>(grid, pix, field, &mut out),
+        }
+    } else {
+        // one node per pixel, [parent, rank]: the rank of a neighbour is read from the
+        // cache line its node is on
+        let mut pix = Forest::new(n);
+        for (r, &p) in order.iter().enumerate() {
+            pix.nodes[p as usize] = [p, r as u32];
+        }
+        let (rows, cols) = if d == 1 { (1, shape[0]) } else { (shape[0], shape[1]) };
+        match construction {
+            Construction::V => v2(rows, cols, &order, pix, &mut out),
+            Construction::T => t2(rows, cols, &order, pix, &mut out),
+        }
     }
     out.push(0, 0, None);
     let mut diagram = out.diagram;
@@ -106,6 +128,9 @@ impl Out<'_> {
     /// A pair between ranks (`None`: essential).
     #[inline]
     fn push(&mut self, dim: usize, birth: u32, death: Option<u32>) {
+        if death == Some(birth) {
+            return; // one rank, one value: most pairs, found without reading the values
+        }
         let b = self.sv[birth as usize];
         let e = death.map_or(f64::INFINITY, |r| self.sv[r as usize]);
         if b != e {
@@ -159,7 +184,7 @@ struct Forest {
 
 impl Forest {
     fn new(n: usize) -> Self {
-        Forest { nodes: vec![[0, 0]; n] }
+        Forest { nodes: filled(n, [0, 0]) }
     }
 
     #[inline]
@@ -215,28 +240,26 @@ fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: us
     prefetch(nodes, q + cols);
 }
 
-/// Reads `data` at `at + i · steps[0] + j · steps[1]` for `i, j` in -1, 0, 1 (the nine
-/// rows around a point of a 3-D array) so that their cache lines load while the current
-/// step works: the sweeps visit the voxels in value order, all over the array.
+/// Reads `data` at `at + i · steps[0] + j · steps[1]` for the `(i, j)` of `rows` (rows of
+/// a 3-D array around a point) so that their cache lines load while the current step
+/// works: the sweeps visit the voxels in value order, all over the array. Only the rows the
+/// step will read: more hints than the processor has loads in flight hold it up.
 #[inline]
-fn touch_block<T>(data: &[T], at: usize, steps: [usize; 2]) {
-    for i in 0..3 {
-        for j in 0..3 {
-            let k = (at + i * steps[0] + j * steps[1]).wrapping_sub(steps[0] + steps[1]);
-            prefetch(data, k);
-        }
+fn touch_rows<T>(data: &[T], at: usize, steps: [usize; 2], rows: &[(isize, isize)]) {
+    for &(i, j) in rows {
+        prefetch(data, at.wrapping_add_signed(i * steps[0] as isize + j * steps[1] as isize));
     }
 }
 
-/// The read-ahead of a 3-D dual pass (reverse order): the ranks and the union-find nodes
-/// around the voxel `AHEAD` steps before `r`.
-#[inline]
-fn touch_dual_ahead(order: &[u32], r: usize, rank: &[u32], nodes: &[[u32; 2]], stride: [usize; 3]) {
-    if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| order.get(a)) {
-        touch_block(rank, q as usize, [stride[0], stride[1]]);
-        touch_block(nodes, q as usize, [stride[0], stride[1]]);
-    }
-}
+/// The nine rows around a point.
+const BLOCK: [(isize, isize); 9] = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 0), (0, 1), (1, -1), (1, 0), (1, 1)];
+/// A point's row and the four next to it (its six neighbours).
+const CROSS: [(isize, isize); 5] = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)];
+/// The rows of the points below a point along the first two axes (V: lower corners of the
+/// cubes and 2-cells at a point).
+const LOWER: [(isize, isize); 4] = [(-1, -1), (-1, 0), (0, -1), (0, 0)];
+/// The rows of the points above (T: the corners of a voxel of lower corner the point).
+const UPPER: [(isize, isize); 4] = [(0, 0), (0, 1), (1, 0), (1, 1)];
 
 /// 2-D V-construction (a 1-D image is one row).
 fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
@@ -367,202 +390,333 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     }
 }
 
-/// 3-D V-construction. Edges and 2-cells are named `3 · corner + axis`: an edge by its lower
-/// end and its axis, a 2-cell by its lower corner and the axis it is normal to.
-fn v3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
-    let n = shape[0] * shape[1] * shape[2];
-    let stride = [shape[1] * shape[2], shape[2], 1];
-    let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
-    // the 3 × 3 × 3 block around a pixel: bit `9(dz+1) + 3(dy+1) + (dx+1)` set when the
-    // neighbour exists and comes no later than rank `r`
-    let early_mask = |rank: &[u32], p: usize, c: [usize; 3], r: u32| -> u32 {
-        let mut m = 0u32;
-        for dz in 0..3usize {
-            let z = (c[0] + dz).wrapping_sub(1);
-            if z >= shape[0] {
-                continue;
-            }
-            for dy in 0..3usize {
-                let y = (c[1] + dy).wrapping_sub(1);
-                if y >= shape[1] {
-                    continue;
-                }
-                for dx in 0..3usize {
-                    let x = (c[2] + dx).wrapping_sub(1);
-                    if x >= shape[2] {
-                        continue;
-                    }
-                    let q = p + dz * stride[0] + dy * stride[1] + dx - stride[0] - stride[1] - 1;
-                    if rank[q] <= r {
-                        m |= 1 << (9 * dz + 3 * dy + dx);
-                    }
-                }
-            }
-        }
-        m
-    };
-    let bit = |d: [isize; 3]| 1u32 << ((9 * (d[0] + 1) + 3 * (d[1] + 1) + d[2] + 1) as u32);
-    // the 2-cells whose latest corner is p, as (id, lower corner, normal axis), by id
-    let faces_at = |p: usize, c: [usize; 3], mask: u32, list: &mut Vec<(u32, usize, usize)>| {
-        list.clear();
-        for normal in 0..3 {
-            let (a, b) = match normal {
-                0 => (1, 2),
-                1 => (0, 2),
-                _ => (0, 1),
-            };
-            for (da, db) in [(0isize, 0isize), (1, 0), (0, 1), (1, 1)] {
-                // the lower corner is p - da e_a - db e_b
-                if (da == 1 && c[a] == 0) || (db == 1 && c[b] == 0) {
-                    continue;
-                }
-                let mut corners_ok = true;
-                for (ea, eb) in [(0isize, 0isize), (1, 0), (0, 1), (1, 1)] {
-                    let mut off = [0isize; 3];
-                    off[a] = ea - da;
-                    off[b] = eb - db;
-                    if mask & bit(off) == 0 {
-                        corners_ok = false;
-                        break;
-                    }
-                }
-                if corners_ok {
-                    let low = p - da as usize * stride[a] - db as usize * stride[b];
-                    list.push(((3 * low + normal) as u32, low, normal));
-                }
-            }
-        }
-        list.sort_unstable_by_key(|x| x.0);
-    };
-
-    // dimension 0
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [stride[0], stride[1]]);
+/// 3-D V-construction on the padded grid ([`Padded`]). Edges and 2-cells are named
+/// `3 · point + axis`: an edge by its lower end and its axis, a 2-cell by its lower corner
+/// and the axis it is normal to.
+fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+    let Padded { g, gstride, at } = grid;
+    // dimension 0: the six neighbours
+    for (r, &v) in at.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD) {
+            touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
         }
         let r = r as u32;
-        let c = coords(p as usize);
-        for a in 0..3 {
-            if c[a] > 0 {
-                let q = p as usize - stride[a];
+        for s in gstride {
+            for q in [v as usize - s, v as usize + s] {
                 if pix.nodes[q][1] < r {
-                    if let Some(young) = pix.union(p, q as u32, true) {
-                        out.push(0, young, Some(r));
-                    }
-                }
-            }
-            if c[a] + 1 < shape[a] {
-                let q = p as usize + stride[a];
-                if pix.nodes[q][1] < r {
-                    if let Some(young) = pix.union(p, q as u32, true) {
+                    if let Some(young) = pix.union(v, q as u32, true) {
                         out.push(0, young, Some(r));
                     }
                 }
             }
         }
     }
-
-    // dimension 2 on the dual: cubes by their lower corner, the outside node `n`; marks the
-    // positive 2-cells
-    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
+    let mut rank = filled(pix.nodes.len(), 0u32);
+    for (t, node) in rank.iter_mut().zip(&pix.nodes) {
+        *t = node[1];
+    }
     drop(pix);
-    let mut f = Forest::new(n + 1);
-    let outside = n as u32;
-    f.make(outside, u32::MAX);
-    let mut positive = vec![0u64; (3 * n).div_ceil(64)];
-    let cube = |c: [usize; 3], low: usize| -> u32 {
-        if (0..3).all(|a| c[a] + 1 < shape[a]) {
-            low as u32
-        } else {
-            outside
+    let points = g[0] * gstride[0];
+    let block = block_offsets(gstride);
+    let (cubes, faces) = (cube_templates(gstride), face_templates(gstride));
+    // the 3 × 3 × 3 block around the point `v` (bit `9(dz+1) + 3(dy+1) + (dx+1)`): the
+    // pixels no later than rank `r`, and the pixels
+    let masks = |v: usize, r: u32| -> (u32, u32) {
+        let (mut early, mut real) = (0u32, 0u32);
+        for (k, &o) in block.iter().enumerate() {
+            let t = rank[v.wrapping_add_signed(o)];
+            early |= u32::from(t <= r) << k;
+            real |= u32::from(t != u32::MAX) << k;
         }
+        (early, real)
     };
-    let mut list = Vec::with_capacity(12);
-    for (r, &p) in order.iter().enumerate().rev() {
-        touch_dual_ahead(order, r, &rank, &f.nodes, stride);
+
+    // dimension 2 on the dual: cubes by their lower corner, the outside node; `negative[r]`
+    // says which 2-cells of the pixel of rank r (bit k: `faces[k]`) join no two components
+    let mut f = Forest::new(points + 1);
+    let outside = points as u32;
+    f.make(outside, u32::MAX);
+    let mut negative = vec![0u16; at.len()];
+    for r in (0..at.len()).rev() {
+        if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| at.get(a)) {
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&f.nodes, q as usize, [gstride[0], gstride[1]], &LOWER);
+        }
+        let v = at[r] as usize;
         let r = r as u32;
-        let c = coords(p as usize);
-        let mask = early_mask(&rank, p as usize, c, r);
-        for corner in 0..8usize {
-            let d = [(corner >> 2) & 1, (corner >> 1) & 1, corner & 1];
-            if (0..3).any(|a| d[a] > c[a] || c[a] - d[a] + 1 >= shape[a]) {
-                continue;
-            }
-            let all = (0..8usize).all(|k| {
-                let e = [(k >> 2) & 1, (k >> 1) & 1, k & 1];
-                mask & bit([0, 1, 2].map(|a| e[a] as isize - d[a] as isize)) != 0
-            });
-            if all {
-                let low = p as usize - d[0] * stride[0] - d[1] * stride[1] - d[2];
-                f.make(low as u32, r);
+        let (early, real) = masks(v, r);
+        for cube in &cubes {
+            if early & cube.corners == cube.corners {
+                f.make(v.wrapping_add_signed(cube.at) as u32, r);
             }
         }
-        faces_at(p as usize, c, mask, &mut list);
-        for &(id, low, normal) in list.iter().rev() {
-            let lc = coords(low);
-            let above = cube(lc, low);
-            let below = if lc[normal] > 0 {
-                let mut bc = lc;
-                bc[normal] -= 1;
-                cube(bc, low - stride[normal])
+        let node = |c: &Template| {
+            if real & c.corners == c.corners {
+                v.wrapping_add_signed(c.at) as u32
             } else {
                 outside
-            };
-            if let Some(young) = f.union(above, below, false) {
-                positive[id as usize / 64] |= 1 << (id % 64);
+            }
+        };
+        let mut neg = 0u16;
+        for (k, face) in faces.iter().enumerate().rev() {
+            if early & face.corners != face.corners {
+                continue;
+            }
+            if let Some(young) = f.union(node(&face.cofaces[0]), node(&face.cofaces[1]), false) {
                 out.push(2, r, Some(young));
+            } else {
+                neg |= 1 << k;
             }
         }
+        negative[r as usize] = neg;
     }
     drop(f);
 
     // dimension 1: the negative 2-cells' columns, reduced
-    let edge_key = |low: usize, axis: usize| -> u64 {
-        let t = rank[low].max(rank[low + stride[axis]]);
-        ((t as u64) << 32) | (3 * low + axis) as u64
+    let edge_key = |v: usize, axis: usize| -> u64 {
+        let t = rank[v].max(rank[v + gstride[axis]]);
+        ((t as u64) << 32) | (3 * v + axis) as u64
     };
-    let mut middle = Middle::new(3 * n, field);
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&rank, q as usize, [stride[0], stride[1]]);
-            touch_block(&middle.owner, 3 * q as usize, [3 * stride[0], 3 * stride[1]]);
+    let mut middle = Middle::<E>::new(3 * points, gstride, field);
+    for (r, &neg) in negative.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD).filter(|_| negative[r + AHEAD] != 0) {
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&middle.owner, 3 * q as usize, [3 * gstride[0], 3 * gstride[1]], &LOWER);
         }
-        let r = r as u32;
-        let c = coords(p as usize);
-        let mask = early_mask(&rank, p as usize, c, r);
-        faces_at(p as usize, c, mask, &mut list);
-        for &(id, _, _) in &list {
-            if positive[id as usize / 64] >> (id % 64) & 1 == 0 {
-                middle.column(id, r, out, |id, col| square_boundary(id, stride, field, edge_key, col));
+        let (v, r) = (at[r] as usize, r as u32);
+        let mut neg = neg;
+        while neg != 0 {
+            let face = &faces[neg.trailing_zeros() as usize];
+            neg &= neg - 1;
+            let id = (3 * v).wrapping_add_signed(face.id) as u32;
+            // most 2-cells pair with their latest edge at once (its first coface): no column
+            // to build, and a pair of one rank to leave out
+            if !middle.take((3 * v).wrapping_add_signed(face.pivot) as u32, id) {
+                middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
             }
         }
     }
+}
+
+/// A 3-D image on the grid of its points padded by one on every side: the pixel c at the
+/// point c + (1, 1, 1). The border's rank is u32::MAX (never early), so that the
+/// neighbours of a pixel are read with no test of the bounds.
+struct Padded {
+    /// the padded grid's shape and strides
+    g: [usize; 3],
+    gstride: [usize; 3],
+    /// the point of the pixel of each rank
+    at: Vec<u32>,
+}
+
+impl Padded {
+    /// The grid, and one union-find node per point, `[point, rank]` (the rank of a
+    /// neighbour is read from the cache line its node is on).
+    fn new(shape: [usize; 3], order: &[u32]) -> (Self, Forest) {
+        let g = [shape[0] + 2, shape[1] + 2, shape[2] + 2];
+        let gstride = [g[1] * g[2], g[2], 1];
+        let inner = gstride[0] + gstride[1] + 1;
+        let mut pix = Forest::new(g[0] * gstride[0]);
+        for (v, node) in pix.nodes.iter_mut().enumerate() {
+            *node = [v as u32, u32::MAX];
+        }
+        let at = order
+            .iter()
+            .enumerate()
+            .map(|(r, &p)| {
+                let p = p as usize;
+                let (z, y, x) = (p / (shape[1] * shape[2]), (p / shape[2]) % shape[1], p % shape[2]);
+                let v = z * gstride[0] + y * gstride[1] + x + inner;
+                pix.nodes[v][1] = r as u32;
+                v as u32
+            })
+            .collect();
+        (Padded { g, gstride, at }, pix)
+    }
+}
+
+/// The offsets of the 3 × 3 × 3 block around a point of a grid of strides `gstride`, in
+/// the order of the block's bits `9(dz+1) + 3(dy+1) + (dx+1)`.
+fn block_offsets(gstride: [usize; 3]) -> [isize; 27] {
+    std::array::from_fn(|k| {
+        let d = [k / 9, (k / 3) % 3, k % 3].map(|x| x as isize - 1);
+        (0..3).map(|a| d[a] * gstride[a] as isize).sum()
+    })
+}
+
+/// The bit of the offset `d` (each coordinate in -1, 0, 1) in a 3 × 3 × 3 block mask.
+fn block_bit(d: [isize; 3]) -> u32 {
+    1 << (9 * (d[0] + 1) + 3 * (d[1] + 1) + d[2] + 1)
+}
+
+/// A cube near a point: its eight corners as block bits, and the offset of its lower corner.
+struct Template {
+    corners: u32,
+    at: isize,
+}
+
+/// The cube of lower corner `low` (offsets from a point), as a [`Template`].
+fn cube_at(low: [isize; 3], gstride: [usize; 3]) -> Template {
+    let corners = (0..8).fold(0, |m, k| m | block_bit([low[0] + (k >> 2), low[1] + ((k >> 1) & 1), low[2] + (k & 1)]));
+    Template { corners, at: (0..3).map(|a| low[a] * gstride[a] as isize).sum() }
+}
+
+/// The eight cubes that have a point as a corner.
+fn cube_templates(gstride: [usize; 3]) -> [Template; 8] {
+    std::array::from_fn(|d| cube_at([-((d as isize >> 2) & 1), -((d as isize >> 1) & 1), -(d as isize & 1)], gstride))
+}
+
+/// A 2-cell that has a point as a corner: its four corners as block bits, the offset of its
+/// id (`3 · lower corner + normal`) from three times the point, and its two cofaces.
+struct FaceTemplate {
+    corners: u32,
+    id: isize,
+    /// the offset of its latest edge from three times the point (V: of its two edges
+    /// at the point, the one of larger id)
+    pivot: isize,
+    cofaces: [Template; 2],
+}
+
+/// The twelve 2-cells that have a point as a corner, by id.
+fn face_templates(gstride: [usize; 3]) -> Vec<FaceTemplate> {
+    let mut faces = Vec::with_capacity(12);
+    for normal in 0..3 {
+        let [a, b] = OTHERS[normal];
+        for (da, db) in [(0isize, 0isize), (1, 0), (0, 1), (1, 1)] {
+            let mut low = [0isize; 3];
+            low[a] = -da;
+            low[b] = -db;
+            let mut corners = 0;
+            for (ea, eb) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                let mut c = low;
+                c[a] += ea;
+                c[b] += eb;
+                corners |= block_bit(c);
+            }
+            let mut below = low;
+            below[normal] -= 1;
+            let at: isize = (0..3).map(|x| low[x] * gstride[x] as isize).sum();
+            // the edges at the point: along a from low + db e_b, along b from low + da e_a
+            let pivot = (-3 * da * gstride[a] as isize + a as isize).max(-3 * db * gstride[b] as isize + b as isize);
+            faces.push(FaceTemplate {
+                corners,
+                id: 3 * at + normal as isize,
+                pivot,
+                cofaces: [cube_at(low, gstride), cube_at(below, gstride)],
+            });
+        }
+    }
+    faces.sort_unstable_by_key(|f| f.id);
+    faces
 }
 
 /// The boundary of the 2-cell `id = 3 · corner + normal` of a 3-D grid of strides `stride`
 /// (the corner's point grid): `+e(c, a) + e(c + e_a, b) - e(c + e_b, a) - e(c, b)` for
 /// the other axes `a < b`, edges keyed by `edge_key(corner, axis)`, sorted by key.
 #[inline]
-fn square_boundary(
+fn square_boundary<E: Entry>(
     id: u32,
     stride: [usize; 3],
     field: Zp,
     edge_key: impl Fn(usize, usize) -> u64,
-    col: &mut Vec<(u64, u32)>,
+    col: &mut Vec<E>,
 ) {
     let (low, normal) = (id as usize / 3, id as usize % 3);
-    let (a, b) = match normal {
-        0 => (1, 2),
-        1 => (0, 2),
-        _ => (0, 1),
-    };
+    let [a, b] = OTHERS[normal];
     let minus = field.of(-1);
     col.clear();
-    col.push((edge_key(low, a), 1));
-    col.push((edge_key(low + stride[a], b), 1));
-    col.push((edge_key(low + stride[b], a), minus));
-    col.push((edge_key(low, b), minus));
-    col.sort_unstable_by_key(|e| e.0);
+    col.push(E::new(edge_key(low, a), 1));
+    col.push(E::new(edge_key(low + stride[a], b), 1));
+    col.push(E::new(edge_key(low + stride[b], a), minus));
+    col.push(E::new(edge_key(low, b), minus));
+    col.sort_unstable_by_key(|e| e.key());
+}
+
+/// An entry of a column of the middle dimension: a key `(rank << 32) | edge` and a
+/// coefficient, or over Z/2 the key alone (8 bytes instead of 16: the merges and the
+/// stored columns read half as much).
+trait Entry: Copy + Default {
+    fn new(key: u64, coef: u32) -> Self;
+    fn key(self) -> u64;
+    fn coef(self) -> u32;
+
+    /// `out = a + f · b` for entries sorted by key, zeros dropped.
+    #[inline]
+    fn merge(field: Zp, a: &[Self], f: u32, b: &[Self], out: &mut Vec<Self>) {
+        out.clear();
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() && j < b.len() {
+            let (ka, kb) = (a[i].key(), b[j].key());
+            if ka < kb {
+                out.push(a[i]);
+                i += 1;
+            } else if kb < ka {
+                out.push(Self::new(kb, field.mul(f, b[j].coef())));
+                j += 1;
+            } else {
+                let c = field.add(a[i].coef(), field.mul(f, b[j].coef()));
+                if c != 0 {
+                    out.push(Self::new(ka, c));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+        out.extend_from_slice(&a[i..]);
+        out.extend(b[j..].iter().map(|x| Self::new(x.key(), field.mul(f, x.coef()))));
+    }
+}
+
+impl Entry for u64 {
+    #[inline(always)]
+    fn new(key: u64, _: u32) -> Self {
+        key
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        self
+    }
+    #[inline(always)]
+    fn coef(self) -> u32 {
+        1
+    }
+
+    /// Over Z/2 the sum is the symmetric difference.
+    #[inline]
+    fn merge(_: Zp, a: &[u64], _: u32, b: &[u64], out: &mut Vec<u64>) {
+        out.clear();
+        let (mut i, mut j) = (0, 0);
+        while i < a.len() && j < b.len() {
+            let (x, y) = (a[i], b[j]);
+            if x < y {
+                out.push(x);
+                i += 1;
+            } else if y < x {
+                out.push(y);
+                j += 1;
+            } else {
+                i += 1;
+                j += 1;
+            }
+        }
+        out.extend_from_slice(&a[i..]);
+        out.extend_from_slice(&b[j..]);
+    }
+}
+
+impl Entry for (u64, u32) {
+    #[inline(always)]
+    fn new(key: u64, coef: u32) -> Self {
+        (key, coef)
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        self.0
+    }
+    #[inline(always)]
+    fn coef(self) -> u32 {
+        self.1
+    }
 }
 
 /// Columns of at most this many entries are added into a long column in place.
@@ -570,78 +724,133 @@ const SHORT: usize = 8;
 
 /// The column reduction of the middle dimension of a 3-D image: the negative 2-cells in
 /// filtration order, each column reduced until its pivot (latest edge, the largest key
-/// `(rank << 32) | edge`) has no owner. An owner per edge; only the columns changed by a
-/// reduction are stored, the others are recomputed from the boundary when needed. A short
-/// column added into a long one goes in place, each entry found by bisection (a merge
-/// would copy the long column for four entries: on 128³ random T, columns of 500 entries
-/// on average).
-struct Middle {
+/// `(rank << 32) | edge`) has no owner. Only the columns changed by a reduction are stored
+/// (one after the other in one array); the others are recomputed from the boundary when
+/// needed. An edge's owner is one `u32`: [`Middle::FREE`], the place `k < 4` of an
+/// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + s` for
+/// the stored column `s`, so that finding the column to add reads no table. A short
+/// column (at most [`SHORT`] entries) added into a long one goes in place, each entry found
+/// by bisection and moved in (on 128³ random T the working column is 1,280 entries long on
+/// average when a boundary is added, and two thirds of the entries go within 8 of its
+/// top); otherwise the part of the working column from the added column's first key up is
+/// merged with it, the rest staying in place.
+struct Middle<E> {
     field: Zp,
+    /// the point strides of the grid the edges and 2-cells are named on
+    stride: [usize; 3],
     owner: Vec<u32>,
-    stored: FxHashMap<u32, Vec<(u64, u32)>>,
-    col: Vec<(u64, u32)>,
-    other: Vec<(u64, u32)>,
-    scratch: Vec<(u64, u32)>,
+    /// the stored columns: column `s` is `entries[starts[s]..starts[s + 1]]`
+    entries: Vec<E>,
+    starts: Vec<usize>,
+    col: Vec<E>,
+    other: Vec<E>,
+    scratch: Vec<E>,
 }
 
-impl Middle {
+/// The `k`-th of the four 2-cells containing the edge `e = 3 · point + axis` on a grid of
+/// point strides `stride`: spanned by the edge's axis and the other axis `o` (the first of
+/// the two others for `k < 2`), lower corner the edge's point minus `(k & 1) · e_o`.
+#[inline]
+fn coface(e: u32, k: u32, stride: [usize; 3]) -> u32 {
+    let (v, axis) = (e as usize / 3, e as usize % 3);
+    let others = OTHERS[axis];
+    let (o, normal) = if k < 2 { (others[0], others[1]) } else { (others[1], others[0]) };
+    (3 * (v - (k as usize & 1) * stride[o]) + normal) as u32
+}
+
+/// The place of the 2-cell `id` among the cofaces of its edge `e` ([`coface`]).
+#[inline]
+fn coface_place(e: u32, id: u32) -> u32 {
+    let (v, axis) = (e as usize / 3, e as usize % 3);
+    let (low, normal) = (id as usize / 3, id as usize % 3);
+    let first = OTHERS[axis][1] == normal;
+    2 * u32::from(!first) + u32::from(low != v)
+}
+
+/// The two axes other than each axis, in increasing order.
+const OTHERS: [[usize; 2]; 3] = [[1, 2], [0, 2], [0, 1]];
+
+impl<E: Entry> Middle<E> {
     const FREE: u32 = u32::MAX;
 
-    fn new(edges: usize, field: Zp) -> Self {
+    fn new(edges: usize, stride: [usize; 3], field: Zp) -> Self {
         Middle {
             field,
-            owner: vec![Self::FREE; edges],
-            stored: FxHashMap::default(),
+            stride,
+            owner: filled(edges, Self::FREE),
+            entries: Vec::new(),
+            starts: vec![0],
             col: Vec::new(),
             other: Vec::new(),
             scratch: Vec::new(),
         }
     }
 
+    /// Makes the 2-cell `id` the owner of its pivot `e` if `e` has none yet (its column is
+    /// then reduced as it is: its boundary) and says whether it did.
+    #[inline]
+    fn take(&mut self, e: u32, id: u32) -> bool {
+        let free = self.owner[e as usize] == Self::FREE;
+        if free {
+            self.owner[e as usize] = coface_place(e, id);
+        }
+        free
+    }
+
     /// Reduces the column of the 2-cell `id` at rank `death`; `boundary(id, col)` fills
     /// `col` with a 2-cell's boundary, sorted by key. Records the pair it makes.
     #[inline]
-    fn column(&mut self, id: u32, death: u32, out: &mut Out, boundary: impl Fn(u32, &mut Vec<(u64, u32)>)) {
+    fn column(&mut self, id: u32, death: u32, out: &mut Out, boundary: impl Fn(u32, &mut Vec<E>)) {
         let field = self.field;
         boundary(id, &mut self.col);
         let mut changed = false;
-        while let Some(&(pivot, coef)) = self.col.last() {
-            let e = (pivot & 0xffff_ffff) as usize;
-            let o = self.owner[e];
+        while let Some(&top) = self.col.last() {
+            let pivot = top.key();
+            let e = (pivot & 0xffff_ffff) as u32;
+            let o = self.owner[e as usize];
             if o == Self::FREE {
-                self.owner[e] = id;
-                if changed {
-                    self.stored.insert(id, self.col.clone());
-                }
+                self.owner[e as usize] = if changed {
+                    // fewer stored columns than 2-cells: `diagram` keeps 4 + their number a u32
+                    let slot = self.starts.len() - 1;
+                    self.entries.extend_from_slice(&self.col);
+                    self.starts.push(self.entries.len());
+                    (4 + slot) as u32
+                } else {
+                    coface_place(e, id)
+                };
                 out.push(1, (pivot >> 32) as u32, Some(death));
                 return;
             }
-            let pcol: &[(u64, u32)] = match self.stored.get(&o) {
-                Some(s) => s,
-                None => {
-                    boundary(o, &mut self.other);
-                    &self.other
-                }
+            let pcol: &[E] = if o < 4 {
+                boundary(coface(e, o, self.stride), &mut self.other);
+                &self.other
+            } else {
+                let s = (o - 4) as usize;
+                &self.entries[self.starts[s]..self.starts[s + 1]]
             };
-            let pc = pcol.last().expect("a pivot column is not zero").1;
-            let fac = field.neg(field.mul(coef, field.inv(pc)));
+            let pc = pcol.last().expect("a pivot column is not zero").coef();
+            let fac = field.neg(field.mul(top.coef(), field.inv(pc)));
             if pcol.len() <= SHORT && self.col.len() > 4 * SHORT {
                 // a short column into a long one: in place, each entry found by bisection
-                for &(k, c) in pcol.iter().rev() {
-                    let c = field.mul(fac, c);
-                    match self.col.binary_search_by_key(&k, |e| e.0) {
-                        Ok(i) => match field.add(self.col[i].1, c) {
+                for &x in pcol.iter().rev() {
+                    let (k, c) = (x.key(), field.mul(fac, x.coef()));
+                    match self.col.binary_search_by_key(&k, |e| e.key()) {
+                        Ok(i) => match field.add(self.col[i].coef(), c) {
                             0 => {
                                 self.col.remove(i);
                             }
-                            s => self.col[i].1 = s,
+                            s => self.col[i] = E::new(k, s),
                         },
-                        Err(i) => self.col.insert(i, (k, c)),
+                        Err(i) => self.col.insert(i, E::new(k, c)),
                     }
                 }
             } else {
-                field.axpy(&self.col, fac, pcol, &mut self.scratch);
-                std::mem::swap(&mut self.col, &mut self.scratch);
+                // the entries below the added column's first key stay
+                let first = pcol[0].key();
+                let lo = self.col.partition_point(|x| x.key() < first);
+                E::merge(field, &self.col[lo..], fac, pcol, &mut self.scratch);
+                self.col.truncate(lo);
+                self.col.extend_from_slice(&self.scratch);
             }
             changed = true;
         }
@@ -649,113 +858,156 @@ impl Middle {
     }
 }
 
-/// 3-D T-construction: the voxels are the top cells. Vertices, edges and 2-cells live on
-/// the grid of `(s + 1)^3` points; edges and 2-cells are named `3 · point + axis` (a
-/// 2-cell by its lower corner and its normal axis). A cell's time is the rank of its
-/// earliest voxel.
-fn t3(shape: [usize; 3], order: &[u32], mut pix: Forest, field: Zp, out: &mut Out) {
-    let n = shape[0] * shape[1] * shape[2];
-    let stride = [shape[1] * shape[2], shape[2], 1];
-    let coords = |p: usize| [p / stride[0], (p / stride[1]) % shape[1], p % shape[2]];
-    let g = [shape[0] + 1, shape[1] + 1, shape[2] + 1];
-    let gstride = [g[1] * g[2], g[2], 1];
-    let point = |c: [usize; 3]| c[0] * gstride[0] + c[1] * gstride[1] + c[2];
-
-    // dimension 0: voxels sharing a vertex
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&pix.nodes, q as usize, [stride[0], stride[1]]);
+/// 3-D T-construction: the voxels are the top cells. Voxels, vertices, edges and 2-cells
+/// live on the padded grid ([`Padded`]: the voxel c at the point c + (1, 1, 1), its lower
+/// corner at the point c); edges and 2-cells are named `3 · point + axis` (a 2-cell by its
+/// lower corner and its normal axis). A cell's time is the rank of its earliest voxel.
+fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+    let Padded { g, gstride, at } = grid;
+    let block = block_offsets(gstride);
+    // dimension 0: the 26 voxels sharing a vertex
+    for (r, &v) in at.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD) {
+            touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &BLOCK);
         }
         let r = r as u32;
-        let c = coords(p as usize);
-        for z in c[0].saturating_sub(1)..(c[0] + 2).min(shape[0]) {
-            for y in c[1].saturating_sub(1)..(c[1] + 2).min(shape[1]) {
-                for x in c[2].saturating_sub(1)..(c[2] + 2).min(shape[2]) {
-                    let q = z * stride[0] + y * stride[1] + x;
-                    if pix.nodes[q][1] < r {
-                        if let Some(young) = pix.union(p, q as u32, true) {
-                            out.push(0, young, Some(r));
-                        }
-                    }
+        for &o in &block {
+            let q = (v as usize).wrapping_add_signed(o);
+            if pix.nodes[q][1] < r {
+                if let Some(young) = pix.union(v, q as u32, true) {
+                    out.push(0, young, Some(r));
                 }
             }
         }
     }
-    let rank: Vec<u32> = pix.nodes.iter().map(|x| x[1]).collect();
+    let mut rank = filled(pix.nodes.len(), 0u32);
+    for (t, node) in rank.iter_mut().zip(&pix.nodes) {
+        *t = node[1];
+    }
     drop(pix);
-
-    // the 2-cells whose earliest voxel is p (at rank r), as (id, the other voxel or None),
-    // by id: the faces of p whose other coface is later or absent
-    let faces_at = |p: usize, c: [usize; 3], r: u32, list: &mut Vec<(u32, Option<u32>)>| {
-        list.clear();
-        let v = point(c);
-        for a in 0..3 {
-            let normal = 3 * v + a;
-            let below = (c[a] > 0).then(|| p - stride[a]);
-            if below.is_none_or(|q| rank[q] > r) {
-                list.push((normal as u32, below.map(|q| q as u32)));
-            }
-            let above = (c[a] + 1 < shape[a]).then(|| p + stride[a]);
-            if above.is_none_or(|q| rank[q] > r) {
-                list.push(((normal + 3 * gstride[a]) as u32, above.map(|q| q as u32)));
-            }
+    let points = g[0] * gstride[0];
+    let inner = gstride[0] + gstride[1] + 1;
+    // the six faces of a voxel by id, as (offset of the id from 3 · its lower corner,
+    // offset of the other voxel): below along z, y, x, then above along x, y, z
+    let faces: [(usize, isize); 6] = std::array::from_fn(|k| {
+        let a = if k < 3 { k } else { 5 - k };
+        let s = gstride[a] as isize;
+        if k < 3 {
+            (a, -s)
+        } else {
+            (3 * gstride[a] + a, s)
         }
-        list.sort_unstable_by_key(|x| x.0);
-    };
+    });
 
-    // dimension 2 on the dual: voxels and the outside `n`; marks the positive 2-cells
-    let mut f = Forest::new(n + 1);
-    let outside = n as u32;
+    // dimension 2 on the dual: voxels and the outside; `negative[r]` says which faces of
+    // the voxel of rank r (bit k: `faces[k]`) are its own (the other voxel later or
+    // absent) and join no two components
+    let mut f = Forest::new(points + 1);
+    let outside = points as u32;
     f.make(outside, u32::MAX);
-    let mut positive = vec![0u64; (3 * g[0] * gstride[0]).div_ceil(64)];
-    let mut list = Vec::with_capacity(6);
-    for (r, &p) in order.iter().enumerate().rev() {
-        touch_dual_ahead(order, r, &rank, &f.nodes, stride);
+    let mut negative = vec![0u8; at.len()];
+    for r in (0..at.len()).rev() {
+        if let Some(&q) = r.checked_sub(AHEAD).and_then(|a| at.get(a)) {
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &CROSS);
+            touch_rows(&f.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
+        }
+        let v = at[r] as usize;
         let r = r as u32;
-        f.make(p, r);
-        let c = coords(p as usize);
-        faces_at(p as usize, c, r, &mut list);
-        for &(id, other) in list.iter().rev() {
-            if let Some(young) = f.union(p, other.unwrap_or(outside), false) {
-                positive[id as usize / 64] |= 1 << (id % 64);
+        f.make(v as u32, r);
+        let mut neg = 0u8;
+        for (k, &(_, o)) in faces.iter().enumerate().rev() {
+            let q = v.wrapping_add_signed(o);
+            let t = rank[q];
+            if t <= r {
+                continue; // the face is the other voxel's
+            }
+            let other = if t == u32::MAX { outside } else { q as u32 };
+            if let Some(young) = f.union(v as u32, other, false) {
                 out.push(2, r, Some(young));
+            } else {
+                neg |= 1 << k;
             }
         }
+        negative[r as usize] = neg;
     }
     drop(f);
 
     // dimension 1: an edge's time is its earliest voxel's
     let edge_key = |v: usize, axis: usize| -> u64 {
-        let pc = [v / gstride[0], (v / gstride[1]) % g[1], v % g[2]];
-        let (b, c) = match axis {
-            0 => (1, 2),
-            1 => (0, 2),
-            _ => (0, 1),
-        };
-        let mut t = u32::MAX;
-        for (db, dc) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-            if pc[b] < db || pc[c] < dc || pc[b] - db >= shape[b] || pc[c] - dc >= shape[c] {
-                continue;
-            }
-            let mut vc = pc;
-            vc[b] -= db;
-            vc[c] -= dc;
-            t = t.min(rank[vc[0] * stride[0] + vc[1] * stride[1] + vc[2]]);
-        }
+        let [b, c] = OTHERS[axis];
+        let at = v + inner;
+        let t = rank[at].min(rank[at - gstride[b]]).min(rank[at - gstride[c]]).min(rank[at - gstride[b] - gstride[c]]);
         ((t as u64) << 32) | (3 * v + axis) as u64
     };
-    let mut middle = Middle::new(3 * g[0] * gstride[0], field);
-    for (r, &p) in order.iter().enumerate() {
-        if let Some(&q) = order.get(r + AHEAD) {
-            touch_block(&rank, q as usize, [stride[0], stride[1]]);
-            touch_block(&middle.owner, 3 * point(coords(q as usize)), [3 * gstride[0], 3 * gstride[1]]);
+    let mut middle = Middle::<E>::new(3 * points, gstride, field);
+    for (r, &neg) in negative.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD).filter(|_| negative[r + AHEAD] != 0) {
+            let v = q as usize - inner;
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&middle.owner, 3 * v, [3 * gstride[0], 3 * gstride[1]], &UPPER);
         }
-        let r = r as u32;
-        let c = coords(p as usize);
-        faces_at(p as usize, c, r, &mut list);
-        for &(id, _) in &list {
-            if positive[id as usize / 64] >> (id % 64) & 1 == 0 {
-                middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+        let (low, r) = (at[r] as usize - inner, r as u32);
+        let mut neg = neg;
+        while neg != 0 {
+            let id = (3 * low + faces[neg.trailing_zeros() as usize].0) as u32;
+            neg &= neg - 1;
+            middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{cubical_persistence, Construction, CubicalOptions, Diagram};
+
+    /// Values from a xorshift generator: `levels` distinct values (ties), or all distinct
+    /// (`levels` 0).
+    fn values(n: usize, seed: u64, levels: u64) -> Vec<f64> {
+        let mut x = seed;
+        (0..n)
+            .map(|_| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                if levels == 0 {
+                    (x >> 11) as f64 / (1u64 << 53) as f64
+                } else {
+                    (x % levels) as f64
+                }
+            })
+            .collect()
+    }
+
+    fn pairs(d: &Diagram) -> Vec<(usize, u64, u64)> {
+        let mut v: Vec<_> = d.pairs.iter().map(|p| (p.dim, p.birth.to_bits(), p.death.to_bits())).collect();
+        v.sort_unstable();
+        v
+    }
+
+    /// The pixel route's 3-D diagrams equal the general route's (the one that gives
+    /// cycles) on arrays large enough for long columns, stored columns and every kind of
+    /// addition in the middle dimension, and on arrays one or two pixels thick (the padded
+    /// border on both sides of a pixel).
+    #[test]
+    fn pixel_route_equals_general_route_in_3d() {
+        for (shape, seed, levels) in [
+            ([20, 18, 16], 7, 0),
+            ([17, 19, 13], 11, 0),
+            ([12, 14, 15], 5, 4),
+            ([9, 10, 11], 3, 2),
+            ([1, 9, 8], 13, 0),
+            ([7, 2, 1], 17, 3),
+            ([2, 11, 2], 19, 0),
+        ] {
+            let vals = values(shape.iter().product(), seed, levels);
+            for construction in [Construction::V, Construction::T] {
+                for (field, superlevel) in [(2, false), (3, false), (2, true)] {
+                    let mut opts = CubicalOptions { construction, superlevel, periodic: false, field, cycles: false };
+                    let fast = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    opts.cycles = true;
+                    let general = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    assert_eq!(pairs(&fast), pairs(&general), "{shape:?} {construction:?} Z/{field} {superlevel}");
+                }
             }
         }
     }
