@@ -367,17 +367,17 @@ impl Report {
                 out.push(',');
             }
             out.push_str("{\"chain\":[");
-            for (j, (cell, coef)) in g.chain.iter().enumerate() {
+            let term = |out: &mut String, j: usize, cell: &CellName, coef: i64| {
                 if j > 0 {
                     out.push(',');
                 }
                 out.push_str("{\"cell\":");
-                match &cell {
+                match cell {
                     CellName::Cube { min, extent } => {
                         out.push_str("{\"cube\":[");
-                        push_list(&mut out, min.iter().copied());
+                        push_list(out, min.iter().copied());
                         out.push_str("],\"extent\":[");
-                        push_list(&mut out, extent.iter().map(|&e| i64::from(e)));
+                        push_list(out, extent.iter().map(|&e| i64::from(e)));
                         out.push_str("]}");
                     }
                     other => out.push_str(&other.to_json().to_string()),
@@ -385,6 +385,19 @@ impl Report {
                 out.push_str(",\"coefficient\":");
                 out.push_str(itoa::Buffer::new().format(coef));
                 out.push('}');
+            };
+            // named cells borrowed, a grid's named one at a time
+            match &g.chain {
+                Chain::Named(cells) => {
+                    for (j, (cell, coef)) in cells.iter().enumerate() {
+                        term(&mut out, j, cell, *coef);
+                    }
+                }
+                Chain::Grid { cells, grid } => {
+                    for (j, &(p, coef)) in cells.iter().enumerate() {
+                        term(&mut out, j, &grid.name(p), coef);
+                    }
+                }
             }
             let _ = write!(out, "],\"dim\":{},\"order\":{}}}", g.dim, json!(g.order));
             w.write_all(out.as_bytes())?;
