@@ -66,11 +66,11 @@ impl CubeGrid {
         self.points.len()
     }
 
-    /// The cube of grid point `point`: its minimal vertex and extent, in naming order.
-    pub fn cube(&self, point: u64) -> (smallvec::SmallVec<[i64; 4]>, smallvec::SmallVec<[u8; 4]>) {
+    /// `f(a, lo, extent)` for each storage axis `a` of grid point `point`: the cube's minimal
+    /// vertex and extent along it.
+    #[inline]
+    fn for_axes(&self, point: u64, mut f: impl FnMut(usize, i64, u8)) {
         let mut p = point as usize;
-        let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
-        let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
         for (a, &n) in self.points.iter().enumerate() {
             let (q, c) = match &self.div {
                 Some(div) => {
@@ -80,9 +80,18 @@ impl CubeGrid {
                 None => (p / n, p % n),
             };
             p = q;
-            lo.push(self.min[a] + (c / 2) as i64);
-            extent.push((c % 2) as u8);
+            f(a, self.min[a] + (c / 2) as i64, (c % 2) as u8);
         }
+    }
+
+    /// The cube of grid point `point`: its minimal vertex and extent, in naming order.
+    pub fn cube(&self, point: u64) -> (smallvec::SmallVec<[i64; 4]>, smallvec::SmallVec<[u8; 4]>) {
+        let mut lo = smallvec::SmallVec::<[i64; 4]>::new();
+        let mut extent = smallvec::SmallVec::<[u8; 4]>::new();
+        self.for_axes(point, |_, l, e| {
+            lo.push(l);
+            extent.push(e);
+        });
         if self.reversed {
             lo.reverse();
             extent.reverse();
@@ -100,19 +109,10 @@ impl CubeGrid {
             return push_cube_text(out, &min, &extent);
         }
         let (mut lo, mut ex) = ([0i64; MAX], [0u8; MAX]);
-        let mut p = point as usize;
-        for (a, &n) in self.points.iter().enumerate() {
-            let (q, c) = match &self.div {
-                Some(div) => {
-                    let q = div[a].quotient(p);
-                    (q, p - q * n)
-                }
-                None => (p / n, p % n),
-            };
-            p = q;
-            lo[a] = self.min[a] + (c / 2) as i64;
-            ex[a] = (c % 2) as u8;
-        }
+        self.for_axes(point, |a, l, e| {
+            lo[a] = l;
+            ex[a] = e;
+        });
         if self.reversed {
             lo[..d].reverse();
             ex[..d].reverse();
