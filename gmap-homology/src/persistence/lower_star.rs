@@ -77,7 +77,7 @@ pub(crate) fn diagram(
     }
     // edges and 2-cells are named `3 · point + axis` (T: on a grid of (s + 2)^d points)
     let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 2));
-    // (and 4 + the number of 2-cells is a u32: see `Middle`'s owners)
+    // (and 4 + the largest edge is a u32: see `Middle`'s owners)
     if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize - 4) {
         return None;
     }
@@ -87,16 +87,19 @@ pub(crate) fn diagram(
     };
     let order = sort_order(pixels);
     let sv: Vec<f64> = order.iter().map(|&p| pixels[p as usize]).collect();
-    let mut out = Out { diagram: Diagram::new(opts.field), sv: &sv, sign };
+    let mut out = Out::new(Diagram::new(opts.field), &sv, sign);
     if d == 3 {
         let (grid, pix) = Padded::new([shape[0], shape[1], shape[2]], &order);
         drop(order);
-        match construction {
+        let done = match construction {
             // over Z/2 a column entry is its key alone (coefficient 1)
             Construction::V if opts.field == 2 => v3::<u64>(grid, pix, field, &mut out),
             Construction::V => v3::<(u64, u32)>(grid, pix, field, &mut out),
             Construction::T if opts.field == 2 => t3::<u64>(grid, pix, field, &mut out),
             Construction::T => t3::<(u64, u32)>(grid, pix, field, &mut out),
+        };
+        if done.is_err() {
+            return None;
         }
     } else {
         // one node per pixel, [parent, rank]: the rank of a neighbour is read from the
@@ -112,30 +115,66 @@ pub(crate) fn diagram(
         }
     }
     out.push(0, 0, None);
-    let mut diagram = out.diagram;
+    let mut diagram = out.finish();
     diagram.finish();
     Some(Ok(diagram))
 }
 
-/// The diagram being filled, with the values in rank order.
+/// The diagram being filled, with the values in rank order. A pair's values are read
+/// [`LAG`] pairs after it is pushed, their cache lines asked for at the push: a birth
+/// is a rank from anywhere in the image, and reading its value at once would stall the
+/// sweep on a cache miss per pair.
 struct Out<'a> {
     diagram: Diagram,
     sv: &'a [f64],
     sign: f64,
+    /// the pairs pushed and not yet read: `(dim, birth, death)`, `u32::MAX` for no death
+    /// (no rank is `u32::MAX`: `diagram` takes images of fewer pixels)
+    pending: [(u8, u32, u32); LAG],
+    next: usize,
 }
 
-impl Out<'_> {
+/// How many pairs [`Out`] holds before reading their values.
+const LAG: usize = 16;
+
+impl<'a> Out<'a> {
+    fn new(diagram: Diagram, sv: &'a [f64], sign: f64) -> Self {
+        Out { diagram, sv, sign, pending: [(0, 0, 0); LAG], next: 0 }
+    }
+
     /// A pair between ranks (`None`: essential).
     #[inline]
     fn push(&mut self, dim: usize, birth: u32, death: Option<u32>) {
         if death == Some(birth) {
             return; // one rank, one value: most pairs, found without reading the values
         }
-        let b = self.sv[birth as usize];
-        let e = death.map_or(f64::INFINITY, |r| self.sv[r as usize]);
-        if b != e {
-            self.diagram.push(dim, b, e, self.sign, None);
+        prefetch(self.sv, birth as usize);
+        let slot = self.next % LAG;
+        if self.next >= LAG {
+            self.read(self.pending[slot]);
         }
+        // dimensions are at most 3
+        self.pending[slot] = (dim as u8, birth, death.unwrap_or(u32::MAX));
+        self.next += 1;
+    }
+
+    /// Enters a pending pair in the diagram, unless its values are equal.
+    #[inline]
+    fn read(&mut self, (dim, birth, death): (u8, u32, u32)) {
+        let b = self.sv[birth as usize];
+        let e = if death == u32::MAX { f64::INFINITY } else { self.sv[death as usize] };
+        if b != e {
+            self.diagram.push(dim as usize, b, e, self.sign, None);
+        }
+    }
+
+    /// The diagram, every pending pair read.
+    fn finish(mut self) -> Diagram {
+        let first = self.next.saturating_sub(LAG);
+        for k in first..self.next {
+            self.read(self.pending[k % LAG]);
+        }
+        self.diagram
     }
 }
 
@@ -393,7 +432,7 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
 /// 3-D V-construction on the padded grid ([`Padded`]). Edges and 2-cells are named
 /// `3 · point + axis`: an edge by its lower end and its axis, a 2-cell by its lower corner
 /// and the axis it is normal to.
-fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
     let Padded { g, gstride, at } = grid;
     // dimension 0: the six neighbours
     for (r, &v) in at.iter().enumerate() {
@@ -492,10 +531,11 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
             // most 2-cells pair with their latest edge at once (its first coface): no column
             // to build, and a pair of one rank to leave out
             if !middle.take((3 * v).wrapping_add_signed(face.pivot) as u32, id) {
-                middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+                middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col))?;
             }
         }
     }
+    Ok(())
 }
 
 /// A 3-D image on the grid of its points padded by one on every side: the pixel c at the
@@ -739,9 +779,9 @@ struct Middle<E> {
     /// the point strides of the grid the edges and 2-cells are named on
     stride: [usize; 3],
     owner: Vec<u32>,
-    /// the stored columns: column `s` is `entries[starts[s]..starts[s + 1]]`
+    /// the stored columns one after the other, each a header entry (its key the column's
+    /// length) followed by the column: finding a stored column reads one cache line
     entries: Vec<E>,
-    starts: Vec<usize>,
     col: Vec<E>,
     other: Vec<E>,
     scratch: Vec<E>,
@@ -779,7 +819,6 @@ impl<E: Entry> Middle<E> {
             stride,
             owner: filled(edges, Self::FREE),
             entries: Vec::new(),
-            starts: vec![0],
             col: Vec::new(),
             other: Vec::new(),
             scratch: Vec::new(),
@@ -798,9 +837,17 @@ impl<E: Entry> Middle<E> {
     }
 
     /// Reduces the column of the 2-cell `id` at rank `death`; `boundary(id, col)` fills
-    /// `col` with a 2-cell's boundary, sorted by key. Records the pair it makes.
+    /// `col` with a 2-cell's boundary, sorted by key. Records the pair it makes. Fails
+    /// only if the stored columns would outgrow what an owner can address (`u32::MAX - 4`
+    /// entries: 32 GB of them over Z/2).
     #[inline]
-    fn column(&mut self, id: u32, death: u32, out: &mut Out, boundary: impl Fn(u32, &mut Vec<E>)) {
+    fn column(
+        &mut self,
+        id: u32,
+        death: u32,
+        out: &mut Out,
+        boundary: impl Fn(u32, &mut Vec<E>),
+    ) -> Result<(), TooLarge> {
         let field = self.field;
         boundary(id, &mut self.col);
         let mut changed = false;
@@ -810,24 +857,32 @@ impl<E: Entry> Middle<E> {
             let o = self.owner[e as usize];
             if o == Self::FREE {
                 self.owner[e as usize] = if changed {
-                    // fewer stored columns than 2-cells: `diagram` keeps 4 + their number a u32
-                    let slot = self.starts.len() - 1;
+                    let at = self.entries.len();
+                    if at > (u32::MAX - 4) as usize {
+                        return Err(TooLarge);
+                    }
+                    self.entries.push(E::new(self.col.len() as u64, 0));
                     self.entries.extend_from_slice(&self.col);
-                    self.starts.push(self.entries.len());
-                    (4 + slot) as u32
+                    4 + at as u32
                 } else {
                     coface_place(e, id)
                 };
                 out.push(1, (pivot >> 32) as u32, Some(death));
-                return;
+                return Ok(());
             }
             let pcol: &[E] = if o < 4 {
                 boundary(coface(e, o, self.stride), &mut self.other);
                 &self.other
             } else {
-                let s = (o - 4) as usize;
-                &self.entries[self.starts[s]..self.starts[s + 1]]
+                let at = (o - 4) as usize + 1;
+                &self.entries[at..at + self.entries[at - 1].key() as usize]
             };
+            // the next pivot is most likely the working column's or the added column's
+            // second latest edge: their owners load while the column is added
+            let n = self.col.len();
+            for x in [self.col.get(n.wrapping_sub(2)), pcol.get(pcol.len().wrapping_sub(2))].into_iter().flatten() {
+                prefetch(&self.owner, (x.key() & 0xffff_ffff) as usize);
+            }
             let pc = pcol.last().expect("a pivot column is not zero").coef();
             let fac = field.neg(field.mul(top.coef(), field.inv(pc)));
             if pcol.len() <= SHORT && self.col.len() > 4 * SHORT {
@@ -858,11 +913,15 @@ impl<E: Entry> Middle<E> {
     }
 }
 
+/// The stored columns of [`Middle`] outgrew what an owner can address: the image is left
+/// to the general route.
+struct TooLarge;
+
 /// 3-D T-construction: the voxels are the top cells. Voxels, vertices, edges and 2-cells
 /// live on the padded grid ([`Padded`]: the voxel c at the point c + (1, 1, 1), its lower
 /// corner at the point c); edges and 2-cells are named `3 · point + axis` (a 2-cell by its
 /// lower corner and its normal axis). A cell's time is the rank of its earliest voxel.
-fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
+fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
     let Padded { g, gstride, at } = grid;
     let block = block_offsets(gstride);
     // dimension 0: the 26 voxels sharing a vertex
@@ -951,9 +1010,10 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) {
         while neg != 0 {
             let id = (3 * low + faces[neg.trailing_zeros() as usize].0) as u32;
             neg &= neg - 1;
-            middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col));
+            middle.column(id, r, out, |id, col| square_boundary(id, gstride, field, edge_key, col))?;
         }
     }
+    Ok(())
 }
 
 #[cfg(test)]
