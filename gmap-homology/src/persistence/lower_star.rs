@@ -434,18 +434,30 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
 /// and the axis it is normal to.
 fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
     let Padded { g, gstride, at } = grid;
-    // dimension 0: the six neighbours
+    let points = g[0] * gstride[0];
+    // dimension 0: the six neighbours, the edges to them in the order of their ids (lower
+    // end, axis), as the filtration orders the edges of one rank; `negative_edges` marks
+    // the edges that join two components (a bit per edge id)
+    let mut negative_edges = vec![0u64; (3 * points).div_ceil(64)];
     for (r, &v) in at.iter().enumerate() {
         if let Some(&q) = at.get(r + AHEAD) {
             touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
         }
         let r = r as u32;
-        for s in gstride {
-            for q in [v as usize - s, v as usize + s] {
-                if pix.nodes[q][1] < r {
-                    if let Some(young) = pix.union(v, q as u32, true) {
-                        out.push(0, young, Some(r));
-                    }
+        let v = v as usize;
+        for (axis, q, low) in [
+            (0, v - gstride[0], v - gstride[0]),
+            (1, v - gstride[1], v - gstride[1]),
+            (2, v - 1, v - 1),
+            (0, v + gstride[0], v),
+            (1, v + gstride[1], v),
+            (2, v + 1, v),
+        ] {
+            if pix.nodes[q][1] < r {
+                if let Some(young) = pix.union(v as u32, q as u32, true) {
+                    out.push(0, young, Some(r));
+                    let e = 3 * low + axis;
+                    negative_edges[e / 64] |= 1 << (e % 64);
                 }
             }
         }
@@ -455,7 +467,6 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
         *t = node[1];
     }
     drop(pix);
-    let points = g[0] * gstride[0];
     let block = block_offsets(gstride);
     let (cubes, faces) = (cube_templates(gstride), face_templates(gstride));
     // the 3 × 3 × 3 block around the point `v` (bit `9(dz+1) + 3(dy+1) + (dx+1)`): the
@@ -511,10 +522,16 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
     }
     drop(f);
 
-    // dimension 1: the negative 2-cells' columns, reduced
-    let edge_key = |v: usize, axis: usize| -> u64 {
+    // dimension 1: the negative 2-cells' columns, reduced, without their negative edges
+    // (Bauer, Kerber and Reininghaus's compression: an edge that joins two components is
+    // never the latest edge of a column being reduced, so its row changes no pivot)
+    let edge_key = |v: usize, axis: usize| -> Option<u64> {
+        let e = 3 * v + axis;
+        if negative_edges[e / 64] >> (e % 64) & 1 == 1 {
+            return None;
+        }
         let t = rank[v].max(rank[v + gstride[axis]]);
-        ((t as u64) << 32) | (3 * v + axis) as u64
+        Some(((t as u64) << 32) | e as u64)
     };
     let mut middle = Middle::<E>::new(3 * points, gstride, field);
     for (r, &neg) in negative.iter().enumerate() {
@@ -652,23 +669,25 @@ fn face_templates(gstride: [usize; 3]) -> Vec<FaceTemplate> {
 
 /// The boundary of the 2-cell `id = 3 · corner + normal` of a 3-D grid of strides `stride`
 /// (the corner's point grid): `+e(c, a) + e(c + e_a, b) - e(c + e_b, a) - e(c, b)` for
-/// the other axes `a < b`, edges keyed by `edge_key(corner, axis)`, sorted by key.
+/// the other axes `a < b`, edges keyed by `edge_key(corner, axis)` (`None`: left out),
+/// sorted by key.
 #[inline]
 fn square_boundary<E: Entry>(
     id: u32,
     stride: [usize; 3],
     field: Zp,
-    edge_key: impl Fn(usize, usize) -> u64,
+    edge_key: impl Fn(usize, usize) -> Option<u64>,
     col: &mut Vec<E>,
 ) {
     let (low, normal) = (id as usize / 3, id as usize % 3);
     let [a, b] = OTHERS[normal];
     let minus = field.of(-1);
     col.clear();
-    col.push(E::new(edge_key(low, a), 1));
-    col.push(E::new(edge_key(low + stride[a], b), 1));
-    col.push(E::new(edge_key(low + stride[b], a), minus));
-    col.push(E::new(edge_key(low, b), minus));
+    for (v, axis, coef) in [(low, a, 1), (low + stride[a], b, 1), (low + stride[b], a, minus), (low, b, minus)] {
+        if let Some(k) = edge_key(v, axis) {
+            col.push(E::new(k, coef));
+        }
+    }
     col.sort_unstable_by_key(|e| e.key());
 }
 
@@ -992,11 +1011,11 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
     drop(f);
 
     // dimension 1: an edge's time is its earliest voxel's
-    let edge_key = |v: usize, axis: usize| -> u64 {
+    let edge_key = |v: usize, axis: usize| -> Option<u64> {
         let [b, c] = OTHERS[axis];
         let at = v + inner;
         let t = rank[at].min(rank[at - gstride[b]]).min(rank[at - gstride[c]]).min(rank[at - gstride[b] - gstride[c]]);
-        ((t as u64) << 32) | (3 * v + axis) as u64
+        Some(((t as u64) << 32) | (3 * v + axis) as u64)
     };
     let mut middle = Middle::<E>::new(3 * points, gstride, field);
     for (r, &neg) in negative.iter().enumerate() {
