@@ -13,11 +13,13 @@
 //! The diagram does not depend on how ties of value are broken, so these orders give
 //! GUDHI's pairs. Then:
 //!
-//! * **dimension 0** by union-find on the pixels in rank order (V: 2d neighbours; T: the
-//!   3^d - 1 pixels sharing a vertex), each component rooted at its oldest pixel (elder
-//!   rule), paths halved; the nodes are indexed by pixel, so the first step of every find
-//!   is a neighbour of the pixel at hand (cache-local), and a node is 8 bytes (parent,
-//!   birth rank);
+//! * **dimension 0** by union-find on the pixels in rank order (V: 2d neighbours; T in 1-D
+//!   and 2-D: the 3^d - 1 pixels sharing a vertex; T in 3-D: the vertices and edges each
+//!   voxel brings, vertices first, edges in the order of their ids), each component
+//!   rooted at its oldest pixel (elder rule), paths halved; the nodes are indexed by pixel
+//!   (or point), so the first step of every find is a neighbour of the pixel at hand
+//!   (cache-local), and a node is 8 bytes (parent, birth rank). In 3-D the edges that join
+//!   two components (the negative edges) are marked, a bit per edge;
 //! * **dimension d-1** by union-find on the dual in reverse rank order (Alexander
 //!   duality, CubicalRipser's `JoinPairs`): top cells and the outside are the nodes, a
 //!   (d-1)-cell joins its one or two cofaces, and a join of two components is a pair whose
@@ -27,7 +29,13 @@
 //!   columns of four entries computed from the ranks, keys `(rank << 32) | id`, an owner
 //!   per edge (a `u32` that also says where the owner's column is: no hash map), only the
 //!   columns changed by a reduction stored (one after the other in one array), over Z/2 an
-//!   entry its key alone, a short column added into a long one in place. (Cohomology,
+//!   entry its key alone, a short column added into a long one in place. The negative
+//!   edges are left out of every column (the compression of Bauer, Kerber and
+//!   Reininghaus, "Clear and compress", 2014): such an edge is never the latest of a
+//!   column being reduced (it would be that column's pivot, and a pivot of the 2-cells
+//!   is never negative), so dropping its row changes no step of the reduction; columns
+//!   are a third shorter, and on random 128³ arrays the pass takes 20–25% less time.
+//!   (Cohomology,
 //!   CubicalRipser's choice for this dimension, made columns 25 times longer on random
 //!   128³ arrays.)
 //!
@@ -50,7 +58,7 @@
 //! Cost: the sort `O(N)` passes, then `O(N α(N))` for the union-finds; the reduction is
 //! near-linear on images. Memory: the values in rank order (8 bytes per pixel); in 1-D
 //! and 2-D the union-find (8); in 3-D, per point of the padded grid of `(s + 2)^3`, the
-//! union-find (8), then the ranks (4) and an owner per edge (12), per pixel its point (4)
+//! union-find (8), then the ranks (4), an owner per edge (12) and a bit per edge, per pixel its point (4)
 //! and its 2-cells left to reduce (1 or 2), and the stored columns (8 bytes an entry over
 //! Z/2, 16 otherwise).
 //!
@@ -592,6 +600,53 @@ impl Padded {
     }
 }
 
+/// A vertex or an edge of a voxel (T-construction, on [`Padded`]'s grid): its point's
+/// offset from the voxel's point, its axis (an edge's), and the mask of the other voxels
+/// around the voxel that contain it (in [`block_offsets`]' bits).
+struct VoxelCell {
+    at: isize,
+    axis: usize,
+    voxels: u32,
+}
+
+/// The voxel's cell whose point is its lower corner plus `delta` and that spans the axes
+/// `spans` (none: a vertex; one: an edge along it).
+fn voxel_cell(delta: [isize; 3], spans: Option<usize>, gstride: [usize; 3]) -> VoxelCell {
+    let at = (0..3).map(|a| (delta[a] - 1) * gstride[a] as isize).sum();
+    // along an axis the cell does not span, the voxels at delta - 1 and delta (relative to
+    // the voxel) contain it; along the one it spans, only the voxel's own layer
+    let mut voxels = 0;
+    for k in 0..8 {
+        let d: [isize; 3] = std::array::from_fn(|a| if Some(a) == spans { 0 } else { delta[a] - ((k >> a) & 1) });
+        if d != [0, 0, 0] {
+            voxels |= block_bit(d);
+        }
+    }
+    VoxelCell { at, axis: spans.unwrap_or(0), voxels }
+}
+
+/// The eight vertices of a voxel.
+fn corner_templates(gstride: [usize; 3]) -> [VoxelCell; 8] {
+    std::array::from_fn(|k| voxel_cell([k >> 2 & 1, k >> 1 & 1, k & 1].map(|x| x as isize), None, gstride))
+}
+
+/// The twelve edges of a voxel, in the order of their ids `3 · point + axis`.
+fn edge_templates(gstride: [usize; 3]) -> Vec<VoxelCell> {
+    let mut edges: Vec<VoxelCell> = (0..3)
+        .flat_map(|axis| {
+            (0..4).map(move |k| {
+                let [b, c] = OTHERS[axis];
+                let mut delta = [0isize; 3];
+                delta[b] = k & 1;
+                delta[c] = k >> 1;
+                voxel_cell(delta, Some(axis), gstride)
+            })
+        })
+        .collect();
+    edges.sort_unstable_by_key(|e| 3 * e.at + e.axis as isize);
+    edges
+}
+
 /// The offsets of the 3 × 3 × 3 block around a point of a grid of strides `gstride`, in
 /// the order of the block's bits `9(dz+1) + 3(dy+1) + (dx+1)`.
 fn block_offsets(gstride: [usize; 3]) -> [isize; 27] {
@@ -940,31 +995,51 @@ struct TooLarge;
 /// live on the padded grid ([`Padded`]: the voxel c at the point c + (1, 1, 1), its lower
 /// corner at the point c); edges and 2-cells are named `3 · point + axis` (a 2-cell by its
 /// lower corner and its normal axis). A cell's time is the rank of its earliest voxel.
-fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
+fn t3<E: Entry>(grid: Padded, pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
     let Padded { g, gstride, at } = grid;
     let block = block_offsets(gstride);
-    // dimension 0: the 26 voxels sharing a vertex
-    for (r, &v) in at.iter().enumerate() {
-        if let Some(&q) = at.get(r + AHEAD) {
-            touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &BLOCK);
-        }
-        let r = r as u32;
-        for &o in &block {
-            let q = (v as usize).wrapping_add_signed(o);
-            if pix.nodes[q][1] < r {
-                if let Some(young) = pix.union(v, q as u32, true) {
-                    out.push(0, young, Some(r));
-                }
-            }
-        }
-    }
     let mut rank = filled(pix.nodes.len(), 0u32);
     for (t, node) in rank.iter_mut().zip(&pix.nodes) {
         *t = node[1];
     }
-    drop(pix);
     let points = g[0] * gstride[0];
     let inner = gstride[0] + gstride[1] + 1;
+
+    // dimension 0 on the vertices and edges themselves (their nodes reuse the voxels'):
+    // each voxel brings the vertices and edges none of its neighbours brought before it
+    // (a cell's time is its earliest voxel's), the vertices first, then the edges in the
+    // order of their ids, as the filtration orders the cells of one rank. `negative_edges`
+    // marks the edges that join two components (a bit per edge id).
+    let mut vert = pix;
+    let (corners, edges) = (corner_templates(gstride), edge_templates(gstride));
+    let mut negative_edges = vec![0u64; (3 * points).div_ceil(64)];
+    for (r, &v) in at.iter().enumerate() {
+        if let Some(&q) = at.get(r + AHEAD) {
+            touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
+            touch_rows(&vert.nodes, q as usize - inner, [gstride[0], gstride[1]], &UPPER);
+        }
+        let (v, r) = (v as usize, r as u32);
+        let mut early = 0u32;
+        for (k, &o) in block.iter().enumerate() {
+            early |= u32::from(rank[v.wrapping_add_signed(o)] < r) << k;
+        }
+        for c in &corners {
+            if early & c.voxels == 0 {
+                vert.make(v.wrapping_add_signed(c.at) as u32, r);
+            }
+        }
+        for e in &edges {
+            if early & e.voxels == 0 {
+                let low = v.wrapping_add_signed(e.at);
+                if let Some(young) = vert.union(low as u32, (low + gstride[e.axis]) as u32, true) {
+                    out.push(0, young, Some(r));
+                    let id = 3 * low + e.axis;
+                    negative_edges[id / 64] |= 1 << (id % 64);
+                }
+            }
+        }
+    }
+    drop(vert);
     // the six faces of a voxel by id, as (offset of the id from 3 · its lower corner,
     // offset of the other voxel): below along z, y, x, then above along x, y, z
     let faces: [(usize, isize); 6] = std::array::from_fn(|k| {
@@ -1010,12 +1085,17 @@ fn t3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
     }
     drop(f);
 
-    // dimension 1: an edge's time is its earliest voxel's
+    // dimension 1: an edge's time is its earliest voxel's; the negative edges are left out
+    // (see `v3`)
     let edge_key = |v: usize, axis: usize| -> Option<u64> {
+        let e = 3 * v + axis;
+        if negative_edges[e / 64] >> (e % 64) & 1 == 1 {
+            return None;
+        }
         let [b, c] = OTHERS[axis];
         let at = v + inner;
         let t = rank[at].min(rank[at - gstride[b]]).min(rank[at - gstride[c]]).min(rank[at - gstride[b] - gstride[c]]);
-        Some(((t as u64) << 32) | (3 * v + axis) as u64)
+        Some(((t as u64) << 32) | e as u64)
     };
     let mut middle = Middle::<E>::new(3 * points, gstride, field);
     for (r, &neg) in negative.iter().enumerate() {
@@ -1086,6 +1166,27 @@ mod tests {
                     opts.cycles = true;
                     let general = cubical_persistence(&shape, &vals, &opts).unwrap();
                     assert_eq!(pairs(&fast), pairs(&general), "{shape:?} {construction:?} Z/{field} {superlevel}");
+                }
+            }
+        }
+    }
+
+    /// The same on many small random arrays, few of them with distinct values: ties make
+    /// the order of the cells of one rank matter (which edges join two components, and
+    /// so which rows the middle pass leaves out).
+    #[test]
+    fn pixel_route_equals_general_route_on_small_3d_arrays() {
+        for seed in 1..=60u64 {
+            let shape = [2 + seed as usize % 5, 2 + (seed as usize / 5) % 4, 3 + (seed as usize / 3) % 5];
+            let vals = values(shape.iter().product(), seed * 7919, seed % 4);
+            for construction in [Construction::V, Construction::T] {
+                for field in [2, 3] {
+                    let mut opts =
+                        CubicalOptions { construction, superlevel: false, periodic: false, field, cycles: false };
+                    let fast = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    opts.cycles = true;
+                    let general = cubical_persistence(&shape, &vals, &opts).unwrap();
+                    assert_eq!(pairs(&fast), pairs(&general), "{shape:?} seed {seed} {construction:?} Z/{field}");
                 }
             }
         }
