@@ -91,7 +91,8 @@ impl Diagram {
             both.sort_by(|(p, _), (q, _)| order(p, q));
             (self.pairs, self.cycles) = both.into_iter().unzip();
         } else {
-            self.pairs.sort_by(order);
+            // pairs equal in the order are equal: an unstable sort gives the same list
+            self.pairs.sort_unstable_by(order);
         }
     }
 

@@ -65,7 +65,9 @@
 //! Periodic images, cycles and images of dimension 4 or more go through the general route
 //! of [`super::cubical`].
 
-use super::options::{check_field, key, Construction, CubicalOptions};
+use gmap_core::fastdiv::Divider;
+
+use super::options::{check_field, key, unkey, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
 use crate::prefetch::{filled, prefetch};
@@ -93,8 +95,9 @@ pub(crate) fn diagram(
         Ok(f) => f,
         Err(e) => return Some(Err(e)),
     };
-    let order = sort_order(pixels);
-    let sv: Vec<f64> = order.iter().map(|&p| pixels[p as usize]).collect();
+    let (order, keys) = sort_order(pixels);
+    // the values in rank order, from the sorted keys in their place (no gather)
+    let sv: Vec<f64> = keys.into_iter().map(unkey).collect();
     let mut out = Out::new(Diagram::new(opts.field), &sv, sign);
     if d == 3 {
         let (grid, pix) = Padded::new([shape[0], shape[1], shape[2]], &order);
@@ -111,8 +114,9 @@ pub(crate) fn diagram(
         }
     } else {
         // one node per pixel, [parent, rank]: the rank of a neighbour is read from the
-        // cache line its node is on
-        let mut pix = Forest::new(n);
+        // cache line its node is on; one more for the dual pass's outside, which reuses the
+        // nodes
+        let mut pix = Forest::new(n + 1);
         for (r, &p) in order.iter().enumerate() {
             pix.nodes[p as usize] = [p, r as u32];
         }
@@ -186,9 +190,9 @@ impl<'a> Out<'a> {
     }
 }
 
-/// The pixels in order of (value, index): a stable LSD radix sort of the values' keys,
-/// 11 bits a pass.
-fn sort_order(values: &[f64]) -> Vec<u32> {
+/// The pixels in order of (value, index), and their keys in that order: a stable LSD radix
+/// sort of the values' keys, 11 bits a pass.
+fn sort_order(values: &[f64]) -> (Vec<u32>, Vec<u64>) {
     let n = values.len();
     let mut keys: Vec<u64> = values.iter().map(|&v| key(v)).collect();
     let mut idx: Vec<u32> = (0..n as u32).collect();
@@ -220,7 +224,7 @@ fn sort_order(values: &[f64]) -> Vec<u32> {
         std::mem::swap(&mut keys, &mut keys2);
         std::mem::swap(&mut idx, &mut idx2);
     }
-    idx
+    (idx, keys)
 }
 
 /// Union-find nodes `[parent, time]`: the root's time names its component (the elder rule
@@ -279,7 +283,7 @@ const AHEAD: usize = 12;
 /// the loads start early and overlap with the current step's work, so the step that needs
 /// them finds them in cache (the sweep visits pixels in value order, all over the image).
 #[inline]
-fn touch_ahead(nodes: &[[u32; 2]], order: &[u32], r: usize, cols: usize, dir: usize) {
+fn touch_ahead<T>(nodes: &[T], order: &[u32], r: usize, cols: usize, dir: usize) {
     let Some(&q) = order.get(r + dir * AHEAD) else { return };
     let q = q as usize;
     prefetch(nodes, q);
@@ -311,11 +315,14 @@ const UPPER: [(isize, isize); 4] = [(0, 0), (0, 1), (1, 0), (1, 1)];
 /// 2-D V-construction (a 1-D image is one row).
 fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     let n = rows * cols;
+    // (pixels are fewer than 2^32: `diagram`'s test)
+    let Some(by_cols) = Divider::new(cols) else { return };
     // dimension 0: each pixel's edges to earlier neighbours
     for (r, &p) in order.iter().enumerate() {
         touch_ahead(&pix.nodes, order, r, cols, 1);
         let r = r as u32;
-        let (i, j) = (p as usize / cols, p as usize % cols);
+        let i = by_cols.quotient(p as usize);
+        let j = p as usize - i * cols;
         let mut link = |q: usize| {
             if pix.nodes[q][1] < r {
                 if let Some(young) = pix.union(p, q as u32, true) {
@@ -339,9 +346,15 @@ fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     if rows < 2 || cols < 2 {
         return;
     }
-    // dimension 1 on the dual: squares by their lower-left pixel, the outside node `n`
-    let rank = |q: usize| pix.nodes[q][1];
-    let mut f = Forest::new(n + 1);
+    // dimension 1 on the dual: squares by their lower-left pixel, the outside node `n`; the
+    // nodes are the pixels' again (a square's is made before it is read), the ranks copied
+    // out first (half the bytes to read)
+    let mut ranks = filled(n, 0u32);
+    for (t, node) in ranks.iter_mut().zip(&pix.nodes) {
+        *t = node[1];
+    }
+    let rank = |q: usize| ranks[q];
+    let mut f = pix;
     let outside = n as u32;
     f.make(outside, u32::MAX);
     let square = |a: usize, b: usize| -> u32 {
@@ -353,10 +366,15 @@ fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     };
     for (r, &p) in order.iter().enumerate().rev() {
         if r >= AHEAD {
-            touch_ahead(&pix.nodes, order, r - AHEAD, cols, 0);
+            touch_ahead(&ranks, order, r - AHEAD, cols, 0);
+            // the squares at that pixel: rows i - 1 and i of the dual's nodes
+            let q = order[r - AHEAD] as usize;
+            prefetch(&f.nodes, q.wrapping_sub(cols));
+            prefetch(&f.nodes, q);
         }
         let r = r as u32;
-        let (i, j) = (p as usize / cols, p as usize % cols);
+        let i = by_cols.quotient(p as usize);
+        let j = p as usize - i * cols;
         let early = |a: usize, b: usize| rank(a * cols + b) <= r;
         // the squares whose latest corner is p
         for (a, b) in [(i.wrapping_sub(1), j.wrapping_sub(1)), (i.wrapping_sub(1), j), (i, j.wrapping_sub(1)), (i, j)] {
@@ -389,10 +407,13 @@ fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
 /// 2-D T-construction (a 1-D image is one row): the pixels are the top cells.
 fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     let n = rows * cols;
+    let Some(by_cols) = Divider::new(cols) else { return };
     // dimension 0: pixels sharing a vertex
     for (r, &p) in order.iter().enumerate() {
+        touch_ahead(&pix.nodes, order, r, cols, 1);
         let r = r as u32;
-        let (i, j) = (p as usize / cols, p as usize % cols);
+        let i = by_cols.quotient(p as usize);
+        let j = p as usize - i * cols;
         for a in i.saturating_sub(1)..(i + 2).min(rows) {
             for b in j.saturating_sub(1)..(j + 2).min(cols) {
                 let q = a * cols + b;
@@ -404,15 +425,25 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
             }
         }
     }
-    // dimension 1 on the dual: pixels sharing an edge, the border's edges to the outside
-    let rank = |q: usize| pix.nodes[q][1];
-    let mut f = Forest::new(n + 1);
+    // dimension 1 on the dual: pixels sharing an edge, the border's edges to the outside;
+    // the nodes are the pixels' again, the ranks copied out first
+    let mut ranks = filled(n, 0u32);
+    for (t, node) in ranks.iter_mut().zip(&pix.nodes) {
+        *t = node[1];
+    }
+    let rank = |q: usize| ranks[q];
+    let mut f = pix;
     let outside = n as u32;
     f.make(outside, u32::MAX);
     for (r, &p) in order.iter().enumerate().rev() {
+        if r >= AHEAD {
+            touch_ahead(&ranks, order, r - AHEAD, cols, 0);
+            touch_ahead(&f.nodes, order, r - AHEAD, cols, 0);
+        }
         let r = r as u32;
         f.make(p, r);
-        let (i, j) = (p as usize / cols, p as usize % cols);
+        let i = by_cols.quotient(p as usize);
+        let j = p as usize - i * cols;
         let mut edge = |y: u32| {
             if let Some(young) = f.union(p, y, false) {
                 out.push(1, r, Some(young));
