@@ -57,8 +57,9 @@
 //!
 //! Cost: the sort `O(N)` passes, then `O(N α(N))` for the union-finds; the reduction is
 //! near-linear on images. Memory: the values in rank order (8 bytes per pixel); in 1-D
-//! and 2-D the union-find (8); in 3-D, per point of the padded grid of `(s + 2)^3`, the
-//! union-find (8), then the ranks (4), an owner per edge (12) and a bit per edge, per pixel its point (4)
+//! and 2-D the union-find (8; the dual pass reuses its nodes) and, in the dual pass, the
+//! ranks (4); in 3-D, per point of the padded grid of `(s + 2)^3`, the union-find (8) and
+//! the ranks (4), then an owner per edge (12) and a bit per edge, per pixel its point (4)
 //! and its 2-cells left to reduce (1 or 2), and the stored columns (8 bytes an entry over
 //! Z/2, 16 otherwise).
 //!
@@ -872,12 +873,12 @@ const SHORT: usize = 8;
 /// `(rank << 32) | edge`) has no owner. Only the columns changed by a reduction are stored
 /// (one after the other in one array); the others are recomputed from the boundary when
 /// needed. An edge's owner is one `u32`: [`Middle::FREE`], the place `k < 4` of an
-/// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + s` for
-/// the stored column `s`, so that finding the column to add reads no table. A short
-/// column (at most [`SHORT`] entries) added into a long one goes in place, each entry found
-/// by bisection and moved in (on 128³ random T the working column is 1,280 entries long on
-/// average when a boundary is added, and two thirds of the entries go within 8 of its
-/// top); otherwise the part of the working column from the added column's first key up is
+/// unchanged column's 2-cell among the edge's four cofaces ([`coface`]), or `4 + i` for
+/// the stored column whose header (its length) is `entries[i]`, so that finding the column
+/// to add reads no table and one cache line. A short column (at most [`SHORT`] entries)
+/// added into a long one goes in place, each entry found by bisection and moved in (on
+/// 128³ random T, 990,597 such additions meet working columns of 716 entries on average);
+/// otherwise the part of the working column from the added column's first key up is
 /// merged with it, the rest staying in place.
 struct Middle<E> {
     field: Zp,
