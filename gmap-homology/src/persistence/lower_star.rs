@@ -66,6 +66,7 @@
 //! Periodic images, cycles and images of dimension 4 or more go through the general route
 //! of [`super::cubical`].
 
+use bitvec::vec::BitVec;
 use gmap_core::fastdiv::Divider;
 
 use super::options::{check_field, key, unkey, Construction, CubicalOptions};
@@ -239,6 +240,16 @@ impl Forest {
         Forest { nodes: filled(n, [0, 0]) }
     }
 
+    /// The times of the first `n` nodes (for the ranks once the nodes are reused), on huge
+    /// pages like the nodes.
+    fn times(&self, n: usize) -> Vec<u32> {
+        let mut t = filled(n, 0u32);
+        for (t, node) in t.iter_mut().zip(&self.nodes) {
+            *t = node[1];
+        }
+        t
+    }
+
     #[inline]
     fn make(&mut self, x: u32, time: u32) {
         self.nodes[x as usize] = [x, time];
@@ -279,8 +290,9 @@ impl Forest {
 /// How many pixels ahead of the sweep their rows are read in (see [`touch_ahead`]).
 const AHEAD: usize = 12;
 
-/// Reads the node of the pixel `AHEAD` steps after `r` in the sweep's direction (`dir` 1:
-/// forward, 0: `r` is that pixel's step already) and the nodes of the rows above and below:
+/// Reads the entry (node or rank) of the pixel `AHEAD` steps after `r` in the sweep's
+/// direction (`dir` 1: forward, 0: `r` is that pixel's step already) and the entries of the
+/// rows above and below:
 /// the loads start early and overlap with the current step's work, so the step that needs
 /// them finds them in cache (the sweep visits pixels in value order, all over the image).
 #[inline]
@@ -350,10 +362,7 @@ fn v2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     // dimension 1 on the dual: squares by their lower-left pixel, the outside node `n`; the
     // nodes are the pixels' again (a square's is made before it is read), the ranks copied
     // out first (half the bytes to read)
-    let mut ranks = filled(n, 0u32);
-    for (t, node) in ranks.iter_mut().zip(&pix.nodes) {
-        *t = node[1];
-    }
+    let ranks = pix.times(n);
     let rank = |q: usize| ranks[q];
     let mut f = pix;
     let outside = n as u32;
@@ -428,10 +437,7 @@ fn t2(rows: usize, cols: usize, order: &[u32], mut pix: Forest, out: &mut Out) {
     }
     // dimension 1 on the dual: pixels sharing an edge, the border's edges to the outside;
     // the nodes are the pixels' again, the ranks copied out first
-    let mut ranks = filled(n, 0u32);
-    for (t, node) in ranks.iter_mut().zip(&pix.nodes) {
-        *t = node[1];
-    }
+    let ranks = pix.times(n);
     let rank = |q: usize| ranks[q];
     let mut f = pix;
     let outside = n as u32;
@@ -478,7 +484,7 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
     // dimension 0: the six neighbours, the edges to them in the order of their ids (lower
     // end, axis), as the filtration orders the edges of one rank; `negative_edges` marks
     // the edges that join two components (a bit per edge id)
-    let mut negative_edges = vec![0u64; (3 * points).div_ceil(64)];
+    let mut negative_edges: BitVec = BitVec::repeat(false, 3 * points);
     for (r, &v) in at.iter().enumerate() {
         if let Some(&q) = at.get(r + AHEAD) {
             touch_rows(&pix.nodes, q as usize, [gstride[0], gstride[1]], &CROSS);
@@ -496,16 +502,12 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
             if pix.nodes[q][1] < r {
                 if let Some(young) = pix.union(v as u32, q as u32, true) {
                     out.push(0, young, Some(r));
-                    let e = 3 * low + axis;
-                    negative_edges[e / 64] |= 1 << (e % 64);
+                    negative_edges.set(3 * low + axis, true);
                 }
             }
         }
     }
-    let mut rank = filled(pix.nodes.len(), 0u32);
-    for (t, node) in rank.iter_mut().zip(&pix.nodes) {
-        *t = node[1];
-    }
+    let rank = pix.times(pix.nodes.len());
     drop(pix);
     let block = block_offsets(gstride);
     let (cubes, faces) = (cube_templates(gstride), face_templates(gstride));
@@ -567,7 +569,7 @@ fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut Out) -> Resu
     // never the latest edge of a column being reduced, so its row changes no pivot)
     let edge_key = |v: usize, axis: usize| -> Option<u64> {
         let e = 3 * v + axis;
-        if negative_edges[e / 64] >> (e % 64) & 1 == 1 {
+        if negative_edges[e] {
             return None;
         }
         let t = rank[v].max(rank[v + gstride[axis]]);
@@ -1030,10 +1032,7 @@ struct TooLarge;
 fn t3<E: Entry>(grid: Padded, pix: Forest, field: Zp, out: &mut Out) -> Result<(), TooLarge> {
     let Padded { g, gstride, at } = grid;
     let block = block_offsets(gstride);
-    let mut rank = filled(pix.nodes.len(), 0u32);
-    for (t, node) in rank.iter_mut().zip(&pix.nodes) {
-        *t = node[1];
-    }
+    let rank = pix.times(pix.nodes.len());
     let points = g[0] * gstride[0];
     let inner = gstride[0] + gstride[1] + 1;
 
@@ -1044,7 +1043,7 @@ fn t3<E: Entry>(grid: Padded, pix: Forest, field: Zp, out: &mut Out) -> Result<(
     // marks the edges that join two components (a bit per edge id).
     let mut vert = pix;
     let (corners, edges) = (corner_templates(gstride), edge_templates(gstride));
-    let mut negative_edges = vec![0u64; (3 * points).div_ceil(64)];
+    let mut negative_edges: BitVec = BitVec::repeat(false, 3 * points);
     for (r, &v) in at.iter().enumerate() {
         if let Some(&q) = at.get(r + AHEAD) {
             touch_rows(&rank, q as usize, [gstride[0], gstride[1]], &BLOCK);
@@ -1065,8 +1064,7 @@ fn t3<E: Entry>(grid: Padded, pix: Forest, field: Zp, out: &mut Out) -> Result<(
                 let low = v.wrapping_add_signed(e.at);
                 if let Some(young) = vert.union(low as u32, (low + gstride[e.axis]) as u32, true) {
                     out.push(0, young, Some(r));
-                    let id = 3 * low + e.axis;
-                    negative_edges[id / 64] |= 1 << (id % 64);
+                    negative_edges.set(3 * low + e.axis, true);
                 }
             }
         }
@@ -1121,7 +1119,7 @@ fn t3<E: Entry>(grid: Padded, pix: Forest, field: Zp, out: &mut Out) -> Result<(
     // (see `v3`)
     let edge_key = |v: usize, axis: usize| -> Option<u64> {
         let e = 3 * v + axis;
-        if negative_edges[e / 64] >> (e % 64) & 1 == 1 {
+        if negative_edges[e] {
             return None;
         }
         let [b, c] = OTHERS[axis];
