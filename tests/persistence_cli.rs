@@ -1,6 +1,7 @@
 //! `gmap persistence`: the command's JSON equals GUDHI's recorded diagram of a sample image,
-//! a valued `.facets` file is read, a composite field is refused, pictures are written as
-//! SVG and PNG.
+//! a valued `.facets` file is read, vertex values give the lower-star filtration, a
+//! composite field and the options of images on a complex are refused, pictures are
+//! written as SVG and PNG.
 
 use std::process::Command;
 
@@ -49,6 +50,48 @@ fn valued_facets_and_refusals() {
     let out = gmap(&["persistence", f.to_str().unwrap(), "--field", "4"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("Z/4"));
+}
+
+#[test]
+fn vertex_values_give_the_lower_star_filtration() {
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/persistence");
+    let (cone, values) = (data.join("square_cone.facets"), data.join("square_cone.values"));
+    let (cone, values) = (cone.to_str().unwrap(), values.to_str().unwrap());
+    let out = gmap(&["persistence", cone, "--vertex-values", values, "--json", "--field", "3"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let got: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(got["pairs"], serde_json::json!([[0, 0.0, 1.0], [0, 0.0, "inf"], [1, 1.0, 3.0]]));
+
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let refused = |args: &[&str], needle: &str| {
+        let out = gmap(args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.starts_with("error: ") && err.contains(needle), "{args:?}: {err}");
+    };
+    // the apex has no value: named with the file
+    let four = write("four.values", "1 0\n2 1\n3 0\n4 1\n");
+    refused(&["persistence", cone, "--vertex-values", &four], "square_cone.facets: bad input: vertex 5 has no value");
+    // a bad line of the values file: named with its line
+    let twice = write("twice.values", "1 0\n1 2\n");
+    refused(&["persistence", cone, "--vertex-values", &twice], "twice.values: line 2: vertex 1 has a value on line 1");
+    // values per facet and per vertex at once
+    let valued = write("valued.facets", "1 2 : 0\n2 3 : 1\n");
+    refused(&["persistence", &valued, "--vertex-values", values], "give one filtration");
+    // an image's values are its pixels
+    let img = data.join("../images/coins.pgm");
+    refused(&["persistence", img.to_str().unwrap(), "--vertex-values", values], "vertex values are for simplicial");
+    // the options of images are refused for a complex, not ignored
+    for flag in ["--superlevel", "--periodic"] {
+        refused(&["persistence", &valued, flag], "applies to images");
+        refused(&["persistence", cone, "--vertex-values", values, flag], "applies to images");
+    }
+    refused(&["persistence", &valued, "--construction", "V"], "the V-construction applies to images");
 }
 
 /// Decodes a PNG file: (width, height, RGB bytes).

@@ -93,7 +93,9 @@ pub use bench::{routes, RouteRun, Times};
 pub use error::{Error, ErrorKind, Result};
 pub use info::{info, Info, InfoOptions};
 pub use input::{open, open_with, Input, MapInput, OpenOptions, Sourced};
-pub use persistence::{persistence, persistence_file, Persistence, PersistenceOptions};
+pub use persistence::{
+    lower_star, lower_star_file, persistence, persistence_file, Persistence, PersistenceOptions, VertexValues,
+};
 pub use progress::Progress;
 pub use report::{homology, homology_file, ArchSpace, CellName, Chain, CubeGrid, NamedGenerator, Report};
 pub use rooms::{rooms_file, rooms_of, Rooms};

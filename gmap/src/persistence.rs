@@ -1,15 +1,19 @@
 //! Persistent homology through the facade: [`persistence`] on an opened [`Input`] (a G-map
 //! with a numeric label per cell, a cubical set as a 0/1 image) and [`persistence_file`],
 //! which also reads what only persistence uses: grey images (`.npy`, DIPHA's `.complex`,
-//! `.pgm`, `.png`) and `.facets` files with a value per facet. The engine is
-//! `gmap_homology::persistence`; this module picks the reader and the filtration.
+//! `.pgm`, `.png`) and `.facets` files with a value per facet. [`lower_star`] and
+//! [`lower_star_file`] filter a simplicial complex by [`VertexValues`] instead (its lower
+//! stars). The engine is `gmap_homology::persistence`; this module picks the reader and the
+//! filtration.
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use gmap_homology::persistence::{
     cubical_persistence, plot, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues,
 };
 use gmap_ops::import::image::{Image, Order};
+use gmap_ops::import::SimplicialComplex;
 
 use crate::input::extension;
 use crate::{Error, ErrorKind, Input, Result};
@@ -55,8 +59,16 @@ pub struct Persistence {
     pub vertex_centred: bool,
 }
 
+/// The engine's refusal as the facade's error: a value or option that makes no filtration
+/// is a usage error, a complex past the engine's sizes a limit.
 fn compute(e: gmap_homology::persistence::PersistenceError) -> Error {
-    Error::from_source(ErrorKind::Compute, &e)
+    use gmap_homology::persistence::PersistenceError as E;
+    let kind = match e {
+        E::TooLarge(_) => ErrorKind::Limit,
+        E::BadInput(_) | E::BadOption(_) => ErrorKind::Usage,
+        _ => ErrorKind::Compute,
+    };
+    Error::from_source(kind, &e)
 }
 
 /// The engine's options for an image (`gmap_homology::persistence::cubical_persistence`);
@@ -71,12 +83,33 @@ pub fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
     }
 }
 
+/// Refuses the options that only images take (superlevel, periodic, the V-construction)
+/// for a complex filtered by its own values, rather than ignore them.
+fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
+    let refused = if opts.superlevel {
+        Some("superlevel applies to images (for a complex, negate its values)")
+    } else if opts.periodic {
+        Some("periodic applies to images")
+    } else if opts.construction == Construction::V {
+        Some("the V-construction applies to images")
+    } else {
+        None
+    };
+    match refused {
+        Some(why) => Err(Error::new(ErrorKind::Unsupported, format!("persistence of {what}: {why}"))),
+        None => Ok(()),
+    }
+}
+
 /// The diagram of an opened input: a G-map by the label `opts.label` of its cells (a
 /// `.gmap` file), a cubical set as the image with 0 on its cubes and 1 elsewhere. A
-/// simplicial complex carries no values once opened: [`persistence_file`] reads them.
+/// simplicial complex carries no values once opened: [`persistence_file`] reads them, or
+/// [`lower_star`] takes them per vertex. A G-map refuses the options of images (superlevel,
+/// periodic, the V-construction).
 pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> {
     match input {
         Input::Map(m) => {
+            complex_options(opts, "a G-map").map_err(|e| e.with_path(m.path()))?;
             let g = m.labelled().ok_or_else(|| {
                 Error::new(ErrorKind::Unsupported, "a map carries values only as labels in a .gmap file")
                     .with_path(m.path())
@@ -103,7 +136,7 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
         }
         Input::Simplicial(s) => Err(Error::new(
             ErrorKind::Unsupported,
-            "a simplicial complex needs values: a .facets file with `: VALUE` after each facet",
+            "a simplicial complex needs values: a .facets file with `: VALUE` after each facet, or a value per vertex (lower_star)",
         )
         .with_path(s.path())),
         Input::Arch(a) => {
@@ -116,6 +149,20 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
 /// `.png`), `.facets` with values, anything else through [`crate::open`] and
 /// [`persistence`].
 pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
+    read_and_compute(path, opts).map_err(|e| naming(e, path))
+}
+
+/// An error that names `path` in its text (once) and carries it.
+fn naming(e: Error, path: &Path) -> Error {
+    let shown = path.display().to_string();
+    if e.to_string().contains(&shown) {
+        e.with_path(path)
+    } else {
+        e.context(shown).with_path(path)
+    }
+}
+
+fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
     let ext = extension(path);
     let image = match ext.as_str() {
         "npy" | "complex" => Some(Image::read(path)),
@@ -138,16 +185,140 @@ pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persis
         let (sc, values) = gmap_ops::import::simplicial::read_valued_facets(path)
             .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
         let values = values.ok_or_else(|| {
-            Error::new(ErrorKind::Unsupported, "no values: write `: VALUE` after each facet").with_path(path)
+            Error::new(
+                ErrorKind::Unsupported,
+                "no values: write `: VALUE` after each facet, or give a value per vertex (--vertex-values)",
+            )
+            .with_path(path)
         })?;
-        let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
-        let f = FilteredComplex::from_simplices(&facets, SimplexValues::PerSimplex(&values))
-            .map_err(|e| compute(e).with_path(path))?;
-        let diagram = f.diagram(opts.field, opts.cycles).map_err(compute)?;
+        let diagram = facet_persistence(&sc, &values, opts).map_err(|e| e.with_path(path))?;
         return Ok(Persistence { diagram, image: None, vertex_centred: false });
     }
     let input = crate::open(path)?;
     Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false })
+}
+
+/// The diagram of a simplicial complex with `values[i]` on its i-th facet, in the order of
+/// [`SimplicialComplex::facets`]; a face takes the minimum of its facets' values (GUDHI's
+/// `SimplexTree`). Refuses a count of values other than the facets' and the options of
+/// images.
+pub fn facet_persistence(sc: &SimplicialComplex, values: &[f64], opts: &PersistenceOptions) -> Result<Diagram> {
+    complex_options(opts, "a simplicial complex")?;
+    let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
+    if values.len() != facets.len() {
+        return Err(Error::new(
+            ErrorKind::Usage,
+            format!("{} values for {} facets: give one value per facet", values.len(), facets.len()),
+        ));
+    }
+    let f = FilteredComplex::from_simplices(&facets, SimplexValues::PerSimplex(values)).map_err(compute)?;
+    f.diagram(opts.field, opts.cycles).map_err(compute)
+}
+
+/// Values on the vertices of a simplicial complex, by label: the lower-star filtration
+/// (a simplex takes the largest value of its vertices, GUDHI's lower-star convention).
+/// Labels that no vertex of the complex has are ignored; every vertex of the complex
+/// needs a value.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct VertexValues {
+    by_label: HashMap<u64, f64>,
+}
+
+impl VertexValues {
+    /// Values from `(label, value)` pairs; refuses a NaN and a label given twice.
+    pub fn from_pairs<I: IntoIterator<Item = (u64, f64)>>(pairs: I) -> Result<Self> {
+        let mut by_label = HashMap::new();
+        for (label, value) in pairs {
+            if value.is_nan() {
+                return Err(Error::new(ErrorKind::Parse, format!("vertex {label} has the value NaN")));
+            }
+            if by_label.insert(label, value).is_some() {
+                return Err(Error::new(ErrorKind::Parse, format!("vertex {label} has two values")));
+            }
+        }
+        Ok(VertexValues { by_label })
+    }
+
+    /// Reads a vertex-values file (docs/FORMATS.md: a label and a value per line).
+    pub fn read(path: &Path) -> Result<Self> {
+        let pairs = gmap_ops::import::read_vertex_values(path)
+            .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+        Self::from_pairs(pairs).map_err(|e| e.with_path(path))
+    }
+
+    /// The value of vertex `label`.
+    pub fn get(&self, label: u64) -> Option<f64> {
+        self.by_label.get(&label).copied()
+    }
+
+    /// The number of labels with a value.
+    pub fn len(&self) -> usize {
+        self.by_label.len()
+    }
+
+    /// Whether no label has a value.
+    pub fn is_empty(&self) -> bool {
+        self.by_label.is_empty()
+    }
+}
+
+/// The lower-star diagram of a simplicial complex: each simplex takes the largest value
+/// of its vertices. Refuses a vertex without a value (naming it) and the options of
+/// images.
+pub fn lower_star_complex(sc: &SimplicialComplex, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
+    complex_options(opts, "a simplicial complex")?;
+    let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
+    let value = |label: u64| values.get(label);
+    let f = FilteredComplex::from_simplices(&facets, SimplexValues::LowerStar(&value)).map_err(compute)?;
+    f.diagram(opts.field, opts.cycles).map_err(compute)
+}
+
+/// [`lower_star_complex`] of an opened input, which must be a simplicial complex (`.facets`,
+/// `.lex`); a G-map takes its vertex values as labels ([`persistence`]).
+pub fn lower_star(input: &Input, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
+    match input {
+        Input::Simplicial(s) => lower_star_complex(s, values, opts).map_err(|e| e.with_path(s.path())),
+        Input::Map(m) => Err(Error::new(
+            ErrorKind::Unsupported,
+            "vertex values are for simplicial complexes: a G-map carries them as a numeric label on its vertices (--label)",
+        )
+        .with_path(m.path())),
+        other => Err(Error::new(
+            ErrorKind::Unsupported,
+            format!("vertex values are for simplicial complexes, not a {}", other.kind()),
+        )
+        .with_path(other.path())),
+    }
+}
+
+/// Reads the simplicial complex at `path` (`.facets` without values, `.lex`) and computes
+/// its lower-star diagram ([`lower_star`]). A `.facets` file with values per facet is
+/// refused: one filtration at a time.
+pub fn lower_star_file(path: &Path, values: &VertexValues, opts: &PersistenceOptions) -> Result<Persistence> {
+    let ext = extension(path);
+    let diagram = if matches!(ext.as_str(), "npy" | "complex" | "pgm" | "png") {
+        return Err(naming(
+            Error::new(
+                ErrorKind::Unsupported,
+                "vertex values are for simplicial complexes: an image's values are its pixels (--construction V puts them on vertices)",
+            ),
+            path,
+        ));
+    } else if ext == "facets" {
+        let (sc, facet_values) = gmap_ops::import::simplicial::read_valued_facets(path)
+            .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+        if facet_values.is_some() {
+            let e = Error::new(
+                ErrorKind::Unsupported,
+                "the facets have values (`: VALUE`) and the vertices too: give one filtration",
+            );
+            return Err(naming(e, path));
+        }
+        lower_star_complex(&sc, values, opts).map_err(|e| naming(e, path))?
+    } else {
+        lower_star(&crate::open(path)?, values, opts).map_err(|e| naming(e, path))?
+    };
+    Ok(Persistence { diagram, image: None, vertex_centred: false })
 }
 
 /// A picture format, by the output's extension.

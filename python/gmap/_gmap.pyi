@@ -1,7 +1,7 @@
 """Type stubs of the compiled module gmap._gmap (re-exported by gmap)."""
 
 import os
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -212,7 +212,7 @@ def homology(
 Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
 
 def persistence(
-    x: Union[PathLike, GMap, CubicalSet, npt.NDArray[Any]],
+    x: Union[PathLike, GMap, CubicalSet, SimplicialComplex, npt.NDArray[Any]],
     *,
     field: int = 2,
     construction: str = "T",
@@ -220,10 +220,14 @@ def persistence(
     periodic: bool = False,
     cycles: bool = False,
     label: str = "value",
+    vertex_values: Union[None, Mapping[int, float], Sequence[float], npt.NDArray[Any]] = None,
+    facet_values: Optional[Sequence[float]] = None,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], List[Cycle]]]:
     """The persistence diagram of `x` over Z/field: a (k, 3) float64 array of (dimension,
     birth, death), inf for essential classes; with cycles=True also a representative cycle
-    per pair, (cells, coefficients) in the input's terms."""
+    per pair, (cells, coefficients) in the input's terms. A simplicial complex takes
+    vertex_values (the lower-star filtration: {label: value} or a sequence indexed by label)
+    or facet_values (one per facet, in the order of its facets; a face takes the minimum)."""
 
 def open(path: PathLike) -> Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]:
     """What the file holds."""

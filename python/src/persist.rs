@@ -105,8 +105,66 @@ fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Boun
     PyTuple::new(py, [cells, coefficients])
 }
 
+/// Vertex values from Python: a mapping {label: value}, or a sequence or 1-D array whose
+/// entry i is the value of the vertex labelled i.
+fn vertex_values(v: &Bound<'_, PyAny>) -> PyResult<gmap::VertexValues> {
+    let pairs: Vec<(u64, f64)> = if v.hasattr("items")? {
+        let mut pairs = Vec::new();
+        for item in v.call_method0("items")?.try_iter()? {
+            let (label, value): (u64, f64) = item?.extract().map_err(|_| {
+                Failure::input("vertex_values: a mapping from non-negative integer labels to numbers")
+            })?;
+            pairs.push((label, value));
+        }
+        pairs
+    } else {
+        let values: Vec<f64> = v.extract().map_err(|_| {
+            Failure::input("vertex_values: a mapping {label: value} or a sequence of numbers indexed by label")
+        })?;
+        values.into_iter().enumerate().map(|(i, x)| (i as u64, x)).collect()
+    };
+    Ok(gmap::VertexValues::from_pairs(pairs).map_err(Failure::from)?)
+}
+
+/// The diagram of a simplicial complex (a path or a SimplicialComplex) by values given
+/// from Python: per vertex (lower star) or per facet.
+fn given_values_diagram(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    vertex: Option<&Bound<'_, PyAny>>,
+    facet: Option<&Bound<'_, PyAny>>,
+    o: &PersistenceOptions,
+) -> PyResult<Diagram> {
+    let is_path = x.is_instance_of::<PyString>() || x.hasattr("__fspath__")?;
+    match (vertex, facet) {
+        (Some(_), Some(_)) => Err(Failure::input("give vertex_values or facet_values, not both").into()),
+        (Some(v), None) => {
+            let values = vertex_values(v)?;
+            if is_path {
+                let path: PathBuf = x.extract()?;
+                Ok(py.allow_threads(|| gmap::lower_star_file(&path, &values, o)).map_err(Failure::from)?.diagram)
+            } else if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+                let input = &s.get().input;
+                Ok(py.allow_threads(|| gmap::lower_star(input, &values, o)).map_err(Failure::from)?)
+            } else {
+                Err(Failure::input("vertex_values are for a SimplicialComplex or the path of one").into())
+            }
+        }
+        (None, Some(f)) => {
+            let s = x.downcast::<PySimplicialComplex>().map_err(|_| {
+                Failure::input("facet_values are for a SimplicialComplex (a .facets file carries them as `: VALUE`)")
+            })?;
+            let values: Vec<f64> =
+                f.extract().map_err(|_| Failure::input("facet_values: a sequence of numbers, one per facet"))?;
+            let sc = s.get().sc();
+            Ok(py.allow_threads(|| gmap::persistence::facet_persistence(sc, &values, o)).map_err(Failure::from)?)
+        }
+        (None, None) => unreachable!("called with values"),
+    }
+}
+
 /// persistence(x, *, field=2, construction="T", superlevel=False, periodic=False,
-/// cycles=False, label="value")
+/// cycles=False, label="value", vertex_values=None, facet_values=None)
 ///
 /// The persistence diagram of `x` over Z/field as a (k, 3) float64 numpy array of
 /// (dimension, birth, death), sorted by dimension, birth, death; `inf` is the death of an
@@ -119,6 +177,13 @@ fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Boun
 /// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default),
 /// `superlevel` filters from the top down and `periodic` identifies opposite faces.
 ///
+/// A SimplicialComplex, or the path of one (`.facets` without values, `.lex`), takes
+/// `vertex_values`: a mapping {label: value} or a sequence indexed by label; each simplex
+/// takes the largest value of its vertices (the lower-star filtration; every vertex needs
+/// a value, other labels are ignored). A SimplicialComplex takes `facet_values` instead:
+/// one value per facet in the order of its `facets`, a face taking the minimum of its
+/// facets' values (GUDHI's SimplexTree convention).
+///
 /// With cycles=True the result is `(pairs, cycles)`: `cycles[i]` represents `pairs[i]` as
 /// `(cells, coefficients)` in the input's terms: for arrays and images an int64 array
 /// (m, d) of cells on the doubled grid in numpy's axis order (pixel (i, j) is the cell
@@ -126,7 +191,7 @@ fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Boun
 /// `.facets` a list of vertex-label tuples, for maps an int64 array of cells (the smallest
 /// dart of each); coefficients in 1..field as int64.
 #[pyfunction]
-#[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value"))]
+#[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value", vertex_values = None, facet_values = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn persistence<'py>(
     py: Python<'py>,
@@ -137,6 +202,8 @@ pub fn persistence<'py>(
     periodic: bool,
     cycles: bool,
     label: &str,
+    vertex_values: Option<&Bound<'py, PyAny>>,
+    facet_values: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let construction: Construction = construction
         .parse()
@@ -144,7 +211,9 @@ pub fn persistence<'py>(
     let mut o = PersistenceOptions::default();
     (o.field, o.construction, o.superlevel, o.periodic, o.cycles) = (field, construction, superlevel, periodic, cycles);
     o.label = label.to_string();
-    let diagram = if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
+    let diagram = if vertex_values.is_some() || facet_values.is_some() {
+        given_values_diagram(py, x, vertex_values, facet_values, &o)?
+    } else if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
         let path: PathBuf = x.extract()?;
         py.allow_threads(|| gmap::persistence_file(&path, &o)).map_err(Failure::from)?.diagram
     } else if let Ok(m) = x.downcast::<PyGMap>() {

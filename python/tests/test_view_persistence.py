@@ -159,8 +159,9 @@ def gudhi_pairs(top, field, vertices=False):
         cc = gudhi.CubicalComplex(vertices=top)
     else:
         cc = gudhi.CubicalComplex(top_dimensional_cells=top)
-    cc.compute_persistence(homology_coeff_field=field, min_persistence=0)
-    return Counter((d, float(b), float(e)) for d, (b, e) in cc.persistence() if b != e)
+    # persistence() computes again with its own defaults (Z/11): pass the field
+    pairs = cc.persistence(homology_coeff_field=field, min_persistence=0)
+    return Counter((d, float(b), float(e)) for d, (b, e) in pairs if b != e)
 
 
 def ours(x, **kw):
@@ -259,3 +260,82 @@ def test_persistence_of_a_cubical_set_and_a_valued_map():
     # four vertices at 0 joined by the edges at 1 (three die), the loop closed at 1 and
     # filled by the face at 2
     assert Counter(map(tuple, p.tolist())) == Counter({(0.0, 0.0, float("inf")): 1, (0.0, 0.0, 1.0): 3, (1.0, 1.0, 2.0): 1})
+
+
+def gudhi_simplex_tree(facets, field, facet_values=None, vertex_values=None):
+    """GUDHI's diagram of a simplicial complex: facet values (a face takes the minimum of its
+    cofacets', SimplexTree.insert's rule) or vertex values (each simplex the maximum of its
+    vertices', the lower star)."""
+    gudhi = pytest.importorskip("gudhi")
+    st = gudhi.SimplexTree()
+    for i, f in enumerate(facets):
+        st.insert(list(f), 0.0 if facet_values is None else float(facet_values[i]))
+    if vertex_values is not None:
+        for s, _ in list(st.get_simplices()):
+            st.assign_filtration(s, max(float(vertex_values[v]) for v in s))
+        st.make_filtration_non_decreasing()
+    # persistence() computes again with its own defaults (Z/11, no top dimension): pass them
+    pairs = st.persistence(homology_coeff_field=field, min_persistence=0, persistence_dim_max=True)
+    return Counter((d, float(b), float(e)) for d, (b, e) in pairs if b != e)
+
+
+def random_facets(rng, vertices, count, size):
+    return [sorted(rng.choice(vertices, size=size, replace=False).tolist()) for _ in range(count)]
+
+
+@pytest.mark.parametrize("field", [2, 3])
+@pytest.mark.parametrize("name", ["rp2.facets", "lutz/dunce_hat.facets", "lutz/CP2.facets", "lutz/poincare.facets"])
+def test_lower_star_equals_gudhi_on_lutz_files(name, field):
+    path = DATA / name
+    sc = gmap.open(path)
+    labels = sorted({v for f in sc.facets for v in f})
+    rng = np.random.default_rng(len(labels) * 7 + field)
+    for values in [rng.integers(0, 4, size=len(labels)), rng.random(len(labels))]:
+        by_label = {v: float(x) for v, x in zip(labels, values)}
+        want = gudhi_simplex_tree(sc.facets, field, vertex_values=by_label)
+        assert ours(sc, field=field, vertex_values=by_label) == want
+        # the path, and a sequence indexed by label, give the same diagram
+        seq = [by_label.get(i, 0.0) for i in range(max(labels) + 1)]
+        assert ours(path, field=field, vertex_values=seq) == want
+
+
+@pytest.mark.parametrize("field", [2, 3])
+def test_lower_star_and_facet_values_equal_gudhi_on_random_complexes(field):
+    rng = np.random.default_rng(40 + field)
+    for trial in range(12):
+        facets = random_facets(rng, 9, int(rng.integers(3, 15)), int(rng.integers(2, 5)))
+        # a complex is a set of facets: drop repeats and faces of other facets
+        facets = [f for f in {tuple(f) for f in facets}]
+        facets = [list(f) for f in facets if not any(set(f) < set(g) for g in facets)]
+        sc = gmap.SimplicialComplex(facets)
+        vertex_values = rng.integers(0, 5, size=9).astype(float)
+        want = gudhi_simplex_tree(sc.facets, field, vertex_values=vertex_values)
+        assert ours(sc, field=field, vertex_values=vertex_values) == want, facets
+        facet_values = rng.integers(0, 5, size=len(sc.facets)).astype(float)
+        want = gudhi_simplex_tree(sc.facets, field, facet_values=facet_values)
+        assert ours(sc, field=field, facet_values=facet_values) == want, facets
+
+
+def test_lower_star_cycles_and_refusals(tmp_path):
+    cone = gmap.SimplicialComplex([[1, 2, 5], [2, 3, 5], [3, 4, 5], [1, 4, 5]])
+    values = {1: 0, 2: 1, 3: 0, 4: 1, 5: 3}
+    pairs, cycles = gmap.persistence(cone, vertex_values=values, cycles=True)
+    assert pairs.tolist() == [[0, 0, 1], [0, 0, float("inf")], [1, 1, 3]]
+    # the square's loop, on its four edges
+    assert sorted(cycles[2][0]) == [(1, 2), (1, 4), (2, 3), (3, 4)]
+    with pytest.raises(gmap.InputError, match="vertex 5 has no value"):
+        gmap.persistence(cone, vertex_values={1: 0, 2: 1, 3: 0, 4: 1})
+    with pytest.raises(gmap.GmapError, match="not both"):
+        gmap.persistence(cone, vertex_values=values, facet_values=[0, 0, 0, 0])
+    with pytest.raises(gmap.GmapError, match="3 values for 4 facets"):
+        gmap.persistence(cone, facet_values=[0, 0, 0])
+    with pytest.raises(gmap.GmapError, match="NaN"):
+        gmap.persistence(cone, vertex_values={1: float("nan")})
+    with pytest.raises(gmap.GmapError, match="SimplicialComplex"):
+        gmap.persistence(np.zeros((3, 3)), vertex_values=[0.0])
+    with pytest.raises(gmap.GmapError, match="applies to images"):
+        gmap.persistence(cone, vertex_values=values, superlevel=True)
+    p = tmp_path / "v.facets"
+    p.write_text("1 2 : 0\n2 3 : 1\n")
+    with pytest.raises(gmap.GmapError, match="give one filtration"):
+        gmap.persistence(p, vertex_values={1: 0, 2: 0, 3: 0})

@@ -18,7 +18,8 @@ pub(crate) enum Construction {
 #[derive(Args, Debug)]
 pub(crate) struct PersistenceArgs {
     /// the input: an image (.npy, .complex, .pgm, .png), a .facets file with `: VALUE` per
-    /// facet, a .gmap with a numeric label per cell, a cubical set (.cub, .pbm)
+    /// facet (or any simplicial complex with --vertex-values), a .gmap with a numeric label
+    /// per cell, a cubical set (.cub, .pbm)
     file: PathBuf,
     /// coefficients Z/P, P a prime below 2^31
     #[arg(long, default_value_t = 2)]
@@ -38,6 +39,10 @@ pub(crate) struct PersistenceArgs {
     /// for a .gmap: the label giving each cell its value
     #[arg(long, default_value = "value")]
     label: String,
+    /// for a simplicial complex (.facets without values, .lex): a file with a vertex label
+    /// and its value per line; each simplex takes its vertices' largest value (lower star)
+    #[arg(long, value_name = "FILE")]
+    vertex_values: Option<PathBuf>,
     /// print one JSON object: {"field", "pairs": [[dim, birth, death], …], "cycles"}
     #[arg(long)]
     json: bool,
@@ -65,7 +70,10 @@ pub(crate) fn persistence(a: PersistenceArgs) -> gmap::Result<String> {
         cycles: a.cycles,
         label: a.label,
     };
-    let p = gmap::persistence_file(&a.file, &opts)?;
+    let p = match &a.vertex_values {
+        Some(v) => gmap::lower_star_file(&a.file, &gmap::VertexValues::read(v)?, &opts)?,
+        None => gmap::persistence_file(&a.file, &opts)?,
+    };
     if let Some(out) = &a.plot {
         gmap::persistence::plot_file(&p, out, false)?;
     }

@@ -24,7 +24,10 @@ pub use image::{Image, Level};
 pub use msh::{parse_msh, read_msh, MshFile};
 pub use off::{read_off, read_off_with, PolygonMesh};
 pub use poset::{FacePoset, PosetError};
-pub use simplicial::{read_facets, read_facets_complex, read_lex, read_lex_complex, SimplicialComplex};
+pub use simplicial::{
+    parse_vertex_values, read_facets, read_facets_complex, read_lex, read_lex_complex, read_vertex_values,
+    SimplicialComplex,
+};
 pub use vtk::{parse_vtk, read_vtk};
 pub use vtu::{parse_vtu, read_vtu};
 

@@ -937,9 +937,73 @@ pub fn read_lex(path: &Path, name: Option<&str>, max_darts: Option<u64>) -> Resu
     sc.to_gmap_within(max_darts).map_err(|e| FileError::new(path, e))
 }
 
+/// Parses a vertex-values file (docs/FORMATS.md, "Vertex values"): one vertex per line,
+/// its label and its value separated by white space, a comma or a colon (`3 0.5`,
+/// `3: 0.5`), `#` starts a comment, blank lines skipped. The pairs in file order. Refuses,
+/// naming the line, a line without exactly a label and a value, a label that is not a
+/// non-negative integer, a value that is not a number (or is NaN), and a label given twice
+/// (naming both lines). O(size of the text).
+pub fn parse_vertex_values(text: &str) -> Result<Vec<(u64, f64)>, ImportError> {
+    let mut out = Vec::new();
+    let mut seen: rustc_hash::FxHashMap<u64, usize> = rustc_hash::FxHashMap::default();
+    for (i, raw) in text.split('\n').enumerate() {
+        let line = i + 1;
+        let body = raw.split('#').next().unwrap_or("");
+        let tokens: Vec<&str> =
+            body.split(|c: char| c.is_whitespace() || c == ',' || c == ':').filter(|t| !t.is_empty()).collect();
+        match tokens[..] {
+            [] => continue,
+            [label, value] => {
+                let label: u64 = label.parse().map_err(|_| ImportError::Syntax {
+                    line,
+                    message: format!("the vertex label {label:?} is not a non-negative integer"),
+                })?;
+                let value: f64 = value.parse().ok().filter(|v: &f64| !v.is_nan()).ok_or_else(|| {
+                    ImportError::Syntax { line, message: format!("the value {value:?} is not a number") }
+                })?;
+                if let Some(first) = seen.insert(label, line) {
+                    return Err(ImportError::Syntax {
+                        line,
+                        message: format!("vertex {label} has a value on line {first} already"),
+                    });
+                }
+                out.push((label, value));
+            }
+            _ => {
+                return Err(ImportError::Syntax {
+                    line,
+                    message: format!("expected a vertex label and a value, found {} tokens", tokens.len()),
+                })
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Reads a vertex-values file ([`parse_vertex_values`]).
+pub fn read_vertex_values(path: &Path) -> Result<Vec<(u64, f64)>, FileError> {
+    let text = super::common::read_text(path)?;
+    parse_vertex_values(&text).map_err(|e| FileError::new(path, e))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn vertex_values_keep_order_and_refuse_bad_lines() {
+        let v = parse_vertex_values("# heights\n3 0.5\n1: -2 # low\n\n2,1e3\n").unwrap();
+        assert_eq!(v, vec![(3, 0.5), (1, -2.0), (2, 1000.0)]);
+        assert_eq!(parse_vertex_values("").unwrap(), vec![]);
+        let e = |t: &str| parse_vertex_values(t).unwrap_err().to_string();
+        assert_eq!(e("1 0\n2 1\n1 3\n"), "line 3: vertex 1 has a value on line 1 already");
+        assert_eq!(e("1 0\n-2 1\n"), "line 2: the vertex label \"-2\" is not a non-negative integer");
+        assert_eq!(e("1 NaN\n"), "line 1: the value \"NaN\" is not a number");
+        assert_eq!(e("1 x\n"), "line 1: the value \"x\" is not a number");
+        assert_eq!(e("1\n"), "line 1: expected a vertex label and a value, found 1 tokens");
+        assert_eq!(e("1 2 3\n"), "line 1: expected a vertex label and a value, found 3 tokens");
+        assert_eq!(parse_vertex_values("5 inf\n").unwrap(), vec![(5, f64::INFINITY)]);
+    }
 
     #[test]
     fn valued_facets_keep_lines_and_refuse_gaps() {
