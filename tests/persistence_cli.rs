@@ -94,6 +94,27 @@ fn vertex_values_give_the_lower_star_filtration() {
     refused(&["persistence", &valued, "--construction", "V"], "the V-construction applies to images");
 }
 
+#[test]
+fn an_architectural_complex_filtered_by_its_labels() {
+    // a floor (region 0, at 2.5) around a court: the outer square's corners at 0, the
+    // court's at 1; the chain complex `gmap homology` computes (the court's edges bound
+    // the floor together with the outer ones, and nothing joins the two squares)
+    let court = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/persistence/court_valued.json");
+    let out = gmap(&["persistence", court.to_str().unwrap(), "--cycles"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let pairs: Vec<&str> = text.lines().filter(|l| !l.starts_with(' ')).collect();
+    assert_eq!(pairs, ["0 0 inf", "0 1 inf", "1 0 inf", "1 1 2.5"]);
+    // the outer square's loop, by region id
+    assert!(text.contains("1 0 inf\n  cycle: 1*1-region 5 + 1*1-region 6 + 1*1-region 7 + 1*1-region 8\n"), "{text}");
+    let out = gmap(&["persistence", court.to_str().unwrap(), "--label", "name"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("0-region 1 has no value"));
+    let out = gmap(&["persistence", court.to_str().unwrap(), "--superlevel"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("an architectural complex: superlevel applies to images"));
+}
+
 /// Decodes a PNG file: (width, height, RGB bytes).
 fn decode_png(path: &std::path::Path) -> (u32, u32, Vec<u8>) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));

@@ -102,10 +102,12 @@ fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
 }
 
 /// The diagram of an opened input: a G-map by the label `opts.label` of its cells (a
-/// `.gmap` file), a cubical set as the image with 0 on its cubes and 1 elsewhere. A
+/// `.gmap` file), an architectural complex (`.json`) by the label `opts.label` of its
+/// regions (the chain complex `gmap homology` computes for it), a cubical set as the image
+/// with 0 on its cubes and 1 elsewhere. A
 /// simplicial complex carries no values once opened: [`persistence_file`] reads them, or
-/// [`lower_star`] takes them per vertex. A G-map refuses the options of images (superlevel,
-/// periodic, the V-construction).
+/// [`lower_star`] takes them per vertex. A G-map or an architectural complex refuses the
+/// options of images (superlevel, periodic, the V-construction).
 pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> {
     match input {
         Input::Map(m) => {
@@ -140,7 +142,9 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
         )
         .with_path(s.path())),
         Input::Arch(a) => {
-            Err(Error::new(ErrorKind::Unsupported, "persistence of an architectural complex").with_path(a.path()))
+            complex_options(opts, "an architectural complex").map_err(|e| e.with_path(a.path()))?;
+            let f = FilteredComplex::from_arch(a, &opts.label).map_err(|e| compute(e).with_path(a.path()))?;
+            f.diagram(opts.field, opts.cycles).map_err(compute)
         }
     }
 }

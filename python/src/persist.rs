@@ -67,7 +67,8 @@ fn pairs_array<'py>(py: Python<'py>, d: &Diagram) -> PyResult<Bound<'py, PyAny>>
 
 /// One cycle as (cells, coefficients): cells an int64 array (m, d) of doubled-grid
 /// coordinates for images, a list of vertex-label tuples for simplices, an int64 array of
-/// cell numbers (a G-map's: the cell's smallest dart) for cell complexes.
+/// cell numbers (the cell's smallest dart) for G-maps, a list of region ids for
+/// architectural complexes.
 fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Bound<'py, PyTuple>> {
     let coefficients: Vec<i64> = chain.iter().map(|(_, k)| i64::from(*k)).collect();
     let coefficients = coefficients.to_pyarray(py).into_any();
@@ -90,6 +91,16 @@ fn cycle_to_py<'py>(py: Python<'py>, chain: &[(CellName, u32)]) -> PyResult<Boun
                 }
             }
             l.into_any()
+        }
+        Some(CellName::Region { .. }) => {
+            let ids: Vec<u64> = chain
+                .iter()
+                .filter_map(|(c, _)| match c {
+                    CellName::Region { id, .. } => Some(*id),
+                    _ => None,
+                })
+                .collect();
+            PyList::new(py, ids)?.into_any()
         }
         _ => {
             let ids: Vec<i64> = chain
@@ -170,10 +181,12 @@ fn given_values_diagram(
 /// (dimension, birth, death), sorted by dimension, birth, death; `inf` is the death of an
 /// essential class (`-inf` with superlevel=True). `x` is a path (str or os.PathLike: a
 /// grey image `.npy`, `.pgm`, `.png`, DIPHA `.complex`, a `.facets` file with a value per
-/// facet, a `.gmap` with a numeric label per cell), a numpy grey array of 1 to 8 axes
-/// (numbers or booleans), a GMap whose cells carry the numeric label `label` (an i-cell's
-/// value raised to the maximum of its faces'), or a CubicalSet (0 on its cubes, 1
-/// elsewhere). For images, `construction` is "T" (values on top cells, GUDHI's
+/// facet, a `.gmap` with a numeric label per cell, an architectural complex `.json` with a
+/// numeric label per region), a numpy grey array of 1 to 8 axes (numbers or booleans), a
+/// GMap whose cells carry the numeric label `label` (an i-cell's value raised to the
+/// maximum of its faces'), an ArchComplex whose regions carry it (alike, on the chain
+/// complex `homology` computes for it), or a CubicalSet (0 on its cubes, 1 elsewhere).
+/// A complex refuses superlevel, periodic and construction "V". For images, `construction` is "T" (values on top cells, GUDHI's
 /// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default),
 /// `superlevel` filters from the top down and `periodic` identifies opposite faces.
 ///
@@ -189,7 +202,8 @@ fn given_values_diagram(
 /// (m, d) of cells on the doubled grid in numpy's axis order (pixel (i, j) is the cell
 /// (2i+1, 2j+1) in the T-construction, the vertex (2i, 2j) in the V-construction), for
 /// `.facets` a list of vertex-label tuples, for maps an int64 array of cells (the smallest
-/// dart of each); coefficients in 1..field as int64.
+/// dart of each), for architectural complexes a list of region ids; coefficients in
+/// 1..field as int64.
 #[pyfunction]
 #[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value", vertex_values = None, facet_values = None))]
 #[allow(clippy::too_many_arguments)]

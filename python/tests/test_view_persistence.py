@@ -339,3 +339,18 @@ def test_lower_star_cycles_and_refusals(tmp_path):
     p.write_text("1 2 : 0\n2 3 : 1\n")
     with pytest.raises(gmap.GmapError, match="give one filtration"):
         gmap.persistence(p, vertex_values={1: 0, 2: 0, 3: 0})
+
+
+def test_persistence_of_an_architectural_complex_by_its_labels():
+    path = DATA / "persistence" / "court_valued.json"
+    x = gmap.open(path)
+    pairs, cycles = gmap.persistence(x, cycles=True)
+    inf = float("inf")
+    assert pairs.tolist() == [[0, 0, inf], [0, 1, inf], [1, 0, inf], [1, 1, 2.5]]
+    # cycles name regions by id: the outer square's four edges
+    assert sorted(cycles[2][0]) == [5, 6, 7, 8]
+    assert np.array_equal(gmap.persistence(path), pairs)
+    with pytest.raises(gmap.GmapError, match="0-region 1 has no value"):
+        gmap.persistence(x, label="name")
+    with pytest.raises(gmap.GmapError, match="applies to images"):
+        gmap.persistence(x, superlevel=True)

@@ -93,19 +93,9 @@ pub(crate) fn persistence(a: PersistenceArgs) -> gmap::Result<String> {
     for (i, pair) in p.diagram.pairs.iter().enumerate() {
         out.push_str(&format!("{} {} {}\n", pair.dim, pair.birth, pair.death));
         if let Some(c) = p.diagram.cycles.get(i) {
-            let cells: Vec<String> = c.iter().map(|(n, x)| format!("{x}*{}", serde_name(n))).collect();
+            let cells: Vec<String> = c.iter().map(|(n, x)| format!("{x}*{n}")).collect();
             out.push_str(&format!("  cycle: {}\n", cells.join(" + ")));
         }
     }
     Ok(out)
-}
-
-fn serde_name(n: &gmap::homology::persistence::CellName) -> String {
-    use gmap::homology::persistence::CellName;
-    match n {
-        CellName::Grid(x) => format!("{x:?}"),
-        CellName::Simplex(x) => format!("{x:?}"),
-        CellName::Cell { dim, index } => format!("{dim}-cell of dart {index}"),
-        other => format!("{other:?}"),
-    }
 }

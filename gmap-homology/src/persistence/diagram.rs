@@ -37,6 +37,27 @@ pub enum CellName {
         /// the cell's number (a G-map's: its smallest dart)
         index: usize,
     },
+    /// a region of an architectural complex by dimension and id
+    Region {
+        /// dimension
+        dim: usize,
+        /// the region's id in its file
+        id: u64,
+    },
+}
+
+/// How messages and the command line name a cell: a grid cell by its coordinates
+/// (`[3, 4]`), a simplex by its vertex labels (`[1, 2]`), a map's cell by its
+/// smallest dart (`1-cell of dart 8`), a region by its id (`1-region 5`).
+impl std::fmt::Display for CellName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CellName::Grid(x) => write!(f, "{x:?}"),
+            CellName::Simplex(x) => write!(f, "{x:?}"),
+            CellName::Cell { dim, index } => write!(f, "{dim}-cell of dart {index}"),
+            CellName::Region { dim, id } => write!(f, "{dim}-region {id}"),
+        }
+    }
 }
 
 /// One point of a persistence diagram.
