@@ -115,6 +115,24 @@ fn an_architectural_complex_filtered_by_its_labels() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("an architectural complex: superlevel applies to images"));
 }
 
+#[test]
+fn an_image_past_the_memory_limit_is_refused_with_the_estimate() {
+    let coins = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/images/coins.pgm");
+    // 16 MiB for the program, then 51 × 64 pixels at 64 bytes each by the pixel route
+    let out = gmap(&["persistence", coins.to_str().unwrap(), "--max-memory", "16M"]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("coins.pgm: the persistence diagram of a 51×64 image would take an estimated 16986112 bytes, over the memory limit of 16777216 bytes (--max-memory)"),
+        "{err}"
+    );
+    // with cycles, the general route's grid: 103 × 129 cells at 256 bytes
+    let out = gmap(&["persistence", coins.to_str().unwrap(), "--cycles", "--max-memory", "17M"]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("estimated 20178688 bytes"));
+    let out = gmap(&["persistence", coins.to_str().unwrap(), "--max-memory", "17M"]);
+    assert!(out.status.success());
+}
+
 /// Decodes a PNG file: (width, height, RGB bytes).
 fn decode_png(path: &std::path::Path) -> (u32, u32, Vec<u8>) {
     let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));

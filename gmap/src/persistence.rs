@@ -71,6 +71,16 @@ fn compute(e: gmap_homology::persistence::PersistenceError) -> Error {
     Error::from_source(kind, &e)
 }
 
+/// Refuses, before any work, an image whose diagram would not fit the memory limit
+/// ([`gmap_homology::persistence::memory_estimate`], the limit of `--max-memory`).
+/// `shape` is in the engine's order (the values' fastest axis last).
+pub fn check_image_memory(shape: &[usize], opts: &PersistenceOptions) -> Result<()> {
+    let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+    let what = format!("the persistence diagram of a {} image", dims.join("×"));
+    let estimate = gmap_homology::persistence::memory_estimate(shape, &cubical_options(opts));
+    Ok(gmap_core::resources::check_memory(&what, estimate)?)
+}
+
 /// The engine's options for an image (`gmap_homology::persistence::cubical_persistence`);
 /// public for callers that hold the values themselves (the Python package's numpy arrays).
 pub fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
@@ -125,15 +135,17 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
             // the set's cubes, axis 0 fastest, as a C-order array of the reversed shape
             let mut shape = c.shape().to_vec();
             shape.reverse();
+            check_image_memory(&shape, opts).map_err(|e| e.with_path(c.path()))?;
             let values: Vec<f64> = c.bits().iter().map(|&b| if b != 0 { 0.0 } else { 1.0 }).collect();
             cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(compute)
         }
         Input::Image(img) => {
-            let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
             let mut shape = img.shape().to_vec();
             if img.order() == Order::Fortran {
                 shape.reverse();
             }
+            check_image_memory(&shape, opts).map_err(|e| e.with_path(img.path()))?;
+            let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
             cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(compute)
         }
         Input::Simplicial(s) => Err(Error::new(
@@ -175,11 +187,12 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
     };
     if let Some(img) = image {
         let img = img.map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
-        let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
         let mut shape = img.shape().to_vec();
         if img.order() == Order::Fortran {
             shape.reverse();
         }
+        check_image_memory(&shape, opts)?;
+        let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
         let diagram =
             cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(|e| compute(e).with_path(path))?;
         let image = (shape.len() == 2 && img.order() == Order::C).then(|| (shape[0], shape[1], values));

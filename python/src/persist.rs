@@ -32,10 +32,7 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
         .into());
     }
     let shape = arr.shape().to_vec();
-    // the grid's values (2^d per pixel, 8 bytes each) under the memory policy
-    let pixels = shape.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64));
-    let estimate = pixels.and_then(|p| p.checked_mul(8 << nd));
-    gmap_core::resources::check_memory("the cubical filtration of the array", estimate).map_err(Failure::from)?;
+    gmap::persistence::check_image_memory(&shape, o).map_err(Failure::from)?;
     let np = py.import("numpy")?;
     let values = np.call_method1("ascontiguousarray", (x, "float64"))?;
     let values = values.downcast::<numpy::PyArrayDyn<f64>>()?.readonly();

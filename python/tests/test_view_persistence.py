@@ -243,6 +243,11 @@ def test_persistence_errors():
         gmap.persistence(gmap.SimplicialComplex([[0, 1]]))
     with pytest.raises(gmap.GmapError):
         gmap.persistence(3)
+    # refused before any copy, with the estimate: 10^10 pixels (a view of one number), past
+    # the pixel route's u32 cell numbers, so 64 bytes per cell of the 200001² grid and 16 MiB
+    huge = np.broadcast_to(np.float64(0.0), (100_000, 100_000))
+    with pytest.raises(gmap.LimitError, match=r"100000×100000 image would take an estimated 2560042377280 bytes"):
+        gmap.persistence(huge)
 
 
 def test_persistence_of_a_cubical_set_and_a_valued_map():

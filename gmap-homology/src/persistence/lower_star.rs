@@ -74,6 +74,19 @@ use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
 use crate::prefetch::{filled, prefetch};
 
+/// Whether the pixel route takes an image of this shape with these options: no cycles, not
+/// periodic, 1 to 3 axes, and every edge and 2-cell of the padded grid numbered in a `u32`.
+pub(crate) fn applies(shape: &[usize], opts: &CubicalOptions) -> bool {
+    let d = shape.len();
+    if opts.periodic || opts.cycles || d == 0 || d > 3 {
+        return false;
+    }
+    // edges and 2-cells are named `3 · point + axis` (T: on a grid of (s + 2)^d points)
+    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 2));
+    // (and 4 + the largest edge is a u32: see `Middle`'s owners)
+    vertices.and_then(|v| v.checked_mul(3)).is_some_and(|m| m < u32::MAX as usize - 4)
+}
+
 /// The diagram by the pixel route, or `None` where it does not apply.
 pub(crate) fn diagram(
     shape: &[usize],
@@ -84,13 +97,7 @@ pub(crate) fn diagram(
 ) -> Option<Result<Diagram, PersistenceError>> {
     let d = shape.len();
     let n = pixels.len();
-    if opts.periodic || opts.cycles || d == 0 || d > 3 {
-        return None;
-    }
-    // edges and 2-cells are named `3 · point + axis` (T: on a grid of (s + 2)^d points)
-    let vertices = shape.iter().try_fold(1usize, |v, &s| v.checked_mul(s + 2));
-    // (and 4 + the largest edge is a u32: see `Middle`'s owners)
-    if vertices.and_then(|v| v.checked_mul(3)).is_none_or(|m| m >= u32::MAX as usize - 4) {
+    if !applies(shape, opts) {
         return None;
     }
     let field = match check_field(opts.field) {

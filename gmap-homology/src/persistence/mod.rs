@@ -31,6 +31,6 @@ mod options;
 pub mod plot;
 pub(crate) mod reduce;
 
-pub use cubical::{cubical_persistence, Construction, CubicalFiltration, CubicalOptions};
+pub use cubical::{cubical_persistence, memory_estimate, Construction, CubicalFiltration, CubicalOptions};
 pub use diagram::{CellName, Chain, Diagram, Pair, PersistenceError};
 pub use filtered::{FilteredComplex, SimplexValues};
