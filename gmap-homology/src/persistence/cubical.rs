@@ -246,7 +246,9 @@ impl CubicalFiltration {
         let field = check_field(opts.field)?;
         let d = self.grid.d();
         let mut diagram = Diagram::new(opts.field);
-        let full = opts.cycles || self.grid.periodic;
+        // with cycles every dimension is reduced as a matrix; without, dimension d-1 comes
+        // from a union-find on the dual (periodic or not)
+        let full = opts.cycles;
         // the (d-1)-cells that are born (positive): skipped as columns
         let mut skip: Vec<bool> = Vec::new();
         let mut top = d + 1; // the highest column dimension the reduction handles
@@ -318,10 +320,12 @@ impl CubicalFiltration {
             self.ensure(1.min(d), false);
             let positive = self.union_find_0(&mut diagram);
             if d >= 1 && self.grid.periodic {
-                // positive edges no 2-cell kills are essential 1-classes
+                // positive edges no 2-cell kills are essential 1-classes (in 2-D the dual
+                // union-find found the killed ones)
                 let claimed = claimed_below.unwrap_or_default();
+                let killed = |i: usize| claimed.get(i).copied().unwrap_or(false) || (d == 2 && skip[i]);
                 for (i, &(_, g)) in self.list(1).iter().enumerate() {
-                    if positive[i] && !claimed.get(i).copied().unwrap_or(false) {
+                    if positive[i] && !killed(i) {
                         diagram.push(1, self.vals()[g as usize], f64::INFINITY, self.sign, None);
                     }
                 }
@@ -362,8 +366,12 @@ impl CubicalFiltration {
         positive
     }
 
-    /// Dimension d-1 of a non-periodic image by union-find on the dual; returns which
-    /// (d-1)-cells are positive (join two dual components).
+    /// Dimension d-1 by union-find on the dual (the top cells joined across their shared
+    /// (d-1)-cells, latest first: the anti-transpose of `∂_d`, a graph's incidence matrix,
+    /// whose pairs union-find gives over any field); returns which (d-1)-cells are
+    /// positive (join two dual components). Outside a periodic box the outside is one
+    /// more node, later than every cell; a periodic box has none, and each dual component
+    /// left at the end is an essential d-class, born at its latest top cell.
     fn dual_union_find(&self, diagram: &mut Diagram) -> Vec<bool> {
         let grid = &self.grid;
         let d = grid.d();
@@ -386,6 +394,13 @@ impl CubicalFiltration {
             if let Some((_, young)) = uf.union(node(lo), node(hi)) {
                 positive[i] = true;
                 diagram.push(d - 1, unkey(ks), unkey(young.0), self.sign, None);
+            }
+        }
+        if grid.periodic {
+            for c in 0..outside {
+                if uf.find(c) == c {
+                    diagram.push(d, unkey(uf.nodes[c as usize].best.0), f64::INFINITY, self.sign, None);
+                }
             }
         }
         positive
