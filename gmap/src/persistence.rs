@@ -114,10 +114,10 @@ fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
 /// The diagram of an opened input: a G-map by the label `opts.label` of its cells (a
 /// `.gmap` file), an architectural complex (`.json`) by the label `opts.label` of its
 /// regions (the chain complex `gmap homology` computes for it), a cubical set as the image
-/// with 0 on its cubes and 1 elsewhere. A
-/// simplicial complex carries no values once opened: [`persistence_file`] reads them, or
-/// [`lower_star`] takes them per vertex. A G-map or an architectural complex refuses the
-/// options of images (superlevel, periodic, the V-construction).
+/// with 0 on its cubes and 1 elsewhere. A simplicial complex carries no values once
+/// opened: [`persistence_file`] reads them, or [`lower_star`] takes them per vertex. A
+/// G-map or an architectural complex refuses the options of images (superlevel, periodic,
+/// the V-construction).
 pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> {
     match input {
         Input::Map(m) => {
@@ -150,7 +150,7 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
         }
         Input::Simplicial(s) => Err(Error::new(
             ErrorKind::Unsupported,
-            "a simplicial complex needs values: a .facets file with `: VALUE` after each facet, or a value per vertex (lower_star)",
+            "a simplicial complex needs values: a .facets file with `: VALUE` after each facet, or a value per vertex (--vertex-values, vertex_values=)",
         )
         .with_path(s.path())),
         Input::Arch(a) => {
@@ -178,15 +178,20 @@ fn naming(e: Error, path: &Path) -> Error {
     }
 }
 
+/// The reader of the grey images `gmap persistence` takes, by extension (`None`: not one).
+type ImageReader = fn(&Path) -> std::result::Result<Image, gmap_ops::import::FileError>;
+fn image_reader(ext: &str) -> Option<ImageReader> {
+    match ext {
+        "npy" | "complex" => Some(Image::read),
+        "pgm" | "png" => Some(gmap_ops::import::raster::read_raster),
+        _ => None,
+    }
+}
+
 fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
     let ext = extension(path);
-    let image = match ext.as_str() {
-        "npy" | "complex" => Some(Image::read(path)),
-        "pgm" | "png" => Some(gmap_ops::import::raster::read_raster(path)),
-        _ => None,
-    };
-    if let Some(img) = image {
-        let img = img.map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+    if let Some(read) = image_reader(&ext) {
+        let img = read(path).map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
         let mut shape = img.shape().to_vec();
         if img.order() == Order::Fortran {
             shape.reverse();
@@ -313,15 +318,14 @@ pub fn lower_star(input: &Input, values: &VertexValues, opts: &PersistenceOption
 /// refused: one filtration at a time.
 pub fn lower_star_file(path: &Path, values: &VertexValues, opts: &PersistenceOptions) -> Result<Persistence> {
     let ext = extension(path);
-    let diagram = if matches!(ext.as_str(), "npy" | "complex" | "pgm" | "png") {
-        return Err(naming(
-            Error::new(
-                ErrorKind::Unsupported,
-                "vertex values are for simplicial complexes: an image's values are its pixels (--construction V puts them on vertices)",
-            ),
-            path,
-        ));
-    } else if ext == "facets" {
+    if image_reader(&ext).is_some() {
+        let e = Error::new(
+            ErrorKind::Unsupported,
+            "vertex values are for simplicial complexes: an image's values are its pixels (--construction V puts them on vertices)",
+        );
+        return Err(naming(e, path));
+    }
+    let diagram = if ext == "facets" {
         let (sc, facet_values) = gmap_ops::import::simplicial::read_valued_facets(path)
             .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
         if facet_values.is_some() {
