@@ -119,9 +119,9 @@ fn vertex_values(v: &Bound<'_, PyAny>) -> PyResult<gmap::VertexValues> {
     let pairs: Vec<(u64, f64)> = if v.hasattr("items")? {
         let mut pairs = Vec::new();
         for item in v.call_method0("items")?.try_iter()? {
-            let (label, value): (u64, f64) = item?.extract().map_err(|_| {
-                Failure::input("vertex_values: a mapping from non-negative integer labels to numbers")
-            })?;
+            let (label, value): (u64, f64) = item?
+                .extract()
+                .map_err(|_| Failure::input("vertex_values: a mapping from non-negative integer labels to numbers"))?;
             pairs.push((label, value));
         }
         pairs
