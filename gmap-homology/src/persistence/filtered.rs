@@ -12,8 +12,6 @@
 //! clearing. Cost: building the faces of a facet of dimension `n` is `2^(n+1)` subsets;
 //! the reduction is near linear on manifolds.
 
-use rustc_hash::FxHashMap;
-
 use gmap_core::labels::{to_dense_labels, LabelValue, LabelledGMap, Labels};
 
 use super::cubical::{check_field, key};
@@ -106,9 +104,15 @@ impl FilteredComplex {
     }
 
     /// The simplicial complex of `simplices` (vertex labels, any order, each listed simplex
-    /// with all its faces) with values as `values` says.
+    /// with all its faces) with values as `values` says. The cells of each dimension are
+    /// its faces in lexicographic order of their sorted labels.
+    ///
+    /// Dimension by dimension, every face of every simplex is written into one flat buffer,
+    /// sorted and merged (no map keyed by faces, no allocation per face), and a face's
+    /// faces are found by binary search among the dimension below: `O(F log F)` for `F`
+    /// faces of the listed simplices, counted with repeats.
     pub fn from_simplices(simplices: &[Vec<u64>], values: SimplexValues<'_>) -> Result<Self, PersistenceError> {
-        let mut value: FxHashMap<Vec<u64>, f64> = FxHashMap::default();
+        let mut sorted: Vec<Vec<u64>> = Vec::with_capacity(simplices.len());
         for (s, simplex) in simplices.iter().enumerate() {
             let mut v = simplex.clone();
             v.sort_unstable();
@@ -120,55 +124,98 @@ impl FilteredComplex {
             if v.len() > 20 {
                 return Err(PersistenceError::TooLarge(format!("simplex {s} has {} vertices", v.len())));
             }
-            let x = match values {
-                SimplexValues::PerSimplex(vals) => *vals.get(s).ok_or_else(|| {
-                    PersistenceError::BadInput(format!("{} values for {} simplices", vals.len(), simplices.len()))
-                })?,
-                SimplexValues::LowerStar(_) => f64::NEG_INFINITY,
-            };
-            for mask in 1u32..(1 << v.len()) {
-                let face: Vec<u64> = (0..v.len()).filter(|&i| mask >> i & 1 == 1).map(|i| v[i]).collect();
-                let e = value.entry(face).or_insert(f64::INFINITY);
-                *e = e.min(x);
+            sorted.push(v);
+        }
+        if let SimplexValues::PerSimplex(vals) = values {
+            if vals.len() != simplices.len() {
+                return Err(PersistenceError::BadInput(format!(
+                    "{} values for {} simplices",
+                    vals.len(),
+                    simplices.len()
+                )));
             }
         }
-        if let SimplexValues::LowerStar(f) = values {
-            for (face, x) in value.iter_mut() {
-                let mut m = f64::NEG_INFINITY;
-                for &u in face.iter() {
-                    let fv = f(u).ok_or_else(|| PersistenceError::BadInput(format!("vertex {u} has no value")))?;
-                    m = m.max(fv);
-                }
-                *x = m;
-            }
-        }
-        let mut by_dim: Vec<Vec<(Vec<u64>, f64)>> = Vec::new();
-        for (face, x) in value {
-            let k = face.len() - 1;
-            while by_dim.len() <= k {
-                by_dim.push(Vec::new());
-            }
-            by_dim[k].push((face, x));
-        }
+        let top = sorted.iter().map(Vec::len).max().unwrap_or(0);
         let mut out = FilteredComplex::new();
-        let mut index: FxHashMap<Vec<u64>, u32> = FxHashMap::default();
-        for (k, mut faces) in by_dim.into_iter().enumerate() {
-            faces.sort_unstable_by(|a, b| a.0.cmp(&b.0));
-            for (face, x) in faces {
-                let boundary: Vec<(u32, i64)> = if k == 0 {
-                    Vec::new()
-                } else {
-                    (0..=k)
-                        .map(|i| {
-                            let mut f = face.clone();
-                            f.remove(i);
-                            (index[&f], if i % 2 == 0 { 1 } else { -1 })
-                        })
-                        .collect()
+        // the faces of the dimension below, `k` labels each, in order
+        let mut below: Vec<u64> = Vec::new();
+        let mut labels: Vec<u64> = Vec::new();
+        let mut vals: Vec<f64> = Vec::new();
+        for w in 1..=top {
+            let k = w - 1;
+            // every face of w vertices of every simplex, with the simplex's value
+            labels.clear();
+            vals.clear();
+            for (s, v) in sorted.iter().enumerate().filter(|(_, v)| v.len() >= w) {
+                let x = match values {
+                    SimplexValues::PerSimplex(xs) => xs[s],
+                    SimplexValues::LowerStar(_) => f64::NEG_INFINITY,
                 };
-                let i = out.try_push(k, x, boundary, CellName::Simplex(face.clone()))?;
-                index.insert(face, i);
+                // the masks of w bits below 2^len, in increasing order (Gosper's hack)
+                let mut mask: u32 = (1 << w) - 1;
+                while mask < 1 << v.len() {
+                    labels.extend((0..v.len()).filter(|&i| mask >> i & 1 == 1).map(|i| v[i]));
+                    vals.push(x);
+                    let c = mask & mask.wrapping_neg();
+                    let r = mask + c;
+                    mask = (((r ^ mask) >> 2) / c) | r;
+                }
             }
+            let face = |i: u32| &labels[i as usize * w..(i as usize + 1) * w];
+            let mut ids: Vec<u32> = (0..vals.len() as u32).collect();
+            ids.sort_unstable_by(|&a, &b| face(a).cmp(face(b)));
+            // merged: each face once, with the least value of the simplices that have it
+            let mut faces: Vec<u64> = Vec::with_capacity(labels.len());
+            let mut face_vals: Vec<f64> = Vec::new();
+            for &i in &ids {
+                let f = face(i);
+                let n = face_vals.len();
+                if n > 0 && &faces[(n - 1) * w..] == f {
+                    face_vals[n - 1] = face_vals[n - 1].min(vals[i as usize]);
+                } else {
+                    faces.extend_from_slice(f);
+                    face_vals.push(vals[i as usize]);
+                }
+            }
+            let count_below = below.len().checked_div(k).unwrap_or(0);
+            let find_below = |f: &[u64]| -> u32 {
+                let (mut lo, mut hi) = (0, count_below);
+                while lo < hi {
+                    let mid = (lo + hi) / 2;
+                    if below[mid * k..(mid + 1) * k] < *f {
+                        lo = mid + 1;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                lo as u32
+            };
+            let mut dropped: Vec<u64> = Vec::with_capacity(k);
+            for (j, &x) in face_vals.iter().enumerate() {
+                let f = &faces[j * w..(j + 1) * w];
+                let x = match values {
+                    SimplexValues::LowerStar(value) => {
+                        let mut m = f64::NEG_INFINITY;
+                        for &u in f {
+                            let fv = value(u)
+                                .ok_or_else(|| PersistenceError::BadInput(format!("vertex {u} has no value")))?;
+                            m = m.max(fv);
+                        }
+                        m
+                    }
+                    SimplexValues::PerSimplex(_) => x,
+                };
+                let boundary: Vec<(u32, i64)> = (0..w)
+                    .filter(|_| k > 0)
+                    .map(|i| {
+                        dropped.clear();
+                        dropped.extend(f.iter().enumerate().filter(|&(t, _)| t != i).map(|(_, &u)| u));
+                        (find_below(&dropped), if i % 2 == 0 { 1 } else { -1 })
+                    })
+                    .collect();
+                out.try_push(k, x, boundary, CellName::Simplex(f.to_vec()))?;
+            }
+            below = faces;
         }
         Ok(out)
     }
