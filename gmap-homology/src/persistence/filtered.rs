@@ -12,6 +12,8 @@
 //! clearing. Cost: building the faces of a facet of dimension `n` is `2^(n+1)` subsets;
 //! the reduction is near linear on manifolds.
 
+use rustc_hash::FxHashMap;
+
 use gmap_core::labels::{to_dense_labels, LabelValue, LabelledGMap, Labels};
 
 use super::cubical::{check_field, key};
@@ -141,6 +143,7 @@ impl FilteredComplex {
         let mut below: Vec<u64> = Vec::new();
         let mut labels: Vec<u64> = Vec::new();
         let mut vals: Vec<f64> = Vec::new();
+        let mut vertex_value: FxHashMap<u64, f64> = FxHashMap::default();
         for w in 1..=top {
             let k = w - 1;
             // every face of w vertices of every simplex, with the simplex's value
@@ -154,7 +157,11 @@ impl FilteredComplex {
                 // the masks of w bits below 2^len, in increasing order (Gosper's hack)
                 let mut mask: u32 = (1 << w) - 1;
                 while mask < 1 << v.len() {
-                    labels.extend((0..v.len()).filter(|&i| mask >> i & 1 == 1).map(|i| v[i]));
+                    let mut bits = mask;
+                    while bits != 0 {
+                        labels.push(v[bits.trailing_zeros() as usize]);
+                        bits &= bits - 1;
+                    }
                     vals.push(x);
                     let c = mask & mask.wrapping_neg();
                     let r = mask + c;
@@ -194,25 +201,23 @@ impl FilteredComplex {
             for (j, &x) in face_vals.iter().enumerate() {
                 let f = &faces[j * w..(j + 1) * w];
                 let x = match values {
-                    SimplexValues::LowerStar(value) => {
-                        let mut m = f64::NEG_INFINITY;
-                        for &u in f {
-                            let fv = value(u)
-                                .ok_or_else(|| PersistenceError::BadInput(format!("vertex {u} has no value")))?;
-                            m = m.max(fv);
-                        }
-                        m
+                    // each vertex's value asked for once, then kept
+                    SimplexValues::LowerStar(value) if k == 0 => {
+                        let x = value(f[0])
+                            .ok_or_else(|| PersistenceError::BadInput(format!("vertex {} has no value", f[0])))?;
+                        vertex_value.insert(f[0], x);
+                        x
                     }
+                    SimplexValues::LowerStar(_) => f.iter().map(|u| vertex_value[u]).fold(f64::NEG_INFINITY, f64::max),
                     SimplexValues::PerSimplex(_) => x,
                 };
-                let boundary: Vec<(u32, i64)> = (0..w)
-                    .filter(|_| k > 0)
-                    .map(|i| {
-                        dropped.clear();
-                        dropped.extend(f.iter().enumerate().filter(|&(t, _)| t != i).map(|(_, &u)| u));
-                        (find_below(&dropped), if i % 2 == 0 { 1 } else { -1 })
-                    })
-                    .collect();
+                let mut boundary: Vec<(u32, i64)> = Vec::with_capacity(if k > 0 { w } else { 0 });
+                for i in (0..w).filter(|_| k > 0) {
+                    dropped.clear();
+                    dropped.extend_from_slice(&f[..i]);
+                    dropped.extend_from_slice(&f[i + 1..]);
+                    boundary.push((find_below(&dropped), if i % 2 == 0 { 1 } else { -1 }));
+                }
                 out.try_push(k, x, boundary, CellName::Simplex(f.to_vec()))?;
             }
             below = faces;
