@@ -212,7 +212,7 @@ def homology(
 Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
 
 def persistence(
-    x: Union[PathLike, GMap, CubicalSet, SimplicialComplex, ArchComplex, npt.NDArray[Any]],
+    x: Union[PathLike, GMap, CubicalSet, SimplicialComplex, ArchComplex, Sequence[Sequence[int]], npt.NDArray[Any]],
     *,
     field: int = 2,
     construction: str = "T",

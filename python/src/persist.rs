@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use gmap::PersistenceOptions;
+use gmap::{Input, PersistenceOptions};
 use gmap_homology::persistence::{cubical_persistence, CellName, Construction, Diagram, PersistenceError};
 use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
 use pyo3::prelude::*;
@@ -134,8 +134,37 @@ fn vertex_values(v: &Bound<'_, PyAny>) -> PyResult<gmap::VertexValues> {
     Ok(gmap::VertexValues::from_pairs(pairs).map_err(Failure::from)?)
 }
 
-/// The diagram of a simplicial complex (a path or a SimplicialComplex) by values given
-/// from Python: per vertex (lower star) or per facet.
+/// An input held by a Python object or made from Python values.
+enum Held<'a> {
+    Borrowed(&'a Input),
+    Owned(Box<Input>),
+}
+
+impl std::ops::Deref for Held<'_> {
+    type Target = Input;
+    fn deref(&self) -> &Input {
+        match self {
+            Held::Borrowed(i) => i,
+            Held::Owned(i) => i,
+        }
+    }
+}
+
+/// The simplicial complex `x` holds, if it is one: a SimplicialComplex, or facets given as
+/// a list or tuple of sequences of vertex labels (a numpy array is an image).
+fn complex_of_py<'a>(x: &'a Bound<'_, PyAny>) -> PyResult<Option<Held<'a>>> {
+    if let Ok(s) = x.downcast::<PySimplicialComplex>() {
+        return Ok(Some(Held::Borrowed(&s.get().input)));
+    }
+    if x.is_instance_of::<PyList>() || x.is_instance_of::<PyTuple>() {
+        let sc = crate::objects::complex_of(crate::objects::facets_from_py(x)?)?;
+        return Ok(Some(Held::Owned(Box::new(Input::Simplicial(gmap::Sourced::new(sc))))));
+    }
+    Ok(None)
+}
+
+/// The diagram of a simplicial complex (a path, a SimplicialComplex, facets) by values
+/// given from Python: per vertex (lower star) or per facet.
 fn given_values_diagram(
     py: Python<'_>,
     x: &Bound<'_, PyAny>,
@@ -144,6 +173,7 @@ fn given_values_diagram(
     o: &PersistenceOptions,
 ) -> PyResult<Diagram> {
     let is_path = x.is_instance_of::<PyString>() || x.hasattr("__fspath__")?;
+    let complex = if is_path { None } else { complex_of_py(x)? };
     match (vertex, facet) {
         (Some(_), Some(_)) => Err(Failure::input("give vertex_values or facet_values, not both").into()),
         (Some(v), None) => {
@@ -151,20 +181,22 @@ fn given_values_diagram(
             if is_path {
                 let path: PathBuf = x.extract()?;
                 Ok(py.allow_threads(|| gmap::lower_star_file(&path, &values, o)).map_err(Failure::from)?.diagram)
-            } else if let Ok(s) = x.downcast::<PySimplicialComplex>() {
-                let input = &s.get().input;
+            } else if let Some(input) = &complex {
                 Ok(py.allow_threads(|| gmap::lower_star(input, &values, o)).map_err(Failure::from)?)
             } else {
-                Err(Failure::input("vertex_values are for a SimplicialComplex or the path of one").into())
+                Err(Failure::input("vertex_values are for a simplicial complex (facets, a SimplicialComplex, a path)")
+                    .into())
             }
         }
         (None, Some(f)) => {
-            let s = x.downcast::<PySimplicialComplex>().map_err(|_| {
-                Failure::input("facet_values are for a SimplicialComplex (a .facets file carries them as `: VALUE`)")
-            })?;
+            let Some(Input::Simplicial(sc)) = complex.as_deref() else {
+                return Err(Failure::input(
+                    "facet_values are for a simplicial complex (facets or a SimplicialComplex; a .facets file carries them as `: VALUE`)",
+                )
+                .into());
+            };
             let values: Vec<f64> =
                 f.extract().map_err(|_| Failure::input("facet_values: a sequence of numbers, one per facet"))?;
-            let sc = s.get().sc();
             Ok(py.allow_threads(|| gmap::persistence::facet_persistence(sc, &values, o)).map_err(Failure::from)?)
         }
         (None, None) => unreachable!("called with values"),
@@ -187,11 +219,13 @@ fn given_values_diagram(
 /// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default),
 /// `superlevel` filters from the top down and `periodic` identifies opposite faces.
 ///
-/// A SimplicialComplex, or the path of one (`.facets` without values, `.lex`), takes
-/// `vertex_values`: a mapping {label: value} or a sequence indexed by label; each simplex
+/// A simplicial complex, given as a SimplicialComplex, as facets (a list or tuple of
+/// sequences of vertex labels; a numpy array is an image) or as the path of one (`.facets`
+/// without values, `.lex`), takes `vertex_values`: a mapping {label: value} or a sequence indexed by label; each simplex
 /// takes the largest value of its vertices (the lower-star filtration; every vertex needs
-/// a value, other labels are ignored). A SimplicialComplex takes `facet_values` instead:
-/// one value per facet in the order of its `facets`, a face taking the minimum of its
+/// a value, other labels are ignored). Facets or a SimplicialComplex take `facet_values`
+/// instead: one value per facet in the order of its `facets` (the order given, for pure
+/// complexes), a face taking the minimum of its
 /// facets' values (GUDHI's SimplexTree convention).
 ///
 /// With cycles=True the result is `(pairs, cycles)`: `cycles[i]` represents `pairs[i]` as
@@ -233,9 +267,8 @@ pub fn persistence<'py>(
     } else if let Ok(c) = x.downcast::<PyCubicalSet>() {
         let input = &c.get().input;
         py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
-    } else if let Ok(s) = x.downcast::<PySimplicialComplex>() {
-        let input = &s.get().input;
-        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if let Some(input) = complex_of_py(x)? {
+        py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?
     } else if let Ok(a) = x.downcast::<PyArchComplex>() {
         let input = &a.get().input;
         py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?

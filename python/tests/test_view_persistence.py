@@ -321,6 +321,23 @@ def test_lower_star_and_facet_values_equal_gudhi_on_random_complexes(field):
         assert ours(sc, field=field, facet_values=facet_values) == want, facets
 
 
+def test_facets_given_as_lists_take_values():
+    facets = [[1, 2, 5], [2, 3, 5], [3, 4, 5], [1, 4, 5]]
+    values = {1: 0, 2: 1, 3: 0, 4: 1, 5: 3}
+    want = gmap.persistence(gmap.SimplicialComplex(facets), vertex_values=values)
+    assert want.tolist() == [[0, 0, 1], [0, 0, float("inf")], [1, 1, 3]]
+    assert np.array_equal(gmap.persistence(facets, vertex_values=values), want)
+    assert np.array_equal(gmap.persistence(tuple(map(tuple, facets)), vertex_values=values), want)
+    # a value per facet: the fan around vertex 5 grows as a disk, one component throughout
+    d = gmap.persistence(facets, facet_values=[0, 0, 1, 3])
+    assert Counter(map(tuple, d.tolist())) == Counter({(0.0, 0.0, float("inf")): 1})
+    assert np.array_equal(d, gmap.persistence(gmap.SimplicialComplex(facets), facet_values=[0, 0, 1, 3]))
+    with pytest.raises(gmap.GmapError, match="needs values"):
+        gmap.persistence(facets)
+    with pytest.raises(gmap.InputError, match="facet 1"):
+        gmap.persistence([[0, 1], [2, -1]], vertex_values=[0, 0, 0])
+
+
 def test_lower_star_cycles_and_refusals(tmp_path):
     cone = gmap.SimplicialComplex([[1, 2, 5], [2, 3, 5], [3, 4, 5], [1, 4, 5]])
     values = {1: 0, 2: 1, 3: 0, 4: 1, 5: 3}
