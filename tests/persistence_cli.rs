@@ -86,12 +86,19 @@ fn vertex_values_give_the_lower_star_filtration() {
     // an image's values are its pixels
     let img = data.join("../images/coins.pgm");
     refused(&["persistence", img.to_str().unwrap(), "--vertex-values", values], "vertex values are for simplicial");
-    // the options of images are refused for a complex, not ignored
-    for flag in ["--superlevel", "--periodic"] {
-        refused(&["persistence", &valued, flag], "applies to images");
-        refused(&["persistence", cone, "--vertex-values", values, flag], "applies to images");
-    }
+    // the options only images take are refused for a complex, not ignored
+    refused(&["persistence", &valued, "--periodic"], "periodic applies to images");
+    refused(&["persistence", cone, "--vertex-values", values, "--periodic"], "periodic applies to images");
     refused(&["persistence", &valued, "--construction", "V"], "the V-construction applies to images");
+    // superlevel sets: the upper star (the apex first, the rest joins it), and per facet a
+    // face taking its facets' maximum (vertex 2 enters with the edge 2 3 at 1)
+    let text = |args: &[&str]| {
+        let out = gmap(args);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    assert_eq!(text(&["persistence", cone, "--vertex-values", values, "--superlevel"]), "0 3 -inf\n");
+    assert_eq!(text(&["persistence", &valued, "--superlevel"]), "0 1 -inf\n");
 }
 
 #[test]
@@ -110,9 +117,13 @@ fn an_architectural_complex_filtered_by_its_labels() {
     let out = gmap(&["persistence", court.to_str().unwrap(), "--label", "name"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("0-region 1 has no value"));
-    let out = gmap(&["persistence", court.to_str().unwrap(), "--superlevel"]);
+    let out = gmap(&["persistence", court.to_str().unwrap(), "--periodic"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("an architectural complex: superlevel applies to images"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("an architectural complex: periodic applies to images"));
+    // superlevel: the court (at 1) comes first with its loop, which the floor (lowered to
+    // 0 with the outer square) never fills: the outer square's loop dies as it is born
+    let out = gmap(&["persistence", court.to_str().unwrap(), "--superlevel"]);
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "0 0 -inf\n0 1 -inf\n1 1 -inf\n");
 }
 
 #[test]

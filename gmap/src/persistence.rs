@@ -25,7 +25,7 @@ pub struct PersistenceOptions {
     pub field: u32,
     /// for images: T (values on top cells, GUDHI's default) or V (on vertices, CubicalRipser's)
     pub construction: Construction,
-    /// for images: superlevel sets
+    /// superlevel sets: from the largest value down (images and complexes)
     pub superlevel: bool,
     /// for images: identify the opposite faces of the box
     pub periodic: bool,
@@ -93,12 +93,10 @@ pub fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
     }
 }
 
-/// Refuses the options that only images take (superlevel, periodic, the V-construction)
-/// for a complex filtered by its own values, rather than ignore them.
+/// Refuses the options that only images take (periodic, the V-construction) for a
+/// complex filtered by its own values, rather than ignore them.
 fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
-    let refused = if opts.superlevel {
-        Some("superlevel applies to images (for a complex, negate its values)")
-    } else if opts.periodic {
+    let refused = if opts.periodic {
         Some("periodic applies to images")
     } else if opts.construction == Construction::V {
         Some("the V-construction applies to images")
@@ -115,9 +113,10 @@ fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
 /// `.gmap` file), an architectural complex (`.json`) by the label `opts.label` of its
 /// regions (the chain complex `gmap homology` computes for it), a cubical set as the image
 /// with 0 on its cubes and 1 elsewhere. A simplicial complex carries no values once
-/// opened: [`persistence_file`] reads them, or [`lower_star`] takes them per vertex. A
-/// G-map or an architectural complex refuses the options of images (superlevel, periodic,
-/// the V-construction).
+/// opened: [`persistence_file`] reads them, or [`lower_star`] takes them per vertex. With
+/// `opts.superlevel` a G-map or an architectural complex is filtered from the largest value
+/// down (a cell lowered to its faces' minimum); both refuse the options only images take
+/// (periodic, the V-construction).
 pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> {
     match input {
         Input::Map(m) => {
@@ -126,7 +125,11 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
                 Error::new(ErrorKind::Unsupported, "a map carries values only as labels in a .gmap file")
                     .with_path(m.path())
             })??;
-            let f = FilteredComplex::from_labelled_gmap(g, &opts.label).map_err(|e| compute(e).with_path(m.path()))?;
+            let f = if opts.superlevel {
+                FilteredComplex::from_labelled_gmap_superlevel(g, &opts.label)
+            } else {
+                FilteredComplex::from_labelled_gmap(g, &opts.label)
+            }.map_err(|e| compute(e).with_path(m.path()))?;
             f.diagram(opts.field, opts.cycles).map_err(compute)
         }
         Input::Cubical(c) => {
@@ -155,7 +158,11 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
         .with_path(s.path())),
         Input::Arch(a) => {
             complex_options(opts, "an architectural complex").map_err(|e| e.with_path(a.path()))?;
-            let f = FilteredComplex::from_arch(a, &opts.label).map_err(|e| compute(e).with_path(a.path()))?;
+            let f = if opts.superlevel {
+                FilteredComplex::from_arch_superlevel(a, &opts.label)
+            } else {
+                FilteredComplex::from_arch(a, &opts.label)
+            }.map_err(|e| compute(e).with_path(a.path()))?;
             f.diagram(opts.field, opts.cycles).map_err(compute)
         }
     }
@@ -220,10 +227,24 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
     Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false })
 }
 
+/// The filtered simplicial complex, sublevel or superlevel as `opts` says.
+fn simplices(
+    facets: &[Vec<u64>],
+    values: SimplexValues<'_>,
+    opts: &PersistenceOptions,
+) -> std::result::Result<FilteredComplex, gmap_homology::persistence::PersistenceError> {
+    if opts.superlevel {
+        FilteredComplex::from_simplices_superlevel(facets, values)
+    } else {
+        FilteredComplex::from_simplices(facets, values)
+    }
+}
+
 /// The diagram of a simplicial complex with `values[i]` on its i-th facet, in the order of
 /// [`SimplicialComplex::facets`]; a face takes the minimum of its facets' values (GUDHI's
-/// `SimplexTree`). Refuses a count of values other than the facets' and the options of
-/// images.
+/// `SimplexTree`); with `opts.superlevel`, from the largest value down, a face taking the
+/// maximum. Refuses a count of values other than the facets' and the options of images
+/// (periodic, the V-construction).
 pub fn facet_persistence(sc: &SimplicialComplex, values: &[f64], opts: &PersistenceOptions) -> Result<Diagram> {
     complex_options(opts, "a simplicial complex")?;
     let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
@@ -233,7 +254,7 @@ pub fn facet_persistence(sc: &SimplicialComplex, values: &[f64], opts: &Persiste
             format!("{} values for {} facets: give one value per facet", values.len(), facets.len()),
         ));
     }
-    let f = FilteredComplex::from_simplices(&facets, SimplexValues::PerSimplex(values)).map_err(compute)?;
+    let f = simplices(&facets, SimplexValues::PerSimplex(values), opts).map_err(compute)?;
     f.diagram(opts.field, opts.cycles).map_err(compute)
 }
 
@@ -285,13 +306,14 @@ impl VertexValues {
 }
 
 /// The lower-star diagram of a simplicial complex: each simplex takes the largest value
-/// of its vertices. Refuses a vertex without a value (naming it) and the options of
-/// images.
+/// of its vertices (with `opts.superlevel`, the upper star: the smallest, from the largest
+/// value down). Refuses a vertex without a value (naming it) and the options of images
+/// (periodic, the V-construction).
 pub fn lower_star_complex(sc: &SimplicialComplex, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
     complex_options(opts, "a simplicial complex")?;
     let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
     let value = |label: u64| values.get(label);
-    let f = FilteredComplex::from_simplices(&facets, SimplexValues::LowerStar(&value)).map_err(compute)?;
+    let f = simplices(&facets, SimplexValues::LowerStar(&value), opts).map_err(compute)?;
     f.diagram(opts.field, opts.cycles).map_err(compute)
 }
 

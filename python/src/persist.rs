@@ -215,9 +215,11 @@ fn given_values_diagram(
 /// GMap whose cells carry the numeric label `label` (an i-cell's value raised to the
 /// maximum of its faces'), an ArchComplex whose regions carry it (alike, on the chain
 /// complex `homology` computes for it), or a CubicalSet (0 on its cubes, 1 elsewhere).
-/// A complex refuses superlevel, periodic and construction "V". For images, `construction` is "T" (values on top cells, GUDHI's
-/// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default),
-/// `superlevel` filters from the top down and `periodic` identifies opposite faces.
+/// `superlevel` filters from the largest value down (complexes too: a cell lowered to its
+/// faces' minimum; with vertex_values a simplex takes its smallest vertex value, the upper
+/// star). For images, `construction` is "T" (values on top cells, GUDHI's
+/// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default) and
+/// `periodic` identifies opposite faces; a complex refuses periodic and construction "V".
 ///
 /// A simplicial complex, given as a SimplicialComplex, as facets (a list or tuple of
 /// sequences of vertex labels; a numpy array is an image) or as the path of one (`.facets`

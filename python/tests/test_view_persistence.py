@@ -302,6 +302,10 @@ def test_lower_star_equals_gudhi_on_lutz_files(name, field):
         # the path, and a sequence indexed by label, give the same diagram
         seq = [by_label.get(i, 0.0) for i in range(max(labels) + 1)]
         assert ours(path, field=field, vertex_values=seq) == want
+        # superlevel sets (the upper star) are the lower star of the values negated
+        up = gudhi_simplex_tree(sc.facets, field, vertex_values={v: -x for v, x in by_label.items()})
+        want_up = Counter({(k, -b, -e): n for (k, b, e), n in up.items()})
+        assert ours(sc, field=field, vertex_values=by_label, superlevel=True) == want_up
 
 
 @pytest.mark.parametrize("field", [2, 3])
@@ -319,6 +323,9 @@ def test_lower_star_and_facet_values_equal_gudhi_on_random_complexes(field):
         facet_values = rng.integers(0, 5, size=len(sc.facets)).astype(float)
         want = gudhi_simplex_tree(sc.facets, field, facet_values=facet_values)
         assert ours(sc, field=field, facet_values=facet_values) == want, facets
+        up = gudhi_simplex_tree(sc.facets, field, facet_values=-facet_values)
+        want_up = Counter({(k, -b, -e): n for (k, b, e), n in up.items()})
+        assert ours(sc, field=field, facet_values=facet_values, superlevel=True) == want_up, facets
 
 
 def test_facets_given_as_lists_take_values():
@@ -355,8 +362,10 @@ def test_lower_star_cycles_and_refusals(tmp_path):
         gmap.persistence(cone, vertex_values={1: float("nan")})
     with pytest.raises(gmap.GmapError, match="SimplicialComplex"):
         gmap.persistence(np.zeros((3, 3)), vertex_values=[0.0])
-    with pytest.raises(gmap.GmapError, match="applies to images"):
-        gmap.persistence(cone, vertex_values=values, superlevel=True)
+    with pytest.raises(gmap.GmapError, match="periodic applies to images"):
+        gmap.persistence(cone, vertex_values=values, periodic=True)
+    # the upper star: the apex first, everything else joins it
+    assert gmap.persistence(cone, vertex_values=values, superlevel=True).tolist() == [[0, 3, float("-inf")]]
     p = tmp_path / "v.facets"
     p.write_text("1 2 : 0\n2 3 : 1\n")
     with pytest.raises(gmap.GmapError, match="give one filtration"):
@@ -374,5 +383,7 @@ def test_persistence_of_an_architectural_complex_by_its_labels():
     assert np.array_equal(gmap.persistence(path), pairs)
     with pytest.raises(gmap.GmapError, match="0-region 1 has no value"):
         gmap.persistence(x, label="name")
-    with pytest.raises(gmap.GmapError, match="applies to images"):
-        gmap.persistence(x, superlevel=True)
+    with pytest.raises(gmap.GmapError, match="periodic applies to images"):
+        gmap.persistence(x, periodic=True)
+    inf = float("inf")
+    assert gmap.persistence(x, superlevel=True).tolist() == [[0, 0, -inf], [0, 1, -inf], [1, 1, -inf]]

@@ -27,7 +27,7 @@ pub(crate) struct PersistenceArgs {
     /// for images: T or V
     #[arg(long, value_enum, default_value_t = Construction::T)]
     construction: Construction,
-    /// for images: superlevel sets (from the largest value down)
+    /// superlevel sets: from the largest value down (images and complexes)
     #[arg(long)]
     superlevel: bool,
     /// for images: identify the opposite faces of the box

@@ -31,9 +31,20 @@ struct Cell {
 }
 
 /// A cell complex whose cells carry values, stored per dimension in the order given.
-#[derive(Clone, Debug, Default)]
+///
+/// A superlevel filtration (cells from the largest value down, a cell lowered to its
+/// faces' minimum) is kept as the sublevel filtration of the values negated, with `sign`
+/// −1 to report the diagram in the values given (the `_superlevel` constructors).
+#[derive(Clone, Debug)]
 pub struct FilteredComplex {
     cells: Vec<Vec<Cell>>,
+    sign: f64,
+}
+
+impl Default for FilteredComplex {
+    fn default() -> Self {
+        FilteredComplex { cells: Vec::new(), sign: 1.0 }
+    }
 }
 
 /// How the simplices of a complex get their values.
@@ -114,6 +125,20 @@ impl FilteredComplex {
     /// faces are found by binary search among the dimension below: `O(F log F)` for `F`
     /// faces of the listed simplices, counted with repeats.
     pub fn from_simplices(simplices: &[Vec<u64>], values: SimplexValues<'_>) -> Result<Self, PersistenceError> {
+        Self::simplices(simplices, values, 1.0)
+    }
+
+    /// [`FilteredComplex::from_simplices`] for superlevel sets: from the largest value down,
+    /// a face taking the maximum of its listed cofaces' values (per simplex) or a simplex
+    /// the smallest of its vertices' (the upper star); essential classes die at `-inf`.
+    pub fn from_simplices_superlevel(
+        simplices: &[Vec<u64>],
+        values: SimplexValues<'_>,
+    ) -> Result<Self, PersistenceError> {
+        Self::simplices(simplices, values, -1.0)
+    }
+
+    fn simplices(simplices: &[Vec<u64>], values: SimplexValues<'_>, sign: f64) -> Result<Self, PersistenceError> {
         let mut sorted: Vec<Vec<u64>> = Vec::with_capacity(simplices.len());
         for (s, simplex) in simplices.iter().enumerate() {
             let mut v = simplex.clone();
@@ -138,7 +163,7 @@ impl FilteredComplex {
             }
         }
         let top = sorted.iter().map(Vec::len).max().unwrap_or(0);
-        let mut out = FilteredComplex::new();
+        let mut out = FilteredComplex { cells: Vec::new(), sign };
         // the faces of the dimension below, `k` labels each, in order
         let mut below: Vec<u64> = Vec::new();
         let mut labels: Vec<u64> = Vec::new();
@@ -151,7 +176,7 @@ impl FilteredComplex {
             vals.clear();
             for (s, v) in sorted.iter().enumerate().filter(|(_, v)| v.len() >= w) {
                 let x = match values {
-                    SimplexValues::PerSimplex(xs) => xs[s],
+                    SimplexValues::PerSimplex(xs) => sign * xs[s],
                     SimplexValues::LowerStar(_) => f64::NEG_INFINITY,
                 };
                 // the masks of w bits below 2^len, in increasing order (Gosper's hack)
@@ -203,8 +228,9 @@ impl FilteredComplex {
                 let x = match values {
                     // each vertex's value asked for once, then kept
                     SimplexValues::LowerStar(value) if k == 0 => {
-                        let x = value(f[0])
-                            .ok_or_else(|| PersistenceError::BadInput(format!("vertex {} has no value", f[0])))?;
+                        let x = sign
+                            * value(f[0])
+                                .ok_or_else(|| PersistenceError::BadInput(format!("vertex {} has no value", f[0])))?;
                         vertex_value.insert(f[0], x);
                         x
                     }
@@ -228,12 +254,20 @@ impl FilteredComplex {
     /// The filtration of a chain complex whose cells get values from `value(k, i)`: `None`
     /// gives a cell the maximum of its faces' values (a vertex needs a value); a value below
     /// a face's is raised to it. `name(k, i)` names the cells in cycles.
-    pub fn from_chain<V, N>(chain: &ChainComplex, mut value: V, mut name: N) -> Result<Self, PersistenceError>
+    pub fn from_chain<V, N>(chain: &ChainComplex, value: V, name: N) -> Result<Self, PersistenceError>
     where
         V: FnMut(usize, usize) -> Result<Option<f64>, PersistenceError>,
         N: FnMut(usize, usize) -> CellName,
     {
-        let mut out = FilteredComplex::new();
+        Self::chain(chain, value, name, 1.0)
+    }
+
+    fn chain<V, N>(chain: &ChainComplex, mut value: V, mut name: N, sign: f64) -> Result<Self, PersistenceError>
+    where
+        V: FnMut(usize, usize) -> Result<Option<f64>, PersistenceError>,
+        N: FnMut(usize, usize) -> CellName,
+    {
+        let mut out = FilteredComplex { cells: Vec::new(), sign };
         for k in 0..chain.counts().len() {
             let d = (k > 0).then(|| chain.boundary(k));
             for i in 0..chain.count(k) {
@@ -245,7 +279,7 @@ impl FilteredComplex {
                     None => Vec::new(),
                 };
                 let v = match value(k, i)? {
-                    Some(v) => v,
+                    Some(v) => sign * v,
                     None if k == 0 => return Err(PersistenceError::BadInput(format!("{} has no value", name(0, i)))),
                     None => f64::NEG_INFINITY,
                 };
@@ -260,18 +294,29 @@ impl FilteredComplex {
     /// complex (conditions C1 and C2, refused otherwise), cells named by dimension and
     /// smallest dart. Cells without the label take the maximum of their faces' values.
     pub fn from_labelled_gmap(g: &LabelledGMap, label: &str) -> Result<Self, PersistenceError> {
+        Self::labelled_gmap(g, label, 1.0)
+    }
+
+    /// [`FilteredComplex::from_labelled_gmap`] for superlevel sets: a cell's value lowered
+    /// to the minimum of its faces', a cell without the label taking that minimum.
+    pub fn from_labelled_gmap_superlevel(g: &LabelledGMap, label: &str) -> Result<Self, PersistenceError> {
+        Self::labelled_gmap(g, label, -1.0)
+    }
+
+    fn labelled_gmap(g: &LabelledGMap, label: &str, sign: f64) -> Result<Self, PersistenceError> {
         let (dense, labels, _) = to_dense_labels(g);
         let cc = cellular_complex(&dense)
             .map_err(|e| PersistenceError::BadInput(format!("the map's cellular complex: {e}")))?;
         let parts: Vec<Vec<u32>> = (0..=dense.dim()).map(|k| dense.cells(k).of).collect();
         let reps = &cc.reps;
-        Self::from_chain(
+        Self::chain(
             &cc.chain,
             |k, i| {
                 let c = parts[k][reps[k][i].index()] as usize;
                 label_number(labels.get(k, c), label, || format!("the {k}-cell of dart {}", reps[k][i].index()))
             },
             |k, i| CellName::Cell { dim: k, index: reps[k][i].index() },
+            sign,
         )
     }
 
@@ -281,12 +326,23 @@ impl FilteredComplex {
     /// maximum of its faces', a region without the label taking that maximum (a 0-region
     /// needs one). Cells are named by region id. O(R + E) plus the sort.
     pub fn from_arch(x: &ArchComplex, label: &str) -> Result<Self, PersistenceError> {
+        Self::arch(x, label, 1.0)
+    }
+
+    /// [`FilteredComplex::from_arch`] for superlevel sets: a region's value lowered to the
+    /// minimum of its faces'.
+    pub fn from_arch_superlevel(x: &ArchComplex, label: &str) -> Result<Self, PersistenceError> {
+        Self::arch(x, label, -1.0)
+    }
+
+    fn arch(x: &ArchComplex, label: &str, sign: f64) -> Result<Self, PersistenceError> {
         let regions: Vec<&[u32]> = (0..=x.dim()).map(|k| x.regions_of_dim(k)).collect();
         let id = |k: usize, i: usize| x.region(regions[k][i] as usize).id.0;
-        Self::from_chain(
+        Self::chain(
             &x.chain_complex(),
             |k, i| label_number(x.region_labels(regions[k][i] as usize), label, || format!("region {}", id(k, i))),
             |k, i| CellName::Region { dim: k, id: id(k, i) },
+            sign,
         )
     }
 
@@ -330,18 +386,18 @@ impl FilteredComplex {
             );
             for &(row, col) in &r.pairs {
                 let c = cycles.then(|| chain(k - 1, &r.reduced[&col]));
-                diagram.push(k - 1, val(k - 1, row), val(k, col), 1.0, c);
+                diagram.push(k - 1, val(k - 1, row), val(k, col), self.sign, c);
             }
             for &col in &r.zero {
                 let c = cycles.then(|| chain(k, &r.v[&col]));
-                diagram.push(k, val(k, col), f64::INFINITY, 1.0, c);
+                diagram.push(k, val(k, col), f64::INFINITY, self.sign, c);
             }
             claimed = r.claimed;
         }
         for j in 0..order[0].len() as u32 {
             if !claimed.get(j as usize).copied().unwrap_or(false) {
                 let c = cycles.then(|| vec![(name(0, j), 1)]);
-                diagram.push(0, val(0, j), f64::INFINITY, 1.0, c);
+                diagram.push(0, val(0, j), f64::INFINITY, self.sign, c);
             }
         }
         diagram.finish();
