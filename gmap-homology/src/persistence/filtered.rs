@@ -22,12 +22,85 @@ use super::{CellName, Chain, Diagram, PersistenceError};
 use crate::arch::ArchComplex;
 use crate::{cellular_complex, ChainComplex};
 
-/// One cell: its value, signed boundary (indices of cells one dimension down) and name.
+/// The cells of one dimension, in flat arrays: cell `i` has the value `values[i]`, the
+/// signed faces `entries[start[i]..start[i + 1]]` (indices of cells one dimension down)
+/// and the name `names.get(i)`.
 #[derive(Clone, Debug)]
-struct Cell {
-    value: f64,
-    boundary: Vec<(u32, i64)>,
-    name: CellName,
+struct Cells {
+    values: Vec<f64>,
+    start: Vec<usize>,
+    entries: Vec<(u32, i64)>,
+    names: Names,
+}
+
+impl Default for Cells {
+    fn default() -> Self {
+        Cells { values: Vec::new(), start: vec![0], entries: Vec::new(), names: Names::Simplices(0, Vec::new()) }
+    }
+}
+
+impl Cells {
+    fn len(&self) -> usize {
+        self.values.len()
+    }
+
+    fn boundary(&self, i: usize) -> &[(u32, i64)] {
+        &self.entries[self.start[i]..self.start[i + 1]]
+    }
+}
+
+/// The names of one dimension's cells: simplices of `width` vertices kept as one buffer of
+/// labels (no allocation per cell) as long as every name is one, else a list.
+#[derive(Clone, Debug)]
+enum Names {
+    Simplices(usize, Vec<u64>),
+    Listed(Vec<CellName>),
+}
+
+impl Names {
+    fn push(&mut self, name: NameRef<'_>) {
+        if let (Names::Simplices(width, labels), NameRef::Simplex(s)) = (&mut *self, &name) {
+            if labels.is_empty() {
+                *width = s.len();
+            }
+            if *width == s.len() {
+                labels.extend_from_slice(s);
+                return;
+            }
+        }
+        if let Names::Simplices(width, labels) = self {
+            let listed = labels.chunks_exact((*width).max(1)).map(|s| CellName::Simplex(s.to_vec())).collect();
+            *self = Names::Listed(listed);
+        }
+        if let Names::Listed(v) = self {
+            v.push(match name {
+                NameRef::Simplex(s) => CellName::Simplex(s.to_vec()),
+                NameRef::Owned(n) => n,
+            });
+        }
+    }
+
+    fn get(&self, i: usize) -> CellName {
+        match self {
+            Names::Simplices(width, labels) => CellName::Simplex(labels[i * width..(i + 1) * width].to_vec()),
+            Names::Listed(v) => v[i].clone(),
+        }
+    }
+}
+
+/// A name given to [`FilteredComplex::push`]: a simplex's labels in place, or any name.
+enum NameRef<'a> {
+    Simplex(&'a [u64]),
+    Owned(CellName),
+}
+
+impl std::fmt::Display for NameRef<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NameRef::Simplex(s) => write!(f, "{s:?}"),
+            NameRef::Owned(n) => write!(f, "{n}"),
+        }
+    }
 }
 
 /// A cell complex whose cells carry values, stored per dimension in the order given.
@@ -37,7 +110,7 @@ struct Cell {
 /// −1 to report the diagram in the values given (the `_superlevel` constructors).
 #[derive(Clone, Debug)]
 pub struct FilteredComplex {
-    cells: Vec<Vec<Cell>>,
+    cells: Vec<Cells>,
     sign: f64,
 }
 
@@ -78,7 +151,7 @@ impl FilteredComplex {
 
     /// Number of cells of dimension `k`.
     pub fn count(&self, k: usize) -> usize {
-        self.cells.get(k).map_or(0, Vec::len)
+        self.cells.get(k).map_or(0, Cells::len)
     }
 
     /// Adds a `dim`-cell with `value` and the signed faces `boundary` (indices among the
@@ -91,6 +164,18 @@ impl FilteredComplex {
         boundary: Vec<(u32, i64)>,
         name: CellName,
     ) -> Result<u32, PersistenceError> {
+        self.push(dim, value, &boundary, NameRef::Owned(name))
+    }
+
+    /// [`FilteredComplex::try_push`] with the boundary borrowed and a simplex's name in
+    /// place (nothing allocated per cell).
+    fn push(
+        &mut self,
+        dim: usize,
+        value: f64,
+        boundary: &[(u32, i64)],
+        name: NameRef<'_>,
+    ) -> Result<u32, PersistenceError> {
         if value.is_nan() {
             return Err(PersistenceError::BadInput(format!("{name} has a NaN value")));
         }
@@ -98,21 +183,24 @@ impl FilteredComplex {
             return Err(PersistenceError::BadInput(format!("the vertex {name} has faces")));
         }
         let mut v = value;
-        for &(f, _) in &boundary {
-            let face =
-                dim.checked_sub(1).and_then(|k| self.cells.get(k)).and_then(|c| c.get(f as usize)).ok_or_else(
-                    || PersistenceError::BadInput(format!("{name}: no face {f} of dimension {}", dim - 1)),
-                )?;
-            v = v.max(face.value);
+        for &(f, _) in boundary {
+            let face = dim.checked_sub(1).and_then(|k| self.cells.get(k)).and_then(|c| c.values.get(f as usize));
+            let face = face
+                .ok_or_else(|| PersistenceError::BadInput(format!("{name}: no face {f} of dimension {}", dim - 1)))?;
+            v = v.max(*face);
         }
         while self.cells.len() <= dim {
-            self.cells.push(Vec::new());
+            self.cells.push(Cells::default());
         }
-        let i = self.cells[dim].len();
+        let cells = &mut self.cells[dim];
+        let i = cells.len();
         if i >= u32::MAX as usize {
             return Err(PersistenceError::TooLarge(format!("{i} cells of dimension {dim}")));
         }
-        self.cells[dim].push(Cell { value: v, boundary, name });
+        cells.values.push(v);
+        cells.entries.extend_from_slice(boundary);
+        cells.start.push(cells.entries.len());
+        cells.names.push(name);
         Ok(i as u32)
     }
 
@@ -223,6 +311,7 @@ impl FilteredComplex {
                 lo as u32
             };
             let mut dropped: Vec<u64> = Vec::with_capacity(k);
+            let mut boundary: Vec<(u32, i64)> = Vec::with_capacity(w);
             for (j, &x) in face_vals.iter().enumerate() {
                 let f = &faces[j * w..(j + 1) * w];
                 let x = match values {
@@ -237,14 +326,14 @@ impl FilteredComplex {
                     SimplexValues::LowerStar(_) => f.iter().map(|u| vertex_value[u]).fold(f64::NEG_INFINITY, f64::max),
                     SimplexValues::PerSimplex(_) => x,
                 };
-                let mut boundary: Vec<(u32, i64)> = Vec::with_capacity(if k > 0 { w } else { 0 });
+                boundary.clear();
                 for i in (0..w).filter(|_| k > 0) {
                     dropped.clear();
                     dropped.extend_from_slice(&f[..i]);
                     dropped.extend_from_slice(&f[i + 1..]);
                     boundary.push((find_below(&dropped), if i % 2 == 0 { 1 } else { -1 }));
                 }
-                out.try_push(k, x, boundary, CellName::Simplex(f.to_vec()))?;
+                out.push(k, x, &boundary, NameRef::Simplex(f))?;
             }
             below = faces;
         }
@@ -359,7 +448,7 @@ impl FilteredComplex {
         let mut rank: Vec<Vec<u32>> = Vec::with_capacity(top);
         for cells in &self.cells {
             let mut o: Vec<u32> = (0..cells.len() as u32).collect();
-            o.sort_unstable_by_key(|&i| (key(cells[i as usize].value), i));
+            o.sort_unstable_by_key(|&i| (key(cells.values[i as usize]), i));
             let mut r = vec![0u32; o.len()];
             for (p, &i) in o.iter().enumerate() {
                 r[i as usize] = p as u32;
@@ -367,8 +456,8 @@ impl FilteredComplex {
             order.push(o);
             rank.push(r);
         }
-        let name = |k: usize, r: u32| self.cells[k][order[k][r as usize] as usize].name.clone();
-        let val = |k: usize, r: u32| self.cells[k][order[k][r as usize] as usize].value;
+        let name = |k: usize, r: u32| self.cells[k].names.get(order[k][r as usize] as usize);
+        let val = |k: usize, r: u32| self.cells[k].values[order[k][r as usize] as usize];
         let chain = |k: usize, e: &[Entry]| -> Chain { e.iter().map(|&(r, c)| (name(k, r), c)).collect() };
         let mut claimed: Vec<bool> = Vec::new();
         for k in (1..top).rev() {
@@ -378,8 +467,8 @@ impl FilteredComplex {
                 order[k - 1].len(),
                 cols,
                 |j, out: &mut Vec<Entry>| {
-                    let cell = &self.cells[k][order[k][j as usize] as usize];
-                    out.extend(cell.boundary.iter().map(|&(f, s)| (rank[k - 1][f as usize], zp.of(s))));
+                    let boundary = self.cells[k].boundary(order[k][j as usize] as usize);
+                    out.extend(boundary.iter().map(|&(f, s)| (rank[k - 1][f as usize], zp.of(s))));
                 },
                 cycles,
                 cycles,
