@@ -22,14 +22,17 @@
 //! ## The computation
 //!
 //! * Dimension 0 by union-find over the edges in order (elder rule): `O(E α(E))`.
-//! * Dimension `d-1` of a non-periodic image by union-find over the top cells in reverse
-//!   order (Alexander duality: a (d-1)-class of the image is a component of the dual, the
-//!   outside a cell present from the start), which also tells which (d-1)-cells are
-//!   negative, so the matrix reduction below skips the others (clearing).
+//! * Dimension `d-1` by union-find over the top cells in reverse order: the anti-transpose
+//!   of `∂_d` is a graph's incidence matrix (every (d-1)-cell has two cofaces; in a box
+//!   the outside is one more node, present from the start) and has the same pairs
+//!   (de Silva, Morozov and Vejdemo-Johansson, docs/REFERENCES.md). This also tells which
+//!   (d-1)-cells are negative, so the matrix reduction below skips the others (clearing).
+//!   On a torus each dual component left at the end is an essential d-class, and the
+//!   positive (d-1)-cells no d-cell kills are essential (d-1)-classes.
 //! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing ([`super::reduce`]),
 //!   the boundary computed from the grid as columns are asked for.
-//! * With representative cycles asked for, or on a torus, every dimension down to 1 goes
-//!   through the reduction (it gives the reduced columns and `V`).
+//! * With representative cycles asked for, every dimension down to 1 goes through the
+//!   reduction (it gives the reduced columns and `V`).
 //!
 //! Memory: the value of every grid cell (`8 · 2^d · N` bytes for `N` pixels), the sorted
 //! cells of the dimensions in use (4 bytes each, 16 while sorted), and for the reduction a
