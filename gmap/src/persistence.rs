@@ -211,8 +211,7 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
         return Ok(Persistence { diagram, image, vertex_centred: opts.construction == Construction::V });
     }
     if ext == "facets" {
-        let (sc, values) = gmap_ops::import::simplicial::read_valued_facets(path)
-            .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+        let (sc, values) = read_valued(path)?;
         let values = values.ok_or_else(|| {
             Error::new(
                 ErrorKind::Unsupported,
@@ -227,17 +226,23 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
     Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false })
 }
 
-/// The filtered simplicial complex, sublevel or superlevel as `opts` says.
-fn simplices(
-    facets: &[Vec<u64>],
-    values: SimplexValues<'_>,
-    opts: &PersistenceOptions,
-) -> std::result::Result<FilteredComplex, gmap_homology::persistence::PersistenceError> {
-    if opts.superlevel {
-        FilteredComplex::from_simplices_superlevel(facets, values)
+/// A `.facets` file's complex and its values per facet, if it has them.
+fn read_valued(path: &Path) -> Result<(SimplicialComplex, Option<Vec<f64>>)> {
+    gmap_ops::import::simplicial::read_valued_facets(path)
+        .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))
+}
+
+/// The diagram of a simplicial complex filtered by `values`, sublevel or superlevel as
+/// `opts` says; refuses the options of images.
+fn simplicial_diagram(sc: &SimplicialComplex, values: SimplexValues<'_>, opts: &PersistenceOptions) -> Result<Diagram> {
+    complex_options(opts, "a simplicial complex")?;
+    let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
+    let f = if opts.superlevel {
+        FilteredComplex::from_simplices_superlevel(&facets, values)
     } else {
-        FilteredComplex::from_simplices(facets, values)
-    }
+        FilteredComplex::from_simplices(&facets, values)
+    };
+    f.map_err(compute)?.diagram(opts.field, opts.cycles).map_err(compute)
 }
 
 /// The diagram of a simplicial complex with `values[i]` on its i-th facet, in the order of
@@ -246,16 +251,14 @@ fn simplices(
 /// maximum. Refuses a count of values other than the facets' and the options of images
 /// (periodic, the V-construction).
 pub fn facet_persistence(sc: &SimplicialComplex, values: &[f64], opts: &PersistenceOptions) -> Result<Diagram> {
-    complex_options(opts, "a simplicial complex")?;
-    let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
-    if values.len() != facets.len() {
+    let facets = sc.facets().count();
+    if values.len() != facets {
         return Err(Error::new(
             ErrorKind::Usage,
-            format!("{} values for {} facets: give one value per facet", values.len(), facets.len()),
+            format!("{} values for {facets} facets: give one value per facet", values.len()),
         ));
     }
-    let f = simplices(&facets, SimplexValues::PerSimplex(values), opts).map_err(compute)?;
-    f.diagram(opts.field, opts.cycles).map_err(compute)
+    simplicial_diagram(sc, SimplexValues::PerSimplex(values), opts)
 }
 
 /// Values on the vertices of a simplicial complex, by label: the lower-star filtration
@@ -310,11 +313,8 @@ impl VertexValues {
 /// value down). Refuses a vertex without a value (naming it) and the options of images
 /// (periodic, the V-construction).
 pub fn lower_star_complex(sc: &SimplicialComplex, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
-    complex_options(opts, "a simplicial complex")?;
-    let facets: Vec<Vec<u64>> = sc.facets().map(<[u64]>::to_vec).collect();
     let value = |label: u64| values.get(label);
-    let f = simplices(&facets, SimplexValues::LowerStar(&value), opts).map_err(compute)?;
-    f.diagram(opts.field, opts.cycles).map_err(compute)
+    simplicial_diagram(sc, SimplexValues::LowerStar(&value), opts)
 }
 
 /// [`lower_star_complex`] of an opened input, which must be a simplicial complex (`.facets`,
@@ -339,29 +339,29 @@ pub fn lower_star(input: &Input, values: &VertexValues, opts: &PersistenceOption
 /// its lower-star diagram ([`lower_star`]). A `.facets` file with values per facet is
 /// refused: one filtration at a time.
 pub fn lower_star_file(path: &Path, values: &VertexValues, opts: &PersistenceOptions) -> Result<Persistence> {
+    let diagram = read_lower_star(path, values, opts).map_err(|e| naming(e, path))?;
+    Ok(Persistence { diagram, image: None, vertex_centred: false })
+}
+
+fn read_lower_star(path: &Path, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
     let ext = extension(path);
     if image_reader(&ext).is_some() {
-        let e = Error::new(
+        return Err(Error::new(
             ErrorKind::Unsupported,
             "vertex values are for simplicial complexes: an image's values are its pixels (--construction V puts them on vertices)",
-        );
-        return Err(naming(e, path));
+        ));
     }
-    let diagram = if ext == "facets" {
-        let (sc, facet_values) = gmap_ops::import::simplicial::read_valued_facets(path)
-            .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
-        if facet_values.is_some() {
-            let e = Error::new(
-                ErrorKind::Unsupported,
-                "the facets have values (`: VALUE`) and the vertices too: give one filtration",
-            );
-            return Err(naming(e, path));
-        }
-        lower_star_complex(&sc, values, opts).map_err(|e| naming(e, path))?
-    } else {
-        lower_star(&crate::open(path)?, values, opts).map_err(|e| naming(e, path))?
-    };
-    Ok(Persistence { diagram, image: None, vertex_centred: false })
+    if ext != "facets" {
+        return lower_star(&crate::open(path)?, values, opts);
+    }
+    let (sc, facet_values) = read_valued(path)?;
+    if facet_values.is_some() {
+        return Err(Error::new(
+            ErrorKind::Unsupported,
+            "the facets have values (`: VALUE`) and the vertices too: give one filtration",
+        ));
+    }
+    lower_star_complex(&sc, values, opts)
 }
 
 /// A picture format, by the output's extension.
