@@ -5,7 +5,9 @@
 
 use std::collections::BTreeMap;
 
-use gmap_homology::persistence::{cubical_persistence, CellName, Construction, CubicalOptions, Diagram};
+use gmap_homology::persistence::{
+    cubical_persistence, morse_persistence, CellName, Construction, CubicalOptions, Diagram, PersistenceError,
+};
 use proptest::prelude::*;
 
 /// The doubled grid of an image, built independently of the library.
@@ -221,8 +223,54 @@ fn arrays() -> impl Strategy<Value = (Vec<usize>, Vec<f64>)> {
         })
 }
 
+/// Larger arrays than [`arrays`], with few values (plateaus) or distinct ones.
+fn larger_arrays() -> impl Strategy<Value = (Vec<usize>, Vec<f64>)> {
+    (1usize..=4, any::<bool>())
+        .prop_flat_map(|(d, ties)| {
+            let max: usize = [0, 40, 14, 7, 4][d];
+            (proptest::collection::vec(1..=max, d), Just(ties))
+        })
+        .prop_flat_map(|(shape, ties)| {
+            let n: usize = shape.iter().product();
+            let value = if ties { (0..4u8).prop_map(f64::from).boxed() } else { (-1e3..1e3f64).boxed() };
+            (Just(shape), proptest::collection::vec(value, n))
+        })
+}
+
+/// The Morse route's diagram with no memory limit to speak of.
+fn morse(shape: &[usize], values: &[f64], opts: &CubicalOptions) -> Result<Diagram, PersistenceError> {
+    morse_persistence(shape, &|i| values[i], opts, u64::MAX)
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn the_morse_route_equals_a_plain_reduction(
+        (shape, values) in arrays(), t in any::<bool>(), superlevel in any::<bool>(),
+        p in prop::sample::select(vec![2u32, 3, 5]),
+    ) {
+        let opts = CubicalOptions {
+            construction: if t { Construction::T } else { Construction::V },
+            superlevel, periodic: false, field: p, cycles: false,
+        };
+        let sign = if superlevel { -1.0 } else { 1.0 };
+        let cells = Cells::new(&shape, &values, t, false, sign);
+        prop_assert_eq!(ours(&morse(&shape, &values, &opts).unwrap()), reference(&cells, p as i64, sign));
+    }
+
+    #[test]
+    fn the_morse_route_equals_the_whole_grid_on_larger_arrays(
+        (shape, values) in larger_arrays(), t in any::<bool>(), superlevel in any::<bool>(),
+        p in prop::sample::select(vec![2u32, 3, 5]),
+    ) {
+        let opts = CubicalOptions {
+            construction: if t { Construction::T } else { Construction::V },
+            superlevel, periodic: false, field: p, cycles: false,
+        };
+        let whole = cubical_persistence(&shape, &values, &opts).unwrap();
+        prop_assert_eq!(ours(&morse(&shape, &values, &opts).unwrap()), ours(&whole));
+    }
 
     #[test]
     fn diagrams_equal_a_plain_reduction(

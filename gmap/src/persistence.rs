@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use gmap_homology::persistence::{
-    cubical_persistence, plot, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues,
+    cubical_persistence, morse_persistence, plot, Construction, CubicalOptions, Diagram, FilteredComplex, SimplexValues,
 };
 use gmap_ops::import::image::{Image, Order};
 use gmap_ops::import::SimplicialComplex;
@@ -81,6 +81,51 @@ pub fn check_image_memory(shape: &[usize], opts: &PersistenceOptions) -> Result<
     Ok(gmap_core::resources::check_memory(&what, estimate)?)
 }
 
+/// An image's pixels for [`image_persistence`], C order: held as `f64`, or read one by one
+/// (a memory-mapped file, converted as read).
+#[derive(Clone, Copy)]
+pub enum Pixels<'a> {
+    /// every value, in memory
+    Slice(&'a [f64]),
+    /// pixel `i`'s value
+    Read(&'a (dyn Fn(usize) -> f64 + Sync)),
+}
+
+/// The diagram of the image of shape `shape` (the engine's order, the fastest axis last).
+/// When its estimate fits the memory limit ([`check_image_memory`]) the whole grid is
+/// built (the values copied once if they are read one by one); past it, the Morse complex
+/// of its lower stars ([`gmap_homology::persistence::morse`]) is computed from the pixels
+/// as they are read, holding only its critical cells: refused with the estimate if the
+/// image is periodic or cycles are asked for (that route has neither), and with the count
+/// if its critical cells pass the limit.
+pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &PersistenceOptions) -> Result<Diagram> {
+    let engine = cubical_options(opts);
+    match check_image_memory(shape, opts) {
+        Ok(()) => {
+            let owned: Vec<f64>;
+            let values = match pixels {
+                Pixels::Slice(v) => v,
+                Pixels::Read(f) => {
+                    owned = (0..shape.iter().product()).map(f).collect();
+                    &owned
+                }
+            };
+            cubical_persistence(shape, values, &engine).map_err(compute)
+        }
+        Err(e) if opts.periodic || opts.cycles => Err(e.flattened(
+            "; past the limit an image is computed from its lower stars, which takes neither periodic images nor cycles",
+        )),
+        Err(_) => {
+            let limit = gmap_core::resources::max_memory();
+            let diagram = match pixels {
+                Pixels::Slice(v) => morse_persistence(shape, &|i| v[i], &engine, limit),
+                Pixels::Read(f) => morse_persistence(shape, f, &engine, limit),
+            };
+            diagram.map_err(compute)
+        }
+    }
+}
+
 /// The engine's options for an image (`gmap_homology::persistence::cubical_persistence`);
 /// public for callers that hold the values themselves (the Python package's numpy arrays).
 pub fn cubical_options(o: &PersistenceOptions) -> CubicalOptions {
@@ -138,18 +183,17 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
             // the set's cubes, axis 0 fastest, as a C-order array of the reversed shape
             let mut shape = c.shape().to_vec();
             shape.reverse();
-            check_image_memory(&shape, opts).map_err(|e| e.with_path(c.path()))?;
-            let values: Vec<f64> = c.bits().iter().map(|&b| if b != 0 { 0.0 } else { 1.0 }).collect();
-            cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(compute)
+            let bits = c.bits();
+            let value = |i: usize| if bits[i] != 0 { 0.0 } else { 1.0 };
+            image_persistence(&shape, Pixels::Read(&value), opts).map_err(|e| e.with_path(c.path()))
         }
         Input::Image(img) => {
             let mut shape = img.shape().to_vec();
             if img.order() == Order::Fortran {
                 shape.reverse();
             }
-            check_image_memory(&shape, opts).map_err(|e| e.with_path(img.path()))?;
-            let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
-            cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(compute)
+            let value = |i: usize| img.value(i);
+            image_persistence(&shape, Pixels::Read(&value), opts).map_err(|e| e.with_path(img.path()))
         }
         Input::Simplicial(s) => Err(Error::new(
             ErrorKind::Unsupported,
@@ -203,11 +247,12 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
         if img.order() == Order::Fortran {
             shape.reverse();
         }
-        check_image_memory(&shape, opts)?;
-        let values: Vec<f64> = (0..img.len()).map(|i| img.value(i)).collect();
-        let diagram =
-            cubical_persistence(&shape, &values, &cubical_options(opts)).map_err(|e| compute(e).with_path(path))?;
-        let image = (shape.len() == 2 && img.order() == Order::C).then(|| (shape[0], shape[1], values));
+        let value = |i: usize| img.value(i);
+        let diagram = image_persistence(&shape, Pixels::Read(&value), opts).map_err(|e| e.with_path(path))?;
+        // a 2-D image is kept to draw cycles over (cycles come only from the whole grid,
+        // which held it anyway)
+        let image = (shape.len() == 2 && img.order() == Order::C && opts.cycles)
+            .then(|| (shape[0], shape[1], (0..img.len()).map(value).collect()));
         return Ok(Persistence { diagram, image, vertex_centred: opts.construction == Construction::V });
     }
     if ext == "facets" {
@@ -412,14 +457,14 @@ pub fn plot_file(p: &Persistence, out: &Path, barcode: bool) -> Result<()> {
 /// Writes the 2-D image with the cycle of pair `k` drawn over it, SVG or PNG by the
 /// extension of `out`.
 pub fn plot_cycle_file(p: &Persistence, k: usize, out: &Path) -> Result<()> {
-    let (rows, cols, values) =
-        p.image.as_ref().ok_or_else(|| Error::new(ErrorKind::Usage, "cycles are drawn over 2-D images only"))?;
     let chain = p.diagram.cycles.get(k).ok_or_else(|| {
         Error::new(
             ErrorKind::Usage,
             format!("no cycle for pair {k} ({} pairs; cycles asked for?)", p.diagram.pairs.len()),
         )
     })?;
+    let (rows, cols, values) =
+        p.image.as_ref().ok_or_else(|| Error::new(ErrorKind::Usage, "cycles are drawn over 2-D images only"))?;
     let scale = (800 / (*rows).max(*cols)).clamp(1, 20) as u32;
     write_picture(
         out,
