@@ -220,10 +220,8 @@ impl Lattice<'_> {
             count += usize::from(two[a]);
         }
         let mut axes = [0usize; 8];
-        let mut j = 0;
-        for a in (0..d).filter(|&a| two[a]) {
+        for (j, a) in (0..d).filter(|&a| two[a]).enumerate() {
             axes[j] = a;
-            j += 1;
         }
         let axes = &axes[..count];
         for mask in 0..1usize << count {
