@@ -83,6 +83,11 @@ pub fn set_max_memory(bytes: u64) {
     MAX_MEMORY.store(bytes.max(1), Ordering::Relaxed);
 }
 
+/// Returns to the default limit ([`default_max_memory`]) after [`set_max_memory`].
+pub fn clear_max_memory() {
+    MAX_MEMORY.store(0, Ordering::Relaxed);
+}
+
 /// The memory limit in force: the one set by [`set_max_memory`], else
 /// [`default_max_memory`].
 pub fn max_memory() -> u64 {

@@ -149,14 +149,6 @@ impl FilteredComplex {
         Self::default()
     }
 
-    /// The same complex read as the sublevel filtration of values already negated (`sign`
-    /// −1: a superlevel filtration, its diagram reported in the values before negation) or
-    /// not (`sign` 1).
-    pub fn with_sign(mut self, sign: f64) -> Self {
-        self.sign = sign;
-        self
-    }
-
     /// Number of cells of dimension `k`.
     pub fn count(&self, k: usize) -> usize {
         self.cells.get(k).map_or(0, Cells::len)

@@ -5,7 +5,8 @@
 //! (`+inf` if it never does), over `Z/p`. This module computes it for
 //!
 //! * grey images in any dimension ([`cubical`]): T- and V-constructions, sublevel and
-//!   superlevel, periodic;
+//!   superlevel, periodic; and images too large to hold, read pixel by pixel, through the
+//!   Morse complex of their lower stars ([`morse`], 1 to 4 axes, not periodic);
 //! * complexes given cell by cell with their boundaries ([`filtered`]): simplicial complexes
 //!   with a value per simplex, per facet (a face takes the minimum of its cofacets, GUDHI's
 //!   `SimplexTree` convention) or per vertex (lower star), and any cell complex with a value

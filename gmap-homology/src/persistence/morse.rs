@@ -33,7 +33,9 @@
 //! (d-1)-cell has two cofaces at most). A pixel's pairing is computed again whenever a path
 //! meets one of its cells (a small cache per thread keeps the last ones).
 //!
-//! The diagram of the critical complex comes from [`FilteredComplex::diagram`].
+//! The diagram of the critical complex comes from the reduction of [`super::reduce`], from
+//! the top dimension down with clearing: a cell whose column is cleared needs no boundary,
+//! so the gradient paths are followed only from the others.
 //!
 //! Cost: the first pass is `O(3^d · 2^d)` per pixel; the boundaries cost the cells their
 //! gradient paths meet, small on images whose values vary smoothly (few critical cells,
@@ -49,8 +51,8 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use rustc_hash::FxHashMap;
 
 use super::options::{check_field, key, Construction, CubicalOptions};
-use super::reduce::Zp;
-use super::{CellName, Diagram, FilteredComplex, PersistenceError};
+use super::reduce::{reduce_dim, Entry, Zp};
+use super::{Diagram, PersistenceError};
 
 /// Bytes held per critical cell, for the limit: its place in the list (16), its name and
 /// boundary in the critical complex (about 64), and the diagram's reduction (16).
@@ -421,7 +423,6 @@ impl<'a> Gradient<'a> {
     fn class(&mut self, id: u64) -> Result<Class, PersistenceError> {
         let (lat, star) = (self.lat, self.star);
         lat.decode(id, &mut self.c);
-        let own = lat.dim(&self.c);
         let q = lat.owner(&self.c, &mut self.x)?;
         let pixel = self.x.iter().zip(&lat.pstride).map(|(x, s)| x * s).sum::<usize>() as u64;
         let slot = (pixel as usize).wrapping_mul(0x9E37_79B9) % CACHE_SLOTS;
@@ -441,8 +442,9 @@ impl<'a> Gradient<'a> {
             return Ok(Class::Critical);
         }
         let other = lat.cell(star, &self.x, p);
-        lat.decode(other, &mut self.c);
-        Ok(if lat.dim(&self.c) > own { Class::Up(other) } else { Class::Down(other) })
+        // a lattice coface is a coface of the grid in V and a face in T
+        let lattice_up = star.support[p as usize] > star.support[q as usize];
+        Ok(if lattice_up != lat.t { Class::Up(other) } else { Class::Down(other) })
     }
 }
 
@@ -708,72 +710,97 @@ pub fn morse_persistence(
         list.sort_unstable_by_key(|e| e.0);
     }
 
-    // pass 2: the boundaries of the critical cells
-    let position = |k: usize, id: u64| -> u32 {
-        crit[k].binary_search_by_key(&id, |e| e.0).expect("the gradient ends on critical cells") as u32
+    // pass 2, from the top dimension down: the boundaries of the critical cells that are
+    // columns (not cleared by the dimension above), then their reduction
+    let position = |k: usize, id: u64| -> usize {
+        crit[k].binary_search_by_key(&id, |e| e.0).expect("the gradient ends on critical cells")
     };
+    // per dimension, the rank of each critical cell in the order (value, grid index)
+    let rank: Vec<Vec<u32>> = crit
+        .iter()
+        .map(|list| {
+            let mut o: Vec<u32> = (0..list.len() as u32).collect();
+            o.sort_unstable_by_key(|&i| (key(list[i as usize].1), list[i as usize].0));
+            let mut r = vec![0u32; o.len()];
+            for (p, &i) in o.iter().enumerate() {
+                r[i as usize] = p as u32;
+            }
+            r
+        })
+        .collect();
+    let by_rank: Vec<Vec<f64>> = crit
+        .iter()
+        .zip(&rank)
+        .map(|(list, r)| {
+            let mut v = vec![0.0; list.len()];
+            for (i, e) in list.iter().enumerate() {
+                v[r[i] as usize] = e.1;
+            }
+            v
+        })
+        .collect();
     let chunk = 4096usize;
-    let mut boundaries: Vec<Vec<Vec<(u32, i64)>>> = vec![Vec::new(); d + 1];
-    for k in 1..d {
-        let list = &crit[k];
-        let tasks = list.len().div_ceil(chunk);
-        let parts = gmap_core::parallel::map_tasks(tasks, list.len() * 64, |task| {
-            let mut grad = Gradient::new(&lat, &star);
-            let mut out = Vec::new();
-            let mut b = Vec::new();
-            for &(id, _) in &list[task * chunk..((task + 1) * chunk).min(list.len())] {
-                flow_down(&mut grad, zp, id, &mut out)?;
-                b.push(out.iter().map(|&(f, c)| (position(k - 1, f), c as i64)).collect::<Vec<_>>());
-            }
-            Ok::<_, PersistenceError>(b)
-        });
-        for p in parts {
-            boundaries[k].extend(p?);
-        }
-    }
-    {
-        // the top cells, from the critical (d-1)-cells up
-        let list = &crit[d - 1];
-        let tasks = list.len().div_ceil(chunk);
-        let parts = gmap_core::parallel::map_tasks(tasks, list.len() * 64, |task| {
-            let mut grad = Gradient::new(&lat, &star);
-            let mut out = Vec::new();
-            for &(id, _) in &list[task * chunk..((task + 1) * chunk).min(list.len())] {
-                flow_up(&mut grad, zp, id, &mut out)?;
-            }
-            Ok::<_, PersistenceError>(out)
-        });
-        let mut top: Vec<Vec<(u32, i64)>> = vec![Vec::new(); crit[d].len()];
-        for p in parts {
-            for (g, f, coef) in p? {
-                top[position(d, g) as usize].push((position(d - 1, f), coef as i64));
-            }
-        }
-        for b in &mut top {
-            b.sort_unstable();
-            // a face met along two paths: add the coefficients
-            let mut merged: Vec<(u32, i64)> = Vec::with_capacity(b.len());
-            for &(f, c) in b.iter() {
-                match merged.last_mut() {
-                    Some(last) if last.0 == f => last.1 = zp.add(zp.of(last.1), zp.of(c)) as i64,
-                    _ => merged.push((f, c)),
+    let mut diagram = Diagram::new(opts.field);
+    let mut claimed: Vec<bool> = Vec::new();
+    for k in (1..=d).rev() {
+        // columns[rank]: the boundary of the k-cell of that rank, as ranks of (k-1)-cells
+        let mut columns: Vec<Vec<Entry>> = vec![Vec::new(); crit[k].len()];
+        if k == d {
+            // the top cells, from every critical (d-1)-cell up
+            let list = &crit[d - 1];
+            let parts = gmap_core::parallel::map_tasks(list.len().div_ceil(chunk), list.len() * 64, |task| {
+                let mut grad = Gradient::new(&lat, &star);
+                let mut out = Vec::new();
+                for &(id, _) in &list[task * chunk..((task + 1) * chunk).min(list.len())] {
+                    flow_up(&mut grad, zp, id, &mut out)?;
+                }
+                Ok::<_, PersistenceError>(out)
+            });
+            for part in parts {
+                for (g, f, coef) in part? {
+                    columns[rank[d][position(d, g)] as usize].push((rank[d - 1][position(d - 1, f)], coef));
                 }
             }
-            merged.retain(|e| zp.of(e.1) != 0);
-            *b = merged;
+        } else {
+            let list: Vec<(usize, u64)> = crit[k]
+                .iter()
+                .enumerate()
+                .filter(|&(i, _)| !claimed.get(rank[k][i] as usize).copied().unwrap_or(false))
+                .map(|(i, e)| (i, e.0))
+                .collect();
+            let parts = gmap_core::parallel::map_tasks(list.len().div_ceil(chunk), list.len() * 64, |task| {
+                let mut grad = Gradient::new(&lat, &star);
+                let mut out = Vec::new();
+                let mut b = Vec::new();
+                for &(i, id) in &list[task * chunk..((task + 1) * chunk).min(list.len())] {
+                    flow_down(&mut grad, zp, id, &mut out)?;
+                    let col: Vec<Entry> = out.iter().map(|&(f, c)| (rank[k - 1][position(k - 1, f)], c)).collect();
+                    b.push((rank[k][i], col));
+                }
+                Ok::<_, PersistenceError>(b)
+            });
+            for part in parts {
+                for (r, col) in part? {
+                    columns[r as usize] = col;
+                }
+            }
         }
-        boundaries[d] = top;
+        let cols = (0..crit[k].len() as u32).filter(|&j| !claimed.get(j as usize).copied().unwrap_or(false));
+        let r =
+            reduce_dim(zp, crit[k - 1].len(), cols, |j, out| out.extend_from_slice(&columns[j as usize]), false, false);
+        for &(row, col) in &r.pairs {
+            diagram.push(k - 1, by_rank[k - 1][row as usize], by_rank[k][col as usize], sign, None);
+        }
+        for &col in &r.zero {
+            diagram.push(k, by_rank[k][col as usize], f64::INFINITY, sign, None);
+        }
+        claimed = r.claimed;
     }
-
-    let mut fc = FilteredComplex::new().with_sign(sign);
-    let mut c = vec![0u64; d];
-    for k in 0..=d {
-        let mut bs = std::mem::take(&mut boundaries[k]).into_iter();
-        for &(id, v) in &crit[k] {
-            lat.decode(id, &mut c);
-            let b = if k == 0 { Vec::new() } else { bs.next().unwrap_or_default() };
-            fc.try_push(k, v, b, CellName::Grid(c.iter().map(|&x| x as usize).collect()))?;
+    for (j, &v) in by_rank[0].iter().enumerate() {
+        if !claimed.get(j).copied().unwrap_or(false) {
+            diagram.push(0, v, f64::INFINITY, sign, None);
         }
     }
-    fc.diagram(opts.field, false)
+    diagram.finish();
+    Ok(diagram)
 }
