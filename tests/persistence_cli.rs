@@ -127,21 +127,60 @@ fn an_architectural_complex_filtered_by_its_labels() {
 }
 
 #[test]
-fn an_image_past_the_memory_limit_is_refused_with_the_estimate() {
-    let coins = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/images/coins.pgm");
-    // 16 MiB for the program, then 51 × 64 pixels at 64 bytes each by the pixel route
-    let out = gmap(&["persistence", coins.to_str().unwrap(), "--max-memory", "16M"]);
+fn an_image_past_the_memory_limit_takes_its_lower_stars_or_is_refused() {
+    let images = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/images");
+    let coins = images.join("coins.pgm");
+    let coins = coins.to_str().unwrap();
+    // 16 MiB for the program, then 51 × 64 pixels at 64 bytes each by the pixel route: past
+    // 16M, the Morse route; with no room for a critical cell it is refused with the count
+    let out = gmap(&["persistence", coins, "--max-memory", "16M"]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("coins.pgm: the persistence diagram of a 51×64 image would take an estimated 16986112 bytes, over the memory limit of 16777216 bytes (--max-memory)"),
+        err.contains("coins.pgm: too large: the image of shape [51, 64] has more than 0 critical cells, over the memory limit of 16777216 bytes at 96 bytes each"),
         "{err}"
     );
-    // with cycles, the general route's grid: 103 × 129 cells at 256 bytes
-    let out = gmap(&["persistence", coins.to_str().unwrap(), "--cycles", "--max-memory", "17M"]);
-    assert!(String::from_utf8_lossy(&out.stderr).contains("estimated 20178688 bytes"));
-    let out = gmap(&["persistence", coins.to_str().unwrap(), "--max-memory", "17M"]);
+    // with cycles, the general route's grid: 103 × 129 cells at 256 bytes; the Morse route
+    // takes no cycles
+    let out = gmap(&["persistence", coins, "--cycles", "--max-memory", "17M"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("a 51×64 image would take an estimated 20178688 bytes, over the memory limit of 17825792 bytes (--max-memory); past the limit an image is computed from its lower stars, which takes neither periodic images nor cycles"),
+        "{err}"
+    );
+    let out = gmap(&["persistence", coins, "--periodic", "--max-memory", "16587K"]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("neither periodic images nor cycles"));
+    let out = gmap(&["persistence", coins, "--max-memory", "17M"]);
     assert!(out.status.success());
+    // the Morse route (16 MiB and 203 KiB: room for 2,165 critical cells, of the 1,321 to
+    // 1,957 these images keep) gives GUDHI's
+    // recorded diagrams, both constructions, sublevel and superlevel, over Z/2 and Z/3
+    for name in ["coins", "camera", "moon"] {
+        let file = images.join(format!("{name}.npy"));
+        let rec: Value =
+            serde_json::from_str(&std::fs::read_to_string(images.join(format!("{name}.json"))).unwrap()).unwrap();
+        for cons in ["T", "V"] {
+            for (level, flag) in [("sub", None), ("super", Some("--superlevel"))] {
+                for p in ["2", "3"] {
+                    let mut args =
+                        vec!["persistence", file.to_str().unwrap(), "--construction", cons, "--field", p, "--json"];
+                    args.extend(flag);
+                    let whole = gmap(&args);
+                    args.extend(["--max-memory", "16587K"]);
+                    let morse = gmap(&args);
+                    assert!(
+                        morse.status.success(),
+                        "{name} {cons} {level} {p}: {}",
+                        String::from_utf8_lossy(&morse.stderr)
+                    );
+                    let got: Value = serde_json::from_slice(&morse.stdout).unwrap();
+                    let key = format!("{cons}_{level}_n_{p}");
+                    assert_eq!(sorted(&got["pairs"]), sorted(&rec["diagrams"][&key]), "{name} {key}");
+                    assert_eq!(morse.stdout, whole.stdout, "{name} {key}");
+                }
+            }
+        }
+    }
 }
 
 /// Decodes a PNG file: (width, height, RGB bytes).

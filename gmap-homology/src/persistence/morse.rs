@@ -33,16 +33,20 @@
 //! (d-1)-cell has two cofaces at most). A pixel's pairing is computed again whenever a path
 //! meets one of its cells (a small cache per thread keeps the last ones).
 //!
-//! The diagram of the critical complex comes from the reduction of [`super::reduce`], from
-//! the top dimension down with clearing: a cell whose column is cleared needs no boundary,
-//! so the gradient paths are followed only from the others.
+//! The diagram of the critical complex comes from the column reduction the other routes
+//! use, from the top dimension down with clearing: a cell whose column is cleared needs no
+//! boundary, so the gradient paths are followed only from the others.
 //!
-//! Cost: the first pass is `O(3^d · 2^d)` per pixel; the boundaries cost the cells their
-//! gradient paths meet, small on images whose values vary smoothly (few critical cells,
-//! whatever the size) and large on noise, where a good part of the cells stay critical.
-//! Memory: about [`BYTES_PER_CRITICAL`] per critical cell, checked against the limit given
-//! while the first pass runs. Not built: periodic images (a torus) and representative
-//! cycles (a cycle of the critical complex is not one of the image until mapped back).
+//! Cost: the first pass is `O(3^d · 2^d)` per pixel, on every thread; the boundaries cost
+//! the cells their gradient paths meet, small on images whose values vary smoothly (few
+//! critical cells, whatever the size) and large on noise, where a good part of the cells
+//! stay critical. Plateaus (equal neighbours, as in 8-bit images) are ordered by index,
+//! which leaves critical cells of zero persistence where plateaus meet. Memory: about
+//! [`BYTES_PER_CRITICAL`] per critical cell, checked against the limit given while the
+//! first pass runs, and a cache of pairings per thread (a few MB). Images of 1 to 4 axes
+//! (the order G of a lower star is kept as a 128-bit mask of the 3^d − 1 neighbours). Not
+//! built: periodic images (a torus) and representative cycles (a cycle of the critical
+//! complex is not one of the image until mapped back).
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
