@@ -43,8 +43,10 @@ from ._gmap import (
     _page,
     _page_frame,
     homology,
+    max_memory,
     open,
     persistence,
+    set_max_memory,
 )
 from . import build
 
@@ -66,8 +68,10 @@ __all__ = [
     "build",
     "homology",
     "incidence_graph",
+    "max_memory",
     "open",
     "persistence",
+    "set_max_memory",
 ]
 
 __version__ = "0.1.0"

@@ -229,6 +229,14 @@ def persistence(
     vertex_values (the lower-star filtration: {label: value} or a sequence indexed by label)
     or facet_values (one per facet, in the order of its facets; a face takes the minimum)."""
 
+def set_max_memory(nbytes: Optional[int]) -> None:
+    """The memory limit of the calls that follow (the command's --max-memory): work whose
+    estimate passes it is refused with LimitError, and a grey array past it takes the Morse
+    route of persistence (its lower stars, read in place). None restores the default."""
+
+def max_memory() -> int:
+    """The memory limit in force, in bytes."""
+
 def open(path: PathLike) -> Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]:
     """What the file holds."""
 

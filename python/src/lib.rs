@@ -530,6 +530,31 @@ fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<
     Py::new(py, PyGMap::from_complex(&m, sc))
 }
 
+/// set_max_memory(nbytes): the memory limit of the calls that follow (the command's
+/// `--max-memory`): work whose estimate passes it is refused with LimitError, and a grey
+/// array past it takes the Morse route of `persistence`. None restores the default, half
+/// the physical memory.
+#[pyfunction]
+fn set_max_memory(nbytes: Option<u64>) -> PyResult<()> {
+    match nbytes {
+        Some(0) => Err(Failure::input("a memory limit of 0 bytes").into()),
+        Some(b) => {
+            gmap::core::resources::set_max_memory(b);
+            Ok(())
+        }
+        None => {
+            gmap::core::resources::clear_max_memory();
+            Ok(())
+        }
+    }
+}
+
+/// max_memory(): the memory limit in force, in bytes.
+#[pyfunction]
+fn max_memory() -> u64 {
+    gmap::core::resources::max_memory()
+}
+
 /// The compiled module.
 #[pymodule]
 fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -543,6 +568,8 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(homology, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
     m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
+    m.add_function(wrap_pyfunction!(set_max_memory, m)?)?;
+    m.add_function(wrap_pyfunction!(max_memory, m)?)?;
     m.add_function(wrap_pyfunction!(page::_page, m)?)?;
     m.add_function(wrap_pyfunction!(page::_page_frame, m)?)?;
     m.add_function(wrap_pyfunction!(_bench_json, m)?)?;

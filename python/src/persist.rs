@@ -1,22 +1,24 @@
 //! `gmap.persistence(x, …)`: the persistence diagram of a path, a numpy grey array or a
 //! package object, through the facade (`gmap::persistence`, `gmap::persistence_file`) and,
-//! for a numpy array read in place when it is float64 and contiguous, the facade's engine
-//! for images (`gmap_homology::persistence::cubical_persistence`).
+//! for a numpy array, the facade's diagram of an image (`gmap::persistence::image_persistence`:
+//! the whole grid, or past the memory limit the Morse route reading the array in place).
 
 use std::path::PathBuf;
 
 use gmap::{Input, PersistenceOptions};
-use gmap_homology::persistence::{cubical_persistence, CellName, Construction, Diagram, PersistenceError};
+use gmap_homology::persistence::{CellName, Construction, Diagram};
 use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
-use crate::errors::{Failure, Kind};
+use crate::errors::Failure;
 use crate::gmapobj::PyGMap;
 use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
 
 /// The diagram of a numpy grey array (1 to 8 axes, numbers or booleans), in numpy's axis
 /// order; a float64 C-contiguous array is read in place, anything else converted once.
+/// Past the memory limit (the facade's Morse route) a C-contiguous array of any of those
+/// types is read in place, and another one converted only when its float64 copy fits.
 fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -> PyResult<Diagram> {
     let arr = x.downcast::<numpy::PyUntypedArray>()?;
     let nd = arr.ndim();
@@ -32,7 +34,20 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
         .into());
     }
     let shape = arr.shape().to_vec();
-    gmap::persistence::check_image_memory(&shape, o).map_err(Failure::from)?;
+    if let Err(whole) = gmap::persistence::check_image_memory(&shape, o) {
+        // numpy's as_slice also takes Fortran order: only C order is read in place
+        if arr.is_c_contiguous() {
+            if let Some(d) = in_place(py, x, &shape, o)? {
+                return Ok(d);
+            }
+        }
+        // the float64 copy must fit
+        let copy = shape.iter().try_fold(8u64, |b, &s| b.checked_mul(s as u64));
+        let copy = copy.and_then(|b| b.checked_add(gmap_homology::persistence::cubical::PROCESS_BYTES));
+        if copy.is_none_or(|b| b > gmap::core::resources::max_memory()) {
+            return Err(Failure::from(whole).into());
+        }
+    }
     let np = py.import("numpy")?;
     let values = np.call_method1("ascontiguousarray", (x, "float64"))?;
     let values = values.downcast::<numpy::PyArrayDyn<f64>>()?.readonly();
@@ -40,17 +55,39 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
     if let Some(i) = v.iter().position(|x| x.is_nan()) {
         return Err(Failure::input(format!("the grey array has NaN at flat index {i}")).into());
     }
-    let opts = gmap::persistence::cubical_options(o);
-    Ok(py.allow_threads(|| cubical_persistence(&shape, v, &opts)).map_err(engine_error)?)
+    let pixels = gmap::persistence::Pixels::Slice(v);
+    Ok(py.allow_threads(|| gmap::persistence::image_persistence(&shape, pixels, o)).map_err(Failure::from)?)
 }
 
-/// The engine's refusal as the package's exception: LimitError past its sizes, else
-/// InputError.
-fn engine_error(e: PersistenceError) -> Failure {
-    match e {
-        PersistenceError::TooLarge(_) => Failure::new(Kind::Limit, e.to_string()),
-        e => Failure::input(e.to_string()),
+/// The diagram of a C-contiguous numeric or boolean array read in place, pixel by pixel
+/// (`None`: not such a type). The caller checks the order.
+fn in_place(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    shape: &[usize],
+    o: &PersistenceOptions,
+) -> PyResult<Option<Diagram>> {
+    use gmap::persistence::{image_persistence, Pixels};
+    macro_rules! read {
+        ($($t:ty),*) => {$(
+            if let Ok(a) = x.downcast::<numpy::PyArrayDyn<$t>>() {
+                let a = a.readonly();
+                let Ok(v) = a.as_slice() else { return Ok(None) };
+                let value = |i: usize| v[i] as f64;
+                let d = py.allow_threads(|| image_persistence(shape, Pixels::Read(&value), o));
+                return Ok(Some(d.map_err(Failure::from)?));
+            }
+        )*};
     }
+    read!(f64, f32, u8, u16, u32, u64, i8, i16, i32, i64);
+    if let Ok(a) = x.downcast::<numpy::PyArrayDyn<bool>>() {
+        let a = a.readonly();
+        let Ok(v) = a.as_slice() else { return Ok(None) };
+        let value = |i: usize| f64::from(u8::from(v[i]));
+        let d = py.allow_threads(|| image_persistence(shape, Pixels::Read(&value), o));
+        return Ok(Some(d.map_err(Failure::from)?));
+    }
+    Ok(None)
 }
 
 /// The (k, 3) float64 array of (dimension, birth, death).

@@ -250,6 +250,44 @@ def test_persistence_errors():
         gmap.persistence(huge)
 
 
+def test_an_array_past_the_memory_limit_takes_its_lower_stars():
+    rng = np.random.default_rng(5)
+    assert gmap.max_memory() > 1 << 30
+    program = 16 << 20
+    try:
+        # the limit one byte below the whole grid's estimate: 64 bytes a pixel in 2-D,
+        # 108 (V over Z/3) or 160 (T over Z/3) per point of the padded grid in 3-D
+        y, x = np.mgrid[0:60, 0:70]
+        smooth = np.sin(x / 5.0) * np.cos(y / 7.0) + 0.3 * np.sin((x + y) / 3.0) + 0.05 * rng.random((60, 70))
+        three = lambda n, c: (16 * 17 * 18) * (108 if c == "V" else 160)
+        for a, per in [(smooth, lambda n, c: 64 * n), (rng.random((14, 15, 16)), three)]:
+            for c in "TV":
+                for superlevel in (False, True):
+                    kw = dict(construction=c, superlevel=superlevel, field=3)
+                    gmap.set_max_memory(None)
+                    whole = ours(a, **kw)
+                    gmap.set_max_memory(program + per(a.size, c) - 1)
+                    assert ours(a, **kw) == whole, (a.shape, kw)
+                    # read in place in its own type, or converted when not contiguous
+                    grey = ((a - a.min()) * 60).astype(np.uint8)
+                    assert ours(grey, **kw) == ours(grey.astype(float), **kw)
+                    assert ours(np.asfortranarray(a), **kw) == whole
+        # no cycles, no torus, and no room for the critical cells: refused with the reason
+        gmap.set_max_memory(program + 64 * 4200 - 1)
+        a = rng.random((60, 70))
+        with pytest.raises(gmap.LimitError, match=r"neither periodic images nor cycles"):
+            gmap.persistence(a, cycles=True)
+        with pytest.raises(gmap.LimitError, match=r"neither periodic images nor cycles"):
+            gmap.persistence(a, periodic=True)
+        gmap.set_max_memory(program + 96 * 10)
+        with pytest.raises(gmap.LimitError, match=r"more than 10 critical cells"):
+            gmap.persistence(rng.random((200, 200)))
+        with pytest.raises(gmap.InputError):
+            gmap.set_max_memory(0)
+    finally:
+        gmap.set_max_memory(None)
+
+
 def test_persistence_of_a_cubical_set_and_a_valued_map():
     a = np.array([[1, 1, 1], [1, 0, 1], [1, 1, 1]], dtype=bool)
     d = gmap.persistence(gmap.CubicalSet(a))
