@@ -227,7 +227,9 @@ def persistence(
     birth, death), inf for essential classes; with cycles=True also a representative cycle
     per pair, (cells, coefficients) in the input's terms. A simplicial complex takes
     vertex_values (the lower-star filtration: {label: value} or a sequence indexed by label)
-    or facet_values (one per facet, in the order of its facets; a face takes the minimum)."""
+    or facet_values (one per facet, in the order of its facets; a face takes the minimum).
+    An image past the memory limit (set_max_memory) is computed from its lower stars, read
+    in place (1 to 4 axes, neither periodic nor with cycles)."""
 
 def set_max_memory(nbytes: Optional[int]) -> None:
     """The memory limit of the calls that follow (the command's --max-memory): work whose

@@ -257,6 +257,9 @@ fn given_values_diagram(
 /// star). For images, `construction` is "T" (values on top cells, GUDHI's
 /// `top_dimensional_cells`) or "V" (values on vertices, CubicalRipser's default) and
 /// `periodic` identifies opposite faces; a complex refuses periodic and construction "V".
+/// An image whose diagram would pass the memory limit (`set_max_memory`) is computed from
+/// its lower stars, the array read in place (1 to 4 axes, neither periodic nor with
+/// cycles; LimitError otherwise, or when its critical cells pass the limit).
 ///
 /// A simplicial complex, given as a SimplicialComplex, as facets (a list or tuple of
 /// sequences of vertex labels; a numpy array is an image) or as the path of one (`.facets`
