@@ -243,7 +243,9 @@ fn morse(shape: &[usize], values: &[f64], opts: &CubicalOptions) -> Result<Diagr
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(96))]
+    // cheap cases (under a millisecond each); a sign lost on the gradient's paths over Z/3
+    // shows only on some arrays
+    #![proptest_config(ProptestConfig::with_cases(1024))]
 
     #[test]
     fn the_morse_route_equals_a_plain_reduction(
@@ -271,6 +273,10 @@ proptest! {
         let whole = cubical_persistence(&shape, &values, &opts).unwrap();
         prop_assert_eq!(ours(&morse(&shape, &values, &opts).unwrap()), ours(&whole));
     }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
 
     #[test]
     fn diagrams_equal_a_plain_reduction(
