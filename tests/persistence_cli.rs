@@ -145,7 +145,7 @@ fn an_image_past_the_memory_limit_takes_its_lower_stars_or_is_refused() {
     let out = gmap(&["persistence", coins, "--cycles", "--max-memory", "17M"]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("a 51×64 image would take an estimated 20178688 bytes, over the memory limit of 17825792 bytes (--max-memory); past the limit an image is computed from its lower stars, which takes neither periodic images nor cycles"),
+        err.contains("a 51×64 image would take an estimated 20178688 bytes, over the memory limit of 17825792 bytes (--max-memory); past the limit an image is computed from its lower stars, which takes 1 to 4 axes and neither periodic images nor cycles"),
         "{err}"
     );
     let out = gmap(&["persistence", coins, "--periodic", "--max-memory", "16587K"]);

@@ -96,8 +96,8 @@ pub enum Pixels<'a> {
 /// built (the values copied once if they are read one by one); past it, the Morse complex
 /// of its lower stars ([`gmap_homology::persistence::morse`]) is computed from the pixels
 /// as they are read, holding only its critical cells: refused with the estimate if the
-/// image is periodic or cycles are asked for (that route has neither), and with the count
-/// if its critical cells pass the limit.
+/// image is periodic, has more than 4 axes or cycles are asked for (that route takes none
+/// of these), and with the count if its critical cells pass the limit.
 pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &PersistenceOptions) -> Result<Diagram> {
     let engine = cubical_options(opts);
     match check_image_memory(shape, opts) {
@@ -112,8 +112,8 @@ pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &Persistence
             };
             cubical_persistence(shape, values, &engine).map_err(compute)
         }
-        Err(e) if opts.periodic || opts.cycles => Err(e.flattened(
-            "; past the limit an image is computed from its lower stars, which takes neither periodic images nor cycles",
+        Err(e) if opts.periodic || opts.cycles || shape.len() > 4 => Err(e.flattened(
+            "; past the limit an image is computed from its lower stars, which takes 1 to 4 axes and neither periodic images nor cycles",
         )),
         Err(_) => {
             let limit = gmap_core::resources::max_memory();

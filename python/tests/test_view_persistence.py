@@ -279,6 +279,8 @@ def test_an_array_past_the_memory_limit_takes_its_lower_stars():
             gmap.persistence(a, cycles=True)
         with pytest.raises(gmap.LimitError, match=r"neither periodic images nor cycles"):
             gmap.persistence(a, periodic=True)
+        with pytest.raises(gmap.LimitError, match=r"which takes 1 to 4 axes"):
+            gmap.persistence(rng.random((3, 3, 3, 3, 3)))
         gmap.set_max_memory(program + 96 * 10)
         with pytest.raises(gmap.LimitError, match=r"more than 10 critical cells"):
             gmap.persistence(rng.random((200, 200)))
