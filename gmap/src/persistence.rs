@@ -248,11 +248,18 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
             shape.reverse();
         }
         let value = |i: usize| img.value(i);
-        let diagram = image_persistence(&shape, Pixels::Read(&value), opts).map_err(|e| e.with_path(path))?;
-        // a 2-D image is kept to draw cycles over (cycles come only from the whole grid,
-        // which held it anyway)
-        let image = (shape.len() == 2 && img.order() == Order::C && opts.cycles)
-            .then(|| (shape[0], shape[1], (0..img.len()).map(value).collect()));
+        // a 2-D image with cycles is kept to draw them over: its values are read once, and
+        // the same copy is the whole grid's (cycles come from no other route; past the limit
+        // nothing is read before the refusal)
+        let keep = shape.len() == 2 && img.order() == Order::C && opts.cycles;
+        let kept: Option<Vec<f64>> =
+            (keep && check_image_memory(&shape, opts).is_ok()).then(|| (0..img.len()).map(value).collect());
+        let pixels = match &kept {
+            Some(v) => Pixels::Slice(v),
+            None => Pixels::Read(&value),
+        };
+        let diagram = image_persistence(&shape, pixels, opts).map_err(|e| e.with_path(path))?;
+        let image = kept.map(|v| (shape[0], shape[1], v));
         return Ok(Persistence { diagram, image, vertex_centred: opts.construction == Construction::V });
     }
     if ext == "facets" {

@@ -47,13 +47,13 @@ use super::{CellName, Diagram, PersistenceError};
 #[derive(Clone, Debug)]
 pub(crate) struct Grid {
     pub(crate) m: Vec<usize>,
-    stride: Vec<usize>,
+    pub(crate) stride: Vec<usize>,
     periodic: bool,
-    len: usize,
+    pub(crate) len: usize,
 }
 
 impl Grid {
-    fn new(m: Vec<usize>, periodic: bool) -> Option<Self> {
+    pub(crate) fn new(m: Vec<usize>, periodic: bool) -> Option<Self> {
         let d = m.len();
         let mut stride = vec![1usize; d];
         let mut len = 1usize;
@@ -69,7 +69,7 @@ impl Grid {
     }
 
     #[inline]
-    fn coord(&self, g: usize, a: usize) -> usize {
+    pub(crate) fn coord(&self, g: usize, a: usize) -> usize {
         (g / self.stride[a]) % self.m[a]
     }
 
@@ -78,7 +78,7 @@ impl Grid {
     }
 
     #[inline]
-    fn dim(&self, g: usize) -> usize {
+    pub(crate) fn dim(&self, g: usize) -> usize {
         (0..self.d()).filter(|&a| self.coord(g, a) & 1 == 1).count()
     }
 
@@ -93,7 +93,7 @@ impl Grid {
     }
 
     /// The signed faces of `g`: along its j-th odd axis, `+(-1)^j` above and `-(-1)^j` below.
-    fn faces(&self, g: usize, out: &mut Vec<(usize, i64)>) {
+    pub(crate) fn faces(&self, g: usize, out: &mut Vec<(usize, i64)>) {
         out.clear();
         let mut j = 0;
         for a in 0..self.d() {
@@ -109,7 +109,7 @@ impl Grid {
 
     /// The one or two cofaces of `g` along even axis `a` (`None` past a non-periodic side).
     #[inline]
-    fn cofaces(&self, g: usize, a: usize) -> [Option<usize>; 2] {
+    pub(crate) fn cofaces(&self, g: usize, a: usize) -> [Option<usize>; 2] {
         let (c, s) = (self.coord(g, a), self.stride[a]);
         let lo = if c > 0 {
             Some(g - s)

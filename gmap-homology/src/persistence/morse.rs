@@ -54,6 +54,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rustc_hash::FxHashMap;
 
+use super::cubical::Grid;
 use super::options::{check_field, key, Construction, CubicalOptions};
 use super::reduce::{reduce_dim, Entry, Zp};
 use super::{Diagram, PersistenceError};
@@ -128,9 +129,9 @@ struct Lattice<'a> {
     /// pixels per axis (C order: the last fastest)
     n: Vec<usize>,
     pstride: Vec<usize>,
-    /// points of the doubled grid per axis: `2n - 1` (V) or `2n + 1` (T)
-    m: Vec<u64>,
-    gstride: Vec<u64>,
+    /// the doubled grid of [`super::cubical`], not periodic: `2n - 1` points per axis (V)
+    /// or `2n + 1` (T)
+    grid: Grid,
     t: bool,
     sign: f64,
     value: &'a (dyn Fn(usize) -> f64 + Sync),
@@ -162,54 +163,26 @@ impl Lattice<'_> {
         Ok(if self.t { !r } else { r })
     }
 
-    fn decode(&self, id: u64, c: &mut [u64]) {
-        for a in 0..self.d() {
-            c[a] = (id / self.gstride[a]) % self.m[a];
-        }
-    }
-
-    fn encode(&self, c: &[u64]) -> u64 {
-        c.iter().zip(&self.gstride).map(|(x, s)| x * s).sum()
-    }
-
-    fn dim(&self, c: &[u64]) -> usize {
-        c.iter().filter(|&&x| x & 1 == 1).count()
-    }
-
     /// The primal cell of local cube `q` of pixel `x`: `2x + δ` (V), `2x + 1 + δ` (T).
-    fn cell(&self, star: &Star, x: &[usize], q: u16) -> u64 {
+    fn cell(&self, star: &Star, x: &[usize], q: u16) -> usize {
         let dq = &star.delta[q as usize * star.d..(q as usize + 1) * star.d];
         let off = i64::from(self.t);
-        (0..self.d()).map(|a| (2 * x[a] as i64 + off + dq[a] as i64) as u64 * self.gstride[a]).sum()
+        (0..self.d()).map(|a| (2 * x[a] as i64 + off + dq[a] as i64) as usize * self.grid.stride[a]).sum()
     }
 
-    /// The signed faces of grid cell `c` (coordinates): along its j-th odd axis,
-    /// `+(-1)^j` above and `-(-1)^j` below, as in [`super::cubical`].
-    fn faces(&self, c: &[u64], out: &mut Vec<(u64, i64)>) {
-        out.clear();
-        let id = self.encode(c);
-        let mut j = 0;
-        for a in 0..self.d() {
-            if c[a] & 1 == 1 {
-                let s = if j % 2 == 0 { 1 } else { -1 };
-                out.push((id - self.gstride[a], -s));
-                out.push((id + self.gstride[a], s));
-                j += 1;
-            }
-        }
-    }
-
-    /// The owner of grid cell `c` (its pixel coordinates in `x`) and the local cube it is
+    /// The owner of grid cell `g` (its pixel coordinates in `x`) and the local cube it is
     /// in that pixel's star.
-    fn owner(&self, c: &[u64], x: &mut [usize]) -> Result<u16, PersistenceError> {
+    fn owner(&self, g: usize, x: &mut [usize]) -> Result<u16, PersistenceError> {
         let d = self.d();
         let mut best: Option<(Rank, usize)> = None;
         // candidate pixels per axis: one or two
         let mut lo = [0usize; 8];
         let mut two = [false; 8];
         let mut count = 0;
+        let mut c = [0usize; 8];
         for a in 0..d {
-            let ca = c[a] as usize;
+            let ca = self.grid.coord(g, a);
+            c[a] = ca;
             if !self.t {
                 lo[a] = ca / 2;
                 two[a] = ca & 1 == 1;
@@ -393,9 +366,9 @@ struct Scratch {
 enum Class {
     Critical,
     /// paired with this coface
-    Up(u64),
+    Up(usize),
     /// paired with this face
-    Down(u64),
+    Down(usize),
 }
 
 /// The pairings of the pixels last asked for (direct-mapped by pixel index), and buffers.
@@ -406,7 +379,6 @@ struct Gradient<'a> {
     classes: Vec<u16>,
     scratch: Scratch,
     x: Vec<usize>,
-    c: Vec<u64>,
 }
 
 const CACHE_SLOTS: usize = 1 << 16;
@@ -420,14 +392,12 @@ impl<'a> Gradient<'a> {
             classes: vec![OUT; CACHE_SLOTS * star.len()],
             scratch: Scratch::default(),
             x: vec![0; lat.d()],
-            c: vec![0; lat.d()],
         }
     }
 
-    fn class(&mut self, id: u64) -> Result<Class, PersistenceError> {
+    fn class(&mut self, id: usize) -> Result<Class, PersistenceError> {
         let (lat, star) = (self.lat, self.star);
-        lat.decode(id, &mut self.c);
-        let q = lat.owner(&self.c, &mut self.x)?;
+        let q = lat.owner(id, &mut self.x)?;
         let pixel = self.x.iter().zip(&lat.pstride).map(|(x, s)| x * s).sum::<usize>() as u64;
         let slot = (pixel as usize).wrapping_mul(0x9E37_79B9) % CACHE_SLOTS;
         let k = star.len();
@@ -454,28 +424,25 @@ impl<'a> Gradient<'a> {
 
 /// `∂_M` of a critical cell of dimension 1 to d-1: its boundary flowed down the gradient,
 /// the cells reached visited in topological order. Entries are (critical face, coefficient).
-fn flow_down(grad: &mut Gradient<'_>, zp: Zp, id: u64, out: &mut Vec<(u64, u32)>) -> Result<(), PersistenceError> {
+fn flow_down(grad: &mut Gradient<'_>, zp: Zp, id: usize, out: &mut Vec<(usize, u32)>) -> Result<(), PersistenceError> {
     let lat = grad.lat;
     out.clear();
-    let mut c = vec![0u64; lat.d()];
     let mut faces = Vec::new();
-    lat.decode(id, &mut c);
-    lat.faces(&c, &mut faces);
+    lat.grid.faces(id, &mut faces);
     // the faces reached: each one's class, its successors `succ[start..end]` (the faces of
     // the coface it is paired with), its DFS state (0 new, 1 on the stack, 2 done)
-    let mut index: FxHashMap<u64, u32> = FxHashMap::default();
-    let mut nodes: Vec<(u64, Class, usize, usize)> = Vec::new();
+    let mut index: FxHashMap<usize, u32> = FxHashMap::default();
+    let mut nodes: Vec<(usize, Class, usize, usize)> = Vec::new();
     let mut state: Vec<u8> = Vec::new();
-    let mut succ: Vec<(u64, i64)> = Vec::new();
+    let mut succ: Vec<(usize, i64)> = Vec::new();
     let mut post: Vec<u32> = Vec::new();
     let mut stack: Vec<(u32, usize)> = Vec::new();
-    let mut gc = vec![0u64; lat.d()];
     let mut gf = Vec::new();
-    let mut visit = |f: u64,
+    let mut visit = |f: usize,
                      grad: &mut Gradient<'_>,
-                     nodes: &mut Vec<(u64, Class, usize, usize)>,
+                     nodes: &mut Vec<(usize, Class, usize, usize)>,
                      state: &mut Vec<u8>,
-                     succ: &mut Vec<(u64, i64)>|
+                     succ: &mut Vec<(usize, i64)>|
      -> Result<u32, PersistenceError> {
         if let Some(&i) = index.get(&f) {
             return Ok(i);
@@ -483,8 +450,7 @@ fn flow_down(grad: &mut Gradient<'_>, zp: Zp, id: u64, out: &mut Vec<(u64, u32)>
         let class = grad.class(f)?;
         let start = succ.len();
         if let Class::Up(g) = class {
-            lat.decode(g, &mut gc);
-            lat.faces(&gc, &mut gf);
+            lat.grid.faces(g, &mut gf);
             succ.extend_from_slice(&gf);
         }
         let i = nodes.len() as u32;
@@ -562,32 +528,31 @@ fn flow_down(grad: &mut Gradient<'_>, zp: Zp, id: u64, out: &mut Vec<(u64, u32)>
 }
 
 /// The coefficient of face `f` in the boundary of `g`, and `g`'s faces into `buf`.
-fn incidence(lat: &Lattice<'_>, g: u64, f: u64, buf: &mut Vec<(u64, i64)>) -> i64 {
-    let mut gc = vec![0u64; lat.d()];
-    lat.decode(g, &mut gc);
-    lat.faces(&gc, buf);
+fn incidence(lat: &Lattice<'_>, g: usize, f: usize, buf: &mut Vec<(usize, i64)>) -> i64 {
+    lat.grid.faces(g, buf);
     buf.iter().find(|e| e.0 == f).map_or(0, |e| e.1)
 }
 
 /// The cofaces of a (d-1)-cell: along its one even axis, below and above when inside.
-fn top_cofaces(lat: &Lattice<'_>, f: u64) -> [Option<u64>; 2] {
-    let mut c = vec![0u64; lat.d()];
-    lat.decode(f, &mut c);
-    let a = (0..lat.d()).find(|&a| c[a] & 1 == 0).expect("a (d-1)-cell has an even axis");
-    let lo = (c[a] > 0).then(|| f - lat.gstride[a]);
-    let hi = (c[a] + 1 < lat.m[a]).then(|| f + lat.gstride[a]);
-    [lo, hi]
+fn top_cofaces(lat: &Lattice<'_>, f: usize) -> [Option<usize>; 2] {
+    let a = (0..lat.d()).find(|&a| lat.grid.coord(f, a) & 1 == 0).expect("a (d-1)-cell has an even axis");
+    lat.grid.cofaces(f, a)
 }
 
 /// The entries of `∂_M` on a critical (d-1)-cell `c`: (critical top cell, coefficient),
 /// by following each coface of `c` up the gradient.
-fn flow_up(grad: &mut Gradient<'_>, zp: Zp, c: u64, out: &mut Vec<(u64, u64, u32)>) -> Result<(), PersistenceError> {
+fn flow_up(
+    grad: &mut Gradient<'_>,
+    zp: Zp,
+    c: usize,
+    out: &mut Vec<(usize, usize, u32)>,
+) -> Result<(), PersistenceError> {
     let lat = grad.lat;
     let mut buf = Vec::new();
-    let limit: u64 = lat.m.iter().product();
+    let limit = lat.grid.len;
     for start in top_cofaces(lat, c).into_iter().flatten() {
         let (mut face, mut cur, mut coef) = (c, start, 1u32);
-        let mut steps = 0u64;
+        let mut steps = 0usize;
         loop {
             let w = zp.of(incidence(lat, cur, face, &mut buf));
             match grad.class(cur)? {
@@ -654,57 +619,55 @@ pub fn morse_persistence(
     let t = opts.construction == Construction::T;
     let too_large = || PersistenceError::TooLarge(format!("a grid of shape {shape:?}"));
     let mut pstride = vec![1usize; d];
-    let mut gstride = vec![1u64; d];
-    let mut m = vec![0u64; d];
-    let (mut plen, mut glen) = (1usize, 1u64);
+    let mut plen = 1usize;
     for a in (0..d).rev() {
         pstride[a] = plen;
-        gstride[a] = glen;
-        let s = shape[a] as u64;
-        m[a] = if t { 2 * s + 1 } else { 2 * s - 1 };
         plen = plen.checked_mul(shape[a]).ok_or_else(too_large)?;
-        glen = glen.checked_mul(m[a]).ok_or_else(too_large)?;
     }
+    let m = shape.iter().map(|&s| if t { s.checked_mul(2)?.checked_add(1) } else { Some(2 * s - 1) });
+    let grid = m.collect::<Option<Vec<usize>>>().and_then(|m| Grid::new(m, false)).ok_or_else(too_large)?;
     let sign = if opts.superlevel { -1.0 } else { 1.0 };
     let star = Star::new(d);
     let offsets =
         (0..star.len()).map(|q| (0..d).map(|a| star.delta[q * d + a] as i64 * pstride[a] as i64).sum()).collect();
-    let lat = Lattice { n: shape.to_vec(), pstride, m, gstride, t, sign, value, offsets };
+    let lat = Lattice { n: shape.to_vec(), pstride, grid, t, sign, value, offsets };
 
     // pass 1: each pixel's lower star, slab after slab; the critical cells per dimension
     let budget = max_bytes.saturating_sub(super::cubical::PROCESS_BYTES) / BYTES_PER_CRITICAL;
     let found = AtomicU64::new(0);
     let tasks = plen.div_ceil(1 << 16).max(1);
-    let parts = gmap_core::parallel::map_tasks(tasks, plen, |task| -> Result<Vec<Vec<(u64, f64)>>, PersistenceError> {
-        let (lo, hi) = (task << 16, ((task + 1) << 16).min(plen));
-        let mut crit = vec![Vec::new(); d + 1];
-        let mut s = Scratch::default();
-        let mut x = vec![0usize; d];
-        let mut c = vec![0u64; d];
-        for i in lo..hi {
-            for a in 0..d {
-                x[a] = (i / lat.pstride[a]) % lat.n[a];
-            }
-            lat.process(&star, &x, &mut s)?;
-            let v = lat.pixel(i)?;
-            let mut here = 0;
-            for q in 0..star.len() {
-                if s.class[q] == CRIT {
-                    let id = lat.cell(&star, &x, q as u16);
-                    lat.decode(id, &mut c);
-                    crit[lat.dim(&c)].push((id, v));
-                    here += 1;
+    let parts = gmap_core::parallel::map_tasks(
+        tasks,
+        plen,
+        |task| -> Result<Vec<Vec<(usize, f64)>>, PersistenceError> {
+            let (lo, hi) = (task << 16, ((task + 1) << 16).min(plen));
+            let mut crit = vec![Vec::new(); d + 1];
+            let mut s = Scratch::default();
+            let mut x = vec![0usize; d];
+            for i in lo..hi {
+                for a in 0..d {
+                    x[a] = (i / lat.pstride[a]) % lat.n[a];
                 }
-            }
-            if here > 0 && found.fetch_add(here, Ordering::Relaxed) + here > budget {
-                return Err(PersistenceError::TooLarge(format!(
+                lat.process(&star, &x, &mut s)?;
+                let v = lat.pixel(i)?;
+                let mut here = 0;
+                for q in 0..star.len() {
+                    if s.class[q] == CRIT {
+                        let id = lat.cell(&star, &x, q as u16);
+                        crit[lat.grid.dim(id)].push((id, v));
+                        here += 1;
+                    }
+                }
+                if here > 0 && found.fetch_add(here, Ordering::Relaxed) + here > budget {
+                    return Err(PersistenceError::TooLarge(format!(
                     "the image of shape {shape:?} has more than {budget} critical cells, over the memory limit of {max_bytes} bytes at {BYTES_PER_CRITICAL} bytes each"
                 )));
+                }
             }
-        }
-        Ok(crit)
-    });
-    let mut crit: Vec<Vec<(u64, f64)>> = vec![Vec::new(); d + 1];
+            Ok(crit)
+        },
+    );
+    let mut crit: Vec<Vec<(usize, f64)>> = vec![Vec::new(); d + 1];
     for part in parts {
         for (k, v) in part?.into_iter().enumerate() {
             crit[k].extend(v);
@@ -716,7 +679,7 @@ pub fn morse_persistence(
 
     // pass 2, from the top dimension down: the boundaries of the critical cells that are
     // columns (not cleared by the dimension above), then their reduction
-    let position = |k: usize, id: u64| -> usize {
+    let position = |k: usize, id: usize| -> usize {
         crit[k].binary_search_by_key(&id, |e| e.0).expect("the gradient ends on critical cells")
     };
     // per dimension, the rank of each critical cell in the order (value, grid index)
@@ -766,7 +729,7 @@ pub fn morse_persistence(
                 }
             }
         } else {
-            let list: Vec<(usize, u64)> = crit[k]
+            let list: Vec<(usize, usize)> = crit[k]
                 .iter()
                 .enumerate()
                 .filter(|&(i, _)| !claimed.get(rank[k][i] as usize).copied().unwrap_or(false))
