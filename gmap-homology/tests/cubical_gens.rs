@@ -109,6 +109,25 @@ fn known_sets() {
         })
         .collect();
     assert_eq!(check(&[5, 5, 5], &holed), vec![1, 1, 1, 0]);
+    // cavities of several cubes, filled for the sweep when their cubes and shared facets
+    // make a tree (a row of two, an L of three) and not otherwise (a 2 × 2 square of four
+    // around an edge that is not in the set, a ring of eight around a column of the set, whose
+    // filling would lose the loop around the column)
+    let solid_but = |n: [usize; 3], holes: &[[usize; 3]]| -> Vec<u8> {
+        (0..n[0] * n[1] * n[2])
+            .map(|i| {
+                let c = [i % n[0], (i / n[0]) % n[1], i / (n[0] * n[1])];
+                u8::from(!holes.contains(&c))
+            })
+            .collect()
+    };
+    let cavities = solid_but(
+        [12, 5, 4],
+        &[[1, 1, 1], [2, 1, 1], [4, 1, 1], [5, 1, 1], [5, 2, 1], [7, 1, 1], [8, 1, 1], [7, 2, 1], [8, 2, 1]],
+    );
+    assert_eq!(check(&[12, 5, 4], &cavities), vec![1, 0, 3, 0]);
+    let ring: Vec<[usize; 3]> = (0..9).filter(|&i| i != 4).map(|i| [1 + i % 3, 1 + i / 3, 1]).collect();
+    assert_eq!(check(&[5, 5, 3], &solid_but([5, 5, 3], &ring)), vec![1, 1, 1, 0]);
     assert_eq!(check(&[2, 3, 2], &[0; 12]), vec![0, 0, 0, 0]);
     assert_eq!(check(&[4, 3, 5], &[1; 60]), vec![1, 0, 0, 0]);
     // two rings side by side, and a ring inside a ring (the inner one in the outer's hole)

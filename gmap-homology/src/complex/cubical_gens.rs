@@ -21,11 +21,14 @@
 //!   edge and the path of the forest between its ends. Where the sweep stalls, a cell is
 //!   made critical; the critical edges are finished by elimination with unit pivots (their
 //!   `H_1` is the cokernel of `∂_2`), or by [`crate::generators`] where a unit is missing.
+//!   Cavities whose cubes and shared facets make a tree are filled before the sweep, which
+//!   leaves `H_1` and the 1-skeleton as they are, so that their skins collapse instead of
+//!   stalling it.
 //!
 //! The Betti numbers so found are checked against the Euler characteristic counted on the
 //! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: the
-//! sweep's waiting cells, up to 6 bytes more per point), or two `u32` per cube while the
-//! complement is labelled; plus the cycles given.
+//! sweep's waiting cells, up to 6 bytes more per point, and a bit per cube), or two `u32` per
+//! cube while the complement is labelled; plus the cycles given.
 //!
 //! ```
 //! use gmap_homology::cubical_gens::cubical_generators;
@@ -83,9 +86,13 @@ pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
     let cubes = prod(&|l| l as u64)?;
     // the doubled grid and a u32 per vertex, in 3-D the sweep's waiting cells: two bits per
     // grid point (vertices, cubes) and queues of u32 that hold each edge and square at most
-    // twice (3/4 of the points: 6 bytes per point at worst); or two u32 per cube while the
-    // complement is labelled
-    let sweep = if shape.len() == 3 { grid.div_ceil(4).checked_add(grid.checked_mul(6)?)? } else { 0 };
+    // twice (3/4 of the points: 6 bytes per point at worst), and a bit per cube (the cavities
+    // filled); or two u32 per cube while the complement is labelled
+    let sweep = if shape.len() == 3 {
+        grid.div_ceil(4).checked_add(grid.checked_mul(6)?)?.checked_add(cubes.div_ceil(8))?
+    } else {
+        0
+    };
     Some(grid.checked_add(vertices.checked_mul(4)?)?.checked_add(sweep)?.max(cubes.checked_mul(8)?))
 }
 
@@ -149,6 +156,11 @@ impl Box {
     #[inline]
     fn cube(&self, c: &[usize; 3]) -> usize {
         c[0] * self.cs[0] + c[1] * self.cs[1] + c[2] * self.cs[2]
+    }
+
+    /// The cube coordinates of cube number `v`.
+    fn cube_coords(&self, v: usize) -> [usize; 3] {
+        [v % self.n[0], v / self.cs[1] % self.n[1], v / self.cs[2]]
     }
 
     /// The grid point of the cube at cube coordinates `c` (odd along every axis).
@@ -260,7 +272,7 @@ pub fn cubical_generators_pairing(
     let bx = Box::new(shape)?;
     let mut betti = vec![0u64; d + 1];
     // H_{d-1} first: its union-find over the cubes is freed before the grid is built
-    let top = if d >= 2 { complement_boundaries(&bx, bits)? } else { Vec::new() };
+    let (top, tree_cubes) = if d >= 2 { complement_boundaries(&bx, bits)? } else { (Vec::new(), Vec::new()) };
     let mut st = try_vec(bx.grid_len(), 0u8, "the cells of the doubled grid")?;
     let cells = mark_closure(&bx, bits, &mut st);
     let euler_characteristic: i64 = cells.iter().enumerate().map(|(k, &c)| if k % 2 == 0 { c } else { -c }).sum();
@@ -271,7 +283,7 @@ pub fn cubical_generators_pairing(
     if d == 3 {
         // the union-find's memory becomes the depths in the forest
         let mut depth = forest.into_parents();
-        fill_lone_cavities(&bx, bits, &mut st);
+        fill_tree_cavities(&bx, &tree_cubes, &mut st);
         let loops = loops(&bx, &mut st, &mut depth, &roots, pairs)?;
         betti[1] = loops.len() as u64;
         generators.extend(loops);
@@ -350,8 +362,9 @@ fn components(bx: &Box, st: &[u8]) -> (UnionFind, Vec<usize>) {
 }
 
 /// `H_{d-1}`: the boundaries of the bounded components of the complement (absent cubes joined
-/// across shared facets), ordered by their smallest cube.
-fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, CubicalError> {
+/// across shared facets), ordered by their smallest cube; and, a bit per cube, the cubes of
+/// the components whose cubes and shared facets make a tree (see [`fill_tree_cavities`]).
+fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<(Vec<CubeCycle>, Vec<u64>), CubicalError> {
     let d = bx.d;
     let m = bx.cube_count();
     let mut uf = UnionFind::new(m);
@@ -382,6 +395,8 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
     // the bounded classes numbered in the same order
     let mut number = vec![u32::MAX; classes];
     let mut sizes: Vec<usize> = Vec::new();
+    // per bounded class: its cubes minus the facets they share (1 for a tree)
+    let mut excess: Vec<i64> = Vec::new();
     // the facets of an absent cube v on a present neighbour, with the signs of ∂v
     let facets = |c: &[usize; 3], v: usize, f: &mut dyn FnMut(usize, i64)| {
         let p = bx.centre(c);
@@ -407,9 +422,12 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         if number[l] == u32::MAX {
             number[l] = sizes.len() as u32;
             sizes.push(0);
+            excess.push(0);
         }
         let id = number[l] as usize;
         facets(&c, v, &mut |_, _| sizes[id] += 1);
+        // the facets shared with the next cube along each axis (absent: the same class)
+        excess[id] += 1 - (0..d).filter(|&a| bits[v + bx.cs[a]] == 0).count() as i64;
     });
     let mut chains: Vec<Vec<(u64, i64)>> = Vec::new();
     chains.try_reserve_exact(sizes.len()).map_err(|_| CubicalError::OutOfMemory {
@@ -417,6 +435,8 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
         bytes: sizes.len() as u64 * 24,
     })?;
     chains.extend(sizes.iter().map(|&n| Vec::with_capacity(n)));
+    let mut tree_cubes =
+        if d == 3 { try_vec(m.div_ceil(64), 0u64, "the cubes of the cavities to fill")? } else { Vec::new() };
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = bx.cube(&c);
         if bits[v] != 0 || on_border(&c) {
@@ -427,14 +447,18 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<Vec<CubeCycle>, Cubica
             return;
         }
         facets(&c, v, &mut |p, s| chains[id as usize].push((p as u64, s)));
+        if d == 3 && excess[id as usize] == 1 {
+            tree_cubes[v / 64] |= 1 << (v % 64);
+        }
     });
-    Ok(chains
+    let chains = chains
         .into_iter()
         .map(|mut chain| {
             chain.sort_unstable();
             CubeCycle { dim: d - 1, chain }
         })
-        .collect())
+        .collect();
+    Ok((chains, tree_cubes))
 }
 
 /// Cell states of the doubled grid during the 3-D sweep, besides [`PRESENT`]: eliminated
@@ -666,7 +690,7 @@ struct Frozen {
     /// the frozen edges, as grid points
     edges: Vec<usize>,
     /// per square with an entry in a frozen row: `(frozen edge number, coefficient)`
-    rows: std::collections::HashMap<usize, Vec<(u32, i64)>>,
+    rows: rustc_hash::FxHashMap<usize, Vec<(u32, i64)>>,
 }
 
 impl Frozen {
@@ -702,17 +726,35 @@ impl Frozen {
     }
 }
 
-/// Marks present the absent cubes whose six neighbours are in the set (cavities of one cube)
-/// for the sweep of `H_1`: such a cube meets X in its whole boundary, a sphere, so adding it
-/// leaves `H_1` (and the 1-skeleton) as they are, and its skin then collapses through it
-/// instead of stalling the sweep. (`H_2` is read before, from the complement.)
-fn fill_lone_cavities(bx: &Box, bits: &[u8], st: &mut [u8]) {
-    for_each_point([1; 3], [1; 3], [bx.n[0] - 1, bx.n[1] - 1, bx.n[2] - 1], |c| {
-        let v = bx.cube(&c);
-        if bits[v] == 0 && (0..3).all(|a| bits[v - bx.cs[a]] != 0 && bits[v + bx.cs[a]] != 0) {
-            st[bx.centre(&c)] |= PRESENT;
+/// Marks present, for the sweep of `H_1`, the cubes and shared facets of the cavities whose
+/// cubes and shared facets make a tree (`tree_cubes`, from [`complement_boundaries`]): a
+/// single cube among six of the set, two cubes in a row, an L, … Such a cavity C has no edge
+/// with its four cubes in C (they would close a cycle of four cubes), hence no vertex with its
+/// eight: every edge and vertex of its closure is already in X, so X ∪ C̄ has the same
+/// 1-skeleton and its cycles of edges are chains of X. The open C retracts onto its tree, so
+/// `H^1(C) = 0`, and by Alexander duality (natural in the inclusion) `H_1(X) → H_1(X ∪ C̄)`
+/// is an isomorphism: a basis found in X ∪ C̄ is one of X. The filled cavity collapses
+/// through its cubes instead of stalling the sweep on its skin. (`H_2` is read before, from
+/// the complement.)
+fn fill_tree_cavities(bx: &Box, tree_cubes: &[u64], st: &mut [u8]) {
+    let marked = |v: usize| tree_cubes[v / 64] >> (v % 64) & 1 != 0;
+    for (w, &word) in tree_cubes.iter().enumerate() {
+        let mut rest = word;
+        while rest != 0 {
+            let v = w * 64 + rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            let c = bx.cube_coords(v);
+            let p = bx.centre(&c);
+            st[p] |= PRESENT;
+            // a facet shared with the next cube along an axis, when that cube is marked (both
+            // absent and face to face: the same cavity)
+            for a in 0..3 {
+                if marked(v + bx.cs[a]) {
+                    st[p + bx.gs[a]] |= PRESENT;
+                }
+            }
         }
-    });
+    }
 }
 
 /// `H_1` of a 3-D set: collapses and coreductions over all the cells, from one vertex set
