@@ -694,33 +694,17 @@ struct Frozen {
 }
 
 impl Frozen {
-    /// `rows[target] -= lambda · rows[source]` (sorted by frozen edge, zeros dropped).
+    /// `rows[target] -= lambda · source` (sorted by frozen edge, zeros dropped).
     fn subtract(&mut self, target: usize, lambda: i64, source: &[(u32, i64)]) -> Result<(), CubicalError> {
-        let old = self.rows.remove(&target).unwrap_or_default();
-        let mut out = Vec::with_capacity(old.len() + source.len());
-        let (mut i, mut j) = (0, 0);
         let overflow = || CubicalError::Internal("a coefficient of the sweep's fill overflows".to_string());
-        while i < old.len() || j < source.len() {
-            let take_old = j == source.len() || (i < old.len() && old[i].0 < source[j].0);
-            let take_new = i == old.len() || (j < source.len() && source[j].0 < old[i].0);
-            let (k, v) = if take_old {
-                i += 1;
-                old[i - 1]
-            } else if take_new {
-                j += 1;
-                (source[j - 1].0, source[j - 1].1.checked_mul(-lambda).ok_or_else(overflow)?)
-            } else {
-                i += 1;
-                j += 1;
-                let v = old[i - 1].1.checked_sub(lambda.checked_mul(source[j - 1].1).ok_or_else(overflow)?);
-                (old[i - 1].0, v.ok_or_else(overflow)?)
-            };
-            if v != 0 {
-                out.push((k, v));
-            }
+        let row = self.rows.entry(target).or_default();
+        if source.len() * 8 < row.len() {
+            subtract_in_place(row, lambda, source, &mut |_| {}).ok_or_else(overflow)?;
+        } else {
+            *row = minus_multiple(row, lambda, source).ok_or_else(overflow)?.0;
         }
-        if !out.is_empty() {
-            self.rows.insert(target, out);
+        if row.is_empty() {
+            self.rows.remove(&target);
         }
         Ok(())
     }
@@ -1045,6 +1029,20 @@ fn cokernel_by_unit_pivots(n: usize, mut columns: Vec<Column>) -> Option<Vec<u32
         }
     }
     let mut pivot = vec![false; n];
+    // first the columns of one entry, and those that come down to one: each drops its row
+    // from the other columns and lengthens none (on the 52,632 critical edges of 256³ at
+    // density 0.7: 2.2–2.3 s against 2.4–2.6 s without; taking the columns of two entries
+    // early as well was slower)
+    let mut single: Vec<usize> = (0..columns.len()).filter(|&j| columns[j].len() == 1).collect();
+    while let Some(j) = single.pop() {
+        if columns[j].len() == 1 {
+            pivot_out(j, &mut columns, &mut rows, &mut pivot, &mut |k, len| {
+                if len == 1 {
+                    single.push(k)
+                }
+            })?;
+        }
+    }
     let mut waiting: Vec<usize> = (0..columns.len()).rev().collect();
     let mut deferred = Vec::new();
     let mut progress = true;
@@ -1054,23 +1052,10 @@ fn cokernel_by_unit_pivots(n: usize, mut columns: Vec<Column>) -> Option<Vec<u32
             if columns[j].is_empty() {
                 continue;
             }
-            let unit = columns[j].iter().filter(|x| x.1.abs() == 1).min_by_key(|x| rows[x.0 as usize].len());
-            let Some(&(e, u)) = unit else {
+            if pivot_out(j, &mut columns, &mut rows, &mut pivot, &mut |_, _| {})? {
+                progress = true;
+            } else {
                 deferred.push(j);
-                continue;
-            };
-            progress = true;
-            let source = std::mem::take(&mut columns[j]);
-            pivot[e as usize] = true;
-            for k in std::mem::take(&mut rows[e as usize]) {
-                let k = k as usize;
-                let Ok(at) = columns[k].binary_search_by_key(&e, |x| x.0) else { continue };
-                let factor = columns[k][at].1.checked_mul(u)?;
-                let (sum, new_rows) = minus_multiple(&columns[k], factor, &source)?;
-                for r in new_rows {
-                    rows[r as usize].push(k as u32);
-                }
-                columns[k] = sum;
             }
         }
         waiting.append(&mut deferred);
@@ -1078,8 +1063,77 @@ fn cokernel_by_unit_pivots(n: usize, mut columns: Vec<Column>) -> Option<Vec<u32
     waiting.iter().all(|&j| columns[j].is_empty()).then(|| (0..n as u32).filter(|&e| !pivot[e as usize]).collect())
 }
 
+/// One step of [`cokernel_by_unit_pivots`]: column `j` on its unit entry `(e, u)` in the
+/// fewest other columns (`rows[e]`, some no longer: checked here) is taken out, and `e` from
+/// every other column; `changed(k, length)` hears of each column changed. `Some(false)`: no
+/// unit entry, nothing done; `None` past `i64`.
+fn pivot_out(
+    j: usize,
+    columns: &mut [Column],
+    rows: &mut [Vec<u32>],
+    pivot: &mut [bool],
+    changed: &mut dyn FnMut(usize, usize),
+) -> Option<bool> {
+    let unit = columns[j].iter().filter(|x| x.1.abs() == 1).min_by_key(|x| rows[x.0 as usize].len());
+    let Some(&(e, u)) = unit else { return Some(false) };
+    let source = std::mem::take(&mut columns[j]);
+    pivot[e as usize] = true;
+    for k in std::mem::take(&mut rows[e as usize]) {
+        let k = k as usize;
+        let Ok(at) = columns[k].binary_search_by_key(&e, |x| x.0) else { continue };
+        let factor = columns[k][at].1.checked_mul(u)?;
+        if source.len() * 8 < columns[k].len() {
+            // a short source into a long column: edited in place, entry by entry
+            subtract_in_place(&mut columns[k], factor, &source, &mut |r| rows[r as usize].push(k as u32))?;
+        } else {
+            let (sum, new_rows) = minus_multiple(&columns[k], factor, &source)?;
+            for r in new_rows {
+                rows[r as usize].push(k as u32);
+            }
+            columns[k] = sum;
+        }
+        changed(k, columns[k].len());
+    }
+    Some(true)
+}
+
 /// A sparse column: `(row, coefficient)`, rows increasing.
 type Column = Vec<(u32, i64)>;
+
+/// `target −= factor·source` (both sorted by row), zeros dropped, by a binary search and an
+/// insertion or removal per entry of `source` (for a source much shorter than the target);
+/// `new_row(r)` hears of each row the target had not. `None` past `i64`.
+fn subtract_in_place(
+    target: &mut Column,
+    factor: i64,
+    source: &[(u32, i64)],
+    new_row: &mut dyn FnMut(u32),
+) -> Option<()> {
+    let mut from = 0;
+    for &(r, v) in source {
+        let delta = factor.checked_mul(v)?;
+        match target[from..].binary_search_by_key(&r, |x| x.0) {
+            Ok(i) => {
+                let at = from + i;
+                let value = target[at].1.checked_sub(delta)?;
+                if value == 0 {
+                    target.remove(at);
+                    from = at;
+                } else {
+                    target[at].1 = value;
+                    from = at + 1;
+                }
+            }
+            Err(i) => {
+                let at = from + i;
+                target.insert(at, (r, delta.checked_neg()?));
+                new_row(r);
+                from = at + 1;
+            }
+        }
+    }
+    Some(())
+}
 
 /// `target − factor·source` (both sorted by row) without its zeros, and the rows it has that
 /// `target` had not; `None` past `i64`.
@@ -1168,7 +1222,41 @@ fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
 
 #[cfg(test)]
 mod tests {
-    use super::cokernel_by_unit_pivots;
+    use super::{cokernel_by_unit_pivots, minus_multiple, subtract_in_place};
+
+    #[test]
+    fn editing_a_column_in_place_equals_the_merge() {
+        // sparse columns from a small generator: rows drawn from 0..40, coefficients ±1, ±2
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |m: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % m
+        };
+        for _ in 0..2000 {
+            let mut column = |len: u64| {
+                let mut c: Vec<(u32, i64)> =
+                    (0..len).map(|_| (next(40) as u32, [1, -1, 2, -2][next(4) as usize])).collect();
+                c.sort_unstable_by_key(|x| x.0);
+                c.dedup_by_key(|x| x.0);
+                c
+            };
+            let target = column(30);
+            let source = column(4);
+            let factor = [1, -1, 2][next(3) as usize];
+            let (merged, mut new_rows) = minus_multiple(&target, factor, &source).unwrap();
+            let mut edited = target.clone();
+            let mut heard = Vec::new();
+            subtract_in_place(&mut edited, factor, &source, &mut |r| heard.push(r)).unwrap();
+            assert_eq!(edited, merged, "{target:?} - {factor} {source:?}");
+            new_rows.sort_unstable();
+            heard.sort_unstable();
+            assert_eq!(heard, new_rows);
+        }
+        // past i64: refused, not wrapped
+        assert!(subtract_in_place(&mut vec![(0, i64::MIN)], 1, &[(0, 1)], &mut |_| {}).is_none());
+    }
 
     #[test]
     fn unit_pivots_give_a_basis_of_the_cokernel() {
