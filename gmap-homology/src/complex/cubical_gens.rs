@@ -1223,38 +1223,34 @@ fn merged(mut chain: Vec<(u64, i64)>) -> Vec<(u64, i64)> {
 #[cfg(test)]
 mod tests {
     use super::{cokernel_by_unit_pivots, minus_multiple, subtract_in_place};
+    use proptest::prelude::*;
 
-    #[test]
-    fn editing_a_column_in_place_equals_the_merge() {
-        // sparse columns from a small generator: rows drawn from 0..40, coefficients ±1, ±2
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = |m: u64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state % m
-        };
-        for _ in 0..2000 {
-            let mut column = |len: u64| {
-                let mut c: Vec<(u32, i64)> =
-                    (0..len).map(|_| (next(40) as u32, [1, -1, 2, -2][next(4) as usize])).collect();
-                c.sort_unstable_by_key(|x| x.0);
-                c.dedup_by_key(|x| x.0);
-                c
-            };
-            let target = column(30);
-            let source = column(4);
-            let factor = [1, -1, 2][next(3) as usize];
+    /// A sorted sparse column: rows below 40, coefficients ±1 or ±2.
+    fn column(len: usize) -> impl Strategy<Value = Vec<(u32, i64)>> {
+        prop::collection::btree_map(0u32..40, prop::sample::select(vec![1i64, -1, 2, -2]), 0..len)
+            .prop_map(|m| m.into_iter().collect())
+    }
+
+    proptest! {
+        #[test]
+        fn editing_a_column_in_place_equals_the_merge(
+            target in column(30),
+            source in column(5),
+            factor in prop::sample::select(vec![1i64, -1, 2]),
+        ) {
             let (merged, mut new_rows) = minus_multiple(&target, factor, &source).unwrap();
             let mut edited = target.clone();
             let mut heard = Vec::new();
             subtract_in_place(&mut edited, factor, &source, &mut |r| heard.push(r)).unwrap();
-            assert_eq!(edited, merged, "{target:?} - {factor} {source:?}");
+            prop_assert_eq!(edited, merged);
             new_rows.sort_unstable();
             heard.sort_unstable();
-            assert_eq!(heard, new_rows);
+            prop_assert_eq!(heard, new_rows);
         }
-        // past i64: refused, not wrapped
+    }
+
+    #[test]
+    fn editing_in_place_refuses_past_i64() {
         assert!(subtract_in_place(&mut vec![(0, i64::MIN)], 1, &[(0, 1)], &mut |_| {}).is_none());
     }
 
