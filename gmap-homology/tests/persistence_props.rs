@@ -237,6 +237,12 @@ fn larger_arrays() -> impl Strategy<Value = (Vec<usize>, Vec<f64>)> {
         })
 }
 
+/// The options of a test case: the T-construction if `t`, else V.
+fn options(t: bool, superlevel: bool, periodic: bool, field: u32, cycles: bool) -> CubicalOptions {
+    let construction = if t { Construction::T } else { Construction::V };
+    CubicalOptions { construction, superlevel, periodic, field, cycles }
+}
+
 /// The Morse route's diagram with no memory limit to speak of.
 fn morse(shape: &[usize], values: &[f64], opts: &CubicalOptions) -> Result<Diagram, PersistenceError> {
     morse_persistence(shape, &|i| values[i], opts, u64::MAX)
@@ -252,10 +258,7 @@ proptest! {
         (shape, values) in arrays(), t in any::<bool>(), superlevel in any::<bool>(),
         p in prop::sample::select(vec![2u32, 3, 5]),
     ) {
-        let opts = CubicalOptions {
-            construction: if t { Construction::T } else { Construction::V },
-            superlevel, periodic: false, field: p, cycles: false,
-        };
+        let opts = options(t, superlevel, false, p, false);
         let sign = if superlevel { -1.0 } else { 1.0 };
         let cells = Cells::new(&shape, &values, t, false, sign);
         prop_assert_eq!(ours(&morse(&shape, &values, &opts).unwrap()), reference(&cells, p as i64, sign));
@@ -266,10 +269,7 @@ proptest! {
         (shape, values) in larger_arrays(), t in any::<bool>(), superlevel in any::<bool>(),
         p in prop::sample::select(vec![2u32, 3, 5]),
     ) {
-        let opts = CubicalOptions {
-            construction: if t { Construction::T } else { Construction::V },
-            superlevel, periodic: false, field: p, cycles: false,
-        };
+        let opts = options(t, superlevel, false, p, false);
         let whole = cubical_persistence(&shape, &values, &opts).unwrap();
         prop_assert_eq!(ours(&morse(&shape, &values, &opts).unwrap()), ours(&whole));
     }
@@ -283,10 +283,7 @@ proptest! {
         (shape, values) in arrays(), t in any::<bool>(), superlevel in any::<bool>(),
         periodic in any::<bool>(), p in prop::sample::select(vec![2u32, 3, 5]), cycles in any::<bool>(),
     ) {
-        let opts = CubicalOptions {
-            construction: if t { Construction::T } else { Construction::V },
-            superlevel, periodic, field: p, cycles,
-        };
+        let opts = options(t, superlevel, periodic, p, cycles);
         let sign = if superlevel { -1.0 } else { 1.0 };
         let cells = Cells::new(&shape, &values, t, periodic, sign);
         let d = cubical_persistence(&shape, &values, &opts).unwrap();
@@ -298,10 +295,7 @@ proptest! {
         (shape, values) in arrays(), t in any::<bool>(), superlevel in any::<bool>(),
         periodic in any::<bool>(), p in prop::sample::select(vec![2u32, 3]),
     ) {
-        let opts = CubicalOptions {
-            construction: if t { Construction::T } else { Construction::V },
-            superlevel, periodic, field: p, cycles: true,
-        };
+        let opts = options(t, superlevel, periodic, p, true);
         let sign = if superlevel { -1.0 } else { 1.0 };
         let cells = Cells::new(&shape, &values, t, periodic, sign);
         let d = cubical_persistence(&shape, &values, &opts).unwrap();
