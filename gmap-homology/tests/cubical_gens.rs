@@ -9,19 +9,31 @@ use common::random_bits;
 use std::collections::HashMap;
 
 use gmap_homology::cubical::cubical_complex_with;
-use gmap_homology::cubical_gens::{cubical_generators, cubical_generators_pairing, CubicalGenerators};
+use gmap_homology::cubical_gens::{
+    cubical_generators, cubical_generators_pairing, cubical_generators_tunnels, CubicalGenerators,
+};
 use gmap_homology::{homology_z, ChainComplex, SparseMatrix};
 use proptest::prelude::*;
 
-/// Checks the generators against the whole cubical complex; returns its Betti numbers.
+/// Checks the generators against the whole cubical complex, those of every route in 3-D (the
+/// one chosen, the sweep, the complement's); returns its Betti numbers.
 fn check(shape: &[usize], bits: &[u8]) -> Vec<usize> {
-    check_pairing(shape, bits, usize::MAX)
+    let betti = check_generators(shape, bits, cubical_generators(shape, bits).unwrap());
+    if shape.len() == 3 {
+        assert_eq!(check_pairing(shape, bits, usize::MAX), betti);
+        assert_eq!(check_generators(shape, bits, cubical_generators_tunnels(shape, bits).unwrap()), betti);
+    }
+    betti
 }
 
 /// [`check`] with the 3-D sweep's eliminations above the vertices bounded by `pairs` (the
 /// rest made critical and reduced by the general route).
 fn check_pairing(shape: &[usize], bits: &[u8], pairs: usize) -> Vec<usize> {
-    let g: CubicalGenerators = cubical_generators_pairing(shape, bits, pairs).unwrap();
+    check_generators(shape, bits, cubical_generators_pairing(shape, bits, pairs).unwrap())
+}
+
+/// Checks `g`, the generators of the set, against its whole cubical complex.
+fn check_generators(shape: &[usize], bits: &[u8], g: CubicalGenerators) -> Vec<usize> {
     let c = cubical_complex_with(shape, bits, false, false).unwrap();
     let h = homology_z(&c.chain).unwrap();
     assert!(h.torsion.iter().all(Vec::is_empty));
@@ -128,6 +140,14 @@ fn known_sets() {
     assert_eq!(check(&[12, 5, 4], &cavities), vec![1, 0, 3, 0]);
     let ring: Vec<[usize; 3]> = (0..9).filter(|&i| i != 4).map(|i| [1 + i % 3, 1 + i / 3, 1]).collect();
     assert_eq!(check(&[5, 5, 3], &solid_but([5, 5, 3], &ring)), vec![1, 1, 1, 0]);
+    // tunnels, whose loops the complement's route finds across the box's border: a corner cut
+    // away (no loop: the edges it takes off the border tie its links), a tunnel 2 × 2 thick
+    // (edges outside the set inside it), one bent from a face to the next
+    assert_eq!(check(&[3, 3, 3], &solid_but([3, 3, 3], &[[0, 0, 0]])), vec![1, 0, 0, 0]);
+    let thick: Vec<[usize; 3]> = (0..12).map(|i| [1 + i % 2, 1 + (i / 2) % 2, i / 4]).collect();
+    assert_eq!(check(&[4, 4, 3], &solid_but([4, 4, 3], &thick)), vec![1, 1, 0, 0]);
+    let bent = [[0, 1, 1], [1, 1, 1], [1, 2, 1], [1, 3, 1]];
+    assert_eq!(check(&[3, 4, 3], &solid_but([3, 4, 3], &bent)), vec![1, 1, 0, 0]);
     assert_eq!(check(&[2, 3, 2], &[0; 12]), vec![0, 0, 0, 0]);
     assert_eq!(check(&[4, 3, 5], &[1; 60]), vec![1, 0, 0, 0]);
     // two rings side by side, and a ring inside a ring (the inner one in the outer's hole)

@@ -14,7 +14,17 @@
 //!   Alexander duality (`H̃_{d-1}(X) ≅ H̃^0(S^d \ X)`, the linking number of the boundary of
 //!   `C_i` with a point of `C_j` being `δ_ij`) these cycles are a basis over Z: in 2-D each
 //!   hole's outline, in 3-D each cavity's skin.
-//! * **`H_1` of a 3-D set**: collapses and coreductions over the cells on the grid itself
+//! * **`H_1` of a 3-D set, from the complement**, where that is the sparser side (the
+//!   complement's loops off a spanning forest at most one per two cubes): X lies in the box K,
+//!   which is contractible, so `∂: H_2(K, X) → H_1(X)` is an isomorphism, and the boundaries
+//!   of a basis of the relative 2-cycles (chains of squares not in X whose boundary lies in X)
+//!   are a basis. A spanning forest of the absent cubes and the outside, joined across the
+//!   squares not in X, leaves one such square per independent loop of the complement: one
+//!   whose four edges are in X is a relative cycle on its own, the loop of those four edges
+//!   around its tunnel; the others, tied together by the edges not in X, are reduced with
+//!   unit pivots ([`tunnel_loops`]). No sweep runs, and the loops are short (four edges around
+//!   a tunnel one cube thick).
+//! * **`H_1` of a 3-D set, otherwise**: collapses and coreductions over the cells on the grid itself
 //!   (the sweep of [`crate::generators`], without building the complex), which pair each
 //!   vertex but one per component with an edge, in a forest grown inside small aligned blocks
 //!   first. The edges the sweep leaves are a basis, each lifted to its fundamental cycle: the
@@ -27,8 +37,10 @@
 //!
 //! The Betti numbers so found are checked against the Euler characteristic counted on the
 //! cells. Memory: a byte per point of the doubled grid and a `u32` per vertex (3-D: the
-//! sweep's waiting cells, up to 6 bytes more per point, and a bit per cube), or two `u32` per
-//! cube while the complement is labelled; plus the cycles given.
+//! sweep's waiting cells, up to 6 bytes more per point, and a bit per cube; or the columns of
+//! the complement's reduction, at most 4 bytes per point), or two `u32` per cube while the
+//! complement is labelled and a `u32` per link off its forest (at most one per two cubes);
+//! plus the cycles given.
 //!
 //! ```
 //! use gmap_homology::cubical_gens::cubical_generators;
@@ -87,13 +99,16 @@ pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
     // the doubled grid and a u32 per vertex, in 3-D the sweep's waiting cells: two bits per
     // grid point (vertices, cubes) and queues of u32 that hold each edge and square at most
     // twice (3/4 of the points: 6 bytes per point at worst), and a bit per cube (the cavities
-    // filled); or two u32 per cube while the complement is labelled
+    // filled), or the complement's reduction (at most a quarter of the points in entries of
+    // 16 bytes, fewer than the sweep's); or two u32 per cube while the complement is labelled,
+    // and in 3-D a u32 per link off its forest (at most one per two cubes)
     let sweep = if shape.len() == 3 {
         grid.div_ceil(4).checked_add(grid.checked_mul(6)?)?.checked_add(cubes.div_ceil(8))?
     } else {
         0
     };
-    Some(grid.checked_add(vertices.checked_mul(4)?)?.checked_add(sweep)?.max(cubes.checked_mul(8)?))
+    let labelled = cubes.checked_mul(if shape.len() == 3 { 10 } else { 8 })?;
+    Some(grid.checked_add(vertices.checked_mul(4)?)?.checked_add(sweep)?.max(labelled))
 }
 
 /// A cell of the closure, in the doubled grid's bytes.
@@ -233,10 +248,12 @@ fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Result<Vec<T>,
 /// grid past `u32` numbers, memory over the limit, and in 3-D a set whose sweep stops at a
 /// vertex ([`CubicalError::NotReduced`]: the cubical complex's route then applies) or leaves
 /// critical edges that unit pivots do not clear and that are more than
-/// [`crate::generators`] takes ([`CubicalError::Generators`]).
-/// O(cells · α + the length of the cycles).
+/// [`crate::generators`] takes ([`CubicalError::Generators`]). In 3-D the loops come from
+/// the complement where its loops off a spanning forest are at most one per two cubes and
+/// their reduction stays within a quarter of the grid's points in entries, else from the
+/// sweep. O(cells · α + the length of the cycles).
 pub fn cubical_generators(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerators, CubicalError> {
-    cubical_generators_pairing(shape, bits, usize::MAX)
+    generators_by(shape, bits, Route::Auto)
 }
 
 /// [`cubical_generators`] with at most `pairs` eliminations between cells of dimension ≥ 1
@@ -248,6 +265,29 @@ pub fn cubical_generators_pairing(
     bits: &[u8],
     pairs: usize,
 ) -> Result<CubicalGenerators, CubicalError> {
+    generators_by(shape, bits, Route::Sweep { pairs })
+}
+
+/// [`cubical_generators`] with the 3-D `H_1` from the complement whatever its size
+/// ([`CubicalError::Internal`] where its reduction needs a pivot that is not a unit), for the
+/// tests of that route.
+#[doc(hidden)]
+pub fn cubical_generators_tunnels(shape: &[usize], bits: &[u8]) -> Result<CubicalGenerators, CubicalError> {
+    generators_by(shape, bits, Route::Tunnels)
+}
+
+/// How the 3-D `H_1` is found.
+#[derive(Clone, Copy)]
+enum Route {
+    /// from the complement where its loops off the forest are few, else by the sweep
+    Auto,
+    /// by the sweep, with at most `pairs` eliminations above the vertices
+    Sweep { pairs: usize },
+    /// from the complement
+    Tunnels,
+}
+
+fn generators_by(shape: &[usize], bits: &[u8], route: Route) -> Result<CubicalGenerators, CubicalError> {
     let d = shape.len();
     if !(1..=3).contains(&d) || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!(
@@ -272,7 +312,18 @@ pub fn cubical_generators_pairing(
     let bx = Box::new(shape)?;
     let mut betti = vec![0u64; d + 1];
     // H_{d-1} first: its union-find over the cubes is freed before the grid is built
-    let (top, tree_cubes) = if d >= 2 { complement_boundaries(&bx, bits)? } else { (Vec::new(), Vec::new()) };
+    let cubes = bits.len();
+    let (links, budget) = match route {
+        _ if d != 3 => (None, 0),
+        Route::Auto => (Some(cubes / 2), bx.grid_len() / 4),
+        Route::Sweep { .. } => (None, 0),
+        Route::Tunnels => (Some(usize::MAX), usize::MAX),
+    };
+    let Complement { boundaries: top, tree_cubes, cotree } = if d >= 2 {
+        complement_boundaries(&bx, bits, links)?
+    } else {
+        Complement { boundaries: Vec::new(), tree_cubes: Vec::new(), cotree: None }
+    };
     let mut st = try_vec(bx.grid_len(), 0u8, "the cells of the doubled grid")?;
     let cells = mark_closure(&bx, bits, &mut st);
     let euler_characteristic: i64 = cells.iter().enumerate().map(|(k, &c)| if k % 2 == 0 { c } else { -c }).sum();
@@ -281,10 +332,26 @@ pub fn cubical_generators_pairing(
     let mut generators: Vec<CubeCycle> =
         roots.iter().map(|&p| CubeCycle { dim: 0, chain: vec![(p as u64, 1)] }).collect();
     if d == 3 {
-        // the union-find's memory becomes the depths in the forest
-        let mut depth = forest.into_parents();
-        fill_tree_cavities(&bx, &tree_cubes, &mut st);
-        let loops = loops(&bx, &mut st, &mut depth, &roots, pairs)?;
+        let from_complement = cotree.and_then(|links| tunnel_loops(&bx, &mut st, &links, budget));
+        let loops = match (from_complement, route) {
+            (Some(loops), _) => loops,
+            (None, Route::Tunnels) => {
+                return Err(CubicalError::Internal(
+                    "the loops from the complement need a pivot that is not a unit".to_string(),
+                ))
+            }
+            (None, _) => {
+                // the marks of an attempt from the complement go
+                for x in st.iter_mut() {
+                    *x &= PRESENT;
+                }
+                let pairs = if let Route::Sweep { pairs } = route { pairs } else { usize::MAX };
+                // the union-find's memory becomes the depths in the forest
+                let mut depth = forest.into_parents();
+                fill_tree_cavities(&bx, &tree_cubes, &mut st);
+                loops(&bx, &mut st, &mut depth, &roots, pairs)?
+            }
+        };
         betti[1] = loops.len() as u64;
         generators.extend(loops);
     }
@@ -364,25 +431,58 @@ fn components(bx: &Box, st: &[u8]) -> (UnionFind, Vec<usize>) {
 /// `H_{d-1}`: the boundaries of the bounded components of the complement (absent cubes joined
 /// across shared facets), ordered by their smallest cube; and, a bit per cube, the cubes of
 /// the components whose cubes and shared facets make a tree (see [`fill_tree_cavities`]).
-fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<(Vec<CubeCycle>, Vec<u64>), CubicalError> {
+/// With `links` (3-D), the absent cubes on the border are joined to the outside as well, and
+/// the squares that joined two cubes already joined are kept for [`tunnel_loops`] while there
+/// are at most `links` of them.
+fn complement_boundaries(bx: &Box, bits: &[u8], links: Option<usize>) -> Result<Complement, CubicalError> {
     let d = bx.d;
     let m = bx.cube_count();
     let mut uf = UnionFind::new(m);
+    // the outside, joined to the absent cubes across the box's border (for the links)
+    let outside_node = uf.push();
+    let mut cotree: Option<Vec<u32>> = links.map(|_| Vec::new());
+    let cap = links.unwrap_or(0);
     for_each_point([0; 3], [1; 3], bx.n, |c| {
         let v = bx.cube(&c);
         if bits[v] != 0 {
             return;
         }
-        for a in 0..d {
-            if c[a] + 1 < bx.n[a] && bits[v + bx.cs[a]] == 0 {
-                uf.union(v as u32, (v + bx.cs[a]) as u32);
+        let Some(list) = &mut cotree else {
+            for a in 0..d {
+                if c[a] + 1 < bx.n[a] && bits[v + bx.cs[a]] == 0 {
+                    uf.union(v as u32, (v + bx.cs[a]) as u32);
+                }
             }
+            return;
+        };
+        let centre = bx.centre(&c);
+        for a in 0..d {
+            // the facet below on the border, the facet above to the next cube or the border
+            let mut link = |other: u32, facet: usize| {
+                if !uf.union(v as u32, other) {
+                    list.push(facet as u32);
+                }
+            };
+            if c[a] == 0 {
+                link(outside_node, centre - bx.gs[a]);
+            }
+            if c[a] + 1 < bx.n[a] {
+                if bits[v + bx.cs[a]] == 0 {
+                    link((v + bx.cs[a]) as u32, centre + bx.gs[a]);
+                }
+            } else {
+                link(outside_node, centre + bx.gs[a]);
+            }
+        }
+        if list.len() > cap {
+            cotree = None;
         }
     });
     // the classes labelled in order of their smallest cube; a class with a cube on the box's
     // border is unbounded
     let (label, classes) = uf.labels();
     drop(uf);
+    let label = &label[..m];
     let mut outside = vec![0u64; classes.div_ceil(64)];
     let on_border = |c: &[usize; 3]| (0..d).any(|a| c[a] == 0 || c[a] + 1 == bx.n[a]);
     for_each_point([0; 3], [1; 3], bx.n, |c| {
@@ -458,7 +558,18 @@ fn complement_boundaries(bx: &Box, bits: &[u8]) -> Result<(Vec<CubeCycle>, Vec<u
             CubeCycle { dim: d - 1, chain }
         })
         .collect();
-    Ok((chains, tree_cubes))
+    Ok(Complement { boundaries: chains, tree_cubes, cotree })
+}
+
+/// What [`complement_boundaries`] found.
+struct Complement {
+    /// a basis of `H_{d-1}`
+    boundaries: Vec<CubeCycle>,
+    /// in 3-D, a bit per cube: the cavities to fill before the sweep
+    tree_cubes: Vec<u64>,
+    /// if asked and not past the cap: the facets not in X that joined two cubes (or a cube
+    /// and the outside) already joined, as grid points (see [`tunnel_loops`])
+    cotree: Option<Vec<u32>>,
 }
 
 /// Cell states of the doubled grid during the 3-D sweep, besides [`PRESENT`]: eliminated
@@ -740,6 +851,158 @@ fn fill_tree_cavities(bx: &Box, tree_cubes: &[u64], st: &mut [u8]) {
         }
     }
 }
+
+/// `H_1` of a 3-D set from its complement, when the complement is the sparser side: the loops
+/// around the tunnels and rings of absent cubes. K, the box's cubes, is contractible, so
+/// `∂: H_2(K, X) → H_1(X)` is an isomorphism, and a basis of `H_1(X)` is the boundaries of a
+/// basis of the relative 2-cycles: chains of squares not in X whose boundary has no edge
+/// outside X. In the relative chains the boundaries of the absent cubes are the stars of the
+/// graph whose nodes are the absent cubes and the outside, and whose links are the squares not
+/// in X (between two absent cubes, or on the box's border); a spanning forest of that graph
+/// (`cotree`: the links that joined nothing, from [`complement_boundaries`]) makes every class
+/// modulo those stars a unique chain of the links off the forest, so the relative cycles
+/// modulo boundaries are the kernel of M, the boundary of those links on the edges not in X.
+/// A link with all four edges in X is a basis element on its own, its boundary a loop of four
+/// edges around the tunnel. The others are reduced: a row of M with one entry left forces its
+/// column out of the kernel (peeled, repeatedly); the rest by column reduction with unit
+/// pivots, each column that reaches zero giving the combination of squares it took. `None`
+/// where a pivot is not a unit or the reduction outgrows `budget` entries (the sweep then
+/// decides). O(links + the reduction).
+fn tunnel_loops(bx: &Box, st: &mut [u8], cotree: &[u32], budget: usize) -> Option<Vec<CubeCycle>> {
+    // the four edges of the square at q, with their coefficients in ∂q
+    let edges_of = |q: usize| {
+        let c = bx.coords(q);
+        let mut out = [(0usize, 0i64); 4];
+        let mut i = 0;
+        for_faces(bx, &c, q, |e, _, _| {
+            out[i] = (e, square_sign(bx, &c, q, e));
+            i += 1;
+        });
+        out
+    };
+    let outside_x = |s: u8| s & PRESENT == 0;
+    let mut out = Vec::new();
+    // the links with an edge outside X are the columns of M, marked LIVE on the grid; each
+    // edge outside X counts its live columns (cells outside X have their bytes free)
+    let mut columns = 0usize;
+    for &q in cotree {
+        let q = q as usize;
+        let edges = edges_of(q);
+        if edges.iter().all(|&(e, _)| !outside_x(st[e])) {
+            let mut chain: Vec<(u64, i64)> = edges.iter().map(|&(e, k)| (e as u64, k)).collect();
+            chain.sort_unstable();
+            out.push(CubeCycle { dim: 1, chain });
+            continue;
+        }
+        st[q] |= LIVE;
+        columns += 1;
+        for (e, _) in edges {
+            if outside_x(st[e]) {
+                st[e] += ROW_ONE;
+            }
+        }
+    }
+    if columns == 0 {
+        return Some(out);
+    }
+    // peeling: a row with one live column puts that column out of the kernel
+    let row_count = |s: u8| s >> ROW_SHIFT;
+    let mut single: Vec<usize> = Vec::new();
+    for &q in cotree {
+        let q = q as usize;
+        if st[q] & LIVE != 0 {
+            single.extend(edges_of(q).iter().map(|x| x.0).filter(|&e| outside_x(st[e]) && row_count(st[e]) == 1));
+        }
+    }
+    while let Some(e) = single.pop() {
+        if row_count(st[e]) != 1 {
+            continue;
+        }
+        let mut square = usize::MAX;
+        for_cofaces(bx, &bx.coords(e), e, |q, _, _| {
+            if st[q] & LIVE != 0 {
+                square = q;
+            }
+        });
+        if square == usize::MAX {
+            return None;
+        }
+        st[square] &= !LIVE;
+        for (e2, _) in edges_of(square) {
+            if outside_x(st[e2]) {
+                st[e2] -= ROW_ONE;
+                if row_count(st[e2]) == 1 {
+                    single.push(e2);
+                }
+            }
+        }
+    }
+    // the core: column reduction with unit pivots, the pivots' columns and combinations kept
+    // end to end
+    let mut pivot_of: rustc_hash::FxHashMap<u32, u32> = rustc_hash::FxHashMap::default();
+    let (mut kept_r, mut kept_v): (Column, Column) = (Vec::new(), Vec::new());
+    let (mut ends_r, mut ends_v): (Vec<usize>, Vec<usize>) = (vec![0], vec![0]);
+    let mut spent = 0usize;
+    for &q in cotree {
+        let q = q as usize;
+        if st[q] & LIVE == 0 {
+            continue;
+        }
+        st[q] &= !LIVE;
+        let mut r: Column =
+            edges_of(q).iter().filter(|&&(e, _)| outside_x(st[e])).map(|&(e, k)| (e as u32, k)).collect();
+        r.sort_unstable();
+        let mut v: Column = vec![(q as u32, 1)];
+        while let Some(&(low, value)) = r.last() {
+            let Some(&i) = pivot_of.get(&low) else { break };
+            let i = i as usize;
+            let ri = &kept_r[ends_r[i]..ends_r[i + 1]];
+            let factor = value.checked_mul(ri.last()?.1)?;
+            r = minus_multiple(&r, factor, ri)?.0;
+            v = minus_multiple(&v, factor, &kept_v[ends_v[i]..ends_v[i + 1]])?.0;
+            spent = spent.checked_add(r.len() + v.len())?;
+            if spent + kept_r.len() + kept_v.len() > budget {
+                return None;
+            }
+        }
+        match r.last() {
+            None => {
+                // a relative cycle: its boundary is a loop of X
+                let mut chain = Vec::new();
+                for &(q, k) in &v {
+                    for (e, s) in edges_of(q as usize) {
+                        chain.push((e as u64, s.checked_mul(k)?));
+                    }
+                }
+                let chain = merged(chain);
+                if chain.iter().any(|&(e, _)| outside_x(st[e as usize])) {
+                    return None;
+                }
+                out.push(CubeCycle { dim: 1, chain });
+            }
+            Some(&(low, value)) => {
+                if value.abs() != 1 {
+                    return None;
+                }
+                pivot_of.insert(low, (ends_r.len() - 1) as u32);
+                kept_r.extend_from_slice(&r);
+                kept_v.extend_from_slice(&v);
+                ends_r.push(kept_r.len());
+                ends_v.push(kept_v.len());
+                if spent + kept_r.len() + kept_v.len() > budget {
+                    return None;
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+/// [`tunnel_loops`]' marks on the cells outside X: a square whose column is live, and per
+/// edge the count of its live columns (at most 4).
+const LIVE: u8 = 2;
+const ROW_SHIFT: u8 = 2;
+const ROW_ONE: u8 = 1 << ROW_SHIFT;
 
 /// `H_1` of a 3-D set: collapses and coreductions over all the cells, from one vertex set
 /// aside per component (Mrozek and Batko's coreductions with collapses, as the sweep of
