@@ -1191,22 +1191,26 @@ fn loops(
         release(st, &mut waiting, lower);
         release(st, &mut waiting, upper);
     }
-    // the edges never paired nor frozen: a basis element each
+    // the edges never paired nor frozen: a basis element each, their cycles walked
+    // `WALKS` at a time
     let mut out = Vec::new();
+    let mut batch = Vec::with_capacity(WALKS);
     let mut start = [0usize; 3];
     for a in 0..bx.d {
         start[a] = 1;
         for_each_point(start, [2; 3], bx.g, |c| {
             let e = bx.point(&c);
             if alive(st[e]) {
-                let mut chain = Vec::new();
-                fundamental_cycle(bx, st, depth, e, 1, &mut chain);
-                chain.sort_unstable();
-                out.push(CubeCycle { dim: 1, chain });
+                batch.push(e);
+                if batch.len() == WALKS {
+                    fundamental_cycles(bx, st, depth, &batch, &mut out);
+                    batch.clear();
+                }
             }
         });
         start[a] = 0;
     }
+    fundamental_cycles(bx, st, depth, &batch, &mut out);
     if !frozen.edges.is_empty() {
         out.extend(frozen_loops(bx, st, depth, &frozen)?);
     }
@@ -1467,6 +1471,74 @@ fn fundamental_cycle(bx: &Box, st: &[u8], depth: &[u32], e: usize, sign: i64, ou
         x = nx;
         y = ny;
     }
+}
+
+/// How many fundamental cycles [`fundamental_cycles`] walks in step.
+const WALKS: usize = 16;
+
+/// The fundamental cycles of `edges` (each as [`fundamental_cycle`] with sign 1, its cells
+/// sorted), added to `out` in that order. The walks up the forest jump across the grid, a
+/// cache miss per step on a large one: taken in step, one step of each in turn with the next
+/// vertex's state read in ahead, their misses overlap.
+fn fundamental_cycles(bx: &Box, st: &[u8], depth: &[u32], edges: &[usize], out: &mut Vec<CubeCycle>) {
+    struct Walk {
+        x: usize,
+        y: usize,
+        dx: u32,
+        dy: u32,
+        chain: Vec<(u64, i64)>,
+    }
+    let ends = |e: usize| {
+        let c = bx.coords(e);
+        let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
+        (e + bx.gs[a], e - bx.gs[a])
+    };
+    for &e in edges {
+        let (x, y) = ends(e);
+        prefetch(depth, bx.vertex_of(x));
+        prefetch(depth, bx.vertex_of(y));
+    }
+    let mut walks: Vec<Walk> = edges
+        .iter()
+        .map(|&e| {
+            // ∂e = upper − lower: the path from the upper end to the lower one closes it
+            let (x, y) = ends(e);
+            let (dx, dy) = (depth[bx.vertex_of(x)], depth[bx.vertex_of(y)]);
+            Walk { x, y, dx, dy, chain: vec![(e as u64, 1)] }
+        })
+        .collect();
+    let mut stepped = true;
+    while stepped {
+        stepped = false;
+        for w in &mut walks {
+            // as in `fundamental_cycle`: the deeper end up first, then both until they meet
+            let (up_x, up_y) = match w.dx.cmp(&w.dy) {
+                std::cmp::Ordering::Greater => (true, false),
+                std::cmp::Ordering::Less => (false, true),
+                std::cmp::Ordering::Equal if w.x != w.y => (true, true),
+                std::cmp::Ordering::Equal => continue,
+            };
+            if up_x {
+                let (nx, edge, k) = step_up(bx, st, w.x);
+                w.chain.push((edge as u64, k));
+                prefetch(st, nx);
+                w.x = nx;
+                w.dx -= 1;
+            }
+            if up_y {
+                let (ny, edge, k) = step_up(bx, st, w.y);
+                w.chain.push((edge as u64, -k));
+                prefetch(st, ny);
+                w.y = ny;
+                w.dy -= 1;
+            }
+            stepped = true;
+        }
+    }
+    out.extend(walks.into_iter().map(|mut w| {
+        w.chain.sort_unstable();
+        CubeCycle { dim: 1, chain: w.chain }
+    }));
 }
 
 /// The chain with its cells sorted, their coefficients summed and the zeros dropped.
