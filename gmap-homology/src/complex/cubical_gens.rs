@@ -1445,31 +1445,55 @@ fn step_up(bx: &Box, st: &[u8], x: usize) -> (usize, usize, i64) {
 /// `sign` times the edge at grid point `e` plus the path of the forest between its ends: a
 /// cycle of X, added to `out`.
 fn fundamental_cycle(bx: &Box, st: &[u8], depth: &[u32], e: usize, sign: i64, out: &mut Vec<(u64, i64)>) {
-    let c = bx.coords(e);
-    let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
-    out.push((e as u64, sign));
-    // ∂e = upper − lower: the path from the upper end to the lower one closes it
-    let (mut x, mut y) = (e + bx.gs[a], e - bx.gs[a]);
-    let (mut dx, mut dy) = (depth[bx.vertex_of(x)], depth[bx.vertex_of(y)]);
-    while dx > dy {
-        let (nx, edge, k) = step_up(bx, st, x);
-        out.push((edge as u64, sign * k));
-        x = nx;
-        dx -= 1;
+    let mut walk = Walk::new(bx, depth, e, sign, out);
+    while walk.step(bx, st, out) {}
+}
+
+/// The walk of a fundamental cycle up the forest: the two ends of its edge and their depths.
+struct Walk {
+    x: usize,
+    y: usize,
+    dx: u32,
+    dy: u32,
+    sign: i64,
+}
+
+impl Walk {
+    /// Starts the cycle of `sign` times edge `e`, pushed to `out`.
+    fn new(bx: &Box, depth: &[u32], e: usize, sign: i64, out: &mut Vec<(u64, i64)>) -> Self {
+        let c = bx.coords(e);
+        let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
+        out.push((e as u64, sign));
+        // ∂e = upper − lower: the path from the upper end to the lower one closes it
+        let (x, y) = (e + bx.gs[a], e - bx.gs[a]);
+        Walk { x, y, dx: depth[bx.vertex_of(x)], dy: depth[bx.vertex_of(y)], sign }
     }
-    while dy > dx {
-        let (ny, edge, k) = step_up(bx, st, y);
-        out.push((edge as u64, -sign * k));
-        y = ny;
-        dy -= 1;
-    }
-    while x != y {
-        let (nx, ex, kx) = step_up(bx, st, x);
-        let (ny, ey, ky) = step_up(bx, st, y);
-        out.push((ex as u64, sign * kx));
-        out.push((ey as u64, -sign * ky));
-        x = nx;
-        y = ny;
+
+    /// One step: the deeper end up, or both until they meet, their edges pushed to `out`, the
+    /// next states read in ahead; `false` once the ends have met.
+    #[inline]
+    fn step(&mut self, bx: &Box, st: &[u8], out: &mut Vec<(u64, i64)>) -> bool {
+        let (up_x, up_y) = match self.dx.cmp(&self.dy) {
+            std::cmp::Ordering::Greater => (true, false),
+            std::cmp::Ordering::Less => (false, true),
+            std::cmp::Ordering::Equal if self.x != self.y => (true, true),
+            std::cmp::Ordering::Equal => return false,
+        };
+        if up_x {
+            let (nx, edge, k) = step_up(bx, st, self.x);
+            out.push((edge as u64, self.sign * k));
+            prefetch(st, nx);
+            self.x = nx;
+            self.dx -= 1;
+        }
+        if up_y {
+            let (ny, edge, k) = step_up(bx, st, self.y);
+            out.push((edge as u64, -self.sign * k));
+            prefetch(st, ny);
+            self.y = ny;
+            self.dy -= 1;
+        }
+        true
     }
 }
 
@@ -1481,63 +1505,29 @@ const WALKS: usize = 16;
 /// cache miss per step on a large one: taken in step, one step of each in turn with the next
 /// vertex's state read in ahead, their misses overlap.
 fn fundamental_cycles(bx: &Box, st: &[u8], depth: &[u32], edges: &[usize], out: &mut Vec<CubeCycle>) {
-    struct Walk {
-        x: usize,
-        y: usize,
-        dx: u32,
-        dy: u32,
-        chain: Vec<(u64, i64)>,
-    }
-    let ends = |e: usize| {
+    for &e in edges {
         let c = bx.coords(e);
         let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
-        (e + bx.gs[a], e - bx.gs[a])
-    };
-    for &e in edges {
-        let (x, y) = ends(e);
-        prefetch(depth, bx.vertex_of(x));
-        prefetch(depth, bx.vertex_of(y));
+        prefetch(depth, bx.vertex_of(e + bx.gs[a]));
+        prefetch(depth, bx.vertex_of(e - bx.gs[a]));
     }
-    let mut walks: Vec<Walk> = edges
+    let mut walks: Vec<(Walk, Vec<(u64, i64)>)> = edges
         .iter()
         .map(|&e| {
-            // ∂e = upper − lower: the path from the upper end to the lower one closes it
-            let (x, y) = ends(e);
-            let (dx, dy) = (depth[bx.vertex_of(x)], depth[bx.vertex_of(y)]);
-            Walk { x, y, dx, dy, chain: vec![(e as u64, 1)] }
+            let mut chain = Vec::new();
+            (Walk::new(bx, depth, e, 1, &mut chain), chain)
         })
         .collect();
     let mut stepped = true;
     while stepped {
         stepped = false;
-        for w in &mut walks {
-            // as in `fundamental_cycle`: the deeper end up first, then both until they meet
-            let (up_x, up_y) = match w.dx.cmp(&w.dy) {
-                std::cmp::Ordering::Greater => (true, false),
-                std::cmp::Ordering::Less => (false, true),
-                std::cmp::Ordering::Equal if w.x != w.y => (true, true),
-                std::cmp::Ordering::Equal => continue,
-            };
-            if up_x {
-                let (nx, edge, k) = step_up(bx, st, w.x);
-                w.chain.push((edge as u64, k));
-                prefetch(st, nx);
-                w.x = nx;
-                w.dx -= 1;
-            }
-            if up_y {
-                let (ny, edge, k) = step_up(bx, st, w.y);
-                w.chain.push((edge as u64, -k));
-                prefetch(st, ny);
-                w.y = ny;
-                w.dy -= 1;
-            }
-            stepped = true;
+        for (walk, chain) in &mut walks {
+            stepped |= walk.step(bx, st, chain);
         }
     }
-    out.extend(walks.into_iter().map(|mut w| {
-        w.chain.sort_unstable();
-        CubeCycle { dim: 1, chain: w.chain }
+    out.extend(walks.into_iter().map(|(_, mut chain)| {
+        chain.sort_unstable();
+        CubeCycle { dim: 1, chain }
     }));
 }
 
