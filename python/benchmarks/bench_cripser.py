@@ -14,8 +14,9 @@ thread) and wall seconds, the reading stage apart:
   ``gmap.homology(mask)``; ``gen``: ``gmap.homology(mask, generators=True)``, then, timed
   apart, reading every generator's ``cells``, ``extents`` and ``coefficients`` (a
   generator's arrays are made when first read);
-* CubicalRipser: reading ``a.astype(float64)``, then
-  ``cripser.computePH(f, maxdim=d - 1, top_dim=True, location="no")``;
+* CubicalRipser: reading ``a.astype(float64)``, then its T-construction,
+  ``cripser.computePH_T(f, maxdim=d - 1, location="no")`` (``computePH(f, top_dim=True)``
+  is the V-construction's dimension d - 1 alone);
 * GUDHI: reading nothing (it takes the uint8 array), then
   ``CubicalComplex(top_dimensional_cells=a).persistence()``, up to --gudhi-max cubes.
 
@@ -67,7 +68,7 @@ def run(tool, a):
         import cripser
 
         r, p = timed(lambda: a.astype(np.float64),
-                     lambda f: cripser.computePH(f, maxdim=d - 1, top_dim=True, location="no"))
+                     lambda f: cripser.computePH_T(f, maxdim=d - 1, location="no"))
         if isinstance(p, Exception):
             return {**r, "failed": str(p)[:300]}
         return {**r, "betti": [int(((p[:, 0] == k) & (p[:, 1] <= 0.5) & (p[:, 2] > 0.5)).sum()) for k in range(d)]}
