@@ -231,6 +231,21 @@ def results(path):
     return rows, [n for n in known if n in rows] + [n for n in seen if n not in known]
 
 
+def cpu_ratio(c, x):
+    """CubicalRipser's CPU over x's. Where CubicalRipser did not finish, a lower bound: the
+    CPU it spent before it failed (out of memory), or, stopped at a timeout, the timeout
+    over x's wall."""
+    if not ok(x) or c is None:
+        return "—"
+    if ok(c):
+        return f"{c['cpu'] / max(x['cpu'], 1e-2):.1f}×"
+    if "cpu" in c:
+        return f"> {c['cpu'] / max(x['cpu'], 1e-2):.0f}×"
+    if c["failed"].startswith("stopped after "):
+        return f"> {float(c['failed'].split()[2]) / max(x['wall'], 1e-2):.0f}× (wall)"
+    return "—"
+
+
 def table(path):
     rows, order = results(path)
     print("| image | cubes | gmap read + homology (s) | gmap wall / CPU (s) | gmap max RSS (MB) "
@@ -247,7 +262,10 @@ def table(path):
             if x is None:
                 return "—"
             if "failed" in x:
-                return short(x["failed"]) if f is not rss else "—"
+                if f is rss:
+                    return "—"
+                spent = f" (after {x['wall']:.0f} s, {x['rss_mb']:.0f} MB resident)" if "wall" in x else ""
+                return short(x["failed"]) + spent
             return f(x)
 
         def rss(x):
@@ -259,9 +277,9 @@ def table(path):
         ccol = cell(c, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
         cwall = cell(c, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
         crss = cell(c, rss)
-        ratio = f"{c['cpu'] / max(g['cpu'], 1e-2):.1f}×" if ok(g) and ok(c) else "—"
+        ratio = cpu_ratio(c, g)
         ewall = cell(e, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
-        eratio = f"{c['cpu'] / max(e['cpu'], 1e-2):.1f}×" if ok(e) and ok(c) else "—"
+        eratio = cpu_ratio(c, e)
         uwall = cell(u, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
         urss = cell(u, rss)
         check = groups(g, e, c, u)
