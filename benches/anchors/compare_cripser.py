@@ -276,6 +276,8 @@ def table(path):
         grss = cell(g, rss)
         ccol = cell(c, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
         cwall = cell(c, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        if c is not None and not ok(c) and "cpu" in c:
+            cwall = f"{c['wall']:.2f} / {c['cpu']:.2f}, unfinished"
         crss = cell(c, rss)
         ratio = cpu_ratio(c, g)
         ewall = cell(e, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")

@@ -14,7 +14,7 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use numpy::{IntoPyArray, PyArrayDescrMethods, ToPyArray};
+use numpy::{PyArrayDescrMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyList, PyString, PyTuple};
@@ -130,14 +130,16 @@ fn generators_to_py(py: Python<'_>, r: &Arc<Report>) -> PyResult<Option<Py<PyLis
 
 /// The arrays of a chain: `(cells, extents, coefficients)` as [`PyGenerator`] gives them.
 fn chain_arrays(py: Python<'_>, chain: &Chain) -> PyResult<(PyObject, PyObject, PyObject)> {
-    let coefficients = chain.coefficients().into_pyarray(py).into_any().unbind();
+    // each array copied into numpy's own memory in its shape at once: one Python object per
+    // array (handing a Vec over adds a second, its owner; a reshape a third), which is most
+    // of the cost when a million generators are read
+    let coefficients = chain.coefficients().to_pyarray(py).into_any().unbind();
     let n = chain.len();
-    // each array made in its shape at once (a reshape would make a second object)
     let shaped = |e: numpy::ndarray::ShapeError| Failure::input(e.to_string());
     let cubes = |lo: Vec<i64>, ex: Vec<u8>, d: usize| -> PyResult<(PyObject, PyObject)> {
         Ok((
-            numpy::ndarray::Array2::from_shape_vec((n, d), lo).map_err(shaped)?.into_pyarray(py).into_any().unbind(),
-            numpy::ndarray::Array2::from_shape_vec((n, d), ex).map_err(shaped)?.into_pyarray(py).into_any().unbind(),
+            numpy::ndarray::ArrayView2::from_shape((n, d), &lo[..]).map_err(shaped)?.to_pyarray(py).into_any().unbind(),
+            numpy::ndarray::ArrayView2::from_shape((n, d), &ex[..]).map_err(shaped)?.to_pyarray(py).into_any().unbind(),
         ))
     };
     if let Chain::Grid { cells, grid } = chain {
