@@ -9,7 +9,8 @@ from its own seed, and scikit-image's ``camera`` thresholded at its median); the
 is the sublevel set at 0.5, the T-construction (each value a closed square or cube). In one
 Python process, each tool in turn on the same array, CPU (``time.process_time``: every
 thread) and wall seconds, the reading stage apart; a tool's call is repeated while its calls
-so far took under 2 s, at most 5 times, and the call of median CPU is kept:
+so far took under 2 s, at most 5 times, and the call of median CPU is kept (for ``gen``,
+the median of the times to read the arrays apart):
 
 * gmap: reading ``a == 0`` (the set, a bool array read in place), then
   ``gmap.homology(mask)``; ``gen``: ``gmap.homology(mask, generators=True)``, then, timed
@@ -57,18 +58,27 @@ def timed_once(read, compute):
     return {"read_cpu": c1 - c0, "read_wall": t1 - t0, "cpu": c2 - c1, "wall": t2 - t1}, out
 
 
-def timed(read, compute):
-    """timed_once repeated (REPS, BUDGET): the call of median CPU, with the number of calls."""
-    runs, spent = [], 0.0
+def timed(read, compute, after=None):
+    """timed_once repeated (REPS, BUDGET): the CPU and wall of the call of median CPU, the
+    number of calls, and the last call's result. `after(result)`, when given, runs after each
+    call, timed apart: the median of its CPU is `after_cpu`."""
+    runs, afters, spent = [], [], 0.0
     while len(runs) < REPS and spent < BUDGET:
         r, out = timed_once(read, compute)
-        runs.append((r, out))
+        runs.append(r)
         spent += r["read_wall"] + r["wall"]
         if isinstance(out, Exception):
             break
-    runs.sort(key=lambda x: x[0]["read_cpu"] + x[0]["cpu"])
-    r, out = runs[(len(runs) - 1) // 2]
-    return {**r, "calls": len(runs)}, out
+        if after is not None:
+            c0, t0 = time.process_time(), time.perf_counter()
+            after(out)
+            afters.append(time.process_time() - c0)
+            spent += time.perf_counter() - t0
+    runs.sort(key=lambda x: x["read_cpu"] + x["cpu"])
+    r = {**runs[(len(runs) - 1) // 2], "calls": len(runs)}
+    if afters:
+        r["after_cpu"] = sorted(afters)[(len(afters) - 1) // 2]
+    return r, out
 
 
 def run(tool, a):
@@ -76,15 +86,17 @@ def run(tool, a):
     if tool in ("gmap", "gen"):
         import gmap
 
-        r, h = timed(lambda: a == 0, lambda m: gmap.homology(m, generators=(tool == "gen")))
-        if isinstance(h, Exception):
-            return {**r, "failed": str(h)[:300]}
-        if tool == "gen":
+        def arrays(h):
             # a generator's arrays are made when first read: every one read, timed apart
-            c0 = time.process_time()
             for g in h.generators:
                 g.cells, g.extents, g.coefficients
-            r["arrays_cpu"] = time.process_time() - c0
+
+        r, h = timed(lambda: a == 0, lambda m: gmap.homology(m, generators=(tool == "gen")),
+                     arrays if tool == "gen" else None)
+        if isinstance(h, Exception):
+            return {**r, "failed": str(h)[:300]}
+        if "after_cpu" in r:
+            r["arrays_cpu"] = r.pop("after_cpu")
         return {**r, "betti": [int(x) for x in h.betti][:d]}
     if tool == "cripser":
         import cripser
