@@ -264,6 +264,8 @@ def table(path):
             if "failed" in x:
                 if f is rss:
                     return "—"
+                if f is times and "cpu" in x:
+                    return times(x) + ", unfinished"
                 spent = f" (after {x['wall']:.0f} s, {x['rss_mb']:.0f} MB resident)" if "wall" in x else ""
                 return short(x["failed"]) + spent
             return f(x)
@@ -271,18 +273,19 @@ def table(path):
         def rss(x):
             return f"{x['rss_mb']:.0f}"
 
+        def times(x):
+            return f"{x['wall']:.2f} / {x['cpu']:.2f}"
+
         gcol = cell(g, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
-        gwall = cell(g, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        gwall = cell(g, times)
         grss = cell(g, rss)
         ccol = cell(c, lambda x: f"{x['read_s']:.3f} + {x['homology_s']:.3f}")
-        cwall = cell(c, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
-        if c is not None and not ok(c) and "cpu" in c:
-            cwall = f"{c['wall']:.2f} / {c['cpu']:.2f}, unfinished"
+        cwall = cell(c, times)
         crss = cell(c, rss)
         ratio = cpu_ratio(c, g)
-        ewall = cell(e, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        ewall = cell(e, times)
         eratio = cpu_ratio(c, e)
-        uwall = cell(u, lambda x: f"{x['wall']:.2f} / {x['cpu']:.2f}")
+        uwall = cell(u, times)
         urss = cell(u, rss)
         check = groups(g, e, c, u)
         print(f"| {name} | {cubes:,} | {gcol} | {gwall} | {grss} | {ccol} | {cwall} | {crss} | {ratio} "

@@ -1458,14 +1458,30 @@ struct Walk {
     sign: i64,
 }
 
+/// The ends of the edge at grid point `e`: `(upper, lower)`, so that `∂e = upper − lower`.
+fn edge_ends(bx: &Box, e: usize) -> (usize, usize) {
+    let c = bx.coords(e);
+    let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
+    (e + bx.gs[a], e - bx.gs[a])
+}
+
 impl Walk {
     /// Starts the cycle of `sign` times edge `e`, pushed to `out`.
     fn new(bx: &Box, depth: &[u32], e: usize, sign: i64, out: &mut Vec<(u64, i64)>) -> Self {
-        let c = bx.coords(e);
-        let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
+        Walk::from_ends(bx, depth, e, edge_ends(bx, e), sign, out)
+    }
+
+    /// [`Walk::new`] with the edge's ends already found.
+    fn from_ends(
+        bx: &Box,
+        depth: &[u32],
+        e: usize,
+        (x, y): (usize, usize),
+        sign: i64,
+        out: &mut Vec<(u64, i64)>,
+    ) -> Self {
         out.push((e as u64, sign));
-        // ∂e = upper − lower: the path from the upper end to the lower one closes it
-        let (x, y) = (e + bx.gs[a], e - bx.gs[a]);
+        // the path from the upper end to the lower one closes the cycle
         Walk { x, y, dx: depth[bx.vertex_of(x)], dy: depth[bx.vertex_of(y)], sign }
     }
 
@@ -1505,17 +1521,17 @@ const WALKS: usize = 16;
 /// cache miss per step on a large one: taken in step, one step of each in turn with the next
 /// vertex's state read in ahead, their misses overlap.
 fn fundamental_cycles(bx: &Box, st: &[u8], depth: &[u32], edges: &[usize], out: &mut Vec<CubeCycle>) {
-    for &e in edges {
-        let c = bx.coords(e);
-        let a = (0..bx.d).find(|&a| c[a] % 2 == 1).unwrap_or(0);
-        prefetch(depth, bx.vertex_of(e + bx.gs[a]));
-        prefetch(depth, bx.vertex_of(e - bx.gs[a]));
+    let ends: Vec<(usize, usize)> = edges.iter().map(|&e| edge_ends(bx, e)).collect();
+    for &(x, y) in &ends {
+        prefetch(depth, bx.vertex_of(x));
+        prefetch(depth, bx.vertex_of(y));
     }
     let mut walks: Vec<(Walk, Vec<(u64, i64)>)> = edges
         .iter()
-        .map(|&e| {
+        .zip(&ends)
+        .map(|(&e, &xy)| {
             let mut chain = Vec::new();
-            (Walk::new(bx, depth, e, 1, &mut chain), chain)
+            (Walk::from_ends(bx, depth, e, xy, 1, &mut chain), chain)
         })
         .collect();
     let mut stepped = true;
