@@ -3,8 +3,8 @@
 # binary's `convert`) and writes each output, stderr and exit code under OUT, so that two
 # builds can be compared byte for byte: `diff -r OUT1 OUT2`.
 #   scripts/cli-snapshot.sh BINARY OUT
-# Times are the only thing that differs between runs: `bench` rows keep their groups and cells,
-# with the millisecond columns removed.
+# Times and memory are the only things that differ between runs: `bench` rows keep their groups and cells,
+# with the millisecond and peak-memory columns removed.
 set -u
 bin=$(realpath "$1"); out=$(realpath -m "$2")
 cd "$(dirname "$0")/.."
@@ -50,7 +50,7 @@ python3 -c '
 import json, sys
 rows = json.load(open(sys.argv[1]))["rows"]
 for r in rows:
-    for k in ("times_ms", "gudhi_ms", "ratio"):
+    for k in ("times_ms", "gudhi_ms", "ratio", "peak_rss_bytes"):
         r.pop(k, None)
     print(json.dumps(r, sort_keys=True))
 ' "$out/bench.out" >"$out/bench.masked" && rm "$out/bench.out" "$out/bench.err"

@@ -397,7 +397,7 @@ fn help_lists_every_input_format() {
     for cmd in ["info", "homology", "convert"] {
         let out = Command::new(env!("CARGO_BIN_EXE_gmap")).args([cmd, "--help"]).output().unwrap();
         let help = String::from_utf8_lossy(&out.stdout);
-        for ext in gmap::input::INPUT_EXTENSIONS {
+        for ext in gmap::formats::input_extensions() {
             assert!(help.contains(&format!(".{ext}")), "gmap {cmd} --help does not name .{ext}:\n{help}");
         }
     }

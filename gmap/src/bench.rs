@@ -28,7 +28,8 @@ use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, 
 use serde_json::{json, Value};
 
 use crate::error::{err, Result};
-use crate::input::{extension, open_with, Input, OpenOptions, INPUT_EXTENSIONS};
+use crate::input::{Input, OpenOptions};
+use crate::open_with;
 use crate::progress::Progress;
 use crate::route::{check_simplicial_size, face_complex_within};
 
@@ -118,14 +119,14 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
                         .context(format!("{}: cannot read the folder", p.display()))
                 })?
                 .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|f| f.is_file() && INPUT_EXTENSIONS.contains(&extension(f).as_str()))
+                .filter(|f| f.is_file() && crate::formats::kind_of(f).is_some())
                 .collect();
             if found.is_empty() {
                 return Err(err!(
                     Parse,
                     "{}: the folder holds no supported input ({})",
                     p.display(),
-                    INPUT_EXTENSIONS.join(", ")
+                    crate::formats::input_extensions().collect::<Vec<_>>().join(", ")
                 ));
             }
             found.sort();

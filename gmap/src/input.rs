@@ -1,18 +1,8 @@
-//! Opening any input: the reader is chosen by the file's extension (docs/FORMATS.md), and
-//! what the file holds comes back as an [`Input`].
-//!
-//! | extension | reader | [`Input`] |
-//! |---|---|---|
-//! | `.gmap`, `.moka`, `.off` | `gmap_core::io`, `gmap_ops::import` | [`Input::Map`] |
-//! | `.vtk`, `.vtu`, `.msh` (unstructured meshes) | `gmap_ops::import` (`gmap_ops::mesh`) | [`Input::Map`], with labels |
-//! | `.facets`, `.lex[#name]` | `gmap_ops::import::SimplicialComplex` | [`Input::Simplicial`] |
-//! | `.cub`, `.cel` (CHomP's cubes and cells), `.pbm` | `gmap_ops::import::CubicalSet` | [`Input::Cubical`] |
-//! | `.npy`, `.complex` (DIPHA) | `gmap_ops::import::Image`, memory-mapped | [`Input::Image`] |
-//! | `.json` | `gmap_homology::json` | [`Input::Arch`] |
-//!
-//! `.dot` is written only, as a view: opening one is refused with that reason. A `.vtk` is
-//! read as an unstructured grid (what the `.vtk` writer writes is one), its cells sewn face
-//! to face and its data as labels.
+//! What a file holds, as an [`Input`], and the extension of a path; [`crate::open`] reads it by the reader of its
+//! format in the registry ([`crate::formats`]: the table of extensions, readers and the kind
+//! of input each makes). `.dot`, `.graphml` and `.lar.json` are written only: opening one is
+//! refused with that reason. A `.vtk` is read as an unstructured grid (what the `.vtk`
+//! writer writes is one), its cells sewn face to face and its data as labels.
 //! The memory policy (`gmap_core::resources`) applies to every reader: a file whose
 //! estimated cost is over the limit is refused before it is read.
 
@@ -25,11 +15,55 @@ use gmap_ops::import::{CubicalSet, Image, SimplicialComplex};
 
 use crate::error::{err, Error, Result};
 
-/// The extensions [`open`] reads (the files `gmap bench` takes from a folder).
-pub const INPUT_EXTENSIONS: &[&str] =
-    &["gmap", "moka", "facets", "lex", "off", "json", "cub", "cel", "pbm", "vtk", "vtu", "msh", "npy", "complex"];
+/// What an input holds, as [`Input`]'s variants name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Kind {
+    /// a generalized map ([`Input::Map`])
+    Map,
+    /// a simplicial complex ([`Input::Simplicial`])
+    Simplicial,
+    /// a cubical set or cubical cell complex ([`Input::Cubical`])
+    Cubical,
+    /// a grey-value image ([`Input::Image`])
+    Image,
+    /// an architectural complex or incidence graph ([`Input::Arch`])
+    Arch,
+}
 
-/// Options of [`open_with`].
+impl Kind {
+    /// Every kind, in the order of [`Input`]'s variants.
+    pub const ALL: [Kind; 5] = [Kind::Map, Kind::Simplicial, Kind::Cubical, Kind::Image, Kind::Arch];
+
+    /// The name messages use: `"map"`, `"simplicial complex"`, `"cubical set"` (an image is
+    /// one, at a level), `"architectural complex"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Map => "map",
+            Kind::Simplicial => "simplicial complex",
+            Kind::Cubical | Kind::Image => "cubical set",
+            Kind::Arch => "architectural complex",
+        }
+    }
+
+    /// The class of the Python package that holds an input of this kind.
+    pub fn python_class(self) -> &'static str {
+        match self {
+            Kind::Map => "GMap",
+            Kind::Simplicial => "SimplicialComplex",
+            Kind::Cubical => "CubicalSet",
+            Kind::Image => "Image",
+            Kind::Arch => "ArchComplex",
+        }
+    }
+
+    /// Whether an input of this kind is a cubical set (a set of cubes, or an image at a level).
+    pub fn is_cubical(self) -> bool {
+        matches!(self, Kind::Cubical | Kind::Image)
+    }
+}
+
+/// Options of [`crate::open_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct OpenOptions {
@@ -79,14 +113,55 @@ pub struct Sourced<T> {
     source: Source,
 }
 
-/// Where an input came from: the file (for messages) and the dart limit it was opened with.
+/// Where an input came from: the file (for messages), the dart limit it was opened with,
+/// and whether the file carries labels read on demand ([`MapInput::labelled`]).
 #[derive(Clone, Debug, Default)]
-struct Source {
+pub(crate) struct Source {
     path: PathBuf,
     max_darts: Option<u64>,
+    labels_in_file: bool,
+}
+
+impl Source {
+    /// The file `path` opened with `opts`.
+    pub(crate) fn file(path: &Path, opts: &OpenOptions) -> Self {
+        Source { path: path.to_path_buf(), max_darts: opts.max_darts, labels_in_file: false }
+    }
+
+    /// A `.gmap` file, whose labels are read when first asked for.
+    pub(crate) fn labelled_file(path: &Path, opts: &OpenOptions) -> Self {
+        Source { labels_in_file: true, ..Source::file(path, opts) }
+    }
+
+    /// `value`, read from this source.
+    pub(crate) fn holding<T>(self, value: T) -> Sourced<T> {
+        Sourced { value, source: self }
+    }
 }
 
 impl Input {
+    /// A map read from `source`.
+    pub(crate) fn map_from(map: DenseMap, source: Source) -> Self {
+        Input::Map(MapInput { map, source, labelled: OnceLock::new() })
+    }
+
+    /// A map read from `source` with its labels and points (a mesh).
+    pub(crate) fn labelled_map_from(g: LabelledGMap, source: Source) -> Self {
+        let map = g.to_dense_map();
+        Input::Map(MapInput { map, source, labelled: OnceLock::from(Ok(Box::new(g))) })
+    }
+
+    /// What the input holds, as the format registry names it.
+    pub fn input_kind(&self) -> Kind {
+        match self {
+            Input::Map(_) => Kind::Map,
+            Input::Simplicial(_) => Kind::Simplicial,
+            Input::Cubical(_) => Kind::Cubical,
+            Input::Image(_) => Kind::Image,
+            Input::Arch(_) => Kind::Arch,
+        }
+    }
+
     /// The dimension of what the input holds.
     pub fn dim(&self) -> usize {
         match self {
@@ -101,12 +176,7 @@ impl Input {
     /// The name of what the input holds: `"map"`, `"simplicial complex"`, `"cubical set"`,
     /// `"architectural complex"`.
     pub fn kind(&self) -> &'static str {
-        match self {
-            Input::Map(_) => "map",
-            Input::Simplicial(_) => "simplicial complex",
-            Input::Cubical(_) | Input::Image(_) => "cubical set",
-            Input::Arch(_) => "architectural complex",
-        }
+        self.input_kind().name()
     }
 
     /// The file the input was read from (empty for one built in memory).
@@ -168,7 +238,7 @@ impl MapInput {
         if let Some(read) = self.labelled.get() {
             return Some(read.as_ref().map(|g| &**g).map_err(Clone::clone));
         }
-        if extension(&self.source.path) != "gmap" {
+        if !self.source.labels_in_file {
             return None;
         }
         let read = self.labelled.get_or_init(|| {
@@ -242,89 +312,6 @@ impl Sourced<SimplicialComplex> {
             .to_gmap_within(max_darts)
             .map_err(|e| limit_hint(gmap_ops::import::FileError::new(&self.source.path, e).into()))
     }
-}
-
-/// Reads `path` by its extension, with the default options.
-pub fn open(path: impl AsRef<Path>) -> Result<Input> {
-    open_with(path, &OpenOptions::default())
-}
-
-/// Reads `path` by its extension. A refusal for size names the option that raises the
-/// limit.
-pub fn open_with(path: impl AsRef<Path>, opts: &OpenOptions) -> Result<Input> {
-    let path = path.as_ref();
-    read(path, opts).map_err(limit_hint)
-}
-
-fn read(path: &Path, opts: &OpenOptions) -> Result<Input> {
-    use gmap_ops::import;
-    let read_opts = gmap_core::io::ReadOptions { max_darts: opts.max_darts };
-    let source = Source { path: path.to_path_buf(), max_darts: opts.max_darts };
-    let map = |map: DenseMap| Input::Map(MapInput { map, source: source.clone(), labelled: OnceLock::new() });
-    let complex = |value: SimplicialComplex| Input::Simplicial(Sourced { value, source: source.clone() });
-    let sourced = |value| Sourced { value, source: source.clone() };
-    Ok(match extension(path).as_str() {
-        "gmap" => map(gmap_core::io::read_gmap_with(path, &read_opts)?),
-        "moka" => map(gmap_core::io::read_moka_with(path, &read_opts)?),
-        "off" => map(import::read_off_with(path, opts.max_darts)?),
-        "vtk" | "vtu" | "msh" => {
-            let g = import::read_mesh(path, opts.max_darts)
-                .ok_or_else(|| err!(Unsupported, "{}: not a mesh file", path.display()).with_path(path))??;
-            let map = g.to_dense_map();
-            Input::Map(MapInput { map, source: source.clone(), labelled: OnceLock::from(Ok(Box::new(g))) })
-        }
-        "facets" => complex(import::read_facets_complex(path)?),
-        "lex" if path.exists() => complex(import::read_lex_complex(path, None)?),
-        "lex" => {
-            let (file, name) = split_lex_name(path);
-            complex(import::read_lex_complex(&file, name.as_deref())?)
-        }
-        "json" if path.to_string_lossy().to_lowercase().ends_with(".lar.json") => {
-            return Err(err!(
-                Unsupported,
-                "{}: .lar.json (LAR) is written only, as an export: read the file it came from",
-                path.display()
-            )
-            .with_path(path))
-        }
-        "json" => Input::Arch(sourced(gmap_homology::json::read_json_file(path).map_err(|e| {
-            let kind = match e.error {
-                gmap_homology::json::JsonError::MemoryLimit(_) => crate::ErrorKind::Limit,
-                _ => crate::ErrorKind::Parse,
-            };
-            Error::from_source(kind, &e).with_path(path)
-        })?)),
-        "cub" | "cel" => Input::Cubical(Sourced { value: import::read_cub(path)?, source: source.clone() }),
-        "pbm" => Input::Cubical(Sourced { value: import::read_pbm(path)?, source: source.clone() }),
-        "npy" | "complex" => Input::Image(Sourced { value: Image::read(path)?, source: source.clone() }),
-        // a view: the drawing does not give back the map
-        "dot" => {
-            return Err(err!(
-                Unsupported,
-                "{}: unsupported input format '.dot': it is written only, as a view (read the .gmap it came from)",
-                path.display()
-            )
-            .with_path(path))
-        }
-        "" => {
-            return Err(err!(
-                Unsupported,
-                "{}: the file name has no extension, which names the format: one of .{}",
-                path.display(),
-                INPUT_EXTENSIONS.join(", .")
-            )
-            .with_path(path))
-        }
-        other => {
-            return Err(err!(
-                Unsupported,
-                "{}: unsupported input format '.{}'",
-                path.display(),
-                gmap_core::io::shorten(other.as_bytes(), 40)
-            )
-            .with_path(path))
-        }
-    })
 }
 
 /// Adds the option that raises the limit to a refusal for darts.

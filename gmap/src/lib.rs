@@ -77,22 +77,28 @@ mod cell_name;
 pub mod demo;
 pub mod distributed;
 mod error;
+pub mod formats;
 mod graph;
 pub mod info;
 pub mod input;
+mod open;
 pub mod persistence;
 pub mod progress;
+mod read;
 pub mod report;
 pub mod rooms;
 pub mod route;
 pub mod save;
 pub mod tm;
 pub mod view;
+mod write;
 
 pub use bench::{routes, RouteRun, Times};
 pub use error::{Error, ErrorKind, Result};
+pub use formats::{Format, FORMATS};
 pub use info::{info, Info, InfoOptions};
-pub use input::{open, open_with, Input, MapInput, OpenOptions, Sourced};
+pub use input::{Input, Kind, MapInput, OpenOptions, Sourced};
+pub use open::{open, open_with};
 pub use persistence::{
     lower_star, lower_star_file, persistence, persistence_file, Persistence, PersistenceOptions, VertexValues,
 };

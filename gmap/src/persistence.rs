@@ -229,40 +229,9 @@ fn naming(e: Error, path: &Path) -> Error {
     }
 }
 
-/// The reader of the grey images `gmap persistence` takes, by extension (`None`: not one).
-type ImageReader = fn(&Path) -> std::result::Result<Image, gmap_ops::import::FileError>;
-fn image_reader(ext: &str) -> Option<ImageReader> {
-    match ext {
-        "npy" | "complex" => Some(Image::read),
-        "pgm" | "png" => Some(gmap_ops::import::raster::read_raster),
-        _ => None,
-    }
-}
-
 fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
-    let ext = extension(path);
-    if let Some(read) = image_reader(&ext) {
-        let img = read(path).map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
-        let mut shape = img.shape().to_vec();
-        if img.order() == Order::Fortran {
-            shape.reverse();
-        }
-        let value = |i: usize| img.value(i);
-        // a 2-D image with cycles is kept to draw them over: its values are read once, and
-        // the same copy is the whole grid's (cycles come from no other route; past the limit
-        // nothing is read before the refusal)
-        let keep = shape.len() == 2 && img.order() == Order::C && opts.cycles;
-        let kept: Option<Vec<f64>> =
-            (keep && check_image_memory(&shape, opts).is_ok()).then(|| (0..img.len()).map(value).collect());
-        let pixels = match &kept {
-            Some(v) => Pixels::Slice(v),
-            None => Pixels::Read(&value),
-        };
-        let diagram = image_persistence(&shape, pixels, opts).map_err(|e| e.with_path(path))?;
-        let image = kept.map(|v| (shape[0], shape[1], v));
-        return Ok(Persistence { diagram, image, vertex_centred: opts.construction == Construction::V });
-    }
-    if ext == "facets" {
+    // a `.facets` file's values per facet are read with it (an opened complex has none)
+    if crate::formats::format_of(path).is_some_and(|f| f.extension == "facets") {
         let (sc, values) = read_valued(path)?;
         let values = values.ok_or_else(|| {
             Error::new(
@@ -274,8 +243,32 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
         let diagram = facet_persistence(&sc, &values, opts).map_err(|e| e.with_path(path))?;
         return Ok(Persistence { diagram, image: None, vertex_centred: false });
     }
-    let input = crate::open(path)?;
-    Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false })
+    match crate::open(path)? {
+        Input::Image(img) => image_file(&img, path, opts),
+        input => Ok(Persistence { diagram: persistence(&input, opts)?, image: None, vertex_centred: false }),
+    }
+}
+
+/// The diagram of a grey image read from `path`; a 2-D image with cycles is kept to draw
+/// them over.
+fn image_file(img: &Image, path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
+    let mut shape = img.shape().to_vec();
+    if img.order() == Order::Fortran {
+        shape.reverse();
+    }
+    let value = |i: usize| img.value(i);
+    // its values are read once, and the same copy is the whole grid's (cycles come from no
+    // other route; past the limit nothing is read before the refusal)
+    let keep = shape.len() == 2 && img.order() == Order::C && opts.cycles;
+    let kept: Option<Vec<f64>> =
+        (keep && check_image_memory(&shape, opts).is_ok()).then(|| (0..img.len()).map(value).collect());
+    let pixels = match &kept {
+        Some(v) => Pixels::Slice(v),
+        None => Pixels::Read(&value),
+    };
+    let diagram = image_persistence(&shape, pixels, opts).map_err(|e| e.with_path(path))?;
+    let image = kept.map(|v| (shape[0], shape[1], v));
+    Ok(Persistence { diagram, image, vertex_centred: opts.construction == Construction::V })
 }
 
 /// A `.facets` file's complex and its values per facet, if it has them.
@@ -396,14 +389,14 @@ pub fn lower_star_file(path: &Path, values: &VertexValues, opts: &PersistenceOpt
 }
 
 fn read_lower_star(path: &Path, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
-    let ext = extension(path);
-    if image_reader(&ext).is_some() {
+    let format = crate::formats::format_of(path);
+    if format.is_some_and(|f| f.is_image()) {
         return Err(Error::new(
             ErrorKind::Unsupported,
             "vertex values are for simplicial complexes: an image's values are its pixels (--construction V puts them on vertices)",
         ));
     }
-    if ext != "facets" {
+    if format.is_none_or(|f| f.extension != "facets") {
         return lower_star(&crate::open(path)?, values, opts);
     }
     let (sc, facet_values) = read_valued(path)?;

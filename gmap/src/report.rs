@@ -774,15 +774,15 @@ pub fn cubical_generators(
 /// its extension) before it is read, then the file is opened with `o.max_darts`.
 pub fn homology_file(path: impl AsRef<std::path::Path>, o: &HomologyOptions) -> Result<Report> {
     let path = path.as_ref();
-    let ext = crate::input::extension(path);
+    let kind = crate::formats::kind_of(path);
     check_options(
         &path.display().to_string(),
-        matches!(ext.as_str(), "facets" | "lex"),
-        matches!(ext.as_str(), "cub" | "cel" | "pbm" | "npy" | "complex"),
+        kind == Some(crate::Kind::Simplicial),
+        kind.is_some_and(crate::Kind::is_cubical),
         o,
     )?;
     o.progress.stage(&format!("reading {}", path.display()));
-    let input = crate::input::open_with(path, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    let input = crate::open_with(path, &crate::input::OpenOptions::max_darts(o.max_darts))?;
     homology(&input, o)
 }
 

@@ -13,13 +13,12 @@ use std::path::Path;
 
 use gmap_core::{DenseMap, LabelledGMap};
 use gmap_homology::arch::ArchComplex;
-use gmap_homology::dot::write_dot;
-use gmap_homology::json::write_json;
-use gmap_homology::lar::Lar;
 use gmap_ops::import::PosetError;
 
 use crate::error::{err, Error, ErrorKind, Result};
+use crate::formats::{format_of, output_format, Writer};
 use crate::input::{extension, split_lex_name, Input};
+use crate::write;
 
 /// Options of [`save`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -40,78 +39,109 @@ impl SaveOptions {
     }
 }
 
-/// Writes `input` to `output` in the format named by the output's extension. Refuses to
-/// write over the file the input was read from, and a kind of input the format cannot hold.
+/// Writes `input` to `output` in the format named by the output's extension (the writer of
+/// its row in [`crate::formats::FORMATS`]). Refuses to write over the file the input was
+/// read from, and a kind of input the format cannot hold.
 pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<()> {
     let output = output.as_ref();
     refuse_same_file(input.path(), output)?;
     if o.boundary {
         return save_boundary(input, output);
     }
-    if let Input::Map(m) = input {
-        // the labels of the cells live in the labelled map of a `.gmap` file
-        let labelled_output = match extension(output).as_str() {
-            "gmap" | "vtk" | "dot" | "graphml" => true,
-            "json" => !is_lar(output),
-            _ => false,
+    if let Input::Image(img) = input {
+        return match format_of(output).map(|f| f.writer) {
+            Some(Writer::Image(write)) => write(img, output),
+            _ => Err(err!(
+                Unsupported,
+                "{}: an image is written as .npy or .complex, not '.{}'",
+                input.path().display(),
+                gmap_core::io::shorten(extension(output).as_bytes(), 40)
+            )),
         };
-        if let (true, Some(g)) = (labelled_output, m.labelled()) {
-            let g = g?;
-            return match extension(output).as_str() {
-                "gmap" => Ok(gmap_core::io::write_labelled_gmap(g, output)?),
-                _ => write_labelled(g, output),
-            };
-        }
     }
+    match output_format(output)?.writer {
+        Writer::Graph(text) => write::text(output, &text(graph_of(input, output, o)?.as_ref())),
+        Writer::Map { map, labelled, cubes } => save_through_map(input, output, o, (map, labelled, cubes)),
+        Writer::Image(_) | Writer::None => Err(err!(
+            Unsupported,
+            "{}: unsupported output format '.{}' for a {}: it holds images",
+            output.display(),
+            extension(output),
+            input.kind()
+        )),
+    }
+}
+
+/// The incidence graph of any input: a map's cells (with the labels of a labelled file), a
+/// complex's face poset, an architectural complex itself.
+fn graph_of<'a>(input: &'a Input, output: &Path, o: &SaveOptions) -> Result<std::borrow::Cow<'a, ArchComplex>> {
+    use std::borrow::Cow;
+    let cannot = |e: &(dyn std::error::Error + 'static)| {
+        Error::from_source(ErrorKind::Precondition, e)
+            .context(format!("{}: cannot write the incidence graph", output.display()))
+    };
+    Ok(match input {
+        Input::Map(m) => match m.labelled() {
+            Some(g) => {
+                let (d, labels, _) = gmap_core::to_dense_labels(g?);
+                Cow::Owned(ArchComplex::from_map_with_labels(&d, &labels).map_err(|e| cannot(&e))?)
+            }
+            None => Cow::Owned(ArchComplex::from_map(m.map()).map_err(|e| cannot(&e))?),
+        },
+        Input::Simplicial(sc) => {
+            Cow::Owned(crate::graph::simplicial(sc, o.max_cells, &sc.path().display().to_string())?)
+        }
+        Input::Cubical(set) => Cow::Owned(crate::graph::cubical(set, false, &set.path().display().to_string())?),
+        Input::Arch(x) => Cow::Borrowed(x.get()),
+        Input::Image(_) => return Err(err!(Unsupported, "{}: an image has no incidence graph", output.display())),
+    })
+}
+
+/// Writes any input in a map format: a map as it is (with its labels and points where the
+/// format has a writer for them), a simplicial complex through its G-map, an architectural
+/// complex through the G-map of its cells, a full cubical set as its cubes or the G-map of
+/// their union.
+fn save_through_map(
+    input: &Input,
+    output: &Path,
+    o: &SaveOptions,
+    (map, labelled, cubes): (write::MapFn, Option<write::LabelledFn>, Option<write::CubesFn>),
+) -> Result<()> {
     match input {
-        Input::Map(m) => save_map(m.map(), output),
-        // the incidence graph of any complex is its face poset
-        Input::Simplicial(sc) if is_graph(output) => {
-            write_graph(&crate::graph::simplicial(sc, o.max_cells, &sc.path().display().to_string())?, output)
-        }
-        Input::Simplicial(sc) => save_map(&sc.to_gmap_within(o.max_darts)?, output),
-        Input::Arch(x) => write_arch(x, x.path(), output, o.max_darts),
-        Input::Cubical(set) if is_graph(output) => {
-            write_graph(&crate::graph::cubical(set, false, &set.path().display().to_string())?, output)
-        }
-        // .vtk voxels and a G-map of d-cells hold the cubes only
+        Input::Map(m) => match (labelled, m.labelled()) {
+            (Some(write), Some(g)) => write(g?, output),
+            _ => map(m.map(), output),
+        },
+        Input::Simplicial(sc) => map(&sc.to_gmap_within(o.max_darts)?, output),
+        Input::Arch(x) => match labelled {
+            Some(write) => write(&arch_to_labelled(x, o.max_darts, x.path(), output)?, output),
+            None => map(&arch_to_map(x, o.max_darts, x.path(), output)?, output),
+        },
+        // a .vtk of voxels and a G-map of d-cells hold the cubes only
         Input::Cubical(set) if !set.is_full() => {
-            let what = if extension(output) == "vtk" { ".vtk (voxels)" } else { "a G-map of its cubes" };
+            let what = if cubes.is_some() { ".vtk (voxels)" } else { "a G-map of its cubes" };
             let why = set.require_full(what).err().map(|e| e.to_string()).unwrap_or_default();
             Err(err!(Unsupported, "{}: {why}; write .json, .dot or .graphml (every cell)", set.path().display())
                 .with_path(set.path()))
         }
-        Input::Cubical(set) if extension(output) == "vtk" => {
-            gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
-        }
-        Input::Cubical(set) => {
-            let m = set
-                .gmap_of_union(false)
-                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
-            save_map(&m, output)
-        }
-        // an image is written as an image: numpy's .npy as it is, DIPHA's as f64
-        Input::Image(img) => {
-            let written = match crate::input::extension(output).as_str() {
-                "npy" => img.write_npy(output),
-                "complex" => img.write_dipha(output),
-                other => {
-                    return Err(err!(
-                        Unsupported,
-                        "{}: an image is written as .npy or .complex, not '.{}'",
-                        input.path().display(),
-                        gmap_core::io::shorten(other.as_bytes(), 40)
-                    ))
-                }
-            };
-            written.map_err(|e| err!(Write, "{}: {e}", output.display()).with_path(output))
+        Input::Cubical(set) => match cubes {
+            Some(write) => write(set, output),
+            None => {
+                let m = set
+                    .gmap_of_union(false)
+                    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
+                map(&m, output)
+            }
+        },
+        Input::Image(_) => {
+            Err(err!(Unsupported, "{}: an image is written as .npy or .complex", input.path().display()))
         }
     }
 }
 
 /// Writes the boundary surface of a 3-map (or of the G-map of a simplicial complex) as `.off`.
 fn save_boundary(input: &Input, output: &Path) -> Result<()> {
-    if extension(output) != "off" {
+    if format_of(output).map(|f| f.extension) != Some("off") {
         return Err(err!(Usage, "{}: --boundary writes the boundary surface of a 3-map as .off", output.display()));
     }
     let m = input.to_map()?;
@@ -123,28 +153,26 @@ fn save_boundary(input: &Input, output: &Path) -> Result<()> {
             m.dim()
         ));
     }
-    gmap_ops::export::write_boundary_off(&m, output).map_err(|e| cannot_write(output, &e))
+    write::boundary_off(&m, output)
 }
 
 /// What writing `input` to `output` leaves out, for `gmap convert` to say (and to refuse
 /// without `--lossy`): `"the labels"` of its cells or regions, `"the points"` of its
-/// vertices. Empty when the output keeps everything (or cannot hold the input at all,
-/// which [`save`] refuses with that reason).
-/// Reads the labels of a `.gmap` input (once; [`MapInput::labelled`]).
+/// vertices, as the output's row in [`crate::formats::FORMATS`] says what it keeps. Empty
+/// when the output keeps everything (or cannot hold the input at all, which [`save`]
+/// refuses with that reason). Reads the labels of a `.gmap` input (once;
+/// [`MapInput::labelled`]).
 ///
 /// [`MapInput::labelled`]: crate::MapInput::labelled
 pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static str> {
-    let ext = extension(output);
-    let graph = is_graph(output);
+    let Some(f) = format_of(output).filter(|f| f.is_written()) else { return Vec::new() };
+    let with_labels = matches!(f.writer, Writer::Map { labelled: Some(_), .. });
     let mut out = Vec::new();
     let (labels, keeps_labels) = match input {
-        Input::Map(m) => (
-            matches!(m.dense_labels(), Some(Ok((_, l))) if !l.is_empty()),
-            graph || matches!(ext.as_str(), "gmap" | "vtk"),
-        ),
+        Input::Map(m) => (matches!(m.dense_labels(), Some(Ok((_, l))) if !l.is_empty()), f.is_graph() || with_labels),
         Input::Arch(x) => (
             (0..x.regions().len()).any(|r| !x.region_labels(r).is_empty()),
-            graph || (ext == "gmap" && x.dim() <= gmap_core::labels::MAX_LABELLED_DIM),
+            f.is_graph() || (with_labels && x.dim() <= gmap_core::labels::MAX_LABELLED_DIM),
         ),
         _ => (false, true),
     };
@@ -152,21 +180,27 @@ pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static st
         out.push("the labels");
     }
     let points = match input {
-        Input::Map(m) => m.map().has_points() && !matches!(ext.as_str(), "gmap" | "moka" | "off" | "vtk"),
-        // the regions' points: in an incidence graph's .json, and in a .gmap when every
-        // vertex of the cut map is a vertex region with a point (a cut may add vertices)
-        Input::Arch(x) if (0..x.regions().len()).any(|r| x.region_point(r).is_some()) => match ext.as_str() {
-            "json" if graph => false,
-            "gmap" => !matches!(arch_to_labelled(x, o.max_darts, Path::new(""), output), Ok(g) if g.has_points()),
-            _ => true,
-        },
+        // a map's incidence graph has no points
+        Input::Map(m) => m.map().has_points() && (f.is_graph() || !f.keeps_points),
+        // the regions' points: in an incidence graph that keeps them, and in a map format
+        // with a writer of points and labels when every vertex of the cut map is a vertex
+        // region with a point (a cut may add vertices)
+        Input::Arch(x) if (0..x.regions().len()).any(|r| x.region_point(r).is_some()) => {
+            if f.is_graph() {
+                !f.keeps_points
+            } else {
+                !(with_labels
+                    && f.keeps_points
+                    && matches!(arch_to_labelled(x, o.max_darts, Path::new(""), output), Ok(g) if g.has_points()))
+            }
+        }
         _ => false,
     };
     if points {
         out.push("the points");
     }
     // an .off that cannot hold the map is refused for that, first
-    if ext == "off" && !o.boundary && input.dim() != 2 {
+    if f.extension == "off" && !o.boundary && input.dim() != 2 {
         out.clear();
     }
     out
@@ -177,7 +211,7 @@ pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static st
 pub fn save_file(input: impl AsRef<Path>, output: impl AsRef<Path>, o: &SaveOptions) -> Result<()> {
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
-    let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    let opened = crate::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
     save(&opened, output, o)
 }
 
@@ -191,10 +225,10 @@ pub fn save_checked(
 ) -> Result<()> {
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
-    let opened = crate::input::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
+    let opened = crate::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
     // a complex that cannot be cut into cells is refused for that first
-    if let (Input::Arch(x), false) = (&opened, is_graph(output)) {
-        arch_to_map(x, o.max_darts, input, output)?;
+    if let (Input::Arch(x), false) = (&opened, format_of(output).is_some_and(|f| f.is_graph())) {
+        arch_to_map(x.get(), o.max_darts, input, output)?;
     }
     check(&dropped(&opened, output, o))?;
     save(&opened, output, o)
@@ -231,111 +265,34 @@ fn same_file(input: &Path, output: &Path) -> bool {
     matches!((input.canonicalize(), output.canonicalize()), (Ok(x), Ok(y)) if x == y)
 }
 
-fn cannot_write(output: &Path, e: &(dyn std::error::Error + 'static)) -> Error {
-    Error::from_source(ErrorKind::Write, e).context(format!("{}: cannot write", output.display()))
-}
-
-/// Writes a map in the format named by the extension of `output`.
+/// Writes a map in the format named by the extension of `output` (its plain map writer: no
+/// labels).
 pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
-    match extension(output).as_str() {
-        "gmap" => gmap_core::io::write_gmap(m, output)?,
-        "moka" => gmap_core::io::write_moka(m, output)?,
-        "off" if m.dim() == 3 => {
-            return Err(err!(
-                Unsupported,
-                "{}: .off holds 2-maps (surfaces), this map has dimension 3; gmap convert --boundary writes its boundary surface",
-                output.display()
-            ))
-        }
-        "off" => gmap_ops::export::write_off(m, output).map_err(|e| cannot_write(output, &e))?,
-        "facets" => gmap_ops::export::write_barycentric_facets(m, output)?,
-        "vtk" => gmap_ops::export::write_vtk(m, output).map_err(|e| cannot_write(output, &e))?,
-        "json" if is_lar(output) => {
-            let text = Lar::from_map(m).to_json().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
-            write_text(output, &text)?
-        }
-        "json" | "dot" | "graphml" => write_graph(&arch_of(m, output)?, output)?,
-        other => {
-            return Err(err!(
-                Unsupported,
-                "{}: unsupported output format '.{}'",
-                output.display(),
-                gmap_core::io::shorten(other.as_bytes(), 40)
-            ))
-        }
-    }
-    Ok(())
-}
-
-/// Writes a labelled map as `.vtk` (labels as cell data) or as its incidence graph, `.json`
-/// or `.dot` (labels on the regions).
-fn write_labelled(g: &LabelledGMap, output: &Path) -> Result<()> {
-    let (m, labels, _) = gmap_core::to_dense_labels(g);
-    match extension(output).as_str() {
-        "vtk" => gmap_ops::export::write_vtk_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, &e)),
-        ext => {
-            let x = ArchComplex::from_map_with_labels(&m, &labels).map_err(|e| {
+    match output_format(output)?.writer {
+        Writer::Map { map, .. } => map(m, output),
+        Writer::Graph(text) => {
+            let x = ArchComplex::from_map(m).map_err(|e| {
                 Error::from_source(ErrorKind::Precondition, &e)
                     .context(format!("{}: cannot write the incidence graph", output.display()))
             })?;
-            let _ = ext;
-            write_graph(&x, output)
+            write::text(output, &text(&x))
         }
+        Writer::Image(_) | Writer::None => Err(err!(
+            Unsupported,
+            "{}: unsupported output format '.{}' for a map: it holds images",
+            output.display(),
+            extension(output)
+        )),
     }
 }
 
-/// Whether the output is an incidence graph: `.json` (not `.lar.json`), `.dot`, `.graphml`.
-fn is_graph(p: &Path) -> bool {
-    match extension(p).as_str() {
-        "json" => !is_lar(p),
-        "dot" | "graphml" => true,
-        _ => false,
-    }
-}
-
-/// Writes an incidence graph in the format of the output's extension ([`is_graph`]).
-fn write_graph(x: &ArchComplex, output: &Path) -> Result<()> {
-    let text = match extension(output).as_str() {
-        "dot" => write_dot(x),
-        "graphml" => gmap_homology::graphml::write_graphml(x),
-        _ => write_json(x),
-    };
-    write_text(output, &text)
-}
-
-/// Whether the output is a LAR file (`.lar.json`) rather than an incidence graph.
-fn is_lar(p: &Path) -> bool {
-    p.to_string_lossy().to_lowercase().ends_with(".lar.json")
-}
-
-/// The architectural complex of a map's cells (AC Remark 3.3), or why it has none.
-fn arch_of(m: &DenseMap, output: &Path) -> Result<ArchComplex> {
-    ArchComplex::from_map(m).map_err(|e| {
-        Error::from_source(ErrorKind::Precondition, &e)
-            .context(format!("{}: cannot write the incidence graph", output.display()))
-    })
-}
-
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    gmap_core::io::write_atomic(path, text.as_bytes()).map_err(|e| cannot_write(path, &e))
-}
-
-/// Writes an architectural complex: `.json` and `.dot` directly; any other format through
-/// the G-map of its cells (the flag construction, gmap-ops), after cutting the regions that
-/// are not cells so that the map is the same space ([`crate::arch_cells`]; refused with the
-/// region's name where that cannot be done).
+/// Writes an architectural complex: `.json`, `.dot` and `.graphml` directly; any other
+/// format through the G-map of its cells (the flag construction, gmap-ops), after cutting
+/// the regions that are not cells so that the map is the same space ([`crate::arch_cells`];
+/// refused with the region's name where that cannot be done).
 pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Result<()> {
-    write_arch(x, Path::new(""), output, max_darts)
-}
-
-/// [`save_arch`] of a complex read from `input` (refusals name it first).
-fn write_arch(x: &ArchComplex, input: &Path, output: &Path, max_darts: Option<u64>) -> Result<()> {
-    match extension(output).as_str() {
-        _ if is_graph(output) => write_graph(x, output),
-        // a .gmap holds the regions' labels on their cells and the vertices' points
-        "gmap" => Ok(gmap_core::io::write_labelled_gmap(&arch_to_labelled(x, max_darts, input, output)?, output)?),
-        _ => save_map(&arch_to_map(x, max_darts, input, output)?, output),
-    }
+    let o = SaveOptions::max_darts(max_darts);
+    save(&Input::Arch(crate::Sourced::new(x.clone())), output, &o)
 }
 
 /// The G-map of an architectural complex's cells ([`crate::arch_cells`]).

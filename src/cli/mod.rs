@@ -31,6 +31,19 @@ pub struct Cli {
     quiet: bool,
 }
 
+/// The help of an input file argument: every extension the registry reads.
+fn input_help(what: &str) -> String {
+    format!("{what} ({})", gmap::formats::input_help())
+}
+
+/// The help of `--box`: the formats of cubical sets.
+fn box_help() -> String {
+    format!(
+        "for a cubical set ({}): its box as its first and last cubes, \"(0,0) (3,0)\" (default: the cubes' bounding box, or the file's `box` line)",
+        gmap::formats::extensions_of(&[gmap::Kind::Cubical])
+    )
+}
+
 fn parse_cubical_box(text: &str) -> Result<(Vec<i64>, Vec<i64>), String> {
     gmap::ops::import::parse_box(text)
 }
@@ -71,28 +84,24 @@ struct Limits {
 
 #[derive(Args, Debug)]
 struct InfoArgs {
-    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
+    #[arg(help = input_help("the input file"))]
     file: PathBuf,
     /// print one JSON object
     #[arg(long)]
     json: bool,
     #[command(flatten)]
     limits: Limits,
-    /// for a cubical set (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of its box
-    #[arg(long)]
+    #[arg(long, help = format!("for a cubical set ({}): identify the opposite faces of its box", gmap::formats::extensions_of(&[gmap::Kind::Cubical, gmap::Kind::Image])))]
     periodic: bool,
-    /// for a cubical set (.cub, .cel, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
-    /// (default: the cubes' bounding box, or the file's `box` line)
-    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
+    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box, help = box_help())]
     cubical_box: Option<(Vec<i64>, Vec<i64>)>,
-    /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", help = format!("for an image ({}): its cubes of value ≤ T (default: the non-zero values)", gmap::formats::extensions_of(&[gmap::Kind::Image])))]
     level: Option<f64>,
 }
 
 #[derive(Args, Debug)]
 struct HomologyArgs {
-    /// the input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
+    #[arg(help = input_help("the input file"))]
     file: PathBuf,
     /// cellular (default) or simplicial
     #[arg(long, value_enum, default_value_t = Method::Cellular)]
@@ -121,15 +130,11 @@ struct HomologyArgs {
     /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
     #[arg(long, value_enum)]
     via: Option<Via>,
-    /// for a cubical set (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of its box (a torus)
-    #[arg(long)]
+    #[arg(long, help = format!("for a cubical set ({}): identify the opposite faces of its box (a torus)", gmap::formats::extensions_of(&[gmap::Kind::Cubical, gmap::Kind::Image])))]
     periodic: bool,
-    /// for a cubical set (.cub, .cel, .pbm): its box as its first and last cubes, "(0,0) (3,0)"
-    /// (default: the cubes' bounding box, or the file's `box` line)
-    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box)]
+    #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box, help = box_help())]
     cubical_box: Option<(Vec<i64>, Vec<i64>)>,
-    /// for an image (.npy, .complex): its cubes of value ≤ T (default: the non-zero values)
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", help = format!("for an image ({}): its cubes of value ≤ T (default: the non-zero values)", gmap::formats::extensions_of(&[gmap::Kind::Image])))]
     level: Option<f64>,
     /// print the seconds of the reading stage and of the homology on stderr
     #[arg(long)]
@@ -149,17 +154,15 @@ struct BenchArgs {
     csv: bool,
     #[command(flatten)]
     limits: Limits,
-    /// for cubical sets (.cub, .cel, .pbm, .npy, .complex): identify the opposite faces of the box (a torus)
-    #[arg(long)]
+    #[arg(long, help = format!("for cubical sets ({}): identify the opposite faces of the box (a torus)", gmap::formats::extensions_of(&[gmap::Kind::Cubical, gmap::Kind::Image])))]
     periodic: bool,
 }
 
 #[derive(Args, Debug)]
 struct ConvertArgs {
-    /// input file (.gmap, .moka, .off, .vtk, .vtu, .msh, .facets, .lex[#name], .json, .cub, .cel, .pbm, .npy, .complex)
+    #[arg(help = input_help("input file"))]
     input: PathBuf,
-    /// output file: .gmap, .moka, .off, .vtk, .facets, .lar.json, .npy, .complex, or the
-    /// incidence graph as .json, .dot, .graphml
+    #[arg(help = format!("output file: {}", gmap::formats::output_help()))]
     output: PathBuf,
     #[command(flatten)]
     limits: Limits,

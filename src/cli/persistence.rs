@@ -17,9 +17,11 @@ pub(crate) enum Construction {
 
 #[derive(Args, Debug)]
 pub(crate) struct PersistenceArgs {
-    /// the input: an image (.npy, .complex, .pgm, .png), a .facets file with `: VALUE` per
-    /// facet (or any simplicial complex with --vertex-values), a .gmap with a numeric label
-    /// per cell, a cubical set (.cub, .pbm)
+    #[arg(help = format!(
+        "the input: an image ({}), a .facets file with `: VALUE` per facet (or any simplicial complex with --vertex-values), a .gmap with a numeric label per cell, a cubical set ({})",
+        gmap::formats::extensions_of(&[gmap::Kind::Image]),
+        gmap::formats::extensions_of(&[gmap::Kind::Cubical]),
+    ))]
     file: PathBuf,
     /// coefficients Z/P, P a prime below 2^31
     #[arg(long, default_value_t = 2)]

@@ -10,7 +10,7 @@ use super::Limits;
 
 #[derive(Args, Debug)]
 pub(super) struct ViewArgs {
-    /// the input file (.gmap, .moka, .off, .facets, .lex[#name], .json, .cub, .pbm)
+    #[arg(help = super::input_help("the input file"))]
     file: PathBuf,
     /// the page to write (default: FILE with the extension .html, in the current folder)
     #[arg(short, long)]

@@ -1,0 +1,117 @@
+//! The writers of the format registry ([`crate::formats::FORMATS`]): one function per
+//! format and kind of value, each writing a whole file through a temporary file and a
+//! rename (a failure leaves no partial output). [`crate::save`] chooses among them.
+
+use std::path::Path;
+
+use gmap_core::{DenseMap, LabelledGMap};
+use gmap_homology::arch::ArchComplex;
+use gmap_homology::lar::Lar;
+use gmap_ops::import::{CubicalSet, Image};
+
+use crate::error::{err, Error, ErrorKind, Result};
+
+/// Writes a map.
+pub(crate) type MapFn = fn(&DenseMap, &Path) -> Result<()>;
+/// Writes a map with its points and the labels of its cells.
+pub(crate) type LabelledFn = fn(&LabelledGMap, &Path) -> Result<()>;
+/// Writes a full cubical set's cubes as they are.
+pub(crate) type CubesFn = fn(&CubicalSet, &Path) -> Result<()>;
+/// The text of an incidence graph.
+pub(crate) type GraphFn = fn(&ArchComplex) -> String;
+/// Writes an image.
+pub(crate) type ImageFn = fn(&Image, &Path) -> Result<()>;
+
+/// The refusal of a writer that failed, naming the output.
+pub(crate) fn cannot_write(output: &Path, e: &(dyn std::error::Error + 'static)) -> Error {
+    Error::from_source(ErrorKind::Write, e).context(format!("{}: cannot write", output.display()))
+}
+
+/// Writes `text` to `path` atomically.
+pub(crate) fn text(path: &Path, text: &str) -> Result<()> {
+    gmap_core::io::write_atomic(path, text.as_bytes()).map_err(|e| cannot_write(path, &e))
+}
+
+/// `.gmap`.
+pub(crate) fn gmap(m: &DenseMap, output: &Path) -> Result<()> {
+    Ok(gmap_core::io::write_gmap(m, output)?)
+}
+
+/// `.gmap` with points and labels.
+pub(crate) fn labelled_gmap(g: &LabelledGMap, output: &Path) -> Result<()> {
+    Ok(gmap_core::io::write_labelled_gmap(g, output)?)
+}
+
+/// `.moka`.
+pub(crate) fn moka(m: &DenseMap, output: &Path) -> Result<()> {
+    Ok(gmap_core::io::write_moka(m, output)?)
+}
+
+/// `.off` of a 2-map; a 3-map is refused with the flag that writes its boundary.
+pub(crate) fn off(m: &DenseMap, output: &Path) -> Result<()> {
+    if m.dim() == 3 {
+        return Err(err!(
+            Unsupported,
+            "{}: .off holds 2-maps (surfaces), this map has dimension 3; gmap convert --boundary writes its boundary surface",
+            output.display()
+        ));
+    }
+    gmap_ops::export::write_off(m, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// `.off` of the boundary surface of a 3-map.
+pub(crate) fn boundary_off(m: &DenseMap, output: &Path) -> Result<()> {
+    gmap_ops::export::write_boundary_off(m, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// `.facets`: the barycentric subdivision, one simplex per dart.
+pub(crate) fn facets(m: &DenseMap, output: &Path) -> Result<()> {
+    Ok(gmap_ops::export::write_barycentric_facets(m, output)?)
+}
+
+/// `.vtk` of a map with points.
+pub(crate) fn vtk(m: &DenseMap, output: &Path) -> Result<()> {
+    gmap_ops::export::write_vtk(m, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// `.vtk` of a map with points, the labels of its cells as cell data.
+pub(crate) fn labelled_vtk(g: &LabelledGMap, output: &Path) -> Result<()> {
+    let (m, labels, _) = gmap_core::to_dense_labels(g);
+    gmap_ops::export::write_vtk_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// `.vtk` of a full cubical set: its cubes as voxels.
+pub(crate) fn voxels_vtk(set: &CubicalSet, output: &Path) -> Result<()> {
+    gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
+}
+
+/// `.lar.json`: LAR's characteristic matrices of a map.
+pub(crate) fn lar(m: &DenseMap, output: &Path) -> Result<()> {
+    let json = Lar::from_map(m).to_json().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    text(output, &json)
+}
+
+/// The `.json` of an incidence graph.
+pub(crate) fn json_graph(x: &ArchComplex) -> String {
+    gmap_homology::json::write_json(x)
+}
+
+/// The `.dot` of an incidence graph.
+pub(crate) fn dot_graph(x: &ArchComplex) -> String {
+    gmap_homology::dot::write_dot(x)
+}
+
+/// The GraphML of an incidence graph.
+pub(crate) fn graphml_graph(x: &ArchComplex) -> String {
+    gmap_homology::graphml::write_graphml(x)
+}
+
+/// `.npy`: an image as it is.
+pub(crate) fn npy(img: &Image, output: &Path) -> Result<()> {
+    img.write_npy(output).map_err(|e| err!(Write, "{}: {e}", output.display()).with_path(output))
+}
+
+/// DIPHA's `.complex`: an image's values as `f64`.
+pub(crate) fn dipha(img: &Image, output: &Path) -> Result<()> {
+    img.write_dipha(output).map_err(|e| err!(Write, "{}: {e}", output.display()).with_path(output))
+}
