@@ -27,11 +27,11 @@ use gmap_homology::border::border_from_oriented;
 use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, ChainComplex, Homology};
 use serde_json::{json, Value};
 
+use crate::chains::{check_simplicial_size, face_complex_within};
 use crate::error::{err, Result};
 use crate::input::{Input, OpenOptions};
 use crate::open_with;
 use crate::progress::Progress;
-use crate::route::{check_simplicial_size, face_complex_within};
 
 /// Stage times of one route, in milliseconds; `None` for a stage the route does not have.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -356,7 +356,7 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
     // the general route of `homology`: the cubical complex built and reduced slab by slab
     let mut times = Times { read, ..Times::default() };
     let t = Instant::now();
-    let slab = crate::route::slab_layers(&shape);
+    let slab = crate::cubes::slab_layers(&shape);
     let c = match cubes {
         Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
             &shape,

@@ -40,8 +40,8 @@ use gmap_ops::import::{Image, Level};
 use serde_json::json;
 
 use crate::error::{err, Error, ErrorKind, Result};
+use crate::options::Method;
 use crate::report::Report;
-use crate::route::Method;
 
 /// The messaging [`run`] needs between `size()` processes numbered `0..size()`. Every
 /// process calls the same methods in the same order (collective calls).

@@ -283,20 +283,21 @@ pub fn output_extensions() -> impl Iterator<Item = &'static str> {
     FORMATS.iter().filter(|f| f.is_written()).map(|f| f.extension)
 }
 
-/// The extensions that open as one of `kinds`, as the help text lists them: `.cub, .cel,
-/// .pbm` (`.lex` as `.lex[#name]`).
+/// The extensions that open as one of `kinds`, as messages and the help text list them:
+/// `.cub, .cel, .pbm`.
 pub fn extensions_of(kinds: &[Kind]) -> String {
     let listed: Vec<String> = FORMATS
         .iter()
         .filter(|f| f.reads().is_some_and(|k| kinds.contains(&k)))
-        .map(|f| if f.extension == "lex" { ".lex[#name]".to_string() } else { format!(".{}", f.extension) })
+        .map(|f| format!(".{}", f.extension))
         .collect();
     listed.join(", ")
 }
 
-/// Every extension [`crate::open`] reads, as the help text lists them.
+/// Every extension [`crate::open`] reads, as the help text lists them (`.lex[#name]`: one
+/// complex of a `.lex` file).
 pub fn input_help() -> String {
-    extensions_of(&Kind::ALL)
+    extensions_of(&Kind::ALL).replace(".lex", ".lex[#name]")
 }
 
 /// The outputs of `gmap convert`, as its help text lists them: the map and image formats,

@@ -332,7 +332,7 @@ fn simplicial_info(
     file: &str,
     why: String,
 ) -> Result<SimplicialInfo> {
-    let fc = crate::route::face_complex_within(sc, max_cells, file, false)?;
+    let fc = crate::face_complex_within(sc, max_cells, file, false)?;
     // components: the vertices' classes, joined along each facet
     let mut classes = gmap_core::union_find::UnionFind::new(fc.vertices.len());
     let idx = |v: &u64| fc.vertices.binary_search(v).unwrap_or(0) as u32;

@@ -1,504 +1,370 @@
-//! Which chain complex an input's homology is computed on, and building it.
+//! Which route computes an input's homology, as a value: [`plan`] chooses a [`Route`] from
+//! the input and the options, [`Route::run`] follows it to a [`Report`]. The command line,
+//! the Python package, `gmap bench` and the MPI binary all go through here, so a route is
+//! chosen in one place.
 //!
-//! | input | route | chain complex |
+//! | input | route | chain complex (module) |
 //! |---|---|---|
-//! | map | `cellular` (default) | the cells and the border operator (BO Def. 10), under C1/C2 |
-//! | map | `simplicial` | the simplicial counterpart: one n-simplex per dart (BO §6) |
-//! | simplicial complex | `direct` (default) | every face of every facet a cell |
-//! | simplicial complex | `gmap` | the G-map of the facets, then a map route |
-//! | cubical set | `cubical` | the cubical complex of the closure, free faces collapsed |
-//! | architectural complex | `cellular` | the completion by zero of its boundary matrix (AC Def. 3.9) |
+//! | map | [`Route::Cellular`] (default) | the cells and the border operator under C1/C2 ([`crate::chains`]) |
+//! | map | [`Route::Simplicial`] | the simplicial counterpart: one n-simplex per dart |
+//! | simplicial complex | [`Route::Direct`] (default) | every face of every facet a cell |
+//! | simplicial complex | [`Route::Gmap`] | the G-map of the facets, then a map route |
+//! | cubical set, image, borrowed cubes | [`Route::OnePass`] (dimension ≤ 3, no generators) | none: union-finds and χ ([`crate::cubes`]) |
+//! | cubical set, image, borrowed cubes | [`Route::Sweep`] (dimension ≤ 3, generators) | none: union-finds and a sweep |
+//! | cubical set, image, borrowed cubes | [`Route::Cubical`] | the cubical complex, whole or slab by slab |
+//! | architectural complex | [`Route::Arch`] | the completion by zero of its boundary matrix (AC Def. 3.9) |
 //!
 //! A simplicial complex goes through its G-map when asked (`via = Gmap`) or when the options
 //! need a map (`--method simplicial`, `--simplify`). Simplifying a map is done only when it
-//! keeps the groups ([`simplify_if_safe`]).
+//! keeps the groups ([`crate::simplify_if_safe`]). The one-pass route and the sweep hand
+//! the cubes to the cubical complex where they cannot finish (a periodic box whose
+//! union-finds do not fit in memory, a sweep that stops at a vertex), with a note.
 
-use gmap_core::DenseMap;
-use gmap_homology::arch::ZeroWeightRule;
-use gmap_homology::simplices::{face_complex_of, FaceComplex, FaceError};
-use gmap_homology::{cellular_complex, simplicial_complex_with_simplices, ChainComplex};
-use gmap_ops::import::SimplicialComplex;
+use gmap_homology::{homology_z, homology_zp, Homology};
+use gmap_ops::import::{CubicalSet, Level};
 
-use crate::cell_name::CellName;
+use crate::chains::{self, Named};
+use crate::cubes::{self, Cubes, CubesRef};
 use crate::error::{err, Error, ErrorKind, Result};
-use crate::input::Input;
-use crate::progress::Progress;
+use crate::formats::extensions_of;
+use crate::input::{Input, Kind};
+use crate::options::{check_options, HomologyOptions, Method, Via};
+use crate::report::{ArchSpace, Chain, NamedGenerator, Report};
 
-/// Which chain complex of a map is reduced.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Method {
-    /// the cellular border operator (BO Def. 10), on the cells themselves
-    #[default]
-    Cellular,
-    /// the simplicial counterpart (BO §6): one n-simplex per dart
-    Simplicial,
-}
-
-impl Method {
-    /// `"cellular"` or `"simplicial"`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::Cellular => "cellular",
-            Method::Simplicial => "simplicial",
-        }
-    }
-}
-
-/// How a simplicial complex (`.facets`, `.lex`) is taken.
+/// A route from an input to its groups.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Via {
-    /// every face of every facet is a cell (any simplicial complex)
+#[non_exhaustive]
+pub enum Route {
+    /// a map's cells and the border operator (BO Def. 10), under C1/C2
+    Cellular,
+    /// a map's simplicial counterpart (BO §6)
+    Simplicial,
+    /// a simplicial complex: every face of every facet a cell
     Direct,
-    /// through the G-map of the facets (pure pseudo-manifolds)
-    Gmap,
+    /// a simplicial complex through the G-map of its facets, then the map route of `Method`
+    Gmap(Method),
+    /// cubes of dimension ≤ 3: the groups in one pass over them (periodic: over the torus)
+    OnePass,
+    /// cubes of dimension ≤ 3 in a box that is not periodic: the groups and a cycle per
+    /// summand from union-finds and a sweep of the grid
+    Sweep,
+    /// cubes: the cubical complex of the closure, whole (`true`) or slab by slab
+    Cubical {
+        /// built at once rather than slab by slab
+        whole: bool,
+    },
+    /// an architectural complex: the completion by zero of its boundary matrix
+    Arch,
 }
 
-impl Via {
-    /// `"direct"` or `"gmap"`.
+impl Route {
+    /// The route's name, as `gmap bench` prints it: `cellular`, `simplicial`, `direct`,
+    /// `gmap`, `one-pass`, `sweep`, `cubical` (whole), `slabs`, `arch`.
     pub fn name(self) -> &'static str {
         match self {
-            Via::Direct => "direct",
-            Via::Gmap => "gmap",
+            Route::Cellular => "cellular",
+            Route::Simplicial => "simplicial",
+            Route::Direct => "direct",
+            Route::Gmap(_) => "gmap",
+            Route::OnePass => "one-pass",
+            Route::Sweep => "sweep",
+            Route::Cubical { whole: true } => "cubical",
+            Route::Cubical { whole: false } => "slabs",
+            Route::Arch => "arch",
         }
+    }
+
+    /// Follows the route on `input` (which [`plan`] chose it for) to the groups, with the
+    /// generators when asked for.
+    pub fn run(self, input: &Input, o: &HomologyOptions) -> Result<Report> {
+        let file = input.path().display().to_string();
+        let via = check_options(&file, Some(input.input_kind()), o)?;
+        let mut report = match input {
+            Input::Cubical(set) => run_cubes(self, Cubes::Set(set), o, &file)?,
+            Input::Image(img) => run_cubes(self, Cubes::Image(img, level(o)), o, &file)?,
+            _ => run_complex(self, input, o, &file)?,
+        };
+        (report.kind, report.route) = (input.kind(), via);
+        Ok(report)
     }
 }
 
-/// The options of [`crate::homology`], as the command line's flags.
-#[derive(Clone, Debug, Default)]
-#[non_exhaustive]
-pub struct HomologyOptions {
-    /// cellular (default) or simplicial
-    pub method: Method,
-    /// a prime P: compute over Z/P (default: over Z)
-    pub field: Option<u64>,
-    /// a representative cycle for each summand
-    pub generators: bool,
-    /// the most cells with entries per dimension of the reduced complex for which generators
-    /// are computed (default: `gmap_homology::generators::GENERATOR_CELL_LIMIT`, 2,000; full
-    /// cubical sets of dimension ≤ 3 have their own route, `crate::report::cubical_generators`)
-    pub max_generator_cells: Option<usize>,
-    /// reduce a map by homology-preserving removals and contractions first
-    pub simplify: bool,
-    /// an architectural complex: Algorithm 8.16 first (topological Betti numbers)
-    pub topological: bool,
-    /// refuse maps of more darts than this
-    pub max_darts: Option<u64>,
-    /// the direct route of a simplicial complex: refuse more faces than this (default: what
-    /// the memory budget holds)
-    pub max_cells: Option<u64>,
-    /// a simplicial complex's route (`None`: direct unless the options need the G-map)
-    pub via: Option<Via>,
-    /// a cubical set's box is a torus (opposite faces identified)
-    pub periodic: bool,
-    /// a cubical set's box, as its first and last cubes (default: the cubes' bounding box,
-    /// or the `box` line of a `.cub`)
-    pub cubical_box: Option<(Vec<i64>, Vec<i64>)>,
-    /// an image's cubical set: the values `≤ T` (default: the non-zero values)
-    pub level: Option<f64>,
-    /// where the stages are shown
-    pub progress: Progress,
+/// The cubes of an image: the values `≤ level` (default: the non-zero values).
+fn level(o: &HomologyOptions) -> Level {
+    o.level.map_or(Level::Nonzero, Level::AtMost)
 }
 
-/// A chain complex with a name for each generator: `name(k, j)` names k-cell `j` in the
-/// input's terms.
-pub(crate) struct Named<'a> {
-    pub(crate) chain: ChainComplex,
-    pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
-    /// the chain complex is relative to vertices set aside (a cubical set reduced slab by
-    /// slab): how its groups become the input's
-    pub(crate) relative: Option<gmap_homology::cubical_slabs::Relative>,
-}
-
-/// The route a simplicial complex takes, `None` for the other inputs; refuses options that
-/// do not fit the input. Direct by default; through the G-map with `via = Gmap`,
-/// `method = Simplicial` or `simplify` (which work on maps).
-pub(crate) fn simplicial_route(simplicial_input: bool, file: &str, o: &HomologyOptions) -> Result<Option<Via>> {
-    let needs_map = o.method == Method::Simplicial || o.simplify;
-    let route = match (o.via, simplicial_input) {
-        (Some(Via::Direct), false) => {
-            return Err(err!(Usage, "{file}: --via direct applies to simplicial complexes (.facets, .lex)"))
-        }
-        (Some(Via::Direct), true) if needs_map => {
-            return Err(err!(Usage, "{file}: --method simplicial and --simplify work on the G-map; use --via gmap"))
-        }
-        (_, false) => None,
-        (Some(v), true) => Some(v),
-        (None, true) if needs_map => Some(Via::Gmap),
-        (None, true) => Some(Via::Direct),
-    };
-    Ok(route)
-}
-
-/// The file an input was read from, as messages name it.
-pub(crate) fn file_of(input: &Input) -> String {
-    input.path().display().to_string()
-}
-
-/// The points of a map's darts, when it has any (for naming G-map cells).
-fn points(map: &DenseMap) -> Option<Vec<Option<[f64; 3]>>> {
-    map.has_points().then(|| map.darts().map(|d| map.point(d)).collect())
-}
-
-/// The name of the k-cell with dart `d`: by labels when the map came from a simplicial
-/// complex (the k-face of the dart's flag), else by dart (and point).
-fn dart_cell(sc: Option<&SimplicialComplex>, pts: &Option<Vec<Option<[f64; 3]>>>, k: usize, d: u32) -> CellName {
-    if let Some(face) = sc.and_then(|sc| sc.dart_face(u64::from(d), k)) {
-        return CellName::Simplex(face);
+/// The route [`crate::homology`] takes for `input` with `o`; refuses options that do not fit
+/// the input with the reason ([`ErrorKind::Usage`]).
+pub fn plan(input: &Input, o: &HomologyOptions) -> Result<Route> {
+    let file = input.path().display().to_string();
+    let via = check_options(&file, Some(input.input_kind()), o)?;
+    if o.level.is_some() && !matches!(input, Input::Image(_)) {
+        return Err(err!(Usage, "{file}: --level applies to images ({})", extensions_of(&[Kind::Image])));
     }
-    CellName::Dart { dart: d, point: pts.as_ref().and_then(|p| p[d as usize]), simplex: None }
-}
-
-/// The cellular chain complex of a map with its cells named, or why the method does not
-/// apply (C1, C2, self-bending).
-pub(crate) fn cellular<'a>(
-    map: &DenseMap,
-    file: &str,
-    sc: Option<&'a SimplicialComplex>,
-    progress: &Progress,
-) -> Result<Named<'a>> {
-    progress.stage("checking C1 and C2 and building the border operator");
-    let c = cellular_complex(map).map_err(|e| {
-        Error::from_source(ErrorKind::Precondition, &e)
-            .context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
-    })?;
-    let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
-    let pts = points(map);
-    Ok(Named {
-        chain: c.chain,
-        name: Box::new(move |k, j| dart_cell(sc, &pts, k, reps[k][j as usize])),
-        relative: None,
+    Ok(match input {
+        Input::Cubical(set) => plan_cubes(Cubes::Set(set), o),
+        Input::Image(img) => plan_cubes(Cubes::Image(img, level(o)), o),
+        Input::Simplicial(_) => match via {
+            Some(Via::Direct) => Route::Direct,
+            _ => Route::Gmap(o.method),
+        },
+        Input::Map(_) if o.topological => {
+            return Err(err!(
+                Usage,
+                "{file}: --topological applies to architectural complexes ({}), not to G-maps",
+                extensions_of(&[Kind::Arch])
+            ))
+        }
+        Input::Map(_) => match o.method {
+            Method::Cellular => Route::Cellular,
+            Method::Simplicial => Route::Simplicial,
+        },
+        Input::Arch(_) if o.simplify => {
+            return Err(err!(
+                Usage,
+                "{file}: --simplify applies to G-maps, not to architectural complexes ({})",
+                extensions_of(&[Kind::Arch])
+            ))
+        }
+        Input::Arch(_) => Route::Arch,
     })
 }
 
-/// Refuses a map whose simplicial counterpart is too big to build (exponential in the
-/// dimension): an n-map of N darts has up to `2^(n+1) (N + n + 1)` simplices (building it
-/// visits the `2^(n+1)` vertex sets of a flag once per dimension even without darts), and
-/// their reduction costs about `n + 1` squared per simplex (the faces of a simplex are
-/// many and dense); that product is held to the workspace's work limit
-/// ([`gmap_core::resources::DEFAULT_MAX_WORK`]: a one-dart 16-map is built in seconds, a
-/// one-dart 17-map is refused, `gmap 30 1` asks for 2^31 simplices); then the memory is
-/// checked against the memory limit.
-pub fn check_simplicial_size(map: &DenseMap, file: &str) -> Result<()> {
-    let n = map.dim() as u32;
-    let work = (1u128 << (n + 1)) * (map.dart_count() as u128 + n as u128 + 1);
-    let visits = work * (u128::from(n) + 1) * (u128::from(n) + 1);
-    if visits > u128::from(gmap_core::resources::DEFAULT_MAX_WORK) {
-        return Err(err!(
-            Limit,
-            "{file}: the simplicial counterpart of a {n}-map of {} darts has up to 2^{} x {} simplices, too many to \
-             build (an estimated {visits} steps, over the work limit of {}); the cellular method works on the \
-             cells themselves",
-            map.dart_count(),
-            n + 1,
-            map.dart_count().max(1),
-            gmap_core::resources::DEFAULT_MAX_WORK
-        ));
+/// The route of cubes: one pass or the sweep where they apply (dimension ≤ 3, the cellular
+/// method, cubes only), else the cubical complex, whole when it fits.
+fn plan_cubes(cubes: Cubes<'_>, o: &HomologyOptions) -> Route {
+    let shape = cubes.shape();
+    let plain = o.method == Method::Cellular && !o.simplify && !o.topological && cubes.is_full() && shape.len() <= 3;
+    match (plain, o.generators) {
+        (true, false) => Route::OnePass,
+        (true, true) if !o.periodic => Route::Sweep,
+        _ => Route::Cubical { whole: !cubes.is_full() || cubes::whole_grid_fits(&shape, o.periodic) },
     }
-    // each simplex: its flag (dart and vertex set), its key and its n + 1 boundary entries
-    let bytes = work.checked_mul(24 + 12 * (n as u128 + 1)).and_then(|b| u64::try_from(b).ok());
-    gmap_core::resources::check_memory("the simplicial counterpart", bytes)
-        .map_err(|e| Error::from(e).context(file.to_string()))?;
-    Ok(())
 }
 
-/// The simplicial counterpart of a map with its simplices named by dart and vertex set.
-pub(crate) fn simplicial(map: &DenseMap, progress: &Progress) -> Named<'static> {
-    progress.stage("building the simplicial counterpart");
-    let s = simplicial_complex_with_simplices(map);
-    let pts = points(map);
-    let simplices = s.simplices;
-    Named {
-        relative: None,
-        chain: s.chain,
-        name: Box::new(move |k, j| {
-            let x = &simplices[k][j as usize];
-            CellName::Dart {
-                dart: x.dart.get(),
-                point: pts.as_ref().and_then(|p| p[x.dart.index()]),
-                simplex: Some((0..32).filter(|i| x.labels & (1 << i) != 0).collect()),
+/// A report of groups computed on cubes, before the input's kind and route are set.
+fn cube_report(
+    dimension: usize,
+    o: &HomologyOptions,
+    groups: Homology,
+    generators: Option<Vec<NamedGenerator>>,
+) -> Report {
+    Report {
+        kind: Kind::Cubical.name(),
+        dimension,
+        method: o.method,
+        route: None,
+        field: o.field,
+        groups,
+        generators,
+        note: None,
+        space: None,
+    }
+}
+
+/// Follows a cubical route. Generators of an image are named on its cubical set (the
+/// caller's axes), made first.
+fn run_cubes(route: Route, cubes: Cubes<'_>, o: &HomologyOptions, file: &str) -> Result<Report> {
+    let d = cubes.shape().len();
+    if let (Cubes::Image(img, level), true) = (cubes, o.generators) {
+        o.progress.stage("the image's cubical set");
+        let set: CubicalSet = cubes::image_set(img, level, file)?;
+        let whole = cubes::whole_grid_fits(set.shape(), o.periodic);
+        let route = if route == Route::Sweep { route } else { Route::Cubical { whole } };
+        return run_cubes(route, Cubes::Set(&set), o, file);
+    }
+    match route {
+        Route::OnePass => {
+            if let Some(groups) = cubes::one_pass(&cubes.shape(), |s, out| cubes.fill(s, out), o, file)? {
+                return Ok(cube_report(d, o, groups, None));
             }
-        }),
+        }
+        Route::Sweep => {
+            let found = match cubes {
+                Cubes::Set(set) => cubes::sweep(set.shape(), set.bits(), set.min(), false, o, file)?,
+                Cubes::Borrowed(b) => cubes::sweep(b.storage_shape(), b.bytes(), &[], b.is_reversed(), o, file)?,
+                Cubes::Image(..) => None,
+            };
+            if let Some((groups, generators)) = found {
+                return Ok(cube_report(d, o, groups, Some(generators)));
+            }
+        }
+        _ => {}
+    }
+    let whole = match route {
+        Route::Cubical { whole } => whole,
+        _ => !cubes.is_full() || cubes::whole_grid_fits(&cubes.shape(), o.periodic),
+    };
+    let named = cubes::complex(cubes, whole, o, file)?;
+    let mut report = finish(&named, d, o, file)?;
+    if cubes.reversed() {
+        for g in report.generators.iter_mut().flatten() {
+            g.chain.reverse_cube_axes();
+        }
+    }
+    Ok(report)
+}
+
+/// Follows the route of a map, a simplicial complex or an architectural complex.
+fn run_complex(route: Route, input: &Input, o: &HomologyOptions, file: &str) -> Result<Report> {
+    let mut note = None;
+    let (dim, named) = match (route, input) {
+        (Route::Direct, Input::Simplicial(sc)) => (sc.dim(), chains::direct(sc, o, file)?),
+        (Route::Gmap(method), Input::Simplicial(sc)) => {
+            let map = sc.to_gmap_within(o.max_darts)?;
+            let (map, names) = if o.simplify {
+                let (m, n) = chains::simplify_if_safe(map, &o.progress);
+                note = n;
+                (m, None)
+            } else {
+                (map, o.generators.then_some(sc.get()))
+            };
+            (map.dim(), map_chains(&map, method, o, file, names)?)
+        }
+        (Route::Cellular | Route::Simplicial, Input::Map(m)) => {
+            let method = if route == Route::Simplicial { Method::Simplicial } else { Method::Cellular };
+            if o.simplify {
+                let (map, n) = chains::simplify_if_safe(m.map().clone(), &o.progress);
+                note = n;
+                (map.dim(), map_chains(&map, method, o, file, None)?)
+            } else {
+                (m.map().dim(), map_chains(m.map(), method, o, file, None)?)
+            }
+        }
+        (Route::Arch, Input::Arch(x)) => (x.dim(), chains::arch(x, o, file)?),
+        (route, input) => {
+            return Err(err!(Usage, "{file}: the route {} does not apply to a {}", route.name(), input.kind()))
+        }
+    };
+    if let Some(n) = &note {
+        o.progress.note(&format!("gmap homology: {n}"));
+    }
+    let mut report = finish(&named, dim, o, file)?;
+    report.note = note;
+    if let Input::Arch(x) = input {
+        report.space = Some(ArchSpace::of(x, o.topological));
+    }
+    Ok(report)
+}
+
+/// The chain complex of a map by `method`.
+fn map_chains<'a>(
+    map: &gmap_core::DenseMap,
+    method: Method,
+    o: &HomologyOptions,
+    file: &str,
+    sc: Option<&'a gmap_ops::import::SimplicialComplex>,
+) -> Result<Named<'a>> {
+    match method {
+        Method::Cellular => chains::cellular(map, file, sc, &o.progress),
+        Method::Simplicial => {
+            chains::check_simplicial_size(map, file)?;
+            Ok(chains::simplicial(map, &o.progress))
+        }
     }
 }
 
-/// The direct route's chain complex of a simplicial complex (every face of every facet a
-/// cell, `gmap_homology::simplices`), refused past `max_cells` faces (default: what the
-/// memory budget holds at its dimension), the error naming `file` and the option that
-/// raises the limit; with `labels`, the vertices of every face (to name generators).
-pub fn face_complex_within(
-    sc: &SimplicialComplex,
-    max_cells: Option<u64>,
-    file: &str,
-    labels: bool,
-) -> Result<FaceComplex> {
-    let limit = max_cells.unwrap_or_else(|| default_face_limit(sc));
-    face_complex_of(sc.facets(), limit, labels).map_err(|e| match e {
-        FaceError::TooManyFaces { .. } if max_cells.is_some() => {
-            err!(Limit, "{file}: {e}; raise the limit with --max-cells N")
-        }
-        FaceError::TooManyFaces { .. } => err!(
-            Limit,
-            "{file}: {e} (the faces the memory budget holds); raise the budget with --max-memory BYTES, or set the limit with --max-cells N"
-        ),
-        e => Error::from_source(ErrorKind::Limit, &e).context(file.to_string()).flattened(""),
+/// The groups of a named chain complex and, when asked for, a cycle per summand named in
+/// the input's terms.
+fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) -> Result<Report> {
+    let groups = reduce(named, o).map_err(|e| e.context(file.to_string()))?;
+    let generators = if o.generators {
+        o.progress.stage("computing generators and lifting them to the input's cells");
+        let limit = o.max_generator_cells.unwrap_or(gmap_homology::generators::GENERATOR_CELL_LIMIT);
+        let g = gmap_homology::generators::generators_within(&named.chain, o.field, limit).map_err(|e| match e {
+            gmap_homology::HomologyError::GeneratorsTooLarge { .. } => {
+                err!(Limit, "{file}: {e}; the groups are computed without --generators, or raise the limit with --max-generator-cells N (the cost grows as its cube)")
+            }
+            e => Error::from(e).context(file.to_string()),
+        })?;
+        Some(g.into_iter().map(|x| name_generator(named, x)).collect())
+    } else {
+        None
+    };
+    Ok(Report {
+        kind: "",
+        dimension,
+        method: o.method,
+        route: None,
+        field: o.field,
+        groups,
+        generators,
+        note: None,
+        space: None,
     })
 }
 
-/// Complexes of at most this many faces (counted with repetition, a few megabytes of tables)
-/// take the direct route without a look at the memory available.
-const SMALL_FACES: u64 = 1 << 16;
-
-/// The default face limit: [`gmap_ops::import::default_max_faces`], which reads the memory
-/// available (`/proc/meminfo`, about 100 µs), except for a complex of at most
-/// [`SMALL_FACES`] faces, which passes at once (a pass over its facets): an in-process call
-/// on a small complex costs microseconds.
-fn default_face_limit(sc: &SimplicialComplex) -> u64 {
-    match gmap_homology::simplices::face_estimate(sc.facets()) {
-        Some(e) if e <= SMALL_FACES => SMALL_FACES,
-        _ => gmap_ops::import::default_max_faces(sc.dim()),
-    }
-}
-
-/// The direct route for a simplicial complex: every face of every facet is a cell, no
-/// G-map. The faces are counted first and refused past `max_darts`.
-pub(crate) fn direct(sc: &SimplicialComplex, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
-    // the estimate is a pass over the facets: made only for a message that shows
+/// Reduces the chain complex (over Z or Z/p) and gives the groups of the input (a complex
+/// relative to vertices set aside made absolute).
+fn reduce(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
+    let c = &named.chain;
     if o.progress.is_visible() {
         o.progress.stage(&format!(
-            "enumerating the faces of {} facets (at most {})",
-            sc.total_facet_count(),
-            gmap_homology::simplices::face_estimate(sc.facets()).map_or_else(|| "2^64".to_string(), |e| e.to_string())
+            "reducing {} cells ({} matrix entries): collapses, coreductions, then elimination",
+            c.counts().iter().sum::<usize>(),
+            (1..c.counts().len()).map(|k| c.boundary(k).nnz()).sum::<usize>()
         ));
     }
-    let FaceComplex { chain, vertices, faces } = face_complex_within(sc, o.max_cells, file, o.generators)?;
-    let name = Box::new(move |k: usize, j: u32| {
-        let j = j as usize;
-        CellName::Simplex(faces[k][j * (k + 1)..(j + 1) * (k + 1)].iter().map(|&v| vertices[v as usize]).collect())
-    });
-    Ok(Named { chain, name, relative: None })
-}
-
-/// The chain complex of an architectural complex (`.json`): the completion by zero of its
-/// partial boundary matrix (AC Def. 3.9), after Algorithm 8.16 with `topological`.
-pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
-    if o.method == Method::Simplicial {
-        return Err(err!(
-            Precondition,
-            "{file}: an architectural complex has no simplicial counterpart; use --method cellular"
-        ));
-    }
-    let original = x;
-    let topological;
-    let x = if o.topological {
-        let t = x.topological(ZeroWeightRule::Closed).map_err(|e| {
-            Error::new(ErrorKind::Precondition, e.named(&x.region_names()).to_string())
-                .context(format!("{file}: Algorithm 8.16"))
-        })?;
-        for op in &t.operators {
-            o.progress.stage(&format!("Algorithm 8.16: {op}"));
-        }
-        topological = t.complex;
-        &topological
-    } else {
-        x
+    let h = match o.field {
+        Some(p) => homology_zp(c, p)?,
+        None => homology_z(c)?,
     };
-    // the file's names: a region Algorithm 8.16 added has none and goes by its number
-    let named = |r: usize| {
-        let id = x.region(r).id;
-        let k = original.index_of(id).filter(|&i| original.region(i).dim == x.region(r).dim);
-        let key = k.and_then(|i| original.region_key(i)).map(str::to_string);
-        let name = k.and_then(|i| original.name_label(i)).map(str::to_string);
-        if key.is_none() && name.is_none() {
-            CellName::Region(id.0)
-        } else {
-            CellName::NamedRegion { id: id.0, key, name }
-        }
-    };
-    let names: Vec<Vec<CellName>> =
-        (0..=x.dim()).map(|k| x.regions_of_dim(k).iter().map(|&r| named(r as usize)).collect()).collect();
-    Ok(Named { chain: x.chain_complex(), name: Box::new(move |k, j| names[k][j as usize].clone()), relative: None })
-}
-
-/// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
-/// (`gmap_homology::cubical_pass`, or `gmap_homology::cubical_torus` for a periodic box),
-/// where no cubical complex is needed: no generators, the cellular method. `None` where the
-/// cubical complex is needed (and for a periodic box whose union-finds would not fit in
-/// memory). `fill(start, out)` writes the presence bytes of the cubes
-/// `start..start + out.len()` (axis 0 fastest); `file` names the input in messages. Public
-/// for callers that hold the cubes elsewhere (the Python package reads a numpy array in
-/// place).
-pub fn cubical_one_pass(
-    shape: &[usize],
-    fill: impl Fn(usize, &mut [u8]) + Sync,
-    o: &HomologyOptions,
-    file: &str,
-) -> Result<Option<gmap_homology::Homology>> {
-    if shape.len() > 3 || o.generators || o.method != Method::Cellular || o.simplify || o.topological {
-        return Ok(None);
+    match &named.relative {
+        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, &e)),
+        None => Ok(h),
     }
-    let limit =
-        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
-    let d = shape.len();
-    let (betti, torsion): (Vec<u64>, Vec<Vec<u64>>) = if o.periodic {
-        // union-finds over the whole box: where they do not fit, the cubical complex (slab by
-        // slab, its memory growing with the reduced complex) may still
-        let what = "the periodic one-pass route";
-        if gmap_core::resources::check_memory(what, gmap_homology::cubical_torus::bytes_needed(shape)).is_err() {
-            o.progress.note("the periodic one-pass route does not fit in memory: the cubical complex instead");
-            return Ok(None);
-        }
-        o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
-        let r = gmap_homology::cubical_torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
-        (r.betti, r.torsion)
-    } else {
-        o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
-        let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill).map_err(limit)?;
-        (r.betti, vec![Vec::new(); d + 1])
-    };
-    let to_usize = |b: u64| usize::try_from(b).unwrap_or(usize::MAX);
-    Ok(Some(match o.field {
-        None => gmap_homology::Homology {
-            coefficients: gmap_homology::homology::Coefficients::Integers,
-            betti: betti.into_iter().map(to_usize).collect(),
-            torsion: torsion.into_iter().map(|t| t.into_iter().map(Into::into).collect()).collect(),
-        },
-        // universal coefficients: a factor divisible by p adds a Z/p to H_k and one to H_{k+1}
-        Some(p) => {
-            let hits: Vec<usize> = torsion.iter().map(|t| t.iter().filter(|&&s| s % p == 0).count()).collect();
-            let betti = (0..=d).map(|k| to_usize(betti[k]) + hits[k] + if k > 0 { hits[k - 1] } else { 0 }).collect();
-            gmap_homology::Homology {
-                coefficients: gmap_homology::homology::Coefficients::Field(p),
-                betti,
-                torsion: vec![Vec::new(); d + 1],
-            }
-        }
-    }))
 }
 
-/// The layers of the slowest axis per slab of the slab-by-slab cubical complex: rows of
-/// about 32 MiB in all (two per layer), at least one layer and at most 64.
-pub(crate) fn slab_layers(shape: &[usize]) -> usize {
-    let row: usize = shape[..shape.len().saturating_sub(1)].iter().fold(1usize, |v, &l| v.saturating_mul(2 * l + 1));
-    ((32usize << 20) / row.max(1) / 2).clamp(1, 64)
-}
-
-fn check_cubical_options(o: &HomologyOptions, file: &str) -> Result<()> {
-    if o.method == Method::Simplicial {
-        return Err(err!(
-            Precondition,
-            "{file}: a cubical set has no simplicial counterpart here; use --method cellular"
-        ));
+fn name_generator(named: &Named<'_>, x: gmap_homology::generators::Generator) -> NamedGenerator {
+    NamedGenerator {
+        dim: x.dim,
+        order: x.order.clone(),
+        chain: Chain::Named(x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect()),
     }
-    if o.simplify || o.topological {
-        return Err(err!(Usage, "{file}: --simplify and --topological do not apply to cubical sets"));
-    }
-    Ok(())
 }
 
-/// The largest doubled grid whose whole cubical complex is built at once (about 1 GiB at
-/// [`gmap_core::resources::CUBICAL_BYTES_PER_POINT`]); larger ones go slab by slab.
-pub(crate) const WHOLE_GRID_POINTS: u64 = 1 << 27;
-
-/// Whether the whole cubical complex of a box of `shape` is built at once (faster: dense
-/// collapses over one array) rather than slab by slab (memory of a slab and the survivors).
-pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
-    gmap_core::resources::cubical_grid_points(shape, periodic).is_some_and(|p| p <= WHOLE_GRID_POINTS)
-}
-
-/// The chain complex of a cubical set with its cells named by their minimal vertex and
-/// extent in the input's coordinates: the whole complex after collapses of free faces up to
-/// [`WHOLE_GRID_POINTS`], else built and reduced slab by slab
-/// (`gmap_homology::cubical_slabs`; collapses only with generators, so that its cycles are
-/// the set's).
-pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
-    check_cubical_options(o, file)?;
-    // a cell complex's lower cells are marked on the whole grid
-    let (c, relative) = if whole_grid_fits(set.shape(), o.periodic) || !set.is_full() {
-        o.progress.stage("building the cubical complex");
-        let cells = set.lower_cells_in_box();
-        gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, o.periodic, true)
-            .map(|c| (c, None))
-    } else {
-        o.progress.stage("building and reducing the cubical complex slab by slab");
-        let bits = set.bits();
-        let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
-        gmap_homology::cubical_slabs::cubical_complex_slabs(
-            set.shape(),
-            fill,
-            o.periodic,
-            slab_layers(set.shape()),
-            o.generators,
-        )
-        .map(|c| (c.complex, Some(c.relative)))
-    }
-    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    Ok(named_cubes(c, set.min(), o.generators, relative))
-}
-
-/// The chain complex of an image's cubical set (the values at `level`) over
-/// [`WHOLE_GRID_POINTS`], read from the image one layer at a time in its memory order and
-/// reduced slab by slab: no bitmap of the whole image. Without generators (whose names need
-/// the input's axis order: [`cubical`]).
-pub(crate) fn cubical_image(
-    img: &gmap_ops::import::Image,
-    level: gmap_ops::import::Level,
-    o: &HomologyOptions,
-    file: &str,
-) -> Result<Named<'static>> {
-    check_cubical_options(o, file)?;
-    o.progress.stage("reading the image and reducing its cubical complex slab by slab");
-    let shape = img.memory_shape();
-    let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
-        &shape,
-        |s, out| img.presence(level, s, out),
-        o.periodic,
-        slab_layers(&shape),
-        false,
-    )
-    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
-    Ok(named_cubes(c.complex, &[], false, Some(c.relative)))
-}
-
-/// Names the cells of a cubical complex by minimal vertex (`min` the box's) and extent, when
-/// `generators` asks for names.
-fn named_cubes(
-    c: gmap_homology::cubical::CubicalComplex,
-    min: &[i64],
-    generators: bool,
-    relative: Option<gmap_homology::cubical_slabs::Relative>,
-) -> Named<'static> {
-    let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
-        let name = |k: usize, i: usize| {
-            let coords = c.coordinates(k, i);
-            let lo = coords.iter().enumerate().map(|(a, &x)| min.get(a).copied().unwrap_or(0) + (x / 2) as i64);
-            (lo.collect(), coords.iter().map(|&x| (x % 2) as u8).collect())
+/// The homology of an input, by the route the command line takes ([`plan`], then
+/// [`Route::run`]): the cellular border operator of a map (or its simplicial counterpart),
+/// the direct face complex or the G-map of a simplicial complex, the cubical routes of a
+/// cubical set or image, the completed boundary matrix of an architectural complex. Over Z
+/// with torsion, or over Z/p.
+///
+/// Options that do not fit the input are refused with the reason ([`ErrorKind::Usage`]),
+/// so are routes whose conditions fail ([`ErrorKind::Precondition`]) and work over the
+/// limits ([`ErrorKind::Limit`]).
+pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
+    if let Some((first, last)) = &o.cubical_box {
+        let file = input.path().display().to_string();
+        let Input::Cubical(set) = input else {
+            return Err(err!(Usage, "{file}: --box applies to cubical sets ({})", extensions_of(&[Kind::Cubical])));
         };
-        (0..c.cells.len()).map(|k| (0..c.cells[k].len()).map(|i| name(k, i)).collect()).collect()
-    } else {
-        vec![Vec::new(); c.cells.len()]
-    };
-    let name = Box::new(move |k: usize, j: u32| {
-        let (min, extent) = &names[k][j as usize];
-        CellName::Cube { min: min.as_slice().into(), extent: extent.as_slice().into() }
-    });
-    Named { chain: c.chain, name, relative }
+        let boxed = set.with_box(first, last).map_err(|e| err!(Usage, "{file}: --box: {e}"))?;
+        let mut inner = o.clone();
+        inner.cubical_box = None;
+        return homology(&Input::Cubical(set.with_value(boxed)), &inner);
+    }
+    plan(input, o)?.run(input, o)
 }
 
-/// The map reduced by removals and contractions of cells, or the map itself where the
-/// reduction could change the groups, with the reason. Removals and contractions keep the
-/// homology only when the cells are homology balls (conditions C1 and C2, docs/DESIGN.md):
-/// where they fail (a segment with open ends, a map of loose darts), simplifying would merge
-/// components and lose classes, so it is skipped. As a guard, a reduction that changes the
-/// number of components is dropped too. Either way the groups are those of `map`.
-pub fn simplify_if_safe(map: DenseMap, progress: &Progress) -> (DenseMap, Option<String>) {
-    progress.stage("checking C1 and C2 before simplifying");
-    if let Err(e) = gmap_homology::check_preconditions(&map) {
-        return (map, Some(format!("--simplify skipped: the cells are not all homology balls ({e})")));
+/// [`homology`] of the file at `path`: the options are checked against the file's kind (by
+/// the format registry) before it is read, then the file is opened with `o.max_darts`.
+pub fn homology_file(path: impl AsRef<std::path::Path>, o: &HomologyOptions) -> Result<Report> {
+    let path = path.as_ref();
+    check_options(&path.display().to_string(), crate::formats::kind_of(path), o)?;
+    o.progress.stage(&format!("reading {}", path.display()));
+    let input = crate::open_with(path, &crate::OpenOptions::max_darts(o.max_darts))?;
+    homology(&input, o)
+}
+
+/// The homology of cubes borrowed from memory (a numpy array read in place), by the cubical
+/// routes a cubical set takes; the cells of generators named in the caller's axis order.
+pub fn homology_cubes(cubes: &CubesRef<'_>, o: &HomologyOptions) -> Result<Report> {
+    let file = "the array";
+    check_options(file, Some(Kind::Cubical), o)?;
+    if o.level.is_some() || o.cubical_box.is_some() {
+        return Err(err!(Usage, "{file}: --level and --box apply to files"));
     }
-    progress.stage("simplifying by removals and contractions of cells");
-    let small = gmap_ops::euler::simplify(&map).0;
-    if small.component_count() != map.component_count() {
-        return (map, Some("--simplify skipped: the reduction changed the number of components".to_string()));
-    }
-    (small, None)
+    let source = Cubes::Borrowed(cubes);
+    run_cubes(plan_cubes(source, o), source, o, file)
 }

@@ -17,8 +17,8 @@ use gmap_ops::export::html::{self, layout, HtmlOptions, Scene, Shape, ViewGenera
 
 use crate::error::{err, Result};
 use crate::input::{Input, MapInput};
+use crate::options::HomologyOptions;
 use crate::report::{CellName, NamedGenerator};
-use crate::route::HomologyOptions;
 
 /// Options of [`view`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -69,7 +69,7 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
     });
     let report_of = |input: &Input| -> Result<Vec<NamedGenerator>> {
         let h = HomologyOptions { generators: true, ..Default::default() };
-        Ok(crate::report::homology(input, &h)?.generators.unwrap_or_default())
+        Ok(crate::homology(input, &h)?.generators.unwrap_or_default())
     };
     match input {
         Input::Image(img) => {

@@ -76,7 +76,7 @@ fn periodic_images_take_the_one_pass_route() {
     o.periodic = true;
     let shape = [nx, n, n];
     let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&v[s..s + out.len()]);
-    let direct = gmap::route::cubical_one_pass(&shape, fill, &o, "helix").unwrap().expect("the one-pass route");
+    let direct = gmap::cubes::one_pass(&shape, fill, &o, "helix").unwrap().expect("the one-pass route");
     let one_pass = homology(&input, &o).unwrap().groups;
     assert_eq!(one_pass, direct);
     assert_eq!(one_pass.betti, vec![1, 3, 2, 0]);
