@@ -115,7 +115,7 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
         if p.is_dir() {
             let mut found: Vec<PathBuf> = std::fs::read_dir(p)
                 .map_err(|e| {
-                    crate::Error::from_source(crate::ErrorKind::Parse, &e)
+                    crate::Error::from_source(crate::ErrorKind::Parse, e)
                         .context(format!("{}: cannot read the folder", p.display()))
                 })?
                 .filter_map(|e| e.ok().map(|e| e.path()))
@@ -394,7 +394,7 @@ fn whole_cubical_row(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -
         Cubes::Image(img) => {
             image_set = img
                 .to_cubical_set(gmap_ops::import::Level::Nonzero)
-                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, &e))?;
+                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, e))?;
             times.read += ms(t);
             &image_set
         }

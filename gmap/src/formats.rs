@@ -334,7 +334,7 @@ fn written_only(path: &Path, f: &Format, why: &str) -> Error {
         "lar.json" => ".lar.json (LAR)".to_string(),
         ext => format!("unsupported input format '.{ext}': it"),
     };
-    err!(Unsupported, "{}: {what} {why}", path.display()).with_path(path)
+    err!(Unsupported, "{}: {what} {why}", path.display()).naming_path(path)
 }
 
 /// The refusal of a path whose extension names no format read.
@@ -353,7 +353,7 @@ pub(crate) fn unknown_input(path: &Path) -> Error {
             gmap_core::io::shorten(other.as_bytes(), 40)
         ),
     }
-    .with_path(path)
+    .naming_path(path)
 }
 
 /// The format `output` is written in, or the refusal: an extension no format has, or a

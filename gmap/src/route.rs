@@ -311,7 +311,7 @@ fn reduce(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
         None => homology_z(c)?,
     };
     match &named.relative {
-        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, &e)),
+        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, e)),
         None => Ok(h),
     }
 }
