@@ -24,8 +24,8 @@ use crate::darts::{dart_index, DartStore};
 use crate::dense::{DenseMap, Partition};
 use crate::error::{BoundaryDefect, OrientationConflict};
 use crate::ids::{Dart, Point};
+use crate::map_view::MapView;
 use crate::marks::{MarkId, Marks};
-use crate::view::MapView;
 use bitvec::vec::BitVec;
 
 /// The misuse of an editable [`GMap`]: why an edit (a sew, a link, a removal, a mark, an

@@ -1,7 +1,7 @@
 //! Builders with coordinates: the objects of [`crate::build`] placed in R³, every dart
 //! carrying the point of its vertex, ready for `.off`, `.vtk` or the geometry of
 //! [`gmap_core::GMap`] (constructors with coordinates and barycentres are in
-//! [`gmap_core::geometry`]).
+//! [`gmap_core::points`]).
 //!
 //! | builder | object | points |
 //! | --- | --- | --- |
