@@ -6,6 +6,7 @@
 //! made once after each edit (O(N n)) and kept until the next; sewing keeps the numbering,
 //! an Euler operator that makes or removes darts renumbers them (in storage order).
 
+use std::path::Path;
 use std::sync::Arc;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, ToPyArray};
@@ -22,7 +23,7 @@ use crate::errors::{Failure, Kind, Res};
 /// `0..len(m)`, involutions `alpha_0..alpha_dim`, a point per vertex, labels per cell.
 #[pyclass(name = "GMap", module = "gmap")]
 pub struct PyGMap {
-    pub(crate) g: LabelledGMap,
+    g: LabelledGMap,
     ids: Vec<DartId>,
     /// the dart number of each storage slot (`u32::MAX` for an empty slot)
     slot_index: Vec<u32>,
@@ -139,6 +140,16 @@ impl PyGMap {
             }
         }
     }
+}
+
+/// Writes a map by extension: `.gmap` with its points and labels; the other formats
+/// (`.moka`, `.off`, `.facets`, `.vtk`, `.dot`) as `gmap convert` writes them.
+fn save_map(m: &mut PyGMap, path: &Path) -> Res<()> {
+    if gmap::input::extension(path) == "gmap" {
+        return Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?);
+    }
+    let d = m.dense();
+    Ok(gmap::save::save_map(&d, path)?)
 }
 
 fn label_to_py(py: Python<'_>, v: &LabelValue) -> PyObject {
@@ -560,7 +571,7 @@ impl PyGMap {
 
     /// Writes the map by extension: `.gmap` (points and labels kept), `.moka`.
     fn save(&mut self, path: std::path::PathBuf) -> PyResult<()> {
-        crate::objects::save_map(self, &path).map_err(Into::into)
+        save_map(self, &path).map_err(Into::into)
     }
 
     /// The incidence pairs of the map's cells: a list of ((i, a), (i + 1, b)) for each

@@ -2,8 +2,6 @@
 //! `ArchComplex` — and reading and writing files by extension (the command line's
 //! `load`, docs/FORMATS.md §2).
 
-use std::path::Path;
-
 use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
@@ -417,14 +415,4 @@ impl PyArchComplex {
         let o = gmap::SaveOptions::default();
         py.allow_threads(|| gmap::save(&self.input, &path, &o)).map_err(|e| Failure::from(e).into())
     }
-}
-
-/// Writes a map by extension: `.gmap` with its points and labels; the other formats
-/// (`.moka`, `.off`, `.facets`, `.vtk`, `.dot`) as `gmap convert` writes them.
-pub fn save_map(m: &mut PyGMap, path: &Path) -> Res<()> {
-    if gmap::input::extension(path) == "gmap" {
-        return Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?);
-    }
-    let d = m.dense();
-    Ok(gmap::save::save_map(&d, path)?)
 }
