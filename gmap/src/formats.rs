@@ -1,7 +1,7 @@
 //! The format registry: one row per file format, and everything that depends on a format
 //! reads it from here — [`crate::open`] (the reader and the kind of [`Input`] it makes),
 //! [`crate::homology_file`]'s checks made before a file is read, the images
-//! [`crate::persistence_file`] takes, [`crate::save`] (the writer and what it keeps), the
+//! [`crate::persistence_file`] takes, [`crate::save()`] (the writer and what it keeps), the
 //! command line's help text ([`extensions_of`]) and the Python package's `open` and `save`
 //! (the class of each kind, [`Kind::python_class`]).
 //!
@@ -89,7 +89,7 @@ impl Format {
         }
     }
 
-    /// Whether [`crate::save`] writes this format.
+    /// Whether [`crate::save()`] writes this format.
     pub fn is_written(&self) -> bool {
         !matches!(self.writer, Writer::None)
     }
@@ -278,7 +278,7 @@ pub fn input_extensions() -> impl Iterator<Item = &'static str> {
     FORMATS.iter().filter(|f| f.reads().is_some()).map(|f| f.extension)
 }
 
-/// The extensions [`crate::save`] writes, in the registry's order.
+/// The extensions [`crate::save()`] writes, in the registry's order.
 pub fn output_extensions() -> impl Iterator<Item = &'static str> {
     FORMATS.iter().filter(|f| f.is_written()).map(|f| f.extension)
 }
