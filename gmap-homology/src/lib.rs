@@ -72,10 +72,7 @@ pub mod persistence;
 mod prefetch;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
-pub use complex::{
-    arch, cubical, cubical_blocks, cubical_gens, cubical_pass, cubical_slabs, cubical_torus, dot, ep, graphml, json,
-    lar, simplices, tm,
-};
+pub use complex::{arch, cubical, dot, ep, graphml, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::CellularComplex;

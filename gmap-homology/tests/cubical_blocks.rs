@@ -3,8 +3,8 @@
 //! to the same blocks; the one-pass blocks' messages too.
 
 use gmap_homology::cubical::cubical_complex;
-use gmap_homology::cubical_blocks::{block_complex, glue, BlockComplex};
-use gmap_homology::cubical_pass::{block_pass, merge_blocks, BlockSummary};
+use gmap_homology::cubical::blocks::{block_complex, glue, BlockComplex};
+use gmap_homology::cubical::pass::{block_pass, merge_blocks, BlockSummary};
 use gmap_homology::{homology_z, Homology};
 use proptest::prelude::*;
 

@@ -334,12 +334,12 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
         let mut times = Times { read, ..Times::default() };
         let t = Instant::now();
         let r = match cubes {
-            Cubes::Image(img) => gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
+            Cubes::Image(img) => gmap_homology::cubical::pass::betti_one_pass(&shape, |s, out| {
                 img.presence(gmap_ops::import::Level::Nonzero, s, out)
             }),
             Cubes::Set(set) => {
                 let bits = set.bits();
-                gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
+                gmap_homology::cubical::pass::betti_one_pass(&shape, |s, out| {
                     out.copy_from_slice(&bits[s..s + out.len()])
                 })
             }
@@ -357,7 +357,7 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
     let t = Instant::now();
     let slab = crate::route::slab_layers(&shape);
     let c = match cubes {
-        Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
+        Cubes::Image(img) => gmap_homology::cubical::slabs::cubical_complex_slabs(
             &shape,
             |s, out| img.presence(gmap_ops::import::Level::Nonzero, s, out),
             periodic,
@@ -367,7 +367,7 @@ fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Res
         Cubes::Set(set) => {
             let bits = set.bits();
             let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
-            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, periodic, slab, false)
+            gmap_homology::cubical::slabs::cubical_complex_slabs(&shape, fill, periodic, slab, false)
         }
     };
     times.border = Some(ms(t));

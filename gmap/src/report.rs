@@ -697,10 +697,10 @@ pub fn homology(input: &Input, o: &HomologyOptions) -> Result<Report> {
 }
 
 /// The groups and a basis of cycles of a full cubical set of dimension ≤ 3 in a box that is
-/// not periodic, from union-finds and a sweep over the grid (`gmap_homology::cubical_gens`:
+/// not periodic, from union-finds and a sweep over the grid (`gmap_homology::cubical::gens`:
 /// a vertex per component, the boundary of each hole or cavity, in 3-D the fundamental
 /// cycles of the sweep's forest), in time linear in the cells plus the cycles' length:
-/// `shape` and `bits` as for `gmap_homology::cubical_gens`, the cells named by minimal vertex
+/// `shape` and `bits` as for `gmap_homology::cubical::gens`, the cells named by minimal vertex
 /// (offset by `min`, the box's minimal vertex) and extent, their axes reversed with
 /// `reversed` (a C-ordered array). Over Z/p the same cycles, their coefficients taken in
 /// `0..p`. `None` where this route does not apply (no generators asked for, another
@@ -727,7 +727,7 @@ pub fn cubical_generators(
     check_field(o.field)?;
     o.progress
         .stage("one pass over the cells: components, the complement's components, the loops of a spanning forest");
-    let g = match gmap_homology::cubical_gens::cubical_generators(shape, bits) {
+    let g = match gmap_homology::cubical::gens::cubical_generators(shape, bits) {
         Ok(g) => g,
         Err(gmap_homology::cubical::CubicalError::NotReduced(why)) => {
             o.progress.note(&format!("{why}: the cubical complex instead"));

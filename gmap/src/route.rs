@@ -106,7 +106,7 @@ pub(crate) struct Named<'a> {
     pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
     /// the chain complex is relative to vertices set aside (a cubical set reduced slab by
     /// slab): how its groups become the input's
-    pub(crate) relative: Option<gmap_homology::cubical_slabs::Relative>,
+    pub(crate) relative: Option<gmap_homology::cubical::slabs::Relative>,
 }
 
 /// The route a simplicial complex takes, `None` for the other inputs; refuses options that
@@ -320,7 +320,7 @@ pub(crate) fn arch(x: &gmap_homology::arch::ArchComplex, o: &HomologyOptions, fi
 }
 
 /// The groups of a cubical set of dimension ≤ 3 in one pass over its cubes
-/// (`gmap_homology::cubical_pass`, or `gmap_homology::cubical_torus` for a periodic box),
+/// (`gmap_homology::cubical::pass`, or `gmap_homology::cubical::torus` for a periodic box),
 /// where no cubical complex is needed: no generators, the cellular method. `None` where the
 /// cubical complex is needed (and for a periodic box whose union-finds would not fit in
 /// memory). `fill(start, out)` writes the presence bytes of the cubes
@@ -343,16 +343,16 @@ pub fn cubical_one_pass(
         // union-finds over the whole box: where they do not fit, the cubical complex (slab by
         // slab, its memory growing with the reduced complex) may still
         let what = "the periodic one-pass route";
-        if gmap_core::resources::check_memory(what, gmap_homology::cubical_torus::bytes_needed(shape)).is_err() {
+        if gmap_core::resources::check_memory(what, gmap_homology::cubical::torus::bytes_needed(shape)).is_err() {
             o.progress.note("the periodic one-pass route does not fit in memory: the cubical complex instead");
             return Ok(None);
         }
         o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
-        let r = gmap_homology::cubical_torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
+        let r = gmap_homology::cubical::torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
         (r.betti, r.torsion)
     } else {
         o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
-        let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill).map_err(limit)?;
+        let r = gmap_homology::cubical::pass::betti_one_pass(shape, fill).map_err(limit)?;
         (r.betti, vec![Vec::new(); d + 1])
     };
     let to_usize = |b: u64| usize::try_from(b).unwrap_or(usize::MAX);
@@ -408,7 +408,7 @@ pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
 /// The chain complex of a cubical set with its cells named by their minimal vertex and
 /// extent in the input's coordinates: the whole complex after collapses of free faces up to
 /// [`WHOLE_GRID_POINTS`], else built and reduced slab by slab
-/// (`gmap_homology::cubical_slabs`; collapses only with generators, so that its cycles are
+/// (`gmap_homology::cubical::slabs`; collapses only with generators, so that its cycles are
 /// the set's).
 pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
     check_cubical_options(o, file)?;
@@ -422,7 +422,7 @@ pub(crate) fn cubical(set: &gmap_ops::import::CubicalSet, o: &HomologyOptions, f
         o.progress.stage("building and reducing the cubical complex slab by slab");
         let bits = set.bits();
         let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
-        gmap_homology::cubical_slabs::cubical_complex_slabs(
+        gmap_homology::cubical::slabs::cubical_complex_slabs(
             set.shape(),
             fill,
             o.periodic,
@@ -448,7 +448,7 @@ pub(crate) fn cubical_image(
     check_cubical_options(o, file)?;
     o.progress.stage("reading the image and reducing its cubical complex slab by slab");
     let shape = img.memory_shape();
-    let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
+    let c = gmap_homology::cubical::slabs::cubical_complex_slabs(
         &shape,
         |s, out| img.presence(level, s, out),
         o.periodic,
@@ -465,7 +465,7 @@ fn named_cubes(
     c: gmap_homology::cubical::CubicalComplex,
     min: &[i64],
     generators: bool,
-    relative: Option<gmap_homology::cubical_slabs::Relative>,
+    relative: Option<gmap_homology::cubical::slabs::Relative>,
 ) -> Named<'static> {
     let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
         let name = |k: usize, i: usize| {

@@ -23,6 +23,12 @@
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
+pub mod blocks;
+pub mod gens;
+pub mod pass;
+pub mod slabs;
+pub mod torus;
+
 use thiserror::Error;
 
 use crate::{ChainComplex, SparseMatrix};

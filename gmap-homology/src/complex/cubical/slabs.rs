@@ -1,9 +1,9 @@
 //! The cubical chain complex of a set of any dimension, built and reduced slab by slab, so
 //! that memory grows with a slab and with the reduced complex, not with the box.
 //!
-//! The cells are the points of the doubled grid ([`super::cubical`]): `2L + 1` points per axis
+//! The cells are the points of the doubled grid ([`super`]): `2L + 1` points per axis
 //! (`2L` on a periodic axis). The box is read one layer of cubes across its slowest axis at a
-//! time (`fill`, as in [`super::cubical_pass`]); the cells of doubled layers `2z`, `2z + 1`
+//! time (`fill`, as in [`super::pass`]); the cells of doubled layers `2z`, `2z + 1`
 //! and `2z + 2` that the closure of layer `z` adds are added to the complex. Every `slab`
 //! layers the complex is reduced by pairs that keep the homology and need no arithmetic:
 //!
@@ -42,7 +42,7 @@
 //! behind. Time: O(points · d) checks, each of O(d) lookups.
 //!
 //! ```
-//! use gmap_homology::{cubical_slabs::cubical_complex_slabs, homology_z};
+//! use gmap_homology::{cubical::slabs::cubical_complex_slabs, homology_z};
 //! // a 3 × 3 × 3 block with its centre removed: a sphere, read one layer at a time
 //! let mut bits = vec![1u8; 27];
 //! bits[13] = 0;
@@ -58,7 +58,7 @@ use rustc_hash::{FxHashMap, FxHashSet};
 
 use gmap_core::union_find::UnionFind;
 
-use super::cubical::{mark_closure, CubicalComplex, CubicalError};
+use super::{mark_closure, CubicalComplex, CubicalError};
 use crate::{ChainComplex, Homology, SparseMatrix};
 
 const PRESENT: u8 = 1;
@@ -339,7 +339,7 @@ fn close_layer(shape: &[usize], n: &[usize], bits: &[u8], out: &mut [u8]) {
 /// (see the [module docs](self)). `periodic` identifies opposite faces of the box;
 /// `keep_subcomplex` makes collapses only, so that the cycles of the result are cycles of the
 /// set (for generators). The cells of the result are named by their doubled-grid points, as
-/// those of [`super::cubical::cubical_complex`]; its homology, through
+/// those of [`super::cubical_complex`]; its homology, through
 /// [`SlabComplex::absolute`], is theirs.
 ///
 /// Refuses an empty shape, a grid past `u64`, or rows over the memory limit; the survivors
