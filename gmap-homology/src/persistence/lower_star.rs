@@ -72,6 +72,7 @@ use gmap_core::fastdiv::Divider;
 use super::options::{check_field, key, unkey, Construction, CubicalOptions};
 use super::reduce::Zp;
 use super::{Diagram, PersistenceError};
+use crate::complex::cubical::grid::{face_sign, Grid, Order};
 use crate::prefetch::{filled, prefetch};
 
 /// Whether the pixel route takes an image of this shape with these options: no cycles, not
@@ -620,7 +621,9 @@ impl Padded {
     /// neighbour is read from the cache line its node is on).
     fn new(shape: [usize; 3], order: &[u32]) -> (Self, Forest) {
         let g = [shape[0] + 2, shape[1] + 2, shape[2] + 2];
-        let gstride = [g[1] * g[2], g[2], 1];
+        // C order, the last axis fastest ([`applies`] checked that the points fit a u32)
+        let points = Grid::new(g.to_vec(), false, Order::LastFastest).expect("the padded grid fits a u32");
+        let gstride = [points.strides()[0], points.strides()[1], points.strides()[2]];
         let inner = gstride[0] + gstride[1] + 1;
         let mut pix = Forest::new(g[0] * gstride[0]);
         for (v, node) in pix.nodes.iter_mut().enumerate() {
@@ -765,7 +768,8 @@ fn face_templates(gstride: [usize; 3]) -> Vec<FaceTemplate> {
 
 /// The boundary of the 2-cell `id = 3 · corner + normal` of a 3-D grid of strides `stride`
 /// (the corner's point grid): `+e(c, a) + e(c + e_a, b) - e(c + e_b, a) - e(c, b)` for
-/// the other axes `a < b`, edges keyed by `edge_key(corner, axis)` (`None`: left out),
+/// the other axes `a < b` (the signs of [`face_sign`]: along `a`, its first axis, the faces
+/// are the edges along `b`), edges keyed by `edge_key(corner, axis)` (`None`: left out),
 /// sorted by key.
 #[inline]
 fn square_boundary<E: Entry>(
@@ -777,9 +781,14 @@ fn square_boundary<E: Entry>(
 ) {
     let (low, normal) = (id as usize / 3, id as usize % 3);
     let [a, b] = OTHERS[normal];
-    let minus = field.of(-1);
+    let coef = |j: usize, upper: bool| if face_sign(j, upper) > 0 { 1 } else { field.of(-1) };
     col.clear();
-    for (v, axis, coef) in [(low, a, 1), (low + stride[a], b, 1), (low + stride[b], a, minus), (low, b, minus)] {
+    for (v, axis, coef) in [
+        (low, a, coef(1, false)),
+        (low + stride[a], b, coef(0, true)),
+        (low + stride[b], a, coef(1, true)),
+        (low, b, coef(0, false)),
+    ] {
         if let Some(k) = edge_key(v, axis) {
             col.push(E::new(k, coef));
         }

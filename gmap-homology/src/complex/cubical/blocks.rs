@@ -3,7 +3,7 @@
 //!
 //! The box's cubes are cut along its slowest axis (the last one, axis 0 fastest) into
 //! slabs of consecutive layers. Slab `i` builds the cubical complex of the closure of its
-//! own cubes ([`super`]'s doubled grid); its cells on a cut between two slabs —
+//! own cubes (on its doubled grid, [`super::grid`]); its cells on a cut between two slabs —
 //! the hyperplanes of the doubled grid at the cut — are **shared**, every other cell is
 //! **interior**. An interior cell's cofaces in the whole set are those it has in its slab
 //! (a cube of another slab reaches no further than the cut), so:
@@ -47,6 +47,7 @@ use std::ops::Range;
 
 use rustc_hash::FxHashMap;
 
+use super::grid::{Grid, Order};
 use super::{slab_complex, CubicalError};
 use crate::complex::wire::{Reader, Writer};
 use crate::homology::reduce_keeping;
@@ -169,15 +170,17 @@ pub fn block_complex(
     let (first, last) = (layers.start > 0, layers.end < n);
     let c = slab_complex(&local, &bits, first, last)?;
     drop(bits);
-    // the doubled grid's points of one hyperplane of the last axis, here and in the whole
-    let plane = c.grid[..d - 1].iter().product::<usize>() as u64;
-    let top = (c.grid[d - 1] - 1) as u64;
+    // the slab's doubled grid: a hyperplane of its last axis has the same points as one of
+    // the whole, whose doubled layer 2 · layers.start is the slab's first
+    let g = Grid::new(c.grid.clone(), false, Order::FirstFastest)
+        .ok_or_else(|| CubicalError::Internal(format!("the slab's grid {:?}", c.grid)))?;
+    let (plane, top) = (g.strides()[d - 1], g.points()[d - 1] - 1);
     let shared = |p: u64| {
-        let z = p / plane;
+        let z = g.coord(p as usize, d - 1);
         (first && z == 0) || (last && z == top)
     };
     let r = reduce_keeping(&c.chain, |k, j| shared(c.cells[k][j]));
-    let offset = 2 * layers.start as u64 * plane;
+    let offset = (2 * layers.start * plane) as u64;
     let keys = r
         .ids
         .iter()

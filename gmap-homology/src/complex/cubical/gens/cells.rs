@@ -1,11 +1,14 @@
 //! The box of a cubical set of dimension ≤ 3 on its doubled grid, and what the parts of the
 //! generators' route share: the faces and cofaces of a cell there, the sign of an edge in the
-//! boundary of a square, cycles as chains of grid points.
+//! boundary of a square, cycles as chains of grid points. The loops here run over three
+//! axes with strides taken from the doubled grid's ([`crate::cubical::grid`]), the axes past
+//! the set's dimension of one point.
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
 use gmap_core::fastdiv::Divider;
 
+use crate::complex::cubical::grid::{self, face_sign, Grid, Order, Placement};
 use crate::complex::cubical::CubicalError;
 
 /// A representative cycle of one free summand of `H_dim`.
@@ -40,21 +43,20 @@ pub(super) struct Box {
 impl Box {
     pub(super) fn new(shape: &[usize]) -> Result<Self, CubicalError> {
         let d = shape.len();
-        let mut n = [1usize; 3];
-        let mut g = [1usize; 3];
-        n[..d].copy_from_slice(shape);
-        for a in 0..d {
-            g[a] = 2 * n[a] + 1;
-        }
-        let (mut gs, mut vs, mut cs) = ([0usize; 3], [0usize; 3], [0usize; 3]);
-        let (mut s, mut v, mut c) = (1, 1, 1);
+        let order = Order::FirstFastest;
+        let too_large =
+            || CubicalError::TooLarge { points: grid::shown(shape, Placement::Cubes), limit: u32::MAX as u64 - 1 };
+        // the doubled grid, and the grids of the vertices and of the cubes for their numbers
+        let cells = Grid::of_box(shape, Placement::Cubes, order).ok_or_else(too_large)?;
+        let vertices = Grid::new(shape.iter().map(|&l| l + 1).collect(), false, order).ok_or_else(too_large)?;
+        let cubes = Grid::new(shape.to_vec(), false, order).ok_or_else(too_large)?;
+        // an axis past the set's dimension has one point, at the stride of the whole grid
+        let axis = |g: &Grid, a: usize| if a < d { (g.points()[a], g.strides()[a]) } else { (1, g.len()) };
+        let (mut n, mut g, mut gs, mut vs, mut cs) = ([0usize; 3], [0usize; 3], [0usize; 3], [0usize; 3], [0usize; 3]);
         for a in 0..3 {
-            gs[a] = s;
-            vs[a] = v;
-            cs[a] = c;
-            s *= g[a];
-            v *= if a < d { n[a] + 1 } else { 1 };
-            c *= n[a];
+            (g[a], gs[a]) = axis(&cells, a);
+            vs[a] = axis(&vertices, a).1;
+            (n[a], cs[a]) = axis(&cubes, a);
         }
         // the caller checked that the grid's points fit in u32: so do its strides
         let div = [g[0], gs[1], gs[2]]
@@ -149,9 +151,9 @@ pub(super) fn try_vec<T: Clone>(len: usize, value: T, what: &'static str) -> Res
     Ok(v)
 }
 
-/// The faces of grid point `p` (coordinates `c`): its two neighbours along each odd axis,
-/// `f(q, a, x)` with the face's point, the axis it lies along from `p` and its coordinate
-/// there.
+/// The faces of grid point `p` (coordinates `c`): its two neighbours along each odd axis
+/// ([`Grid::faces_along`] in a box), `f(q, a, x)` with the face's point, the axis it lies
+/// along from `p` and its coordinate there.
 #[inline]
 pub(super) fn for_faces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize, usize, usize)) {
     for a in 0..bx.d {
@@ -162,8 +164,8 @@ pub(super) fn for_faces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(us
     }
 }
 
-/// The cofaces of grid point `p` within the grid: its neighbours along each even axis,
-/// `f(q, a, x)` as for [`for_faces`].
+/// The cofaces of grid point `p` within the grid: its neighbours along each even axis
+/// ([`Grid::cofaces_along`] in a box), `f(q, a, x)` as for [`for_faces`].
 #[inline]
 pub(super) fn for_cofaces(bx: &Box, c: &[usize; 3], p: usize, mut f: impl FnMut(usize, usize, usize)) {
     for a in 0..bx.d {
@@ -192,17 +194,13 @@ pub(super) fn dim_of(c: &[usize; 3]) -> usize {
 }
 
 /// `∂[e, q]`: the coefficient of edge `e` in the boundary of the square at `q` (coordinates
-/// `cq`): along its first odd axis the upper face +1, along its second −1, the lower ones the
-/// opposite.
+/// `cq`), by [`face_sign`]: `e` lies along the square's first odd axis (`j = 0`) or its
+/// second (`j = 1`), above `q` or below.
 #[inline]
 pub(super) fn square_sign(bx: &Box, cq: &[usize; 3], q: usize, e: usize) -> i64 {
     let first = (0..bx.d).find(|&a| cq[a] % 2 == 1).unwrap_or(0);
-    let upper = e > q;
-    let along_first = e.abs_diff(q) == bx.gs[first];
-    match (along_first, upper) {
-        (true, true) | (false, false) => 1,
-        _ => -1,
-    }
+    let j = usize::from(e.abs_diff(q) != bx.gs[first]);
+    face_sign(j, e > q)
 }
 
 /// The chain with its cells sorted, their coefficients summed and the zeros dropped.

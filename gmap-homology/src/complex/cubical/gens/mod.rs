@@ -68,6 +68,7 @@ use cells::{try_vec, Box, PRESENT};
 use complement::{complement_boundaries, fill_tree_cavities, tunnel_loops, Complement};
 use components::{components, mark_closure};
 use sweep::loops;
+use crate::complex::cubical::grid::{self, Placement};
 use crate::complex::cubical::CubicalError;
 
 /// What [`cubical_generators`] found.
@@ -87,7 +88,7 @@ pub struct CubicalGenerators {
 /// its output (`None` past `u64`).
 pub fn bytes_needed(shape: &[usize]) -> Option<u64> {
     let prod = |f: &dyn Fn(usize) -> u64| shape.iter().try_fold(1u64, |v, &l| v.checked_mul(f(l)));
-    let grid = prod(&|l| 2 * l as u64 + 1)?;
+    let grid = grid::point_count(shape, Placement::Cubes)?;
     let vertices = prod(&|l| l as u64 + 1)?;
     let cubes = prod(&|l| l as u64)?;
     // the doubled grid and a u32 per vertex, in 3-D the sweep's waiting cells: two bits per
@@ -162,7 +163,7 @@ fn generators_by(shape: &[usize], bits: &[u8], route: Route) -> Result<CubicalGe
     if cubes != Some(bits.len()) {
         return Err(CubicalError::BadShape(format!("{} bytes for a box of {shape:?} cubes", bits.len())));
     }
-    let grid_points = shape.iter().try_fold(1u64, |v, &l| v.checked_mul(2 * l as u64 + 1));
+    let grid_points = grid::point_count(shape, Placement::Cubes);
     match grid_points {
         Some(p) if p < u32::MAX as u64 && usize::try_from(p).is_ok() => {}
         _ => {
