@@ -1,6 +1,6 @@
 //! Persistence of an image too large to hold: the Morse complex of its lower stars.
 //!
-//! The other routes of [`super::cubical`] keep a value (and more) per cell of the doubled
+//! The other routes of [`super::image`] keep a value (and more) per cell of the doubled
 //! grid, about 2^d cells per pixel. This one keeps nothing per pixel: it reads the image
 //! through a function (an `.npy` through its memory map), slab after slab of pixels, and
 //! holds only the **critical cells** of a discrete gradient and their boundaries.
@@ -56,7 +56,7 @@ use rustc_hash::FxHashMap;
 
 use crate::complex::cubical::grid::{Grid, Order, Placement};
 use super::options::{check_field, key, Construction, CubicalOptions};
-use super::reduce::{reduce_dim, Entry, Zp};
+use super::pairing::{reduce_dim, Entry, Zp};
 use super::{Diagram, PersistenceError};
 
 /// Bytes held per critical cell, for the limit: its place in the list (16), its name and
@@ -589,7 +589,7 @@ fn flow_up(
 /// The persistence diagram of the image of shape `shape` (C order) whose pixel `i` is
 /// `value(i)`, through the Morse complex of its lower stars (module docs). Refuses, as
 /// [`PersistenceError::TooLarge`], a critical complex past `max_bytes` (with
-/// [`super::cubical::PROCESS_BYTES`]), as soon as the first pass finds it so; a NaN, naming
+/// [`super::image::PROCESS_BYTES`]), as soon as the first pass finds it so; a NaN, naming
 /// its index; and the options it does not build: periodic images and cycles.
 pub fn morse_persistence(
     shape: &[usize],
@@ -631,7 +631,7 @@ pub fn morse_persistence(
     let lat = Lattice { n: shape.to_vec(), pstride, grid, t, sign, value, offsets };
 
     // pass 1: each pixel's lower star, slab after slab; the critical cells per dimension
-    let budget = max_bytes.saturating_sub(super::cubical::PROCESS_BYTES) / BYTES_PER_CRITICAL;
+    let budget = max_bytes.saturating_sub(super::image::PROCESS_BYTES) / BYTES_PER_CRITICAL;
     let found = AtomicU64::new(0);
     let tasks = plen.div_ceil(1 << 16).max(1);
     let parts = gmap_core::parallel::map_tasks(
