@@ -54,10 +54,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rustc_hash::FxHashMap;
 
-use crate::complex::cubical::grid::{Grid, Order, Placement};
 use super::options::{check_field, key, Construction, CubicalOptions};
 use super::pairing::{reduce_dim, Entry, Zp};
 use super::{Diagram, PersistenceError};
+use crate::complex::cubical::grid::{Grid, Order, Placement};
 
 /// Bytes held per critical cell, for the limit: its place in the list (16), its name and
 /// boundary in the critical complex (about 64), and the diagram's reduction (16).

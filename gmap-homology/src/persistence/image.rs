@@ -30,7 +30,7 @@
 //!   (d-1)-cells are negative, so the matrix reduction below skips the others (clearing).
 //!   On a torus each dual component left at the end is an essential d-class, and the
 //!   positive (d-1)-cells no d-cell kills are essential (d-1)-classes.
-//! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing ([`super::pairing`]),
+//! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing (`pairing`, private),
 //!   the boundary computed from the grid as columns are asked for.
 //! * With representative cycles asked for, every dimension down to 1 goes through the
 //!   reduction (it gives the reduced columns and `V`).

@@ -25,16 +25,16 @@
 //!
 //! [`plot`] draws diagrams, barcodes and a 2-D image with a cycle over it as SVG.
 
-pub mod gradient;
-pub mod image;
 mod diagram;
 pub mod filtered;
+pub mod gradient;
+pub mod image;
 mod lower_star;
 mod options;
-pub mod plot;
 pub(crate) mod pairing;
+pub mod plot;
 
-pub use image::{cubical_persistence, memory_estimate, Construction, CubicalFiltration, CubicalOptions};
 pub use diagram::{CellName, Chain, Diagram, Pair, PersistenceError};
 pub use filtered::{FilteredComplex, SimplexValues};
 pub use gradient::morse_persistence;
+pub use image::{cubical_persistence, memory_estimate, Construction, CubicalFiltration, CubicalOptions};

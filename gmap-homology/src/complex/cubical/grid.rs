@@ -125,7 +125,7 @@ pub fn shown(shape: &[usize], placement: Placement) -> String {
 /// route.
 #[inline(always)]
 pub const fn face_sign(j: usize, upper: bool) -> i64 {
-    let s = if j % 2 == 0 { 1 } else { -1 };
+    let s = if j.is_multiple_of(2) { 1 } else { -1 };
     if upper {
         s
     } else {

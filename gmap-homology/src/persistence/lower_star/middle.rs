@@ -1,9 +1,9 @@
 //! The column reduction of the middle dimension of a 3-D image: the 2-cells' columns over the
 //! edges, keyed by rank, only the columns a reduction changed stored.
 
-use crate::persistence::pairing::Zp;
 use super::sweep::Out;
 use crate::complex::cubical::grid::face_sign;
+use crate::persistence::pairing::Zp;
 use crate::prefetch::{filled, prefetch};
 
 /// The boundary of the 2-cell `id = 3 · corner + normal` of a 3-D grid of strides `stride`

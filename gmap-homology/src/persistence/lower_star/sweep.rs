@@ -149,7 +149,8 @@ pub(super) fn touch_rows<T>(data: &[T], at: usize, steps: [usize; 2], rows: &[(i
 }
 
 /// The nine rows around a point.
-pub(super) const BLOCK: [(isize, isize); 9] = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 0), (0, 1), (1, -1), (1, 0), (1, 1)];
+pub(super) const BLOCK: [(isize, isize); 9] =
+    [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 0), (0, 1), (1, -1), (1, 0), (1, 1)];
 
 /// A point's row and the four next to it (its six neighbours).
 pub(super) const CROSS: [(isize, isize); 5] = [(0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)];

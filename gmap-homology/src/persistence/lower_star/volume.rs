@@ -6,8 +6,8 @@ use bitvec::vec::BitVec;
 
 use super::middle::{square_boundary, Entry, Middle, TooLarge, OTHERS};
 use super::sweep::{touch_rows, Forest, Out, AHEAD, BLOCK, CROSS, LOWER, UPPER};
-use crate::persistence::pairing::Zp;
 use crate::complex::cubical::grid::{Grid, Order};
+use crate::persistence::pairing::Zp;
 
 /// A 3-D image on the grid of its points padded by one on every side: the pixel c at the
 /// point c + (1, 1, 1). The border's rank is u32::MAX (never early), so that the
@@ -334,10 +334,13 @@ pub(super) fn v3<E: Entry>(grid: Padded, mut pix: Forest, field: Zp, out: &mut O
             }
         }
         let outside = dual.outside;
-        let node = |c: &Template| if real & c.corners == c.corners { v.wrapping_add_signed(c.at) as u32 } else { outside };
+        let node =
+            |c: &Template| if real & c.corners == c.corners { v.wrapping_add_signed(c.at) as u32 } else { outside };
         let mut neg = 0u16;
         for (k, face) in faces.iter().enumerate().rev() {
-            if early & face.corners == face.corners && !dual.join(node(&face.cofaces[0]), node(&face.cofaces[1]), r, out) {
+            if early & face.corners == face.corners
+                && !dual.join(node(&face.cofaces[0]), node(&face.cofaces[1]), r, out)
+            {
                 neg |= 1 << k;
             }
         }

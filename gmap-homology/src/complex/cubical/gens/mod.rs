@@ -22,7 +22,7 @@
 //!   squares not in X, leaves one such square per independent loop of the complement: one
 //!   whose four edges are in X is a relative cycle on its own, the loop of those four edges
 //!   around its tunnel; the others, tied together by the edges not in X, are reduced with
-//!   unit pivots ([`tunnel_loops`]). No sweep runs, and the loops are short (four edges around
+//!   unit pivots (`complement::tunnel_loops`). No sweep runs, and the loops are short (four edges around
 //!   a tunnel one cube thick).
 //! * **`H_1` of a 3-D set, otherwise**: collapses and coreductions over the cells on the grid itself
 //!   (the sweep of [`crate::generators`], without building the complex), which pair each
@@ -55,7 +55,6 @@
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
-
 mod cells;
 mod cokernel;
 mod complement;
@@ -64,12 +63,12 @@ mod sweep;
 
 pub use cells::CubeCycle;
 
+use crate::complex::cubical::grid::{self, Placement};
+use crate::complex::cubical::CubicalError;
 use cells::{try_vec, Box, PRESENT};
 use complement::{complement_boundaries, fill_tree_cavities, tunnel_loops, Complement};
 use components::{components, mark_closure};
 use sweep::loops;
-use crate::complex::cubical::grid::{self, Placement};
-use crate::complex::cubical::CubicalError;
 
 /// What [`cubical_generators`] found.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -5,7 +5,9 @@
 
 use std::collections::VecDeque;
 
-use super::cells::{dim_of, for_cofaces, for_each_point, for_faces, merged, moved, square_sign, try_vec, Box, CubeCycle, PRESENT};
+use super::cells::{
+    dim_of, for_cofaces, for_each_point, for_faces, merged, moved, square_sign, try_vec, Box, CubeCycle, PRESENT,
+};
 use super::cokernel::{cokernel_by_unit_pivots, minus_multiple, subtract_in_place};
 use crate::complex::cubical::CubicalError;
 use crate::engine::chain::ChainComplex;
