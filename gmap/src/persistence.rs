@@ -94,7 +94,7 @@ pub enum Pixels<'a> {
 /// The diagram of the image of shape `shape` (the engine's order, the fastest axis last).
 /// When its estimate fits the memory limit ([`check_image_memory`]) the whole grid is
 /// built (the values copied once if they are read one by one); past it, the Morse complex
-/// of its lower stars ([`gmap_homology::persistence::morse`]) is computed from the pixels
+/// of its lower stars ([`gmap_homology::persistence::gradient`]) is computed from the pixels
 /// as they are read, holding only its critical cells: refused with the estimate if the
 /// image is periodic, has more than 4 axes or cycles are asked for (that route takes none
 /// of these), and with the count if its critical cells pass the limit.

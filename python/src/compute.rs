@@ -23,8 +23,8 @@ pub struct Cubes<'a> {
 /// with generators in dimension ≤ 3, from union-finds and a sweep over the grid
 /// (`gmap::report::cubical_generators`); in one pass over the cubes where that applies
 /// (dimension ≤ 3, no generators:
-/// `gmap_homology::cubical_pass`, O(cubes) time, memory O(one layer), the array never copied
-/// whole; periodic: `gmap_homology::cubical_torus`, a union-find over the whole box), else the cubical complex of the closure after collapses of free
+/// `gmap_homology::cubical::pass`, O(cubes) time, memory O(one layer), the array never copied
+/// whole; periodic: `gmap_homology::cubical::torus`, a union-find over the whole box), else the cubical complex of the closure after collapses of free
 /// faces (`periodic`: the box a torus), with the facade's checks of the options.
 pub fn cubical_array(c: &Cubes<'_>, o: &HomologyOptions) -> Res<Report> {
     if let Some(p) = o.field {

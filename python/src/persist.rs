@@ -43,7 +43,7 @@ fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -
         }
         // the float64 copy must fit
         let copy = shape.iter().try_fold(8u64, |b, &s| b.checked_mul(s as u64));
-        let copy = copy.and_then(|b| b.checked_add(gmap_homology::persistence::cubical::PROCESS_BYTES));
+        let copy = copy.and_then(|b| b.checked_add(gmap_homology::persistence::image::PROCESS_BYTES));
         if copy.is_none_or(|b| b > gmap::core::resources::max_memory()) {
             return Err(Failure::from(whole).into());
         }
