@@ -27,7 +27,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     write_html(&scene, &HtmlOptions::default(), &dir.join("building.html"))?;
 
     // the torus and its H1 generators, their cells renumbered as the map's 1-cells
-    let t = gmap::ops::geometry::torus_with_points(24, 12, 2.0, 0.8)?;
+    let t = gmap::ops::build::placed::torus_with_points(24, 12, 2.0, 0.8)?;
     let c = cellular_complex(&t)?;
     let edges = t.cells(1);
     let mut scene = Scene::from_map(&t, None, "torus of 24 × 12 squares");

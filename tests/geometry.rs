@@ -2,8 +2,8 @@
 //! `.off` writers, checked as properties on random grids and random points.
 
 use gmap::core::{Affine, GMap, Point};
+use gmap::ops::build::placed::grid_with_points;
 use gmap::ops::export::{gmap_off_string, gmap_two_skeleton_off_string};
-use gmap::ops::geometry::grid_with_points;
 use gmap::ops::import::PolygonMesh;
 use proptest::prelude::*;
 
@@ -88,7 +88,7 @@ proptest! {
 #[test]
 fn convert_refuses_a_solid_to_off() {
     let dir = tempfile::tempdir().unwrap();
-    let cube = gmap::ops::geometry::cube_with_points(3).unwrap();
+    let cube = gmap::ops::build::placed::cube_with_points(3).unwrap();
     let src = dir.path().join("cube.gmap");
     std::fs::write(&src, gmap::core::io::format_gmap(&cube)).unwrap();
     let out = dir.path().join("cube.off");

@@ -115,7 +115,7 @@ fn the_building_shows_its_rooms_in_the_legend() {
 
 #[test]
 fn each_generator_of_the_torus_changes_pixels() {
-    let t = gmap_ops::geometry::torus_with_points(16, 8, 2.0, 0.75).unwrap();
+    let t = gmap_ops::build::placed::torus_with_points(16, 8, 2.0, 0.75).unwrap();
     let gens = map_generators(&t);
     let h1: Vec<_> = gens.into_iter().filter(|g| g.dim == 1).collect();
     assert_eq!(h1.len(), 2);
@@ -192,7 +192,7 @@ fn a_four_map_states_its_rule() {
 /// renders within 5 s of the page's start, the darts view thinned.
 #[test]
 fn a_grid_of_a_million_and_a_half_darts_renders_within_five_seconds() {
-    let m = gmap_ops::geometry::grid_with_points(&[32, 32, 32], &[false; 3]).unwrap();
+    let m = gmap_ops::build::placed::grid_with_points(&[32, 32, 32], &[false; 3]).unwrap();
     assert_eq!(m.dart_count(), 1_572_864);
     let scene = Scene::from_map(&m, None, "grid 32³");
     let page = html_string(&scene, &HtmlOptions::default()).unwrap();

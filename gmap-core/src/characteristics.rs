@@ -17,7 +17,7 @@ use std::fmt;
 use crate::attr::Attributes;
 use crate::dense::DenseMap;
 use crate::edit::GMap;
-use crate::view::MapView;
+use crate::map_view::MapView;
 
 /// Darts, cells per dimension, components, orientability and validity of a map, computed
 /// together on one dense snapshot. See the [module docs](self).

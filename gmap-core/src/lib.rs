@@ -42,7 +42,7 @@
 //! [`io`] reads and writes the native `.gmap` format (with vertex points and, through
 //! [`LabelledGMap`], named [`Labels`] on cells of every dimension) and Moka's `.moka`, with
 //! errors naming the file and line; [`walk`] iterates lazily over orbits and cells of a
-//! [`GMap`]; [`geometry`] makes the linear cell complex of a [`GMap`] with points (CGAL's
+//! [`GMap`]; [`points`] makes the linear cell complex of a [`GMap`] with points (CGAL's
 //! constructors with coordinates, barycentres of cells, affine transformations);
 //! [`examples`] rebuilds the small maps drawn in the border-operator
 //! paper (BO Fig. 1, 2, 4(b)) for tests and documentation.
@@ -79,21 +79,21 @@ pub mod compacted;
 mod darts;
 pub mod dense;
 pub mod edit;
-pub mod ep;
+pub mod ep_vector;
 pub mod error;
 pub mod examples;
 pub mod fastdiv;
-pub mod geometry;
 pub mod ids;
 pub mod io;
 mod kernels;
 pub mod labels;
+pub mod map_view;
 pub mod marks;
 pub mod parallel;
+pub mod points;
 pub mod resources;
 mod text;
 pub mod union_find;
-pub mod view;
 pub mod walk;
 
 pub use alpha::{AlphaSet, MAX_DIM};
@@ -103,11 +103,11 @@ pub use compacted::{CompactedCells, FaceOperator};
 pub use dense::{DenseMap, OrientedCells3d, Partition};
 pub use edit::{DartId, EditError, GMap, MapDefect};
 pub use error::{BoundaryDefect, CellDefect, DartError, OrientationConflict, ValidityError};
-pub use geometry::{Affine, IntoPoint, MakeError};
 pub use ids::{CellId, Dart, Point};
 pub use labels::{LabelValue, LabelledGMap, Labels};
+pub use map_view::MapView;
 pub use marks::{MarkId, Marks};
-pub use view::MapView;
+pub use points::{Affine, IntoPoint, MakeError};
 
 // labels numbered like the cells of a dense map
 pub use labels::{cell_labels, to_dense_labels, DenseLabels};

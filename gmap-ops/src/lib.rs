@@ -5,8 +5,9 @@
 //!
 //! * [`build`]: the classic objects — n-simplex, n-cube, k-gon, the product with an edge
 //!   (extrusion), cube grids in any dimension with any axes periodic (d-tori), surfaces
-//!   from polygonal schema words, the solid torus, lens spaces L(p, q);
-//! * [`geometry`]: the grid, the cube and the simplex with the points of their vertices;
+//!   from polygonal schema words, the solid torus, lens spaces L(p, q); and in
+//!   [`build::placed`], the grid, the cube, the simplex and the torus with the points of
+//!   their vertices;
 //! * [`import`]: pure simplicial complexes (`.facets`, `.lex`; one dart per flag of each
 //!   facet), polygon meshes (`.off`) and face posets of regular cell complexes (the flag
 //!   construction), each refusing what is not a G-map with an error that says where;
@@ -38,7 +39,6 @@ pub mod build;
 pub mod construct;
 pub mod euler;
 pub mod export;
-pub mod geometry;
 pub mod import;
 pub mod iso;
 pub mod mesh;

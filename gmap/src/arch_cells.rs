@@ -351,10 +351,10 @@ fn solid_boundary(x: &ArchComplex, b: &Cells, r: usize, max_darts: u64) -> Resul
         }
     } else {
         let h = gmap_homology::cellular_complex(&m)
-            .map_err(|e| Error::from_source(crate::ErrorKind::Compute, &e))
+            .map_err(|e| Error::from_source(crate::ErrorKind::Compute, e))
             .and_then(|c| {
                 gmap_homology::homology::homology_z(&c.chain)
-                    .map_err(|e| Error::from_source(crate::ErrorKind::Compute, &e))
+                    .map_err(|e| Error::from_source(crate::ErrorKind::Compute, e))
             })?;
         let mut sphere = vec![0; d];
         (sphere[0], sphere[d - 1]) = (1, 1);

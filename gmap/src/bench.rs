@@ -27,11 +27,17 @@ use gmap_homology::border::border_from_oriented;
 use gmap_homology::{check_preconditions, homology_z_staged, simplicial_complex, ChainComplex, Homology};
 use serde_json::{json, Value};
 
+use gmap_core::DenseMap;
+use gmap_ops::import::Level;
+
 use crate::chains::{check_simplicial_size, face_complex_within};
+use crate::cubes::Cubes;
 use crate::error::{err, Result};
 use crate::input::{Input, OpenOptions};
 use crate::open_with;
+use crate::options::Method;
 use crate::progress::Progress;
+use crate::route::Route;
 
 /// Stage times of one route, in milliseconds; `None` for a stage the route does not have.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -115,7 +121,7 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
         if p.is_dir() {
             let mut found: Vec<PathBuf> = std::fs::read_dir(p)
                 .map_err(|e| {
-                    crate::Error::from_source(crate::ErrorKind::Parse, &e)
+                    crate::Error::from_source(crate::ErrorKind::Parse, e)
                         .context(format!("{}: cannot read the folder", p.display()))
                 })?
                 .filter_map(|e| e.ok().map(|e| e.path()))
@@ -210,96 +216,59 @@ pub fn routes(input: &Input, max_darts: Option<u64>) -> Result<Vec<RouteRun>> {
 }
 
 fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> Result<Vec<RouteRun>> {
-    let max_darts = o.max_darts;
     let name = input.path().display().to_string();
     let mut runs = Vec::new();
-    let mut push = |route, cells: Vec<usize>, times, result| {
+    // a simplicial complex's G-map, made once for both of its map routes (timed as reading)
+    let mut gmap: Option<(f64, std::result::Result<DenseMap, String>)> = None;
+    for route in crate::route::candidates(input, o.periodic) {
+        let row = match (route, input) {
+            (Route::Gmap(method), Input::Simplicial(sc)) => {
+                let (map_read, map) = gmap.get_or_insert_with(|| {
+                    let t = Instant::now();
+                    let m = sc.to_gmap_within(o.max_darts).map_err(|e| format!("does not apply: {e}"));
+                    (read + ms(t), m)
+                });
+                match map {
+                    Ok(map) => map_row(method, map, *map_read, &name),
+                    Err(why) => Row::failed(Times { read: *map_read, ..Times::default() }, why.clone()),
+                }
+            }
+            (Route::Cellular, Input::Map(m)) => map_row(Method::Cellular, m.map(), read, &name),
+            (Route::Simplicial, Input::Map(m)) => map_row(Method::Simplicial, m.map(), read, &name),
+            (Route::Direct, Input::Simplicial(sc)) => {
+                let mut times = Times { read, ..Times::default() };
+                let t = Instant::now();
+                // the direct route is where a complex's groups come from: its refusal is an error
+                let fc = face_complex_within(sc, o.max_cells, &name, false)?;
+                times.border = Some(ms(t));
+                Row::reduced(&fc.chain, times)
+            }
+            (Route::Arch, Input::Arch(x)) => {
+                let mut times = Times { read, ..Times::default() };
+                let t = Instant::now();
+                let c = x.chain_complex();
+                times.border = Some(ms(t));
+                Row::reduced(&c, times)
+            }
+            (route, Input::Cubical(set)) => cubical_row(route, Cubes::Set(set), read, o.periodic)?,
+            (route, Input::Image(img)) => cubical_row(route, Cubes::Image(img, Level::Nonzero), read, o.periodic)?,
+            (route, _) => Row::failed(Times { read, ..Times::default() }, format!("{} does not apply", route.name())),
+        };
         let peak_rss = mark.row();
-        runs.push(RouteRun { input: name.clone(), route, cells, times, result, agree: true, peak_rss })
-    };
-    let map_read;
-    let owned;
-    let map = match input {
-        Input::Simplicial(sc) => {
-            // the direct route first (every face of every facet a cell, as `homology` does by
-            // default): it applies to any complex, so one without a G-map still gets its groups
-            let mut times = Times { read, ..Times::default() };
-            let t = Instant::now();
-            let fc = face_complex_within(sc, o.max_cells, &name, false)?;
-            times.border = Some(ms(t));
-            let (cells, r) = reduce(&fc.chain, &mut times);
-            push("direct", cells, times, r);
-            let t = Instant::now();
-            match sc.to_gmap_within(max_darts) {
-                Ok(m) => {
-                    map_read = read + ms(t);
-                    owned = m;
-                    Some(&owned)
-                }
-                Err(e) => {
-                    let why = format!("does not apply: {e}");
-                    let times = Times { read: read + ms(t), ..Times::default() };
-                    push("cellular", Vec::new(), times.clone(), Err(why.clone()));
-                    push("simplicial", Vec::new(), times, Err(why));
-                    return Ok(runs);
-                }
-            }
-        }
-        Input::Map(m) => {
-            map_read = read;
-            Some(m.map())
-        }
-        Input::Cubical(set) => {
-            map_read = read;
-            cubical_rows(Cubes::Set(set.get()), read, o.periodic, &mut push)?;
-            None
-        }
-        Input::Image(img) => {
-            map_read = read;
-            cubical_rows(Cubes::Image(img), read, o.periodic, &mut push)?;
-            None
-        }
-        Input::Arch(x) => {
-            map_read = read;
-            let mut times = Times { read, ..Times::default() };
-            let t = Instant::now();
-            let c = x.chain_complex();
-            times.border = Some(ms(t));
-            let (cells, r) = reduce(&c, &mut times);
-            push("cellular", cells, times, r);
-            None
-        }
-    };
-    if let Some(map) = map {
-        // cellular: cells and C1/C2 checks, border, reduction
-        let mut times = Times { read: map_read, ..Times::default() };
-        let t = Instant::now();
-        let checked = check_preconditions(map);
-        times.cells = Some(ms(t));
-        match checked {
-            Ok(oriented) => {
-                let t = Instant::now();
-                let c = border_from_oriented(map, &oriented);
-                times.border = Some(ms(t));
-                drop(oriented);
-                let (cells, r) = reduce(&c.chain, &mut times);
-                push("cellular", cells, times, r);
-            }
-            Err(e) => push("cellular", map.cell_counts(), times, Err(format!("does not apply: {e}"))),
-        }
-        // simplicial counterpart: one n-simplex per dart, within the memory policy (its size
-        // is exponential in the dimension)
-        let mut times = Times { read: map_read, ..Times::default() };
-        match check_simplicial_size(map, &name) {
-            Ok(()) => {
-                let t = Instant::now();
-                let s = simplicial_complex(map);
-                times.border = Some(ms(t));
-                let (cells, r) = reduce(&s, &mut times);
-                push("simplicial", cells, times, r);
-            }
-            Err(e) => push("simplicial", Vec::new(), times, Err(format!("skipped: {e}"))),
-        }
+        let route = match route {
+            Route::Gmap(method) => method.name(),
+            Route::Arch => "cellular",
+            route => route.name(),
+        };
+        runs.push(RouteRun {
+            input: name.clone(),
+            route,
+            cells: row.cells,
+            times: row.times,
+            result: row.result,
+            agree: true,
+            peak_rss,
+        });
     }
     let ok: Vec<&Homology> = runs.iter().filter_map(|r| r.result.as_ref().ok()).collect();
     let agree = ok.windows(2).all(|w| w[0] == w[1]);
@@ -309,108 +278,122 @@ fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> 
     Ok(runs)
 }
 
-/// A cubical input: a set of cubes, or an image whose non-zero values are the cubes.
-enum Cubes<'a> {
-    Set(&'a gmap_ops::import::CubicalSet),
-    Image(&'a gmap_ops::import::Image),
+/// One route's figures: the cells reduced, the stage times, the groups or why not.
+struct Row {
+    cells: Vec<usize>,
+    times: Times,
+    result: std::result::Result<Homology, String>,
 }
 
-type Push<'a> = dyn FnMut(&'static str, Vec<usize>, Times, std::result::Result<Homology, String>) + 'a;
+impl Row {
+    fn failed(times: Times, why: String) -> Self {
+        Row { cells: Vec::new(), times, result: Err(why) }
+    }
 
-/// The rows of a cubical input: the one-pass route (dimension ≤ 3), the cubical complex
-/// built and reduced slab by slab (read in memory order), then the whole cubical complex of
-/// the closure after collapses of free faces (an image made a bitmap first, timed as
-/// reading). With `periodic` (the torus of the box) the one-pass route does not apply; a
-/// cubical cell complex with cells on no cube takes the whole complex only (the other two
-/// routes read cubes).
-fn cubical_rows(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Result<()> {
-    let shape = match cubes {
-        Cubes::Image(img) => img.memory_shape(),
-        Cubes::Set(set) => set.shape().to_vec(),
-    };
-    if matches!(cubes, Cubes::Set(set) if !set.is_full()) {
-        return whole_cubical_row(cubes, read, periodic, push);
+    /// The chain complex `c` reduced, its stages timed into `times`.
+    fn reduced(c: &ChainComplex, mut times: Times) -> Self {
+        let (cells, result) = reduce(c, &mut times);
+        Row { cells, times, result }
     }
-    if shape.len() <= 3 && !periodic {
-        let mut times = Times { read, ..Times::default() };
-        let t = Instant::now();
-        let r = match cubes {
-            Cubes::Image(img) => gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
-                img.presence(gmap_ops::import::Level::Nonzero, s, out)
-            }),
-            Cubes::Set(set) => {
-                let bits = set.bits();
-                gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| {
-                    out.copy_from_slice(&bits[s..s + out.len()])
-                })
+}
+
+/// A map's route: cellular (cells and C1/C2 checks, border, reduction) or its simplicial
+/// counterpart, one n-simplex per dart, within the memory policy (its size is exponential
+/// in the dimension).
+fn map_row(method: Method, map: &DenseMap, read: f64, name: &str) -> Row {
+    let mut times = Times { read, ..Times::default() };
+    match method {
+        Method::Cellular => {
+            let t = Instant::now();
+            let checked = check_preconditions(map);
+            times.cells = Some(ms(t));
+            match checked {
+                Ok(oriented) => {
+                    let t = Instant::now();
+                    let c = border_from_oriented(map, &oriented);
+                    times.border = Some(ms(t));
+                    drop(oriented);
+                    Row::reduced(&c.chain, times)
+                }
+                Err(e) => Row { cells: map.cell_counts(), times, result: Err(format!("does not apply: {e}")) },
             }
-        };
-        times.reduction = Some(ms(t));
-        let r = r.map(|p| Homology {
-            coefficients: gmap_homology::homology::Coefficients::Integers,
-            betti: p.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect(),
-            torsion: vec![Vec::new(); shape.len() + 1],
-        });
-        push("one-pass", Vec::new(), times, r.map_err(|e| e.to_string()));
+        }
+        Method::Simplicial => match check_simplicial_size(map, name) {
+            Ok(()) => {
+                let t = Instant::now();
+                let s = simplicial_complex(map);
+                times.border = Some(ms(t));
+                Row::reduced(&s, times)
+            }
+            Err(e) => Row::failed(times, format!("skipped: {e}")),
+        },
     }
-    // the general route of `homology`: the cubical complex built and reduced slab by slab
+}
+
+/// A cubical route of a cubical input: the one pass (dimension ≤ 3), the cubical complex
+/// built and reduced slab by slab (read in memory order), or the whole cubical complex of
+/// the closure after collapses of free faces (an image made a bitmap first, timed as
+/// reading; a set's own lower cells marked on the grid).
+fn cubical_row(route: Route, cubes: Cubes<'_>, read: f64, periodic: bool) -> Result<Row> {
+    let shape = cubes.shape();
     let mut times = Times { read, ..Times::default() };
     let t = Instant::now();
-    let slab = crate::cubes::slab_layers(&shape);
-    let c = match cubes {
-        Cubes::Image(img) => gmap_homology::cubical_slabs::cubical_complex_slabs(
-            &shape,
-            |s, out| img.presence(gmap_ops::import::Level::Nonzero, s, out),
-            periodic,
-            slab,
-            false,
-        ),
-        Cubes::Set(set) => {
-            let bits = set.bits();
-            let fill = |s: usize, out: &mut [u8]| out.copy_from_slice(&bits[s..s + out.len()]);
-            gmap_homology::cubical_slabs::cubical_complex_slabs(&shape, fill, periodic, slab, false)
+    Ok(match route {
+        Route::OnePass => {
+            let r = gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| cubes.fill(s, out));
+            times.reduction = Some(ms(t));
+            let r = r.map(|p| Homology {
+                coefficients: gmap_homology::homology::Coefficients::Integers,
+                betti: p.betti.iter().map(|&b| usize::try_from(b).unwrap_or(usize::MAX)).collect(),
+                torsion: vec![Vec::new(); shape.len() + 1],
+            });
+            Row { cells: Vec::new(), times, result: r.map_err(|e| e.to_string()) }
         }
-    };
-    times.border = Some(ms(t));
-    match c {
-        Ok(c) => {
-            let (cells, r) = reduce(&c.complex.chain, &mut times);
-            let r = r.and_then(|h| c.absolute(h).map_err(|e| e.to_string()));
-            push("slabs", cells, times, r);
+        Route::Cubical { whole: false } => {
+            let slab = crate::cubes::slab_layers(&shape);
+            let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
+                &shape,
+                |s, out| cubes.fill(s, out),
+                periodic,
+                slab,
+                false,
+            );
+            times.border = Some(ms(t));
+            match c {
+                Ok(c) => {
+                    let mut row = Row::reduced(&c.complex.chain, times);
+                    row.result = row.result.and_then(|h| c.absolute(h).map_err(|e| e.to_string()));
+                    row
+                }
+                Err(e) => Row::failed(times, e.to_string()),
+            }
         }
-        Err(e) => push("slabs", Vec::new(), times, Err(e.to_string())),
-    }
-    whole_cubical_row(cubes, read, periodic, push)
+        _ => whole_cubical_row(cubes, times, periodic)?,
+    })
 }
 
 /// The row of the whole cubical complex of the closure of the cubes (and lower cells) after
 /// collapses of free faces.
-fn whole_cubical_row(cubes: Cubes, read: f64, periodic: bool, push: &mut Push) -> Result<()> {
-    let mut times = Times { read, ..Times::default() };
+fn whole_cubical_row(cubes: Cubes<'_>, mut times: Times, periodic: bool) -> Result<Row> {
     let t = Instant::now();
     let image_set;
     let set = match cubes {
-        Cubes::Set(set) => set,
-        Cubes::Image(img) => {
-            image_set = img
-                .to_cubical_set(gmap_ops::import::Level::Nonzero)
-                .map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, &e))?;
+        Cubes::Image(img, level) => {
+            image_set = img.to_cubical_set(level).map_err(|e| crate::Error::from_source(crate::ErrorKind::Limit, e))?;
             times.read += ms(t);
             &image_set
         }
+        Cubes::Set(set) => set,
+        Cubes::Borrowed(_) => return Ok(Row::failed(times, "cubes in memory are not benched".to_string())),
     };
     let t = Instant::now();
     let cells = set.lower_cells_in_box();
     let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, true);
     times.border = Some(ms(t));
-    match c {
-        Ok(c) => {
-            let (cells, r) = reduce(&c.chain, &mut times);
-            push("cubical", cells, times, r);
-        }
-        Err(e) => push("cubical", Vec::new(), times, Err(e.to_string())),
-    }
-    Ok(())
+    Ok(match c {
+        Ok(c) => Row::reduced(&c.chain, times),
+        Err(e) => Row::failed(times, e.to_string()),
+    })
 }
 
 /// Integer homology of `c`, its sparse reduction and its Smith form timed apart.

@@ -55,7 +55,7 @@ pub(crate) fn cellular<'a>(
 ) -> Result<Named<'a>> {
     progress.stage("checking C1 and C2 and building the border operator");
     let c = cellular_complex(map).map_err(|e| {
-        Error::from_source(ErrorKind::Precondition, &e)
+        Error::from_source(ErrorKind::Precondition, e)
             .context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
     })?;
     let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
@@ -137,7 +137,7 @@ pub fn face_complex_within(
             Limit,
             "{file}: {e} (the faces the memory budget holds); raise the budget with --max-memory BYTES, or set the limit with --max-cells N"
         ),
-        e => Error::from_source(ErrorKind::Limit, &e).context(file.to_string()).flattened(""),
+        e => Error::from_source(ErrorKind::Limit, e).context(file.to_string()).flattened(""),
     })
 }
 

@@ -149,7 +149,7 @@ impl<'a> CubesRef<'a> {
             self.bytes.to_vec()
         };
         let min = if min.is_empty() { vec![0; d] } else { min.to_vec() };
-        let set = CubicalSet::new(min, shape, bits).map_err(|e| Error::from_source(ErrorKind::Usage, &e))?;
+        let set = CubicalSet::new(min, shape, bits).map_err(|e| Error::from_source(ErrorKind::Usage, e))?;
         Ok(Input::Cubical(crate::Sourced::new(set)))
     }
 }
@@ -218,7 +218,7 @@ impl Cubes<'_> {
 
 /// The cubical set of an image at a level (a byte per cube), refused past the memory limit.
 pub(crate) fn image_set(img: &Image, level: Level, file: &str) -> Result<CubicalSet> {
-    img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))
+    img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, e).context(file.to_string()))
 }
 
 /// The groups of cubes of dimension ≤ 3 in one pass over them (`gmap_homology::cubical_pass`,
@@ -234,7 +234,7 @@ pub fn one_pass(
     file: &str,
 ) -> Result<Option<gmap_homology::Homology>> {
     let limit =
-        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
+        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, e).context(file.to_string());
     let d = shape.len();
     let (betti, torsion): (Vec<u64>, Vec<Vec<u64>>) = if o.periodic {
         if !torus_fits(shape) {
@@ -304,7 +304,7 @@ pub fn sweep(
             o.progress.note(&format!("{why}: the cubical complex instead"));
             return Ok(None);
         }
-        Err(e) => return Err(Error::from_source(ErrorKind::Limit, &e).context(file.to_string())),
+        Err(e) => return Err(Error::from_source(ErrorKind::Limit, e).context(file.to_string())),
     };
     let d = shape.len();
     let betti: Vec<u64> = g.betti.clone();
@@ -366,7 +366,7 @@ pub(crate) fn complex(cubes: Cubes<'_>, whole: bool, o: &HomologyOptions, file: 
     check_cubical_options(o, file)?;
     let shape = cubes.shape();
     let limit =
-        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, &e).context(file.to_string());
+        |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, e).context(file.to_string());
     let c = match (whole || !cubes.is_full(), cubes) {
         (true, Cubes::Image(img, level)) => {
             o.progress.stage("the image's cubical set");

@@ -185,7 +185,7 @@ pub fn run(t: &dyn Transport, path: &Path, o: &DistributedOptions) -> Result<Opt
     let level = o.level.map_or(Level::Nonzero, Level::AtMost);
     // every process reads the header (the map costs no data) and makes the same plan
     let opened = guarded(|| {
-        let img = Image::read(path).map_err(|e| Error::from_source(ErrorKind::Parse, &e))?;
+        let img = Image::read(path).map_err(|e| Error::from_source(ErrorKind::Parse, e))?;
         let plan = Plan::new(&img, t.size()).map_err(|e| e.context(file.clone()))?;
         Ok((img, plan))
     });
@@ -213,7 +213,7 @@ pub fn run_in_process(path: &Path, processes: usize, o: &DistributedOptions) -> 
     let start = Instant::now();
     let file = path.display().to_string();
     let level = o.level.map_or(Level::Nonzero, Level::AtMost);
-    let img = Image::read(path).map_err(|e| Error::from_source(ErrorKind::Parse, &e))?;
+    let img = Image::read(path).map_err(|e| Error::from_source(ErrorKind::Parse, e))?;
     let plan = Plan::new(&img, processes.max(1)).map_err(|e| e.context(file.clone()))?;
     let mut messages = Vec::with_capacity(processes);
     let mut figures = Vec::with_capacity(processes);
@@ -321,7 +321,7 @@ impl Plan {
     fn block(&self, img: &Image, level: Level, rank: usize) -> Result<(Vec<u8>, Option<u64>)> {
         let fill = |s: usize, out: &mut [u8]| img.presence(level, s, out);
         let r = self.ranges[rank].clone();
-        let limit = |e: &gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, e);
+        let limit = |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Limit, e);
         match self.route {
             SlabRoute::OnePass => {
                 let pp = (self.shape[0] + 2) as u64 * (self.shape[1] + 2) as u64;
@@ -329,14 +329,14 @@ impl Plan {
                     "the layers of the one-pass cubical homology",
                     pp.checked_mul(BYTES_PER_LAYER_CUBE),
                 )
-                .map_err(|e| Error::from_source(ErrorKind::Limit, &e))?;
+                .map_err(|e| Error::from_source(ErrorKind::Limit, e))?;
                 // a block past the first starts with the last layer of the one before
                 let from = if rank == 0 { 0 } else { r.start - 1 };
-                let b = block_pass(&self.shape, from..r.end, rank > 0, &fill).map_err(|e| limit(&e))?;
+                let b = block_pass(&self.shape, from..r.end, rank > 0, &fill).map_err(limit)?;
                 Ok((b.to_bytes(), None))
             }
             SlabRoute::Complex => {
-                let b = block_complex(&self.shape, r, &fill).map_err(|e| limit(&e))?;
+                let b = block_complex(&self.shape, r, &fill).map_err(limit)?;
                 Ok((b.to_bytes(), Some(b.cell_count() as u64)))
             }
         }
@@ -345,13 +345,13 @@ impl Plan {
 
 /// Process 0: the groups from every process's message, and the figures.
 fn finish(plan: &Plan, messages: &[Vec<u8>], figures: &[Vec<u8>], start: Instant) -> Result<Distributed> {
-    let bad = |e: &gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Compute, e);
+    let bad = |e: gmap_homology::cubical::CubicalError| Error::from_source(ErrorKind::Compute, e);
     let d = plan.shape.len();
     let groups = match plan.route {
         SlabRoute::OnePass => {
             let blocks = messages
                 .iter()
-                .map(|m| BlockSummary::from_bytes(&plan.shape, m).map_err(|e| bad(&e)))
+                .map(|m| BlockSummary::from_bytes(&plan.shape, m).map_err(bad))
                 .collect::<Result<Vec<_>>>()?;
             for (rank, (b, r)) in blocks.iter().zip(&plan.ranges).enumerate() {
                 if b.layers.end != r.end {
@@ -366,11 +366,9 @@ fn finish(plan: &Plan, messages: &[Vec<u8>], figures: &[Vec<u8>], start: Instant
             }
         }
         SlabRoute::Complex => {
-            let blocks = messages
-                .iter()
-                .map(|m| BlockComplex::from_bytes(m).map_err(|e| bad(&e)))
-                .collect::<Result<Vec<_>>>()?;
-            let whole = glue(&plan.shape, &blocks).map_err(|e| bad(&e))?;
+            let blocks =
+                messages.iter().map(|m| BlockComplex::from_bytes(m).map_err(bad)).collect::<Result<Vec<_>>>()?;
+            let whole = glue(&plan.shape, &blocks).map_err(bad)?;
             homology_z(&whole).map_err(Error::from)?
         }
     };

@@ -348,7 +348,7 @@ fn written_only(path: &Path, f: &Format, why: &str) -> Error {
         "lar.json" => ".lar.json (LAR)".to_string(),
         ext => format!("unsupported input format '.{ext}': it"),
     };
-    err!(Unsupported, "{}: {what} {why}", path.display()).with_path(path)
+    err!(Unsupported, "{}: {what} {why}", path.display()).naming_path(path)
 }
 
 /// The refusal of a path whose extension names no format read.
@@ -367,7 +367,7 @@ pub(crate) fn unknown_input(path: &Path) -> Error {
             gmap_core::io::shorten(other.as_bytes(), 40)
         ),
     }
-    .with_path(path)
+    .naming_path(path)
 }
 
 /// The format `output` is written in, or the refusal: an extension no format has, or a
@@ -396,13 +396,8 @@ pub fn parse_text(extension: &str, text: &str) -> Result<Input> {
             crate::input::Source::default(),
         )),
         "json" => {
-            let x = gmap_homology::json::read_json(text).map_err(|e| {
-                let kind = match e {
-                    gmap_homology::json::JsonError::MemoryLimit(_) => crate::ErrorKind::Limit,
-                    _ => crate::ErrorKind::Parse,
-                };
-                Error::from_source(kind, &e)
-            })?;
+            let x = gmap_homology::json::read_json(text)
+                .map_err(|e| Error::from_source(read::json_error_kind(&e), e))?;
             Ok(Input::Arch(crate::Sourced::new(x)))
         }
         other => Err(err!(Unsupported, "a '.{other}' is read from a file only; text is read as .gmap or .json")),

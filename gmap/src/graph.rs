@@ -30,13 +30,13 @@ fn from_chain(chain: &ChainComplex, name: impl Fn(usize, usize) -> String) -> Re
             entries.push((RegionId(first[k] + j as u64), RegionId(first[k - 1] + i as u64), w));
         }
     }
-    let mut x = ArchComplex::try_new(n, regions, entries).map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
+    let mut x = ArchComplex::try_new(n, regions, entries).map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
     for (k, &start) in first.iter().enumerate() {
         for j in 0..chain.count(k) {
             let labels: Labels = [("name", LabelValue::Text(name(k, j)))].into_iter().collect();
             x = x
                 .with_region_labels(RegionId(start + j as u64), labels)
-                .map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
+                .map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
         }
     }
     Ok(x)
@@ -51,7 +51,7 @@ pub(crate) fn simplicial(sc: &SimplicialComplex, max_cells: Option<u64>, file: &
             gmap_homology::simplices::FaceError::TooManyFaces { .. } => ErrorKind::Limit,
             _ => ErrorKind::Precondition,
         };
-        let e = Error::from_source(kind, &e).context(file.to_string());
+        let e = Error::from_source(kind, e).context(file.to_string());
         if kind == ErrorKind::Limit {
             e.flattened("; raise the limit with --max-cells N")
         } else {

@@ -237,9 +237,8 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
         },
         Input::Image(img) => {
             let level = o.level.map_or(gmap_ops::import::Level::Nonzero, gmap_ops::import::Level::AtMost);
-            let set = img
-                .to_cubical_set(level)
-                .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.clone()))?;
+            let set =
+                img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, e).context(file.clone()))?;
             Info::Cubical(cubical_info(&set, o.periodic, &file)?)
         }
     })
@@ -292,7 +291,7 @@ pub fn arch_info(x: &ArchComplex) -> ArchInfo {
 pub fn cubical_info(set: &CubicalSet, periodic: bool, file: &str) -> Result<CubicalInfo> {
     let cells = set.lower_cells_in_box();
     let c = gmap_homology::cubical::cubical_cell_complex_with(set.shape(), set.bits(), &cells, periodic, false)
-        .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(file.to_string()))?;
+        .map_err(|e| Error::from_source(ErrorKind::Limit, e).context(file.to_string()))?;
     Ok(CubicalInfo {
         dimension: set.dim(),
         darts: 0,

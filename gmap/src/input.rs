@@ -336,7 +336,7 @@ impl Sourced<SimplicialComplex> {
 
 /// Adds the option that raises the limit to a refusal for darts.
 pub(crate) fn limit_hint(e: Error) -> Error {
-    if e.is_dart_limit() && !e.to_string().contains("no limit raises it") {
+    if e.is_dart_limit() && !e.is_hard_limit() {
         e.flattened("; raise the limit with --max-darts N")
     } else {
         e

@@ -68,7 +68,7 @@ fn compute(e: gmap_homology::persistence::PersistenceError) -> Error {
         E::BadInput(_) | E::BadOption(_) => ErrorKind::Usage,
         _ => ErrorKind::Compute,
     };
-    Error::from_source(kind, &e)
+    Error::from_source(kind, e)
 }
 
 /// Refuses, before any work, an image whose diagram would not fit the memory limit
@@ -251,12 +251,7 @@ pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persis
 
 /// An error that names `path` in its text (once) and carries it.
 fn naming(e: Error, path: &Path) -> Error {
-    let shown = path.display().to_string();
-    if e.to_string().contains(&shown) {
-        e.with_path(path)
-    } else {
-        e.context(shown).with_path(path)
-    }
+    e.about_file(path)
 }
 
 fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
@@ -304,7 +299,7 @@ fn image_file(img: &Image, path: &Path, opts: &PersistenceOptions) -> Result<Per
 /// A `.facets` file's complex and its values per facet, if it has them.
 fn read_valued(path: &Path) -> Result<(SimplicialComplex, Option<Vec<f64>>)> {
     gmap_ops::import::simplicial::read_valued_facets(path)
-        .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))
+        .map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))
 }
 
 /// The diagram of a simplicial complex filtered by `values`, sublevel or superlevel as
@@ -363,7 +358,7 @@ impl VertexValues {
     /// Reads a vertex-values file (docs/FORMATS.md: a label and a value per line).
     pub fn read(path: &Path) -> Result<Self> {
         let pairs = gmap_ops::import::read_vertex_values(path)
-            .map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+            .map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))?;
         Self::from_pairs(pairs).map_err(|e| e.with_path(path))
     }
 
@@ -459,9 +454,9 @@ pub fn png_bytes(r: &plot::Raster) -> Result<Vec<u8>> {
     let mut enc = png::Encoder::new(&mut bytes, r.width, r.height);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
-    let mut w = enc.write_header().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
-    w.write_image_data(&r.rgb).map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
-    w.finish().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    let mut w = enc.write_header().map_err(|e| Error::from_source(ErrorKind::Write, e))?;
+    w.write_image_data(&r.rgb).map_err(|e| Error::from_source(ErrorKind::Write, e))?;
+    w.finish().map_err(|e| Error::from_source(ErrorKind::Write, e))?;
     Ok(bytes)
 }
 
@@ -470,7 +465,7 @@ fn write_picture(out: &Path, svg: impl FnOnce() -> String, raster: impl FnOnce()
         PictureFormat::Svg => svg().into_bytes(),
         PictureFormat::Png => png_bytes(&raster()).map_err(|e| e.with_path(out))?,
     };
-    gmap_core::io::write_atomic(out, &bytes).map_err(|e| Error::from_source(ErrorKind::Write, &e).with_path(out))
+    gmap_core::io::write_atomic(out, &bytes).map_err(|e| Error::from_source(ErrorKind::Write, e).with_path(out))
 }
 
 /// Writes the diagram as a picture to `out`, SVG or PNG by its extension (other

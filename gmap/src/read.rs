@@ -36,7 +36,7 @@ pub(crate) fn off(path: &Path, opts: &OpenOptions) -> Result<Input> {
 /// `.vtk`, `.vtu`, `.msh`: the mesh's cells sewn face to face, its data as labels.
 pub(crate) fn mesh(path: &Path, opts: &OpenOptions) -> Result<Input> {
     let g = import::read_mesh(path, opts.max_darts)
-        .ok_or_else(|| err!(Unsupported, "{}: not a mesh file", path.display()).with_path(path))??;
+        .ok_or_else(|| err!(Unsupported, "{}: not a mesh file", path.display()).naming_path(path))??;
     Ok(Input::labelled_map_from(g, Source::file(path, opts)))
 }
 
@@ -58,14 +58,17 @@ pub(crate) fn lex(path: &Path, opts: &OpenOptions) -> Result<Input> {
 
 /// `.json`: an architectural complex or incidence graph.
 pub(crate) fn json(path: &Path, opts: &OpenOptions) -> Result<Input> {
-    let x = gmap_homology::json::read_json_file(path).map_err(|e| {
-        let kind = match e.error {
-            gmap_homology::json::JsonError::MemoryLimit(_) => ErrorKind::Limit,
-            _ => ErrorKind::Parse,
-        };
-        Error::from_source(kind, &e).with_path(path)
-    })?;
+    let x = gmap_homology::json::read_json_file(path)
+        .map_err(|e| Error::from_source(json_error_kind(&e.error), e).naming_path(path))?;
     Ok(Input::Arch(Source::file(path, opts).holding(x)))
+}
+
+/// The kind of a `.json` reader's refusal: over the memory limit, or not the format.
+pub(crate) fn json_error_kind(e: &gmap_homology::json::JsonError) -> ErrorKind {
+    match e {
+        gmap_homology::json::JsonError::MemoryLimit(_) => ErrorKind::Limit,
+        _ => ErrorKind::Parse,
+    }
 }
 
 /// `.cub`, `.cel`: CHomP's cubes and cells.
@@ -86,6 +89,6 @@ pub(crate) fn image(path: &Path, opts: &OpenOptions) -> Result<Input> {
 /// `.pgm`, `.png`: the grey values of a picture.
 pub(crate) fn raster(path: &Path, opts: &OpenOptions) -> Result<Input> {
     let img =
-        import::raster::read_raster(path).map_err(|e| Error::from_source(ErrorKind::Parse, &e).with_path(path))?;
+        import::raster::read_raster(path).map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))?;
     Ok(Input::Image(Source::file(path, opts).holding(img)))
 }

@@ -107,7 +107,7 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
             let text =
                 std::fs::read_to_string(path).map_err(|e| err!(Parse, "{file}: cannot read: {e}").with_path(path))?;
             let mesh = gmap_ops::import::PolygonMesh::parse(&text)
-                .map_err(|e| Error::from_source(ErrorKind::Parse, &e).context(file.clone()).with_path(path))?;
+                .map_err(|e| Error::from_source(ErrorKind::Parse, e).context(file.clone()).with_path(path))?;
             let polys = mesh.polygons.into_iter().map(|p| vec![p]).collect();
             (Faces::try_new(mesh.points, polys).map_err(|e| rooms_error(&e, &file, None))?, None)
         }
@@ -127,7 +127,7 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
     };
     let names = source.as_ref().map(|(x, r)| (&**x, r.as_slice()));
     let cells = faces.cells().map_err(|e| rooms_error(&e, &file, names))?;
-    let mut complex = cells.to_arch(&faces).map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
+    let mut complex = cells.to_arch(&faces).map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
     let counts = [faces.points().len(), faces.edges().len(), faces.len()];
     // the faces of a .json keep their ids and labels
     if let Some((x, regions)) = &source {
@@ -137,7 +137,7 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
             complex = complex
                 .with_region_key(id, key)
                 .and_then(|c| c.with_region_labels(id, x.region_labels(r).clone()))
-                .map_err(|e| Error::from_source(ErrorKind::Compute, &e))?;
+                .map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
         }
     }
     let rooms = describe(&cells, &complex, counts);

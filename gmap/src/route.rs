@@ -89,6 +89,32 @@ impl Route {
     }
 }
 
+/// Every route that applies to an input of this kind, in the order `gmap bench` runs them:
+/// a simplicial complex's direct route then its G-map's two; a map's cellular and
+/// simplicial routes; cubes' one pass (cubes only, dimension ≤ 3, a box that is not
+/// periodic), then their cubical complex slab by slab and whole (a set with cells of its
+/// own: whole only); an architectural complex's one route.
+pub fn candidates(input: &Input, periodic: bool) -> Vec<Route> {
+    let cubes = |c: Cubes<'_>| {
+        let mut out = Vec::new();
+        if c.is_full() {
+            if c.shape().len() <= 3 && !periodic {
+                out.push(Route::OnePass);
+            }
+            out.push(Route::Cubical { whole: false });
+        }
+        out.push(Route::Cubical { whole: true });
+        out
+    };
+    match input {
+        Input::Simplicial(_) => vec![Route::Direct, Route::Gmap(Method::Cellular), Route::Gmap(Method::Simplicial)],
+        Input::Map(_) => vec![Route::Cellular, Route::Simplicial],
+        Input::Cubical(set) => cubes(Cubes::Set(set)),
+        Input::Image(img) => cubes(Cubes::Image(img, Level::Nonzero)),
+        Input::Arch(_) => vec![Route::Arch],
+    }
+}
+
 /// The cubes of an image: the values `≤ level` (default: the non-zero values).
 fn level(o: &HomologyOptions) -> Level {
     o.level.map_or(Level::Nonzero, Level::AtMost)
@@ -312,7 +338,7 @@ fn reduce(named: &Named<'_>, o: &HomologyOptions) -> Result<Homology> {
         None => homology_z(c)?,
     };
     match &named.relative {
-        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, &e)),
+        Some(r) => r.absolute(h).map_err(|e| Error::from_source(ErrorKind::Limit, e)),
         None => Ok(h),
     }
 }

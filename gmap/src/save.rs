@@ -90,7 +90,7 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
 /// complex's face poset, an architectural complex itself.
 fn graph_of<'a>(input: &'a Input, output: &Path, o: &SaveOptions) -> Result<std::borrow::Cow<'a, ArchComplex>> {
     use std::borrow::Cow;
-    let cannot = |e: &(dyn std::error::Error + 'static)| {
+    let cannot = |e: gmap_homology::arch::FromMapError| {
         Error::from_source(ErrorKind::Precondition, e)
             .context(format!("{}: cannot write the incidence graph", output.display()))
     };
@@ -98,9 +98,9 @@ fn graph_of<'a>(input: &'a Input, output: &Path, o: &SaveOptions) -> Result<std:
         Input::Map(m) => match m.labelled() {
             Some(g) => {
                 let (d, labels, _) = gmap_core::to_dense_labels(g?);
-                Cow::Owned(ArchComplex::from_map_with_labels(&d, &labels).map_err(|e| cannot(&e))?)
+                Cow::Owned(ArchComplex::from_map_with_labels(&d, &labels).map_err(cannot)?)
             }
-            None => Cow::Owned(ArchComplex::from_map(m.map()).map_err(|e| cannot(&e))?),
+            None => Cow::Owned(ArchComplex::from_map(m.map()).map_err(cannot)?),
         },
         Input::Simplicial(sc) => {
             Cow::Owned(crate::graph::simplicial(sc, o.max_cells, &sc.path().display().to_string())?)
@@ -151,7 +151,7 @@ fn save_through_map(
             None => {
                 let m = set
                     .gmap_of_union(false)
-                    .map_err(|e| Error::from_source(ErrorKind::Limit, &e).context(set.path().display().to_string()))?;
+                    .map_err(|e| Error::from_source(ErrorKind::Limit, e).context(set.path().display().to_string()))?;
                 map(&m, output)
             }
         },
@@ -303,7 +303,7 @@ pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
         Writer::Map { map, .. } => map(m, output),
         Writer::Graph(text) => {
             let x = ArchComplex::from_map(m).map_err(|e| {
-                Error::from_source(ErrorKind::Precondition, &e)
+                Error::from_source(ErrorKind::Precondition, e)
                     .context(format!("{}: cannot write the incidence graph", output.display()))
             })?;
             write::text(output, &text(&x))

@@ -44,7 +44,7 @@ fn named(input: &Input) -> Result<Named> {
         }
         Input::Map(m) => {
             let model = TmModel::from_map(m.map())
-                .map_err(|e| Error::from_source(ErrorKind::Precondition, &e).context(format!("{file}: TM model")))?;
+                .map_err(|e| Error::from_source(ErrorKind::Precondition, e).context(format!("{file}: TM model")))?;
             let names = (0..model.len()).map(|c| format!("{}-cell {}", model.cell_dim(c), model.id(c))).collect();
             let keys = (0..model.len()).map(|c| vec![model.id(c).to_string()]).collect();
             Ok(Named { model, names, keys })

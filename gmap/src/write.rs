@@ -25,13 +25,13 @@ pub(crate) type GraphFn = fn(&ArchComplex) -> String;
 pub(crate) type ImageFn = fn(&Image, &Path) -> Result<()>;
 
 /// The refusal of a writer that failed, naming the output.
-pub(crate) fn cannot_write(output: &Path, e: &(dyn std::error::Error + 'static)) -> Error {
+pub(crate) fn cannot_write<E: std::error::Error + Send + Sync + 'static>(output: &Path, e: E) -> Error {
     Error::from_source(ErrorKind::Write, e).context(format!("{}: cannot write", output.display()))
 }
 
 /// Writes `text` to `path` atomically.
 pub(crate) fn text(path: &Path, text: &str) -> Result<()> {
-    gmap_core::io::write_atomic(path, text.as_bytes()).map_err(|e| cannot_write(path, &e))
+    gmap_core::io::write_atomic(path, text.as_bytes()).map_err(|e| cannot_write(path, e))
 }
 
 /// `.gmap`.
@@ -58,12 +58,12 @@ pub(crate) fn off(m: &DenseMap, output: &Path) -> Result<()> {
             output.display()
         ));
     }
-    gmap_ops::export::write_off(m, output).map_err(|e| cannot_write(output, &e))
+    gmap_ops::export::write_off(m, output).map_err(|e| cannot_write(output, e))
 }
 
 /// `.off` of the boundary surface of a 3-map.
 pub(crate) fn boundary_off(m: &DenseMap, output: &Path) -> Result<()> {
-    gmap_ops::export::write_boundary_off(m, output).map_err(|e| cannot_write(output, &e))
+    gmap_ops::export::write_boundary_off(m, output).map_err(|e| cannot_write(output, e))
 }
 
 /// `.facets`: the barycentric subdivision, one simplex per dart.
@@ -110,23 +110,23 @@ pub(crate) fn cub(set: &CubicalSet, output: &Path) -> Result<()> {
 
 /// `.vtk` of a map with points.
 pub(crate) fn vtk(m: &DenseMap, output: &Path) -> Result<()> {
-    gmap_ops::export::write_vtk(m, output).map_err(|e| cannot_write(output, &e))
+    gmap_ops::export::write_vtk(m, output).map_err(|e| cannot_write(output, e))
 }
 
 /// `.vtk` of a map with points, the labels of its cells as cell data.
 pub(crate) fn labelled_vtk(g: &LabelledGMap, output: &Path) -> Result<()> {
     let (m, labels, _) = gmap_core::to_dense_labels(g);
-    gmap_ops::export::write_vtk_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, &e))
+    gmap_ops::export::write_vtk_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, e))
 }
 
 /// `.vtk` of a full cubical set: its cubes as voxels.
 pub(crate) fn voxels_vtk(set: &CubicalSet, output: &Path) -> Result<()> {
-    gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, &e))
+    gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, e))
 }
 
 /// `.lar.json`: LAR's characteristic matrices of a map.
 pub(crate) fn lar(m: &DenseMap, output: &Path) -> Result<()> {
-    let json = Lar::from_map(m).to_json().map_err(|e| Error::from_source(ErrorKind::Write, &e))?;
+    let json = Lar::from_map(m).to_json().map_err(|e| Error::from_source(ErrorKind::Write, e))?;
     text(output, &json)
 }
 

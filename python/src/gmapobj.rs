@@ -25,7 +25,7 @@ use crate::errors::{Failure, Kind, Res};
 /// `0..len(m)`, involutions `alpha_0..alpha_dim`, a point per vertex, labels per cell.
 #[pyclass(name = "GMap", module = "gmap")]
 pub struct PyGMap {
-    pub(crate) g: LabelledGMap,
+    g: LabelledGMap,
     ids: Vec<DartId>,
     /// the dart number of each storage slot (`u32::MAX` for an empty slot)
     slot_index: Vec<u32>,

@@ -1,6 +1,6 @@
 //! Euler–Poincaré operators of architectural complexes (AC §4–7).
 //!
-//! The vector itself, [`EpVector`] with its bases and expansions, is `gmap_core::ep`'s,
+//! The vector itself, [`EpVector`] with its bases and expansions, is `gmap_core::ep_vector`'s,
 //! re-exported here; this module adds what the architectural complexes need of it:
 //!
 //! * the polynomial view of AC §6, which maps `X_i` to `X^i` and `Y_j` to `X^{n+1+j}`
@@ -24,9 +24,9 @@
 
 use std::fmt;
 
-pub use gmap_core::ep::{AbExpansion, Coordinates, EpError, EpVector, KlExpansion};
+pub use gmap_core::ep_vector::{AbExpansion, Coordinates, EpError, EpVector, KlExpansion};
 
-use gmap_core::ep::checked::{add, mul, sign, sub};
+use gmap_core::ep_vector::checked::{add, mul, sign, sub};
 
 /// The polynomial view of a vector (AC (9)): `X_i ↦ X^i`, `Y_j ↦ X^{n+1+j}`.
 pub trait EpPolynomial: Sized {

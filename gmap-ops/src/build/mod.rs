@@ -14,7 +14,8 @@
 //! The classic ones have complete boundaries (BO Def. 6) where they have no boundary,
 //! cells orientable as compacted cells (C1) and cells that are homology balls (C2), so the
 //! cellular homology applies to them. Each builder states its precondition and returns a
-//! [`BuildError`] when it fails; none panics.
+//! [`BuildError`] when it fails; none panics. [`placed`] builds the grid, the cube, the
+//! simplex and the torus with the points of their vertices.
 //!
 //! ```
 //! use gmap_ops::build;
@@ -33,6 +34,7 @@ use crate::perm::{factorial, PermTable};
 
 mod error;
 mod incremental;
+pub mod placed;
 mod schema;
 
 use error::checked_darts;

@@ -3,7 +3,8 @@
 //! volume (a prism), an edge a face (a quadrangle), a vertex an edge.
 //!
 //! The new cell is the product `c × [0, 1]` of the i-cell `c` of `d` with an edge, made of
-//! new darts ([`super::product`]) and `alpha_{i+1}`-sewn to `c` along its bottom copy; the
+//! new darts (the product block the revolution shares, laid out as
+//! [`crate::build::extrude`]) and `alpha_{i+1}`-sewn to `c` along its bottom copy; the
 //! top copy is `c` moved by the vector. Every j-cell of `c` gives a new j-cell (its moved
 //! copy) and a new (j + 1)-cell (its sweep), so the Euler characteristic does not change
 //! (Δχ = 0, asserted in the tests): the map gains a cell collapsible onto `c`, and its

@@ -4,7 +4,7 @@
 //! | family | operations | Δχ |
 //! |---|---|---|
 //! | [`extrude`] | a face into a volume, an edge into a face, a vertex into an edge, along a vector ([`try_extrude_cell`]) or a path of edges ([`try_extrude_cell_along_path`]) | 0 |
-//! | [`revolve`] | a profile about an axis in k steps, closing the loop ([`try_revolve`]) | `-χ(profile)` |
+//! | [`revolve`](mod@revolve) | a profile about an axis in k steps, closing the loop ([`try_revolve`]) | `-χ(profile)` |
 //! | [`triangulate`] | a face by a fan or around its barycentre, a convex volume into tetrahedra | 0 |
 //! | [`volumes`] | two volumes merged across a face, a volume split by a loop of edges | 0 |
 //! | [`chamfer`] | a vertex or an edge of a surface or of a volume's boundary replaced by a face | 0 |

@@ -5,7 +5,8 @@
 //! The profile is a whole component of dimension p < n: the orbit of `d` under
 //! `alpha_0..alpha_p`, its darts free for `alpha_{p+1}..alpha_n` (a loop of edges in a
 //! 2-map, a face or a surface in a 3-map). The result is the product `P × S¹` cut in k
-//! slabs `P × [j, j + 1]` ([`super::product`]): the profile's own darts are the bottom of
+//! slabs `P × [j, j + 1]` (the product block the extrusions share, laid out as
+//! [`crate::build::extrude`]): the profile's own darts are the bottom of
 //! the first slab, the top of each slab is `alpha_{p+1}`-sewn to the bottom of the next, and
 //! the top of the last to the profile. The profile's `alpha_p` links move to the sides of
 //! the first slab, so the profile becomes one of the k walls between slabs.

@@ -1,10 +1,10 @@
 //! What an Euler operator did: its name and its Euler–Poincaré vector.
 //!
-//! The vector itself is [`gmap_core::ep::EpVector`] (AC §4–5), the one type the whole
+//! The vector itself is [`gmap_core::ep_vector::EpVector`] (AC §4–5), the one type the whole
 //! workspace uses for changes of cell counts and Betti numbers; re-exported here so that
 //! `gmap_ops::euler::EpVector` names it too.
 
-pub use gmap_core::ep::{AbExpansion, EpVector};
+pub use gmap_core::ep_vector::{AbExpansion, EpVector};
 
 /// What an Euler operator did: its classical name (`"mve"`, `"kef"`, …), its
 /// Euler–Poincaré vector and the vector's name in the basis of AC Prop. 5.2.

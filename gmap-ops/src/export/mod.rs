@@ -397,6 +397,8 @@ mod tests {
         let text = off_string(&sq).unwrap();
         assert!(text.starts_with("OFF\n4 1 0\n1 0 0\n"), "{text}");
         assert!(text.ends_with("4 0 1 2 3\n"), "{text}");
+        let square = crate::build::placed::grid_with_points(&[1, 1], &[false, false]).unwrap();
+        assert_eq!(off_string(&square).unwrap().lines().nth(1), Some("4 1 0"));
         let torus = build::schema("a b A B").unwrap();
         assert!(matches!(off_string(&torus), Err(ExportError::NoPoint { dart: 0 })));
         assert!(matches!(off_string(&build::cube(3).unwrap()), Err(ExportError::Dimension { .. })));
@@ -423,7 +425,7 @@ mod tests {
     #[test]
     fn the_two_skeleton_lists_every_face_once() {
         // two unit cubes sharing a face
-        let (g, _) = GMap::from_dense(&crate::geometry::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap());
+        let (g, _) = GMap::from_dense(&crate::build::placed::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap());
         assert_eq!(g.characteristics().cells, vec![12, 20, 11, 2]);
         let text = gmap_two_skeleton_off_string(&g).unwrap();
         let mut lines = text.lines();

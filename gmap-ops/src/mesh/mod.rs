@@ -35,6 +35,10 @@
 //! label. The readers give integers as [`LabelValue::Int`], reals as [`LabelValue::Real`],
 //! texts as [`LabelValue::Text`], an array of k > 1 components as the names `name.0` …
 //! `name.{k-1}`.
+//!
+//! [`LabelValue::Int`]: gmap_core::LabelValue::Int
+//! [`LabelValue::Real`]: gmap_core::LabelValue::Real
+//! [`LabelValue::Text`]: gmap_core::LabelValue::Text
 
 pub(crate) mod cells;
 pub(crate) mod error;

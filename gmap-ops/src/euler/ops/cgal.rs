@@ -23,7 +23,7 @@
 //! | `close<i>()` | — | [`try_close`] | [`can_close`] |
 //! | `make_combinatorial_hexahedron()` | [`GMap::make_combinatorial_hexahedron`](gmap_core::GMap::make_combinatorial_hexahedron) | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::cube`](crate::build::cube)`(3)` | — |
 //! | `make_combinatorial_tetrahedron()` | [`GMap::make_combinatorial_tetrahedron`](gmap_core::GMap::make_combinatorial_tetrahedron) | [`GMap::try_append`](gmap_core::GMap::try_append) of [`build::simplex`](crate::build::simplex)`(3)` | — |
-//! | LCC `make_hexahedron(p0, …, p7)`, `make_tetrahedron`, `make_triangle`, `make_quadrangle`, `make_segment` | [`GMap::make_hexahedron`](gmap_core::GMap::make_hexahedron) and the other constructors of [`gmap_core::geometry`] | — | — |
+//! | LCC `make_hexahedron(p0, …, p7)`, `make_tetrahedron`, `make_triangle`, `make_quadrangle`, `make_segment` | [`GMap::make_hexahedron`](gmap_core::GMap::make_hexahedron) and the other constructors of [`gmap_core::points`] | — | — |
 //!
 //! `insert_cell_2_in_cell_3` takes the path as [`try_split_cell`] takes a cut for `i = 3`:
 //! the darts are one per edge of the path, all in faces on the same side of the new face;

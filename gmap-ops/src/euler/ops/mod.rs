@@ -14,10 +14,12 @@
 //! In debug builds every operator checks BO Def. 1 on the result (`debug_assert`).
 //!
 //! [`EulerOp`]: crate::euler::EulerOp
+//! [`GMap`]: gmap_core::GMap
+//! [`GMap::reconcile_attributes`]: gmap_core::GMap::reconcile_attributes
 //!
 //! # Attributes and points
 //!
-//! Every operator works on a [`GMap<A>`](GMap) with any attributes `A` (a plain `GMap` needs
+//! Every operator works on a [`GMap<A>`](gmap_core::GMap) with any attributes `A` (a plain `GMap` needs
 //! no annotation) and ends with the map's one repair routine,
 //! [`GMap::reconcile_attributes`], given the darts it re-linked: the merge hooks run
 //! exactly when cells carrying attributes become one (a removal, a contraction, an edge

@@ -195,7 +195,7 @@ impl Scene {
     ///
     /// ```
     /// use gmap_ops::export::html::{html_string, HtmlOptions, Scene};
-    /// let cube = gmap_ops::geometry::cube_with_points(3).unwrap();
+    /// let cube = gmap_ops::build::placed::cube_with_points(3).unwrap();
     /// let scene = Scene::from_map(&cube, None, "a cube");
     /// let page = html_string(&scene, &HtmlOptions::default()).unwrap();
     /// assert!(page.starts_with("<!DOCTYPE html>"));
@@ -707,7 +707,7 @@ mod tests {
         assert!(s.placement.contains("pivot MDS"));
         assert!(s.map.as_ref().unwrap().edge_points);
         assert_eq!(s.counts, vec![1, 2, 1]);
-        let cube = crate::geometry::cube_with_points(3).unwrap();
+        let cube = crate::build::placed::cube_with_points(3).unwrap();
         let s = Scene::from_map(&cube, None, "cube");
         assert_eq!(s.points.len(), 8);
         assert_eq!(s.placement, "the map's points");
@@ -718,7 +718,7 @@ mod tests {
 
     #[test]
     fn generators_and_labels_are_checked() {
-        let cube = crate::geometry::cube_with_points(2).unwrap();
+        let cube = crate::build::placed::cube_with_points(2).unwrap();
         let mut s = Scene::from_map(&cube, None, "square");
         assert!(s.add_generator(ViewGenerator { name: "g".into(), dim: 1, cells: vec![0, 3] }).is_ok());
         assert!(matches!(
@@ -763,7 +763,7 @@ mod tests {
 
     #[test]
     fn the_involutions_round_trip_through_their_varints() {
-        let grid = crate::geometry::grid_with_points(&[3, 2, 2], &[false; 3]).unwrap();
+        let grid = crate::build::placed::grid_with_points(&[3, 2, 2], &[false; 3]).unwrap();
         let text = b64_alpha(grid.flat(), 4);
         assert_eq!(decode_alpha(&text, 4), grid.flat());
         // far links take more bytes, never more than five

@@ -22,7 +22,7 @@
 //! architectural complexes, in `gmap_homology::ep`.
 //!
 //! ```
-//! use gmap_core::ep::EpVector;
+//! use gmap_core::ep_vector::EpVector;
 //! // make an edge and a loop in a surface complex (n = 2)
 //! let meml = EpVector::b(2, 1);
 //! assert!(meml.is_operator());

@@ -4,8 +4,8 @@
 //! A representation provides its dimension, its darts, `alpha_i` and a dense snapshot. The
 //! whole-map questions (validity, cells of a dimension, darts of a cell, counts, components,
 //! orientation, complete boundaries, the Euler characteristic) are not in the trait: they
-//! are inherent methods with the same names and answers on [`DenseMap`] and on [`GMap`],
-//! the latter running the dense kernel on one snapshot ([`GMap::to_dense_map`]).
+//! are inherent methods with the same names and answers on [`DenseMap`] and on [`GMap`](crate::GMap),
+//! the latter running the dense kernel on one snapshot ([`GMap::to_dense_map`](crate::GMap::to_dense_map)).
 //!
 //! ```
 //! use gmap_core::{AlphaSet, GMap, MapView};
@@ -33,8 +33,6 @@
 use std::hash::Hash;
 
 use crate::dense::DenseMap;
-#[cfg(doc)]
-use crate::edit::GMap;
 use crate::ids::Dart;
 
 /// A G-map seen through its involutions. See the [module docs](self).
@@ -79,42 +77,5 @@ impl MapView for DenseMap {
 
     fn with_dense<R>(&self, f: impl FnOnce(&DenseMap) -> R) -> R {
         f(self)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::edit::{DartId, GMap};
-
-    /// The same questions asked of both representations give the same answers.
-    fn agree(m: &DenseMap) {
-        let (g, ids) = GMap::from_dense(m);
-        assert_eq!(g.cell_counts(), m.cell_counts());
-        assert_eq!(g.euler_characteristic(), m.euler_characteristic());
-        assert_eq!(g.component_count(), m.component_count());
-        assert_eq!(g.components(), m.components());
-        assert_eq!(g.is_orientable(), m.is_orientable());
-        assert_eq!(g.orientation(), m.orientation());
-        assert_eq!(g.validate().map_err(|e| e.to_string()), m.validate().map_err(|e| e.to_string()));
-        assert_eq!(g.check_complete_boundaries(), m.check_complete_boundaries());
-        assert_eq!(g.dart_list(), ids);
-        for d in m.darts() {
-            for i in 0..=m.dim() {
-                assert_eq!(g.cells(i), m.cells(i));
-                let a: Vec<DartId> = g.cell_darts(ids[d.index()], i);
-                let b: Vec<Dart> = m.cell_darts(d, i);
-                assert_eq!(a.len(), b.len());
-                assert_eq!(g.is_free(ids[d.index()], i), m.is_free(d, i));
-            }
-        }
-    }
-
-    #[test]
-    fn editable_and_dense_agree_on_the_examples() {
-        use crate::examples::*;
-        for m in [fig1_curve(), fig1_surface(), cylinder(), klein_bottle(), torus()] {
-            agree(&m);
-        }
     }
 }

@@ -68,7 +68,7 @@ impl IntoPoint for [f64; 2] {
     }
 }
 
-/// Why a constructor of [`crate::geometry`] refused: nothing was added to the map.
+/// Why a constructor of [`crate::points`] refused: nothing was added to the map.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 #[non_exhaustive]
 pub enum MakeError {
