@@ -396,8 +396,8 @@ pub fn parse_text(extension: &str, text: &str) -> Result<Input> {
             crate::input::Source::default(),
         )),
         "json" => {
-            let x = gmap_homology::json::read_json(text)
-                .map_err(|e| Error::from_source(read::json_error_kind(&e), e))?;
+            let x =
+                gmap_homology::json::read_json(text).map_err(|e| Error::from_source(read::json_error_kind(&e), e))?;
             Ok(Input::Arch(crate::Sourced::new(x)))
         }
         other => Err(err!(Unsupported, "a '.{other}' is read from a file only; text is read as .gmap or .json")),

@@ -32,8 +32,7 @@ fn a_c_ordered_array_becomes_a_set_in_its_own_axes() {
     };
     let mut got: Vec<Vec<i64>> = s.cubes().collect();
     got.sort();
-    let mut want: Vec<Vec<i64>> =
-        (0..24).filter(|k| k % 5 == 0).map(|k| vec![k / 12, (k / 4) % 3, k % 4]).collect();
+    let mut want: Vec<Vec<i64>> = (0..24).filter(|k| k % 5 == 0).map(|k| vec![k / 12, (k / 4) % 3, k % 4]).collect();
     want.sort();
     assert_eq!(got, want);
     assert!(CubesRef::new(&c, &[2, 3], &[3, 1]).unwrap().to_input(&[1]).is_err());
