@@ -127,6 +127,14 @@ impl Error {
                 .source_as::<gmap_core::io::ReadError>()
                 .is_some_and(|e| matches!(e.kind, gmap_core::io::ReadErrorKind::Io(_)))
             || self.source_as::<gmap_core::io::WriteError>().is_some()
+            // the importers' and the .json reader's errors hold the I/O error without
+            // making it their source (its message is part of theirs)
+            || self
+                .source_as::<gmap_ops::import::FileError>()
+                .is_some_and(|e| matches!(e.error, gmap_ops::import::ImportError::Io(_)))
+            || self
+                .source_as::<gmap_homology::json::JsonFileError>()
+                .is_some_and(|e| matches!(e.error, gmap_homology::json::JsonError::Io(_)))
     }
 
     /// This error with the item it is about.
@@ -383,6 +391,14 @@ mod tests {
         assert!(!e.is_io());
         let missing = crate::open(dir.path().join("missing.gmap")).unwrap_err();
         assert!(missing.is_io(), "{missing:?}");
+        // the importers' (.facets, .npy, .pgm) and the .json reader's missing files too
+        for name in ["missing.facets", "missing.npy", "missing.pgm", "missing.json", "missing.off"] {
+            let e = crate::open(dir.path().join(name)).unwrap_err();
+            assert!(e.is_io(), "{name}: {e:?}");
+        }
+        let bad = dir.path().join("bad.facets");
+        std::fs::write(&bad, "1 2 x\n").unwrap();
+        assert!(!crate::open(&bad).unwrap_err().is_io());
     }
 
     #[test]

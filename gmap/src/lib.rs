@@ -99,7 +99,7 @@ mod write;
 pub use bench::{routes, RouteRun, Times};
 pub use chains::{check_simplicial_size, face_complex_within, simplify_if_safe};
 pub use cubes::CubesRef;
-pub use error::{Error, ErrorKind, Result};
+pub use error::{Error, ErrorKind, Item, Result};
 pub use formats::{Format, FORMATS};
 pub use info::{info, Info, InfoOptions};
 pub use input::{Input, Kind, MapInput, OpenOptions, Sourced};
