@@ -2,9 +2,11 @@
 //!
 //! Every failure reaches Python as a subclass of `gmap.GmapError` carrying the message the
 //! command line prints after `error: ` and, as attributes, where it lies: `path` (and its
-//! older name `file`), `line`, and `item`, the offending dart (numbered as the Python
-//! `GMap` numbers its darts), facet, cell, region or label, when the error names one. The
-//! subclass is chosen by the kind of the error, never by its text.
+//! older name `file`), `line`, and `item`, what the error is about when it names something
+//! (`item_kind` says what: a dart numbered as the Python `GMap` numbers its darts, a cell
+//! `(dim, dart)`, a simplex by its vertex labels, a region by its id, a facet of a list by
+//! its index), all taken from the facade's typed `gmap::Error` (`kind`, `path`, `line`,
+//! `item`, `is_io`). The subclass is chosen by the kind of the error, never by its text.
 
 use std::path::Path;
 
@@ -54,13 +56,55 @@ pub enum Kind {
     Io,
 }
 
-/// What an error names, as the exception's `item` attribute gives it to Python.
-#[derive(Clone, Debug, PartialEq)]
+/// What an error is about, as the exception's `item` (and `item_kind`) give it to Python.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Item {
-    /// a dart, in the Python GMap's numbering; a facet or cell by its index
-    Number(u64),
-    /// a region, a label or a cell by its name
-    Text(String),
+    /// a dart, in the Python GMap's numbering (the file's for a map read from one): an int
+    Dart(u64),
+    /// the `dim`-cell of a dart (its smallest, as `GMap.cells` gives it): `(dim, dart)`
+    Cell { dim: usize, dart: u64 },
+    /// a simplex by its vertex labels: a tuple of ints
+    Simplex(Vec<u64>),
+    /// a region of an architectural complex by its id: a str
+    Region(String),
+    /// a facet of facets given from Python, by its index: an int
+    Facet(usize),
+}
+
+impl Item {
+    /// The facade's item in the package's terms (`None` for a kind of item this build does
+    /// not know).
+    fn of(item: &gmap::Item) -> Option<Item> {
+        Some(match item {
+            gmap::Item::Dart(d) => Item::Dart(*d),
+            gmap::Item::Cell { dim, dart } => Item::Cell { dim: *dim, dart: *dart },
+            gmap::Item::Simplex(v) => Item::Simplex(v.clone()),
+            gmap::Item::Region(r) => Item::Region(r.clone()),
+            _ => return None,
+        })
+    }
+
+    /// `item_kind`: what the item is.
+    fn kind(&self) -> &'static str {
+        match self {
+            Item::Dart(_) => "dart",
+            Item::Cell { .. } => "cell",
+            Item::Simplex(_) => "simplex",
+            Item::Region(_) => "region",
+            Item::Facet(_) => "facet",
+        }
+    }
+
+    /// `item`: the Python value.
+    fn to_py(&self, py: Python<'_>) -> PyResult<PyObject> {
+        Ok(match self {
+            Item::Dart(d) => d.into_pyobject(py)?.into_any().unbind(),
+            Item::Cell { dim, dart } => (*dim, *dart).into_pyobject(py)?.into_any().unbind(),
+            Item::Simplex(v) => pyo3::types::PyTuple::new(py, v)?.into_any().unbind(),
+            Item::Region(r) => r.into_pyobject(py)?.into_any().unbind(),
+            Item::Facet(f) => f.into_pyobject(py)?.into_any().unbind(),
+        })
+    }
 }
 
 /// A failure on its way to Python: the kind, the command line's message, and where it lies
@@ -93,20 +137,23 @@ impl Failure {
 
     /// This failure naming dart `k` (the Python GMap's numbering).
     pub fn with_dart(mut self, k: usize) -> Self {
-        self.item = Some(Item::Number(k as u64));
+        self.item = Some(Item::Dart(k as u64));
         self
     }
 
-    /// This failure naming the facet, array row or cell of index `k`.
-    pub fn with_item_index(mut self, k: usize) -> Self {
-        self.item = Some(Item::Number(k as u64));
+    /// This failure naming the facet of index `k` of facets given from Python.
+    pub fn with_facet(mut self, k: usize) -> Self {
+        self.item = Some(Item::Facet(k));
         self
     }
 
     /// A reader's refusal of what was made in memory (facets, a cubical set): sorted into
-    /// kinds by the facade, as if read from a file without a name.
+    /// kinds, with its line and item, by the facade (as if read from a file without a
+    /// name), its message the reader's own.
     pub fn in_memory(e: gmap::ops::import::ImportError) -> Self {
-        Failure::from(gmap::Error::from(gmap::ops::import::FileError::new(Path::new(""), e)))
+        let message = chain_message(&e);
+        let f = Failure::from(gmap::Error::from(gmap::ops::import::FileError::new(Path::new(""), e)));
+        Failure { message, path: None, ..f }
     }
 
     /// A map that breaks the G-map axioms (`GMap.check`, `GMap.from_alphas`), naming the
@@ -117,6 +164,7 @@ impl Failure {
             V::OutOfRange { dart, .. } | V::NotInvolution { dart, .. } | V::NotCommuting { dart, .. } => {
                 Some(dart.index())
             }
+            // the variants without a dart (a dimension out of range) name none
             _ => None,
         };
         let f = Failure::new(Kind::Validity, chain_message(&e));
@@ -159,8 +207,9 @@ pub fn chain_message(e: &(dyn std::error::Error + 'static)) -> String {
 impl From<gmap::Error> for Failure {
     fn from(e: gmap::Error) -> Self {
         use gmap::ErrorKind as K;
+        // a file that cannot be opened, read or written is an OSError, whatever the stage
         let kind = match e.kind() {
-            K::Parse if e.line().is_none() && e.chain().iter().any(|c| c.contains("os error")) => Kind::Io,
+            _ if e.is_io() => Kind::Io,
             K::Parse => Kind::Parse,
             K::Limit => Kind::Limit,
             K::Precondition => Kind::Precondition,
@@ -168,11 +217,13 @@ impl From<gmap::Error> for Failure {
             K::Compute => Kind::Computation,
             _ => Kind::Input,
         };
-        // an input made in memory has no file: its messages open with ": "
+        // an input made in memory is a file without a name, which the facade's messages name
+        // first: an empty name before its ": " (a real file's name is never empty)
         let message = e.to_string();
         let message = message.strip_prefix(": ").map(str::to_string).unwrap_or(message);
-        let path = e.path().map(|p| p.display().to_string()).filter(|p| !p.is_empty());
-        Failure { kind, message, path, line: e.line(), item: None }
+        let path = e.path().filter(|p| !p.as_os_str().is_empty()).map(|p| p.display().to_string());
+        let item = e.item().and_then(Item::of);
+        Failure { kind, message, path, line: e.line(), item }
     }
 }
 
@@ -189,16 +240,13 @@ impl From<Failure> for PyErr {
         };
         Python::with_gil(|py| {
             let v = err.value(py);
-            let item: Option<PyObject> = match &f.item {
-                Some(Item::Number(k)) => k.into_pyobject(py).ok().map(|x| x.into_any().unbind()),
-                Some(Item::Text(t)) => t.into_pyobject(py).ok().map(|x| x.into_any().unbind()),
-                None => None,
-            };
+            let item: Option<PyObject> = f.item.as_ref().and_then(|i| i.to_py(py).ok());
             // attributes of a fresh exception object: setting them does not fail
             let _ = v.setattr("path", f.path.clone());
             let _ = v.setattr("file", f.path.clone());
             let _ = v.setattr("line", f.line);
             let _ = v.setattr("item", item);
+            let _ = v.setattr("item_kind", f.item.as_ref().map(Item::kind));
             let _ = v.setattr("message", f.message.clone());
         });
         err

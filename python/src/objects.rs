@@ -101,7 +101,7 @@ pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
                     return Err(Failure::input(format!(
                         "facet {f}: vertex label {l} is negative (labels are 0..2^64)"
                     ))
-                    .with_item_index(f)
+                    .with_facet(f)
                     .into());
                 }
                 facet.push(l as u64);
@@ -124,7 +124,7 @@ pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
         let facet = facet?;
         let items = facet
             .try_iter()
-            .map_err(|_| Failure::input(format!("facet {f} is not a sequence of vertex labels")).with_item_index(f))?;
+            .map_err(|_| Failure::input(format!("facet {f} is not a sequence of vertex labels")).with_facet(f))?;
         for l in items {
             let l = l?;
             if l.extract::<u64>().is_err() {
@@ -132,7 +132,7 @@ pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
                     "facet {f}: vertex label {} is not an int from 0 to 2^64 - 1",
                     l.repr().map(|r| r.to_string()).unwrap_or_default()
                 ))
-                .with_item_index(f)
+                .with_facet(f)
                 .into());
             }
         }
