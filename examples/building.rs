@@ -19,9 +19,9 @@ use std::error::Error;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use gmap::algebra::arch::ArchComplex;
+use gmap::algebra::{dot, gmap_homology, json};
 use gmap::core::{to_dense_labels, Dart, DenseMap, LabelValue, LabelledGMap, Labels};
-use gmap::homology::arch::ArchComplex;
-use gmap::homology::{dot, gmap_homology, json};
 use gmap::ops::{build, export};
 
 /// The x, y and z positions (metres) of the grid lines: two rooms of 4 m by 3.5 m along

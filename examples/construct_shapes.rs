@@ -14,8 +14,8 @@
 use std::error::Error;
 use std::path::PathBuf;
 
+use gmap::algebra::gmap_homology;
 use gmap::core::{AlphaSet, DartId, GMap};
-use gmap::homology::gmap_homology;
 use gmap::ops::construct::{self as c, Axis};
 use gmap::ops::export;
 

@@ -21,8 +21,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("labelled cells per dimension: {labelled:?}");
 
     // its homology over Z by the cellular method
-    let complex = gmap::homology::cellular_complex(&map)?;
-    println!("{}", gmap::homology::homology_z(&complex.chain)?);
+    let complex = gmap::algebra::cellular_complex(&map)?;
+    println!("{}", gmap::algebra::homology_z(&complex.chain)?);
 
     gmap::ops::export::write_vtk_with_labels(&map, &labels, &output)?;
     println!("wrote {}", output.display());

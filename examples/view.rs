@@ -13,8 +13,8 @@ mod building;
 use std::error::Error;
 use std::path::PathBuf;
 
+use gmap::algebra::{cellular_complex, generators::generators};
 use gmap::core::to_dense_labels;
-use gmap::homology::{cellular_complex, generators::generators};
 use gmap::ops::export::html::{write_html, HtmlOptions, Scene, ViewGenerator};
 
 fn main() -> Result<(), Box<dyn Error>> {

@@ -121,9 +121,9 @@ fn tm_check_fails_with_the_cells_named() {
     let text = std::fs::read_to_string(rooms::model()).unwrap();
     let dir = tempfile::tempdir().unwrap();
     let signed = dir.path().join("signed.json");
-    let x = gmap::homology::json::read_json(&text).unwrap();
+    let x = gmap::algebra::json::read_json(&text).unwrap();
     let mut out = String::new();
-    for line in gmap::homology::json::write_json(&x).lines() {
+    for line in gmap::algebra::json::write_json(&x).lines() {
         let flipped = match line.find(r#""from": "room 2","#) {
             Some(_) if line.contains("\"weight\": -1") => line.replace("\"weight\": -1", "\"weight\": 1"),
             Some(_) => line.replace("\"weight\": 1", "\"weight\": -1"),

@@ -9,7 +9,7 @@ use common::{gmap, p, stderr, stdout};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use gmap::homology::lar::Faces;
+use gmap::algebra::lar::Faces;
 use proptest::prelude::*;
 
 #[allow(dead_code)]
@@ -32,7 +32,7 @@ fn the_soup_is_the_buildings_faces() {
 }
 
 /// The grid cell (x, y, storey) of a room of the building by its volume's centre.
-fn grid_cell(x: &gmap::homology::arch::ArchComplex, room: usize) -> [usize; 3] {
+fn grid_cell(x: &gmap::algebra::arch::ArchComplex, room: usize) -> [usize; 3] {
     let mut pts = BTreeSet::new();
     for f in x.down(room) {
         for e in x.down(f.to) {
@@ -74,7 +74,7 @@ fn the_building_from_its_walls() {
     assert_eq!(pairs.len(), 12);
     assert!(pairs.iter().all(|(a, b)| (0..3).filter(|&i| a[i] != b[i]).count() == 1));
     let g = building::building().unwrap();
-    let arch = gmap::homology::arch::ArchComplex::from_labelled_map(&g).unwrap();
+    let arch = gmap::algebra::arch::ArchComplex::from_labelled_map(&g).unwrap();
     let mut theirs = 0;
     for &a in arch.regions_of_dim(3) {
         for &b in arch.regions_of_dim(3) {

@@ -26,6 +26,22 @@ fn view_writes_a_page_for_each_kind_of_input() {
 }
 
 #[test]
+fn a_complex_without_a_gmap_is_drawn_by_its_faces() {
+    // the dunce hat: ridges in three facets, so no G-map; its 8 vertices, 24 edges and 17
+    // triangles are the page's cells, and it is contractible (one H0 generator, no other)
+    let dir = tempfile::tempdir().unwrap();
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lutz/dunce_hat.facets");
+    let out = dir.path().join("hat.html");
+    let o = gmap(&["view", p(&data), "-o", p(&out), "--generators"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let page = std::fs::read_to_string(&out).unwrap();
+    assert!(page.contains("drawn by its faces"));
+    assert!(page.contains("H0 #0 (Z)") && !page.contains("H1 #0"));
+    let scene = gmap::view::scene(&gmap::open(&data).unwrap(), &gmap::ViewOptions::default()).unwrap();
+    assert_eq!(scene.counts(), [8, 24, 17]);
+}
+
+#[test]
 fn view_refuses_an_unknown_label_and_a_missing_file() {
     let dir = tempfile::tempdir().unwrap();
     let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");

@@ -175,7 +175,37 @@ fn edge(x: &ArchComplex, b: &mut Builder, r: usize, vertices: &[usize]) -> Resul
 /// A 2-region over the edges of its boundary: a cell when they make one circle; a sphere
 /// with k holes cut in two disks by a ring of k new edges (module docs).
 fn face(x: &ArchComplex, b: &mut Builder, r: usize, edges: &[usize]) -> Result<Vec<usize>> {
-    // the boundary graph: each vertex on exactly two of the edges
+    let circles = boundary_circles(x, b, r, edges)?;
+    let k = circles.len();
+    if x.has_region_betti(r) {
+        let betti = x.region_betti(r);
+        let planar = if k == 0 { vec![1, 0, 1] } else { vec![1, k - 1, 0] };
+        if betti != planar {
+            return Err(refuse(
+                x,
+                r,
+                format_args!(
+                    "a 2-region with Betti numbers ({}) and {k} boundary circle(s) is a surface of higher genus, which is not cut into cells here; give it as cells (gmap homology --topological computes its space)",
+                    betti.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(match k {
+        0 => sphere_cells(b, r),
+        1 => {
+            for &e in edges {
+                b.cover(r, e);
+            }
+            vec![r]
+        }
+        _ => holed_disk_cells(b, r, &circles),
+    })
+}
+
+/// The circles of a 2-region's boundary edges, each as its (vertex, edge to the next
+/// vertex) in order; refused where a vertex is not on exactly two of the edges.
+fn boundary_circles(x: &ArchComplex, b: &Builder, r: usize, edges: &[usize]) -> Result<Vec<Vec<(usize, usize)>>> {
     let mut at: HashMap<usize, Vec<usize>> = HashMap::new();
     for &e in edges {
         for &v in &b.down[e] {
@@ -195,7 +225,6 @@ fn face(x: &ArchComplex, b: &mut Builder, r: usize, edges: &[usize]) -> Result<V
             ),
         ));
     }
-    // the circles, each as its vertices in order (the edge from vertex k to k + 1 at k)
     let mut seen_edge: HashMap<usize, ()> = HashMap::new();
     let mut circles: Vec<Vec<(usize, usize)>> = Vec::new();
     let mut on_circle: HashMap<usize, ()> = HashMap::new();
@@ -218,60 +247,40 @@ fn face(x: &ArchComplex, b: &mut Builder, r: usize, edges: &[usize]) -> Result<V
         }
         circles.push(circle);
     }
-    let k = circles.len();
-    if x.has_region_betti(r) {
-        let betti = x.region_betti(r);
-        let planar = if k == 0 { vec![1, 0, 1] } else { vec![1, k - 1, 0] };
-        if betti != planar {
-            return Err(refuse(
-                x,
-                r,
-                format_args!(
-                    "a 2-region with Betti numbers ({}) and {k} boundary circle(s) is a surface of higher genus, which is not cut into cells here; give it as cells (gmap homology --topological computes its space)",
-                    betti.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
-                ),
-            ));
-        }
+    Ok(circles)
+}
+
+/// A 2-region without boundary (a sphere): two disks on a circle of two new edges.
+fn sphere_cells(b: &mut Builder, r: usize) -> Vec<usize> {
+    let (v, w) = (b.cell(0, r), b.cell(0, r));
+    let (e1, e2) = (b.cell(1, r), b.cell(1, r));
+    let other = b.cell(2, r);
+    for e in [e1, e2] {
+        b.cover(e, v);
+        b.cover(e, w);
+        b.cover(r, e);
+        b.cover(other, e);
     }
-    match k {
-        0 => {
-            // a sphere: two disks on a circle of two edges
-            let (v, w) = (b.cell(0, r), b.cell(0, r));
-            let (e1, e2) = (b.cell(1, r), b.cell(1, r));
-            let other = b.cell(2, r);
-            for e in [e1, e2] {
-                b.cover(e, v);
-                b.cover(e, w);
-                b.cover(r, e);
-                b.cover(other, e);
-            }
-            Ok(vec![r, other])
+    vec![r, other]
+}
+
+/// A sphere with k ≥ 2 holes cut in two disks: circle i split at its vertex 0 (l_i) and its
+/// vertex m_i / 2 (r_i); the ring of new edges joins r_i to l_{i+1}.
+fn holed_disk_cells(b: &mut Builder, r: usize, circles: &[Vec<(usize, usize)>]) -> Vec<usize> {
+    let lower = b.cell(2, r);
+    for (i, c) in circles.iter().enumerate() {
+        let half = c.len() / 2;
+        for (k, &(_, e)) in c.iter().enumerate() {
+            b.cover(if k < half { r } else { lower }, e);
         }
-        1 => {
-            for &e in edges {
-                b.cover(r, e);
-            }
-            Ok(vec![r])
-        }
-        _ => {
-            // circle i split at its vertex 0 (l_i) and its vertex m_i / 2 (r_i); the ring of
-            // new edges joins r_i to l_{i+1}
-            let lower = b.cell(2, r);
-            for (i, c) in circles.iter().enumerate() {
-                let half = c.len() / 2;
-                for (k, &(_, e)) in c.iter().enumerate() {
-                    b.cover(if k < half { r } else { lower }, e);
-                }
-                let next = &circles[(i + 1) % circles.len()];
-                let ring = b.cell(1, r);
-                b.cover(ring, c[half].0);
-                b.cover(ring, next[0].0);
-                b.cover(r, ring);
-                b.cover(lower, ring);
-            }
-            Ok(vec![r, lower])
-        }
+        let next = &circles[(i + 1) % circles.len()];
+        let ring = b.cell(1, r);
+        b.cover(ring, c[half].0);
+        b.cover(ring, next[0].0);
+        b.cover(r, ring);
+        b.cover(lower, ring);
     }
+    vec![r, lower]
 }
 
 /// A region of dimension d ≥ 3 over the pieces of its faces: a cell when they make a sphere.
@@ -306,24 +315,7 @@ fn solid(x: &ArchComplex, b: &mut Builder, r: usize, faces: &[usize]) -> Result<
 /// The boundary of region `r` (dimension d ≥ 3) is a (d-1)-sphere, or the refusal.
 fn solid_boundary(x: &ArchComplex, b: &Cells, r: usize, max_darts: u64) -> Result<()> {
     let d = x.region(r).dim;
-    // the boundary: the cells below r, as a poset of its own
-    let mut index: HashMap<usize, usize> = HashMap::new();
-    let mut stack: Vec<usize> = b.down[r].clone();
-    let mut sub = FacePoset::new();
-    let mut members = Vec::new();
-    while let Some(c) = stack.pop() {
-        if index.contains_key(&c) {
-            continue;
-        }
-        index.insert(c, sub.add_cell(b.poset.dims[c]));
-        members.push(c);
-        stack.extend(b.down[c].iter().copied());
-    }
-    for &c in &members {
-        for &f in &b.down[c] {
-            sub.add_cover(index[&c], index[&f]);
-        }
-    }
+    let (sub, members) = boundary_poset(b, r);
     let m = sub.to_gmap(max_darts).map_err(|e| {
         let named = poset_error(x, &b.origin, &e, |k| members.get(k).copied());
         err!(Precondition, "{}: its boundary is not a closed surface of cells: {named}", region_name(x, r))
@@ -366,6 +358,29 @@ fn solid_boundary(x: &ArchComplex, b: &Cells, r: usize, max_darts: u64) -> Resul
         }
     }
     Ok(())
+}
+
+/// The cells below region `r` as a face poset of their own, with the cell each of its
+/// cells is.
+fn boundary_poset(b: &Cells, r: usize) -> (FacePoset, Vec<usize>) {
+    let mut index: HashMap<usize, usize> = HashMap::new();
+    let mut stack: Vec<usize> = b.down[r].clone();
+    let mut sub = FacePoset::new();
+    let mut members = Vec::new();
+    while let Some(c) = stack.pop() {
+        if index.contains_key(&c) {
+            continue;
+        }
+        index.insert(c, sub.add_cell(b.poset.dims[c]));
+        members.push(c);
+        stack.extend(b.down[c].iter().copied());
+    }
+    for &c in &members {
+        for &f in &b.down[c] {
+            sub.add_cover(index[&c], index[&f]);
+        }
+    }
+    (sub, members)
 }
 
 /// The name of cell `c` of the poset being built: its region, or a piece of one.

@@ -169,7 +169,7 @@ impl BenchOptions {
     }
 }
 
-/// [`bench`] with its options.
+/// [`bench()`] with its options.
 pub fn bench_with(inputs: &[PathBuf], o: &BenchOptions, progress: &Progress) -> Result<Vec<RouteRun>> {
     let listed = expand_inputs(inputs)?;
     progress.steps(listed.len() as u64, "");

@@ -6,8 +6,8 @@
 //! |---|---|---|
 //! | one pass ([`one_pass`]) | dimension ≤ 3, no generators | the groups from union-finds over the layers and Alexander duality (periodic: over the torus), no chain complex |
 //! | sweep ([`sweep`]) | dimension ≤ 3, generators, a box that is not periodic | the groups and a cycle per summand from union-finds and a sweep of the grid |
-//! | whole complex ([`complex`]) | any, up to [`WHOLE_GRID_POINTS`] | the cubical complex of the closure after collapses of free faces |
-//! | slabs ([`complex`]) | past [`WHOLE_GRID_POINTS`] | the cubical complex built and reduced slab by slab |
+//! | whole complex | any, up to [`WHOLE_GRID_POINTS`] | the cubical complex of the closure after collapses of free faces |
+//! | slabs | past [`WHOLE_GRID_POINTS`] | the cubical complex built and reduced slab by slab |
 //!
 //! [`crate::route`] chooses among them.
 

@@ -380,46 +380,6 @@ mod tests {
     }
 
     #[test]
-    fn the_library_error_is_the_source() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("bad.gmap");
-        std::fs::write(&path, "gmap 1 2\n1 0\n5 1\n").unwrap();
-        let e = crate::open(&path).unwrap_err();
-        assert_eq!(e.kind(), ErrorKind::Parse);
-        let read = e.source_as::<gmap_core::io::ReadError>().expect("the reader's error");
-        assert_eq!(read.line, e.line());
-        assert!(!e.is_io());
-        let missing = crate::open(dir.path().join("missing.gmap")).unwrap_err();
-        assert!(missing.is_io(), "{missing:?}");
-        // the importers' (.facets, .npy, .pgm) and the .json reader's missing files too
-        for name in ["missing.facets", "missing.npy", "missing.pgm", "missing.json", "missing.off"] {
-            let e = crate::open(dir.path().join(name)).unwrap_err();
-            assert!(e.is_io(), "{name}: {e:?}");
-        }
-        let bad = dir.path().join("bad.facets");
-        std::fs::write(&bad, "1 2 x\n").unwrap();
-        assert!(!crate::open(&bad).unwrap_err().is_io());
-    }
-
-    #[test]
-    fn a_failed_condition_names_its_cell() {
-        // a segment whose two darts are 0-free: its edge has an open boundary (C1)
-        let mut m = gmap_core::DenseMap::new(1, 2);
-        m.link(gmap_core::Dart::new(0), gmap_core::Dart::new(1), 1);
-        let e: Error = gmap_homology::check_preconditions(&m).unwrap_err().into();
-        assert_eq!(e.kind(), ErrorKind::Precondition);
-        assert!(matches!(e.item(), Some(Item::Cell { dim: 1, .. })), "{:?} {e}", e.item());
-        assert!(e.source_as::<gmap_homology::PreconditionError>().is_some());
-    }
-
-    #[test]
-    fn a_message_names_its_file_once() {
-        let e = Error::new(ErrorKind::Usage, "x").about_file(Path::new("a.npy"));
-        assert_eq!(e.to_string(), "a.npy: x");
-        assert_eq!(e.about_file(Path::new("a.npy")).to_string(), "a.npy: x");
-    }
-
-    #[test]
     fn flattening_keeps_every_link() {
         let e = Error::new(ErrorKind::Limit, "x: y").context("f").flattened("; more");
         assert_eq!(e.chain(), ["f: x: y; more"]);

@@ -1,7 +1,7 @@
 //! The format registry: one row per file format, and everything that depends on a format
 //! reads it from here — [`crate::open`] (the reader and the kind of [`Input`] it makes),
 //! [`crate::homology_file`]'s checks made before a file is read, the images
-//! [`crate::persistence_file`] takes, [`crate::save`] (the writer and what it keeps), the
+//! [`crate::persistence_file`] takes, [`crate::save()`] (the writer and what it keeps), the
 //! command line's help text ([`extensions_of`]) and the Python package's `open` and `save`
 //! (the class of each kind, [`Kind::python_class`]).
 //!
@@ -98,7 +98,7 @@ impl Format {
         }
     }
 
-    /// Whether [`crate::save`] writes this format.
+    /// Whether [`crate::save()`] writes this format.
     pub fn is_written(&self) -> bool {
         !matches!(self.writer, Writer::None)
     }
@@ -292,7 +292,7 @@ pub fn input_extensions() -> impl Iterator<Item = &'static str> {
     FORMATS.iter().filter(|f| f.reads().is_some()).map(|f| f.extension)
 }
 
-/// The extensions [`crate::save`] writes, in the registry's order.
+/// The extensions [`crate::save()`] writes, in the registry's order.
 pub fn output_extensions() -> impl Iterator<Item = &'static str> {
     FORMATS.iter().filter(|f| f.is_written()).map(|f| f.extension)
 }
@@ -404,7 +404,7 @@ pub fn parse_text(extension: &str, text: &str) -> Result<Input> {
     }
 }
 
-/// The text [`crate::save`] writes for `input` in the format `extension` (the text
+/// The text [`crate::save()`] writes for `input` in the format `extension` (the text
 /// [`parse_text`] reads back): a map's `.gmap` (with its points and labels), an
 /// architectural complex's `.json`.
 pub fn to_text(input: &Input, extension: &str) -> Result<String> {

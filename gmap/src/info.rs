@@ -364,68 +364,15 @@ impl Info {
 
     /// The `key  value` lines `gmap info` prints, the first naming `file`.
     pub fn lines(&self, file: &str) -> Vec<(&'static str, String)> {
-        let yes = |b: bool| if b { "yes".to_string() } else { "no".to_string() };
-        let list = |v: &[usize], sep: &str| v.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(sep);
         let file = ("file", file.to_string());
-        match self {
-            Info::Map(i) => {
-                let complete = match &i.boundary_defect {
-                    None => yes(true),
-                    Some(why) => format!("no ({why})"),
-                };
-                vec![
-                    file,
-                    ("dimension", i.dimension.to_string()),
-                    ("darts", i.darts.to_string()),
-                    ("cells (0..n)", list(&i.cells, " ")),
-                    ("components", i.components.to_string()),
-                    ("valid", yes(i.valid)),
-                    ("complete boundaries", complete),
-                    ("orientable", yes(i.orientable)),
-                    ("euler characteristic", i.euler_characteristic.to_string()),
-                    ("points", yes(i.points)),
-                    ("labels", labels_text(&i.labels)),
-                ]
-            }
-            Info::Arch(i) => vec![
-                file,
-                ("kind", i.kind.to_string()),
-                ("dimension", i.dimension.to_string()),
-                ("regions (0..n)", list(&i.cells, " ")),
-                ("incidences", i.incidences.to_string()),
-                ("components", i.components.to_string()),
-                ("valid", yes(i.valid)),
-                ("complete boundaries", yes(i.complete_boundaries)),
-                ("euler characteristic", i.euler_characteristic.to_string()),
-                ("labels", labels_text(&i.labels)),
-            ],
-            Info::Cubical(i) => {
-                let mut rows = vec![
-                    file,
-                    ("kind", i.kind.to_string()),
-                    ("dimension", i.dimension.to_string()),
-                    ("cubes", i.cubes.to_string()),
-                    ("box min", i.box_min.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")),
-                    ("box shape", list(&i.box_shape, " x ")),
-                    ("periodic", yes(i.periodic)),
-                    ("cells (0..n)", list(&i.cells, " ")),
-                    ("euler characteristic", i.euler_characteristic.to_string()),
-                ];
-                if i.lower_cells > 0 {
-                    rows.insert(4, ("cells on no cube", i.lower_cells.to_string()));
-                }
-                rows
-            }
-            Info::Simplicial(i) => vec![
-                file,
-                ("kind", i.kind.to_string()),
-                ("dimension", i.dimension.to_string()),
-                ("simplices (0..n)", list(&i.cells, " ")),
-                ("components", i.components.to_string()),
-                ("euler characteristic", i.euler_characteristic.to_string()),
-                ("gmap", format!("none: {}", i.why)),
-            ],
-        }
+        let mut rows = match self {
+            Info::Map(i) => map_lines(i),
+            Info::Arch(i) => arch_lines(i),
+            Info::Cubical(i) => cubical_lines(i),
+            Info::Simplicial(i) => simplicial_lines(i),
+        };
+        rows.insert(0, file);
+        rows
     }
 
     /// The lines of [`Info::lines`] as text, the values aligned.
@@ -434,4 +381,79 @@ impl Info {
         let width = lines.iter().map(|(k, _)| k.len()).max().unwrap_or(0);
         lines.iter().map(|(k, v)| format!("{k:<width$}  {v}\n")).collect()
     }
+}
+
+/// `yes` or `no`.
+fn yes(b: bool) -> String {
+    if b { "yes" } else { "no" }.to_string()
+}
+
+/// Numbers joined by `sep`.
+fn list(v: &[usize], sep: &str) -> String {
+    v.iter().map(|c| c.to_string()).collect::<Vec<_>>().join(sep)
+}
+
+/// The lines of a map after its file.
+fn map_lines(i: &MapInfo) -> Vec<(&'static str, String)> {
+    let complete = match &i.boundary_defect {
+        None => yes(true),
+        Some(why) => format!("no ({why})"),
+    };
+    vec![
+        ("dimension", i.dimension.to_string()),
+        ("darts", i.darts.to_string()),
+        ("cells (0..n)", list(&i.cells, " ")),
+        ("components", i.components.to_string()),
+        ("valid", yes(i.valid)),
+        ("complete boundaries", complete),
+        ("orientable", yes(i.orientable)),
+        ("euler characteristic", i.euler_characteristic.to_string()),
+        ("points", yes(i.points)),
+        ("labels", labels_text(&i.labels)),
+    ]
+}
+
+/// The lines of an architectural complex after its file.
+fn arch_lines(i: &ArchInfo) -> Vec<(&'static str, String)> {
+    vec![
+        ("kind", i.kind.to_string()),
+        ("dimension", i.dimension.to_string()),
+        ("regions (0..n)", list(&i.cells, " ")),
+        ("incidences", i.incidences.to_string()),
+        ("components", i.components.to_string()),
+        ("valid", yes(i.valid)),
+        ("complete boundaries", yes(i.complete_boundaries)),
+        ("euler characteristic", i.euler_characteristic.to_string()),
+        ("labels", labels_text(&i.labels)),
+    ]
+}
+
+/// The lines of a cubical set after its file.
+fn cubical_lines(i: &CubicalInfo) -> Vec<(&'static str, String)> {
+    let mut rows = vec![
+        ("kind", i.kind.to_string()),
+        ("dimension", i.dimension.to_string()),
+        ("cubes", i.cubes.to_string()),
+        ("box min", i.box_min.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(" ")),
+        ("box shape", list(&i.box_shape, " x ")),
+        ("periodic", yes(i.periodic)),
+        ("cells (0..n)", list(&i.cells, " ")),
+        ("euler characteristic", i.euler_characteristic.to_string()),
+    ];
+    if i.lower_cells > 0 {
+        rows.insert(3, ("cells on no cube", i.lower_cells.to_string()));
+    }
+    rows
+}
+
+/// The lines of a simplicial complex without a G-map after its file.
+fn simplicial_lines(i: &SimplicialInfo) -> Vec<(&'static str, String)> {
+    vec![
+        ("kind", i.kind.to_string()),
+        ("dimension", i.dimension.to_string()),
+        ("simplices (0..n)", list(&i.cells, " ")),
+        ("components", i.components.to_string()),
+        ("euler characteristic", i.euler_characteristic.to_string()),
+        ("gmap", format!("none: {}", i.why)),
+    ]
 }

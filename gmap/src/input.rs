@@ -212,7 +212,7 @@ impl MapInput {
     }
 
     /// A map with points and labels built in memory (no file): the labels are kept for
-    /// [`MapInput::labelled`] (the page of [`crate::view`] colours cells by them).
+    /// [`MapInput::labelled`] (the page of [`crate::view()`] colours cells by them).
     pub fn from_labelled(g: LabelledGMap) -> Self {
         let map = g.to_dense_map();
         MapInput { map, source: Source::default(), labelled: OnceLock::from(Ok(Box::new(g))), complex: None }

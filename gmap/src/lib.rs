@@ -32,31 +32,36 @@
 //! ## How an input flows
 //!
 //! ```text
-//! file ──open──▶ Input ──route──▶ chain complex ──reduce──▶ groups (Report)
-//!                  │                  ▲
-//!                  ├─ Map ────────────┤ cellular: cells, C1/C2, border operator (gmap_homology::cellular)
-//!                  │                  │ simplicial: one simplex per dart (gmap_homology::simplicial)
-//!                  ├─ Simplicial ─────┤ direct: every face a cell (gmap_homology::simplices)
-//!                  │    └─ G-map ─────┘ gmap: the map of the facets (gmap_ops::import), then a map route
-//!                  ├─ Cubical ────────▶ cubical complex of the closure (gmap_homology::cubical)
-//!                  └─ Arch ───────────▶ completed boundary matrix (gmap_homology::arch)
+//! file ──formats (registry: extension → reader → kind)──▶ Input
+//!   ──route::plan──▶ Route ──Route::run──▶ chain complex (chains, cubes) ──reduce──▶ Report
 //! ```
 //!
-//! * [`open`] ([`input`]) picks the reader by extension and applies the memory policy;
-//! * [`homology`] ([`report`], [`route`]) chooses the route as the command line does, builds
-//!   the chain complex, reduces it (fill-free pass, elimination, Smith form) and names the
-//!   generators in the input's own terms;
-//! * [`routes`] ([`bench`]) runs and times every route of an input;
-//! * [`info()`] ([`mod@info`]) gives the characteristics; [`save`] ([`mod@save`]) writes any format;
+//! * [`formats`] is the one table of file formats: the reader of each extension, the kind of
+//!   [`Input`] it makes, its writer and what the writer keeps; [`open`] reads any file by it
+//!   and applies the memory policy, [`save()`] writes by it;
+//! * [`plan`] ([`mod@route`]) chooses the [`Route`] of an input as the command line does, and
+//!   [`Route::run`] builds the chain complex (`chains` for maps, simplicial and
+//!   architectural complexes, [`cubes`] for cubical sets, images and cubes borrowed from
+//!   memory), reduces it (fill-free pass, elimination, Smith form) and names the generators
+//!   in the input's own terms; [`homology()`] is the two in one call, [`homology_cubes`] the
+//!   same for a numpy array read in place; the [`Report`] and its printing are in
+//!   [`report`];
+//! * [`routes`] ([`mod@bench`]) runs and times every route of an input
+//!   ([`route::candidates`]);
+//! * [`info()`] ([`mod@info`]) gives the characteristics;
 //! * [`view()`] ([`mod@view`]) writes one self-contained HTML page to look at the input (darts,
-//!   cells coloured by a label, generators) in a browser;
+//!   cells coloured by a label, generators, or the faces of a simplicial complex without a
+//!   G-map) in a browser;
+//! * [`persistence()`] ([`mod@persistence`]) computes persistence diagrams of images,
+//!   valued complexes and labelled maps;
 //! * [`simplify_if_safe`] reduces a map by removals and contractions where that keeps the
 //!   groups;
 //! * [`distributed`] cuts one image across processes (the `gmap-mpi` binary runs it on MPI
 //!   ranks): each reduces its slab, process 0 glues them.
 //!
 //! Errors are one type, [`Error`], with a kind ([`ErrorKind`]: parse, limit, precondition,
-//! usage, …) and the message the command line prints.
+//! usage, …), the message the command line prints, the offending [`Item`] and the library's
+//! typed error as its `source()`.
 //!
 //! The three crates below are re-exported for everything else:
 //!
@@ -64,11 +69,11 @@
 //!   validity, orientation, compacted cells, face operators, the dual, file formats;
 //! * [`ops`] (`gmap-ops`): making and changing maps — builders, importers, sewing,
 //!   Euler operators, exporters;
-//! * [`homology`](mod@homology) (`gmap-homology`): incidence numbers, the cellular border
-//!   operator, homology over Z and Z/p, architectural complexes, LAR operators.
+//! * [`algebra`] (`gmap-homology`): incidence numbers, the cellular border operator,
+//!   homology over Z and Z/p, persistence, architectural complexes, LAR and TM models.
 
 pub use gmap_core as core;
-pub use gmap_homology as homology;
+pub use gmap_homology as algebra;
 pub use gmap_ops as ops;
 
 mod arch_cells;

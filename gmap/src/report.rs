@@ -185,11 +185,11 @@ impl From<Vec<(CellName, i64)>> for Chain {
     }
 }
 
-/// The result of [`homology`]: the groups, how they were computed, and the generators when
+/// The result of [`crate::homology()`]: the groups, how they were computed, and the generators when
 /// asked for.
 #[derive(Clone, Debug)]
 pub struct Report {
-    /// what the input is ([`Input::kind`])
+    /// what the input is ([`crate::Input::kind`])
     pub kind: &'static str,
     /// the dimension of the input
     pub dimension: usize,
@@ -218,7 +218,7 @@ pub struct Report {
 pub struct ArchSpace {
     /// the groups are the topological ones (`--topological`)
     pub topological: bool,
-    /// the regions that are not balls: their names ([`crate::arch_cells`]'s `region 7
+    /// the regions that are not balls: their names (`region 7
     /// ("kitchen")`), ids and Betti numbers
     pub not_balls: Vec<(String, u64, Vec<usize>)>,
 }

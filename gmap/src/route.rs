@@ -5,7 +5,7 @@
 //!
 //! | input | route | chain complex (module) |
 //! |---|---|---|
-//! | map | [`Route::Cellular`] (default) | the cells and the border operator under C1/C2 ([`crate::chains`]) |
+//! | map | [`Route::Cellular`] (default) | the cells and the border operator under C1/C2 (`chains`) |
 //! | map | [`Route::Simplicial`] | the simplicial counterpart: one n-simplex per dart |
 //! | simplicial complex | [`Route::Direct`] (default) | every face of every facet a cell |
 //! | simplicial complex | [`Route::Gmap`] | the G-map of the facets, then a map route |

@@ -322,7 +322,7 @@ pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
 
 /// Writes an architectural complex: `.json`, `.dot` and `.graphml` directly; any other
 /// format through the G-map of its cells (the flag construction, gmap-ops), after cutting
-/// the regions that are not cells so that the map is the same space ([`crate::arch_cells`];
+/// the regions that are not cells so that the map is the same space (the facade's `arch_cells`;
 /// refused with the region's name where that cannot be done).
 pub fn save_arch(x: &ArchComplex, output: &Path, max_darts: Option<u64>) -> Result<()> {
     let o = SaveOptions::max_darts(max_darts);

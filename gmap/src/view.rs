@@ -4,7 +4,9 @@
 //!
 //! * a map: its darts, its points (or a layout of its 1-skeleton) and, for a `.gmap` file,
 //!   the labels of its cells;
-//! * a simplicial complex (`.facets`, `.lex`): its G-map, laid out the same way;
+//! * a simplicial complex (`.facets`, `.lex`): its G-map, laid out the same way; one that
+//!   has no G-map (not a pseudo-manifold) by its faces, its vertices laid out from its
+//!   1-skeleton;
 //! * a cubical set: its cubes at their lattice coordinates;
 //! * an architectural complex (`.json`): its regions as points, laid out from the incidence
 //!   graph (regions as nodes, entries as links), with their labels.
@@ -67,10 +69,6 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
     let title = o.title.clone().unwrap_or_else(|| {
         input.path().file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_else(|| input.kind().to_string())
     });
-    let report_of = |input: &Input| -> Result<Vec<NamedGenerator>> {
-        let h = HomologyOptions { generators: true, ..Default::default() };
-        Ok(crate::homology(input, &h)?.generators.unwrap_or_default())
-    };
     match input {
         Input::Image(img) => {
             // an image is drawn as its cubical set (the cubes present at the default level)
@@ -80,85 +78,159 @@ pub fn scene(input: &Input, o: &ViewOptions) -> Result<Scene> {
             let o = ViewOptions { title: Some(title), ..o.clone() };
             scene(&Input::Cubical(crate::Sourced::new(set)), &o)
         }
-        Input::Map(_) | Input::Simplicial(_) => {
-            // the labels number the cells of the labelled file's own map: that map is drawn
-            let labelled = match input {
-                Input::Map(m) => m.dense_labels().transpose()?,
-                _ => None,
-            };
-            let (map, labels) = match labelled {
-                Some((m, l)) => (m, Some(l)),
-                None => (input.to_map()?.into_owned(), None),
-            };
-            let mut scene = Scene::from_map(&map, labels.as_ref(), &title);
-            if o.generators {
-                // the generators of the drawn map itself, so that their darts are its darts
-                let gens = report_of(&Input::Map(MapInput::new(map.clone())))?;
-                add_map_generators(&mut scene, &map, &gens)?;
-            }
-            Ok(scene)
-        }
-        Input::Cubical(set) => {
-            set.require_full("the page, which draws cubes,")
-                .map_err(|e| err!(Unsupported, "{}: {e}", set.path().display()).with_path(set.path()))?;
-            let mut scene = Scene::from_cubical(set, &title);
-            if o.generators {
-                let gens = report_of(input)?;
-                for (g, name) in gens.iter().zip(generator_names(&gens)) {
-                    let mut cells = Vec::with_capacity(g.chain.len());
-                    for (c, _) in g.chain.iter() {
-                        if let CellName::Cube { min, extent } = c {
-                            cells.push(scene.add_cube(&min, &extent)?);
-                        }
-                    }
-                    scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
+        // a complex with no G-map (not a pseudo-manifold) is drawn by its faces
+        Input::Simplicial(sc) if sc.to_gmap().is_err() => face_scene(input, sc, &title, o),
+        Input::Map(_) | Input::Simplicial(_) => map_scene(input, &title, o),
+        Input::Cubical(set) => cube_scene(input, set, &title, o),
+        Input::Arch(x) => arch_scene(input, x, &title, o),
+    }
+}
+
+/// The generators of `input` by the cellular method, named in its terms.
+fn generators_of(input: &Input) -> Result<Vec<NamedGenerator>> {
+    let h = HomologyOptions { generators: true, ..Default::default() };
+    Ok(crate::homology(input, &h)?.generators.unwrap_or_default())
+}
+
+/// The scene of a map (or of a simplicial complex's G-map): its darts, and the labels of a
+/// labelled file's cells.
+fn map_scene(input: &Input, title: &str, o: &ViewOptions) -> Result<Scene> {
+    // the labels number the cells of the labelled file's own map: that map is drawn
+    let labelled = match input {
+        Input::Map(m) => m.dense_labels().transpose()?,
+        _ => None,
+    };
+    let (map, labels) = match labelled {
+        Some((m, l)) => (m, Some(l)),
+        None => (input.to_map()?.into_owned(), None),
+    };
+    let mut scene = Scene::from_map(&map, labels.as_ref(), title);
+    if o.generators {
+        // the generators of the drawn map itself, so that their darts are its darts
+        let gens = generators_of(&Input::Map(MapInput::new(map.clone())))?;
+        add_map_generators(&mut scene, &map, &gens)?;
+    }
+    Ok(scene)
+}
+
+/// The scene of a cubical set: its cubes at their lattice coordinates.
+fn cube_scene(input: &Input, set: &gmap_ops::import::CubicalSet, title: &str, o: &ViewOptions) -> Result<Scene> {
+    set.require_full("the page, which draws cubes,")
+        .map_err(|e| err!(Unsupported, "{}: {e}", input.path().display()).with_path(input.path()))?;
+    let mut scene = Scene::from_cubical(set, title);
+    if o.generators {
+        let gens = generators_of(input)?;
+        for (g, name) in gens.iter().zip(generator_names(&gens)) {
+            let mut cells = Vec::with_capacity(g.chain.len());
+            for (c, _) in g.chain.iter() {
+                if let CellName::Cube { min, extent } = c {
+                    cells.push(scene.add_cube(&min, &extent)?);
                 }
             }
-            Ok(scene)
-        }
-        Input::Arch(x) => {
-            let n = x.regions().len();
-            let links: Vec<(u32, u32)> = x.entries().iter().map(|e| (e.from as u32, e.to as u32)).collect();
-            let placement =
-                format!("a layout of the incidence graph (regions as nodes, entries as links): {}", layout::METHOD);
-            let mut scene = Scene::complex(&title, x.dim(), &placement);
-            let pos = layout::graph_layout(n, &links);
-            let point: Vec<u32> = pos.iter().map(|&p| scene.add_point(p)).collect();
-            // cells by dimension, in the order of `regions_of_dim`, so that a region's cell
-            // number is its rank in its dimension
-            for k in 0..=x.dim() {
-                for &r in x.regions_of_dim(k) {
-                    let c = scene.add_cell(k, Shape::Point(point[r as usize]), true)?;
-                    let labels = x.region_labels(r as usize);
-                    if !labels.is_empty() {
-                        scene.set_labels(k, c, labels.clone())?;
-                    }
-                }
-            }
-            for &(a, b) in &links {
-                scene.add_link(point[a as usize], point[b as usize])?;
-            }
-            scene.add_note(
-                "An architectural complex: each region is a point, each entry of its boundary matrix a grey line.",
-            );
-            if o.generators {
-                let gens = report_of(input)?;
-                for (g, name) in gens.iter().zip(generator_names(&gens)) {
-                    let mut cells = Vec::with_capacity(g.chain.len());
-                    for (c, _) in g.chain.iter() {
-                        if let CellName::Region(id) | CellName::NamedRegion { id, .. } = c {
-                            let r = x
-                                .index_of(id.into())
-                                .ok_or_else(|| err!(Compute, "generator region {id} is unknown"))?;
-                            cells.push(x.rank_in_dim(r) as u32);
-                        }
-                    }
-                    scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
-                }
-            }
-            Ok(scene)
+            scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
         }
     }
+    Ok(scene)
+}
+
+/// The scene of an architectural complex: its regions as points, laid out from the
+/// incidence graph (regions as nodes, entries as links), with their labels.
+fn arch_scene(input: &Input, x: &gmap_homology::arch::ArchComplex, title: &str, o: &ViewOptions) -> Result<Scene> {
+    let n = x.regions().len();
+    let links: Vec<(u32, u32)> = x.entries().iter().map(|e| (e.from as u32, e.to as u32)).collect();
+    let placement = format!("a layout of the incidence graph (regions as nodes, entries as links): {}", layout::METHOD);
+    let mut scene = Scene::complex(title, x.dim(), &placement);
+    let pos = layout::graph_layout(n, &links);
+    let point: Vec<u32> = pos.iter().map(|&p| scene.add_point(p)).collect();
+    // cells by dimension, in the order of `regions_of_dim`, so that a region's cell number
+    // is its rank in its dimension
+    for k in 0..=x.dim() {
+        for &r in x.regions_of_dim(k) {
+            let c = scene.add_cell(k, Shape::Point(point[r as usize]), true)?;
+            let labels = x.region_labels(r as usize);
+            if !labels.is_empty() {
+                scene.set_labels(k, c, labels.clone())?;
+            }
+        }
+    }
+    for &(a, b) in &links {
+        scene.add_link(point[a as usize], point[b as usize])?;
+    }
+    scene.add_note("An architectural complex: each region is a point, each entry of its boundary matrix a grey line.");
+    if o.generators {
+        let gens = generators_of(input)?;
+        for (g, name) in gens.iter().zip(generator_names(&gens)) {
+            let mut cells = Vec::with_capacity(g.chain.len());
+            for (c, _) in g.chain.iter() {
+                if let CellName::Region(id) | CellName::NamedRegion { id, .. } = c {
+                    let r = x.index_of(id.into()).ok_or_else(|| err!(Compute, "generator region {id} is unknown"))?;
+                    cells.push(x.rank_in_dim(r) as u32);
+                }
+            }
+            scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
+        }
+    }
+    Ok(scene)
+}
+
+/// The scene of any simplicial complex, by its faces: its vertices laid out from its
+/// 1-skeleton, every face a cell (an edge a segment, a triangle a polygon, a higher simplex
+/// its triangles), numbered as the direct route numbers them, so that its generators are
+/// drawn on them.
+fn face_scene(input: &Input, sc: &gmap_ops::import::SimplicialComplex, title: &str, o: &ViewOptions) -> Result<Scene> {
+    let file = input.path().display().to_string();
+    let fc = crate::face_complex_within(sc, None, &file, true)?;
+    let face = |k: usize, j: usize| &fc.faces[k][j * (k + 1)..(j + 1) * (k + 1)];
+    let n = fc.faces.first().map_or(0, |v| v.len());
+    let edges: Vec<(u32, u32)> =
+        (0..fc.faces.get(1).map_or(0, |f| f.len() / 2)).map(|j| (face(1, j)[0], face(1, j)[1])).collect();
+    let placement = format!("a layout of the 1-skeleton (vertices as nodes, edges as links): {}", layout::METHOD);
+    let mut scene = Scene::complex(title, sc.dim(), &placement);
+    let point: Vec<u32> = layout::graph_layout(n, &edges).into_iter().map(|p| scene.add_point(p)).collect();
+    let mut number: Vec<std::collections::HashMap<Vec<u64>, u32>> = Vec::new();
+    for k in 0..fc.faces.len() {
+        let mut of_dim = std::collections::HashMap::new();
+        for j in 0..fc.faces[k].len() / (k + 1) {
+            let v: Vec<u32> = face(k, j).iter().map(|&i| point[i as usize]).collect();
+            let shape = match k {
+                0 => Shape::Point(v[0]),
+                1 => Shape::Segment(v[0], v[1]),
+                _ => Shape::Polygons(triangles(&v)),
+            };
+            let c = scene.add_cell(k, shape, true)?;
+            of_dim.insert(face(k, j).iter().map(|&i| fc.vertices[i as usize]).collect(), c);
+        }
+        number.push(of_dim);
+    }
+    scene.add_note("A simplicial complex that is not a pseudo-manifold (it has no G-map): drawn by its faces.");
+    if o.generators {
+        let gens = generators_of(input)?;
+        for (g, name) in gens.iter().zip(generator_names(&gens)) {
+            let mut cells = Vec::with_capacity(g.chain.len());
+            for (c, _) in g.chain.iter() {
+                let found = match &c {
+                    CellName::Simplex(v) => number.get(g.dim).and_then(|m| m.get(v)),
+                    _ => None,
+                };
+                cells.push(*found.ok_or_else(|| err!(Compute, "a generator names {}, not a face", c.to_text()))?);
+            }
+            scene.add_generator(ViewGenerator { name, dim: g.dim, cells })?;
+        }
+    }
+    Ok(scene)
+}
+
+/// The triangles of a simplex of 3 or more points (the simplex itself for a triangle).
+fn triangles(v: &[u32]) -> Vec<Vec<u32>> {
+    let mut out = Vec::new();
+    for a in 0..v.len() {
+        for b in a + 1..v.len() {
+            for c in b + 1..v.len() {
+                out.push(vec![v[a], v[b], v[c]]);
+            }
+        }
+    }
+    out
 }
 
 /// The names shown in the page's list: `H1 #0 (Z)`, the summand's dimension, its rank

@@ -159,7 +159,7 @@ fn rooms(windows: &[Vec<usize>]) -> String {
     m.json(3)
 }
 
-fn groups(path: &Path, topological: bool) -> (Vec<usize>, Vec<Vec<gmap::homology::Natural>>) {
+fn groups(path: &Path, topological: bool) -> (Vec<usize>, Vec<Vec<gmap::algebra::Natural>>) {
     let mut o = gmap::HomologyOptions::default();
     o.topological = topological;
     let r = gmap::homology_file(path, &o).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

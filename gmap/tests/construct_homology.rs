@@ -6,8 +6,8 @@
 //! the homology of the ball (Z, 0, 0, 0) — each is a subdivision, its inverse or a
 //! collapse.
 
+use gmap::algebra::gmap_homology;
 use gmap::core::{DartId, GMap, Point};
-use gmap::homology::gmap_homology;
 use gmap::ops::construct::{self as c, Axis};
 use proptest::prelude::*;
 

@@ -4,8 +4,8 @@
 
 use std::path::PathBuf;
 
+use gmap::algebra::{cellular_complex, homology_z};
 use gmap::core::{Characteristics, LabelledGMap};
-use gmap::homology::{cellular_complex, homology_z};
 use gmap::ops::import::read_mesh;
 
 fn read(name: &str) -> LabelledGMap {

@@ -122,3 +122,16 @@ fn a_builder_refuses_past_the_memory_limit() {
     assert!(matches!(e, gmap::ops::build::BuildError::MemoryLimit(_)), "{e}");
     assert!(gmap::ops::build::grid(&[3, 4], &[false, true]).is_ok());
 }
+
+#[test]
+fn a_missing_file_of_any_reader_is_an_io_error() {
+    // the Python package makes these an OSError by Error::is_io, not by their text
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["missing.gmap", "missing.facets", "missing.npy", "missing.pgm", "missing.json", "missing.off"] {
+        let e = gmap::open(dir.path().join(name)).unwrap_err();
+        assert!(e.is_io(), "{name}: {e:?}");
+    }
+    let bad = dir.path().join("bad.facets");
+    std::fs::write(&bad, "1 2 x\n").unwrap();
+    assert!(!gmap::open(&bad).unwrap_err().is_io());
+}

@@ -108,7 +108,7 @@ pub struct PyHomology {
     generators: Option<Py<PyList>>,
 }
 
-fn natural_to_py(py: Python<'_>, n: &gmap::homology::Natural) -> PyResult<PyObject> {
+fn natural_to_py(py: Python<'_>, n: &gmap::algebra::Natural) -> PyResult<PyObject> {
     Ok(match n.to_u64() {
         Some(v) => v.into_pyobject(py)?.into_any().unbind(),
         None => n.to_biguint().into_pyobject(py)?.into_any().unbind(),
@@ -484,10 +484,8 @@ fn _build_grid(py: Python<'_>, shape: Vec<usize>, periodic: Option<&Bound<'_, Py
         Some(b) if b.is_instance_of::<pyo3::types::PyBool>() => vec![b.extract::<bool>()?; shape.len()],
         Some(v) => v.extract()?,
     };
-    if p.len() != shape.len() {
-        return Err(Failure::input(format!("periodic has {} entries for {} axes", p.len(), shape.len())).into());
-    }
-    // the builder refuses a grid past the dart limit or the memory limit before making it
+    // the builder refuses a flag count other than the axes', and a grid past the dart limit
+    // or the memory limit before making it
     build_result(py, py.allow_threads(|| gmap::ops::build::grid(&shape, &p)))
 }
 

@@ -6,7 +6,7 @@ use numpy::{PyArray1, PyArrayDescrMethods, PyArrayMethods, PyUntypedArrayMethods
 use pyo3::prelude::*;
 use pyo3::types::IntoPyDict;
 
-use gmap::homology::arch::ArchComplex;
+use gmap::algebra::arch::ArchComplex;
 use gmap::ops::import::{CubicalSet, Image, SimplicialComplex};
 use gmap::{CubesRef, Input, Sourced};
 

@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 
-use gmap::homology::persistence::{CellName, Construction, Diagram};
+use gmap::algebra::persistence::{CellName, Construction, Diagram};
 use gmap::persistence::{image_persistence, Pixels};
 use gmap::{Input, PersistenceOptions};
 use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};

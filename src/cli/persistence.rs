@@ -64,8 +64,8 @@ pub(crate) fn persistence(a: PersistenceArgs) -> gmap::Result<String> {
     let opts = gmap::PersistenceOptions {
         field: a.field,
         construction: match a.construction {
-            Construction::T => gmap::homology::persistence::Construction::T,
-            Construction::V => gmap::homology::persistence::Construction::V,
+            Construction::T => gmap::algebra::persistence::Construction::T,
+            Construction::V => gmap::algebra::persistence::Construction::V,
         },
         superlevel: a.superlevel,
         periodic: a.periodic,
