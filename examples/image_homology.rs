@@ -9,7 +9,7 @@
 
 use std::time::Instant;
 
-use gmap::algebra::cubical_pass::betti_one_pass;
+use gmap::algebra::cubical::pass::betti_one_pass;
 use gmap::ops::import::image::{Image, Level};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -19,7 +19,7 @@ seconds, maximum resident set size):
 * gmap with generators: `CMD FILE.npy --level 0.5 --timings --generators`, its text written
   to a file (`gen`; `genjson` the same with `--json`, about four times the bytes): in 1-D and
   2-D the cycles read off two union-finds, in 3-D those and the loops of a sweep over the
-  grid (`gmap_homology::cubical_gens`);
+  grid (`gmap_homology::cubical::gens`);
 * CubicalRipser: `np.load`, `astype(float64)` (the reading stage), then its T-construction,
   `cripser.computePH_T(a, maxdim=d-1, location="no")` (`computePH(a, top_dim=True)` is not
   it: that computes the V-construction's dimension d-1 alone, through Alexander duality);

@@ -42,9 +42,16 @@
 //!   - [`tm`]: TM's model in 2D and 3D: (6:1), views, sections, annotations, the edit check.
 //!   - [`simplices`]: any finite simplicial complex by its facets, every face a cell.
 //!   - [`json`]: the `.json` incidence-graph format; [`dot`]: Graphviz output.
+//!   - [`cubical`]: sets of cubes on their doubled grid ([`cubical::grid`], the one naming
+//!     of cubical cells and the one boundary formula): the complex of a set, and the routes
+//!     that need none or build it piece by piece ([`cubical::pass`], [`cubical::torus`],
+//!     [`cubical::gens`], [`cubical::slabs`], [`cubical::blocks`]).
+//! * [`persistence`]: persistence diagrams of filtered complexes: images on the doubled
+//!   grid ([`persistence::image`], [`persistence::gradient`]) and complexes given cell by
+//!   cell ([`persistence::filtered`]).
 //!
 //! Every module stays reachable at the crate root (`gmap_homology::sparse`,
-//! `gmap_homology::arch`, …).
+//! `gmap_homology::arch`, `gmap_homology::cubical`, …).
 //!
 //! ## Example
 //!
@@ -72,10 +79,7 @@ pub mod persistence;
 mod prefetch;
 
 pub use cellular::{border, checked, incidence, oriented, precond, simplicial};
-pub use complex::{
-    arch, cubical, cubical_blocks, cubical_gens, cubical_pass, cubical_slabs, cubical_torus, dot, ep, graphml, json,
-    lar, simplices, tm,
-};
+pub use complex::{arch, cubical, dot, ep, graphml, json, lar, simplices, tm};
 pub use engine::{chain, generators, homology, sparse};
 
 pub use border::CellularComplex;

@@ -2,9 +2,9 @@
 //! cubical complex, torsion included, in dimensions 1 to 4; the blocks' messages read back
 //! to the same blocks; the one-pass blocks' messages too.
 
+use gmap_homology::cubical::blocks::{block_complex, glue, BlockComplex};
 use gmap_homology::cubical::cubical_complex;
-use gmap_homology::cubical_blocks::{block_complex, glue, BlockComplex};
-use gmap_homology::cubical_pass::{block_pass, merge_blocks, BlockSummary};
+use gmap_homology::cubical::pass::{block_pass, merge_blocks, BlockSummary};
 use gmap_homology::{homology_z, Homology};
 use proptest::prelude::*;
 

@@ -1,4 +1,4 @@
-//! The generators of the one-pass route (`cubical_gens`) are a basis over Z of the homology of
+//! The generators of the one-pass route (`cubical::gens`) are a basis over Z of the homology of
 //! the set: each is a cycle of the set's cubical complex, there are `b_k` of them in each
 //! dimension, and coning them off kills all homology (torsion included), which holds exactly
 //! when they generate `H_k` over Z.
@@ -9,7 +9,7 @@ use common::random_bits;
 use std::collections::HashMap;
 
 use gmap_homology::cubical::cubical_complex_with;
-use gmap_homology::cubical_gens::{
+use gmap_homology::cubical::gens::{
     cubical_generators, cubical_generators_pairing, cubical_generators_tunnels, CubicalGenerators,
 };
 use gmap_homology::{homology_z, ChainComplex, SparseMatrix};

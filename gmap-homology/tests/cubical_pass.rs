@@ -2,7 +2,7 @@
 //! known sets and random images of every density.
 
 use gmap_homology::cubical::cubical_complex;
-use gmap_homology::cubical_pass::betti_one_pass;
+use gmap_homology::cubical::pass::betti_one_pass;
 use gmap_homology::homology_z;
 use proptest::prelude::*;
 
@@ -74,7 +74,7 @@ proptest! {
         density in 0u64..100,
         seed in any::<u64>(),
     ) {
-        use gmap_homology::cubical_pass::{block_pass, merge_blocks};
+        use gmap_homology::cubical::pass::{block_pass, merge_blocks};
         let mut shape = shape;
         shape[2] += extra;
         let bits = random_bits(shape.iter().product(), density, seed);

@@ -6,7 +6,7 @@ mod common;
 use common::random_bits;
 
 use gmap_homology::cubical::cubical_complex_with;
-use gmap_homology::cubical_slabs::cubical_complex_slabs;
+use gmap_homology::cubical::slabs::cubical_complex_slabs;
 use gmap_homology::{homology_z, Homology};
 use proptest::prelude::*;
 

@@ -2,7 +2,7 @@
 //! the periodic chain complex's, on known sets of the torus and on random images.
 
 use gmap_homology::cubical::cubical_complex;
-use gmap_homology::cubical_torus::betti_one_pass_periodic;
+use gmap_homology::cubical::torus::betti_one_pass_periodic;
 use gmap_homology::homology_z;
 use proptest::prelude::*;
 

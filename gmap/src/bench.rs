@@ -340,7 +340,7 @@ fn cubical_row(route: Route, cubes: Cubes<'_>, read: f64, periodic: bool) -> Res
     let t = Instant::now();
     Ok(match route {
         Route::OnePass => {
-            let r = gmap_homology::cubical_pass::betti_one_pass(&shape, |s, out| cubes.fill(s, out));
+            let r = gmap_homology::cubical::pass::betti_one_pass(&shape, |s, out| cubes.fill(s, out));
             times.reduction = Some(ms(t));
             let r = r.map(|p| Homology {
                 coefficients: gmap_homology::homology::Coefficients::Integers,
@@ -351,7 +351,7 @@ fn cubical_row(route: Route, cubes: Cubes<'_>, read: f64, periodic: bool) -> Res
         }
         Route::Cubical { whole: false } => {
             let slab = crate::cubes::slab_layers(&shape);
-            let c = gmap_homology::cubical_slabs::cubical_complex_slabs(
+            let c = gmap_homology::cubical::slabs::cubical_complex_slabs(
                 &shape,
                 |s, out| cubes.fill(s, out),
                 periodic,

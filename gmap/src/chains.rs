@@ -28,7 +28,7 @@ pub(crate) struct Named<'a> {
     pub(crate) name: Box<dyn Fn(usize, u32) -> CellName + 'a>,
     /// the chain complex is relative to vertices set aside (a cubical set reduced slab by
     /// slab): how its groups become the input's
-    pub(crate) relative: Option<gmap_homology::cubical_slabs::Relative>,
+    pub(crate) relative: Option<gmap_homology::cubical::slabs::Relative>,
 }
 
 /// The points of a map's darts, when it has any (for naming G-map cells).

@@ -221,8 +221,8 @@ pub(crate) fn image_set(img: &Image, level: Level, file: &str) -> Result<Cubical
     img.to_cubical_set(level).map_err(|e| Error::from_source(ErrorKind::Limit, e).context(file.to_string()))
 }
 
-/// The groups of cubes of dimension ≤ 3 in one pass over them (`gmap_homology::cubical_pass`,
-/// or `gmap_homology::cubical_torus` for a periodic box): no cubical complex, memory of a
+/// The groups of cubes of dimension ≤ 3 in one pass over them (`gmap_homology::cubical::pass`,
+/// or `gmap_homology::cubical::torus` for a periodic box): no cubical complex, memory of a
 /// layer (the torus: union-finds over the whole box). `None` for a periodic box whose
 /// union-finds would not fit in memory (the cubical complex, slab by slab, may still), said
 /// in a note. `fill(start, out)` writes the presence bytes of the cubes `start..start +
@@ -242,11 +242,11 @@ pub fn one_pass(
             return Ok(None);
         }
         o.progress.stage("one pass over the cubes of the torus: components of the set, of its complement and their windings, Euler characteristic");
-        let r = gmap_homology::cubical_torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
+        let r = gmap_homology::cubical::torus::betti_one_pass_periodic(shape, fill).map_err(limit)?;
         (r.betti, r.torsion)
     } else {
         o.progress.stage("one pass over the cubes: components of the set and of its complement, Euler characteristic");
-        let r = gmap_homology::cubical_pass::betti_one_pass(shape, fill).map_err(limit)?;
+        let r = gmap_homology::cubical::pass::betti_one_pass(shape, fill).map_err(limit)?;
         (r.betti, vec![Vec::new(); d + 1])
     };
     Ok(Some(groups_over(o.field, betti, torsion)))
@@ -255,7 +255,7 @@ pub fn one_pass(
 /// Whether the periodic one-pass route's union-finds over the whole box fit in memory.
 pub(crate) fn torus_fits(shape: &[usize]) -> bool {
     let what = "the periodic one-pass route";
-    gmap_core::resources::check_memory(what, gmap_homology::cubical_torus::bytes_needed(shape)).is_ok()
+    gmap_core::resources::check_memory(what, gmap_homology::cubical::torus::bytes_needed(shape)).is_ok()
 }
 
 /// Integer Betti numbers and torsion as groups over Z, or over Z/p by universal
@@ -279,7 +279,7 @@ fn groups_over(field: Option<u64>, betti: Vec<u64>, torsion: Vec<Vec<u64>>) -> g
 }
 
 /// The groups and a basis of cycles of a full cubical set of dimension ≤ 3 in a box that is
-/// not periodic, from union-finds and a sweep over the grid (`gmap_homology::cubical_gens`:
+/// not periodic, from union-finds and a sweep over the grid (`gmap_homology::cubical::gens`:
 /// a vertex per component, the boundary of each hole or cavity, in 3-D the fundamental
 /// cycles of the sweep's forest), in time linear in the cells plus the cycles' length:
 /// `bits` a byte per cube of `shape` (axis 0 fastest), the cells named by minimal vertex
@@ -298,7 +298,7 @@ pub fn sweep(
     check_field(o.field)?;
     o.progress
         .stage("one pass over the cells: components, the complement's components, the loops of a spanning forest");
-    let g = match gmap_homology::cubical_gens::cubical_generators(shape, bits) {
+    let g = match gmap_homology::cubical::gens::cubical_generators(shape, bits) {
         Ok(g) => g,
         Err(gmap_homology::cubical::CubicalError::NotReduced(why)) => {
             o.progress.note(&format!("{why}: the cubical complex instead"));
@@ -360,7 +360,7 @@ pub(crate) fn whole_grid_fits(shape: &[usize], periodic: bool) -> bool {
 /// The chain complex of cubes with their cells named by minimal vertex (`min`, the box's)
 /// and extent: the whole complex after collapses of free faces when `whole` (a set with
 /// cells of its own is always whole: they are marked on the grid), else built and reduced
-/// slab by slab (`gmap_homology::cubical_slabs`; collapses only with generators, so that
+/// slab by slab (`gmap_homology::cubical::slabs`; collapses only with generators, so that
 /// its cycles are the set's), read in storage order.
 pub(crate) fn complex(cubes: Cubes<'_>, whole: bool, o: &HomologyOptions, file: &str) -> Result<Named<'static>> {
     check_cubical_options(o, file)?;
@@ -392,7 +392,7 @@ pub(crate) fn complex(cubes: Cubes<'_>, whole: bool, o: &HomologyOptions, file: 
                 "building and reducing the cubical complex slab by slab"
             });
             let fill = |s: usize, out: &mut [u8]| cubes.fill(s, out);
-            gmap_homology::cubical_slabs::cubical_complex_slabs(
+            gmap_homology::cubical::slabs::cubical_complex_slabs(
                 &shape,
                 fill,
                 o.periodic,
@@ -415,7 +415,7 @@ fn named_cubes(
     c: gmap_homology::cubical::CubicalComplex,
     min: &[i64],
     generators: bool,
-    relative: Option<gmap_homology::cubical_slabs::Relative>,
+    relative: Option<gmap_homology::cubical::slabs::Relative>,
 ) -> Named<'static> {
     let names: Vec<Vec<(Vec<i64>, Vec<u8>)>> = if generators {
         let name = |k: usize, i: usize| {

@@ -5,13 +5,13 @@
 //! The image is cut along its slowest axis (the last of [`Image::memory_shape`]) into one
 //! slab of consecutive layers per process ([`gmap_core::parallel::split_ranges`]):
 //!
-//! * dimension 3: the one-pass route's blocks ([`gmap_homology::cubical_pass::block_pass`]:
+//! * dimension 3: the one-pass route's blocks ([`gmap_homology::cubical::pass::block_pass`]:
 //!   union-finds of the set and of its complement, χ; a block past the first also reads the
 //!   last layer of the one before, the shared layer), merged by
-//!   [`gmap_homology::cubical_pass::merge_blocks`]: the groups of `gmap homology`'s one-pass
+//!   [`gmap_homology::cubical::pass::merge_blocks`]: the groups of `gmap homology`'s one-pass
 //!   route, free by Alexander duality;
 //! * other dimensions: the slab's cubical complex reduced with its cells on the cuts kept
-//!   ([`gmap_homology::cubical_blocks`]), glued along the cut cells and finished by
+//!   ([`gmap_homology::cubical::blocks`]), glued along the cut cells and finished by
 //!   [`gmap_homology::homology_z`]: exact over `Z`, torsion included, the groups of the
 //!   cubical complex of the whole image.
 //!
@@ -32,8 +32,8 @@ use std::ops::Range;
 use std::path::Path;
 use std::time::Instant;
 
-use gmap_homology::cubical_blocks::{block_complex, glue, BlockComplex};
-use gmap_homology::cubical_pass::{block_pass, merge_blocks, BlockSummary, BYTES_PER_LAYER_CUBE};
+use gmap_homology::cubical::blocks::{block_complex, glue, BlockComplex};
+use gmap_homology::cubical::pass::{block_pass, merge_blocks, BlockSummary, BYTES_PER_LAYER_CUBE};
 use gmap_homology::homology::Coefficients;
 use gmap_homology::{homology_z, Homology};
 use gmap_ops::import::{Image, Level};

@@ -100,7 +100,7 @@ pub enum Pixels<'a> {
 /// The diagram of the image of shape `shape` (the engine's order, the fastest axis last).
 /// When its estimate fits the memory limit ([`check_image_memory`]) the whole grid is
 /// built (the values copied once if they are read one by one); past it, the Morse complex
-/// of its lower stars ([`gmap_homology::persistence::morse`]) is computed from the pixels
+/// of its lower stars ([`gmap_homology::persistence::gradient`]) is computed from the pixels
 /// as they are read, holding only its critical cells: refused with the estimate if the
 /// image is periodic, has more than 4 axes or cycles are asked for (that route takes none
 /// of these), and with the count if its critical cells pass the limit.
@@ -143,7 +143,7 @@ pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &Persistence
                 Pixels::Copied(fill) => {
                     // the copy, with the program itself, must fit under the limit
                     let bytes = shape.iter().try_fold(8u64, |b, &s| b.checked_mul(s as u64));
-                    let bytes = bytes.and_then(|b| b.checked_add(gmap_homology::persistence::cubical::PROCESS_BYTES));
+                    let bytes = bytes.and_then(|b| b.checked_add(gmap_homology::persistence::image::PROCESS_BYTES));
                     if bytes.is_none_or(|b| b > limit) {
                         return Err(whole);
                     }

@@ -52,7 +52,7 @@ fn a_bad_image_names_the_file() {
     assert!(e.contains("bad.npy"), "{e}");
 }
 
-/// A periodic image of dimension ≤ 3 takes the one-pass route (`cubical_torus`), torsion
+/// A periodic image of dimension ≤ 3 takes the one-pass route (`cubical::torus`), torsion
 /// included, and its groups equal the cubical complex's (`--generators` takes that route);
 /// over Z/2 the torsion Z/2 of H_1 adds a Z/2 to H_1 and to H_2.
 #[test]
@@ -91,7 +91,7 @@ fn periodic_images_take_the_one_pass_route() {
 }
 
 /// A 2-D image or cubical set with `--generators` takes the one-pass cycles
-/// (`cubical_gens`): the groups equal the cubical complex's, a vertex per component and the
+/// (`cubical::gens`): the groups equal the cubical complex's, a vertex per component and the
 /// outline of each hole, named in the input's axes (C order: the file's `(row, column)`), over
 /// Z/p with coefficients in `0..p`; the JSON written straight equals the JSON values'.
 #[test]

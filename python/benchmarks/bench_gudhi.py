@@ -16,7 +16,7 @@ Three tables:
    ``CubicalComplex(top_dimensional_cells=top)`` with 0 on the cubes of the set and 1
    elsewhere (made untimed), its Z/2 persistence and the Betti numbers of the sublevel
    set at 0 (the set); ours is ``gmap.homology(array)`` over Z, which for dimension <= 3
-   reads the array in place in one pass (``gmap_homology::cubical_pass``). Arrays over
+   reads the array in place in one pass (``gmap_homology::cubical::pass``). Arrays over
    10^6 cubes are run once per side. Wall and CPU times (process_time: every thread)
    are shown. Where GUDHI's complex would not fit in the available memory (about 300
    bytes per cell of the (2n+1)^d cells, measured on 128^3) its side is not run and the

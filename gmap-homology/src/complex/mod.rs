@@ -2,11 +2,6 @@
 
 pub mod arch;
 pub mod cubical;
-pub mod cubical_blocks;
-pub mod cubical_gens;
-pub mod cubical_pass;
-pub mod cubical_slabs;
-pub mod cubical_torus;
 pub mod dot;
 pub mod ep;
 pub mod graphml;

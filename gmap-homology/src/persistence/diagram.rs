@@ -25,7 +25,7 @@ pub enum PersistenceError {
 #[serde(untagged)]
 #[non_exhaustive]
 pub enum CellName {
-    /// an image cell by its doubled-grid coordinates (see [`cubical`])
+    /// an image cell by its doubled-grid coordinates (see [`crate::cubical::grid`])
     Grid(Vec<usize>),
     /// a simplex by its sorted vertex labels
     Simplex(Vec<u64>),

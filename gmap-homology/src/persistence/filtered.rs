@@ -8,16 +8,16 @@
 //! `make_filtration_non_decreasing`); per facet (the same with the facets); or by vertex
 //! values (the lower-star filtration: a simplex takes its largest vertex value).
 //!
-//! The diagram comes from [`super::reduce`] over every dimension from the top down with
-//! clearing. Cost: building the faces of a facet of dimension `n` is `2^(n+1)` subsets;
-//! the reduction is near linear on manifolds.
+//! The diagram comes from the column reduction (`pairing`, private) over every dimension
+//! from the top down with clearing. Cost: building the faces of a facet of dimension `n` is
+//! `2^(n+1)` subsets; the reduction is near linear on manifolds.
 
 use rustc_hash::FxHashMap;
 
 use gmap_core::labels::{to_dense_labels, LabelValue, LabelledGMap, Labels};
 
-use super::cubical::{check_field, key};
-use super::reduce::{reduce_dim, Entry};
+use super::image::{check_field, key};
+use super::pairing::{reduce_dim, Entry};
 use super::{CellName, Chain, Diagram, PersistenceError};
 use crate::arch::ArchComplex;
 use crate::{cellular_complex, ChainComplex};

@@ -1,7 +1,7 @@
 //! The options of an image's filtration, and the order of its values: shared by the general
-//! cubical route ([`super::cubical`]) and the lower-star fast path, which each read them.
+//! cubical route ([`super::image`]) and the lower-star fast path, which each read them.
 
-use super::reduce::Zp;
+use super::pairing::Zp;
 use super::PersistenceError;
 
 /// Where the array's values sit.

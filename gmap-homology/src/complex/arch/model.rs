@@ -48,7 +48,7 @@ pub struct Entry {
 }
 
 /// Why data is not an architectural complex (AC Def. 3.1). Regions are named by id; with
-/// [`ArchError::named`], by the names of the file ([`RegionNames`]).
+/// [`ArchError::named`], by the names of the file ([`RegionNames`](super::RegionNames)).
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ArchError {

@@ -1,6 +1,6 @@
 //! LAR, the Linear Algebraic Representation of cell complexes (LAR lecture): every p-cell
 //! is the set of its vertices, and the *characteristic matrix* `M_p` (one row per p-cell,
-//! one column per vertex, 1 where the vertex belongs to the cell) is a [`SparseMatrix`], the
+//! one column per vertex, 1 where the vertex belongs to the cell) is a [`SparseMatrix`](crate::SparseMatrix), the
 //! engine's own.
 //! Topological queries are sparse products:
 //! * `M_{p-1} M_p^T` counts the common vertices of a (p-1)-cell and a p-cell; the *count

@@ -69,7 +69,7 @@
 //! other), so [`BYTES_PER_CUBE`]. Time O(cubes · α) with path compression; one thread.
 //!
 //! ```
-//! use gmap_homology::cubical_torus::betti_one_pass_periodic;
+//! use gmap_homology::cubical::torus::betti_one_pass_periodic;
 //! // one full layer of a 3 × 3 × 3 torus: a 2-torus times an interval
 //! let bits: Vec<u8> = (0..27).map(|i| (i / 9 == 1) as u8).collect();
 //! let r = betti_one_pass_periodic(&[3, 3, 3], |s, out| out.copy_from_slice(&bits[s..s + out.len()])).unwrap();
@@ -79,7 +79,7 @@
 
 use gmap_core::union_find::UnionFind;
 
-use super::cubical::CubicalError;
+use super::CubicalError;
 
 /// What [`betti_one_pass_periodic`] found.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -32,12 +32,12 @@
 //! sends only its [`BlockSummary`]: O(layer) numbers, whatever the block's size.
 //!
 //! Periodic boxes (a torus, where Alexander duality in the sphere does not hold) have their
-//! own one-pass route ([`super::cubical_torus`]: duality in the torus, with the winding
+//! own one-pass route ([`super::torus`]: duality in the torus, with the winding
 //! lattice of the complement); dimensions ≥ 4 take the chain-complex route
-//! ([`super::cubical`]).
+//! ([`super`]).
 //!
 //! ```
-//! use gmap_homology::cubical_pass::betti_one_pass;
+//! use gmap_homology::cubical::pass::betti_one_pass;
 //! // a 3 × 3 × 3 block with its centre removed: a sphere
 //! let mut bits = vec![1u8; 27];
 //! bits[13] = 0;
@@ -49,8 +49,8 @@ use std::ops::Range;
 
 use gmap_core::union_find::UnionFind;
 
-use super::cubical::CubicalError;
-use super::wire::{Reader, Writer};
+use super::CubicalError;
+use crate::complex::wire::{Reader, Writer};
 
 /// What [`betti_one_pass`] found.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -1,12 +1,16 @@
 //! The cubical chain complex of a full cubical set, built directly on flat arrays.
 //!
 //! A set of `L_0 × … × L_{d-1}` box cubes (a bitmap) is the union of closed unit cubes; its
-//! cells are the elementary cubes of the closure. In doubled coordinates (a grid of `2L + 1`
-//! points per axis, `2L` on a periodic axis whose ends are identified) a point is a cell whose
-//! dimension is its number of odd coordinates, and a cube with minimal vertex `x` is the
-//! point `2x + 1`. The boundary of a cell sums its two faces along each odd axis `a`, with
-//! sign `(-1)^j` for the upper face and `-(-1)^j` for the lower one, `j` the number of odd
-//! axes before `a`.
+//! cells are the elementary cubes of the closure, named by the points of its doubled grid
+//! ([`grid`]: `2L + 1` points per axis, `2L` on a periodic axis whose ends are identified, a
+//! cell odd along the axes it spans, the cube with minimal vertex `x` at `2x + 1`). The
+//! boundary of a cell sums its two faces along each odd axis with the signs of
+//! [`grid::face_sign`].
+//!
+//! The routes that need no complex, or build it piece by piece, are the modules below:
+//! [`pass`] and [`torus`] (the groups of a set of dimension ≤ 3 in one pass, in a box or a
+//! torus), [`gens`] (their generators), [`slabs`] (the complex reduced slab by slab) and
+//! [`blocks`] (slabs reduced apart, for several processes).
 //!
 //! Before any matrix is built, free faces are collapsed on the grid itself (an elementary
 //! collapse removes a cell with a single coface together with that coface, which keeps the
@@ -23,9 +27,17 @@
 
 #![allow(clippy::needless_range_loop)] // axes index several arrays at once
 
+pub mod blocks;
+pub mod gens;
+pub mod grid;
+pub mod pass;
+pub mod slabs;
+pub mod torus;
+
 use thiserror::Error;
 
 use crate::{ChainComplex, SparseMatrix};
+use grid::{Grid, Order, Placement};
 
 /// Why the cubical complex of a set could not be built.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -83,15 +95,7 @@ pub struct CubicalComplex {
 impl CubicalComplex {
     /// The doubled coordinates of the i-th k-cell (odd along the axes it spans).
     pub fn coordinates(&self, k: usize, i: usize) -> Vec<usize> {
-        let mut p = self.cells[k][i] as usize;
-        self.grid
-            .iter()
-            .map(|&n| {
-                let c = p % n;
-                p /= n;
-                c
-            })
-            .collect()
+        grid::coordinates(&self.grid, Order::FirstFastest, self.cells[k][i] as usize)
     }
 
     /// The i-th k-cell as a product of intervals and points of the input's coordinates
@@ -121,43 +125,6 @@ const PRESENT: u8 = 1;
 const QUEUED: u8 = 2;
 /// a present cell that is never collapsed (shared with another slab)
 const FROZEN: u8 = 4;
-
-/// The doubled grid of a box.
-struct Grid {
-    n: Vec<usize>,
-    stride: Vec<usize>,
-    periodic: bool,
-    len: usize,
-}
-
-impl Grid {
-    fn coord(&self, p: usize, a: usize) -> usize {
-        (p / self.stride[a]) % self.n[a]
-    }
-
-    /// The two faces of `p` along odd axis `a` whose coordinate is `c` (lower, upper).
-    #[inline]
-    fn faces(&self, p: usize, a: usize, c: usize) -> (usize, usize) {
-        let s = self.stride[a];
-        let up = if c + 1 == self.n[a] { p - c * s } else { p + s };
-        (p - s, up)
-    }
-
-    /// The cofaces of `p` along even axis `a` whose coordinate is `c`.
-    #[inline]
-    fn cofaces(&self, p: usize, a: usize, c: usize) -> [Option<usize>; 2] {
-        let s = self.stride[a];
-        let lo = if c > 0 {
-            Some(p - s)
-        } else if self.periodic {
-            Some(p + (self.n[a] - 1) * s)
-        } else {
-            None
-        };
-        let hi = if c + 1 < self.n[a] { Some(p + s) } else { None };
-        [lo, hi]
-    }
-}
 
 /// The cubical chain complex of a set of box cubes, after collapses of free faces. `shape` is
 /// the box's number of cubes per axis, `bits` one byte a cube (non-zero: in the set), axis 0
@@ -219,7 +186,7 @@ pub(crate) fn slab_complex(
 ) -> Result<CubicalComplex, CubicalError> {
     let (g, mut state) = closed_grid(shape, bits, &[], false)?;
     let d = shape.len();
-    let (s, last) = (g.stride[d - 1], g.n[d - 1] - 1);
+    let (s, last) = (g.strides()[d - 1], g.points()[d - 1] - 1);
     for (shared, c) in [(shared_first, 0), (shared_last, last)] {
         if shared {
             for x in &mut state[c * s..(c + 1) * s] {
@@ -244,25 +211,19 @@ fn closed_grid(shape: &[usize], bits: &[u8], cells: &[usize], periodic: bool) ->
     if volume != Some(bits.len()) {
         return Err(CubicalError::BadShape(format!("{} bytes for the shape {shape:?}", bits.len())));
     }
-    let n: Vec<usize> = shape.iter().map(|&l| if periodic { 2 * l } else { 2 * l + 1 }).collect();
-    let len = n.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64)).filter(|&v| v <= MAX_GRID_POINTS);
-    let Some(len) = len else {
-        return Err(CubicalError::TooLarge {
-            points: n.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × "),
-            limit: MAX_GRID_POINTS,
-        });
+    let placement = if periodic { Placement::Periodic } else { Placement::Cubes };
+    let g = grid::point_count(shape, placement)
+        .filter(|&v| v <= MAX_GRID_POINTS)
+        .and_then(|_| Grid::of_box(shape, placement, Order::FirstFastest));
+    let Some(g) = g else {
+        return Err(CubicalError::TooLarge { points: grid::shown(shape, placement), limit: MAX_GRID_POINTS });
     };
     // the grid, its collapse stack and its cell numbers, before any of them is allocated
     gmap_core::resources::check_memory(
-        &format!("the cubical grid of {} points", n.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × ")),
-        len.checked_mul(gmap_core::resources::CUBICAL_BYTES_PER_POINT),
+        &format!("the cubical grid of {} points", grid::shown(shape, placement)),
+        grid::bytes(shape, placement, gmap_core::resources::CUBICAL_BYTES_PER_POINT),
     )?;
-    let len = len as usize;
-    let mut stride = vec![1usize; d];
-    for a in 1..d {
-        stride[a] = stride[a - 1] * n[a - 1];
-    }
-    let g = Grid { n, stride, periodic, len };
+    let len = g.len();
     let mut state: Vec<u8> = Vec::new();
     state.try_reserve_exact(len).map_err(|_| CubicalError::OutOfMemory { what: "the grid", bytes: len as u64 })?;
     state.resize(len, 0);
@@ -270,35 +231,37 @@ fn closed_grid(shape: &[usize], bits: &[u8], cells: &[usize], periodic: bool) ->
     if !cells.len().is_multiple_of(d) {
         return Err(CubicalError::BadShape(format!("{} cell coordinates for dimension {d}", cells.len())));
     }
-    mark_cubes(shape, &g.stride, bits, &mut state);
+    mark_cubes(shape, &g, bits, &mut state);
+    let (n, stride) = (g.points(), g.strides());
     for cell in cells.chunks_exact(d) {
         let mut p = 0usize;
         for a in 0..d {
             // the closed box's last hyperplane is the first one of a periodic box
-            let c = if periodic && cell[a] == g.n[a] { 0 } else { cell[a] };
-            if c >= g.n[a] {
+            let c = if periodic && cell[a] == n[a] { 0 } else { cell[a] };
+            if c >= n[a] {
                 return Err(CubicalError::BadShape(format!("the cell {cell:?} is outside the box {shape:?}")));
             }
-            p += c * g.stride[a];
+            p += c * stride[a];
         }
         state[p] = PRESENT;
     }
-    close_marked(&g.n, &g.stride, &mut state);
+    close_marked(&g, &mut state);
     Ok((g, state))
 }
 
-/// Marks [`PRESENT`] in `out` (a byte per point of the doubled grid `n`, with strides
-/// `stride`, axis 0 fastest) the cubes of `bits` (doubled point 2x + 1 of cube x of a box of
-/// `shape`) and every face of them: their closure. A last odd coordinate of a periodic grid
-/// (`n` even) has its upper face at 0. O(points × dimension).
-pub(crate) fn mark_closure(shape: &[usize], n: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
-    mark_cubes(shape, stride, bits, out);
-    close_marked(n, stride, out);
+/// Marks [`PRESENT`] in `out` (a byte per point of the doubled grid `g` of a box of `shape`
+/// cubes, axis 0 fastest) the cubes of `bits` (doubled point 2x + 1 of cube x) and every
+/// face of them: their closure. A last odd coordinate of a periodic grid has its upper face
+/// at 0. O(points × dimension).
+pub(crate) fn mark_closure(shape: &[usize], g: &Grid, bits: &[u8], out: &mut [u8]) {
+    mark_cubes(shape, g, bits, out);
+    close_marked(g, out);
 }
 
 /// Marks [`PRESENT`] the cubes of `bits` (doubled point 2x + 1 of cube x). O(cubes × d).
-fn mark_cubes(shape: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
+fn mark_cubes(shape: &[usize], g: &Grid, bits: &[u8], out: &mut [u8]) {
     let d = shape.len();
+    let stride = g.strides();
     let mut x = vec![0usize; d];
     for &b in bits {
         if b != 0 {
@@ -316,11 +279,12 @@ fn mark_cubes(shape: &[usize], stride: &[usize], bits: &[u8], out: &mut [u8]) {
 }
 
 /// Marks [`PRESENT`] every face of the marked cells of `out`: along each axis in turn, a
-/// point with an odd coordinate marks its two faces. O(points × d).
-fn close_marked(n: &[usize], stride: &[usize], out: &mut [u8]) {
-    let (d, len) = (n.len(), out.len());
+/// point with an odd coordinate marks its two faces ([`Grid::faces_along`], a row of the
+/// axis's stride at a time). O(points × d).
+fn close_marked(g: &Grid, out: &mut [u8]) {
+    let (d, len) = (g.axes(), out.len());
     for a in 0..d {
-        let (s, na) = (stride[a], n[a]);
+        let (s, na) = (g.strides()[a], g.points()[a]);
         let block = s * na;
         for base in (0..len).step_by(block) {
             for c in (1..na).step_by(2) {
@@ -341,9 +305,9 @@ fn close_marked(n: &[usize], stride: &[usize], out: &mut [u8]) {
 /// until none is left, on the grid itself; [`FROZEN`] cells are never collapsed. Each removal
 /// queues the faces of the two cells removed, whose cofaces changed.
 fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
-    let d = g.n.len();
+    let d = g.axes();
     let mut stack: Vec<u32> = Vec::new();
-    for p in (0..g.len).rev() {
+    for p in (0..g.len()).rev() {
         if state[p] & (PRESENT | FROZEN) == PRESENT {
             state[p] |= QUEUED;
             stack.push(p as u32);
@@ -361,7 +325,7 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
         for (a, c) in coord.iter_mut().enumerate() {
             *c = g.coord(p, a);
             if c.is_multiple_of(2) {
-                for q in g.cofaces(p, a, *c).into_iter().flatten() {
+                for q in g.cofaces_along(p, a, *c).into_iter().flatten() {
                     if state[q] & PRESENT != 0 {
                         count += 1;
                         found = Some(q);
@@ -380,7 +344,7 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
             for a in 0..d {
                 let c = g.coord(cell, a);
                 if c % 2 == 1 {
-                    let (lo, up) = g.faces(cell, a, c);
+                    let (lo, up) = g.faces_along(cell, a, c);
                     for q in [lo, up] {
                         if state[q] == PRESENT {
                             state[q] |= QUEUED;
@@ -395,11 +359,11 @@ fn collapse_free_faces(g: &Grid, state: &mut [u8]) {
 
 /// Numbers the present cells per dimension in grid order and builds the boundaries.
 fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
-    let d = g.n.len();
+    let (d, n) = (g.axes(), g.points());
     let mut idx: Vec<u32> = Vec::new();
-    idx.try_reserve_exact(g.len)
-        .map_err(|_| CubicalError::OutOfMemory { what: "the cell numbers", bytes: 4 * g.len as u64 })?;
-    idx.resize(g.len, u32::MAX);
+    idx.try_reserve_exact(g.len())
+        .map_err(|_| CubicalError::OutOfMemory { what: "the cell numbers", bytes: 4 * g.len() as u64 })?;
+    idx.resize(g.len(), u32::MAX);
     let mut counts = vec![0usize; d + 1];
     let mut coord = vec![0usize; d];
     let mut odd = 0usize;
@@ -412,7 +376,7 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
         }
         for a in 0..d {
             coord[a] += 1;
-            if coord[a] < g.n[a] {
+            if coord[a] < n[a] {
                 // the coordinate's parity flipped
                 if coord[a] & 1 == 1 {
                     odd += 1;
@@ -422,7 +386,7 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
                 break;
             }
             // wrapped from n_a - 1 to 0: that coordinate was odd iff n_a is even
-            if g.n[a].is_multiple_of(2) {
+            if n[a].is_multiple_of(2) {
                 odd -= 1;
             }
             coord[a] = 0;
@@ -441,25 +405,20 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
         c.push(0);
     }
     let mut entries: Vec<(u32, i64)> = Vec::with_capacity(2 * d);
-    for p in 0..g.len {
+    for p in 0..g.len() {
         if state[p] & PRESENT == 0 {
             continue;
         }
         entries.clear();
-        let mut j = 0usize;
-        for a in 0..d {
-            let c = g.coord(p, a);
-            if c % 2 == 1 {
-                let sign = if j.is_multiple_of(2) { 1 } else { -1 };
-                j += 1;
-                let (lo, up) = g.faces(p, a, c);
-                if lo != up {
-                    entries.push((idx[lo], -sign));
-                    entries.push((idx[up], sign));
-                }
+        let mut k = 0usize;
+        g.for_each_face(p, |lo, up, sign| {
+            k += 1;
+            // a periodic axis of one cube: the two faces are one, their entries cancel
+            if lo != up {
+                entries.push((idx[lo], -sign));
+                entries.push((idx[up], sign));
             }
-        }
-        let k = j;
+        });
         if k == 0 {
             continue;
         }
@@ -484,7 +443,7 @@ fn build(g: &Grid, state: &[u8]) -> Result<CubicalComplex, CubicalError> {
     }
     let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries)
         .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
-    Ok(CubicalComplex { chain, cells, grid: g.n.clone() })
+    Ok(CubicalComplex { chain, cells, grid: g.points().to_vec() })
 }
 
 #[cfg(test)]

@@ -1,9 +1,9 @@
 //! The cubical chain complex of a set of any dimension, built and reduced slab by slab, so
 //! that memory grows with a slab and with the reduced complex, not with the box.
 //!
-//! The cells are the points of the doubled grid ([`super::cubical`]): `2L + 1` points per axis
+//! The cells are the points of the doubled grid ([`super::grid`]): `2L + 1` points per axis
 //! (`2L` on a periodic axis). The box is read one layer of cubes across its slowest axis at a
-//! time (`fill`, as in [`super::cubical_pass`]); the cells of doubled layers `2z`, `2z + 1`
+//! time (`fill`, as in [`super::pass`]); the cells of doubled layers `2z`, `2z + 1`
 //! and `2z + 2` that the closure of layer `z` adds are added to the complex. Every `slab`
 //! layers the complex is reduced by pairs that keep the homology and need no arithmetic:
 //!
@@ -42,7 +42,7 @@
 //! behind. Time: O(points · d) checks, each of O(d) lookups.
 //!
 //! ```
-//! use gmap_homology::{cubical_slabs::cubical_complex_slabs, homology_z};
+//! use gmap_homology::{cubical::slabs::cubical_complex_slabs, homology_z};
 //! // a 3 × 3 × 3 block with its centre removed: a sphere, read one layer at a time
 //! let mut bits = vec![1u8; 27];
 //! bits[13] = 0;
@@ -58,7 +58,8 @@ use rustc_hash::{FxHashMap, FxHashSet};
 
 use gmap_core::union_find::UnionFind;
 
-use super::cubical::{mark_closure, CubicalComplex, CubicalError};
+use super::grid::{self, Grid, Order, Placement};
+use super::{mark_closure, CubicalComplex, CubicalError};
 use crate::{ChainComplex, Homology, SparseMatrix};
 
 const PRESENT: u8 = 1;
@@ -71,44 +72,36 @@ pub const BYTES_PER_SURVIVOR: u64 = 24;
 
 /// The doubled grid and the cells alive in it.
 struct Slabs {
-    /// points per axis
-    n: Vec<usize>,
-    /// global stride per axis (axis `d - 1`, the slowest, is the layer)
-    stride: Vec<u64>,
+    /// the whole box's doubled grid, axis 0 fastest (axis `d - 1`, the slowest, is the layer)
+    grid: Grid,
     /// points of one doubled layer
-    layer: u64,
-    periodic: bool,
+    layer: usize,
     /// dense rows of the layers in the slab (and layer 0 of a periodic box), by layer
     rows: Vec<Option<Box<[u8]>>>,
     /// the surviving points of layers whose row was released
-    behind: FxHashSet<u64>,
+    behind: FxHashSet<usize>,
     /// the lowest layer a collapse may not start from (the frontier), `usize::MAX` for none
     frontier: usize,
     /// layer 0 is closed to collapses (a periodic slowest axis before the last layer)
     hold_zero: bool,
     coreductions: bool,
     /// cells to check
-    queue: Vec<u64>,
+    queue: Vec<usize>,
     /// vertices set aside (the complex is relative to them)
     set_aside: u64,
 }
 
 impl Slabs {
     #[inline]
-    fn coord(&self, p: u64, a: usize) -> usize {
-        ((p / self.stride[a]) % self.n[a] as u64) as usize
+    fn layer_of(&self, p: usize) -> usize {
+        p / self.layer
     }
 
     #[inline]
-    fn layer_of(&self, p: u64) -> usize {
-        (p / self.layer) as usize
-    }
-
-    #[inline]
-    fn state(&self, p: u64) -> u8 {
+    fn state(&self, p: usize) -> u8 {
         let s = self.layer_of(p);
         match &self.rows[s] {
-            Some(row) => row[(p % self.layer) as usize],
+            Some(row) => row[p % self.layer],
             None => {
                 if self.behind.contains(&p) {
                     PRESENT | ALIVE
@@ -120,26 +113,26 @@ impl Slabs {
     }
 
     #[inline]
-    fn alive(&self, p: u64) -> bool {
+    fn alive(&self, p: usize) -> bool {
         self.state(p) & ALIVE != 0
     }
 
-    fn kill(&mut self, p: u64) {
+    fn kill(&mut self, p: usize) {
         let s = self.layer_of(p);
         let layer = self.layer;
         match &mut self.rows[s] {
-            Some(row) => row[(p % layer) as usize] &= !ALIVE,
+            Some(row) => row[p % layer] &= !ALIVE,
             None => {
                 self.behind.remove(&p);
             }
         }
     }
 
-    fn push(&mut self, p: u64) {
+    fn push(&mut self, p: usize) {
         let s = self.layer_of(p);
         let layer = self.layer;
         if let Some(row) = &mut self.rows[s] {
-            let x = &mut row[(p % layer) as usize];
+            let x = &mut row[p % layer];
             if *x & QUEUED != 0 {
                 return;
             }
@@ -148,51 +141,28 @@ impl Slabs {
         self.queue.push(p);
     }
 
-    /// The two faces of `p` along odd axis `a` at coordinate `c`; `None` where they are one
-    /// point (a periodic axis of one cube: the entries cancel).
+    /// The two faces (`faces = true`, `c` odd) or cofaces (`c` even) of `p` along axis `a`,
+    /// where `c` is `p`'s coordinate on it; none where the two are one point (a periodic
+    /// axis of one cube: their entries cancel).
     #[inline]
-    fn faces(&self, p: u64, a: usize, c: usize) -> Option<(u64, u64)> {
-        let s = self.stride[a];
-        let up = if c + 1 == self.n[a] { p - c as u64 * s } else { p + s };
-        let lo = p - s;
-        (lo != up).then_some((lo, up))
-    }
-
-    /// The cofaces of `p` along even axis `a` at coordinate `c`.
-    #[inline]
-    fn cofaces(&self, p: u64, a: usize, c: usize) -> [Option<u64>; 2] {
-        let s = self.stride[a];
-        let n = self.n[a];
-        let lo = if c > 0 {
-            Some(p - s)
-        } else if self.periodic {
-            Some(p + (n as u64 - 1) * s)
+    fn across(&self, p: usize, a: usize, c: usize, faces: bool) -> [Option<usize>; 2] {
+        let [lo, hi] = if faces {
+            let (lo, up) = self.grid.faces_along(p, a, c);
+            [Some(lo), Some(up)]
         } else {
-            None
+            self.grid.cofaces_along(p, a, c)
         };
-        let hi = if c + 1 < n { Some(p + s) } else { None };
         if lo.is_some() && lo == hi {
             return [None, None];
         }
         [lo, hi]
     }
 
-    /// The two faces (`faces = true`, `c` odd) or cofaces (`c` even) of `p` along axis `a`,
-    /// where `c` is `p`'s coordinate on it.
-    #[inline]
-    fn across(&self, p: u64, a: usize, c: usize, faces: bool) -> [Option<u64>; 2] {
-        if faces {
-            self.faces(p, a, c).map_or([None, None], |(l, u)| [Some(l), Some(u)])
-        } else {
-            self.cofaces(p, a, c)
-        }
-    }
-
     /// The alive faces (`faces = true`) or cofaces of `p`: their number, and one of them.
-    fn neighbours(&self, p: u64, faces: bool) -> (usize, u64) {
+    fn neighbours(&self, p: usize, faces: bool) -> (usize, usize) {
         let (mut count, mut one) = (0, 0);
-        for a in 0..self.n.len() {
-            let c = self.coord(p, a);
+        for a in 0..self.grid.axes() {
+            let c = self.grid.coord(p, a);
             if (c % 2 == 1) == faces {
                 let pair = self.across(p, a, c, faces);
                 for q in pair.into_iter().flatten() {
@@ -207,9 +177,9 @@ impl Slabs {
     }
 
     /// Queues the alive faces (`faces = true`) or cofaces of `p`.
-    fn push_neighbours(&mut self, p: u64, faces: bool) {
-        for a in 0..self.n.len() {
-            let c = self.coord(p, a);
+    fn push_neighbours(&mut self, p: usize, faces: bool) {
+        for a in 0..self.grid.axes() {
+            let c = self.grid.coord(p, a);
             if (c % 2 == 1) == faces {
                 let pair = self.across(p, a, c, faces);
                 for q in pair.into_iter().flatten() {
@@ -221,7 +191,7 @@ impl Slabs {
         }
     }
 
-    fn may_collapse(&self, p: u64) -> bool {
+    fn may_collapse(&self, p: usize) -> bool {
         let s = self.layer_of(p);
         s < self.frontier && !(self.hold_zero && s == 0)
     }
@@ -232,7 +202,7 @@ impl Slabs {
             let s = self.layer_of(p);
             let layer = self.layer;
             if let Some(row) = &mut self.rows[s] {
-                row[(p % layer) as usize] &= !QUEUED;
+                row[p % layer] &= !QUEUED;
             }
             if !self.alive(p) {
                 continue;
@@ -267,12 +237,12 @@ impl Slabs {
     /// layer `s` that were never present there, and queues them.
     fn add(&mut self, s: usize, closed: &[u8]) {
         let layer = self.layer;
-        let row = self.rows[s].get_or_insert_with(|| vec![0u8; layer as usize].into_boxed_slice());
+        let row = self.rows[s].get_or_insert_with(|| vec![0u8; layer].into_boxed_slice());
         let mut fresh = Vec::new();
         for (x, (&c, r)) in closed.iter().zip(row.iter_mut()).enumerate() {
             if c != 0 && *r & PRESENT == 0 {
                 *r = PRESENT | ALIVE | QUEUED;
-                fresh.push(s as u64 * layer + x as u64);
+                fresh.push(s * layer + x);
             }
         }
         self.queue.extend(fresh);
@@ -285,7 +255,7 @@ impl Slabs {
             for (x, r) in row.iter_mut().enumerate() {
                 if *r & ALIVE != 0 && *r & QUEUED == 0 {
                     *r |= QUEUED;
-                    self.queue.push(s as u64 * layer + x as u64);
+                    self.queue.push(s * layer + x);
                 }
             }
         }
@@ -299,8 +269,8 @@ impl Slabs {
         }
         let layer = self.layer;
         for x in 0..layer {
-            let p = s as u64 * layer + x;
-            if self.alive(p) && (0..self.n.len() - 1).all(|a| self.coord(p, a).is_multiple_of(2)) {
+            let p = s * layer + x;
+            if self.alive(p) && (0..self.grid.axes() - 1).all(|a| self.grid.coord(p, a).is_multiple_of(2)) {
                 self.kill(p);
                 self.set_aside += 1;
                 self.push_neighbours(p, false);
@@ -315,22 +285,18 @@ impl Slabs {
         if let Some(row) = self.rows[s].take() {
             for (x, &r) in row.iter().enumerate() {
                 if r & ALIVE != 0 {
-                    self.behind.insert(s as u64 * layer + x as u64);
+                    self.behind.insert(s * layer + x);
                 }
             }
         }
     }
 }
 
-/// The closure of one layer of cubes in its doubled layer grid (axes `0 .. d - 1` of `n`): a
-/// byte per point, non-zero where a cube of `bits` has the point as a face.
-fn close_layer(shape: &[usize], n: &[usize], bits: &[u8], out: &mut [u8]) {
+/// The closure of one layer of cubes (of `shape`) in its doubled layer grid `g`: a byte per
+/// point, non-zero where a cube of `bits` has the point as a face.
+fn close_layer(shape: &[usize], g: &Grid, bits: &[u8], out: &mut [u8]) {
     out.fill(0);
-    let mut stride = vec![1usize; n.len()];
-    for a in 1..n.len() {
-        stride[a] = stride[a - 1] * n[a - 1];
-    }
-    mark_closure(shape, n, &stride, bits, out);
+    mark_closure(shape, g, bits, out);
 }
 
 /// The cubical chain complex of the set of a box of `shape` cubes (axis 0 fastest, any
@@ -339,7 +305,7 @@ fn close_layer(shape: &[usize], n: &[usize], bits: &[u8], out: &mut [u8]) {
 /// (see the [module docs](self)). `periodic` identifies opposite faces of the box;
 /// `keep_subcomplex` makes collapses only, so that the cycles of the result are cycles of the
 /// set (for generators). The cells of the result are named by their doubled-grid points, as
-/// those of [`super::cubical::cubical_complex`]; its homology, through
+/// those of [`super::cubical_complex`]; its homology, through
 /// [`SlabComplex::absolute`], is theirs.
 ///
 /// Refuses an empty shape, a grid past `u64`, or rows over the memory limit; the survivors
@@ -355,31 +321,24 @@ pub fn cubical_complex_slabs(
     if d == 0 || shape.contains(&0) {
         return Err(CubicalError::BadShape(format!("shape {shape:?}")));
     }
-    let n: Vec<usize> = shape.iter().map(|&l| if periodic { 2 * l } else { 2 * l + 1 }).collect();
-    let too_large = || CubicalError::TooLarge {
-        points: n.iter().map(|s| s.to_string()).collect::<Vec<_>>().join(" × "),
-        limit: u64::MAX,
-    };
-    let total = n.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64)).ok_or_else(too_large)?;
-    let layer = total / n[d - 1] as u64;
+    let placement = if periodic { Placement::Periodic } else { Placement::Cubes };
+    let grid = Grid::of_box(shape, placement, Order::FirstFastest)
+        .ok_or_else(|| CubicalError::TooLarge { points: grid::shown(shape, placement), limit: u64::MAX })?;
+    let n = grid.points().to_vec();
+    let layer = grid.strides()[d - 1];
+    // the doubled grid of one layer: the box's first d - 1 axes
+    let layer_grid = Grid::new(n[..d - 1].to_vec(), periodic, Order::FirstFastest).expect("a part of the grid");
     let cubes_per_layer: usize = shape[..d - 1].iter().product();
     let slab = slab.max(1);
-    let rows_held = (2 * slab as u64 + 2) * layer;
+    let rows_held = (2 * slab as u64 + 2) * layer as u64;
     gmap_core::resources::check_memory(
         "the rows of the slab-by-slab cubical complex",
-        rows_held.checked_add(2 * layer).and_then(|b| b.checked_add(cubes_per_layer as u64)),
+        rows_held.checked_add(2 * layer as u64).and_then(|b| b.checked_add(cubes_per_layer as u64)),
     )?;
-    let usize_layer = usize::try_from(layer).map_err(|_| too_large())?;
-    let mut stride = vec![1u64; d];
-    for a in 1..d {
-        stride[a] = stride[a - 1] * n[a - 1] as u64;
-    }
     let slow = shape[d - 1];
     let mut g = Slabs {
-        n: n.clone(),
-        stride,
+        grid,
         layer,
-        periodic,
         rows: (0..n[d - 1]).map(|_| None).collect(),
         behind: FxHashSet::default(),
         frontier: 0,
@@ -391,7 +350,7 @@ pub fn cubical_complex_slabs(
     let seed = !keep_subcomplex && !periodic;
     let mut components = Components::new(&shape[..d - 1]);
     let mut bits = vec![0u8; cubes_per_layer];
-    let mut closed = vec![0u8; usize_layer];
+    let mut closed = vec![0u8; layer];
     let top_of = |z: usize| if periodic && z + 1 == slow { 0 } else { 2 * z + 2 };
     // the first layer that has not been released to the hash set
     let mut kept_from = 0usize;
@@ -403,7 +362,7 @@ pub fn cubical_complex_slabs(
         if d == 1 {
             closed[0] = bits[0];
         } else {
-            close_layer(&shape[..d - 1], &n[..d - 1], &bits, &mut closed);
+            close_layer(&shape[..d - 1], &layer_grid, &bits, &mut closed);
         }
         let top = top_of(z);
         g.frontier = 2 * z + 2;
@@ -445,12 +404,10 @@ pub fn cubical_complex_slabs(
             }
         }
     }
-    let mut survivors: Vec<u64> = g.behind.iter().copied().collect();
+    let mut survivors: Vec<usize> = g.behind.iter().copied().collect();
     for (s, row) in g.rows.iter().enumerate() {
         if let Some(row) = row {
-            survivors.extend(
-                row.iter().enumerate().filter(|(_, &r)| r & ALIVE != 0).map(|(x, _)| s as u64 * layer + x as u64),
-            );
+            survivors.extend(row.iter().enumerate().filter(|(_, &r)| r & ALIVE != 0).map(|(x, _)| s * layer + x));
         }
     }
     survivors.sort_unstable();
@@ -628,41 +585,35 @@ impl Components {
 }
 
 /// The chain complex of the surviving points: the boundary restricted to them.
-fn build(g: &Slabs, survivors: &[u64]) -> Result<CubicalComplex, CubicalError> {
-    let d = g.n.len();
-    let dim = |p: u64| (0..d).filter(|&a| g.coord(p, a) % 2 == 1).count();
+fn build(g: &Slabs, survivors: &[usize]) -> Result<CubicalComplex, CubicalError> {
+    let d = g.grid.axes();
     let mut cells: Vec<Vec<u64>> = vec![Vec::new(); d + 1];
-    let mut index: FxHashMap<u64, u32> = FxHashMap::default();
+    let mut index: FxHashMap<usize, u32> = FxHashMap::default();
     for &p in survivors {
-        let k = dim(p);
+        let k = g.grid.dim(p);
         let i = u32::try_from(cells[k].len()).map_err(|_| CubicalError::TooLarge {
             points: format!("{} surviving {k}-cells", cells[k].len()),
             limit: u32::MAX as u64,
         })?;
         index.insert(p, i);
-        cells[k].push(p);
+        cells[k].push(p as u64);
     }
     let mut boundaries = Vec::with_capacity(d);
     for k in 1..=d {
         let mut columns: Vec<Vec<(u32, i64)>> = Vec::with_capacity(cells[k].len());
         for &p in &cells[k] {
             let mut col = Vec::with_capacity(2 * k);
-            let mut j = 0usize;
-            for a in 0..d {
-                let c = g.coord(p, a);
-                if c % 2 == 1 {
-                    let sign = if j.is_multiple_of(2) { 1 } else { -1 };
-                    j += 1;
-                    if let Some((lo, up)) = g.faces(p, a, c) {
-                        if let Some(&r) = index.get(&lo) {
-                            col.push((r, -sign));
-                        }
-                        if let Some(&r) = index.get(&up) {
-                            col.push((r, sign));
-                        }
+            g.grid.for_each_face(p as usize, |lo, up, sign| {
+                // a periodic axis of one cube: the two faces are one, their entries cancel
+                if lo != up {
+                    if let Some(&r) = index.get(&lo) {
+                        col.push((r, -sign));
+                    }
+                    if let Some(&r) = index.get(&up) {
+                        col.push((r, sign));
                     }
                 }
-            }
+            });
             col.sort_unstable_by_key(|e| e.0);
             columns.push(col);
         }
@@ -673,5 +624,5 @@ fn build(g: &Slabs, survivors: &[u64]) -> Result<CubicalComplex, CubicalError> {
     let counts = cells.iter().map(Vec::len).collect();
     let chain = ChainComplex::try_new_unchecked_dd(counts, boundaries)
         .map_err(|e| CubicalError::BadShape(format!("internal: {e}")))?;
-    Ok(CubicalComplex { chain, cells, grid: g.n.clone() })
+    Ok(CubicalComplex { chain, cells, grid: g.grid.points().to_vec() })
 }

@@ -3,7 +3,7 @@
 //!
 //! The box's cubes are cut along its slowest axis (the last one, axis 0 fastest) into
 //! slabs of consecutive layers. Slab `i` builds the cubical complex of the closure of its
-//! own cubes ([`super::cubical`]'s doubled grid); its cells on a cut between two slabs —
+//! own cubes (on its doubled grid, [`super::grid`]); its cells on a cut between two slabs —
 //! the hyperplanes of the doubled grid at the cut — are **shared**, every other cell is
 //! **interior**. An interior cell's cofaces in the whole set are those it has in its slab
 //! (a cube of another slab reaches no further than the cut), so:
@@ -26,12 +26,12 @@
 //! images measured, about as many as the slab's own Betti numbers). Time: the cubical
 //! complex's, per slab.
 //!
-//! Dimension ≤ 3 images, whose one-pass route ([`super::cubical_pass`]) needs no complex,
-//! are cut by [`super::cubical_pass::block_pass`] instead; this route serves every
+//! Dimension ≤ 3 images, whose one-pass route ([`super::pass`]) needs no complex,
+//! are cut by [`super::pass::block_pass`] instead; this route serves every
 //! dimension and is checked against it.
 //!
 //! ```
-//! use gmap_homology::cubical_blocks::{block_complex, glue};
+//! use gmap_homology::cubical::blocks::{block_complex, glue};
 //! use gmap_homology::homology_z;
 //! // a 3 × 3 ring of squares, two layers thick, cut between its layers: a solid torus
 //! let ring = [1u8, 1, 1, 1, 0, 1, 1, 1, 1];
@@ -47,8 +47,9 @@ use std::ops::Range;
 
 use rustc_hash::FxHashMap;
 
-use super::cubical::{slab_complex, CubicalError};
-use super::wire::{Reader, Writer};
+use super::grid::{Grid, Order};
+use super::{slab_complex, CubicalError};
+use crate::complex::wire::{Reader, Writer};
 use crate::homology::reduce_keeping;
 use crate::{ChainComplex, SparseMatrix};
 
@@ -169,15 +170,17 @@ pub fn block_complex(
     let (first, last) = (layers.start > 0, layers.end < n);
     let c = slab_complex(&local, &bits, first, last)?;
     drop(bits);
-    // the doubled grid's points of one hyperplane of the last axis, here and in the whole
-    let plane = c.grid[..d - 1].iter().product::<usize>() as u64;
-    let top = (c.grid[d - 1] - 1) as u64;
+    // the slab's doubled grid: a hyperplane of its last axis has the same points as one of
+    // the whole, whose doubled layer 2 · layers.start is the slab's first
+    let g = Grid::new(c.grid.clone(), false, Order::FirstFastest)
+        .ok_or_else(|| CubicalError::Internal(format!("the slab's grid {:?}", c.grid)))?;
+    let (plane, top) = (g.strides()[d - 1], g.points()[d - 1] - 1);
     let shared = |p: u64| {
-        let z = p / plane;
+        let z = g.coord(p as usize, d - 1);
         (first && z == 0) || (last && z == top)
     };
     let r = reduce_keeping(&c.chain, |k, j| shared(c.cells[k][j]));
-    let offset = 2 * layers.start as u64 * plane;
+    let offset = (2 * layers.start * plane) as u64;
     let keys = r
         .ids
         .iter()

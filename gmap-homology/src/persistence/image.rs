@@ -2,8 +2,9 @@
 //!
 //! ## The grid
 //!
-//! Cells live on a doubled grid, last axis fastest (numpy's C order): a point with `k` odd
-//! coordinates is a `k`-cell. The two constructions place the array differently:
+//! Cells live on a doubled grid ([`crate::cubical::grid`]), last axis fastest (numpy's C
+//! order): a point with `k` odd coordinates is a `k`-cell. The two constructions place the
+//! array differently:
 //!
 //! * **T-construction** (`Construction::T`, GUDHI's `CubicalComplex(top_dimensional_cells=…)`):
 //!   pixel `(i, j, …)` is the top cell `(2i+1, 2j+1, …)` of a grid of `2n+1` points per axis;
@@ -29,7 +30,7 @@
 //!   (d-1)-cells are negative, so the matrix reduction below skips the others (clearing).
 //!   On a torus each dual component left at the end is an essential d-class, and the
 //!   positive (d-1)-cells no d-cell kills are essential (d-1)-classes.
-//! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing ([`super::reduce`]),
+//! * Dimensions 1 to d-2 by column reduction over `Z/p` with clearing (`pairing`, private),
 //!   the boundary computed from the grid as columns are asked for.
 //! * With representative cycles asked for, every dimension down to 1 goes through the
 //!   reduction (it gives the reduced columns and `V`).
@@ -40,103 +41,16 @@
 
 pub(crate) use super::options::{check_field, key, unkey};
 pub use super::options::{Construction, CubicalOptions};
-use super::reduce::{reduce_dim, Entry};
+use super::pairing::{reduce_dim, Entry};
 use super::{CellName, Diagram, PersistenceError};
+use crate::complex::cubical::grid::{self, Grid, Order, Placement};
 
-/// The doubled grid, last axis fastest.
-#[derive(Clone, Debug)]
-pub(crate) struct Grid {
-    pub(crate) m: Vec<usize>,
-    pub(crate) stride: Vec<usize>,
-    periodic: bool,
-    pub(crate) len: usize,
-}
-
-impl Grid {
-    pub(crate) fn new(m: Vec<usize>, periodic: bool) -> Option<Self> {
-        let d = m.len();
-        let mut stride = vec![1usize; d];
-        let mut len = 1usize;
-        for a in (0..d).rev() {
-            stride[a] = len;
-            len = len.checked_mul(m[a])?;
-        }
-        Some(Grid { m, stride, periodic, len })
-    }
-
-    fn d(&self) -> usize {
-        self.m.len()
-    }
-
-    #[inline]
-    pub(crate) fn coord(&self, g: usize, a: usize) -> usize {
-        (g / self.stride[a]) % self.m[a]
-    }
-
-    pub(crate) fn coords(&self, g: usize) -> Vec<usize> {
-        (0..self.d()).map(|a| self.coord(g, a)).collect()
-    }
-
-    #[inline]
-    pub(crate) fn dim(&self, g: usize) -> usize {
-        (0..self.d()).filter(|&a| self.coord(g, a) & 1 == 1).count()
-    }
-
-    /// The face of `g` above it along odd axis `a` (wrapping on a torus).
-    #[inline]
-    fn up(&self, g: usize, a: usize, c: usize) -> usize {
-        if c + 1 == self.m[a] {
-            g - c * self.stride[a]
-        } else {
-            g + self.stride[a]
-        }
-    }
-
-    /// The signed faces of `g`: along its j-th odd axis, `+(-1)^j` above and `-(-1)^j` below.
-    pub(crate) fn faces(&self, g: usize, out: &mut Vec<(usize, i64)>) {
-        out.clear();
-        let mut j = 0;
-        for a in 0..self.d() {
-            let c = self.coord(g, a);
-            if c & 1 == 1 {
-                let s = if j % 2 == 0 { 1 } else { -1 };
-                out.push((g - self.stride[a], -s));
-                out.push((self.up(g, a, c), s));
-                j += 1;
-            }
-        }
-    }
-
-    /// The one or two cofaces of `g` along even axis `a` (`None` past a non-periodic side).
-    #[inline]
-    pub(crate) fn cofaces(&self, g: usize, a: usize) -> [Option<usize>; 2] {
-        let (c, s) = (self.coord(g, a), self.stride[a]);
-        let lo = if c > 0 {
-            Some(g - s)
-        } else if self.periodic {
-            Some(g + (self.m[a] - 1) * s)
-        } else {
-            None
-        };
-        let hi = if c + 1 < self.m[a] {
-            Some(g + s)
-        } else if self.periodic {
-            Some(g - c * s)
-        } else {
-            None
-        };
-        [lo, hi]
-    }
-
-    /// Index of an all-even (`odd == false`) or all-odd point among such points.
-    #[inline]
-    fn compact(&self, g: usize, odd: bool) -> usize {
-        let mut r = 0;
-        for a in 0..self.d() {
-            let count = if odd { self.m[a] / 2 } else { self.m[a].div_ceil(2) };
-            r = r * count + self.coord(g, a) / 2;
-        }
-        r
+/// Where the pixels sit on the doubled grid.
+fn placement(opts: &CubicalOptions) -> Placement {
+    match (opts.periodic, opts.construction) {
+        (true, _) => Placement::Periodic,
+        (false, Construction::T) => Placement::Cubes,
+        (false, Construction::V) => Placement::Vertices,
     }
 }
 
@@ -170,19 +84,11 @@ impl CubicalFiltration {
         if let Some(i) = values.iter().position(|v| v.is_nan()) {
             return Err(PersistenceError::BadInput(format!("value {i} is NaN")));
         }
-        let m: Vec<usize> = shape
-            .iter()
-            .map(|&s| match (opts.periodic, opts.construction) {
-                (true, _) => 2 * s,
-                (false, Construction::T) => 2 * s + 1,
-                (false, Construction::V) => 2 * s - 1,
-            })
-            .collect();
-        let grid = Grid::new(m, opts.periodic)
-            .filter(|g| g.len < u32::MAX as usize)
+        let grid = Grid::of_box(shape, placement(opts), Order::LastFastest)
+            .filter(|g| g.len() < u32::MAX as usize)
             .ok_or_else(|| PersistenceError::TooLarge(format!("a grid of shape {shape:?}")))?;
         let sign = if opts.superlevel { -1.0 } else { 1.0 };
-        let d = grid.d();
+        let d = grid.axes();
         Ok(CubicalFiltration {
             grid,
             shape: shape.to_vec(),
@@ -197,7 +103,7 @@ impl CubicalFiltration {
 
     /// Points of the doubled grid per axis.
     pub fn grid_shape(&self) -> &[usize] {
-        &self.grid.m
+        self.grid.points()
     }
 
     /// The value of a grid cell in the input's sign.
@@ -213,7 +119,7 @@ impl CubicalFiltration {
     /// Builds the sorted list of k-cells (and their ranks).
     fn ensure(&mut self, k: usize, with_rank: bool) {
         if self.order[k].is_none() {
-            let mut keys: Vec<(u64, u32)> = (0..self.grid.len)
+            let mut keys: Vec<(u64, u32)> = (0..self.grid.len())
                 .filter(|&g| self.grid.dim(g) == k)
                 .map(|g| (key(self.vals()[g]), g as u32))
                 .collect();
@@ -222,7 +128,7 @@ impl CubicalFiltration {
         }
         if with_rank {
             if self.rank.is_empty() {
-                self.rank = vec![u32::MAX; self.grid.len];
+                self.rank = vec![u32::MAX; self.grid.len()];
             }
             let list = self.order[k].as_ref().expect("built above");
             if list.first().is_some_and(|&(_, g)| self.rank[g as usize] == u32::MAX) {
@@ -247,7 +153,7 @@ impl CubicalFiltration {
             return d;
         }
         let field = check_field(opts.field)?;
-        let d = self.grid.d();
+        let d = self.grid.axes();
         let mut diagram = Diagram::new(opts.field);
         // with cycles every dimension is reduced as a matrix; without, dimension d-1 comes
         // from a union-find on the dual (periodic or not)
@@ -322,7 +228,7 @@ impl CubicalFiltration {
         } else {
             self.ensure(1.min(d), false);
             let positive = self.union_find_0(&mut diagram);
-            if d >= 1 && self.grid.periodic {
+            if d >= 1 && self.grid.is_periodic() {
                 // positive edges no 2-cell kills are essential 1-classes (in 2-D the dual
                 // union-find found the killed ones)
                 let claimed = claimed_below.unwrap_or_default();
@@ -341,11 +247,11 @@ impl CubicalFiltration {
     /// Dimension 0 by union-find over the edges in order; returns which edges are positive.
     fn union_find_0(&self, diagram: &mut Diagram) -> Vec<bool> {
         let grid = &self.grid;
-        let d = grid.d();
+        let d = grid.axes();
         // the oldest vertex of a component is the smallest (value, index): kept as the
         // largest complemented key
         let mut uf = Elder::new(
-            (0..grid.len)
+            (0..grid.len())
                 .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 0))
                 .map(|g| (!key(self.vals()[g]), !(g as u32))),
         );
@@ -354,8 +260,8 @@ impl CubicalFiltration {
         for (i, &(ke, e)) in edges.iter().enumerate() {
             let e = e as usize;
             let a = (0..d).find(|&a| grid.coord(e, a) & 1 == 1).expect("an edge has an odd axis");
-            let c = grid.coord(e, a);
-            let (u, v) = (grid.compact(e - grid.stride[a], false), grid.compact(grid.up(e, a, c), false));
+            let (lo, up) = grid.faces_along(e, a, grid.coord(e, a));
+            let (u, v) = (grid.compact(lo, false), grid.compact(up, false));
             match uf.union(u as u32, v as u32) {
                 None => positive[i] = true,
                 Some((_, young)) => diagram.push(0, unkey(!young.0), unkey(ke), self.sign, None),
@@ -377,11 +283,11 @@ impl CubicalFiltration {
     /// left at the end is an essential d-class, born at its latest top cell.
     fn dual_union_find(&self, diagram: &mut Diagram) -> Vec<bool> {
         let grid = &self.grid;
-        let d = grid.d();
+        let d = grid.axes();
         // a component's representative is its latest top cell; the outside, last node, is
         // later than all
         let mut uf = Elder::new(
-            (0..grid.len)
+            (0..grid.len())
                 .filter(|&g| (0..d).all(|a| grid.coord(g, a) & 1 == 1))
                 .map(|g| (key(self.vals()[g]), g as u32))
                 .chain(std::iter::once((u64::MAX, u32::MAX))),
@@ -392,14 +298,14 @@ impl CubicalFiltration {
         for (i, &(ks, s)) in list.iter().enumerate().rev() {
             let s = s as usize;
             let a = (0..d).find(|&a| grid.coord(s, a) & 1 == 0).expect("a (d-1)-cell has an even axis");
-            let [lo, hi] = grid.cofaces(s, a);
+            let [lo, hi] = grid.cofaces_along(s, a, grid.coord(s, a));
             let node = |t: Option<usize>| t.map_or(outside, |t| grid.compact(t, true) as u32);
             if let Some((_, young)) = uf.union(node(lo), node(hi)) {
                 positive[i] = true;
                 diagram.push(d - 1, unkey(ks), unkey(young.0), self.sign, None);
             }
         }
-        if grid.periodic {
+        if grid.is_periodic() {
             for c in 0..outside {
                 if uf.find(c) == c {
                     diagram.push(d, unkey(uf.nodes[c as usize].best.0), f64::INFINITY, self.sign, None);
@@ -465,17 +371,17 @@ impl Elder {
 /// those along an even axis that exist. A cell's value is final after the pass of its last
 /// odd (V) or even (T) axis, whose neighbours are final by then.
 fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f64) -> Vec<f64> {
-    let d = grid.d();
-    let mut vals = vec![f64::INFINITY; grid.len];
+    let (d, m, stride) = (grid.axes(), grid.points(), grid.strides());
+    let mut vals = vec![f64::INFINITY; grid.len()];
     let pixel_parity = match construction {
         Construction::V => 0,
         Construction::T => 1,
     };
     // place the pixels
-    let shape: Vec<usize> = grid.m.iter().map(|&m| if pixel_parity == 1 { m / 2 } else { m.div_ceil(2) }).collect();
+    let shape: Vec<usize> = m.iter().map(|&m| if pixel_parity == 1 { m / 2 } else { m.div_ceil(2) }).collect();
     let mut idx = vec![0usize; d];
     for &v in values {
-        let g: usize = (0..d).map(|a| (2 * idx[a] + pixel_parity) * grid.stride[a]).sum();
+        let g: usize = (0..d).map(|a| (2 * idx[a] + pixel_parity) * stride[a]).sum();
         vals[g] = sign * v;
         for a in (0..d).rev() {
             idx[a] += 1;
@@ -486,9 +392,9 @@ fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f6
         }
     }
     for a in 0..d {
-        let (s, m) = (grid.stride[a], grid.m[a]);
+        let (s, m) = (stride[a], m[a]);
         let block = s * m;
-        for base in (0..grid.len).step_by(block) {
+        for base in (0..grid.len()).step_by(block) {
             for c in 0..m {
                 let along = c & 1 == 1;
                 let row = base + c * s;
@@ -503,7 +409,7 @@ fn cell_values(grid: &Grid, values: &[f64], construction: Construction, sign: f6
                     Construction::T if !along => {
                         let lo = if c > 0 {
                             Some(row - s)
-                        } else if grid.periodic {
+                        } else if grid.is_periodic() {
                             Some(base + (m - 1) * s)
                         } else {
                             None
@@ -565,15 +471,7 @@ fn data_estimate(shape: &[usize], opts: &CubicalOptions) -> Option<u64> {
         return product(&|s| s.checked_add(2))?.checked_mul(per);
     }
     // the general route's grid: 2s + 1 points per axis (T), 2s - 1 (V), 2s (periodic)
-    let cells = product(&|s| {
-        let m = s.checked_mul(2)?;
-        match (opts.periodic, opts.construction) {
-            (true, _) => Some(m),
-            (false, Construction::T) => m.checked_add(1),
-            (false, Construction::V) => m.checked_sub(1),
-        }
-    })?;
-    cells.checked_mul(if opts.cycles { 256 } else { 64 })
+    grid::bytes(shape, placement(opts), if opts.cycles { 256 } else { 64 })
 }
 
 /// The persistence diagram of an image: [`CubicalFiltration::new`] then

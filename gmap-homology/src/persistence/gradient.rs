@@ -1,6 +1,6 @@
 //! Persistence of an image too large to hold: the Morse complex of its lower stars.
 //!
-//! The other routes of [`super::cubical`] keep a value (and more) per cell of the doubled
+//! The other routes of [`super::image`] keep a value (and more) per cell of the doubled
 //! grid, about 2^d cells per pixel. This one keeps nothing per pixel: it reads the image
 //! through a function (an `.npy` through its memory map), slab after slab of pixels, and
 //! holds only the **critical cells** of a discrete gradient and their boundaries.
@@ -54,10 +54,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rustc_hash::FxHashMap;
 
-use super::cubical::Grid;
 use super::options::{check_field, key, Construction, CubicalOptions};
-use super::reduce::{reduce_dim, Entry, Zp};
+use super::pairing::{reduce_dim, Entry, Zp};
 use super::{Diagram, PersistenceError};
+use crate::complex::cubical::grid::{Grid, Order, Placement};
 
 /// Bytes held per critical cell, for the limit: its place in the list (16), its name and
 /// boundary in the critical complex (about 64), and the diagram's reduction (16).
@@ -129,8 +129,8 @@ struct Lattice<'a> {
     /// pixels per axis (C order: the last fastest)
     n: Vec<usize>,
     pstride: Vec<usize>,
-    /// the doubled grid of [`super::cubical`], not periodic: `2n - 1` points per axis (V)
-    /// or `2n + 1` (T)
+    /// the doubled grid ([`crate::cubical::grid`]), not periodic: `2n - 1` points per axis
+    /// (V) or `2n + 1` (T)
     grid: Grid,
     t: bool,
     sign: f64,
@@ -167,7 +167,8 @@ impl Lattice<'_> {
     fn cell(&self, star: &Star, x: &[usize], q: u16) -> usize {
         let dq = &star.delta[q as usize * star.d..(q as usize + 1) * star.d];
         let off = i64::from(self.t);
-        (0..self.d()).map(|a| (2 * x[a] as i64 + off + dq[a] as i64) as usize * self.grid.stride[a]).sum()
+        let stride = self.grid.strides();
+        (0..self.d()).map(|a| (2 * x[a] as i64 + off + dq[a] as i64) as usize * stride[a]).sum()
     }
 
     /// The owner of grid cell `g` (its pixel coordinates in `x`) and the local cube it is
@@ -536,7 +537,7 @@ fn incidence(lat: &Lattice<'_>, g: usize, f: usize, buf: &mut Vec<(usize, i64)>)
 /// The cofaces of a (d-1)-cell: along its one even axis, below and above when inside.
 fn top_cofaces(lat: &Lattice<'_>, f: usize) -> [Option<usize>; 2] {
     let a = (0..lat.d()).find(|&a| lat.grid.coord(f, a) & 1 == 0).expect("a (d-1)-cell has an even axis");
-    lat.grid.cofaces(f, a)
+    lat.grid.cofaces_along(f, a, lat.grid.coord(f, a))
 }
 
 /// The entries of `∂_M` on a critical (d-1)-cell `c`: (critical top cell, coefficient),
@@ -549,7 +550,7 @@ fn flow_up(
 ) -> Result<(), PersistenceError> {
     let lat = grad.lat;
     let mut buf = Vec::new();
-    let limit = lat.grid.len;
+    let limit = lat.grid.len();
     for start in top_cofaces(lat, c).into_iter().flatten() {
         let (mut face, mut cur, mut coef) = (c, start, 1u32);
         let mut steps = 0usize;
@@ -588,7 +589,7 @@ fn flow_up(
 /// The persistence diagram of the image of shape `shape` (C order) whose pixel `i` is
 /// `value(i)`, through the Morse complex of its lower stars (module docs). Refuses, as
 /// [`PersistenceError::TooLarge`], a critical complex past `max_bytes` (with
-/// [`super::cubical::PROCESS_BYTES`]), as soon as the first pass finds it so; a NaN, naming
+/// [`super::image::PROCESS_BYTES`]), as soon as the first pass finds it so; a NaN, naming
 /// its index; and the options it does not build: periodic images and cycles.
 pub fn morse_persistence(
     shape: &[usize],
@@ -618,14 +619,11 @@ pub fn morse_persistence(
     }
     let t = opts.construction == Construction::T;
     let too_large = || PersistenceError::TooLarge(format!("a grid of shape {shape:?}"));
-    let mut pstride = vec![1usize; d];
-    let mut plen = 1usize;
-    for a in (0..d).rev() {
-        pstride[a] = plen;
-        plen = plen.checked_mul(shape[a]).ok_or_else(too_large)?;
-    }
-    let m = shape.iter().map(|&s| if t { s.checked_mul(2)?.checked_add(1) } else { Some(2 * s - 1) });
-    let grid = m.collect::<Option<Vec<usize>>>().and_then(|m| Grid::new(m, false)).ok_or_else(too_large)?;
+    // the pixels' own grid, for their strides, and the doubled grid of their cells
+    let pixels = Grid::new(shape.to_vec(), false, Order::LastFastest).ok_or_else(too_large)?;
+    let (pstride, plen) = (pixels.strides().to_vec(), pixels.len());
+    let placement = if t { Placement::Cubes } else { Placement::Vertices };
+    let grid = Grid::of_box(shape, placement, Order::LastFastest).ok_or_else(too_large)?;
     let sign = if opts.superlevel { -1.0 } else { 1.0 };
     let star = Star::new(d);
     let offsets =
@@ -633,7 +631,7 @@ pub fn morse_persistence(
     let lat = Lattice { n: shape.to_vec(), pstride, grid, t, sign, value, offsets };
 
     // pass 1: each pixel's lower star, slab after slab; the critical cells per dimension
-    let budget = max_bytes.saturating_sub(super::cubical::PROCESS_BYTES) / BYTES_PER_CRITICAL;
+    let budget = max_bytes.saturating_sub(super::image::PROCESS_BYTES) / BYTES_PER_CRITICAL;
     let found = AtomicU64::new(0);
     let tasks = plen.div_ceil(1 << 16).max(1);
     let parts = gmap_core::parallel::map_tasks(
