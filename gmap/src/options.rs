@@ -59,7 +59,7 @@ pub struct HomologyOptions {
     pub generators: bool,
     /// the most cells with entries per dimension of the reduced complex for which generators
     /// are computed (default: `gmap_homology::generators::GENERATOR_CELL_LIMIT`, 2,000; full
-    /// cubical sets of dimension ≤ 3 have their own route, `crate::report::cubical_generators`)
+    /// cubical sets of dimension ≤ 3 have their own route, [`crate::cubes::sweep`])
     pub max_generator_cells: Option<usize>,
     /// reduce a map by homology-preserving removals and contractions first
     pub simplify: bool,
