@@ -87,7 +87,7 @@ pub use chain::{ChainComplex, ChainError};
 pub use checked::{cellular_complex, chain_map_tau, gmap_homology, GMapHomologyError};
 pub use homology::{
     homology_z, homology_z_bigint, homology_z_staged, homology_zp, is_prime, Coefficients, Homology, HomologyError,
-    Natural, Stages,
+    Natural, Prime, Stages,
 };
 pub use incidence::Incidence;
 pub use precond::{

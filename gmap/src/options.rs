@@ -1,7 +1,7 @@
 //! The options of [`crate::homology`] (the command line's flags) and the rules that check
 //! them against one another and against the kind of input, written once for every caller.
 
-use gmap_homology::is_prime;
+use gmap_homology::Prime;
 
 use crate::error::{err, Result};
 use crate::formats::extensions_of as exts;
@@ -86,7 +86,7 @@ pub struct HomologyOptions {
 /// Refuses a field that is not Z/P for a prime P below 2^31.
 pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
     match field {
-        Some(p) if !is_prime(p) || p >= 1 << 31 => {
+        Some(p) if Prime::new(p).is_none() => {
             Err(err!(Usage, "--field {p}: the field must be Z/P for a prime P below 2^31"))
         }
         _ => Ok(()),

@@ -22,7 +22,8 @@
 #![allow(clippy::needless_range_loop)] // row and column operations index two rows at once
 
 use crate::engine::chain::ChainComplex;
-use crate::engine::homology::{is_prime, HomologyError};
+use crate::engine::field::Prime;
+use crate::engine::homology::HomologyError;
 use crate::engine::morse::{lift, prereduce};
 use crate::engine::natural::Natural;
 use crate::engine::ring::{Euclid, ZBig, Zi64, Zp};
@@ -75,9 +76,7 @@ pub fn generators_within(c: &ChainComplex, field: Option<u64>, limit: usize) -> 
             other => other,
         },
         Some(p) => {
-            if !is_prime(p) || p >= 1 << 31 {
-                return Err(HomologyError::NotPrime(p));
-            }
+            let p = Prime::new(p).ok_or(HomologyError::NotPrime(p))?.get();
             reduced_then_lifted(&Zp { p }, c, limit)
         }
     }

@@ -15,6 +15,7 @@
 //! is redone with big integers. Every result is checked against the Euler–Poincaré formula
 //! `Σ (-1)^k count(k) = Σ (-1)^k β_k`.
 
+pub use super::field::{is_prime, Prime};
 use std::fmt;
 
 use thiserror::Error;
@@ -149,21 +150,6 @@ pub enum HomologyError {
     /// An internal consistency check failed (a bug, reported rather than a wrong group).
     #[error("internal error in the reduction: {0}")]
     Internal(&'static str),
-}
-
-/// Whether `p` is a prime. O(sqrt p).
-pub fn is_prime(p: u64) -> bool {
-    if p < 2 {
-        return false;
-    }
-    let mut d = 2u64;
-    while d.saturating_mul(d) <= p {
-        if p.is_multiple_of(d) {
-            return false;
-        }
-        d += 1;
-    }
-    true
 }
 
 /// Ranks and Smith diagonals of the matrices of a complex, plus surviving-cell counts.
@@ -482,9 +468,7 @@ pub fn homology_z_bigint(c: &ChainComplex) -> Result<Homology, HomologyError> {
 /// assert!(homology_zp(&c, 4).is_err());
 /// ```
 pub fn homology_zp(c: &ChainComplex, p: u64) -> Result<Homology, HomologyError> {
-    if !is_prime(p) || p >= 1 << 31 {
-        return Err(HomologyError::NotPrime(p));
-    }
+    let p = Prime::new(p).ok_or(HomologyError::NotPrime(p))?.get();
     let ring = Zp { p };
     let s = survivors(&ring, c).ok_or(HomologyError::Internal("field reduction failed"))?;
     let surviving: Vec<usize> = s.cells.iter().map(Vec::len).collect();

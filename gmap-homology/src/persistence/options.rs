@@ -65,7 +65,7 @@ pub(crate) fn unkey(k: u64) -> f64 {
 }
 
 pub(crate) fn check_field(p: u32) -> Result<Zp, PersistenceError> {
-    if p >= 1 << 31 || !crate::homology::is_prime(p as u64) {
+    if crate::Prime::new(u64::from(p)).is_none() {
         return Err(PersistenceError::BadOption(format!("field Z/{p}: want a prime below 2^31")));
     }
     Ok(Zp::new(p))
