@@ -54,9 +54,9 @@ pub(crate) fn cellular<'a>(
     progress: &Progress,
 ) -> Result<Named<'a>> {
     progress.stage("checking C1 and C2 and building the border operator");
+    // the failed condition's cell as the error's item (From<PreconditionError>)
     let c = cellular_complex(map).map_err(|e| {
-        Error::from_source(ErrorKind::Precondition, e)
-            .context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
+        Error::from(e).context(format!("{file}: the cellular method does not apply (use --method simplicial)"))
     })?;
     let reps: Vec<Vec<u32>> = c.reps.iter().map(|r| r.iter().map(|d| d.get()).collect()).collect();
     let pts = points(map);

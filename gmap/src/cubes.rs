@@ -16,6 +16,7 @@ use gmap_ops::import::{CubicalSet, Image, Level};
 use crate::cell_name::CellName;
 use crate::chains::Named;
 use crate::error::{err, Error, ErrorKind, Result};
+use crate::input::Input;
 use crate::options::{check_field, HomologyOptions, Method};
 use crate::report::{Chain, CubeGrid, NamedGenerator};
 
@@ -44,25 +45,12 @@ impl<'a> CubesRef<'a> {
     /// order.
     pub fn new(bytes: &'a [u8], shape: &[usize], strides: &[isize]) -> Result<Self> {
         let d = shape.len();
-        if !(1..=MAX_CUBE_AXES).contains(&d) {
-            return Err(err!(Usage, "a cubical array has 1 to {MAX_CUBE_AXES} dimensions, not {d}"));
-        }
-        if shape.contains(&0) {
-            return Err(err!(Usage, "a cubical array of shape {shape:?}: every axis needs a cube"));
-        }
-        let volume = shape.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64));
-        let max = gmap_ops::import::cubical::MAX_BOX_CUBES;
-        if volume.is_none_or(|v| v > max) {
-            return Err(err!(
-                Limit,
-                "a cubical array of shape {shape:?} has more than {max} cubes, the largest box accepted"
-            ));
-        }
-        if volume != Some(bytes.len() as u64) || strides.len() != d {
+        let volume = check_box(shape)?;
+        if volume != bytes.len() as u64 || strides.len() != d {
             return Err(err!(
                 Usage,
                 "a cubical array of shape {shape:?} needs {} bytes and {d} strides, not {} and {}",
-                volume.unwrap_or(0),
+                volume,
                 bytes.len(),
                 strides.len()
             ));
@@ -110,6 +98,77 @@ impl<'a> CubesRef<'a> {
     /// Whether the caller's axes are the storage's in reverse order.
     pub fn is_reversed(&self) -> bool {
         self.reversed
+    }
+
+    /// The refusals of [`CubesRef::new`] that depend on the shape alone (no axis or more
+    /// than [`MAX_CUBE_AXES`], an empty axis, a box over `MAX_BOX_CUBES`) and the memory
+    /// policy for a byte per cube: for a caller that has to convert its array into bytes
+    /// first (numpy's `a != 0` of a float array), made before it allocates them.
+    pub fn check_conversion(shape: &[usize]) -> Result<()> {
+        let volume = check_box(shape)?;
+        gmap_core::resources::check_memory("the array's cubes as bytes", Some(volume))?;
+        Ok(())
+    }
+
+    /// The cubical set of these cubes, copied, with its axes in the caller's order (a
+    /// C-ordered array's bytes transposed) and its minimal vertex `min` (the caller's order;
+    /// zeros when empty). Under the memory policy of the readers of `.cub` files: the
+    /// bitmap and the grid its chain complex is built on
+    /// (`gmap_core::resources::cubical_set_estimate`), checked before the copy.
+    pub fn to_input(&self, min: &[i64]) -> Result<Input> {
+        let shape = self.shape();
+        let d = shape.len();
+        if !min.is_empty() && min.len() != d {
+            return Err(err!(Usage, "min has {} coordinates for {d} axes", min.len()));
+        }
+        let what = "the cubical set of the array";
+        gmap_core::resources::check_memory(what, gmap_core::resources::cubical_set_estimate(&shape))?;
+        let bits = if self.reversed {
+            // the caller's axis 0 fastest: an odometer over the caller's index, its offset in
+            // the C-ordered bytes (the caller's last axis fastest) kept up to date
+            let mut stride = vec![1usize; d];
+            for a in (0..d.saturating_sub(1)).rev() {
+                stride[a] = stride[a + 1] * shape[a + 1];
+            }
+            let mut out = Vec::with_capacity(self.bytes.len());
+            let (mut index, mut offset) = (vec![0usize; d], 0usize);
+            for _ in 0..self.bytes.len() {
+                out.push(self.bytes[offset]);
+                for a in 0..d {
+                    index[a] += 1;
+                    offset += stride[a];
+                    if index[a] < shape[a] {
+                        break;
+                    }
+                    offset -= stride[a] * shape[a];
+                    index[a] = 0;
+                }
+            }
+            out
+        } else {
+            self.bytes.to_vec()
+        };
+        let min = if min.is_empty() { vec![0; d] } else { min.to_vec() };
+        let set = CubicalSet::new(min, shape, bits).map_err(|e| Error::from_source(ErrorKind::Usage, e))?;
+        Ok(Input::Cubical(crate::Sourced::new(set)))
+    }
+}
+
+/// The number of cubes of a box of borrowed cubes of `shape`, or the refusal: no axis or
+/// more than [`MAX_CUBE_AXES`], an empty axis, more than `MAX_BOX_CUBES` cubes.
+fn check_box(shape: &[usize]) -> Result<u64> {
+    let d = shape.len();
+    if !(1..=MAX_CUBE_AXES).contains(&d) {
+        return Err(err!(Usage, "a cubical array has 1 to {MAX_CUBE_AXES} dimensions, not {d}"));
+    }
+    if shape.contains(&0) {
+        return Err(err!(Usage, "a cubical array of shape {shape:?}: every axis needs a cube"));
+    }
+    let volume = shape.iter().try_fold(1u64, |v, &s| v.checked_mul(s as u64));
+    let max = gmap_ops::import::cubical::MAX_BOX_CUBES;
+    match volume {
+        Some(v) if v <= max => Ok(v),
+        _ => Err(err!(Limit, "a cubical array of shape {shape:?} has more than {max} cubes, the largest box accepted")),
     }
 }
 

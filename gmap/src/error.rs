@@ -127,6 +127,14 @@ impl Error {
                 .source_as::<gmap_core::io::ReadError>()
                 .is_some_and(|e| matches!(e.kind, gmap_core::io::ReadErrorKind::Io(_)))
             || self.source_as::<gmap_core::io::WriteError>().is_some()
+            // the importers' and the .json reader's errors hold the I/O error without
+            // making it their source (its message is part of theirs)
+            || self
+                .source_as::<gmap_ops::import::FileError>()
+                .is_some_and(|e| matches!(e.error, gmap_ops::import::ImportError::Io(_)))
+            || self
+                .source_as::<gmap_homology::json::JsonFileError>()
+                .is_some_and(|e| matches!(e.error, gmap_homology::json::JsonError::Io(_)))
     }
 
     /// This error with the item it is about.

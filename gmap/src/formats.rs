@@ -15,10 +15,11 @@
 //! | `.off` | map | a 2-map with points (`--boundary`: a 3-map's boundary) | points |
 //! | `.vtk` | map (unstructured grid) | a map of dimension ≤ 3 with points, a full cubical set as voxels | points, labels |
 //! | `.vtu`, `.msh` | map | – | points, labels |
-//! | `.facets` | simplicial complex | any input through its G-map (the barycentric subdivision) | – |
+//! | `.facets` | simplicial complex | a simplicial complex's facets; any other input through its G-map (the barycentric subdivision) | – |
 //! | `.lex[#name]` | simplicial complex | – | – |
 //! | `.json` | architectural complex | any input's incidence graph | points, labels |
-//! | `.cub`, `.cel`, `.pbm` | cubical set | – | – |
+//! | `.cub` | cubical set | a full cubical set's cubes | – |
+//! | `.cel`, `.pbm` | cubical set | – | – |
 //! | `.npy`, `.complex` | image (memory-mapped) | an image | – |
 //! | `.pgm`, `.png` | image (grey values) | – | – |
 //! | `.lar.json` | – | a map's LAR matrices | – |
@@ -46,9 +47,17 @@ pub(crate) enum Writer {
     /// not written
     None,
     /// a map format: the writer of a map, of a map with its labels and points (`None`: the
-    /// plain writer, labels dropped), and of a full cubical set's cubes as they are (`None`:
-    /// through the G-map of its cubes)
-    Map { map: write::MapFn, labelled: Option<write::LabelledFn>, cubes: Option<write::CubesFn> },
+    /// plain writer, labels dropped), of a full cubical set's cubes as they are (`None`:
+    /// through the G-map of its cubes), and of a simplicial complex's facets as they are
+    /// (`None`: through its G-map)
+    Map {
+        map: write::MapFn,
+        labelled: Option<write::LabelledFn>,
+        cubes: Option<write::CubesFn>,
+        facets: Option<write::FacetsFn>,
+    },
+    /// a full cubical set's cubes, as they are
+    Cubes(write::CubesFn),
     /// the incidence graph of any input (regions and entries)
     Graph(write::GraphFn),
     /// an image as it is
@@ -113,7 +122,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: true,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::gmap),
-        writer: Writer::Map { map: write::gmap, labelled: Some(write::labelled_gmap), cubes: None },
+        writer: Writer::Map { map: write::gmap, labelled: Some(write::labelled_gmap), cubes: None, facets: None },
     },
     Format {
         extension: "moka",
@@ -121,7 +130,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::moka),
-        writer: Writer::Map { map: write::moka, labelled: None, cubes: None },
+        writer: Writer::Map { map: write::moka, labelled: None, cubes: None, facets: None },
     },
     Format {
         extension: "off",
@@ -129,7 +138,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::off),
-        writer: Writer::Map { map: write::off, labelled: None, cubes: None },
+        writer: Writer::Map { map: write::off, labelled: None, cubes: None, facets: None },
     },
     Format {
         extension: "vtk",
@@ -137,7 +146,12 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: true,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::mesh),
-        writer: Writer::Map { map: write::vtk, labelled: Some(write::labelled_vtk), cubes: Some(write::voxels_vtk) },
+        writer: Writer::Map {
+            map: write::vtk,
+            labelled: Some(write::labelled_vtk),
+            cubes: Some(write::voxels_vtk),
+            facets: None,
+        },
     },
     Format {
         extension: "vtu",
@@ -161,7 +175,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: false,
         reader: Reader::Reads(Kind::Simplicial, read::facets),
-        writer: Writer::Map { map: write::facets, labelled: None, cubes: None },
+        writer: Writer::Map { map: write::facets, labelled: None, cubes: None, facets: Some(write::complex_facets) },
     },
     Format {
         extension: "lex",
@@ -185,7 +199,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: false,
         reader: Reader::Reads(Kind::Cubical, read::cub),
-        writer: Writer::None,
+        writer: Writer::Cubes(write::cub),
     },
     Format {
         extension: "cel",
@@ -241,7 +255,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: false,
         reader: Reader::WrittenOnly("is written only, as an export: read the file it came from"),
-        writer: Writer::Map { map: write::lar, labelled: None, cubes: None },
+        writer: Writer::Map { map: write::lar, labelled: None, cubes: None, facets: None },
     },
     Format {
         extension: "dot",
@@ -370,6 +384,49 @@ pub(crate) fn output_format(output: &Path) -> Result<&'static Format> {
     }
 }
 
+/// An input from the text of a file of the format `extension` held in memory (no file:
+/// messages name none), read as the file would be, with the facade's kinds of error: a
+/// `.gmap` map with its points and labels, an architectural complex's `.json`. How the
+/// Python package makes `GMap.from_text` and `ArchComplex(text)` and unpickles them; the
+/// other formats are read from files only.
+pub fn parse_text(extension: &str, text: &str) -> Result<Input> {
+    match extension {
+        "gmap" => Ok(Input::labelled_map_from(
+            gmap_core::io::parse_labelled_gmap(text.as_bytes(), "<text>")?,
+            crate::input::Source::default(),
+        )),
+        "json" => {
+            let x =
+                gmap_homology::json::read_json(text).map_err(|e| Error::from_source(read::json_error_kind(&e), e))?;
+            Ok(Input::Arch(crate::Sourced::new(x)))
+        }
+        other => Err(err!(Unsupported, "a '.{other}' is read from a file only; text is read as .gmap or .json")),
+    }
+}
+
+/// The text [`crate::save()`] writes for `input` in the format `extension` (the text
+/// [`parse_text`] reads back): a map's `.gmap` (with its points and labels), an
+/// architectural complex's `.json`.
+pub fn to_text(input: &Input, extension: &str) -> Result<String> {
+    match (extension, input) {
+        ("gmap", Input::Map(m)) => {
+            let bytes = match m.labelled() {
+                Some(g) => gmap_core::io::format_labelled_gmap(g?),
+                None => {
+                    gmap_core::io::format_labelled_gmap(&gmap_core::LabelledGMap::from_dense_with_attributes(m.map()).0)
+                }
+            };
+            Ok(String::from_utf8_lossy(&bytes).into_owned())
+        }
+        ("json", Input::Arch(x)) => Ok(crate::write::json_graph(x)),
+        (ext, input) => Err(err!(
+            Unsupported,
+            "the text of a {} as '.{ext}': text is written for a map as .gmap, an architectural complex as .json",
+            input.kind()
+        )),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -390,6 +447,18 @@ mod tests {
         assert_eq!(kind_of(Path::new("x.lex#name")), Some(Kind::Simplicial));
         assert_eq!(kind_of(Path::new("x.dot")), None);
         assert!(format_of(Path::new("x.unknown")).is_none());
+    }
+
+    #[test]
+    fn text_reads_back() {
+        let gmap_text = "gmap 1 2\n1 0\n0 1\npoints 2\n0 0.0 0.0 0.0\n1 2.5 0.0 -1.0\nlabels 1 1\n0 name=\"beam\"\n";
+        let m = parse_text("gmap", gmap_text).unwrap();
+        assert_eq!(to_text(&m, "gmap").unwrap(), gmap_text);
+        let bad = parse_text("gmap", "gmap 1 2\n1 7\n").unwrap_err();
+        assert_eq!(bad.kind(), crate::ErrorKind::Parse);
+        assert!(parse_text("json", "{").is_err());
+        assert!(parse_text("off", "OFF").is_err());
+        assert!(to_text(&m, "json").is_err());
     }
 
     #[test]

@@ -104,6 +104,9 @@ pub struct MapInput {
     /// the map with the labels of its cells: read when first asked for (`.gmap`), or kept
     /// from the reading (meshes)
     labelled: OnceLock<std::result::Result<Box<LabelledGMap>, Error>>,
+    /// the simplicial complex the map is the G-map of ([`MapInput::of_complex`]), whose
+    /// vertex labels name the cells of its generators
+    complex: Option<std::sync::Arc<Sourced<SimplicialComplex>>>,
 }
 
 /// What a file held, with the file it came from (messages name it). Derefs to the value.
@@ -142,13 +145,13 @@ impl Source {
 impl Input {
     /// A map read from `source`.
     pub(crate) fn map_from(map: DenseMap, source: Source) -> Self {
-        Input::Map(MapInput { map, source, labelled: OnceLock::new() })
+        Input::Map(MapInput { map, source, labelled: OnceLock::new(), complex: None })
     }
 
     /// A map read from `source` with its labels and points (a mesh).
     pub(crate) fn labelled_map_from(g: LabelledGMap, source: Source) -> Self {
         let map = g.to_dense_map();
-        Input::Map(MapInput { map, source, labelled: OnceLock::from(Ok(Box::new(g))) })
+        Input::Map(MapInput { map, source, labelled: OnceLock::from(Ok(Box::new(g))), complex: None })
     }
 
     /// What the input holds, as the format registry names it.
@@ -205,14 +208,31 @@ impl Input {
 impl MapInput {
     /// A map built in memory (no file).
     pub fn new(map: DenseMap) -> Self {
-        MapInput { map, source: Source::default(), labelled: OnceLock::new() }
+        MapInput { map, source: Source::default(), labelled: OnceLock::new(), complex: None }
     }
 
     /// A map with points and labels built in memory (no file): the labels are kept for
     /// [`MapInput::labelled`] (the page of [`crate::view()`] colours cells by them).
     pub fn from_labelled(g: LabelledGMap) -> Self {
         let map = g.to_dense_map();
-        MapInput { map, source: Source::default(), labelled: OnceLock::from(Ok(Box::new(g))) }
+        MapInput { map, source: Source::default(), labelled: OnceLock::from(Ok(Box::new(g))), complex: None }
+    }
+
+    /// The G-map of a simplicial complex's facets ([`Sourced::to_gmap`], refused with the
+    /// reason when the complex has none) that keeps the complex: the cellular route names
+    /// the cells of its generators by the complex's vertex labels, as the complex's own
+    /// G-map route does (`Via::Gmap`); the other routes name them by darts. The map reads
+    /// the complex's file, if it has one.
+    pub fn of_complex(complex: std::sync::Arc<Sourced<SimplicialComplex>>) -> Result<Self> {
+        let map = complex.to_gmap()?;
+        let source = complex.source.clone();
+        Ok(MapInput { map, source, labelled: OnceLock::new(), complex: Some(complex) })
+    }
+
+    /// The simplicial complex the map is the G-map of, when it was made from one
+    /// ([`MapInput::of_complex`]).
+    pub fn complex(&self) -> Option<&SimplicialComplex> {
+        self.complex.as_deref().map(Sourced::get)
     }
 
     /// The map.

@@ -89,6 +89,12 @@ pub enum Pixels<'a> {
     Slice(&'a [f64]),
     /// pixel `i`'s value
     Read(&'a (dyn Fn(usize) -> f64 + Sync)),
+    /// every value, C order, written by the function into memory [`image_persistence`]
+    /// allocates: values that are had only by copying them (a strided numpy view), copied
+    /// when the whole grid fits, or past its limit when the copy does (the lower stars are
+    /// then read from the copy); else refused with the whole grid's estimate before
+    /// anything is copied
+    Copied(&'a (dyn Fn(&mut [f64]) + Sync)),
 }
 
 /// The diagram of the image of shape `shape` (the engine's order, the fastest axis last).
@@ -100,6 +106,16 @@ pub enum Pixels<'a> {
 /// of these), and with the count if its critical cells pass the limit.
 pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &PersistenceOptions) -> Result<Diagram> {
     let engine = cubical_options(opts);
+    let copy = |fill: &dyn Fn(&mut [f64])| -> Result<Vec<f64>> {
+        let n = shape.iter().try_fold(1usize, |p, &s| p.checked_mul(s));
+        let mut v = Vec::new();
+        if n.is_none_or(|n| v.try_reserve_exact(n).is_err()) {
+            return Err(Error::new(ErrorKind::Limit, format!("cannot hold the values of an image of shape {shape:?}")));
+        }
+        v.resize(n.unwrap_or(0), 0.0);
+        fill(&mut v);
+        Ok(v)
+    };
     match check_image_memory(shape, opts) {
         Ok(()) => {
             let owned: Vec<f64>;
@@ -109,17 +125,31 @@ pub fn image_persistence(shape: &[usize], pixels: Pixels<'_>, opts: &Persistence
                     owned = (0..shape.iter().product()).map(f).collect();
                     &owned
                 }
+                Pixels::Copied(fill) => {
+                    owned = copy(fill)?;
+                    &owned
+                }
             };
             cubical_persistence(shape, values, &engine).map_err(compute)
         }
         Err(e) if opts.periodic || opts.cycles || shape.len() > 4 => Err(e.flattened(
             "; past the limit an image is computed from its lower stars, which takes 1 to 4 axes and neither periodic images nor cycles",
         )),
-        Err(_) => {
+        Err(whole) => {
             let limit = gmap_core::resources::max_memory();
             let diagram = match pixels {
                 Pixels::Slice(v) => morse_persistence(shape, &|i| v[i], &engine, limit),
                 Pixels::Read(f) => morse_persistence(shape, f, &engine, limit),
+                Pixels::Copied(fill) => {
+                    // the copy, with the program itself, must fit under the limit
+                    let bytes = shape.iter().try_fold(8u64, |b, &s| b.checked_mul(s as u64));
+                    let bytes = bytes.and_then(|b| b.checked_add(gmap_homology::persistence::image::PROCESS_BYTES));
+                    if bytes.is_none_or(|b| b > limit) {
+                        return Err(whole);
+                    }
+                    let v = copy(fill)?;
+                    morse_persistence(shape, &|i| v[i], &engine, limit)
+                }
             };
             diagram.map_err(compute)
         }

@@ -58,14 +58,17 @@ pub(crate) fn lex(path: &Path, opts: &OpenOptions) -> Result<Input> {
 
 /// `.json`: an architectural complex or incidence graph.
 pub(crate) fn json(path: &Path, opts: &OpenOptions) -> Result<Input> {
-    let x = gmap_homology::json::read_json_file(path).map_err(|e| {
-        let kind = match e.error {
-            gmap_homology::json::JsonError::MemoryLimit(_) => ErrorKind::Limit,
-            _ => ErrorKind::Parse,
-        };
-        Error::from_source(kind, e).naming_path(path)
-    })?;
+    let x = gmap_homology::json::read_json_file(path)
+        .map_err(|e| Error::from_source(json_error_kind(&e.error), e).naming_path(path))?;
     Ok(Input::Arch(Source::file(path, opts).holding(x)))
+}
+
+/// The kind of a `.json` reader's refusal: over the memory limit, or not the format.
+pub(crate) fn json_error_kind(e: &gmap_homology::json::JsonError) -> ErrorKind {
+    match e {
+        gmap_homology::json::JsonError::MemoryLimit(_) => ErrorKind::Limit,
+        _ => ErrorKind::Parse,
+    }
 }
 
 /// `.cub`, `.cel`: CHomP's cubes and cells.

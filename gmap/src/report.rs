@@ -514,3 +514,151 @@ fn push_list(out: &mut String, values: impl Iterator<Item = i64>) {
         out.push_str(digits.format(x));
     }
 }
+
+impl Report {
+    /// The report whose [`Report::to_json`] is `v` (how a result crosses a process boundary:
+    /// the Python package's pickles, a Dask worker's answer), `None` when `v` is not such an
+    /// object. Kept: the groups, the dimension, method, route and field, the generators'
+    /// cells (named, a cubical route's grid included), an architectural complex's space;
+    /// the note and the names of the regions that are not balls are not in the JSON
+    /// (`to_text` names those regions `region ID`). The kind is read from what the JSON
+    /// holds: a route for a simplicial complex, a space for an architectural complex, else
+    /// the cells of the generators (cubes, regions), else a map.
+    pub fn from_json(v: &serde_json::Value) -> Option<Report> {
+        use crate::input::Kind;
+        use gmap_homology::{Coefficients, Natural};
+        // a number of any length (arbitrary precision): its digits
+        let nat = |x: &serde_json::Value| -> Option<Natural> { x.as_number()?.to_string().parse().ok() };
+        let (coefficients, field) = match v.get("coefficients")?.as_str()? {
+            "Z" => (Coefficients::Integers, None),
+            s => {
+                let p: u64 = s.strip_prefix("Z/")?.parse().ok()?;
+                (Coefficients::Field(p), Some(p))
+            }
+        };
+        let usize_of = |x: &serde_json::Value| x.as_u64().and_then(|b| usize::try_from(b).ok());
+        let betti = v.get("betti")?.as_array()?.iter().map(usize_of).collect::<Option<Vec<_>>>()?;
+        let torsion = v
+            .get("torsion")?
+            .as_array()?
+            .iter()
+            .map(|t| t.as_array().and_then(|t| t.iter().map(nat).collect::<Option<Vec<_>>>()))
+            .collect::<Option<Vec<_>>>()?;
+        if torsion.len() != betti.len() {
+            return None;
+        }
+        let method = match v.get("method")?.as_str()? {
+            "cellular" => Method::Cellular,
+            "simplicial" => Method::Simplicial,
+            _ => return None,
+        };
+        let route = match v.get("route").map(|r| r.as_str()) {
+            None => None,
+            Some(Some("direct")) => Some(Via::Direct),
+            Some(Some("gmap")) => Some(Via::Gmap),
+            Some(_) => return None,
+        };
+        let generators = match v.get("generators") {
+            None => None,
+            Some(g) => Some(g.as_array()?.iter().map(generator_from_json).collect::<Option<Vec<_>>>()?),
+        };
+        let space = match v.get("space").map(|s| s.as_str()) {
+            None => None,
+            Some(Some(s @ ("topological" | "region complex"))) => {
+                let topological = s == "topological";
+                let not_balls = match v.get("not_balls") {
+                    None => Vec::new(),
+                    Some(list) => list
+                        .as_array()?
+                        .iter()
+                        .map(|r| {
+                            let id = r.get("region")?.as_u64()?;
+                            let betti = r.get("betti")?.as_array()?.iter().map(usize_of).collect::<Option<Vec<_>>>()?;
+                            Some((format!("region {id}"), id, betti))
+                        })
+                        .collect::<Option<Vec<_>>>()?,
+                };
+                Some(ArchSpace { topological, not_balls })
+            }
+            Some(_) => return None,
+        };
+        let first_cell = generators.as_ref().and_then(|g| g.iter().find_map(|x| x.chain.first()));
+        let kind = match (route, &space, first_cell) {
+            (Some(_), _, _) => Kind::Simplicial,
+            (None, Some(_), _) => Kind::Arch,
+            (None, None, Some((CellName::Cube { .. }, _))) => Kind::Cubical,
+            (None, None, Some((CellName::Region(_) | CellName::NamedRegion { .. }, _))) => Kind::Arch,
+            _ => Kind::Map,
+        };
+        Some(Report {
+            kind: kind.name(),
+            dimension: usize_of(v.get("dimension")?)?,
+            method,
+            route,
+            field,
+            groups: Homology { coefficients, betti, torsion },
+            generators,
+            note: None,
+            space,
+        })
+    }
+}
+
+/// A generator read back from its JSON object (`{"dim", "order", "chain"}`).
+fn generator_from_json(x: &serde_json::Value) -> Option<NamedGenerator> {
+    let chain = x
+        .get("chain")?
+        .as_array()?
+        .iter()
+        .map(|e| Some((cell_from_json(e.get("cell")?)?, e.get("coefficient")?.as_i64()?)))
+        .collect::<Option<Vec<_>>>()?;
+    Some(NamedGenerator {
+        dim: usize::try_from(x.get("dim")?.as_u64()?).ok()?,
+        order: x.get("order")?.as_number()?.to_string().parse().ok()?,
+        chain: Chain::Named(chain),
+    })
+}
+
+/// A cell's name read back from [`CellName::to_json`].
+fn cell_from_json(c: &serde_json::Value) -> Option<CellName> {
+    if let Some(a) = c.as_array() {
+        return Some(CellName::Simplex(a.iter().map(serde_json::Value::as_u64).collect::<Option<Vec<_>>>()?));
+    }
+    if let Some(r) = c.get("region") {
+        let name = match c.get("name") {
+            None => None,
+            Some(n) => Some(n.as_str()?.to_string()),
+        };
+        return Some(match (r.as_u64(), r.as_str(), name) {
+            (Some(id), _, None) => CellName::Region(id),
+            (Some(id), _, name) => CellName::NamedRegion { id, key: None, name },
+            (None, Some(key), name) => CellName::NamedRegion { id: 0, key: Some(key.to_string()), name },
+            (None, None, _) => return None,
+        });
+    }
+    if let Some(cube) = c.get("cube") {
+        let min = cube.as_array()?.iter().map(serde_json::Value::as_i64).collect::<Option<smallvec::SmallVec<_>>>()?;
+        let extent = c
+            .get("extent")?
+            .as_array()?
+            .iter()
+            .map(|x| x.as_u64().and_then(|e| u8::try_from(e).ok()).filter(|&e| e <= 1))
+            .collect::<Option<smallvec::SmallVec<_>>>()?;
+        return (min.len() == extent.len()).then_some(CellName::Cube { min, extent });
+    }
+    let dart = u32::try_from(c.get("dart")?.as_u64()?).ok()?;
+    let simplex = match c.get("simplex") {
+        None => None,
+        Some(s) => Some(
+            s.as_array()?.iter().map(|x| x.as_u64().and_then(|x| u32::try_from(x).ok())).collect::<Option<Vec<_>>>()?,
+        ),
+    };
+    let point = match c.get("point") {
+        None => None,
+        Some(p) => match p.as_array()?.as_slice() {
+            [x, y, z] => Some([x.as_f64()?, y.as_f64()?, z.as_f64()?]),
+            _ => return None,
+        },
+    };
+    Some(CellName::Dart { dart, point, simplex })
+}

@@ -255,7 +255,8 @@ fn run_complex(route: Route, input: &Input, o: &HomologyOptions, file: &str) -> 
                 note = n;
                 (map.dim(), map_chains(&map, method, o, file, None)?)
             } else {
-                (m.map().dim(), map_chains(m.map(), method, o, file, None)?)
+                // a map made from a complex's facets names its cells by the complex's labels
+                (m.map().dim(), map_chains(m.map(), method, o, file, m.complex())?)
             }
         }
         (Route::Arch, Input::Arch(x)) => (x.dim(), chains::arch(x, o, file)?),

@@ -1,11 +1,13 @@
 //! Writing an input in another format (`gmap convert`), chosen by the output's extension.
 //!
 //! Outputs: `.gmap` (with the points, and from a `.gmap` input the cell labels too) and
-//! `.moka` (gmap-core io), `.off` (2-maps with points), `.facets` (the barycentric
-//! subdivision: one simplex per dart), `.vtk` (maps of dimension ≤ 3 with points; from a
+//! `.moka` (gmap-core io), `.off` (2-maps with points), `.facets` (a simplicial complex's
+//! facets; of a map, the barycentric subdivision: one simplex per dart), `.cub` (a full
+//! cubical set's cubes), `.vtk` (maps of dimension ≤ 3 with points; from a
 //! `.gmap`, the cell labels as cell data), the incidence graph as `.json` or `.dot` (from a
 //! `.gmap`, each region with the labels of its cell) and LAR's `.lar.json`. A simplicial
-//! complex is written through its G-map; an architectural complex writes `.json` and `.dot`
+//! complex writes `.facets` itself and the map formats through its G-map; an architectural
+//! complex writes `.json` and `.dot`
 //! itself and the other formats through the G-map of its face poset. Every writer goes
 //! through a temporary file and a rename, so a failure leaves no partial output.
 
@@ -61,7 +63,19 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
     }
     match output_format(output)?.writer {
         Writer::Graph(text) => write::text(output, &text(graph_of(input, output, o)?.as_ref())),
-        Writer::Map { map, labelled, cubes } => save_through_map(input, output, o, (map, labelled, cubes)),
+        Writer::Map { map, labelled, cubes, facets } => {
+            save_through_map(input, output, o, (map, labelled, cubes, facets))
+        }
+        Writer::Cubes(write) => match input {
+            Input::Cubical(set) => write(set, output),
+            other => Err(err!(
+                Unsupported,
+                "{}: '.{}' holds cubical sets, not a {}",
+                output.display(),
+                extension(output),
+                other.kind()
+            )),
+        },
         Writer::Image(_) | Writer::None => Err(err!(
             Unsupported,
             "{}: unsupported output format '.{}' for a {}: it holds images",
@@ -105,14 +119,22 @@ fn save_through_map(
     input: &Input,
     output: &Path,
     o: &SaveOptions,
-    (map, labelled, cubes): (write::MapFn, Option<write::LabelledFn>, Option<write::CubesFn>),
+    (map, labelled, cubes, facets): (
+        write::MapFn,
+        Option<write::LabelledFn>,
+        Option<write::CubesFn>,
+        Option<write::FacetsFn>,
+    ),
 ) -> Result<()> {
     match input {
         Input::Map(m) => match (labelled, m.labelled()) {
             (Some(write), Some(g)) => write(g?, output),
             _ => map(m.map(), output),
         },
-        Input::Simplicial(sc) => map(&sc.to_gmap_within(o.max_darts)?, output),
+        Input::Simplicial(sc) => match facets {
+            Some(write) => write(sc, output),
+            None => map(&sc.to_gmap_within(o.max_darts)?, output),
+        },
         Input::Arch(x) => match labelled {
             Some(write) => write(&arch_to_labelled(x, o.max_darts, x.path(), output)?, output),
             None => map(&arch_to_map(x, o.max_darts, x.path(), output)?, output),
@@ -166,6 +188,15 @@ fn save_boundary(input: &Input, output: &Path) -> Result<()> {
 /// [`MapInput::labelled`]: crate::MapInput::labelled
 pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static str> {
     let Some(f) = format_of(output).filter(|f| f.is_written()) else { return Vec::new() };
+    // a format that cannot hold the input drops nothing: save refuses it with the reason
+    let holds = match f.writer {
+        Writer::Cubes(_) => matches!(input, Input::Cubical(_)),
+        Writer::Image(_) => matches!(input, Input::Image(_)),
+        _ => true,
+    };
+    if !holds {
+        return Vec::new();
+    }
     let with_labels = matches!(f.writer, Writer::Map { labelled: Some(_), .. });
     let mut out = Vec::new();
     let (labels, keeps_labels) = match input {
@@ -276,6 +307,9 @@ pub fn save_map(m: &DenseMap, output: &Path) -> Result<()> {
                     .context(format!("{}: cannot write the incidence graph", output.display()))
             })?;
             write::text(output, &text(&x))
+        }
+        Writer::Cubes(_) => {
+            Err(err!(Unsupported, "{}: '.{}' holds cubical sets, not a map", output.display(), extension(output)))
         }
         Writer::Image(_) | Writer::None => Err(err!(
             Unsupported,

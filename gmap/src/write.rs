@@ -7,7 +7,7 @@ use std::path::Path;
 use gmap_core::{DenseMap, LabelledGMap};
 use gmap_homology::arch::ArchComplex;
 use gmap_homology::lar::Lar;
-use gmap_ops::import::{CubicalSet, Image};
+use gmap_ops::import::{CubicalSet, Image, SimplicialComplex};
 
 use crate::error::{err, Error, ErrorKind, Result};
 
@@ -17,6 +17,8 @@ pub(crate) type MapFn = fn(&DenseMap, &Path) -> Result<()>;
 pub(crate) type LabelledFn = fn(&LabelledGMap, &Path) -> Result<()>;
 /// Writes a full cubical set's cubes as they are.
 pub(crate) type CubesFn = fn(&CubicalSet, &Path) -> Result<()>;
+/// Writes a simplicial complex's facets as they are.
+pub(crate) type FacetsFn = fn(&SimplicialComplex, &Path) -> Result<()>;
 /// The text of an incidence graph.
 pub(crate) type GraphFn = fn(&ArchComplex) -> String;
 /// Writes an image.
@@ -67,6 +69,43 @@ pub(crate) fn boundary_off(m: &DenseMap, output: &Path) -> Result<()> {
 /// `.facets`: the barycentric subdivision, one simplex per dart.
 pub(crate) fn facets(m: &DenseMap, output: &Path) -> Result<()> {
     Ok(gmap_ops::export::write_barycentric_facets(m, output)?)
+}
+
+/// `.facets` of a simplicial complex: its facets, one a line, their vertex labels as given.
+pub(crate) fn complex_facets(sc: &SimplicialComplex, output: &Path) -> Result<()> {
+    let mut s = String::new();
+    let mut digits = itoa::Buffer::new();
+    for f in sc.facets() {
+        for (i, &v) in f.iter().enumerate() {
+            if i > 0 {
+                s.push(' ');
+            }
+            s.push_str(digits.format(v));
+        }
+        s.push('\n');
+    }
+    text(output, &s)
+}
+
+/// `.cub` (CHomP's cubical sets): `dimension d`, then a cube a line by its minimal vertex,
+/// `(x_0,x_1,…)`. A cubical cell complex with cells on no cube is refused (the format holds
+/// cubes only), naming the first of them.
+pub(crate) fn cub(set: &CubicalSet, output: &Path) -> Result<()> {
+    set.require_full("a .cub of cubes")
+        .map_err(|e| err!(Unsupported, "{e}; write .json, .dot or .graphml (every cell)").with_path(output))?;
+    let mut s = format!("dimension {}\n", set.dim());
+    let mut digits = itoa::Buffer::new();
+    for c in set.cubes() {
+        s.push('(');
+        for (a, &x) in c.iter().enumerate() {
+            if a > 0 {
+                s.push(',');
+            }
+            s.push_str(digits.format(x));
+        }
+        s.push_str(")\n");
+    }
+    text(output, &s)
 }
 
 /// `.vtk` of a map with points.

@@ -2,7 +2,7 @@
 
 The library of the ``gmap`` command (a Rust workspace) for Python: read any file the
 command reads, build and edit generalized maps, and compute homology over Z or Z/p of
-G-maps, simplicial complexes, cubical sets (numpy arrays) and architectural complexes,
+G-maps, simplicial complexes, cubical sets (numpy arrays), grey images and architectural complexes,
 with the command's routes, checks and messages.
 
 >>> import gmap
@@ -33,6 +33,7 @@ from ._gmap import (
     GMap,
     GmapError,
     Homology,
+    Image,
     InputError,
     LimitError,
     ParseError,
@@ -58,6 +59,7 @@ __all__ = [
     "GMap",
     "GmapError",
     "Homology",
+    "Image",
     "InputError",
     "LimitError",
     "ParseError",
@@ -78,7 +80,7 @@ __version__ = "0.1.0"
 
 
 def _view(
-    self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex],
+    self: Union[GMap, SimplicialComplex, CubicalSet, Image, ArchComplex],
     path: Union[None, str, "os.PathLike[str]"] = None,
     *,
     generators: bool = False,
@@ -86,7 +88,7 @@ def _view(
 ) -> str:
     """The page of ``gmap view``: one self-contained HTML file (nothing fetched; opens from
     file:// in Chromium and Firefox) with the exploded darts and their alpha links (maps and
-    simplicial complexes), the cubes (cubical sets) or the regions (architectural
+    simplicial complexes), the cubes (cubical sets; an image's at its default level) or the regions (architectural
     complexes), the cells coloured by the label ``color_by`` (default: the first text label
     of the highest dimension with labels; an InputError when no cell has it), and with
     ``generators=True`` each homology generator highlighted. Written to ``path`` (the path is
@@ -94,13 +96,13 @@ def _view(
     return _page(self, path, generators, color_by)
 
 
-def _repr_html_(self: Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]) -> str:
+def _repr_html_(self: Union[GMap, SimplicialComplex, CubicalSet, Image, ArchComplex]) -> str:
     """The page of ``view()`` for Jupyter: an ``<iframe srcdoc>`` 600 px high holding the
     escaped page, or a short note when the page is over 8 MB (write it with ``view(path)``)."""
     return _page_frame(self)
 
 
-for _cls in (GMap, SimplicialComplex, CubicalSet, ArchComplex):
+for _cls in (GMap, SimplicialComplex, CubicalSet, Image, ArchComplex):
     _cls.view = _view
     _cls._repr_html_ = _repr_html_
 del _cls

@@ -10,15 +10,24 @@ PathLike = Union[str, "os.PathLike[str]"]
 Facets = Union[Sequence[Sequence[int]], npt.NDArray[np.integer]]
 LabelValue = Union[int, float, str]
 
+Item = Union[int, str, Tuple[int, ...]]
+
 class GmapError(Exception):
-    """Base class of every error raised by gmap."""
+    """Base class of every error raised by gmap: the message the command prints, the file
+    (`path`, also `file`) and line it concerns, and the item it is about (`item`: a dart
+    number as the GMap numbers its darts, a cell `(dim, dart)`, a simplex's vertex labels,
+    a region's id, a facet's index; `item_kind` says which: 'dart', 'cell', 'simplex',
+    'region', 'facet'), each None when it does not apply."""
 
     message: str
+    path: Optional[str]
     file: Optional[str]
     line: Optional[int]
+    item: Optional[Item]
+    item_kind: Optional[str]
 
 class ParseError(GmapError):
-    """A file that does not fit its format; `.file` and `.line` (or None) say where."""
+    """A file that does not fit its format; `.path` and `.line` (or None) say where."""
 
 class LimitError(GmapError):
     """An input refused for its size: over the dart, face or work limit, or the memory policy."""
@@ -117,7 +126,9 @@ class GMap:
         is returned as a str), or its HTML text when path is None."""
     def _repr_html_(self) -> str:
         """The page in an iframe for Jupyter, or a note when it is too big to embed."""
-    def save(self, path: PathLike) -> None: ...
+    def save(self, path: PathLike, lossy: bool = False) -> None:
+        """Writes the map by extension (the writers of `gmap convert`); refuses a format that
+        would drop its labels or points unless lossy=True."""
     def incidences(self) -> List[Tuple[Tuple[int, int], Tuple[int, int]]]: ...
     def incidence_graph(self) -> Any:
         """The incidence graph as a networkx.Graph (needs networkx)."""
@@ -154,7 +165,7 @@ class SimplicialComplex:
     def __len__(self) -> int: ...
     def is_pure(self) -> bool: ...
     def to_gmap(self) -> GMap: ...
-    def save(self, path: PathLike) -> None: ...
+    def save(self, path: PathLike, lossy: bool = False) -> None: ...
     def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
         """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
         is returned as a str), or its HTML text when path is None."""
@@ -175,7 +186,7 @@ class CubicalSet:
     def array(self) -> npt.NDArray[np.bool_]: ...
     def __len__(self) -> int: ...
     def to_gmap(self, periodic: bool = False) -> GMap: ...
-    def save(self, path: PathLike) -> None: ...
+    def save(self, path: PathLike, lossy: bool = False) -> None: ...
     def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
         """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
         is returned as a str), or its HTML text when path is None."""
@@ -190,14 +201,30 @@ class ArchComplex:
     def dim(self) -> int: ...
     def __len__(self) -> int: ...
     def to_json(self) -> str: ...
-    def save(self, path: PathLike) -> None: ...
+    def save(self, path: PathLike, lossy: bool = False) -> None: ...
     def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
         """The page of `gmap view` (one self-contained HTML file) written to `path` (the path
         is returned as a str), or its HTML text when path is None."""
     def _repr_html_(self) -> str:
         """The page in an iframe for Jupyter, or a note when it is too big to embed."""
 
-Input = Union[PathLike, GMap, SimplicialComplex, CubicalSet, ArchComplex, Facets, npt.NDArray[Any]]
+class Image:
+    """A grey-value image (`.npy`, `.complex`, `.pgm`, `.png`): a cubical set at a level
+    for homology (the nonzero values, or `level=`), a filtration for persistence."""
+
+    @property
+    def dim(self) -> int: ...
+    @property
+    def shape(self) -> List[int]: ...
+    def __len__(self) -> int: ...
+    def save(self, path: PathLike, lossy: bool = False) -> None:
+        """Writes the image as it is, `.npy` or `.complex`."""
+    def view(self, path: Optional[PathLike] = None, *, generators: bool = False, color_by: Optional[str] = None) -> str:
+        """The page of `gmap view` (the image's cubes at its default level)."""
+    def _repr_html_(self) -> str:
+        """The page in an iframe for Jupyter, or a note when it is too big to embed."""
+
+Input = Union[PathLike, GMap, SimplicialComplex, CubicalSet, Image, ArchComplex, Facets, npt.NDArray[Any]]
 
 def homology(
     x: Input,
@@ -206,13 +233,15 @@ def homology(
     generators: bool = False,
     method: Optional[str] = None,
     periodic: bool = False,
+    level: Optional[float] = None,
 ) -> Homology:
-    """The homology groups of `x` over Z (or Z/field)."""
+    """The homology groups of `x` over Z (or Z/field); `level`: an image's cubes are its
+    values <= level (default: the nonzero values)."""
 
 Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
 
 def persistence(
-    x: Union[PathLike, GMap, CubicalSet, SimplicialComplex, ArchComplex, Sequence[Sequence[int]], npt.NDArray[Any]],
+    x: Union[PathLike, GMap, CubicalSet, Image, SimplicialComplex, ArchComplex, Sequence[Sequence[int]], npt.NDArray[Any]],
     *,
     field: int = 2,
     construction: str = "T",
@@ -239,8 +268,8 @@ def set_max_memory(nbytes: Optional[int]) -> None:
 def max_memory() -> int:
     """The memory limit in force, in bytes."""
 
-def open(path: PathLike) -> Union[GMap, SimplicialComplex, CubicalSet, ArchComplex]:
-    """What the file holds."""
+def open(path: PathLike) -> Union[GMap, SimplicialComplex, CubicalSet, Image, ArchComplex]:
+    """What the file holds, in the class the format registry names for its kind."""
 
 def _bench_json(paths: Sequence[PathLike]) -> str: ...
 def _page(x: Any, path: Optional[PathLike] = None, generators: bool = False, color_by: Optional[str] = None) -> str: ...

@@ -1,8 +1,14 @@
-//! The exceptions of the package and the mapping of the library's errors onto them.
+//! The exceptions of the package and the mapping of the facade's errors onto them.
 //!
-//! Every failure of the library reaches Python as a subclass of `gmap.GmapError` carrying
-//! the message the command line prints after `error: ` (the chain of causes joined by
-//! `: `). Which subclass is chosen by the kind of the error, not by its text.
+//! Every failure reaches Python as a subclass of `gmap.GmapError` carrying the message the
+//! command line prints after `error: ` and, as attributes, where it lies: `path` (and its
+//! older name `file`), `line`, and `item`, what the error is about when it names something
+//! (`item_kind` says what: a dart numbered as the Python `GMap` numbers its darts, a cell
+//! `(dim, dart)`, a simplex by its vertex labels, a region by its id, a facet of a list by
+//! its index), all taken from the facade's typed `gmap::Error` (`kind`, `path`, `line`,
+//! `item`, `is_io`). The subclass is chosen by the kind of the error, never by its text.
+
+use std::path::Path;
 
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
@@ -13,7 +19,7 @@ create_exception!(
     gmap,
     ParseError,
     GmapError,
-    "A file that does not fit its format; `.file` and `.line` (or None) say where."
+    "A file that does not fit its format; `.path` (also `.file`) and `.line` (or None) say where."
 );
 create_exception!(
     gmap,
@@ -50,36 +56,133 @@ pub enum Kind {
     Io,
 }
 
-/// A failure on its way to Python: the kind, the command line's message, and where in a
-/// file it lies when known.
+/// What an error is about, as the exception's `item` (and `item_kind`) give it to Python.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Item {
+    /// a dart, in the Python GMap's numbering (the file's for a map read from one): an int
+    Dart(u64),
+    /// the `dim`-cell of a dart (its smallest, as `GMap.cells` gives it): `(dim, dart)`
+    Cell { dim: usize, dart: u64 },
+    /// a simplex by its vertex labels: a tuple of ints
+    Simplex(Vec<u64>),
+    /// a region of an architectural complex by its id: a str
+    Region(String),
+    /// a facet of facets given from Python, by its index: an int
+    Facet(usize),
+}
+
+impl Item {
+    /// The facade's item in the package's terms (`None` for a kind of item this build does
+    /// not know).
+    fn of(item: &gmap::Item) -> Option<Item> {
+        Some(match item {
+            gmap::Item::Dart(d) => Item::Dart(*d),
+            gmap::Item::Cell { dim, dart } => Item::Cell { dim: *dim, dart: *dart },
+            gmap::Item::Simplex(v) => Item::Simplex(v.clone()),
+            gmap::Item::Region(r) => Item::Region(r.clone()),
+            _ => return None,
+        })
+    }
+
+    /// `item_kind`: what the item is.
+    fn kind(&self) -> &'static str {
+        match self {
+            Item::Dart(_) => "dart",
+            Item::Cell { .. } => "cell",
+            Item::Simplex(_) => "simplex",
+            Item::Region(_) => "region",
+            Item::Facet(_) => "facet",
+        }
+    }
+
+    /// `item`: the Python value.
+    fn to_py(&self, py: Python<'_>) -> PyResult<PyObject> {
+        Ok(match self {
+            Item::Dart(d) => d.into_pyobject(py)?.into_any().unbind(),
+            Item::Cell { dim, dart } => (*dim, *dart).into_pyobject(py)?.into_any().unbind(),
+            Item::Simplex(v) => pyo3::types::PyTuple::new(py, v)?.into_any().unbind(),
+            Item::Region(r) => r.into_pyobject(py)?.into_any().unbind(),
+            Item::Facet(f) => f.into_pyobject(py)?.into_any().unbind(),
+        })
+    }
+}
+
+/// A failure on its way to Python: the kind, the command line's message, and where it lies
+/// when known.
 #[derive(Debug)]
 pub struct Failure {
     pub kind: Kind,
     pub message: String,
-    pub file: Option<String>,
+    pub path: Option<String>,
     pub line: Option<usize>,
+    pub item: Option<Item>,
 }
 
 pub type Res<T> = Result<T, Failure>;
 
 impl Failure {
     pub fn new(kind: Kind, message: impl Into<String>) -> Self {
-        Failure { kind, message: message.into(), file: None, line: None }
+        Failure { kind, message: message.into(), path: None, line: None, item: None }
     }
 
     pub fn input(message: impl Into<String>) -> Self {
         Failure::new(Kind::Input, message)
     }
 
-    /// Prefixes the message with `what: ` (the command line's context) and records the file.
-    pub fn in_file(mut self, file: &str) -> Self {
-        if !self.message.starts_with(file) {
-            self.message = format!("{file}: {}", self.message);
-        }
-        if self.file.is_none() {
-            self.file = Some(file.to_string());
-        }
+    /// This failure about the file `path`.
+    pub fn at_path(mut self, path: &Path) -> Self {
+        self.path = Some(path.display().to_string());
         self
+    }
+
+    /// This failure naming dart `k` (the Python GMap's numbering).
+    pub fn with_dart(mut self, k: usize) -> Self {
+        self.item = Some(Item::Dart(k as u64));
+        self
+    }
+
+    /// This failure naming the facet of index `k` of facets given from Python.
+    pub fn with_facet(mut self, k: usize) -> Self {
+        self.item = Some(Item::Facet(k));
+        self
+    }
+
+    /// A reader's refusal of what was made in memory (facets, a cubical set): sorted into
+    /// kinds, with its line and item, by the facade (as if read from a file without a
+    /// name), its message the reader's own.
+    pub fn in_memory(e: gmap::ops::import::ImportError) -> Self {
+        let message = chain_message(&e);
+        let f = Failure::from(gmap::Error::from(gmap::ops::import::FileError::new(Path::new(""), e)));
+        Failure { message, path: None, ..f }
+    }
+
+    /// A map that breaks the G-map axioms (`GMap.check`, `GMap.from_alphas`), naming the
+    /// dart where it fails (the dense numbering is the GMap's).
+    pub fn validity(e: gmap::core::ValidityError) -> Self {
+        use gmap::core::ValidityError as V;
+        let dart = match &e {
+            V::OutOfRange { dart, .. } | V::NotInvolution { dart, .. } | V::NotCommuting { dart, .. } => {
+                Some(dart.index())
+            }
+            // the variants without a dart (a dimension out of range) name none
+            _ => None,
+        };
+        let f = Failure::new(Kind::Validity, chain_message(&e));
+        match dart {
+            Some(k) => f.with_dart(k),
+            None => f,
+        }
+    }
+
+    /// A builder's refusal: its arguments (InputError), or the size of what it would make
+    /// (LimitError).
+    pub fn build(e: gmap::ops::build::BuildError) -> Self {
+        use gmap::ops::build::BuildError as B;
+        let kind = match e {
+            B::TooManyDarts { .. } | B::MemoryLimit(_) => Kind::Limit,
+            _ => Kind::Input,
+        };
+        Failure::new(kind, chain_message(&e))
     }
 }
 
@@ -101,143 +204,12 @@ pub fn chain_message(e: &(dyn std::error::Error + 'static)) -> String {
     msg.replace('\n', " ")
 }
 
-fn import_kind(e: &gmap_ops::import::ImportError) -> (Kind, Option<usize>) {
-    use gmap_ops::import::ImportError as E;
-    match e {
-        E::Io(_) => (Kind::Io, None),
-        E::Syntax { line, .. } => (Kind::Parse, Some(*line)),
-        E::MixedDimension { line, .. } | E::RepeatedVertex { line, .. } => (Kind::Parse, Some(*line)),
-        E::RidgeInManyFacets { lines, .. } => (Kind::Precondition, lines.first().copied()),
-        E::TooManyDarts { .. } | E::OutOfMemory { .. } | E::MemoryLimit(_) => (Kind::Limit, None),
-        E::EdgeInManyPolygons { lines, .. } => (Kind::Precondition, lines.first().copied()),
-        _ => (Kind::Parse, None),
-    }
-}
-
-impl From<gmap_ops::import::ImportError> for Failure {
-    fn from(e: gmap_ops::import::ImportError) -> Self {
-        let (kind, line) = import_kind(&e);
-        Failure { kind, message: chain_message(&e), file: None, line }
-    }
-}
-
-impl From<gmap_ops::import::FileError> for Failure {
-    fn from(e: gmap_ops::import::FileError) -> Self {
-        let (kind, line) = import_kind(&e.error);
-        let file = e.path.display().to_string();
-        Failure { kind, message: chain_message(&e), file: Some(file), line }
-    }
-}
-
-impl From<gmap_core::io::ReadError> for Failure {
-    fn from(e: gmap_core::io::ReadError) -> Self {
-        use gmap_core::io::ReadErrorKind as K;
-        let kind = match &e.kind {
-            K::Io(_) => Kind::Io,
-            K::DartLimit { .. } => Kind::Limit,
-            _ => Kind::Parse,
-        };
-        Failure { kind, message: chain_message(&e), file: Some(e.file.clone()), line: e.line }
-    }
-}
-
-impl From<gmap_core::io::WriteError> for Failure {
-    fn from(e: gmap_core::io::WriteError) -> Self {
-        Failure::new(Kind::Io, chain_message(&e))
-    }
-}
-
-impl From<gmap_homology::json::JsonFileError> for Failure {
-    fn from(e: gmap_homology::json::JsonFileError) -> Self {
-        let kind = if matches!(e.error, gmap_homology::json::JsonError::Io(_)) { Kind::Io } else { Kind::Parse };
-        Failure { kind, message: chain_message(&e), file: Some(e.path.display().to_string()), line: None }
-    }
-}
-
-impl From<gmap_homology::json::JsonError> for Failure {
-    fn from(e: gmap_homology::json::JsonError) -> Self {
-        Failure::new(Kind::Parse, chain_message(&e))
-    }
-}
-
-impl From<gmap_homology::HomologyError> for Failure {
-    fn from(e: gmap_homology::HomologyError) -> Self {
-        use gmap_homology::HomologyError as E;
-        let kind = match &e {
-            E::NotPrime(_) => Kind::Input,
-            E::MemoryLimit(_) | E::GeneratorsTooLarge { .. } => Kind::Limit,
-            _ => Kind::Computation,
-        };
-        Failure::new(kind, chain_message(&e))
-    }
-}
-
-impl From<gmap_homology::PreconditionError> for Failure {
-    fn from(e: gmap_homology::PreconditionError) -> Self {
-        Failure::new(Kind::Precondition, chain_message(&e))
-    }
-}
-
-impl From<gmap_homology::simplices::FaceError> for Failure {
-    fn from(e: gmap_homology::simplices::FaceError) -> Self {
-        use gmap_homology::simplices::FaceError as E;
-        let kind = match &e {
-            E::TooManyFaces { .. } | E::FacetTooLarge(_) => Kind::Limit,
-            _ => Kind::Input,
-        };
-        Failure::new(kind, chain_message(&e))
-    }
-}
-
-impl From<gmap_homology::cubical::CubicalError> for Failure {
-    fn from(e: gmap_homology::cubical::CubicalError) -> Self {
-        use gmap_homology::cubical::CubicalError as E;
-        let kind = if matches!(e, E::BadShape(_)) { Kind::Input } else { Kind::Limit };
-        Failure::new(kind, chain_message(&e))
-    }
-}
-
-impl From<gmap_core::resources::MemoryLimit> for Failure {
-    fn from(e: gmap_core::resources::MemoryLimit) -> Self {
-        Failure::new(Kind::Limit, chain_message(&e))
-    }
-}
-
-impl From<gmap_core::ValidityError> for Failure {
-    fn from(e: gmap_core::ValidityError) -> Self {
-        Failure::new(Kind::Validity, chain_message(&e))
-    }
-}
-
-impl From<gmap_core::EditError> for Failure {
-    fn from(e: gmap_core::EditError) -> Self {
-        Failure::new(Kind::Precondition, chain_message(&e))
-    }
-}
-
-impl From<gmap_ops::euler::EulerError> for Failure {
-    fn from(e: gmap_ops::euler::EulerError) -> Self {
-        Failure::new(Kind::Precondition, chain_message(&e))
-    }
-}
-
-impl From<gmap_ops::build::BuildError> for Failure {
-    fn from(e: gmap_ops::build::BuildError) -> Self {
-        Failure::new(Kind::Input, chain_message(&e))
-    }
-}
-
-impl From<std::io::Error> for Failure {
-    fn from(e: std::io::Error) -> Self {
-        Failure::new(Kind::Io, chain_message(&e))
-    }
-}
-
 impl From<gmap::Error> for Failure {
     fn from(e: gmap::Error) -> Self {
         use gmap::ErrorKind as K;
+        // a file that cannot be opened, read or written is an OSError, whatever the stage
         let kind = match e.kind() {
-            K::Parse if e.line().is_none() && e.chain().iter().any(|c| c.contains("os error")) => Kind::Io,
+            _ if e.is_io() => Kind::Io,
             K::Parse => Kind::Parse,
             K::Limit => Kind::Limit,
             K::Precondition => Kind::Precondition,
@@ -245,11 +217,13 @@ impl From<gmap::Error> for Failure {
             K::Compute => Kind::Computation,
             _ => Kind::Input,
         };
-        // an input made in memory has no file: its messages open with ": "
+        // an input made in memory is a file without a name, which the facade's messages name
+        // first: an empty name before its ": " (a real file's name is never empty)
         let message = e.to_string();
         let message = message.strip_prefix(": ").map(str::to_string).unwrap_or(message);
-        let file = e.path().map(|p| p.display().to_string()).filter(|p| !p.is_empty());
-        Failure { kind, message, file, line: e.line() }
+        let path = e.path().filter(|p| !p.as_os_str().is_empty()).map(|p| p.display().to_string());
+        let item = e.item().and_then(Item::of);
+        Failure { kind, message, path, line: e.line(), item }
     }
 }
 
@@ -266,8 +240,13 @@ impl From<Failure> for PyErr {
         };
         Python::with_gil(|py| {
             let v = err.value(py);
-            let _ = v.setattr("file", f.file.clone());
+            let item: Option<PyObject> = f.item.as_ref().and_then(|i| i.to_py(py).ok());
+            // attributes of a fresh exception object: setting them does not fail
+            let _ = v.setattr("path", f.path.clone());
+            let _ = v.setattr("file", f.path.clone());
             let _ = v.setattr("line", f.line);
+            let _ = v.setattr("item", item);
+            let _ = v.setattr("item_kind", f.item.as_ref().map(Item::kind));
             let _ = v.setattr("message", f.message.clone());
         });
         err

@@ -6,16 +6,18 @@
 //! made once after each edit (O(N n)) and kept until the next; sewing keeps the numbering,
 //! an Euler operator that makes or removes darts renumbers them (in storage order).
 
-use std::path::Path;
 use std::sync::Arc;
 
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use gmap::Input;
-use gmap_core::{AlphaSet, DartId, DenseMap, LabelValue, LabelledGMap, Labels, MAX_DIM};
-use gmap_ops::euler::ops as eops;
+use gmap::core::edit::EditError;
+use gmap::core::{AlphaSet, DartId, DenseMap, LabelValue, LabelledGMap, Labels, MAX_DIM};
+use gmap::ops::euler::ops as eops;
+use gmap::ops::euler::EulerError;
+use gmap::ops::import::SimplicialComplex;
+use gmap::{Input, MapInput, Sourced};
 
 use crate::errors::{Failure, Kind, Res};
 
@@ -30,7 +32,7 @@ pub struct PyGMap {
     dense: Option<Arc<DenseMap>>,
     /// the simplicial complex the map was built from (`build.from_facets`), while no edit
     /// changed its darts: generators are then named by the complex's vertex labels
-    source: Option<Arc<Input>>,
+    source: Option<Arc<Sourced<SimplicialComplex>>>,
 }
 
 impl PyGMap {
@@ -49,21 +51,27 @@ impl PyGMap {
         m
     }
 
-    /// The map of a simplicial complex's facets, which keeps the complex to name its cells.
-    pub fn from_complex(m: &DenseMap, complex: Input) -> Self {
+    /// The map of a simplicial complex's facets (`m`, its G-map), which keeps the complex to
+    /// name its cells.
+    pub fn from_complex(m: &DenseMap, complex: Arc<Sourced<SimplicialComplex>>) -> Self {
         let mut g = PyGMap::from_dense(m);
-        g.source = Some(Arc::new(complex));
+        g.source = Some(complex);
         g
     }
 
     /// The map with its points and labels as a facade input (a copy).
     pub fn input(&self) -> Input {
-        Input::Map(gmap::MapInput::from_labelled(self.g.clone()))
+        Input::Map(MapInput::from_labelled(self.g.clone()))
     }
 
-    /// The complex the map was built from, while no edit changed its darts.
-    pub fn source(&self) -> Option<Arc<Input>> {
-        self.source.clone()
+    /// The map as the facade's homology takes it (a copy of its darts): the G-map of the
+    /// complex it was built from while no edit changed its darts (its cells then named by
+    /// the complex's vertex labels), else the map itself.
+    pub fn homology_input(&mut self) -> Res<Input> {
+        match &self.source {
+            Some(sc) => Ok(Input::Map(MapInput::of_complex(sc.clone())?)),
+            None => Ok(Input::Map(MapInput::new((*self.dense()).clone()))),
+        }
     }
 
     /// Renumbers the darts after darts were made or removed.
@@ -92,6 +100,89 @@ impl PyGMap {
     /// The dart number of a live handle.
     fn number(&self, h: DartId) -> usize {
         self.slot_index[self.g.dart_index(h)] as usize
+    }
+
+    /// The dart number of a handle, when it names a dart numbered now (not one an edit made
+    /// or removed since the numbering).
+    fn number_of(&self, h: DartId) -> Option<usize> {
+        if !self.g.contains(h) {
+            return None;
+        }
+        let k = *self.slot_index.get(self.g.dart_index(h))?;
+        (k != u32::MAX && self.ids.get(k as usize) == Some(&h)).then_some(k as usize)
+    }
+
+    /// A dart in a message: `dart N` in the map's numbering.
+    fn dart_text(&self, h: DartId) -> String {
+        match self.number_of(h) {
+            Some(k) => format!("dart {k}"),
+            None => "a dart the edit made or removed".to_string(),
+        }
+    }
+
+    /// A refused sew or unsew (PreconditionError), its darts in the map's numbering and the
+    /// offending one as the error's `item`.
+    fn edit_failure(&self, e: &EditError) -> Failure {
+        let d = |h: DartId| self.dart_text(h);
+        let (message, dart) = match e {
+            EditError::NoSuchDart(h) => (format!("{} does not exist (removed or from another map)", d(*h)), Some(*h)),
+            EditError::NotFree { dart, alpha } => (format!("{} is not {alpha}-free", d(*dart)), Some(*dart)),
+            EditError::NotIsomorphic { first, second, alpha, at } => (
+                format!(
+                    "the orbits of {} and {} cannot be paired one-to-one by alpha_{alpha}-sewing (conflict at {})",
+                    d(*first),
+                    d(*second),
+                    d(*at)
+                ),
+                Some(*at),
+            ),
+            EditError::NotOrientable { dart, alpha, other } => (
+                format!(
+                    "the component is not orientable: alpha_{alpha} links {} and {} of the same class",
+                    d(*dart),
+                    d(*other)
+                ),
+                Some(*dart),
+            ),
+            // the variants without a dart (an index, a dimension) say it as they are
+            other => (other.to_string(), None),
+        };
+        self.with_dart(Failure::new(Kind::Precondition, message), dart)
+    }
+
+    /// A refused Euler operator (PreconditionError), as [`PyGMap::edit_failure`]; made
+    /// before the map is renumbered.
+    fn euler_failure(&self, e: &EulerError) -> Failure {
+        let d = |h: DartId| self.dart_text(h);
+        let (message, dart) = match e {
+            EulerError::NoSuchDart(h) => (format!("{} does not exist", d(*h)), Some(*h)),
+            EulerError::Free { dart, alpha } => (format!("{} is {alpha}-free", d(*dart)), Some(*dart)),
+            EulerError::Misplaced { dart, what } => {
+                (format!("{} is not where the {what} needs it", d(*dart)), Some(*dart))
+            }
+            EulerError::OpenCut(h) => (format!("the cut is not closed at {}", d(*h)), Some(*h)),
+            EulerError::NotSeparating(h) => (format!("the cut through {} does not separate its cell", d(*h)), Some(*h)),
+            EulerError::DegreeAboveTwo { dim, dart } => {
+                (format!("the {dim}-cell of {} has degree above 2", d(*dart)), Some(*dart))
+            }
+            EulerError::WouldChangeTopology { dim, dart, why } => {
+                (format!("the {dim}-cell of {} {why}", d(*dart)), Some(*dart))
+            }
+            EulerError::NoPoint { dim, dart } => {
+                (format!("the {dim}-cell of {} has a vertex without a point", d(*dart)), Some(*dart))
+            }
+            // the variants without a dart (a cell dimension out of range) say it as they are
+            other => (other.to_string(), None),
+        };
+        self.with_dart(Failure::new(Kind::Precondition, message), dart)
+    }
+
+    /// `f` with the dart's number as its item, when it has one now.
+    fn with_dart(&self, f: Failure, dart: Option<DartId>) -> Failure {
+        match dart.and_then(|h| self.number_of(h)) {
+            Some(k) => f.with_dart(k),
+            None => f,
+        }
     }
 
     /// Drops the frozen map after an edit that keeps the darts.
@@ -131,25 +222,17 @@ impl PyGMap {
         self.number(h)
     }
 
-    fn after_insert(&mut self, r: Result<DartId, gmap_ops::euler::EulerError>) -> PyResult<usize> {
+    fn after_insert(&mut self, r: Result<DartId, EulerError>) -> PyResult<usize> {
         match r {
             Ok(h) => Ok(self.index_of(h)),
             Err(e) => {
+                // the darts named in the numbering the caller used, then renumbered
+                let f = self.euler_failure(&e);
                 self.refresh();
-                Err(Failure::from(e).into())
+                Err(f.into())
             }
         }
     }
-}
-
-/// Writes a map by extension: `.gmap` with its points and labels; the other formats
-/// (`.moka`, `.off`, `.facets`, `.vtk`, `.dot`) as `gmap convert` writes them.
-fn save_map(m: &mut PyGMap, path: &Path) -> Res<()> {
-    if gmap::input::extension(path) == "gmap" {
-        return Ok(gmap_core::io::write_labelled_gmap(&m.g, path)?);
-    }
-    let d = m.dense();
-    Ok(gmap::save::save_map(&d, path)?)
 }
 
 fn label_to_py(py: Python<'_>, v: &LabelValue) -> PyObject {
@@ -274,8 +357,16 @@ impl PyGMap {
             .ok()
             .filter(|&n| n < u32::MAX as usize)
             .ok_or_else(|| Failure::input(format!("{darts} darts: the count must be from 0 to 2^32 - 2")))?;
-        gmap_core::resources::check_memory("the darts", (darts as u64).checked_mul(64 + 8 * dim as u64))
-            .map_err(Failure::from)?;
+        // the dart limit of the readers of map files (what the memory budget and the work
+        // limit hold for this dimension)
+        let most = gmap::ops::import::default_max_darts(dim);
+        if darts as u64 > most {
+            return Err(Failure::new(
+                Kind::Limit,
+                format!("{darts} darts: a map of dimension {dim} holds at most {most} here (the memory budget)"),
+            )
+            .into());
+        }
         let mut g = LabelledGMap::with_attributes(dim);
         for _ in 0..darts {
             g.create_dart();
@@ -316,7 +407,7 @@ impl PyGMap {
                 flat.push(x as u32);
             }
         }
-        let m = py.allow_threads(|| DenseMap::try_from_flat(rows - 1, flat)).map_err(Failure::from)?;
+        let m = py.allow_threads(|| DenseMap::try_from_flat(rows - 1, flat)).map_err(Failure::validity)?;
         Ok(PyGMap::from_dense(&m))
     }
 
@@ -385,7 +476,7 @@ impl PyGMap {
     /// PreconditionError when they cannot be sewn.
     fn sew(&mut self, d: i64, e: i64, i: i64) -> PyResult<()> {
         let (d, e, i) = (self.handle(d)?, self.handle(e)?, self.dim_index(i, "alpha")?);
-        self.g.try_sew(d, e, i).map_err(Failure::from)?;
+        self.g.try_sew(d, e, i).map_err(|e| self.edit_failure(&e))?;
         self.touched();
         Ok(())
     }
@@ -393,7 +484,7 @@ impl PyGMap {
     /// i-unsews d (and its orbit), CGAL's `unsew<i>`.
     fn unsew(&mut self, d: i64, i: i64) -> PyResult<()> {
         let (d, i) = (self.handle(d)?, self.dim_index(i, "alpha")?);
-        self.g.try_unsew(d, i).map_err(Failure::from)?;
+        self.g.try_unsew(d, i).map_err(|e| self.edit_failure(&e))?;
         self.touched();
         Ok(())
     }
@@ -445,7 +536,7 @@ impl PyGMap {
     /// involution, alpha_i alpha_j not involutive for i + 2 <= j); returns None otherwise.
     fn check(&mut self) -> PyResult<()> {
         let d = self.dense();
-        d.validate().map_err(Failure::from)?;
+        d.validate().map_err(Failure::validity)?;
         Ok(())
     }
 
@@ -503,7 +594,7 @@ impl PyGMap {
     /// cell without labels). Labels exist for dimensions 0 to 5.
     fn labels<'py>(&mut self, py: Python<'py>, i: i64) -> PyResult<Bound<'py, PyList>> {
         let i = self.dim_index(i, "cell dimension")?;
-        let (_, labels, _) = gmap_core::to_dense_labels(&self.g);
+        let (_, labels, _) = gmap::core::to_dense_labels(&self.g);
         let n = self.dense().cell_count(i);
         let out = PyList::empty(py);
         for c in 0..n {
@@ -519,7 +610,7 @@ impl PyGMap {
     /// Sets the label `name` of the i-cell of dart d to `value` (int, float or str).
     fn set_label(&mut self, i: i64, d: i64, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let i = self.dim_index(i, "cell dimension")?;
-        if i > gmap_core::labels::MAX_LABELLED_DIM {
+        if i > gmap::core::labels::MAX_LABELLED_DIM {
             return Err(Failure::input(format!("cells of dimension {i} have no labels (at most 5)")).into());
         }
         let h = self.handle(d)?;
@@ -537,7 +628,7 @@ impl PyGMap {
 
     /// A copy of the map.
     fn copy(&mut self) -> Self {
-        let (d, labels, _) = gmap_core::to_dense_labels(&self.g);
+        let (d, labels, _) = gmap::core::to_dense_labels(&self.g);
         let mut m = PyGMap::from_dense(&d);
         for (i, per) in labels.of.iter().enumerate() {
             let reps = d.cells(i).reps;
@@ -552,26 +643,37 @@ impl PyGMap {
     }
 
     /// The text of the map in the `.gmap` format (points and labels kept).
-    fn to_text(&self) -> String {
-        String::from_utf8_lossy(&gmap_core::io::format_labelled_gmap(&self.g)).into_owned()
+    fn to_text(&self) -> PyResult<String> {
+        Ok(gmap::formats::to_text(&self.input(), "gmap").map_err(Failure::from)?)
     }
 
     /// GMap.from_text(text): the map of a `.gmap` text (ParseError naming the line).
     #[staticmethod]
     fn from_text(text: &str) -> PyResult<Self> {
-        let g = gmap_core::io::parse_labelled_gmap(text.as_bytes(), "<text>").map_err(Failure::from)?;
-        Ok(PyGMap::from_labelled(g))
+        match gmap::formats::parse_text("gmap", text).map_err(Failure::from)? {
+            Input::Map(m) => match m.labelled() {
+                Some(g) => Ok(PyGMap::from_labelled(g.map_err(Failure::from)?.clone())),
+                None => Ok(PyGMap::from_dense(m.map())),
+            },
+            other => Err(Failure::input(format!("a .gmap text read as a {}", other.kind())).into()),
+        }
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
         let f = slf.get_type().getattr("from_text")?;
-        let t = slf.borrow().to_text();
+        let t = slf.borrow().to_text()?;
         Ok((f, (t,)))
     }
 
-    /// Writes the map by extension: `.gmap` (points and labels kept), `.moka`.
-    fn save(&mut self, path: std::path::PathBuf) -> PyResult<()> {
-        save_map(self, &path).map_err(Into::into)
+    /// save(path, lossy=False): writes the map by extension, as `gmap convert` does:
+    /// `.gmap` (points and labels kept), `.moka`, `.off`, `.vtk` (labels as cell data),
+    /// `.facets` (the barycentric subdivision), the incidence graph (`.json`, `.dot`,
+    /// `.graphml`), `.lar.json`. Without `lossy`, a format that would drop the map's
+    /// labels or points is refused (InputError), as `gmap convert` refuses it without
+    /// `--lossy`.
+    #[pyo3(signature = (path, lossy = false))]
+    fn save(&self, py: Python<'_>, path: std::path::PathBuf, lossy: bool) -> PyResult<()> {
+        crate::save::save_input(py, &self.input(), &path, lossy)
     }
 
     /// The incidence pairs of the map's cells: a list of ((i, a), (i + 1, b)) for each
@@ -592,7 +694,7 @@ impl PyGMap {
         })
     }
 
-    // --- Euler operators under CGAL's names (gmap_ops::euler::ops::cgal) ---
+    // --- Euler operators under CGAL's names (gmap::ops::euler::ops::cgal) ---
 
     /// CGAL's insert_cell_0_in_cell_1(d): a vertex in the middle of the edge of d; returns a
     /// dart of the new vertex.
@@ -701,9 +803,9 @@ impl PyGMap {
     fn remove_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
-        let r = eops::try_remove_cell(&mut self.g, h, i);
+        let r = eops::try_remove_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
-        r.map_err(Failure::from)?;
+        r?;
         Ok(before - self.g.dart_count())
     }
 
@@ -717,9 +819,9 @@ impl PyGMap {
     fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
-        let r = eops::try_contract_cell(&mut self.g, h, i);
+        let r = eops::try_contract_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
-        r.map_err(Failure::from)?;
+        r?;
         Ok(before - self.g.dart_count())
     }
 

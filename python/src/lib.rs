@@ -1,12 +1,12 @@
 //! `gmap._gmap`: the compiled half of the `gmap` Python package.
 //!
-//! Python-facing types and functions only; the computations are the workspace crates',
-//! run with the GIL released. Modules:
-//! * [`errors`]: the exception classes and the mapping of the library's errors;
-//! * [`compute`]: what the facade does not take: a cubical set borrowed from numpy, a
-//!   result read back from its JSON;
-//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `ArchComplex` (each holds a facade
-//!   `gmap::Input`), writing files;
+//! Python-facing types and functions only: every computation and decision (routes, checks
+//! of options, memory estimates, formats, writers) is a call of the facade, the `gmap`
+//! crate, run with the GIL released. Modules:
+//! * [`errors`]: the exception classes and the mapping of the facade's errors;
+//! * [`objects`]: `SimplicialComplex`, `CubicalSet`, `Image`, `ArchComplex` (each holds a
+//!   facade `gmap::Input`), and the bytes of a numpy cubical array;
+//! * [`save`]: `obj.save(path, lossy=False)` of every class, through `gmap::save`;
 //! * [`gmapobj`]: `GMap`, the editable map, with CGAL's Euler operators;
 //! * [`persist`]: `gmap.persistence` (diagrams of paths, numpy grey arrays, objects);
 //! * [`page`]: the page of `gmap view` for `obj.view()` and a notebook's `_repr_html_`.
@@ -19,18 +19,17 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyList, PyString, PyTuple};
 
-mod compute;
 mod errors;
 mod gmapobj;
 mod objects;
 mod page;
 mod persist;
+mod save;
 
-use compute::Cubes;
 use errors::Failure;
-use gmap::{CellName, Chain, HomologyOptions, Input, MapInput, Method, NamedGenerator, Report, Sourced, Via};
+use gmap::{CellName, Chain, HomologyOptions, Input, Method, NamedGenerator, Report, Via};
 use gmapobj::PyGMap;
-use objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
+use objects::{PyArchComplex, PyCubicalSet, PyImage, PySimplicialComplex};
 
 /// One summand's representative cycle, in the input's own terms. Its arrays are made when
 /// first read (a large image has hundreds of thousands of generators: their cells stay in
@@ -109,7 +108,7 @@ pub struct PyHomology {
     generators: Option<Py<PyList>>,
 }
 
-fn natural_to_py(py: Python<'_>, n: &gmap_homology::Natural) -> PyResult<PyObject> {
+fn natural_to_py(py: Python<'_>, n: &gmap::algebra::Natural) -> PyResult<PyObject> {
     Ok(match n.to_u64() {
         Some(v) => v.into_pyobject(py)?.into_any().unbind(),
         None => n.to_biguint().into_pyobject(py)?.into_any().unbind(),
@@ -274,7 +273,7 @@ impl PyHomology {
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str) -> PyResult<PyHomology> {
         let v: serde_json::Value = serde_json::from_str(text).map_err(|e| Failure::input(format!("not JSON: {e}")))?;
-        let report = compute::report_from_json(&v)
+        let report = Report::from_json(&v)
             .ok_or_else(|| Failure::input("not the JSON of a homology result (gmap homology --json)"))?;
         finish(py, report)
     }
@@ -301,18 +300,17 @@ fn parse_method(method: Option<&str>) -> PyResult<(Method, Option<Via>)> {
     })
 }
 
+/// The `field` argument as the options hold it: None, or an int the facade then checks
+/// (`HomologyOptions::field`: it refuses what is not a field, with the rule). Anything that
+/// is not an int from 0 to 2^64 - 1 is refused here as an argument, as the command's parser
+/// refuses a `--field` that is not a number.
 fn field_of(field: Option<&Bound<'_, PyAny>>) -> PyResult<Option<u64>> {
     match field {
         None => Ok(None),
         Some(f) if f.is_none() => Ok(None),
-        Some(f) => match f.extract::<u64>() {
-            Ok(p) => Ok(Some(p)),
-            Err(_) => Err(Failure::input(format!(
-                "field {}: the field must be Z/P for a prime P below 2^31",
-                f.repr().map(|r| r.to_string()).unwrap_or_default()
-            ))
-            .into()),
-        },
+        Some(f) => f.extract::<u64>().map(Some).map_err(|e| {
+            Failure::input(format!("field {}: {e}", f.repr().map(|r| r.to_string()).unwrap_or_default())).into()
+        }),
     }
 }
 
@@ -333,23 +331,25 @@ fn facets_homology(py: Python<'_>, x: &Bound<'_, PyAny>, o: &HomologyOptions) ->
     let facets = objects::facets_from_py(x)?;
     let r = py.allow_threads(|| {
         let sc = objects::complex_of(facets)?;
-        gmap::homology(&Input::Simplicial(Sourced::new(sc)), o).map_err(Failure::from)
+        gmap::homology(&sc, o).map_err(Failure::from)
     })?;
     finish(py, r)
 }
 
-/// homology(x, *, field=None, generators=False, method=None, periodic=False)
+/// homology(x, *, field=None, generators=False, method=None, periodic=False, level=None)
 ///
 /// The homology groups of `x`: a path (str or os.PathLike) to any file `gmap` reads, a
-/// GMap, SimplicialComplex, CubicalSet or ArchComplex, a sequence of facets (sequences of
-/// non-negative ints), a 2-D integer numpy array of facets (one a row), or a numpy array of
-/// bool, uint8 or float dtype (or any dtype with 1 or 3 to 8 axes) as a cubical set
-/// (nonzero = the cube is present). `field`: a prime p for Z/p coefficients (None: Z).
-/// `generators`: compute a representative cycle per summand. `method`: 'cellular'
-/// (default) or 'simplicial' for G-maps; 'direct' (default) or 'gmap' for the route of a
-/// simplicial complex. `periodic`: for cubical sets, identify the opposite faces of the box.
+/// GMap, SimplicialComplex, CubicalSet, Image or ArchComplex, a sequence of facets
+/// (sequences of non-negative ints), a 2-D integer numpy array of facets (one a row), or a
+/// numpy array of bool, uint8 or float dtype (or any dtype with 1 or 3 to 8 axes) as a
+/// cubical set (nonzero = the cube is present). `field`: a prime p for Z/p coefficients
+/// (None: Z). `generators`: compute a representative cycle per summand. `method`:
+/// 'cellular' (default) or 'simplicial' for G-maps; 'direct' (default) or 'gmap' for the
+/// route of a simplicial complex. `periodic`: for cubical sets, identify the opposite faces
+/// of the box. `level`: for an image, the cubes of the values <= level (default: the
+/// nonzero values), the command's `--level`.
 #[pyfunction]
-#[pyo3(signature = (x, *, field = None, generators = false, method = None, periodic = false))]
+#[pyo3(signature = (x, *, field = None, generators = false, method = None, periodic = false, level = None))]
 fn homology(
     py: Python<'_>,
     x: &Bound<'_, PyAny>,
@@ -357,6 +357,7 @@ fn homology(
     generators: bool,
     method: Option<&str>,
     periodic: bool,
+    level: Option<f64>,
 ) -> PyResult<PyHomology> {
     let (method, via) = parse_method(method)?;
     let mut o = HomologyOptions::default();
@@ -365,6 +366,7 @@ fn homology(
     o.method = method;
     o.via = via;
     o.periodic = periodic;
+    o.level = level;
     // facets as a list: the common small case first
     if let Ok(list) = x.downcast::<PyList>() {
         return facets_homology(py, list, &o);
@@ -375,29 +377,17 @@ fn homology(
         return finish(py, r);
     }
     if let Ok(m) = x.downcast::<PyGMap>() {
-        let mut m = m.borrow_mut();
-        if let (Some(sc), true, None) = (m.source(), o.generators, o.via) {
-            // the map of facets: the same darts through the complex's G-map route, so that
-            // the generators' cells are named by vertex labels
-            o.via = Some(Via::Gmap);
-            let mut r = py.allow_threads(|| gmap::homology(&sc, &o)).map_err(Failure::from)?;
-            (r.kind, r.route) = ("map", None);
-            return finish(py, r);
-        }
-        let d = m.dense();
-        let r = py.allow_threads(|| gmap::homology(&Input::Map(MapInput::new((*d).clone())), &o));
-        return finish(py, r.map_err(Failure::from)?);
+        let input = m.borrow_mut().homology_input()?;
+        return facade(py, &input, &o);
     }
     if let Ok(s) = x.downcast::<PySimplicialComplex>() {
         return facade(py, &s.get().input, &o);
     }
     if let Ok(c) = x.downcast::<PyCubicalSet>() {
-        let c = c.get();
-        let mut r = py.allow_threads(|| gmap::homology(&c.input, &o)).map_err(Failure::from)?;
-        if c.reversed {
-            compute::reverse_cube_axes(&mut r);
-        }
-        return finish(py, r);
+        return facade(py, &c.get().input, &o);
+    }
+    if let Ok(img) = x.downcast::<PyImage>() {
+        return facade(py, &img.get().input, &o);
     }
     if let Ok(a) = x.downcast::<PyArchComplex>() {
         return facade(py, &a.get().input, &o);
@@ -414,37 +404,60 @@ fn homology(
             };
             return facets_homology(py, &a, &o);
         }
-        let (shape, view, reversed) = objects::array_bits(x)?;
-        let bits = view.as_slice().map_err(|e| Failure::input(e.to_string()))?;
-        let cubes = Cubes { shape: &shape, bits, reversed };
-        let r = py.allow_threads(|| compute::cubical_array(&cubes, &o))?;
+        // a cubical set borrowed from the array (read in place when it is one-byte and
+        // C- or Fortran-contiguous), by the facade's cubical routes
+        let bytes = objects::array_bytes(x)?;
+        let cubes = bytes.cubes()?;
+        let r = py.allow_threads(|| gmap::homology_cubes(&cubes, &o)).map_err(Failure::from)?;
         return finish(py, r);
     }
     // any other sequence of facets (tuples, generators of lists, …)
     facets_homology(py, x, &o)
 }
 
-/// open(path): what the file holds: a GMap (.gmap, .moka, .off), a SimplicialComplex
-/// (.facets, .lex, FILE.lex#name), a CubicalSet (.cub, .pbm) or an ArchComplex (.json).
+/// open(path): what the file holds, as the facade's format registry reads it, in the class
+/// the registry names for its kind: a GMap (.gmap, .moka, .off, .vtk, .vtu, .msh), a
+/// SimplicialComplex (.facets, .lex, FILE.lex#name), a CubicalSet (.cub, .cel, .pbm), an
+/// Image (.npy, .complex, .pgm, .png) or an ArchComplex (.json).
 #[pyfunction]
 fn open(py: Python<'_>, path: PathBuf) -> PyResult<PyObject> {
     let input = py.allow_threads(|| gmap::open(&path)).map_err(Failure::from)?;
-    Ok(match input {
+    let kind = input.input_kind();
+    let obj = match input {
         Input::Map(m) => {
             let g = match m.labelled() {
-                Some(Ok(g)) => PyGMap::from_labelled(g.clone()),
-                Some(Err(e)) => return Err(Failure::from(e).into()),
+                Some(g) => PyGMap::from_labelled(g.map_err(Failure::from)?.clone()),
                 None => PyGMap::from_dense(m.map()),
             };
             Py::new(py, g)?.into_any()
         }
         input @ Input::Simplicial(_) => Py::new(py, PySimplicialComplex { input })?.into_any(),
-        input @ Input::Cubical(_) => Py::new(py, PyCubicalSet { input, reversed: false })?.into_any(),
+        input @ Input::Cubical(_) => Py::new(py, PyCubicalSet { input })?.into_any(),
+        input @ Input::Image(_) => Py::new(py, PyImage { input })?.into_any(),
         input @ Input::Arch(_) => Py::new(py, PyArchComplex { input })?.into_any(),
+        // the facade's Input may grow a kind this build of the package does not know
         other => {
-            return Err(Failure::input(format!("{}: a {} has no Python class yet", path.display(), other.kind())).into())
+            return Err(Failure::input(format!(
+                "{}: the package has no class for a {} (the registry names {})",
+                path.display(),
+                other.kind(),
+                kind.python_class()
+            ))
+            .into())
         }
-    })
+    };
+    // the class made is the one the registry names for the kind
+    let made = obj.bind(py).get_type().name()?.to_string();
+    if made != kind.python_class() {
+        return Err(Failure::input(format!(
+            "{}: a {} opened as a {made}, not the registry's {}",
+            path.display(),
+            kind.name(),
+            kind.python_class()
+        ))
+        .into());
+    }
+    Ok(obj)
 }
 
 /// The runs of `gmap bench` on files or folders, as its `--json` text: every route of
@@ -456,8 +469,8 @@ fn _bench_json(py: Python<'_>, paths: Vec<PathBuf>) -> PyResult<String> {
     Ok(gmap::bench::to_json(&runs).to_string())
 }
 
-fn build_result(py: Python<'_>, r: Result<gmap_core::DenseMap, gmap_ops::build::BuildError>) -> PyResult<Py<PyGMap>> {
-    let m = r.map_err(Failure::from)?;
+fn build_result(py: Python<'_>, r: Result<gmap::core::DenseMap, gmap::ops::build::BuildError>) -> PyResult<Py<PyGMap>> {
+    let m = r.map_err(Failure::build)?;
     Py::new(py, PyGMap::from_dense(&m))
 }
 
@@ -471,52 +484,45 @@ fn _build_grid(py: Python<'_>, shape: Vec<usize>, periodic: Option<&Bound<'_, Py
         Some(b) if b.is_instance_of::<pyo3::types::PyBool>() => vec![b.extract::<bool>()?; shape.len()],
         Some(v) => v.extract()?,
     };
-    if p.len() != shape.len() {
-        return Err(Failure::input(format!("periodic has {} entries for {} axes", p.len(), shape.len())).into());
-    }
-    let cells = shape.iter().try_fold(1u64, |a, &s| a.checked_mul(s as u64));
-    let darts = cells.and_then(|c| {
-        c.checked_mul(1u64 << shape.len().min(40)).and_then(|x| x.checked_mul(shape.len().max(1) as u64))
-    });
-    gmap_core::resources::check_memory("the grid", darts.and_then(|d| d.checked_mul(8 * (shape.len() as u64 + 1))))
-        .map_err(Failure::from)?;
-    build_result(py, py.allow_threads(|| gmap_ops::build::grid(&shape, &p)))
+    // the builder refuses a flag count other than the axes', and a grid past the dart limit
+    // or the memory limit before making it
+    build_result(py, py.allow_threads(|| gmap::ops::build::grid(&shape, &p)))
 }
 
 /// build.simplex(n): the n-simplex as an n-map.
 #[pyfunction]
 fn _build_simplex(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::simplex(n))
+    build_result(py, gmap::ops::build::simplex(n))
 }
 
 /// build.cube(n): the n-cube as an n-map.
 #[pyfunction]
 fn _build_cube(py: Python<'_>, n: usize) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::cube(n))
+    build_result(py, gmap::ops::build::cube(n))
 }
 
 /// build.polygon(k): a k-gon as a 2-map.
 #[pyfunction]
 fn _build_polygon(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::polygon(k))
+    build_result(py, gmap::ops::build::polygon(k))
 }
 
 /// build.lens_space(p, q): the lens space L(p, q) as a 3-map.
 #[pyfunction]
 fn _build_lens_space(py: Python<'_>, p: usize, q: usize) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::lens_space(p, q))
+    build_result(py, gmap::ops::build::lens_space(p, q))
 }
 
 /// build.solid_torus(k): a solid torus of k cubes as a 3-map.
 #[pyfunction]
 fn _build_solid_torus(py: Python<'_>, k: usize) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::solid_torus(k))
+    build_result(py, gmap::ops::build::solid_torus(k))
 }
 
 /// build.surface(word): the surface of a polygon schema word ('a b a^-1 b^-1').
 #[pyfunction]
 fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
-    build_result(py, gmap_ops::build::schema(word))
+    build_result(py, gmap::ops::build::schema(word))
 }
 
 /// build.from_facets(facets): the G-map of a pure pseudo-manifold given by its facets; the
@@ -525,9 +531,11 @@ fn _build_surface(py: Python<'_>, word: &str) -> PyResult<Py<PyGMap>> {
 fn _build_from_facets(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Py<PyGMap>> {
     let f = objects::facets_from_py(facets)?;
     let (m, sc) = py.allow_threads(|| {
-        let sc = Sourced::new(objects::complex_of(f)?);
+        let Input::Simplicial(sc) = objects::complex_of(f)? else {
+            return Err(Failure::input("facets made no simplicial complex"));
+        };
         let m = sc.to_gmap().map_err(Failure::from)?;
-        Ok::<_, Failure>((m, Input::Simplicial(sc)))
+        Ok::<_, Failure>((m, std::sync::Arc::new(sc)))
     })?;
     Py::new(py, PyGMap::from_complex(&m, sc))
 }
@@ -564,6 +572,7 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyGMap>()?;
     m.add_class::<PySimplicialComplex>()?;
     m.add_class::<PyCubicalSet>()?;
+    m.add_class::<PyImage>()?;
     m.add_class::<PyArchComplex>()?;
     m.add_class::<PyHomology>()?;
     m.add_class::<PyGenerator>()?;

@@ -1,6 +1,6 @@
 //! The page of `gmap::view` for Python: `obj.view(path)` writes it (or returns it), and
 //! `obj._repr_html_()` embeds it in a notebook as an `<iframe srcdoc="…">`. The two methods
-//! are defined once, in `gmap/__init__.py`, for the four classes, on [`_page`] and
+//! are defined once, in `gmap/__init__.py`, for the five classes, on [`_page`] and
 //! [`_page_frame`].
 //!
 //! The page is self-contained (its script, styles and data inline), so the iframe needs
@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 
 use crate::errors::{Failure, Kind};
 use crate::gmapobj::PyGMap;
-use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
+use crate::objects::{PyArchComplex, PyCubicalSet, PyImage, PySimplicialComplex};
 
 /// The largest page embedded inline by `_repr_html_`, in bytes.
 pub const INLINE_LIMIT: usize = 8 << 20;
@@ -43,6 +43,9 @@ fn with_input<T>(x: &Bound<'_, PyAny>, f: impl FnOnce(&Input) -> PyResult<T>) ->
     if let Ok(c) = x.downcast::<PyCubicalSet>() {
         return f(&c.get().input);
     }
+    if let Ok(img) = x.downcast::<PyImage>() {
+        return f(&img.get().input);
+    }
     if let Ok(a) = x.downcast::<PyArchComplex>() {
         return f(&a.get().input);
     }
@@ -64,7 +67,8 @@ pub fn _page(
     match path {
         None => Ok(html),
         Some(p) => {
-            py.allow_threads(|| gmap_core::io::write_atomic(&p, html.as_bytes()))
+            // written as `gmap view` writes it: a temporary file renamed over the path
+            py.allow_threads(|| gmap::core::io::write_atomic(&p, html.as_bytes()))
                 .map_err(|e| Failure::new(Kind::Io, format!("{}: {e}", p.display())))?;
             Ok(p.to_string_lossy().into_owned())
         }

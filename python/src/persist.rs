@@ -1,93 +1,110 @@
 //! `gmap.persistence(x, …)`: the persistence diagram of a path, a numpy grey array or a
 //! package object, through the facade (`gmap::persistence`, `gmap::persistence_file`) and,
-//! for a numpy array, the facade's diagram of an image (`gmap::persistence::image_persistence`:
-//! the whole grid, or past the memory limit the Morse route reading the array in place).
+//! for a numpy array, the facade's diagram of an image (`gmap::persistence::image_persistence`,
+//! one call that decides between the whole grid and, past the memory limit, the lower stars
+//! read from the array in place or from a copy when the copy fits).
 
 use std::path::PathBuf;
 
+use gmap::algebra::persistence::{CellName, Construction, Diagram};
+use gmap::persistence::{image_persistence, Pixels};
 use gmap::{Input, PersistenceOptions};
-use gmap_homology::persistence::{CellName, Construction, Diagram};
 use numpy::{PyArray1, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
 use crate::errors::Failure;
 use crate::gmapobj::PyGMap;
-use crate::objects::{PyArchComplex, PyCubicalSet, PySimplicialComplex};
+use crate::objects::{PyArchComplex, PyCubicalSet, PyImage, PySimplicialComplex};
 
 /// The diagram of a numpy grey array (1 to 8 axes, numbers or booleans), in numpy's axis
-/// order; a float64 C-contiguous array is read in place, anything else converted once.
-/// Past the memory limit (the facade's Morse route) a C-contiguous array of any of those
-/// types is read in place, and another one converted only when its float64 copy fits.
+/// order, by one facade call that chooses the route and what is copied: a float64
+/// C-contiguous array is handed over as it is, another C-contiguous array of numbers or
+/// booleans is read pixel by pixel in place, any other layout (Fortran order, a strided or
+/// broadcast view) is handed over to be copied, which the facade does only when the copy
+/// fits.
 fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -> PyResult<Diagram> {
     let arr = x.downcast::<numpy::PyUntypedArray>()?;
     let nd = arr.ndim();
-    if !(1..=8).contains(&nd) {
-        return Err(Failure::input(format!("a grey array has 1 to 8 dimensions, not {nd}")).into());
-    }
-    use numpy::PyArrayDescrMethods;
-    if !matches!(arr.dtype().kind(), b'b' | b'u' | b'i' | b'f') {
-        return Err(Failure::input(format!(
-            "a grey array holds numbers or booleans, not dtype {}",
-            arr.dtype().str()?
-        ))
-        .into());
+    let most = gmap::ops::import::image::MAX_DIM;
+    if !(1..=most).contains(&nd) {
+        return Err(Failure::input(format!("a grey array has 1 to {most} dimensions, not {nd}")).into());
     }
     let shape = arr.shape().to_vec();
-    if let Err(whole) = gmap::persistence::check_image_memory(&shape, o) {
-        // numpy's as_slice also takes Fortran order: only C order is read in place
-        if arr.is_c_contiguous() {
-            if let Some(d) = in_place(py, x, &shape, o)? {
-                return Ok(d);
-            }
-        }
-        // the float64 copy must fit
-        let copy = shape.iter().try_fold(8u64, |b, &s| b.checked_mul(s as u64));
-        let copy = copy.and_then(|b| b.checked_add(gmap_homology::persistence::image::PROCESS_BYTES));
-        if copy.is_none_or(|b| b > gmap::core::resources::max_memory()) {
-            return Err(Failure::from(whole).into());
-        }
-    }
-    let np = py.import("numpy")?;
-    let values = np.call_method1("ascontiguousarray", (x, "float64"))?;
-    let values = values.downcast::<numpy::PyArrayDyn<f64>>()?.readonly();
-    let v = values.as_slice().map_err(|e| Failure::input(e.to_string()))?;
-    if let Some(i) = v.iter().position(|x| x.is_nan()) {
-        return Err(Failure::input(format!("the grey array has NaN at flat index {i}")).into());
-    }
-    let pixels = gmap::persistence::Pixels::Slice(v);
-    Ok(py.allow_threads(|| gmap::persistence::image_persistence(&shape, pixels, o)).map_err(Failure::from)?)
-}
-
-/// The diagram of a C-contiguous numeric or boolean array read in place, pixel by pixel
-/// (`None`: not such a type). The caller checks the order.
-fn in_place(
-    py: Python<'_>,
-    x: &Bound<'_, PyAny>,
-    shape: &[usize],
-    o: &PersistenceOptions,
-) -> PyResult<Option<Diagram>> {
-    use gmap::persistence::{image_persistence, Pixels};
-    macro_rules! read {
+    macro_rules! typed {
         ($($t:ty),*) => {$(
             if let Ok(a) = x.downcast::<numpy::PyArrayDyn<$t>>() {
                 let a = a.readonly();
-                let Ok(v) = a.as_slice() else { return Ok(None) };
-                let value = |i: usize| v[i] as f64;
-                let d = py.allow_threads(|| image_persistence(shape, Pixels::Read(&value), o));
-                return Ok(Some(d.map_err(Failure::from)?));
+                return diagram_of(py, &shape, &a.as_array(), o);
             }
         )*};
     }
-    read!(f64, f32, u8, u16, u32, u64, i8, i16, i32, i64);
-    if let Ok(a) = x.downcast::<numpy::PyArrayDyn<bool>>() {
-        let a = a.readonly();
-        let Ok(v) = a.as_slice() else { return Ok(None) };
-        let value = |i: usize| f64::from(u8::from(v[i]));
-        let d = py.allow_threads(|| image_persistence(shape, Pixels::Read(&value), o));
-        return Ok(Some(d.map_err(Failure::from)?));
+    typed!(f64, f32, u8, u16, u32, u64, i8, i16, i32, i64, bool);
+    Err(Failure::input(format!("a grey array holds numbers or booleans, not dtype {}", arr.dtype().str()?)).into())
+}
+
+/// A pixel's value as the facade reads it.
+trait Grey: Copy + Sync + Sized {
+    fn grey(self) -> f64;
+    /// The values as they are, when they are already `f64`.
+    fn as_f64(_values: &[Self]) -> Option<&[f64]> {
+        None
     }
-    Ok(None)
+}
+
+impl Grey for f64 {
+    fn grey(self) -> f64 {
+        self
+    }
+    fn as_f64(values: &[f64]) -> Option<&[f64]> {
+        Some(values)
+    }
+}
+
+macro_rules! grey_as_f64 {
+    ($($t:ty),*) => {$(
+        impl Grey for $t {
+            fn grey(self) -> f64 {
+                self as f64
+            }
+        }
+    )*};
+}
+grey_as_f64!(f32, u8, u16, u32, u64, i8, i16, i32, i64);
+
+impl Grey for bool {
+    fn grey(self) -> f64 {
+        f64::from(u8::from(self))
+    }
+}
+
+/// The diagram of a typed array view, the GIL released: its slice when it is C-contiguous
+/// (float64 as it is, other types read pixel by pixel), else its values copied in C order
+/// when the facade decides to copy them.
+fn diagram_of<T: Grey>(
+    py: Python<'_>,
+    shape: &[usize],
+    a: &numpy::ndarray::ArrayViewD<'_, T>,
+    o: &PersistenceOptions,
+) -> PyResult<Diagram> {
+    let d = match a.as_slice() {
+        Some(v) => match T::as_f64(v) {
+            Some(values) => py.allow_threads(|| image_persistence(shape, Pixels::Slice(values), o)),
+            None => {
+                let value = |i: usize| v[i].grey();
+                py.allow_threads(|| image_persistence(shape, Pixels::Read(&value), o))
+            }
+        },
+        None => {
+            let fill = |out: &mut [f64]| {
+                for (o, &x) in out.iter_mut().zip(a.iter()) {
+                    *o = x.grey();
+                }
+            };
+            py.allow_threads(|| image_persistence(shape, Pixels::Copied(&fill), o))
+        }
+    };
+    Ok(d.map_err(Failure::from)?)
 }
 
 /// The (k, 3) float64 array of (dimension, birth, death).
@@ -195,7 +212,7 @@ fn complex_of_py<'a>(x: &'a Bound<'_, PyAny>) -> PyResult<Option<Held<'a>>> {
     }
     if x.is_instance_of::<PyList>() || x.is_instance_of::<PyTuple>() {
         let sc = crate::objects::complex_of(crate::objects::facets_from_py(x)?)?;
-        return Ok(Some(Held::Owned(Box::new(Input::Simplicial(gmap::Sourced::new(sc))))));
+        return Ok(Some(Held::Owned(Box::new(sc))));
     }
     Ok(None)
 }
@@ -308,6 +325,9 @@ pub fn persistence<'py>(
         py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?
     } else if let Ok(c) = x.downcast::<PyCubicalSet>() {
         let input = &c.get().input;
+        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if let Ok(img) = x.downcast::<PyImage>() {
+        let input = &img.get().input;
         py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
     } else if let Some(input) = complex_of_py(x)? {
         py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?

@@ -29,13 +29,22 @@ pub enum BuildError {
         /// how many times it occurs
         count: usize,
     },
+    /// The map would pass the memory limit.
+    #[error(transparent)]
+    MemoryLimit(#[from] gmap_core::resources::MemoryLimit),
 }
 
-pub(super) fn checked_darts(what: impl Fn() -> String, factors: &[u64]) -> Result<usize, BuildError> {
-    factors
+/// The darts of a map of dimension `dim` whose count is the product of `factors`: refused
+/// from 2^32 - 1 on (the largest dart index), and when the map's involutions (a `u32` per
+/// dart and dimension) would pass the memory limit (`gmap_core::resources`), before they
+/// are allocated.
+pub(super) fn checked_darts(what: impl Fn() -> String, dim: usize, factors: &[u64]) -> Result<usize, BuildError> {
+    let darts = factors
         .iter()
         .try_fold(1u64, |a, &b| a.checked_mul(b))
         .filter(|&d| d < u32::MAX as u64)
-        .map(|d| d as usize)
-        .ok_or_else(|| BuildError::TooManyDarts { what: what() })
+        .ok_or_else(|| BuildError::TooManyDarts { what: what() })?;
+    let bytes = darts.checked_mul(4 * (dim as u64 + 1));
+    gmap_core::resources::check_memory(&what(), bytes)?;
+    Ok(darts as usize)
 }

@@ -49,7 +49,7 @@ pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
 pub fn simplex(n: usize) -> Result<DenseMap, BuildError> {
     let what = || format!("the {n}-simplex");
     let f = factorial(n + 1).ok_or_else(|| BuildError::TooManyDarts { what: what() })?;
-    checked_darts(what, &[f])?;
+    checked_darts(what, n, &[f])?;
     let sc = SimplicialComplex::from_facets(vec![(0..=n as u64).collect()]).expect("one facet of distinct vertices");
     sc.to_gmap(u64::MAX).map_err(|_| BuildError::TooManyDarts { what: what() })
 }
@@ -70,7 +70,7 @@ pub fn polygon(k: usize) -> Result<DenseMap, BuildError> {
     if k == 0 {
         return Err(BuildError::BadArgument("a polygon needs at least one side".into()));
     }
-    let darts = checked_darts(|| format!("a {k}-gon"), &[2, k as u64])?;
+    let darts = checked_darts(|| format!("a {k}-gon"), 2, &[2, k as u64])?;
     let mut m = DenseMap::new(2, darts);
     let corner = |j: usize| {
         let t = std::f64::consts::TAU * (j % k) as f64 / k as f64;
@@ -101,7 +101,7 @@ pub fn extrude(map: &DenseMap) -> Result<DenseMap, BuildError> {
         return Err(BuildError::BadArgument(format!("dimension {} is over the maximum", n + 1)));
     }
     let per = 2 * (n + 1);
-    let darts = checked_darts(|| "the extrusion".into(), &[map.dart_count() as u64, per as u64])?;
+    let darts = checked_darts(|| "the extrusion".into(), n + 1, &[map.dart_count() as u64, per as u64])?;
     let w = n + 2;
     let mut alpha = vec![0u32; darts * w];
     let idx = |d: usize, k: usize, s: usize| (d * per + 2 * (k - 1) + s) as u32;
@@ -180,7 +180,7 @@ pub fn grid(sizes: &[usize], periodic: &[bool]) -> Result<DenseMap, BuildError> 
     let mut factors: Vec<u64> = sizes.iter().map(|&k| k as u64).collect();
     factors.push(fact);
     factors.push(corners);
-    let darts = checked_darts(what, &factors)?;
+    let darts = checked_darts(what, d, &factors)?;
     let table = PermTable::new(d);
     let nc = corners as usize;
     let per = table.len() * nc;
@@ -260,7 +260,7 @@ pub fn lens_space(p: usize, q: usize) -> Result<DenseMap, BuildError> {
     if p == 0 {
         return Err(BuildError::BadArgument("a lens space L(p, q) needs p >= 1".into()));
     }
-    let darts = checked_darts(|| format!("L({p}, {q})"), &[4, p as u64])?;
+    let darts = checked_darts(|| format!("L({p}, {q})"), 3, &[4, p as u64])?;
     let q = q % p;
     let mut m = DenseMap::new(3, darts);
     let at = |base: usize, j: usize, s: usize| Dart::new((base + 2 * (j % p) + s) as u32);

@@ -32,7 +32,7 @@ pub fn schema(word: &str) -> Result<DenseMap, BuildError> {
         faces.push(toks.iter().map(|t| letter(t)).collect::<Result<_, _>>()?);
     }
     let total: usize = faces.iter().map(Vec::len).sum();
-    let darts = checked_darts(|| format!("the schema '{word}'"), &[2, total as u64])?;
+    let darts = checked_darts(|| format!("the schema '{word}'"), 2, &[2, total as u64])?;
     let mut m = DenseMap::new(2, darts);
     let mut uses: HashMap<&str, Vec<(usize, bool)>> = HashMap::new();
     let mut order: Vec<&str> = Vec::new();
