@@ -254,21 +254,7 @@ fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> 
             (route, Input::Image(img)) => cubical_row(route, Cubes::Image(img, Level::Nonzero), read, o.periodic)?,
             (route, _) => Row::failed(Times { read, ..Times::default() }, format!("{} does not apply", route.name())),
         };
-        let peak_rss = mark.row();
-        let route = match route {
-            Route::Gmap(method) => method.name(),
-            Route::Arch => "cellular",
-            route => route.name(),
-        };
-        runs.push(RouteRun {
-            input: name.clone(),
-            route,
-            cells: row.cells,
-            times: row.times,
-            result: row.result,
-            agree: true,
-            peak_rss,
-        });
+        runs.push(row.into_run(&name, route, mark.row()));
     }
     let ok: Vec<&Homology> = runs.iter().filter_map(|r| r.result.as_ref().ok()).collect();
     let agree = ok.windows(2).all(|w| w[0] == w[1]);
@@ -286,6 +272,18 @@ struct Row {
 }
 
 impl Row {
+    /// The table's row of `route` on input `name`: a simplicial complex's G-map routes named
+    /// by their method, an architectural complex's as `cellular` (its cells are its regions).
+    fn into_run(self, name: &str, route: Route, peak_rss: Option<u64>) -> RouteRun {
+        let route = match route {
+            Route::Gmap(method) => method.name(),
+            Route::Arch => "cellular",
+            route => route.name(),
+        };
+        let (cells, times, result) = (self.cells, self.times, self.result);
+        RouteRun { input: name.to_string(), route, cells, times, result, agree: true, peak_rss }
+    }
+
     fn failed(times: Times, why: String) -> Self {
         Row { cells: Vec::new(), times, result: Err(why) }
     }

@@ -526,27 +526,7 @@ impl Report {
     /// the cells of the generators (cubes, regions), else a map.
     pub fn from_json(v: &serde_json::Value) -> Option<Report> {
         use crate::input::Kind;
-        use gmap_homology::{Coefficients, Natural};
-        // a number of any length (arbitrary precision): its digits
-        let nat = |x: &serde_json::Value| -> Option<Natural> { x.as_number()?.to_string().parse().ok() };
-        let (coefficients, field) = match v.get("coefficients")?.as_str()? {
-            "Z" => (Coefficients::Integers, None),
-            s => {
-                let p: u64 = s.strip_prefix("Z/")?.parse().ok()?;
-                (Coefficients::Field(p), Some(p))
-            }
-        };
-        let usize_of = |x: &serde_json::Value| x.as_u64().and_then(|b| usize::try_from(b).ok());
-        let betti = v.get("betti")?.as_array()?.iter().map(usize_of).collect::<Option<Vec<_>>>()?;
-        let torsion = v
-            .get("torsion")?
-            .as_array()?
-            .iter()
-            .map(|t| t.as_array().and_then(|t| t.iter().map(nat).collect::<Option<Vec<_>>>()))
-            .collect::<Option<Vec<_>>>()?;
-        if torsion.len() != betti.len() {
-            return None;
-        }
+        let (groups, field) = groups_from_json(v)?;
         let method = match v.get("method")?.as_str()? {
             "cellular" => Method::Cellular,
             "simplicial" => Method::Simplicial,
@@ -562,25 +542,9 @@ impl Report {
             None => None,
             Some(g) => Some(g.as_array()?.iter().map(generator_from_json).collect::<Option<Vec<_>>>()?),
         };
-        let space = match v.get("space").map(|s| s.as_str()) {
+        let space = match v.get("space") {
             None => None,
-            Some(Some(s @ ("topological" | "region complex"))) => {
-                let topological = s == "topological";
-                let not_balls = match v.get("not_balls") {
-                    None => Vec::new(),
-                    Some(list) => list
-                        .as_array()?
-                        .iter()
-                        .map(|r| {
-                            let id = r.get("region")?.as_u64()?;
-                            let betti = r.get("betti")?.as_array()?.iter().map(usize_of).collect::<Option<Vec<_>>>()?;
-                            Some((format!("region {id}"), id, betti))
-                        })
-                        .collect::<Option<Vec<_>>>()?,
-                };
-                Some(ArchSpace { topological, not_balls })
-            }
-            Some(_) => return None,
+            Some(s) => Some(space_from_json(s, v.get("not_balls"))?),
         };
         let first_cell = generators.as_ref().and_then(|g| g.iter().find_map(|x| x.chain.first()));
         let kind = match (route, &space, first_cell) {
@@ -590,18 +554,58 @@ impl Report {
             (None, None, Some((CellName::Region(_) | CellName::NamedRegion { .. }, _))) => Kind::Arch,
             _ => Kind::Map,
         };
-        Some(Report {
-            kind: kind.name(),
-            dimension: usize_of(v.get("dimension")?)?,
-            method,
-            route,
-            field,
-            groups: Homology { coefficients, betti, torsion },
-            generators,
-            note: None,
-            space,
-        })
+        let dimension = json_usize(v.get("dimension")?)?;
+        Some(Report { kind: kind.name(), dimension, method, route, field, groups, generators, note: None, space })
     }
+}
+
+/// A count in a JSON object.
+fn json_usize(x: &serde_json::Value) -> Option<usize> {
+    x.as_u64().and_then(|b| usize::try_from(b).ok())
+}
+
+/// The groups of a report's JSON object and its field (`None` over Z).
+fn groups_from_json(v: &serde_json::Value) -> Option<(Homology, Option<u64>)> {
+    use gmap_homology::{Coefficients, Natural};
+    // a number of any length (arbitrary precision): its digits
+    let nat = |x: &serde_json::Value| -> Option<Natural> { x.as_number()?.to_string().parse().ok() };
+    let (coefficients, field) = match v.get("coefficients")?.as_str()? {
+        "Z" => (Coefficients::Integers, None),
+        s => {
+            let p: u64 = s.strip_prefix("Z/")?.parse().ok()?;
+            (Coefficients::Field(p), Some(p))
+        }
+    };
+    let betti = v.get("betti")?.as_array()?.iter().map(json_usize).collect::<Option<Vec<_>>>()?;
+    let torsion = v
+        .get("torsion")?
+        .as_array()?
+        .iter()
+        .map(|t| t.as_array().and_then(|t| t.iter().map(nat).collect::<Option<Vec<_>>>()))
+        .collect::<Option<Vec<_>>>()?;
+    (torsion.len() == betti.len()).then_some((Homology { coefficients, betti, torsion }, field))
+}
+
+/// An architectural complex's space from a report's `"space"` and `"not_balls"` members.
+fn space_from_json(space: &serde_json::Value, not_balls: Option<&serde_json::Value>) -> Option<ArchSpace> {
+    let topological = match space.as_str()? {
+        "topological" => true,
+        "region complex" => false,
+        _ => return None,
+    };
+    let not_balls = match not_balls {
+        None => Vec::new(),
+        Some(list) => list
+            .as_array()?
+            .iter()
+            .map(|r| {
+                let id = r.get("region")?.as_u64()?;
+                let betti = r.get("betti")?.as_array()?.iter().map(json_usize).collect::<Option<Vec<_>>>()?;
+                Some((format!("region {id}"), id, betti))
+            })
+            .collect::<Option<Vec<_>>>()?,
+    };
+    Some(ArchSpace { topological, not_balls })
 }
 
 /// A generator read back from its JSON object (`{"dim", "order", "chain"}`).
