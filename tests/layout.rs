@@ -589,13 +589,7 @@ const NOT_SCANNED: &[&str] = &["fuzz"];
 
 /// The crates whose scan leaves out the items under `#[cfg(test)]`, and why. The test fails
 /// when an entry is no longer needed.
-const TESTS_LEFT_OUT: &[(&str, &str)] = &[(
-    "gmap-homology",
-    "the unit tests of engine/snf_modular.rs, engine/morse.rs, cellular/border.rs and \
-     persistence/lower_star.rs use the files that import them (engine/snf.rs, \
-     engine/homology.rs, cellular/checked.rs and cellular/precond.rs, persistence/cubical.rs); \
-     until they move to child files nothing imports, they would be circles",
-)];
+const TESTS_LEFT_OUT: &[(&str, &str)] = &[];
 
 #[test]
 fn no_import_circle_in_any_crate() {
