@@ -169,8 +169,9 @@ fn plan_cubes(cubes: Cubes<'_>, o: &HomologyOptions) -> Route {
     }
 }
 
-/// A report of groups computed on cubes, before the input's kind and route are set.
-fn cube_report(
+/// A report of groups computed by a route, before [`Route::run`] sets the input's kind and
+/// route.
+fn route_report(
     dimension: usize,
     o: &HomologyOptions,
     groups: Homology,
@@ -203,7 +204,7 @@ fn run_cubes(route: Route, cubes: Cubes<'_>, o: &HomologyOptions, file: &str) ->
     match route {
         Route::OnePass => {
             if let Some(groups) = cubes::one_pass(&cubes.shape(), |s, out| cubes.fill(s, out), o, file)? {
-                return Ok(cube_report(d, o, groups, None));
+                return Ok(route_report(d, o, groups, None));
             }
         }
         Route::Sweep => {
@@ -213,7 +214,7 @@ fn run_cubes(route: Route, cubes: Cubes<'_>, o: &HomologyOptions, file: &str) ->
                 Cubes::Image(..) => None,
             };
             if let Some((groups, generators)) = found {
-                return Ok(cube_report(d, o, groups, Some(generators)));
+                return Ok(route_report(d, o, groups, Some(generators)));
             }
         }
         _ => {}
@@ -309,17 +310,7 @@ fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) 
     } else {
         None
     };
-    Ok(Report {
-        kind: "",
-        dimension,
-        method: o.method,
-        route: None,
-        field: o.field,
-        groups,
-        generators,
-        note: None,
-        space: None,
-    })
+    Ok(route_report(dimension, o, groups, generators))
 }
 
 /// Reduces the chain complex (over Z or Z/p) and gives the groups of the input (a complex
