@@ -669,11 +669,18 @@ fn lose_one(
 /// The cells waiting to be looked at, taken lowest number first (lowest dimension, then
 /// order of smallest dart): per dimension a bit per cell, a count, and the first word that
 /// may hold a bit; and the lowest dimension that may hold one. Taking cells in numbering
-/// order keeps the sweep's memory accesses close together. Push and pop are O(1) but for
-/// the scans over empty words and dimensions, which the cursors make amortised O(1).
+/// order keeps the sweep's memory accesses close together.
+///
+/// A push below a dimension's cursor moves the cursor back, so the next pops may have to
+/// step over many empty words again; a second level (a bit per word of `bits`, set while
+/// that word holds a bit) makes each such step cover 64 words, so a pop costs
+/// O(1 + gap / 4096) words read, where gap is the number of cells between the cursor and the
+/// cell found. Push is O(1).
 struct Ready {
     /// a bit per cell; each dimension starts a new word
     bits: Vec<u64>,
+    /// a bit per word of `bits`: set exactly when that word is not zero
+    words: Vec<u64>,
     /// per dimension: where its bits are, and how many are set
     dims: Vec<Queue>,
     /// no dimension below it holds a bit
@@ -702,7 +709,7 @@ impl Ready {
             words += m.div_ceil(64);
             start += m;
         }
-        Ready { bits: vec![0; words], dims, low: counts.len() }
+        Ready { bits: vec![0; words], words: vec![0; words.div_ceil(64)], dims, low: counts.len() }
     }
 
     /// Queues cell `j` of dimension `k` (once, however often it is pushed before it is popped).
@@ -713,11 +720,26 @@ impl Ready {
         let b = 1u64 << (j % 64);
         let word = &mut self.bits[w];
         if *word & b == 0 {
+            if *word == 0 {
+                self.words[w / 64] |= 1u64 << (w % 64);
+            }
             *word |= b;
             q.count += 1;
             q.cursor = q.cursor.min(w);
             self.low = self.low.min(k);
         }
+    }
+
+    /// The first word at or after `from` that holds a bit.
+    #[inline(always)]
+    fn next_word(&self, from: usize) -> Option<usize> {
+        let s = from / 64;
+        let here = *self.words.get(s)? & (!0u64 << (from % 64));
+        if here != 0 {
+            return Some(s * 64 + here.trailing_zeros() as usize);
+        }
+        let t = s + 1 + self.words[s + 1..].iter().position(|&x| x != 0)?;
+        Some(t * 64 + self.words[t].trailing_zeros() as usize)
     }
 
     /// The waiting cell of the lowest dimension and, in it, the lowest number, as `(k, j,
@@ -728,13 +750,17 @@ impl Ready {
             self.low += 1;
         }
         let k = self.low;
+        // a set bit lies at or after the cursor, as the count says, and the first one lies
+        // in this dimension's words (the next dimension's words come after them)
+        let w = self.next_word(self.dims[k].cursor)?;
         let q = &mut self.dims[k];
-        // a set bit lies at or after the cursor, as the count says
-        let w = q.cursor + self.bits[q.cursor..].iter().position(|&b| b != 0)?;
         q.cursor = w;
         let word = &mut self.bits[w];
         let b = word.trailing_zeros();
         *word &= *word - 1;
+        if *word == 0 {
+            self.words[w / 64] &= !(1u64 << (w % 64));
+        }
         q.count -= 1;
         let j = ((w - q.lo) * 64) as u32 + b;
         Some((k, j, q.start + j as usize))

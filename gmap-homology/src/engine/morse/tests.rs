@@ -61,3 +61,32 @@ fn non_unit_entries_are_not_paired() {
     assert_eq!(r.chain.counts(), &[1, 1, 1]);
     assert!(r.chain.boundary(2).is_zero());
 }
+
+proptest::proptest! {
+    /// `Ready` pops exactly what an ordered set of (dimension, cell) pairs would: the lowest
+    /// dimension first, then the lowest cell, each pushed cell once.
+    #[test]
+    fn ready_pops_in_order(
+        counts in proptest::collection::vec(0usize..9000, 1..4),
+        ops in proptest::collection::vec((0usize..4, 0u32..9000, proptest::bool::ANY), 0..600),
+    ) {
+        let mut ready = Ready::new(&counts);
+        let mut model = std::collections::BTreeSet::new();
+        let starts: Vec<usize> = counts.iter().scan(0, |s, &m| { let x = *s; *s += m; Some(x) }).collect();
+        for (k, j, push) in ops {
+            let k = k % counts.len();
+            if push && counts[k] > 0 {
+                let j = j % counts[k] as u32;
+                ready.push(k, j);
+                model.insert((k, j));
+            } else {
+                let want = model.pop_first().map(|(k, j)| (k, j, starts[k] + j as usize));
+                proptest::prop_assert_eq!(ready.pop(), want);
+            }
+        }
+        while let Some((k, j)) = model.pop_first() {
+            proptest::prop_assert_eq!(ready.pop(), Some((k, j, starts[k] + j as usize)));
+        }
+        proptest::prop_assert_eq!(ready.pop(), None);
+    }
+}
