@@ -124,7 +124,9 @@ fn the_files_keep_the_names() {
     let types: Vec<&str> = vtk.split("CELL_TYPES 44\n").nth(1).unwrap().lines().take(44).collect();
     assert_eq!(types, [["12"; 8].as_slice(), ["9"; 36].as_slice()].concat());
     assert!(vtk.contains("\nCELL_DATA 44\nSCALARS dim int 1\n"));
-    assert!(vtk.contains("\nFIELD labels 10\n"));
+    // name, storey, area, kind, material, between; the four text columns with their tables
+    assert!(vtk.contains("\nFIELD labels 6\n"));
+    assert!(vtk.contains("\nFIELD FieldData 4\n"));
     let array = |name: &str| -> Vec<&str> {
         vtk.split(&format!("\n{name} 1 44 ")).nth(1).unwrap().lines().skip(1).take(44).collect()
     };

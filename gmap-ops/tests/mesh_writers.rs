@@ -317,3 +317,43 @@ proptest! {
         every_writer_reads_back(&m, &l);
     }
 }
+
+/// The cell blocks and point count meshio reads from `bytes` written to a file named
+/// `name`, `None` where python3 has no meshio.
+fn meshio_cells(bytes: &[u8], name: &str) -> Option<String> {
+    let has = std::process::Command::new("python3").args(["-c", "import meshio"]).output();
+    if !has.is_ok_and(|o| o.status.success()) {
+        eprintln!("meshio is not installed: the comparison with meshio is skipped");
+        return None;
+    }
+    let dir = std::env::temp_dir().join(format!("gmap-mesh-writers-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, bytes).unwrap();
+    let script = "import sys, meshio\nm = meshio.read(sys.argv[1])\n\
+                  print(len(m.points), ' '.join(f'{c.type}:{len(c.data)}' for c in m.cells), \
+                  sorted((k, v.tolist()) for k, v in m.field_data.items() if not k.startswith('gmap:')))";
+    let o = std::process::Command::new("python3").args(["-c", script, path.to_str().unwrap()]).output().unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(o.status.success(), "meshio: {}", String::from_utf8_lossy(&o.stderr));
+    Some(String::from_utf8(o.stdout).unwrap().trim().to_string())
+}
+
+#[test]
+fn meshio_reads_the_binary_and_ascii_msh_alike() {
+    let m = build::placed::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap();
+    let l = label(&m, 0);
+    let ascii = msh_bytes_with_labels(&m, &l, false).unwrap();
+    let binary = msh_bytes_with_labels(&m, &l, true).unwrap();
+    assert!(binary.starts_with(b"$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n"));
+    let (Some(a), Some(b)) = (meshio_cells(&ascii, "a.msh"), meshio_cells(&binary, "b.msh")) else { return };
+    assert_eq!(a, b);
+    assert_eq!(a, "12 hexahedron:1 hexahedron:1 quad:4 [('group 1', [1, 3]), ('group 2', [2, 3])]");
+    for (bytes, name) in [
+        (vtk_string_with_labels(&m, &l).unwrap().into_bytes(), "a.vtk"),
+        (vtu_bytes_with_labels(&m, &l).unwrap(), "a.vtu"),
+    ] {
+        let got = meshio_cells(&bytes, name).unwrap();
+        assert!(got.starts_with("12 hexahedron:2 "), "{name}: {got}");
+    }
+}

@@ -205,10 +205,9 @@ fn bbox(m: &MshOut, e: &Entity) -> [f64; 6] {
     let mut b = [f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
     for &k in &e.cells {
         for &v in &m.mesh.cells[k].conn {
-            let p = m.mesh.points[v as usize];
-            for a in 0..3 {
-                b[a] = b[a].min(p[a]);
-                b[a + 3] = b[a + 3].max(p[a]);
+            for (a, &x) in m.mesh.points[v as usize].iter().enumerate() {
+                b[a] = b[a].min(x);
+                b[a + 3] = b[a + 3].max(x);
             }
         }
     }
