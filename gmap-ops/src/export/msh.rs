@@ -6,7 +6,8 @@
 //! (point), 1 (line), 2 (triangle), 3 (quadrangle), 4 (tetrahedron), 5 (hexahedron), 6
 //! (prism) and 7 (pyramid); Gmsh has no polygon of more than four corners and no polyhedron,
 //! so a map with such cells is refused (write `.vtk` or `.vtu`). Nodes are tagged `1..` in
-//! the order of the 0-cells, elements `1..` in the order of the cells.
+//! the order of the 0-cells, elements `1..` in the order they are written (by entity and
+//! type); each `$ElementData` lists every element, NaN where it has no value.
 //!
 //! The labels the reader makes are written back as they are read: each cell is an element
 //! of the entity `gmsh:geometrical` of its dimension, whose physical groups are the cell's
@@ -45,7 +46,7 @@ struct MshOut {
     types: Vec<u8>,
     names: Vec<(usize, i64, String)>,
     entities: Vec<Entity>,
-    data: Vec<(String, Vec<(usize, f64)>)>,
+    data: Vec<(String, Vec<Option<f64>>)>,
 }
 
 fn refuse(reason: String) -> ExportError {
@@ -172,10 +173,13 @@ fn msh_out(mesh: MeshOut) -> Result<MshOut, ExportError> {
         {
             continue;
         }
-        let mut values = Vec::new();
-        for (k, v) in c.values.iter().enumerate() {
+        let mut values = Vec::with_capacity(c.values.len());
+        for v in &c.values {
             let x = match v {
-                None => continue,
+                None => {
+                    values.push(None);
+                    continue;
+                }
                 Some(LabelValue::Int(i)) if i.unsigned_abs() <= 1 << 53 => *i as f64,
                 Some(LabelValue::Real(r)) => *r,
                 Some(other) => {
@@ -186,7 +190,7 @@ fn msh_out(mesh: MeshOut) -> Result<MshOut, ExportError> {
                     )))
                 }
             };
-            values.push((k, x));
+            values.push(Some(x));
         }
         data.push((c.name.clone(), values));
     }
@@ -309,47 +313,45 @@ fn nodes_section(o: &mut Out, m: &MshOut) {
     o.end("Nodes");
 }
 
-fn elements_section(o: &mut Out, m: &MshOut) {
-    let nc = m.mesh.cells.len();
-    o.text("$Elements\n");
-    o.size(m.entities.len(), " ");
-    o.size(nc, " ");
-    o.size(1.min(nc), " ");
-    o.size(nc, "\n");
-    for e in &m.entities {
-        // one block per entity and element type
-        let mut types: Vec<u8> = e.cells.iter().map(|&k| m.types[k]).collect();
+/// The element blocks, one per entity and element type: (entity, type, cells).
+fn blocks(m: &MshOut) -> Vec<(usize, u8, Vec<usize>)> {
+    let mut out = Vec::new();
+    for (e, ent) in m.entities.iter().enumerate() {
+        let mut types: Vec<u8> = ent.cells.iter().map(|&k| m.types[k]).collect();
         types.sort_unstable();
         types.dedup();
         for t in types {
-            let cells: Vec<usize> = e.cells.iter().copied().filter(|&k| m.types[k] == t).collect();
-            o.int(e.dim as i64, " ");
-            o.int(e.tag, " ");
-            o.int(i64::from(t), " ");
-            o.size(cells.len(), "\n");
-            for k in cells {
-                o.size(k + 1, " ");
-                let conn = &m.mesh.cells[k].conn;
-                for (j, &v) in conn.iter().enumerate() {
-                    o.size(v as usize + 1, if j + 1 == conn.len() { "\n" } else { " " });
-                }
+            out.push((e, t, ent.cells.iter().copied().filter(|&k| m.types[k] == t).collect()));
+        }
+    }
+    out
+}
+
+/// `$Elements`: the blocks, elements tagged `1..` in the order they are written.
+fn elements_section(o: &mut Out, m: &MshOut, blocks: &[(usize, u8, Vec<usize>)]) {
+    let nc = m.mesh.cells.len();
+    o.text("$Elements\n");
+    o.size(blocks.len(), " ");
+    o.size(nc, " ");
+    o.size(1.min(nc), " ");
+    o.size(nc, "\n");
+    let mut tag = 0;
+    for (e, t, cells) in blocks {
+        let ent = &m.entities[*e];
+        o.int(ent.dim as i64, " ");
+        o.int(ent.tag, " ");
+        o.int(i64::from(*t), " ");
+        o.size(cells.len(), "\n");
+        for &k in cells {
+            tag += 1;
+            o.size(tag, " ");
+            let conn = &m.mesh.cells[k].conn;
+            for (j, &v) in conn.iter().enumerate() {
+                o.size(v as usize + 1, if j + 1 == conn.len() { "\n" } else { " " });
             }
         }
     }
     o.end("Elements");
-}
-
-/// The number of element blocks: one per entity and element type.
-fn block_count(m: &MshOut) -> usize {
-    m.entities
-        .iter()
-        .map(|e| {
-            let mut t: Vec<u8> = e.cells.iter().map(|&k| m.types[k]).collect();
-            t.sort_unstable();
-            t.dedup();
-            t.len()
-        })
-        .sum()
 }
 
 /// The bytes of the file.
@@ -372,24 +374,16 @@ fn serialise(m: &MshOut, binary: bool) -> Vec<u8> {
     }
     entities_section(&mut o, m);
     nodes_section(&mut o, m);
-    let start = o.bytes.len();
-    elements_section(&mut o, m);
-    // the number of blocks is one per entity and type: patch the first count
-    let blocks = block_count(m);
-    if blocks != m.entities.len() {
-        let head = start + "$Elements\n".len();
-        if binary {
-            o.bytes[head..head + 8].copy_from_slice(&(blocks as u64).to_le_bytes());
-        } else {
-            let old = m.entities.len().to_string();
-            o.bytes.splice(head..head + old.len(), blocks.to_string().into_bytes());
-        }
-    }
+    let blocks = blocks(m);
+    elements_section(&mut o, m, &blocks);
+    // element data over every element, in the order of the tags (NaN: no value), as meshio
+    // reads them
+    let order: Vec<usize> = blocks.iter().flat_map(|b| b.2.iter().copied()).collect();
     for (name, values) in &m.data {
-        o.text(&format!("$ElementData\n1\n{}\n1\n0.0\n3\n0\n1\n{}\n", quoted(name), values.len()));
-        for &(k, x) in values {
-            o.int(k as i64 + 1, " ");
-            o.real(x, "\n");
+        o.text(&format!("$ElementData\n1\n{}\n1\n0.0\n3\n0\n1\n{}\n", quoted(name), order.len()));
+        for (tag, k) in order.iter().enumerate() {
+            o.int(tag as i64 + 1, " ");
+            o.real(values[*k].unwrap_or(f64::NAN), "\n");
         }
         o.end("ElementData");
     }
