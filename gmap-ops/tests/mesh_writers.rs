@@ -342,7 +342,11 @@ fn meshio_cells(bytes: &[u8], name: &str) -> Option<String> {
 #[test]
 fn meshio_reads_the_binary_and_ascii_msh_alike() {
     let m = build::placed::grid_with_points(&[2, 1, 1], &[false; 3]).unwrap();
-    let l = label(&m, 0);
+    let mut l = label(&m, 0);
+    // meshio's Gmsh reader wants a physical group on every entity: the labelled faces too
+    for c in (0..l.of[2].len()).step_by(3) {
+        l.of[2][c].set("gmsh:physical", LabelValue::Int(3));
+    }
     let ascii = msh_bytes_with_labels(&m, &l, false).unwrap();
     let binary = msh_bytes_with_labels(&m, &l, true).unwrap();
     assert!(binary.starts_with(b"$MeshFormat\n4.1 1 8\n\x01\0\0\0\n$EndMeshFormat\n"));

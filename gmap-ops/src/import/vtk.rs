@@ -9,8 +9,8 @@
 //! `TENSORS`, `TEXTURE_COORDINATES` and `FIELD` blocks, which become labels (an array of k
 //! components the names `name.0` … `name.{k-1}`); `COLOR_SCALARS`, `LOOKUP_TABLE` tables,
 //! `METADATA` and dataset-level `FIELD` data are read past, but for the tables of texts of
-//! [`crate::mesh::texts`]. Binary data are big-endian, as
-//! the format says. Values standing for "missing" in [`crate::export::vtk_string_with_labels`]
+//! the mesh writers (an integer column and a field-data table `gmap:texts:<name>`). Binary
+//! data are big-endian, as the format says. Values standing for "missing" in [`crate::export::vtk_string_with_labels`]
 //! (`-2147483648` in an `int` array, `-9223372036854775808` in a 64-bit one,
 //! `-1.7976931348623157e308` and non-finite reals in a real one, the empty text) give no
 //! label; `string` arrays are read one text per line with VTK's `%XX` escapes. Other

@@ -10,9 +10,9 @@
 //! block, `encoding="raw"` or `"base64"`), uncompressed or compressed by
 //! `vtkZLibDataCompressor` (a header `[blocks, block size, last block size, compressed
 //! sizes…]` then one zlib stream per block), with `UInt32` or `UInt64` headers and either
-//! byte order. The grid's `FieldData` is read for the tables of texts of
-//! [`crate::mesh::texts`] only. Other compressors, `String` arrays and other datasets are refused, naming
-//! them.
+//! byte order. The grid's `FieldData` is read for the tables of texts of the mesh writers
+//! only (an integer column and a field-data table `gmap:texts:<name>`). Other compressors,
+//! `String` arrays and other datasets are refused, naming them.
 //!
 //! Errors name the file and the line of the XML element at fault. Sizes announced by
 //! headers are checked against the values the arrays must hold before anything is
@@ -307,8 +307,8 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
     Ok(mesh)
 }
 
-/// The arrays of the grid's `FieldData` that are tables of texts
-/// ([`crate::mesh::texts`]); other field data are read past.
+/// The arrays of the grid's `FieldData` that are tables of texts of the mesh writers
+/// (`gmap:texts:<name>`); other field data are read past.
 fn read_field_data(
     grid: roxmltree::Node,
     l: &Layout,
