@@ -38,8 +38,8 @@ def test_meshio_reads_what_gmap_writes(tmp_path, name, ext):
         if ext == "msh":
             assert m.field_data["solid"].tolist() == [1, 3] and m.field_data["boundary"].tolist() == [2, 2]
         else:
-            table = texts(m.field_data["gmap:texts:gmsh:physical_name"])
-            assert table == [b"boundary", b"solid"]
+            if ext == "vtu":  # meshio's legacy reader keeps no dataset field data
+                assert texts(m.field_data["gmap:texts:gmsh:physical_name"]) == [b"boundary", b"solid"]
             ranks = np.concatenate(m.cell_data["gmsh:physical_name"])
             assert sorted(np.unique(ranks).tolist()) == [0, 1]
 
