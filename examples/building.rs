@@ -3,7 +3,7 @@
 //! a wall, a door, the floor between storeys, the stair opening, the slab, the roof) and
 //! their `material`. Prints the counts and the homology of the map and of its incidence
 //! graph, and writes `building.gmap`, `building.json`, `building.dot` and `building.vtk`
-//! (open it in ParaView and colour by `name.id`, `kind.id` or `dim`) to a folder.
+//! (open it in ParaView and colour by `name`, `kind` or `dim`) to a folder.
 //!
 //! `cargo run --release --example building [FOLDER]` (default: `gmap-building` in the
 //! system's temporary folder).

@@ -5,7 +5,7 @@
 #
 # Steps: build the `gmap` binary (the tests compare with its --json output), make a new
 # venv in a temporary folder, install maturin numpy pytest hypothesis networkx
-# dask[distributed] (and gudhi when pip can get it), `pip install ./python`, run pytest
+# dask[distributed] (and gudhi, meshio and vtk when pip can get them), `pip install ./python`, run pytest
 # on python/tests. Exits non-zero when any step or test fails. GMAP_PYTHON picks the
 # interpreter (default python3); GMAP_VENV keeps the venv in a given folder instead.
 set -euo pipefail
@@ -33,6 +33,8 @@ echo "== a fresh virtual environment in $venv"
 pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 "${pip[@]}" install maturin numpy pytest hypothesis networkx "dask[distributed]"
 "${pip[@]}" install gudhi || echo "(gudhi not installed: its comparisons are skipped)"
+"${pip[@]}" install meshio || echo "(meshio not installed: the mesh files' comparisons are skipped)"
+"${pip[@]}" install vtk || echo "(vtk not installed: VTK's checks of the mesh files are skipped)"
 
 echo "== pip install ./python"
 "${pip[@]}" install ./python

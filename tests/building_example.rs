@@ -124,15 +124,39 @@ fn the_files_keep_the_names() {
     let types: Vec<&str> = vtk.split("CELL_TYPES 44\n").nth(1).unwrap().lines().take(44).collect();
     assert_eq!(types, [["12"; 8].as_slice(), ["9"; 36].as_slice()].concat());
     assert!(vtk.contains("\nCELL_DATA 44\nSCALARS dim int 1\n"));
-    assert!(vtk.contains("\nFIELD labels 10\n"));
+    // name, storey, area, kind, material, between; the four text columns with their tables
+    assert!(vtk.contains("\nFIELD labels 6\n"));
+    assert!(vtk.contains("\nFIELD FieldData 4\n"));
     let array = |name: &str| -> Vec<&str> {
         vtk.split(&format!("\n{name} 1 44 ")).nth(1).unwrap().lines().skip(1).take(44).collect()
     };
-    let names = array("name");
-    assert_eq!(names[..8].iter().copied().collect::<BTreeSet<_>>(), ROOMS.into_iter().collect());
+    // a text column: ranks in the table of texts of the dataset's field data (NUL-ended bytes)
+    let texts = |name: &str| -> Vec<String> {
+        let head = format!("\ngmap:texts:{name} 1 ");
+        let bytes: Vec<u8> = vtk
+            .split(&head)
+            .nth(1)
+            .unwrap()
+            .lines()
+            .skip(1)
+            .take_while(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+            .flat_map(|l| l.split(' ').map(|b| b.parse::<u8>().unwrap()).collect::<Vec<_>>())
+            .collect();
+        bytes[..bytes.len() - 1].split(|&b| b == 0).map(|t| String::from_utf8(t.to_vec()).unwrap()).collect()
+    };
+    let of = |name: &str| -> Vec<String> {
+        let t = texts(name);
+        array(name)
+            .iter()
+            .map(|r| r.parse::<i64>().unwrap())
+            .map(|r| if r < 0 { String::new() } else { t[r as usize].clone() })
+            .collect()
+    };
+    let names = of("name");
+    assert_eq!(names[..8].iter().map(String::as_str).collect::<BTreeSet<_>>(), ROOMS.into_iter().collect());
     assert!(names[8..].iter().all(|n| n.is_empty()));
-    assert_eq!(array("name.id")[8..], ["-1"; 36]);
-    assert_eq!(array("kind").iter().filter(|&&k| k == "door").count(), 6);
+    assert_eq!(array("name")[8..], ["-1"; 36]);
+    assert_eq!(of("kind").iter().filter(|k| *k == "door").count(), 6);
     assert_eq!(array("area")[..8], ["14.0"; 8]);
     assert!(vtk.contains("\nstorey 1 44 int\n") && vtk.contains("\narea 1 44 double\n"));
 

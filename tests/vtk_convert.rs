@@ -114,12 +114,21 @@ fn the_labels_of_a_gmap_become_cell_data() {
     let data = text.split("CELL_DATA 2\n").nth(1).unwrap();
     assert_eq!(
         data,
-        "SCALARS dim int 1\nLOOKUP_TABLE default\n1\n0\nFIELD labels 4\n\
-         name 1 2 string\nmain%20\"beam\"\n\n\
-         name.id 1 2 int\n0\n-1\n\
+        "SCALARS dim int 1\nLOOKUP_TABLE default\n1\n0\nFIELD labels 3\n\
+         name 1 2 int\n0\n-1\n\
          length 1 2 double\n2.5\n-1.7976931348623157e308\n\
          hits 1 2 int\n-2147483648\n3\n"
     );
+    // the name's text in the table of the dataset's field data: `main "beam"` and a NUL
+    assert!(
+        text.contains(
+            "DATASET UNSTRUCTURED_GRID\nFIELD FieldData 1\ngmap:texts:name 1 12 unsigned_char\n\
+             109 97 105 110 32 34 98 101 97 109 34 0\nPOINTS "
+        ),
+        "{text}"
+    );
+    // meshio reads it (no string array): the line and the vertex
+    meshio_reads(&out, 2, &[("line", 1), ("vertex", 1)]);
 }
 
 #[test]

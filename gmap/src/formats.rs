@@ -14,7 +14,8 @@
 //! | `.moka` | map | a map of dimension ≤ 3 | points |
 //! | `.off` | map | a 2-map with points (`--boundary`: a 3-map's boundary) | points |
 //! | `.vtk` | map (unstructured grid) | a map of dimension ≤ 3 with points, a full cubical set as voxels | points, labels |
-//! | `.vtu`, `.msh` | map | – | points, labels |
+//! | `.vtu` | map | a map of dimension ≤ 3 with points | points, labels |
+//! | `.msh` | map | a map of dimension ≤ 3 with points, cells Gmsh has | points, labels |
 //! | `.facets` | simplicial complex | a simplicial complex's facets; any other input through its G-map (the barycentric subdivision) | – |
 //! | `.lex[#name]` | simplicial complex | – | – |
 //! | `.json` | architectural complex | any input's incidence graph | points, labels |
@@ -159,7 +160,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: true,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::mesh),
-        writer: Writer::None,
+        writer: Writer::Map { map: write::vtu, labelled: Some(write::labelled_vtu), cubes: None, facets: None },
     },
     Format {
         extension: "msh",
@@ -167,7 +168,7 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: true,
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::mesh),
-        writer: Writer::None,
+        writer: Writer::Map { map: write::msh, labelled: Some(write::labelled_msh), cubes: None, facets: None },
     },
     Format {
         extension: "facets",

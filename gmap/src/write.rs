@@ -119,6 +119,31 @@ pub(crate) fn labelled_vtk(g: &LabelledGMap, output: &Path) -> Result<()> {
     gmap_ops::export::write_vtk_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, e))
 }
 
+/// `.vtu` of a map with points (XML, binary appended, zlib).
+pub(crate) fn vtu(m: &DenseMap, output: &Path) -> Result<()> {
+    let labels = gmap_core::DenseLabels::default();
+    gmap_ops::export::write_vtu_with_labels(m, &labels, output).map_err(|e| cannot_write(output, e))
+}
+
+/// `.vtu` of a map with points, the labels of its cells as cell data.
+pub(crate) fn labelled_vtu(g: &LabelledGMap, output: &Path) -> Result<()> {
+    let (m, labels, _) = gmap_core::to_dense_labels(g);
+    gmap_ops::export::write_vtu_with_labels(&m, &labels, output).map_err(|e| cannot_write(output, e))
+}
+
+/// `.msh` (Gmsh 4.1, ASCII) of a map with points.
+pub(crate) fn msh(m: &DenseMap, output: &Path) -> Result<()> {
+    let labels = gmap_core::DenseLabels::default();
+    gmap_ops::export::write_msh_with_labels(m, &labels, false, output).map_err(|e| cannot_write(output, e))
+}
+
+/// `.msh` (Gmsh 4.1, ASCII) of a map with points, the physical groups and names and the
+/// other labels as element data.
+pub(crate) fn labelled_msh(g: &LabelledGMap, output: &Path) -> Result<()> {
+    let (m, labels, _) = gmap_core::to_dense_labels(g);
+    gmap_ops::export::write_msh_with_labels(&m, &labels, false, output).map_err(|e| cannot_write(output, e))
+}
+
 /// `.vtk` of a full cubical set: its cubes as voxels.
 pub(crate) fn voxels_vtk(set: &CubicalSet, output: &Path) -> Result<()> {
     gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, e))

@@ -14,7 +14,8 @@ a ``.facets`` file with values or a map with a value per cell as a (k, 3) array 
 (dimension, birth, death); ``obj.view(path)`` writes a self-contained HTML page of any
 object (a notebook shows it inline through ``_repr_html_``).
 
-Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from facets) and
+Submodules: :mod:`gmap.build` (grids, simplices, cubes, lens spaces, maps from facets),
+:mod:`gmap.mesh` (``GMap.from_meshio``, ``GMap.to_meshio``, ``GMap.to_pyvista``) and
 :mod:`gmap.dask` (a corpus on a Dask cluster).
 """
 
@@ -49,7 +50,15 @@ from ._gmap import (
     persistence,
     set_max_memory,
 )
-from . import build
+from . import build, mesh
+
+# the bridges to meshio and pyvista (gmap.mesh), as methods of GMap where the type takes them
+try:
+    GMap.from_meshio = staticmethod(mesh.from_meshio)
+    GMap.to_meshio = mesh.to_meshio
+    GMap.to_pyvista = mesh.to_pyvista
+except TypeError:  # an immutable extension type: the functions of gmap.mesh only
+    pass
 
 __all__ = [
     "ArchComplex",
@@ -71,6 +80,7 @@ __all__ = [
     "homology",
     "incidence_graph",
     "max_memory",
+    "mesh",
     "open",
     "persistence",
     "set_max_memory",

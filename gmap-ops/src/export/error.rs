@@ -104,6 +104,15 @@ pub enum ExportError {
         /// the map's dimension
         found: usize,
     },
+    /// A map that a mesh format (`.vtk`, `.vtu`, `.msh`) cannot hold as it is, or whose
+    /// output would not read back as the same map and labels.
+    #[error("{format} cannot hold this map as it is: {reason}")]
+    MeshWrite {
+        /// the format
+        format: &'static str,
+        /// which cells and why
+        reason: String,
+    },
     /// A cubical cell complex with lower cells on no cube, for a format of cubes only.
     #[error("{reason}")]
     LowerCells {

@@ -1,8 +1,10 @@
 //! Exporters: `.off` polygon meshes (2-maps with points, [`off_string`], or an editable
 //! [`GMap`] directly, [`gmap_off_string`]; the 2-cells of a map of any dimension as a view,
 //! [`two_skeleton_off_string`]), `.facets` of the barycentric
-//! subdivision (any map) and legacy `.vtk` unstructured grids (maps of dimension ≤ 3 with
-//! points, [`vtk_string`]) and self-contained HTML pages to look at a map in a browser
+//! subdivision (any map), legacy `.vtk` and XML `.vtu` unstructured grids and Gmsh `.msh`
+//! meshes (maps of dimension ≤ 3 with points and labels, [`vtk_string`],
+//! [`vtu_bytes_with_labels`], [`msh_bytes_with_labels`], each read back before it is
+//! written, [`readback`]) and self-contained HTML pages to look at a map in a browser
 //! ([`html`]). Every writer goes through a temporary file in the target's
 //! directory and a rename, so a failure never leaves a partial file behind. The native
 //! `.gmap` and Moka formats are written by `gmap_core::io`.
@@ -12,14 +14,20 @@ use std::path::Path;
 
 use gmap_core::{AlphaSet, Attributes, Dart, DenseMap, GMap, Partition};
 
+mod cells;
 mod error;
 pub mod html;
+mod msh;
+pub mod readback;
 mod voxels;
 mod vtk;
+mod vtu;
 
 pub use error::{write_atomic, ExportError};
+pub use msh::{msh_bytes_with_labels, write_msh_with_labels};
 pub use voxels::{cubical_vtk_string, write_cubical_vtk};
 pub use vtk::{vtk_string, vtk_string_with_labels, write_vtk, write_vtk_with_labels};
+pub use vtu::{vtu_bytes_with_labels, write_vtu_with_labels};
 
 /// The OFF text of a 2-map with points: one vertex per 0-cell (numbered by its smallest
 /// dart), one polygon per 2-cell listing its corners in cycle order (walking

@@ -22,249 +22,39 @@
 //! One point per 0-cell (numbered by the 0-cells' smallest darts), the point of a dart of the
 //! vertex ([`DenseMap::vertex_point`]). The cells are the map's top cells: a 3-map's volumes
 //! as tetrahedra (`VTK_TETRA` 10), pyramids (14), wedges (13) or hexahedra (12) when their
-//! faces make one — corners in VTK's order, oriented as VTK expects when the volume is
-//! orientable — and as polyhedra otherwise (`VTK_POLYHEDRON` 42, each cell the face stream
-//! `nFaces, nPts, ids…, …`), so that readers without polyhedra (meshio's) read the usual
-//! meshes; a 2-map's faces as triangles (`VTK_TRIANGLE` 5), quadrangles (`VTK_QUAD` 9) or
-//! polygons (`VTK_POLYGON` 7) by their number of corners, a 1-map's edges as lines (`VTK_LINE` 3), a
-//! 0-map's vertices as `VTK_VERTEX` 1. The corners of a polygon follow `alpha_1 alpha_0`
-//! from a dart; the faces of a polyhedron are all walked from darts of one orientation class
-//! of the volume and reversed together when the volume's signed volume is negative, so an
-//! orientable volume has outward normals. `CELL_DATA` holds the cell dimension (`dim`).
-//! Maps of dimension above 3, maps without points, and points that are not finite are
-//! refused.
+//! faces make one — corners in VTK's order and orientation, every cell of positive volume
+//! ([`super::cells`]) — and as polyhedra otherwise (`VTK_POLYHEDRON` 42, each cell the
+//! face stream `nFaces, nPts, ids…, …`, faces outward), so that readers without polyhedra
+//! (meshio's) read the usual meshes; a 2-map's faces as triangles (`VTK_TRIANGLE` 5),
+//! quadrangles (`VTK_QUAD` 9) or polygons (`VTK_POLYGON` 7) by their number of corners, a
+//! 1-map's edges as lines (`VTK_LINE` 3), a 0-map's vertices as `VTK_VERTEX` 1. The corners
+//! of a polygon follow `alpha_1 alpha_0` from a dart. `CELL_DATA` holds the cell dimension
+//! (`dim`). Maps of dimension above 3, maps without points, points that are not finite,
+//! faces of fewer than three distinct corners and slits (two faces on the same vertices) are
+//! refused, and so is a text that would not read back as the same map and labels.
 //!
 //! With labels ([`vtk_string_with_labels`]), the lower cells that carry a label are written
 //! after the top cells (2-cells as polygons, 1-cells as lines, 0-cells as vertices; a
 //! viewer tells them apart by `dim`), and the cell data gains `FIELD labels K`: per label
 //! name, in order of first appearance, an array over all written cells — `int` when every
-//! value is an integer of 32 bits (missing: `-2147483648`), `vtktypeint64` for wider
+//! value is an integer of 32 bits (missing: `-2147483648`), `long` for wider
 //! integers (missing: `-9223372036854775808`), `double` when a value is real (missing:
-//! `-1.7976931348623157e308`, as the legacy reader parses no NaN), and for texts a `string`
-//! array (one text per line, missing: empty) followed by an `int` array `<name>.id`, the
-//! rank of the text among the distinct texts of the column in byte order (missing: `-1`),
-//! for colouring. Names and texts are written with VTK's `%XX` escape for bytes outside
-//! `!`..`~` and for `%`.
+//! `-1.7976931348623157e308`, as the legacy reader parses no NaN), and for texts an `int`
+//! array of ranks (missing: `-1`) in the table of the column's distinct texts in byte order.
+//! The tables are the dataset's field data, before the points (`FIELD FieldData K`): per
+//! text column `name`, an `unsigned_char` array `gmap:texts:name` of the texts' UTF-8 bytes,
+//! each text followed by a NUL byte. No `string` array is written, so that both VTK and
+//! meshio read the file (meshio has no `string` type). Names are written with VTK's `%XX`
+//! escape for bytes outside `!`..`~` and for `%`.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
-use gmap_core::{AlphaSet, Dart, DenseLabels, DenseMap, LabelValue, Point};
+use gmap_core::{DenseLabels, DenseMap, LabelValue};
 
+use super::cells::{mesh_out, text_table, text_table_name, Column, MeshOut};
 use super::error::{write_atomic, ExportError};
-
-const VTK_VERTEX: u8 = 1;
-const VTK_LINE: u8 = 3;
-const VTK_TRIANGLE: u8 = 5;
-const VTK_POLYGON: u8 = 7;
-const VTK_QUAD: u8 = 9;
-const VTK_POLYHEDRON: u8 = 42;
-
-/// The corners (0-cell numbers) of the polygon walked by `alpha_1 alpha_0` from `d`.
-fn polygon(map: &DenseMap, vert: &[u32], d: Dart) -> Vec<u32> {
-    let mut corners = Vec::new();
-    let mut x = d;
-    loop {
-        corners.push(vert[x.index()]);
-        x = map.alpha(map.alpha(x, 0), 1);
-        if x == d {
-            return corners;
-        }
-    }
-}
-
-/// Six times the signed volume enclosed by the faces (each a fan of triangles).
-fn signed_volume6(faces: &[Vec<u32>], pts: &[Point]) -> f64 {
-    let mut v = 0.0;
-    for f in faces {
-        let a = pts[f[0] as usize];
-        for k in 1..f.len().saturating_sub(1) {
-            let (b, c) = (pts[f[k] as usize], pts[f[k + 1] as usize]);
-            v += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-                + a[2] * (b[0] * c[1] - b[1] * c[0]);
-        }
-    }
-    v
-}
-
-/// One cell as written: its VTK type, its connectivity list (without the leading count),
-/// and which cell of the map it is (dimension, number in [`DenseMap::cells`]).
-struct Written {
-    kind: u8,
-    conn: Vec<u32>,
-    dim: usize,
-    cell: usize,
-}
-
-/// Every volume of a 3-map as a VTK cell, in the order of `map.cells(3)`: its type and its
-/// corners ([`standard_cell`]), or `VTK_POLYHEDRON` and its face stream
-/// (`nFaces, nPts, ids…, …`).
-fn polyhedra(map: &DenseMap, vert: &[u32], pts: &[Point]) -> Vec<(u8, Vec<u32>)> {
-    // orientation classes: parity of the number of involutions from the volume's smallest
-    // dart (BFS over alpha_0, alpha_1, alpha_2)
-    let vols = map.cells(3);
-    let faces = map.partition(AlphaSet::of(&[0, 1]));
-    let mut parity = vec![u8::MAX; map.dart_count()];
-    let mut face_done = vec![false; faces.len()];
-    let mut out = Vec::with_capacity(vols.len());
-    for &r in &vols.reps {
-        let mut stack = vec![r];
-        parity[r.index()] = 0;
-        let mut polys: Vec<Vec<u32>> = Vec::new();
-        while let Some(d) = stack.pop() {
-            let f = faces.of[d.index()] as usize;
-            if parity[d.index()] == 0 && !face_done[f] {
-                face_done[f] = true;
-                polys.push(polygon(map, vert, d));
-            }
-            for i in 0..3 {
-                let e = map.alpha(d, i);
-                if parity[e.index()] == u8::MAX {
-                    parity[e.index()] = 1 - parity[d.index()];
-                    stack.push(e);
-                }
-            }
-        }
-        // outward normals for an orientable volume (its faces are walked consistently)
-        if signed_volume6(&polys, pts) < 0.0 {
-            for p in &mut polys {
-                p.reverse();
-            }
-        }
-        out.push(match standard_cell(&polys) {
-            Some((kind, conn)) => (kind, conn),
-            None => {
-                let mut stream = vec![polys.len() as u32];
-                for p in polys {
-                    stream.push(p.len() as u32);
-                    stream.extend(p);
-                }
-                (VTK_POLYHEDRON, stream)
-            }
-        });
-    }
-    out
-}
-
-/// The VTK type and corners of a volume whose outward faces make a tetrahedron, a pyramid,
-/// a wedge or a hexahedron (checked on the vertex sets of all its faces), in VTK's corner
-/// order and orientation: the tetrahedron's `0 1 2` and the pyramid's and hexahedron's
-/// `0 1 2 3` turn counterclockwise seen from the other corners, the wedge's `0 1 2` faces
-/// out. `None` for any other volume. O(faces²).
-fn standard_cell(polys: &[Vec<u32>]) -> Option<(u8, Vec<u32>)> {
-    let tris: Vec<&Vec<u32>> = polys.iter().filter(|p| p.len() == 3).collect();
-    let quads: Vec<&Vec<u32>> = polys.iter().filter(|p| p.len() == 4).collect();
-    let mut verts: Vec<u32> = polys.iter().flatten().copied().collect();
-    verts.sort_unstable();
-    verts.dedup();
-    // the neighbour of x along an edge of some face that is not in `base`
-    let partner = |x: u32, base: &[u32]| -> Option<u32> {
-        let mut found: Vec<u32> = Vec::new();
-        for p in polys {
-            for (j, &v) in p.iter().enumerate() {
-                if v == x {
-                    for w in [p[(j + 1) % p.len()], p[(j + p.len() - 1) % p.len()]] {
-                        if !base.contains(&w) && !found.contains(&w) {
-                            found.push(w);
-                        }
-                    }
-                }
-            }
-        }
-        (found.len() == 1).then(|| found[0])
-    };
-    let set = |xs: &[u32]| -> Vec<u32> {
-        let mut v = xs.to_vec();
-        v.sort_unstable();
-        v
-    };
-    // every face of the volume is one of `want` (as vertex sets), and they are all there
-    let faces_are = |want: Vec<Vec<u32>>| -> bool {
-        let mut have: Vec<Vec<u32>> = polys.iter().map(|p| set(p)).collect();
-        let mut want: Vec<Vec<u32>> = want.iter().map(|w| set(w)).collect();
-        have.sort();
-        want.sort();
-        have == want
-    };
-    match (polys.len(), tris.len(), quads.len(), verts.len()) {
-        (4, 4, 0, 4) => {
-            let (a, b, c) = (tris[0][0], tris[0][1], tris[0][2]);
-            let d = *verts.iter().find(|v| !tris[0].contains(v))?;
-            faces_are(vec![vec![a, b, c], vec![a, b, d], vec![b, c, d], vec![c, a, d]]).then(|| (10, vec![a, c, b, d]))
-        }
-        (5, 4, 1, 5) => {
-            let q = quads[0];
-            let e = *verts.iter().find(|v| !q.contains(v))?;
-            let sides = (0..4).map(|j| vec![q[j], q[(j + 1) % 4], e]);
-            faces_are(sides.chain([q.clone()]).collect()).then(|| (14, vec![q[0], q[3], q[2], q[1], e]))
-        }
-        (5, 2, 3, 6) => {
-            let t = tris[0];
-            let p: Vec<u32> = t.iter().map(|&x| partner(x, t)).collect::<Option<_>>()?;
-            let sides = (0..3).map(|j| vec![t[j], t[(j + 1) % 3], p[(j + 1) % 3], p[j]]);
-            faces_are(sides.chain([t.clone(), p.clone()]).collect())
-                .then(|| (13, vec![t[0], t[1], t[2], p[0], p[1], p[2]]))
-        }
-        (6, 0, 6, 8) => {
-            let q = quads[0];
-            let p: Vec<u32> = q.iter().map(|&x| partner(x, q)).collect::<Option<_>>()?;
-            let sides = (0..4).map(|j| vec![q[j], q[(j + 1) % 4], p[(j + 1) % 4], p[j]]);
-            faces_are(sides.chain([q.clone(), p.clone()]).collect())
-                .then(|| (12, vec![q[0], q[3], q[2], q[1], p[0], p[3], p[2], p[1]]))
-        }
-        _ => None,
-    }
-}
-
-/// The `k`-cells whose number satisfies `keep`, as VTK cells (`k <= 2`; volumes go through
-/// [`polyhedra`]).
-fn low_cells(map: &DenseMap, vert: &[u32], k: usize, keep: impl Fn(usize) -> bool) -> Vec<Written> {
-    let reps = if k == 0 { Vec::new() } else { map.cells(k).reps };
-    let count = if k == 0 { vert.iter().map(|&v| v as usize + 1).max().unwrap_or(0) } else { reps.len() };
-    (0..count)
-        .filter(|&c| keep(c))
-        .map(|c| match k {
-            0 => Written { kind: VTK_VERTEX, conn: vec![c as u32], dim: 0, cell: c },
-            1 => {
-                let d = reps[c];
-                Written { kind: VTK_LINE, conn: vec![vert[d.index()], vert[map.alpha(d, 0).index()]], dim: 1, cell: c }
-            }
-            _ => {
-                let conn = polygon(map, vert, reps[c]);
-                let kind = match conn.len() {
-                    3 => VTK_TRIANGLE,
-                    4 => VTK_QUAD,
-                    _ => VTK_POLYGON,
-                };
-                Written { kind, conn, dim: 2, cell: c }
-            }
-        })
-        .collect()
-}
-
-/// The type a label column is written with: the narrowest that holds all its values.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-enum Column {
-    /// integers in the range of `i32`: `int`, missing `-2147483648`
-    Int,
-    /// integers beyond it: `vtktypeint64`, missing `-9223372036854775808`
-    Int64,
-    /// reals, or integers mixed with reals: `double`, missing `-1.7976931348623157e308`
-    Real,
-    /// texts (and numbers mixed with texts, in their text form): a `string` array (missing:
-    /// the empty text) and an `int` array `<name>.id` (the rank of the text among the
-    /// column's distinct texts in byte order, missing `-1`)
-    Text,
-}
-
-fn column_of(v: &LabelValue) -> Column {
-    match v {
-        LabelValue::Int(i) if i32::try_from(*i).is_ok() => Column::Int,
-        LabelValue::Int(_) => Column::Int64,
-        LabelValue::Real(_) => Column::Real,
-        LabelValue::Text(_) => Column::Text,
-    }
-}
+use super::readback::Labelling;
 
 /// A name or text as the legacy reader decodes it: every byte outside `!`..`~`, and `%`,
 /// as `%XX` (so that a text is one word, or one line).
@@ -280,38 +70,56 @@ fn encode(s: &str) -> String {
     out
 }
 
-/// Writes the `FIELD labels` block of the cell data: one array per label name (see
-/// [`Column`]), the names in order of first appearance over the written cells.
-fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabels) -> Result<(), ExportError> {
-    let mut names: Vec<(&str, Column)> = Vec::new();
-    for w in written {
-        for (name, v) in labels.get(w.dim, w.cell).iter() {
-            let c = column_of(v);
-            match names.iter_mut().find(|(n, _)| *n == name) {
-                Some((_, col)) => *col = (*col).max(c),
-                None => names.push((name, c)),
-            }
+/// Writes the dataset's field data: the table of texts of each text column (see
+/// [`Column::Text`]), as `unsigned_char` arrays `gmap:texts:<name>`.
+fn write_text_tables(out: &mut String, m: &MeshOut) {
+    let tables: Vec<(String, Vec<u8>)> = m
+        .columns
+        .iter()
+        .filter(|c| c.col == Column::Text)
+        .map(|c| (text_table_name(&c.name), text_table(&c.text_ranks().0)))
+        .collect();
+    if tables.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "FIELD FieldData {}", tables.len());
+    for (name, bytes) in tables {
+        let _ = writeln!(out, "{} 1 {} unsigned_char", encode(&name), bytes.len());
+        for (k, b) in bytes.iter().enumerate() {
+            let _ = write!(
+                out,
+                "{}{b}",
+                if k % 20 == 0 {
+                    if k == 0 {
+                        ""
+                    } else {
+                        "\n"
+                    }
+                } else {
+                    " "
+                }
+            );
         }
+        out.push('\n');
     }
-    if names.is_empty() {
-        return Ok(());
+}
+
+/// Writes the `FIELD labels` block of the cell data: one array per label column.
+fn write_label_arrays(out: &mut String, m: &MeshOut) {
+    if m.columns.is_empty() {
+        return;
     }
-    if names.iter().any(|(n, _)| n.is_empty()) {
-        return Err(ExportError::EmptyLabelName { format: ".vtk" });
-    }
-    let arrays = names.len() + names.iter().filter(|(_, c)| *c == Column::Text).count();
-    let n = written.len();
-    let _ = writeln!(out, "FIELD labels {arrays}");
-    for &(name, col) in &names {
-        let value = |w: &Written| labels.get(w.dim, w.cell).get(name);
-        let enc = encode(name);
-        match col {
+    let n = m.cells.len();
+    let _ = writeln!(out, "FIELD labels {}", m.columns.len());
+    for c in &m.columns {
+        let enc = encode(&c.name);
+        match c.col {
             Column::Int | Column::Int64 => {
                 let (ty, missing) =
-                    if col == Column::Int { ("int", i64::from(i32::MIN)) } else { ("vtktypeint64", i64::MIN) };
+                    if c.col == Column::Int { ("int", i64::from(i32::MIN)) } else { ("long", i64::MIN) };
                 let _ = writeln!(out, "{enc} 1 {n} {ty}");
-                for w in written {
-                    let v = match value(w) {
+                for v in &c.values {
+                    let v = match v {
                         Some(LabelValue::Int(i)) => *i,
                         _ => missing,
                     };
@@ -320,8 +128,8 @@ fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabel
             }
             Column::Real => {
                 let _ = writeln!(out, "{enc} 1 {n} double");
-                for w in written {
-                    let v = match value(w) {
+                for v in &c.values {
+                    let v = match v {
                         Some(LabelValue::Int(i)) => *i as f64,
                         Some(LabelValue::Real(r)) => *r,
                         _ => f64::MIN,
@@ -330,31 +138,13 @@ fn write_label_arrays(out: &mut String, written: &[Written], labels: &DenseLabel
                 }
             }
             Column::Text => {
-                let text = |v: &LabelValue| match v {
-                    LabelValue::Text(s) => s.clone(),
-                    LabelValue::Int(i) => i.to_string(),
-                    LabelValue::Real(r) => format!("{r:?}"),
-                };
-                let texts: Vec<Option<String>> = written.iter().map(|w| value(w).map(text)).collect();
-                let mut distinct: Vec<&str> = texts.iter().flatten().map(String::as_str).collect();
-                distinct.sort_unstable();
-                distinct.dedup();
-                let _ = writeln!(out, "{enc} 1 {n} string");
-                for t in &texts {
-                    let _ = writeln!(out, "{}", encode(t.as_deref().unwrap_or("")));
-                }
-                let _ = writeln!(out, "{enc}.id 1 {n} int");
-                for t in &texts {
-                    let id = match t {
-                        Some(t) => distinct.binary_search(&t.as_str()).map_or(-1, |k| k as i64),
-                        None => -1,
-                    };
+                let _ = writeln!(out, "{enc} 1 {n} int");
+                for id in c.text_ranks().1 {
                     let _ = writeln!(out, "{id}");
                 }
             }
         }
     }
-    Ok(())
 }
 
 /// The legacy VTK text of a map of dimension at most 3 with points (see the module
@@ -368,75 +158,52 @@ pub fn vtk_string(map: &DenseMap) -> Result<String, ExportError> {
 /// [`gmap_core::to_dense_labels`] numbers them). Written cells: every top cell, then the
 /// cells of each lower dimension (from the highest) that carry at least one label; the cell
 /// data holds `dim` and one array per label name (see the module documentation). A map
-/// without labels gives exactly [`vtk_string`]. O(N n) plus the text.
+/// without labels gives exactly [`vtk_string`]. The text is read back
+/// ([`super::readback`]) and refused when it would not give the same map and labels.
+/// O(N n) plus the text and its reading.
 pub fn vtk_string_with_labels(map: &DenseMap, labels: &DenseLabels) -> Result<String, ExportError> {
-    let n = map.dim();
-    if n > 3 {
-        return Err(ExportError::DimensionAbove { format: ".vtk", max: 3, found: n });
-    }
-    if map.dart_count() > 0 && !map.has_points() {
-        return Err(ExportError::NoPoints { format: ".vtk" });
-    }
-    let verts = map.cells(0);
-    let mut pts: Vec<Point> = Vec::with_capacity(verts.len());
-    for r in verts.reps.iter().map(|d| d.get()) {
-        let p = map.vertex_point(Dart::new(r)).ok_or(ExportError::VertexPoint {
-            format: ".vtk",
-            dart: r,
-            what: "no point",
-        })?;
-        if !p.iter().all(|c| c.is_finite()) {
-            return Err(ExportError::VertexPoint { format: ".vtk", dart: r, what: "a point that is not finite" });
-        }
-        pts.push(p);
-    }
-    let vert = &verts.of;
-    let mut cells: Vec<Written> = if n == 3 {
-        polyhedra(map, vert, &pts)
-            .into_iter()
-            .enumerate()
-            .map(|(c, (kind, conn))| Written { kind, conn, dim: 3, cell: c })
-            .collect()
-    } else {
-        low_cells(map, vert, n, |_| true)
-    };
-    let top = cells.len();
-    for k in (0..n).rev() {
-        if labels.of.get(k).is_some_and(|v| v.iter().any(|l| !l.is_empty())) {
-            cells.extend(low_cells(map, vert, k, |c| !labels.get(k, c).is_empty()));
-        }
-    }
-    let mut out = String::with_capacity(64 + pts.len() * 24 + cells.iter().map(|c| c.conn.len() * 6).sum::<usize>());
+    let m = mesh_out(map, labels, ".vtk")?;
+    let out = legacy_text(&m);
+    super::readback::check(map, labels, ".vtk", Labelling::Exact, || crate::import::parse_vtk(out.as_bytes()))?;
+    Ok(out)
+}
+
+/// The legacy text of mesh cells.
+fn legacy_text(m: &MeshOut) -> String {
+    let (n, top) = (m.dim, m.top);
+    let conns: Vec<Vec<u32>> = m.cells.iter().map(|c| c.legacy()).collect();
+    let mut out = String::with_capacity(64 + m.points.len() * 24 + conns.iter().map(|c| c.len() * 6).sum::<usize>());
     let _ = writeln!(out, "# vtk DataFile Version 3.0");
-    let _ = write!(out, "gmap: a {n}-map, {} vertices, {top} top cells", pts.len());
-    if cells.len() > top {
-        let _ = write!(out, ", {} labelled lower cells", cells.len() - top);
+    let _ = write!(out, "gmap: a {n}-map, {} vertices, {top} top cells", m.points.len());
+    if m.cells.len() > top {
+        let _ = write!(out, ", {} labelled lower cells", m.cells.len() - top);
     }
     let _ = writeln!(out, "\nASCII\nDATASET UNSTRUCTURED_GRID");
-    let _ = writeln!(out, "POINTS {} double", pts.len());
-    for p in &pts {
+    write_text_tables(&mut out, m);
+    let _ = writeln!(out, "POINTS {} double", m.points.len());
+    for p in &m.points {
         let _ = writeln!(out, "{} {} {}", p[0], p[1], p[2]);
     }
-    let size: usize = cells.iter().map(|c| c.conn.len() + 1).sum();
-    let _ = writeln!(out, "CELLS {} {size}", cells.len());
-    for c in &cells {
-        let _ = write!(out, "{}", c.conn.len());
-        for v in &c.conn {
+    let size: usize = conns.iter().map(|c| c.len() + 1).sum();
+    let _ = writeln!(out, "CELLS {} {size}", m.cells.len());
+    for c in &conns {
+        let _ = write!(out, "{}", c.len());
+        for v in c {
             let _ = write!(out, " {v}");
         }
         out.push('\n');
     }
-    let _ = writeln!(out, "CELL_TYPES {}", cells.len());
-    for c in &cells {
+    let _ = writeln!(out, "CELL_TYPES {}", m.cells.len());
+    for c in &m.cells {
         let _ = writeln!(out, "{}", c.kind);
     }
-    let _ = writeln!(out, "CELL_DATA {}", cells.len());
+    let _ = writeln!(out, "CELL_DATA {}", m.cells.len());
     let _ = writeln!(out, "SCALARS dim int 1\nLOOKUP_TABLE default");
-    for c in &cells {
+    for c in &m.cells {
         let _ = writeln!(out, "{}", c.dim);
     }
-    write_label_arrays(&mut out, &cells, labels)?;
-    Ok(out)
+    write_label_arrays(&mut out, m);
+    out
 }
 
 /// Writes a map as legacy VTK (see [`vtk_string`]); nothing is written when it is refused.
@@ -452,9 +219,10 @@ pub fn write_vtk_with_labels(map: &DenseMap, labels: &DenseLabels, path: &Path) 
 
 #[cfg(test)]
 mod tests {
+    use super::super::cells::signed_volume6;
     use super::*;
     use crate::build;
-    use gmap_core::Labels;
+    use gmap_core::{Dart, Labels, Point};
 
     fn prism(k: usize) -> DenseMap {
         build::extrude(&build::polygon(k).unwrap()).unwrap()
@@ -506,11 +274,12 @@ mod tests {
             assert!(edge(len(at(k), at((k + 1) % 4))) && edge(len(at(k + 4), at((k + 1) % 4 + 4))));
             assert!(edge(len(at(k), at(k + 4))));
         }
-        // the triangular prism: a wedge whose 0 1 2 faces out, 3 4 5 above it
+        // the triangular prism: a wedge whose 0 1 2 turns counterclockwise seen from 3 4 5
+        // (VTK's vtkCellSizeFilter gives it a positive volume)
         let (kind, c, p) = one_cell(&vtk_string(&prism(3)).unwrap());
         assert_eq!((kind, c.len()), (13, 6));
         let at = |k: usize| p[c[k] as usize];
-        assert!(det(at(0), at(1), at(2), at(3)) < 0.0);
+        assert!(det(at(0), at(1), at(2), at(3)) > 0.0);
         let edge = |l: f64| (l - 1.0).abs() < 1e-9 || (l - 3f64.sqrt()).abs() < 1e-9;
         for k in 0..3 {
             assert!(edge(len(at(k), at((k + 1) % 3))) && edge(len(at(k + 3), at((k + 1) % 3 + 3))));
@@ -601,27 +370,39 @@ mod tests {
         let mut labels = DenseLabels { of: vec![vec![Labels::new(); 4], vec![Labels::new(); 4], vec![Labels::new()]] };
         labels.of[2][0].set("name", LabelValue::Text("a 100% \"square\"".into()));
         labels.of[1][2].set("big", LabelValue::Int(1 << 40));
-        labels.of[1][2].set("w", LabelValue::Int(2));
+        labels.of[1][2].set("w", LabelValue::Real(2.0));
         labels.of[0][1].set("w", LabelValue::Real(0.5));
-        labels.of[0][1].set("name", LabelValue::Int(3));
+        labels.of[0][1].set("name", LabelValue::Text("3".into()));
         let text = vtk_string_with_labels(&sq, &labels).unwrap();
         let vert = sq.cells(0).of;
         let e = sq.cells(1).reps[2];
         let (a, b) = (vert[e.index()], vert[sq.alpha(e, 0).index()]);
         assert!(text.contains(&format!("CELLS 3 10\n4 0 1 2 3\n2 {a} {b}\n1 1\nCELL_TYPES 3\n9\n3\n1\n")), "{text}");
+        // the texts "3" and "a 100% \"square\"" in byte order, each ended by NUL
+        let mut table = b"3\0a 100% \"square\"\0".iter().map(|b| b.to_string()).collect::<Vec<_>>().join(" ");
+        table.insert(0, '\n');
+        assert!(
+            text.contains(&format!(
+                "DATASET UNSTRUCTURED_GRID\nFIELD FieldData 1\ngmap:texts:name 1 18 unsigned_char{table}\nPOINTS"
+            )),
+            "{text}"
+        );
         let data = text.split("CELL_DATA 3\n").nth(1).unwrap();
         assert_eq!(
             data,
             "SCALARS dim int 1\nLOOKUP_TABLE default\n2\n1\n0\n\
-             FIELD labels 4\n\
-             name 1 3 string\na%20100%25%20\"square\"\n\n3\n\
-             name.id 1 3 int\n1\n-1\n0\n\
-             big 1 3 vtktypeint64\n-9223372036854775808\n1099511627776\n-9223372036854775808\n\
+             FIELD labels 3\n\
+             name 1 3 int\n1\n-1\n0\n\
+             big 1 3 long\n-9223372036854775808\n1099511627776\n-9223372036854775808\n\
              w 1 3 double\n-1.7976931348623157e308\n2.0\n0.5\n"
         );
         // no label: the text of `vtk_string`
         let none = DenseLabels { of: vec![vec![Labels::new(); 4]] };
         assert_eq!(vtk_string_with_labels(&sq, &none).unwrap(), vtk_string(&sq).unwrap());
         assert_eq!(encode("é\t%"), "%C3%A9%09%25");
+        // a column of integers and reals would read back as reals: refused
+        labels.of[1][2].set("w", LabelValue::Int(2));
+        let e = vtk_string_with_labels(&sq, &labels).unwrap_err().to_string();
+        assert!(e.contains("would read back with other labels") && e.contains("Int(2)"), "{e}");
     }
 }

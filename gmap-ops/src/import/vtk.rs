@@ -8,8 +8,9 @@
 //! and in `POINT_DATA` / `CELL_DATA` the arrays of `SCALARS`, `VECTORS`, `NORMALS`,
 //! `TENSORS`, `TEXTURE_COORDINATES` and `FIELD` blocks, which become labels (an array of k
 //! components the names `name.0` … `name.{k-1}`); `COLOR_SCALARS`, `LOOKUP_TABLE` tables,
-//! `METADATA` and dataset-level `FIELD` data are read past. Binary data are big-endian, as
-//! the format says. Values standing for "missing" in [`crate::export::vtk_string_with_labels`]
+//! `METADATA` and dataset-level `FIELD` data are read past, but for the tables of texts of
+//! the mesh writers (an integer column and a field-data table `gmap:texts:<name>`). Binary
+//! data are big-endian, as the format says. Values standing for "missing" in [`crate::export::vtk_string_with_labels`]
 //! (`-2147483648` in an `int` array, `-9223372036854775808` in a 64-bit one,
 //! `-1.7976931348623157e308` and non-finite reals in a real one, the empty text) give no
 //! label; `string` arrays are read one text per line with VTK's `%XX` escapes. Other
@@ -393,6 +394,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut types: Option<(Vec<Value>, usize)> = None;
     let mut active: Option<(bool, usize)> = None; // (cell data?, count)
     let mut dataset = false;
+    let mut field_data: Vec<DataArray> = Vec::new();
     while let Some(line) = c.next_line() {
         let ln = c.head;
         let w = words(line);
@@ -414,10 +416,10 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
                 dataset = true;
             }
             b"FIELD" if active.is_none() => {
-                // dataset-level field data: read past
+                // dataset-level field data: kept for the tables of texts only
                 let k = count(w.get(2).copied(), "the number of arrays", ln)?;
                 for _ in 0..k {
-                    read_field_array(&mut c, binary, None)?;
+                    field_data.extend(read_field_array(&mut c, binary, Some(()))?.into_iter().flatten());
                 }
             }
             b"POINTS" => {
@@ -523,6 +525,7 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
             cells_of(&list, offsets.as_deref(), &kinds, cl)?
         }
     };
+    crate::mesh::texts::apply_text_tables(&mut mesh.cell_data, &field_data).map_err(ImportError::Format)?;
     check_data(&mesh)?;
     Ok(mesh)
 }

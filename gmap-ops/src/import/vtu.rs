@@ -10,8 +10,9 @@
 //! block, `encoding="raw"` or `"base64"`), uncompressed or compressed by
 //! `vtkZLibDataCompressor` (a header `[blocks, block size, last block size, compressed
 //! sizes…]` then one zlib stream per block), with `UInt32` or `UInt64` headers and either
-//! byte order. Other compressors, `String` arrays and other datasets are refused, naming
-//! them.
+//! byte order. The grid's `FieldData` is read for the tables of texts of the mesh writers
+//! only (an integer column and a field-data table `gmap:texts:<name>`). Other compressors,
+//! `String` arrays and other datasets are refused, naming them.
 //!
 //! Errors name the file and the line of the XML element at fault. Sizes announced by
 //! headers are checked against the values the arrays must hold before anything is
@@ -300,8 +301,33 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
     for piece in pieces {
         read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh)?;
     }
+    let field_data = read_field_data(grid, &layout, app.as_ref(), &line_of)?;
+    crate::mesh::texts::apply_text_tables(&mut mesh.cell_data, &field_data).map_err(ImportError::Format)?;
     check_data(&mesh)?;
     Ok(mesh)
+}
+
+/// The arrays of the grid's `FieldData` that are tables of texts of the mesh writers
+/// (`gmap:texts:<name>`); other field data are read past.
+fn read_field_data(
+    grid: roxmltree::Node,
+    l: &Layout,
+    app: Option<&Appended>,
+    line_of: &dyn Fn(roxmltree::Node) -> usize,
+) -> Result<Vec<crate::mesh::DataArray>, ImportError> {
+    let mut out = Vec::new();
+    let Some(fd) = child(grid, "FieldData") else { return Ok(out) };
+    for da in fd.children().filter(|c| c.has_tag_name("DataArray")) {
+        let name = da.attribute("Name").unwrap_or("");
+        if !name.starts_with(crate::mesh::texts::TABLE_PREFIX) {
+            continue;
+        }
+        let line = line_of(da);
+        let n = attr_count(da, "NumberOfTuples", line)?;
+        let (ty, v) = array(da, n, l, app, line)?;
+        out.extend(data_arrays(name, 1, ty, v));
+    }
+    Ok(out)
 }
 
 fn read_piece(
