@@ -26,8 +26,11 @@ fn syntax(line: usize, message: impl Into<String>) -> ImportError {
     ImportError::Syntax { line, message: message.into() }
 }
 
+/// The vertices' points and the edges of a plane graph.
+type PlaneGraph = (Vec<[f64; 2]>, Vec<[usize; 2]>);
+
 /// Parses CGAL's plane-graph text: the vertices' points and the edges.
-fn parse(text: &str) -> Result<(Vec<[f64; 2]>, Vec<[usize; 2]>), ImportError> {
+fn parse(text: &str) -> Result<PlaneGraph, ImportError> {
     let mut it = tokens(text);
     let mut last = 1;
     let mut next = |what: &str| -> Result<(usize, String), ImportError> {
