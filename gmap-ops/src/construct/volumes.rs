@@ -20,7 +20,7 @@ fn has_volumes<A: Attributes>(g: &GMap<A>, what: &'static str) -> Result<(), Con
 }
 
 /// Whether [`try_merge_volumes`] would succeed: `n >= 3` and the face of `d` can be removed
-/// ([`is_removable`] with `i = 2`: it separates two distinct volumes, degree 2).
+/// ([`is_removable_keeping_homology`] with `i = 2`: it separates two distinct volumes, degree 2).
 pub fn can_merge_volumes<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {
     g.dim() >= 3 && g.contains(d) && is_removable_keeping_homology(g, d, 2)
 }

@@ -41,9 +41,9 @@ pub enum Operator {
     InsertEdge,
     /// [`ops::try_insert_dangling_edge`] at the corner of `d`
     InsertDanglingEdge,
-    /// [`ops::try_remove_cell`] of the i-cell of `d`
+    /// [`ops::try_remove_cell_keeping_homology`] of the i-cell of `d`
     RemoveCell,
-    /// [`ops::try_contract_cell`] of the i-cell of `d`
+    /// [`ops::try_contract_cell_keeping_homology`] of the i-cell of `d`
     ContractCell,
     /// [`ops::try_split_cell`] of the i-cell of `d` along the cut given by `d` and `e`
     SplitCell,
