@@ -633,6 +633,15 @@ impl<A: Attributes> GMap<A> {
         }
         let store = &self.darts;
         let id = |k: u32| store.slot_id(k);
+        if d == e && i == 1 {
+            // CGAL's one exception: a 1-free dart 1-sewn to itself (a no-op that CGAL's
+            // programs use to state that a lone dart is its own corner)
+            let k = dart_index(d) as u32;
+            if store.slot_alpha(k, 1) != k {
+                return Err(EditError::NotFree { dart: d, alpha: 1 });
+            }
+            return Ok(std::iter::once((k, k)).collect());
+        }
         let idx: SmallVec<[usize; 8]> = self.sew_set(i).iter().filter(|&k| k <= self.dim).collect();
         let conflict = |at: u32| EditError::NotIsomorphic { first: d, second: e, alpha: i, at: id(at) };
         let mut pairing = Pairing::default();
@@ -676,8 +685,9 @@ impl<A: Attributes> GMap<A> {
     }
 
     /// Whether `d` and `e` can be i-sewn: both sew orbits (see [`GMap::sew_set`]) are
-    /// i-free and pair one-to-one by a parallel traversal. Equivalent to
-    /// `try_sew` succeeding.
+    /// i-free and pair one-to-one by a parallel traversal, and `d != e` — except, as in
+    /// CGAL, `i = 1` and `d = e` 1-free (sewing a dart to itself, which changes nothing).
+    /// Equivalent to `try_sew` succeeding.
     pub fn is_sewable(&self, d: DartId, e: DartId, i: usize) -> bool {
         self.sew_slots(d, e, i).is_ok()
     }

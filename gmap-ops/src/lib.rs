@@ -9,13 +9,14 @@
 //!   [`build::placed`], the grid, the cube, the simplex and the torus with the points of
 //!   their vertices;
 //! * [`import`]: pure simplicial complexes (`.facets`, `.lex`; one dart per flag of each
-//!   facet), polygon meshes (`.off`) and face posets of regular cell complexes (the flag
+//!   facet), polygon meshes (`.off`), CGAL's plane graphs and face posets of regular cell complexes (the flag
 //!   construction), each refusing what is not a G-map with an error that says where;
 //! * [`export`]: `.off` polygon meshes and the `.facets` of the barycentric subdivision,
 //!   written through a temporary file and a rename;
 //! * [`iso`]: isomorphism of maps (canonical breadth-first codes), for round-trip tests;
 //! * [`euler`]: Euler operators on the editable [`gmap_core::GMap`] (split, remove,
-//!   contract, close) with their Euler–Poincaré vectors, homology-preserving simplification,
+//!   contract, close) with their Euler–Poincaré vectors — removal and contraction both as
+//!   CGAL's (any cell, which may change the space) and homology-keeping —, simplification,
 //!   stratified objects with incomplete boundaries, and random operator sequences for tests;
 //! * [`rng`]: the seeded SplitMix64 generator behind every random choice of the crate.
 //!

@@ -29,7 +29,7 @@ fn an_edge_between_two_faces_of_one_cube() {
     assert_eq!(summary(&g), (52, vec![8, 13, 5, 1], 1, true));
     // the new edge has the one merged face on both sides: removing it is refused, as it
     // would cut that face in two
-    assert!(!is_removable(&g, r.dart, 1));
+    assert!(!is_removable_keeping_homology(&g, r.dart, 1));
 }
 
 #[test]
@@ -129,7 +129,8 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     ];
     assert!(is_insertable_cell_2_in_cell_3(&g, &path));
     let f = insert_cell_2_in_cell_3(&mut g, &path).unwrap();
-    assert_eq!(g.alpha(f, 2), path[0]);
+    // CGAL returns alpha_0 of the new face's dart at path[0]
+    assert_eq!(g.alpha(f, 2), g.alpha(path[0], 0));
     assert_eq!((g.cell_darts(f, 2).len(), g.attribute::<2>(f)), (16, None));
     assert_eq!(summary(&g), (72, vec![8, 14, 9, 2], 1, true));
     // the volume split: both halves carry 7
@@ -143,11 +144,13 @@ fn cgal_names_return_a_dart_of_the_new_cell() {
     assert_eq!((g.point(tip), g.cell_darts(tip, 0).len()), (Some([1.0, 2.0, 3.0]), 2));
     assert_eq!(g.alpha(g.alpha_word(tip, &[0]), 1), v);
     assert_eq!(summary(&g), (72 + 4 + 4, vec![10, 16, 9, 2], 1, true));
-    // CGAL's remove_cell under the same name (contract_cell refuses here: the cube's
-    // boundary is 3-free, and contracting an edge on a boundary would pinch it)
-    remove_cell(&mut g, tip, 1);
-    assert!(!is_contractible(&g, v, 1));
-    remove_cell(&mut g, v, 0);
+    // the homology-keeping removals (the homology-keeping contraction refuses here: the
+    // cube's boundary is 3-free, and contracting an edge on a boundary would pinch it;
+    // CGAL's contract_cell accepts it)
+    remove_cell_keeping_homology(&mut g, tip, 1);
+    assert!(!is_contractible_keeping_homology(&g, v, 1));
+    assert!(is_contractible(&g, v, 1));
+    remove_cell_keeping_homology(&mut g, v, 0);
     assert_eq!(summary(&g), (72, vec![8, 14, 9, 2], 1, true));
     // refusals are errors, not panics
     assert_eq!(

@@ -44,12 +44,12 @@ fn every_cell_kind_on_classic_objects() {
     let (c0, b0) = config(&g);
     assert_eq!((c0.clone(), b0.clone()), (vec![9, 18, 9], vec![1, 2, 1]));
     let d = g.darts().next().unwrap();
-    let v = try_remove_cell(&mut g, d, 1).unwrap().vector;
+    let v = try_remove_cell_keeping_homology(&mut g, d, 1).unwrap().vector;
     let (c1, b1) = config(&g);
     assert_eq!(c1, vec![9, 17, 8]);
     assert_eq!(v, EpVector::between(&c0, &b0, &c1, &b1));
-    let e = g.darts().find(|&x| is_contractible(&g, x, 1)).unwrap();
-    let v = try_contract_cell(&mut g, e, 1).unwrap().vector;
+    let e = g.darts().find(|&x| is_contractible_keeping_homology(&g, x, 1)).unwrap();
+    let v = try_contract_cell_keeping_homology(&mut g, e, 1).unwrap().vector;
     let (c2, b2) = config(&g);
     assert_eq!((c2.clone(), b2.clone()), (vec![8, 16, 8], vec![1, 2, 1]));
     assert_eq!(v, EpVector::between(&c1, &b1, &c2, &b2));
@@ -58,7 +58,7 @@ fn every_cell_kind_on_classic_objects() {
     let (c0, b0) = config(&g);
     assert_eq!(b0, vec![1, 3, 3, 1]);
     let d = g.darts().next().unwrap();
-    let v = try_remove_cell(&mut g, d, 2).unwrap().vector;
+    let v = try_remove_cell_keeping_homology(&mut g, d, 2).unwrap().vector;
     let (c1, b1) = config(&g);
     assert_eq!(c1, vec![8, 24, 23, 7]);
     assert_eq!(v, EpVector::between(&c0, &b0, &c1, &b1));

@@ -803,7 +803,7 @@ impl PyGMap {
     fn remove_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
-        let r = eops::try_remove_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
+        let r = eops::try_remove_cell_keeping_homology(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
         r?;
         Ok(before - self.g.dart_count())
@@ -811,7 +811,7 @@ impl PyGMap {
 
     /// Whether remove_cell(d, i) applies (degree 2, two distinct (i+1)-cells).
     fn is_removable(&self, d: i64, i: i64) -> PyResult<bool> {
-        Ok(eops::is_removable(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+        Ok(eops::is_removable_keeping_homology(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }
 
     /// CGAL's contract_cell<i>(d): contracts the i-cell of d; returns the number of darts
@@ -819,7 +819,7 @@ impl PyGMap {
     fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
-        let r = eops::try_contract_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
+        let r = eops::try_contract_cell_keeping_homology(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
         r?;
         Ok(before - self.g.dart_count())
@@ -827,7 +827,7 @@ impl PyGMap {
 
     /// Whether contract_cell(d, i) applies.
     fn is_contractible(&self, d: i64, i: i64) -> PyResult<bool> {
-        Ok(eops::is_contractible(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+        Ok(eops::is_contractible_keeping_homology(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }
 
     /// CGAL's make_combinatorial_tetrahedron(): adds a tetrahedron (a 3-map); returns a dart.

@@ -106,6 +106,46 @@ impl<A: Attributes> GMap<A> {
         cells.dart_of(id).filter(|&d| self.contains(d) && cells.id_at(dart_index(d)) == Some(id))
     }
 
+    /// Whether the attribute `id` is held by a live dart (CGAL's `is_attribute_used<I>`):
+    /// false once it was freed, merged into another or left by the removal of its darts.
+    /// O(1).
+    ///
+    /// ```
+    /// use gmap_core::{Cells, GMap};
+    /// let mut g: GMap<((), Cells<u8>)> = GMap::with_attributes(1);
+    /// let e = g.make_edge();
+    /// let id = g.set_attribute::<1>(e, 7);
+    /// assert!(g.is_attribute_used::<1>(id));
+    /// g.clear();
+    /// assert!(!g.is_attribute_used::<1>(id));
+    /// ```
+    pub fn is_attribute_used<const I: usize>(&self, id: AttrId) -> bool
+    where
+        A: AttributeAt<I>,
+    {
+        self.attribute_dart::<I>(id).is_some()
+    }
+
+    /// The id of the point of the vertex of `d`, if it has one: the vertex attribute of a
+    /// linear cell complex (CGAL's `attribute<0>(d)` there). O(1).
+    ///
+    /// # Panics
+    /// On a stale handle.
+    #[track_caller]
+    pub fn point_attribute(&self, d: DartId) -> Option<AttrId> {
+        if let Err(e) = self.live(d) {
+            refuse(e)
+        }
+        self.points.id_at(dart_index(d))
+    }
+
+    /// Whether the point `id` (from [`GMap::point_attribute`]) is still the point of a
+    /// vertex with live darts (CGAL's `is_attribute_used<0>` on a linear cell complex).
+    /// O(1).
+    pub fn is_point_used(&self, id: AttrId) -> bool {
+        self.points.dart_of(id).is_some_and(|d| self.contains(d) && self.points.id_at(dart_index(d)) == Some(id))
+    }
+
     /// Sets the attribute of the I-cell of `d`, for every dart of the cell, replacing the
     /// cell's value if it has one; returns its id (the same id when a value is replaced).
     /// O(1) when the cell has a value, O(cell size · n) otherwise.

@@ -34,7 +34,7 @@ use gmap_core::{AlphaSet, Attributes, DartId, GMap};
 use rustc_hash::FxHashSet as HashSet;
 
 use super::ConstructError;
-use crate::euler::ops::{try_insert_edge, try_insert_vertex_at, try_remove_cell};
+use crate::euler::ops::{try_insert_edge, try_insert_vertex_at, try_remove_cell_keeping_homology};
 
 /// Checks the map's dimension (2, or 3 for a chamfer on a volume's boundary) and the
 /// fraction `t`.
@@ -131,7 +131,7 @@ pub fn try_chamfer_vertex<A: Attributes>(g: &mut GMap<A>, d: DartId, t: f64) -> 
     }
     // 3. the spokes removed: k - 1 merges, then the last one dangling, with v
     for &y in &corners {
-        try_remove_cell(g, y, 1)?;
+        try_remove_cell_keeping_homology(g, y, 1)?;
     }
     Ok(face.expect("three corners or more"))
 }
@@ -221,10 +221,10 @@ pub fn try_chamfer_edge<A: Attributes>(g: &mut GMap<A>, d: DartId, t: f64) -> Re
     try_insert_edge(g, a, c)?;
     try_insert_edge(g, b, e)?;
     // 3. the edge removed: the two strips become one face
-    try_remove_cell(g, du, 1)?;
+    try_remove_cell_keeping_homology(g, du, 1)?;
     // 4. its ends removed, each now on two edges
-    try_remove_cell(g, sides[0], 0)?;
-    try_remove_cell(g, sides[1], 0)?;
+    try_remove_cell_keeping_homology(g, sides[0], 0)?;
+    try_remove_cell_keeping_homology(g, sides[1], 0)?;
     Ok(a)
 }
 

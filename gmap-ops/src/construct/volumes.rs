@@ -6,7 +6,10 @@
 use gmap_core::{Attributes, DartId, GMap};
 
 use super::ConstructError;
-use crate::euler::ops::{insert_cell_2_in_cell_3, is_insertable_cell_2_in_cell_3, is_removable, try_remove_cell};
+use crate::euler::ops::{
+    insert_cell_2_in_cell_3, is_insertable_cell_2_in_cell_3, is_removable_keeping_homology,
+    try_remove_cell_keeping_homology,
+};
 
 /// Checks that the map has volumes.
 fn has_volumes<A: Attributes>(g: &GMap<A>, what: &'static str) -> Result<(), ConstructError> {
@@ -17,9 +20,9 @@ fn has_volumes<A: Attributes>(g: &GMap<A>, what: &'static str) -> Result<(), Con
 }
 
 /// Whether [`try_merge_volumes`] would succeed: `n >= 3` and the face of `d` can be removed
-/// ([`is_removable`] with `i = 2`: it separates two distinct volumes, degree 2).
+/// ([`is_removable_keeping_homology`] with `i = 2`: it separates two distinct volumes, degree 2).
 pub fn can_merge_volumes<A: Attributes>(g: &GMap<A>, d: DartId) -> bool {
-    g.dim() >= 3 && g.contains(d) && is_removable(g, d, 2)
+    g.dim() >= 3 && g.contains(d) && is_removable_keeping_homology(g, d, 2)
 }
 
 /// Merges the two volumes on either side of the face of `d` into one by removing the face
@@ -31,7 +34,7 @@ pub fn try_merge_volumes<A: Attributes>(g: &mut GMap<A>, d: DartId) -> Result<()
     if !g.contains(d) {
         return Err(ConstructError::NoSuchDart(d));
     }
-    try_remove_cell(g, d, 2)?;
+    try_remove_cell_keeping_homology(g, d, 2)?;
     Ok(())
 }
 

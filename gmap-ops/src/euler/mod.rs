@@ -21,7 +21,7 @@
 //!
 //! ```
 //! use gmap_core::GMap;
-//! use gmap_ops::euler::ops::{try_insert_vertex, try_remove_cell};
+//! use gmap_ops::euler::ops::{try_insert_vertex, try_remove_cell_keeping_homology};
 //! // a 1-map: a triangle (three edges, three vertices)
 //! let mut g = GMap::new(1);
 //! let d: Vec<_> = (0..6).map(|_| g.create_dart()).collect();
@@ -34,7 +34,7 @@
 //! assert_eq!(op.basis_name(), "B0 + A1");
 //! assert_eq!(g.to_dense_map().cell_counts(), vec![4, 4]);
 //! // removing a vertex of degree 2 merges its two edges back
-//! let op = try_remove_cell(&mut g, d[1], 0).unwrap();
+//! let op = try_remove_cell_keeping_homology(&mut g, d[1], 0).unwrap();
 //! assert_eq!((op.name.as_str(), op.vector.dx().to_vec()), ("kve", vec![-1, -1]));
 //! assert_eq!(g.to_dense_map().cell_counts(), vec![3, 3]);
 //! ```

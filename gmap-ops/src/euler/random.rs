@@ -41,9 +41,9 @@ pub enum Operator {
     InsertEdge,
     /// [`ops::try_insert_dangling_edge`] at the corner of `d`
     InsertDanglingEdge,
-    /// [`ops::try_remove_cell`] of the i-cell of `d`
+    /// [`ops::try_remove_cell_keeping_homology`] of the i-cell of `d`
     RemoveCell,
-    /// [`ops::try_contract_cell`] of the i-cell of `d`
+    /// [`ops::try_contract_cell_keeping_homology`] of the i-cell of `d`
     ContractCell,
     /// [`ops::try_split_cell`] of the i-cell of `d` along the cut given by `d` and `e`
     SplitCell,
@@ -86,8 +86,12 @@ pub fn attempt<A: Attributes>(g: &mut GMap<A>, op: Operator, d: DartId, e: DartI
         Operator::InsertVertex => (ops::can_insert_vertex(g, d), ops::try_insert_vertex(g, d)),
         Operator::InsertEdge => (ops::can_insert_edge(g, d, e), ops::try_insert_edge(g, d, e)),
         Operator::InsertDanglingEdge => (ops::can_insert_dangling_edge(g, d), ops::try_insert_dangling_edge(g, d)),
-        Operator::RemoveCell => (ops::is_removable(g, d, i), ops::try_remove_cell(g, d, i)),
-        Operator::ContractCell => (ops::is_contractible(g, d, i), ops::try_contract_cell(g, d, i)),
+        Operator::RemoveCell => {
+            (ops::is_removable_keeping_homology(g, d, i), ops::try_remove_cell_keeping_homology(g, d, i))
+        }
+        Operator::ContractCell => {
+            (ops::is_contractible_keeping_homology(g, d, i), ops::try_contract_cell_keeping_homology(g, d, i))
+        }
         Operator::SplitCell => (ops::can_split_cell(g, &[d, e], i), ops::try_split_cell(g, &[d, e], i)),
     };
     Attempt { allowed, result }

@@ -1,5 +1,5 @@
-//! Importers: simplicial complexes (`.facets`, `.lex`), polygon meshes (`.off`) and face
-//! posets of regular cell complexes (the flag construction).
+//! Importers: simplicial complexes (`.facets`, `.lex`), polygon meshes (`.off`), plane graphs
+//! (CGAL's `import_from_plane_graph`) and face posets of regular cell complexes (the flag construction).
 //!
 //! Every reader returns a [`FileError`] that names the file, and inside it an
 //! [`ImportError`] that names the line, the facet, the ridge or the edge at fault. Readers
@@ -12,6 +12,7 @@ pub mod cubical;
 pub mod image;
 pub mod msh;
 pub mod off;
+pub mod plane_graph;
 pub mod poset;
 pub mod raster;
 pub mod simplicial;

@@ -240,6 +240,23 @@ pub fn read_off_with(path: &Path, max_darts: Option<u64>) -> Result<DenseMap, Fi
     PolygonMesh::parse_limited(&text, limit).and_then(|m| m.to_gmap()).map_err(|e| FileError::new(path, e))
 }
 
+/// CGAL's `import_from_polyhedron_3` for a polyhedron read from `.off` text: the 2-map of
+/// its faces, 2-sewn along their shared edges, each vertex with its point, as an editable
+/// [`gmap_core::GMap`] ([`PolygonMesh::parse`] then [`PolygonMesh::to_gmap`], with their
+/// errors).
+///
+/// ```
+/// use gmap_ops::import::off::import_from_polyhedron_3;
+/// let off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+/// let g = import_from_polyhedron_3(off).unwrap();
+/// assert_eq!((g.cell_counts(), g.point_count()), (vec![4, 6, 4], 4));
+/// assert!(g.is_face_combinatorial_polygon(g.darts().next().unwrap(), 3));
+/// ```
+pub fn import_from_polyhedron_3(text: &str) -> Result<gmap_core::GMap, ImportError> {
+    let mesh = PolygonMesh::parse(text)?;
+    Ok(gmap_core::GMap::from_dense(&mesh.to_gmap()?).0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

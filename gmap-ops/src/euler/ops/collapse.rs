@@ -1,5 +1,5 @@
-//! Removals and contractions of cells of degree 2 ([`try_remove_cell`],
-//! [`try_contract_cell`]), which merge the two cells on either side, and the removal of a
+//! Removals and contractions of cells of degree 2 ([`try_remove_cell_keeping_homology`],
+//! [`try_contract_cell_keeping_homology`]), which merge the two cells on either side, and the removal of a
 //! dangling edge; each checks first that the space does not change.
 
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -50,7 +50,7 @@ enum Collapse {
     Dangling,
 }
 
-/// The check of [`is_removable`] and [`is_contractible`].
+/// The check of [`is_removable_keeping_homology`] and [`is_contractible_keeping_homology`].
 fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -> Result<Collapse, EulerError> {
     let remove = kind == Move::Remove;
     live(g, d)?;
@@ -190,13 +190,13 @@ fn check_corners<A: Attributes>(g: &GMap<A>, cell: &[DartId], i: usize, nb: usiz
     Ok(())
 }
 
-/// Whether the i-cell of `d` can be removed by [`try_remove_cell`].
-pub fn is_removable<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
+/// Whether the i-cell of `d` can be removed by [`try_remove_cell_keeping_homology`].
+pub fn is_removable_keeping_homology<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
     check_collapse(g, d, i, Move::Remove).is_ok()
 }
 
-/// Whether the i-cell of `d` can be contracted by [`try_contract_cell`].
-pub fn is_contractible<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
+/// Whether the i-cell of `d` can be contracted by [`try_contract_cell_keeping_homology`].
+pub fn is_contractible_keeping_homology<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool {
     check_collapse(g, d, i, Move::Contract).is_ok()
 }
 
@@ -205,7 +205,7 @@ pub fn is_contractible<A: Attributes>(g: &GMap<A>, d: DartId, i: usize) -> bool 
 /// `alpha_nb`, `alpha_i` from `x` (or becomes i-free). Then reconciles the attributes from
 /// the re-linked darts, `alpha_i(cell[0])` first: the merged cells keep the attributes of
 /// its cells.
-fn collapse<A: Attributes>(g: &mut GMap<A>, cell: &[DartId], i: usize, nb: usize) {
+pub(super) fn collapse<A: Attributes>(g: &mut GMap<A>, cell: &[DartId], i: usize, nb: usize) {
     let set: HashSet<DartId> = cell.iter().copied().collect();
     let mut links: Vec<(DartId, DartId)> = Vec::new();
     for &x in cell {
@@ -254,7 +254,7 @@ fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: M
 }
 
 /// Removes the i-cell of `d`, `i < n`, merging the two (i+1)-cells on its sides (`kve`,
-/// `kef`, `kfs`, …; CGAL's `remove_cell<i>`), or removes a dangling edge with its free end
+/// `kef`, `kfs`, …), or removes a dangling edge with its free end
 /// vertex (`kev`).
 ///
 /// ```text
@@ -262,13 +262,14 @@ fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: M
 ///   │ a │ b │   kef    │  a∪b  │   the middle edge goes, the faces merge
 ///   └───┴───┘          └───────┘
 /// ```
-/// Precondition ([`is_removable`]): `i < n`; the cell has degree 2 (CGAL's condition:
+/// Precondition ([`is_removable_keeping_homology`]): `i < n`; the cell has degree 2 (CGAL's condition:
 /// `alpha_{i+1} alpha_{i+2}` is an involution on its darts); no dart is (i+1)-free; its
 /// darts meet exactly two distinct (i+1)-cells, and in every other cell it touches its
 /// appearances join distinct corners without a cycle (else that cell would fall apart) —
 /// or, for `i = 1`, the edge is dangling. This
-/// is stricter than CGAL, which also removes cells with the same (i+1)-cell on both
-/// sides: that changes the space, and then no local rule gives the homology change.
+/// is stricter than CGAL's [`remove_cell`](super::try_remove_cell), which also removes
+/// cells with the same (i+1)-cell on both sides, on the boundary, and of dimension n: that
+/// may change the space, and then no local rule gives the homology change.
 /// Effect: `-X_i - X_{i+1}` (space unchanged) or `-X_0 - X_1` (a whisker collapsed).
 ///
 /// Attributes: the two (i+1)-cells merge into the one of `d`, keeping its attribute (the
@@ -276,7 +277,11 @@ fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: M
 /// `on_merge`); the attribute of the removed cell goes with it, and so does the point of
 /// the free end of a removed dangling edge; every other cell keeps its attribute and every
 /// other vertex its point. O(size of the cells touched · n).
-pub fn try_remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+pub fn try_remove_cell_keeping_homology<A: Attributes>(
+    g: &mut GMap<A>,
+    d: DartId,
+    i: usize,
+) -> Result<EulerOp, EulerError> {
     let kind = check_collapse(g, d, i, Move::Remove)?;
     let dx = collapse_counted(g, d, i, Move::Remove);
     let name = match kind {
@@ -286,18 +291,18 @@ pub fn try_remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> R
     Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
 }
 
-/// Like [`try_remove_cell`], panicking when the precondition fails.
-pub fn remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
-    try_remove_cell(g, d, i).unwrap_or_else(|e| panic!("remove_cell: {e}"))
+/// Like [`try_remove_cell_keeping_homology`], panicking when the precondition fails.
+pub fn remove_cell_keeping_homology<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
+    try_remove_cell_keeping_homology(g, d, i).unwrap_or_else(|e| panic!("remove_cell_keeping_homology: {e}"))
 }
 
 /// Contracts the i-cell of `d`, `i >= 1`, to an (i-1)-cell, merging the two (i-1)-cells
-/// at its ends (CGAL's `contract_cell<i>`): the dual of [`try_remove_cell`].
+/// at its ends: the dual of [`try_remove_cell_keeping_homology`].
 ///
 /// ```text
 ///   u ──── e ──── v ── …     kev     w ── …    the edge shrinks, u and v become w
 /// ```
-/// Precondition ([`is_contractible`]): `1 <= i <= n`; dual degree 2
+/// Precondition ([`is_contractible_keeping_homology`]): `1 <= i <= n`; dual degree 2
 /// (`alpha_{i-1} alpha_{i-2}` an involution on the cell, vacuous for edges); no dart
 /// free; its darts meet exactly two distinct (i-1)-cells, neither with a free dart; its
 /// appearances in the other cells it touches join distinct corners without a cycle.
@@ -308,7 +313,11 @@ pub fn remove_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Euler
 /// holding `d` (the merge hook of dimension i - 1 runs when both had one); for an edge,
 /// the merged vertex keeps the point of `d`'s vertex. The contracted cell's attribute goes
 /// with it. O(size of the cells touched · n).
-pub fn try_contract_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> Result<EulerOp, EulerError> {
+pub fn try_contract_cell_keeping_homology<A: Attributes>(
+    g: &mut GMap<A>,
+    d: DartId,
+    i: usize,
+) -> Result<EulerOp, EulerError> {
     check_collapse(g, d, i, Move::Contract)?;
     let dx = collapse_counted(g, d, i, Move::Contract);
     // an edge contracted is the classical kev (kill edge and vertex), as its dual removal is kve
@@ -316,7 +325,7 @@ pub fn try_contract_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) ->
     Ok(EulerOp::new(name, EpVector::from_cells(&dx)))
 }
 
-/// Like [`try_contract_cell`], panicking when the precondition fails.
-pub fn contract_cell<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
-    try_contract_cell(g, d, i).unwrap_or_else(|e| panic!("contract_cell: {e}"))
+/// Like [`try_contract_cell_keeping_homology`], panicking when the precondition fails.
+pub fn contract_cell_keeping_homology<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize) -> EulerOp {
+    try_contract_cell_keeping_homology(g, d, i).unwrap_or_else(|e| panic!("contract_cell_keeping_homology: {e}"))
 }

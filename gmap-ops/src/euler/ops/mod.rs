@@ -39,17 +39,31 @@
 //! `contract_cell`), returning a dart of the new cell as CGAL's do; the table in [`cgal`]
 //! maps each CGAL operation to ours with its precondition and predicate.
 //!
+//! # Removal and contraction: CGAL's and the homology-keeping ones
+//!
+//! [`try_remove_cell`] and [`try_contract_cell`] (with [`is_removable`],
+//! [`is_contractible`]) are CGAL's `remove_cell<i>` and `contract_cell<i>`: any i-cell of
+//! degree 2, `0 <= i <= n`, on the boundary or not; they may change the space (cut a face,
+//! kill a circle, remove a whole component) and return the number of darts deleted.
+//! [`try_remove_cell_keeping_homology`] and [`try_contract_cell_keeping_homology`] (with
+//! [`is_removable_keeping_homology`], [`is_contractible_keeping_homology`]) accept only
+//! the moves that keep the space (two distinct interior cells merge, nothing falls apart)
+//! and return the Euler–Poincaré vector; simplification, the EO counterparts and the
+//! constructions use them. The table in the `removal` module compares both predicates.
+//!
 //! The operators are grouped by what they do: splits and insertions (`split`), edges hung
-//! at a corner (`edges`: dangling edges, edges between two faces), removals and
-//! contractions of cells of degree 2 (`collapse`), closing a boundary (`close`), CGAL's
-//! names ([`cgal`]); all are re-exported here.
+//! at a corner (`edges`: dangling edges, edges between two faces), CGAL's removals and
+//! contractions (`removal`), the homology-keeping ones (`collapse`), closing a boundary
+//! (`close`), CGAL's names ([`cgal`]); all are re-exported here.
 
 pub mod cgal;
+mod cgal_insert;
 mod close;
 mod collapse;
 mod common;
 mod edges;
 mod error;
+mod removal;
 mod split;
 mod star;
 
@@ -60,12 +74,16 @@ pub use cgal::{
 };
 pub use close::{can_close, try_close, CloseReport};
 pub(crate) use collapse::Move;
-pub use collapse::{contract_cell, is_contractible, is_removable, remove_cell, try_contract_cell, try_remove_cell};
+pub use collapse::{
+    contract_cell_keeping_homology, is_contractible_keeping_homology, is_removable_keeping_homology,
+    remove_cell_keeping_homology, try_contract_cell_keeping_homology, try_remove_cell_keeping_homology,
+};
 pub use edges::{
     can_insert_dangling_edge, can_insert_edge_between_faces, try_insert_dangling_edge, try_insert_dangling_edge_at,
     try_insert_edge_between_faces, BridgeReport,
 };
 pub use error::EulerError;
+pub use removal::{contract_cell, is_contractible, is_removable, remove_cell, try_contract_cell, try_remove_cell};
 pub use split::{
     can_insert_edge, can_insert_vertex, can_split_cell, split_cell, try_insert_edge, try_insert_vertex,
     try_insert_vertex_at, try_split_cell,

@@ -60,11 +60,11 @@ impl EoOperator {
     pub fn gmap_counterpart(&self) -> Option<&'static str> {
         match (self.scheme, self.inverse, self.n, self.open) {
             (Scheme::Subdivide, false, 1, _) => Some("try_insert_vertex"),
-            (Scheme::Subdivide, true, 1, _) => Some("try_remove_cell(_, 0)"),
+            (Scheme::Subdivide, true, 1, _) => Some("try_remove_cell_keeping_homology(_, 0)"),
             (Scheme::Subdivide, false, 2, false) => Some("try_insert_edge"),
-            (Scheme::Subdivide, true, 2, false) => Some("try_remove_cell(_, 1)"),
+            (Scheme::Subdivide, true, 2, false) => Some("try_remove_cell_keeping_homology(_, 1)"),
             (Scheme::Subdivide, false, 3, false) => Some("try_split_cell(_, 3)"),
-            (Scheme::Subdivide, true, 3, false) => Some("try_remove_cell(_, 2)"),
+            (Scheme::Subdivide, true, 3, false) => Some("try_remove_cell_keeping_homology(_, 2)"),
             _ => None,
         }
     }
@@ -106,11 +106,11 @@ pub fn apply_on_gmap(op: EoOperator, g: &mut GMap, darts: &[DartId]) -> Option<R
                     "a vertex between edges with both ends (kve)"
                 });
             }
-            ops::try_remove_cell(g, d, 0)
+            ops::try_remove_cell_keeping_homology(g, d, 0)
         }
         (false, 2) => ops::try_insert_edge(g, d, *darts.get(1)?),
         (false, 3) => ops::try_split_cell(g, darts, 3),
-        (true, i) => ops::try_remove_cell(g, d, i - 1),
+        (true, i) => ops::try_remove_cell_keeping_homology(g, d, i - 1),
         _ => return None,
     })
 }
