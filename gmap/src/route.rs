@@ -162,6 +162,10 @@ pub fn plan(input: &Input, o: &HomologyOptions) -> Result<Route> {
 fn plan_cubes(cubes: Cubes<'_>, o: &HomologyOptions) -> Route {
     let shape = cubes.shape();
     let plain = o.method == Method::Cellular && !o.simplify && !o.topological && cubes.is_full() && shape.len() <= 3;
+    if o.shortest {
+        // the shortest basis needs the absolute complex, built whole
+        return Route::Cubical { whole: true };
+    }
     match (plain, o.generators) {
         (true, false) => Route::OnePass,
         (true, true) if !o.periodic => Route::Sweep,
@@ -269,7 +273,10 @@ fn run_complex(route: Route, input: &Input, o: &HomologyOptions, file: &str) -> 
         o.progress.note(&format!("gmap homology: {n}"));
     }
     let mut report = finish(&named, dim, o, file)?;
-    report.note = note;
+    report.note = match (note, report.note.take()) {
+        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
+        (a, b) => a.or(b),
+    };
     if let Input::Arch(x) = input {
         report.space = Some(ArchSpace::of(x, o.topological));
     }
@@ -294,9 +301,10 @@ fn map_chains<'a>(
 }
 
 /// The groups of a named chain complex and, when asked for, a cycle per summand named in
-/// the input's terms.
+/// the input's terms (those of `H_1` a shortest basis with `shortest`).
 fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) -> Result<Report> {
     let groups = reduce(named, o).map_err(|e| e.context(file.to_string()))?;
+    let mut note = None;
     let generators = if o.generators {
         o.progress.stage("computing generators and lifting them to the input's cells");
         let limit = o.max_generator_cells.unwrap_or(gmap_homology::generators::GENERATOR_CELL_LIMIT);
@@ -306,11 +314,48 @@ fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) 
             }
             e => Error::from(e).context(file.to_string()),
         })?;
-        Some(g.into_iter().map(|x| name_generator(named, x)).collect())
+        let mut g: Vec<NamedGenerator> = g.into_iter().map(|x| name_generator(named, x)).collect();
+        if o.shortest {
+            let (h1, lengths) = shortest_h1(named, o, file)?;
+            let at = g.iter().position(|x| x.dim == 1).unwrap_or(g.len());
+            g.retain(|x| x.dim != 1);
+            g.splice(at.min(g.len())..at.min(g.len()), h1);
+            note = Some(format!("the generators of H_1 are a shortest basis over Z/2, of lengths {lengths} (edges)"));
+        }
+        Some(g)
     } else {
         None
     };
-    Ok(route_report(dimension, o, groups, generators))
+    let mut report = route_report(dimension, o, groups, generators);
+    report.note = note;
+    Ok(report)
+}
+
+/// A shortest basis of `H_1` over `Z/2` with every edge of length 1, named, and its
+/// lengths as text.
+fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<(Vec<NamedGenerator>, String)> {
+    if named.relative.is_some() {
+        return Err(err!(
+            Precondition,
+            "{file}: the shortest basis needs the whole complex, not one relative to vertices set aside"
+        ));
+    }
+    o.progress.stage("a shortest basis of H_1: shortest-path trees from every vertex, then the greedy basis");
+    let edges = named.chain.counts().get(1).copied().unwrap_or(0);
+    let basis = gmap_homology::curves::shortest_basis(&named.chain, &vec![1.0; edges])
+        .map_err(|e| Error::from(e).context(file.to_string()))?;
+    let lengths: Vec<String> = basis.iter().map(|c| c.length.to_string()).collect();
+    let gens = basis
+        .into_iter()
+        .map(|c| {
+            let mut edges = c.edges;
+            edges.sort_unstable();
+            edges.dedup();
+            let chain = edges.iter().map(|&e| ((named.name)(1, e), 1)).collect();
+            NamedGenerator { dim: 1, order: 0u64.into(), chain: Chain::Named(chain) }
+        })
+        .collect();
+    Ok((gens, lengths.join(", ")))
 }
 
 /// Reduces the chain complex (over Z or Z/p) and gives the groups of the input (a complex
