@@ -96,3 +96,40 @@ fn the_command_prints_the_widths() {
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("5000"), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// The lengths of the generators of H_1 in a JSON report (each cell of the chain an edge).
+fn h1_lengths(out: &[u8]) -> Vec<usize> {
+    let v: serde_json::Value = serde_json::from_slice(out).unwrap();
+    let mut l: Vec<usize> = v["generators"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|g| g["dim"] == 1)
+        .map(|g| g["chain"].as_array().unwrap().len())
+        .collect();
+    l.sort_unstable();
+    l
+}
+
+#[test]
+fn homology_gives_a_shortest_basis_no_longer_than_the_generators() {
+    let f = data("double-torus-example.off");
+    let f = f.to_str().unwrap();
+    let o = gmap(&["homology", f, "--field", "2", "--generators", "shortest", "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let shortest = h1_lengths(&o.stdout);
+    let o = gmap(&["homology", f, "--field", "2", "--generators", "--json"]);
+    let today = h1_lengths(&o.stdout);
+    assert_eq!(shortest.len(), 4);
+    assert_eq!(today.len(), 4);
+    assert!(shortest.iter().zip(&today).all(|(s, t)| s <= t), "{shortest:?} against {today:?}");
+    // the shortest is the edge width: on this surface a shortest non-separating cycle
+    assert_eq!(shortest[0], 8);
+    let o = gmap(&["homology", f, "--field", "2", "--generators", "shortest"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("generator of H_1 (Z/2): length 8: "), "{text}");
+    // over Z the classes modulo 2 are not the classes: refused with the reason
+    let o = gmap(&["homology", f, "--generators", "shortest"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("add --field 2"));
+}

@@ -273,10 +273,7 @@ fn run_complex(route: Route, input: &Input, o: &HomologyOptions, file: &str) -> 
         o.progress.note(&format!("gmap homology: {n}"));
     }
     let mut report = finish(&named, dim, o, file)?;
-    report.note = match (note, report.note.take()) {
-        (Some(a), Some(b)) => Some(format!("{a}; {b}")),
-        (a, b) => a.or(b),
-    };
+    report.note = note;
     if let Input::Arch(x) = input {
         report.space = Some(ArchSpace::of(x, o.topological));
     }
@@ -304,7 +301,6 @@ fn map_chains<'a>(
 /// the input's terms (those of `H_1` a shortest basis with `shortest`).
 fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) -> Result<Report> {
     let groups = reduce(named, o).map_err(|e| e.context(file.to_string()))?;
-    let mut note = None;
     let generators = if o.generators {
         o.progress.stage("computing generators and lifting them to the input's cells");
         let limit = o.max_generator_cells.unwrap_or(gmap_homology::generators::GENERATOR_CELL_LIMIT);
@@ -316,24 +312,21 @@ fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) 
         })?;
         let mut g: Vec<NamedGenerator> = g.into_iter().map(|x| name_generator(named, x)).collect();
         if o.shortest {
-            let (h1, lengths) = shortest_h1(named, o, file)?;
+            let h1 = shortest_h1(named, o, file)?;
             let at = g.iter().position(|x| x.dim == 1).unwrap_or(g.len());
             g.retain(|x| x.dim != 1);
             g.splice(at.min(g.len())..at.min(g.len()), h1);
-            note = Some(format!("the generators of H_1 are a shortest basis over Z/2, of lengths {lengths} (edges)"));
         }
         Some(g)
     } else {
         None
     };
-    let mut report = route_report(dimension, o, groups, generators);
-    report.note = note;
-    Ok(report)
+    Ok(route_report(dimension, o, groups, generators))
 }
 
-/// A shortest basis of `H_1` over `Z/2` with every edge of length 1, named, and its
-/// lengths as text.
-fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<(Vec<NamedGenerator>, String)> {
+/// A shortest basis of `H_1` over `Z/2` with every edge of length 1, named, with their
+/// lengths.
+fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<Vec<NamedGenerator>> {
     if named.relative.is_some() {
         return Err(err!(
             Precondition,
@@ -344,7 +337,6 @@ fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<(Ve
     let edges = named.chain.counts().get(1).copied().unwrap_or(0);
     let basis = gmap_homology::curves::shortest_basis(&named.chain, &vec![1.0; edges])
         .map_err(|e| Error::from(e).context(file.to_string()))?;
-    let lengths: Vec<String> = basis.iter().map(|c| c.length.to_string()).collect();
     let gens = basis
         .into_iter()
         .map(|c| {
@@ -352,10 +344,10 @@ fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<(Ve
             edges.sort_unstable();
             edges.dedup();
             let chain = edges.iter().map(|&e| ((named.name)(1, e), 1)).collect();
-            NamedGenerator { dim: 1, order: 0u64.into(), chain: Chain::Named(chain) }
+            NamedGenerator { dim: 1, order: 0u64.into(), chain: Chain::Named(chain), length: Some(c.length) }
         })
         .collect();
-    Ok((gens, lengths.join(", ")))
+    Ok(gens)
 }
 
 /// Reduces the chain complex (over Z or Z/p) and gives the groups of the input (a complex
@@ -384,6 +376,7 @@ fn name_generator(named: &Named<'_>, x: gmap_homology::generators::Generator) ->
         dim: x.dim,
         order: x.order.clone(),
         chain: Chain::Named(x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect()),
+        length: None,
     }
 }
 
