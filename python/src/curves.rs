@@ -24,7 +24,8 @@ pub fn generators_option(generators: Option<&Bound<'_, PyAny>>, o: &mut Homology
             other => Err(Failure::input(format!("generators={other:?}: give True, False or \"shortest\"")).into()),
         };
     }
-    o.generators = generators.extract::<bool>().map_err(|_| Failure::input("generators: give True, False or \"shortest\""))?;
+    o.generators =
+        generators.extract::<bool>().map_err(|_| Failure::input("generators: give True, False or \"shortest\""))?;
     Ok(())
 }
 
@@ -46,10 +47,14 @@ fn weights_of(w: &Bound<'_, PyAny>) -> PyResult<Weights> {
         return match s.to_str()? {
             "unit" => Ok(Weights::Unit),
             "length" => Ok(Weights::Length),
-            other => Err(Failure::input(format!("weights={other:?}: give \"unit\", \"length\" or one number per edge")).into()),
+            other => {
+                Err(Failure::input(format!("weights={other:?}: give \"unit\", \"length\" or one number per edge"))
+                    .into())
+            }
         };
     }
-    let v: Vec<f64> = w.extract().map_err(|_| Failure::input("weights: give \"unit\", \"length\" or one number per edge"))?;
+    let v: Vec<f64> =
+        w.extract().map_err(|_| Failure::input("weights: give \"unit\", \"length\" or one number per edge"))?;
     Ok(Weights::PerEdge(v))
 }
 
