@@ -15,8 +15,8 @@ use crate::gmapobj::PyGMap;
 /// Sets `o.generators` and `o.shortest` from `generators=`: a bool, or `"shortest"`.
 pub fn generators_option(generators: Option<&Bound<'_, PyAny>>, o: &mut HomologyOptions) -> PyResult<()> {
     let Some(generators) = generators else { return Ok(()) };
-    if let Ok(s) = generators.downcast::<PyString>() {
-        return match s.to_str()? {
+    if let Ok(s) = generators.extract::<String>() {
+        return match s.as_str() {
             "shortest" => {
                 (o.generators, o.shortest) = (true, true);
                 Ok(())
@@ -43,8 +43,8 @@ fn input_of(x: &Bound<'_, PyAny>) -> PyResult<Input> {
 
 /// `"unit"`, `"length"` or one weight per edge (in the order of the edges' smallest darts).
 fn weights_of(w: &Bound<'_, PyAny>) -> PyResult<Weights> {
-    if let Ok(s) = w.downcast::<PyString>() {
-        return match s.to_str()? {
+    if let Ok(s) = w.extract::<String>() {
+        return match s.as_str() {
             "unit" => Ok(Weights::Unit),
             "length" => Ok(Weights::Length),
             other => {
