@@ -74,6 +74,7 @@
 
 pub mod cellular;
 pub mod complex;
+pub mod curves;
 pub mod engine;
 pub mod persistence;
 mod prefetch;

@@ -320,7 +320,12 @@ pub fn sweep(
                     x.1 = x.1.rem_euclid(p as i64);
                 }
             }
-            NamedGenerator { dim: z.dim, order: 0u64.into(), chain: Chain::Grid { cells, grid: grid.clone() } }
+            NamedGenerator {
+                dim: z.dim,
+                order: 0u64.into(),
+                chain: Chain::Grid { cells, grid: grid.clone() },
+                length: None,
+            }
         })
         .collect();
     Ok(Some((groups, generators)))

@@ -332,6 +332,24 @@ impl From<gmap_homology::HomologyError> for Error {
     }
 }
 
+impl From<gmap_homology::curves::CurveError> for Error {
+    /// A surface, a weight or a path refused, about the dart or cell it names.
+    fn from(e: gmap_homology::curves::CurveError) -> Self {
+        use gmap_homology::curves::CurveError as C;
+        let (kind, item) = match &e {
+            C::OpenCell { dart, .. } => (ErrorKind::Precondition, Some(Item::Dart(u64::from(*dart)))),
+            C::Boundary { dart, .. } => (ErrorKind::Precondition, Some(Item::Cell { dim: 1, dart: u64::from(*dart) })),
+            C::NotAPath { dart, .. } => (ErrorKind::Usage, Some(Item::Dart(u64::from(*dart)))),
+            C::WeightCount { .. } | C::BadWeight { .. } | C::NoSuchVertex { .. } | C::NoPoint { .. } => {
+                (ErrorKind::Usage, None)
+            }
+            C::TooLarge { .. } => (ErrorKind::Limit, None),
+            _ => (ErrorKind::Precondition, None),
+        };
+        Error::from_source(kind, e).with_item(item)
+    }
+}
+
 impl From<gmap_core::resources::MemoryLimit> for Error {
     fn from(e: gmap_core::resources::MemoryLimit) -> Self {
         Error::from_source(ErrorKind::Limit, e)

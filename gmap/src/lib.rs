@@ -81,6 +81,7 @@ pub mod bench;
 mod cell_name;
 mod chains;
 pub mod cubes;
+pub mod curves;
 pub mod demo;
 pub mod distributed;
 mod error;

@@ -57,6 +57,10 @@ pub struct HomologyOptions {
     pub field: Option<u64>,
     /// a representative cycle for each summand
     pub generators: bool,
+    /// with `generators` over `Z/2` (`field = Some(2)`): the generators of `H_1` are a
+    /// shortest basis, each cycle as short as it can be, lengths counted in edges
+    /// (`gmap_homology::curves::basis`); the other dimensions' as without it
+    pub shortest: bool,
     /// the most cells with entries per dimension of the reduced complex for which generators
     /// are computed (default: `gmap_homology::generators::GENERATOR_CELL_LIMIT`, 2,000; full
     /// cubical sets of dimension ≤ 3 have their own route, [`crate::cubes::sweep`])
@@ -93,6 +97,23 @@ pub(crate) fn check_field(field: Option<u64>) -> Result<()> {
     }
 }
 
+/// Refuses `shortest` without generators or over another field than `Z/2`.
+fn check_shortest(file: &str, o: &HomologyOptions) -> Result<()> {
+    if !o.shortest {
+        return Ok(());
+    }
+    if !o.generators {
+        return Err(err!(Usage, "{file}: a shortest basis is a choice of generators: ask for generators too"));
+    }
+    if o.field != Some(2) {
+        return Err(err!(
+            Usage,
+            "{file}: the shortest basis of H_1 is computed over Z/2 (its classes modulo 2): add --field 2"
+        ));
+    }
+    Ok(())
+}
+
 /// The route a simplicial complex takes, `None` for the other inputs; refuses options that
 /// do not fit the input. Direct by default; through the G-map with `via = Gmap`,
 /// `method = Simplicial` or `simplify` (which work on maps).
@@ -122,6 +143,7 @@ pub(crate) fn simplicial_via(simplicial_input: bool, file: &str, o: &HomologyOpt
 /// is taken. Made before a file is read ([`crate::homology_file`]) and again on the input.
 pub(crate) fn check_options(file: &str, kind: Option<Kind>, o: &HomologyOptions) -> Result<Option<Via>> {
     check_field(o.field)?;
+    check_shortest(file, o)?;
     let via = simplicial_via(kind == Some(Kind::Simplicial), file, o)?;
     if o.topological && via.is_some() {
         return Err(err!(

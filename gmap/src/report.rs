@@ -17,6 +17,8 @@ pub struct NamedGenerator {
     pub order: gmap_homology::Natural,
     /// the cycle: cells with their coefficients
     pub chain: Chain,
+    /// its length, for the cycles of a shortest basis (edges counted)
+    pub length: Option<f64>,
 }
 
 /// The cells of a generator with their coefficients: named one by one, or, for the cubes of
@@ -312,14 +314,18 @@ impl Report {
             let list: Vec<_> = g
                 .iter()
                 .map(|x| {
-                    json!({
+                    let mut g = json!({
                         "dim": x.dim,
                         "order": x.order,
                         "chain": x.chain.iter().map(|(cell, coef)| json!({
                             "cell": cell.to_json(),
                             "coefficient": coef,
                         })).collect::<Vec<_>>(),
-                    })
+                    });
+                    if let Some(l) = x.length {
+                        g["length"] = json!(l);
+                    }
+                    g
                 })
                 .collect();
             v["generators"] = json!(list);
@@ -454,6 +460,9 @@ impl Report {
                 _ => format!("Z/{}", x.order),
             };
             let _ = write!(out, "generator of H_{} ({order}):", x.dim);
+            if let Some(l) = x.length {
+                let _ = write!(out, " length {l}:");
+            }
             let mut digits = itoa::Buffer::new();
             let mut term = |out: &mut String, coef: i64| {
                 out.push_str(if coef >= 0 { " +" } else { " " });
@@ -620,6 +629,7 @@ fn generator_from_json(x: &serde_json::Value) -> Option<NamedGenerator> {
         dim: usize::try_from(x.get("dim")?.as_u64()?).ok()?,
         order: x.get("order")?.as_number()?.to_string().parse().ok()?,
         chain: Chain::Named(chain),
+        length: x.get("length").and_then(serde_json::Value::as_f64),
     })
 }
 

@@ -162,6 +162,10 @@ pub fn plan(input: &Input, o: &HomologyOptions) -> Result<Route> {
 fn plan_cubes(cubes: Cubes<'_>, o: &HomologyOptions) -> Route {
     let shape = cubes.shape();
     let plain = o.method == Method::Cellular && !o.simplify && !o.topological && cubes.is_full() && shape.len() <= 3;
+    if o.shortest {
+        // the shortest basis needs the absolute complex, built whole
+        return Route::Cubical { whole: true };
+    }
     match (plain, o.generators) {
         (true, false) => Route::OnePass,
         (true, true) if !o.periodic => Route::Sweep,
@@ -294,7 +298,7 @@ fn map_chains<'a>(
 }
 
 /// The groups of a named chain complex and, when asked for, a cycle per summand named in
-/// the input's terms.
+/// the input's terms (those of `H_1` a shortest basis with `shortest`).
 fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) -> Result<Report> {
     let groups = reduce(named, o).map_err(|e| e.context(file.to_string()))?;
     let generators = if o.generators {
@@ -306,11 +310,44 @@ fn finish(named: &Named<'_>, dimension: usize, o: &HomologyOptions, file: &str) 
             }
             e => Error::from(e).context(file.to_string()),
         })?;
-        Some(g.into_iter().map(|x| name_generator(named, x)).collect())
+        let mut g: Vec<NamedGenerator> = g.into_iter().map(|x| name_generator(named, x)).collect();
+        if o.shortest {
+            let h1 = shortest_h1(named, o, file)?;
+            let at = g.iter().position(|x| x.dim == 1).unwrap_or(g.len());
+            g.retain(|x| x.dim != 1);
+            g.splice(at.min(g.len())..at.min(g.len()), h1);
+        }
+        Some(g)
     } else {
         None
     };
     Ok(route_report(dimension, o, groups, generators))
+}
+
+/// A shortest basis of `H_1` over `Z/2` with every edge of length 1, named, with their
+/// lengths.
+fn shortest_h1(named: &Named<'_>, o: &HomologyOptions, file: &str) -> Result<Vec<NamedGenerator>> {
+    if named.relative.is_some() {
+        return Err(err!(
+            Precondition,
+            "{file}: the shortest basis needs the whole complex, not one relative to vertices set aside"
+        ));
+    }
+    o.progress.stage("a shortest basis of H_1: shortest-path trees from every vertex, then the greedy basis");
+    let edges = named.chain.counts().get(1).copied().unwrap_or(0);
+    let basis = gmap_homology::curves::shortest_basis(&named.chain, &vec![1.0; edges])
+        .map_err(|e| Error::from(e).context(file.to_string()))?;
+    let gens = basis
+        .into_iter()
+        .map(|c| {
+            let mut edges = c.edges;
+            edges.sort_unstable();
+            edges.dedup();
+            let chain = edges.iter().map(|&e| ((named.name)(1, e), 1)).collect();
+            NamedGenerator { dim: 1, order: 0u64.into(), chain: Chain::Named(chain), length: Some(c.length) }
+        })
+        .collect();
+    Ok(gens)
 }
 
 /// Reduces the chain complex (over Z or Z/p) and gives the groups of the input (a complex
@@ -339,6 +376,7 @@ fn name_generator(named: &Named<'_>, x: gmap_homology::generators::Generator) ->
         dim: x.dim,
         order: x.order.clone(),
         chain: Chain::Named(x.chain.iter().map(|&(cell, coef)| ((named.name)(x.dim, cell), coef)).collect()),
+        length: None,
     }
 }
 

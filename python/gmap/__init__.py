@@ -44,11 +44,14 @@ from ._gmap import (
     _bench_json,
     _page,
     _page_frame,
+    edge_width,
+    face_width,
     homology,
     max_memory,
     open,
     persistence,
     set_max_memory,
+    shortest_non_contractible_cycle,
 )
 from . import build, mesh
 
@@ -77,6 +80,8 @@ __all__ = [
     "ValidityError",
     "bench",
     "build",
+    "edge_width",
+    "face_width",
     "homology",
     "incidence_graph",
     "max_memory",
@@ -84,6 +89,7 @@ __all__ = [
     "open",
     "persistence",
     "set_max_memory",
+    "shortest_non_contractible_cycle",
 ]
 
 __version__ = "0.1.0"

@@ -230,13 +230,29 @@ def homology(
     x: Input,
     *,
     field: Optional[int] = None,
-    generators: bool = False,
+    generators: Union[bool, str] = False,
     method: Optional[str] = None,
     periodic: bool = False,
     level: Optional[float] = None,
 ) -> Homology:
     """The homology groups of `x` over Z (or Z/field); `level`: an image's cubes are its
-    values <= level (default: the nonzero values)."""
+    values <= level (default: the nonzero values); `generators="shortest"` (with field=2):
+    the generators of H_1 a shortest basis over Z/2."""
+
+def shortest_non_contractible_cycle(
+    x: Union[GMap, str, "os.PathLike[str]"],
+    *,
+    weights: Union[None, str, Sequence[float]] = None,
+    through: Optional[int] = None,
+) -> Optional[Dict[str, Any]]:
+    """The shortest non-contractible cycle of a surface (through the vertex of dart
+    `through`): `length`, `darts`, `edge_darts`, `vertex_darts`; None if there is none."""
+
+def edge_width(x: Union[GMap, str, "os.PathLike[str]"]) -> Optional[Dict[str, Any]]:
+    """A non-contractible cycle of the fewest edges, as shortest_non_contractible_cycle."""
+
+def face_width(x: Union[GMap, str, "os.PathLike[str]"]) -> Optional[Dict[str, Any]]:
+    """The face width of a closed surface: `width`, `face_darts`, `vertex_darts`."""
 
 Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
 

@@ -19,6 +19,7 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyList, PyString, PyTuple};
 
+mod curves;
 mod errors;
 mod gmapobj;
 mod objects;
@@ -343,18 +344,19 @@ fn facets_homology(py: Python<'_>, x: &Bound<'_, PyAny>, o: &HomologyOptions) ->
 /// (sequences of non-negative ints), a 2-D integer numpy array of facets (one a row), or a
 /// numpy array of bool, uint8 or float dtype (or any dtype with 1 or 3 to 8 axes) as a
 /// cubical set (nonzero = the cube is present). `field`: a prime p for Z/p coefficients
-/// (None: Z). `generators`: compute a representative cycle per summand. `method`:
+/// (None: Z). `generators`: compute a representative cycle per summand ("shortest", with
+/// field=2: those of H_1 a shortest basis over Z/2, lengths in edges). `method`:
 /// 'cellular' (default) or 'simplicial' for G-maps; 'direct' (default) or 'gmap' for the
 /// route of a simplicial complex. `periodic`: for cubical sets, identify the opposite faces
 /// of the box. `level`: for an image, the cubes of the values <= level (default: the
 /// nonzero values), the command's `--level`.
 #[pyfunction]
-#[pyo3(signature = (x, *, field = None, generators = false, method = None, periodic = false, level = None))]
+#[pyo3(signature = (x, *, field = None, generators = None, method = None, periodic = false, level = None))]
 fn homology(
     py: Python<'_>,
     x: &Bound<'_, PyAny>,
     field: Option<&Bound<'_, PyAny>>,
-    generators: bool,
+    generators: Option<&Bound<'_, PyAny>>,
     method: Option<&str>,
     periodic: bool,
     level: Option<f64>,
@@ -362,7 +364,7 @@ fn homology(
     let (method, via) = parse_method(method)?;
     let mut o = HomologyOptions::default();
     o.field = field_of(field)?;
-    o.generators = generators;
+    curves::generators_option(generators, &mut o)?;
     o.method = method;
     o.via = via;
     o.periodic = periodic;
@@ -577,6 +579,9 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<PyHomology>()?;
     m.add_class::<PyGenerator>()?;
     m.add_function(wrap_pyfunction!(homology, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::shortest_non_contractible_cycle, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::edge_width, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::face_width, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
     m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
     m.add_function(wrap_pyfunction!(set_max_memory, m)?)?;

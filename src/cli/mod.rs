@@ -11,6 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod curves;
 mod persistence;
 mod tm;
 mod view;
@@ -59,6 +60,15 @@ enum Method {
     Cellular,
     /// the simplicial counterpart (BO §6): one n-simplex per dart
     Simplicial,
+}
+
+/// Which generators `gmap homology --generators` prints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum Generators {
+    /// one cycle per summand, as the reduction finds it
+    Any,
+    /// those of H_1 a shortest basis over Z/2 (with --field 2)
+    Shortest,
 }
 
 /// How `gmap homology` takes a simplicial complex (`.facets`, `.lex`).
@@ -112,9 +122,10 @@ struct HomologyArgs {
     /// print one JSON object
     #[arg(long)]
     json: bool,
-    /// print a representative cycle for each summand
-    #[arg(long)]
-    generators: bool,
+    /// print a representative cycle for each summand; `--generators shortest` (over Z/2,
+    /// with --field 2): those of H_1 a shortest basis, lengths counted in edges
+    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "any", value_name = "KIND")]
+    generators: Option<Generators>,
     /// with --generators: the most cells with entries per dimension of the reduced complex
     /// (default 2000; the cost grows as its cube; full cubical sets of dimension ≤ 3 need none)
     #[arg(long, value_name = "N", requires = "generators")]
@@ -193,6 +204,9 @@ enum Command {
     Persistence(persistence::PersistenceArgs),
     /// Corbett's topological models (docs/TM.md): the edit check and the views of a model.
     Tm(tm::TmArgs),
+    /// Curves on a surface (a 2-map): the shortest non-contractible cycle, the edge width,
+    /// the face width.
+    Curves(curves::CurvesArgs),
     /// Rooms from walls: the 3-cells of faces in space (.off polygon soup, .json 2-complex
     /// with points), written as a 3-complex whose volumes are the rooms (docs/LAR.md).
     Rooms(RoomsArgs),
@@ -238,6 +252,7 @@ pub fn run() -> ExitCode {
         Command::View(a) => view::view(a, quiet),
         Command::Persistence(a) => persistence::persistence(a),
         Command::Tm(a) => return tm::run(a),
+        Command::Curves(a) => curves::run(a),
         Command::Rooms(a) => gmap::rooms_file(&a.input, &a.output, a.limits.max_darts).map(|r| r.to_text()),
         Command::Convert(a) => convert(a, quiet),
     };
@@ -289,7 +304,8 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<gmap::Report> {
         Via::Direct => gmap::Via::Direct,
         Via::Gmap => gmap::Via::Gmap,
     });
-    (o.field, o.generators, o.simplify, o.topological) = (a.field, a.generators, a.simplify, a.topological);
+    (o.field, o.simplify, o.topological) = (a.field, a.simplify, a.topological);
+    (o.generators, o.shortest) = (a.generators.is_some(), a.generators == Some(Generators::Shortest));
     (o.max_darts, o.max_cells, o.periodic, o.level) = (a.limits.max_darts, a.limits.max_cells, a.periodic, a.level);
     o.max_generator_cells = a.max_generator_cells;
     o.cubical_box = a.cubical_box;
