@@ -133,3 +133,19 @@ fn homology_gives_a_shortest_basis_no_longer_than_the_generators() {
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("add --field 2"));
 }
+
+/// The kind of `--generators` is optional: the flag right before the file still reads the
+/// file as the input, as it did before the kind existed, and the joined form names it.
+#[test]
+fn generators_before_the_file_keeps_the_file() {
+    let f = data("double-torus-example.off");
+    let f = f.to_str().unwrap();
+    let o = gmap(&["homology", "--generators", f, "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(h1_lengths(&o.stdout).len(), 4);
+    let o = gmap(&["homology", "--field", "2", "--generators=shortest", f, "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(h1_lengths(&o.stdout)[0], 8);
+    let o = gmap(&["homology", "--field", "2", "--generators", "shortest", f]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

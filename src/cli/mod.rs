@@ -124,7 +124,7 @@ struct HomologyArgs {
     json: bool,
     /// print a representative cycle for each summand; `--generators shortest` (over Z/2,
     /// with --field 2): those of H_1 a shortest basis, lengths counted in edges
-    #[arg(long, value_enum, num_args = 0..=1, default_missing_value = "any", value_name = "KIND")]
+    #[arg(long, value_enum, num_args = 0..=1, require_equals = true, default_missing_value = "any", value_name = "KIND")]
     generators: Option<Generators>,
     /// with --generators: the most cells with entries per dimension of the reduced complex
     /// (default 2000; the cost grows as its cube; full cubical sets of dimension ≤ 3 need none)
@@ -222,9 +222,28 @@ struct RoomsArgs {
     limits: Limits,
 }
 
+/// The arguments with `--generators any|shortest` written `--generators=…`: the kind is
+/// optional, so `--generators` takes a value only when it is joined to it, and `gmap
+/// homology --generators FILE` keeps reading FILE as the input (a file named `shortest`
+/// or `any` right after the flag is written `./shortest`).
+fn generators_joined(args: impl Iterator<Item = std::ffi::OsString>) -> Vec<std::ffi::OsString> {
+    let mut out: Vec<std::ffi::OsString> = Vec::new();
+    for a in args {
+        let kind = a == "any" || a == "shortest";
+        match out.last_mut() {
+            Some(last) if kind && last == "--generators" => {
+                last.push("=");
+                last.push(&a);
+            }
+            _ => out.push(a),
+        }
+    }
+    out
+}
+
 /// Runs the command line; returns the process exit code.
 pub fn run() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = Cli::parse_from(generators_joined(std::env::args_os()));
     if let Some(bytes) = cli.max_memory {
         gmap::core::resources::set_max_memory(bytes);
     }
