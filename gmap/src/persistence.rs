@@ -243,7 +243,8 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
 }
 
 /// Reads `path` and computes its diagram: images by content (`.npy`, `.complex`, `.pgm`,
-/// `.png`), `.facets` with values, anything else through [`crate::open`] and
+/// `.png`, Perseus cubical `.txt`), `.facets` with values, Perseus simplicial `.txt` (a
+/// value per simplex, a face taking the minimum of its cofaces' as GUDHI's `insert` does), anything else through [`crate::open`] and
 /// [`persistence`].
 pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
     read_and_compute(path, opts).map_err(|e| naming(e, path))
@@ -267,6 +268,13 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
         })?;
         let diagram = facet_persistence(&sc, &values, opts).map_err(|e| e.with_path(path))?;
         return Ok(Persistence { diagram, image: None, vertex_centred: false });
+    }
+    // a Perseus simplicial file's values per simplex are read with it (an opened complex has none)
+    if crate::formats::format_of(path).is_some_and(|f| f.extension == "txt") {
+        if let gmap_ops::import::perseus::Perseus::Simplicial(simplices, values) = perseus_file(path)? {
+            let diagram = given_facet_persistence(simplices, &values, opts).map_err(|e| e.with_path(path))?;
+            return Ok(Persistence { diagram, image: None, vertex_centred: false });
+        }
     }
     match crate::open(path)? {
         Input::Image(img) => image_file(&img, path, opts),
@@ -385,6 +393,8 @@ pub fn axes_periodic_persistence(
     }
     o.periodic = true;
     let padded: Vec<usize> = shape.iter().zip(periodic).map(|(&s, &p)| if p { s } else { s + 1 }).collect();
+    // a periodic box is computed whole: its estimate first, before the copy is made
+    check_image_memory(&padded, &o)?;
     let wall = if opts.superlevel { f64::NEG_INFINITY } else { f64::INFINITY };
     let n = padded.iter().try_fold(1usize, |p, &s| p.checked_mul(s));
     let mut v = Vec::new();
@@ -412,11 +422,19 @@ pub fn axes_periodic_persistence(
     image_persistence(&padded, Pixels::Slice(&v), &o)
 }
 
-/// Reads a Perseus cubical file (GUDHI's `perseus_file`): the sizes (the first axis
-/// fastest), which axes wrap, and the top cells' values in that order.
+/// Reads a Perseus file, cubical (GUDHI's `perseus_file`: the sizes, the first axis
+/// fastest, which axes wrap, the top cells' values in that order) or simplicial (each
+/// simplex with its birth value).
+pub fn perseus_file(path: &Path) -> Result<gmap_ops::import::perseus::Perseus> {
+    gmap_ops::import::perseus::read_perseus(path).map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))
+}
+
+/// Reads a Perseus cubical file ([`perseus_file`]); a simplicial one is refused.
 pub fn perseus_cubical(path: &Path) -> Result<gmap_ops::import::perseus::PerseusCubical> {
-    gmap_ops::import::perseus::read_perseus_cubical(path)
-        .map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))
+    match perseus_file(path)? {
+        gmap_ops::import::perseus::Perseus::Cubical(p) => Ok(p),
+        _ => Err(Error::new(ErrorKind::Unsupported, "a Perseus simplicial file, not a cubical one").with_path(path)),
+    }
 }
 
 /// Keeps the pairs of `d` that live longer than `min` (death − birth > `min`, GUDHI's

@@ -20,9 +20,9 @@ fn cell_tuple<'py>(py: Python<'py>, c: &CellName) -> PyResult<Bound<'py, PyAny>>
     })
 }
 
-/// `(pairs, births, deaths)`: the (k, 3) array of (dimension, birth, death), and when
-/// cells were asked for, the birth cell and the death cell (None if essential) of each
-/// pair as tuples (else two empty lists).
+/// `(pairs, births, deaths, cycles)`: the (k, 3) array of (dimension, birth, death), and
+/// when cells were asked for, the birth cell and the death cell (None if essential) of
+/// each pair as tuples and its cycle as a list of (cell, coefficient) (else empty lists).
 fn result<'py>(py: Python<'py>, d: &Diagram) -> PyResult<Bound<'py, PyTuple>> {
     let mut flat = Vec::with_capacity(d.pairs.len() * 3);
     for p in &d.pairs {
@@ -37,7 +37,15 @@ fn result<'py>(py: Python<'py>, d: &Diagram) -> PyResult<Bound<'py, PyTuple>> {
             None => deaths.append(py.None())?,
         }
     }
-    PyTuple::new(py, [pairs, births.into_any(), deaths.into_any()])
+    let cycles = PyList::empty(py);
+    for chain in &d.cycles {
+        let c = PyList::empty(py);
+        for (cell, k) in chain {
+            c.append((cell_tuple(py, cell)?, *k))?;
+        }
+        cycles.append(c)?;
+    }
+    PyTuple::new(py, [pairs, births.into_any(), deaths.into_any(), cycles.into_any()])
 }
 
 fn options(field: u32, superlevel: bool, cells: bool) -> PersistenceOptions {

@@ -213,14 +213,14 @@ class CubicalComplex:
         return self.all_cells()[(slice(0, None, 2),) * self._array.ndim]
 
     # persistence
-    def _pairs(self, field: int, min_persistence: float, cells: bool) -> Tuple[np.ndarray, list, list]:
+    def _pairs(self, field: int, min_persistence: float, cells: bool) -> Tuple[np.ndarray, list, list, list]:
         values = np.ascontiguousarray(self._array, dtype=np.float64)
         construction = "V" if self._from_vertices else "T"
         return _gmap._image_pairs(values, construction, self._periodic, field, False, float(min_persistence), cells)
 
     def compute_persistence(self, homology_coeff_field: int = 11, min_persistence: float = 0) -> None:
         """The diagram over Z/homology_coeff_field, pairs living more than min_persistence."""
-        pairs, _, _ = self._pairs(homology_coeff_field, min_persistence, False)
+        pairs = self._pairs(homology_coeff_field, min_persistence, False)[0]
         self._diagram = _Diagram(pairs, self._array.ndim)
         self._last = (homology_coeff_field, float(min_persistence))
 
@@ -247,7 +247,7 @@ class CubicalComplex:
         """The (n, 2) array of (birth, death) of dimension ``dimension``."""
         return self._need("persistence_intervals_in_dimension").intervals(dimension)
 
-    def _pair_cells(self, what: str) -> Tuple[np.ndarray, list, list]:
+    def _pair_cells(self, what: str) -> Tuple[np.ndarray, list, list, list]:
         self._need(what)
         field, minp = self._last
         return self._pairs(field, minp, True)
@@ -269,7 +269,7 @@ class CubicalComplex:
         raise RuntimeError(f"no neighbour of cell {tuple(cell)} has its value {value}")
 
     def _cells_of_pairs(self, what: str) -> List[List[np.ndarray]]:
-        pairs, births, deaths = self._pair_cells(what)
+        pairs, births, deaths, _ = self._pair_cells(what)
         cells = self.all_cells()
         shape = self._array.shape
         regular, essential = [], []
@@ -303,21 +303,13 @@ class CubicalComplex:
         """Not in GUDHI: a representative cycle of each pair, as ``(interval, cells,
         coefficients)``, cells as flat indices into :meth:`all_cells` (Fortran order, GUDHI's
         indexing of every cell), coefficients in 1..p-1; in the order of :meth:`persistence`."""
-        d = self._need("cycles_of_persistence_pairs")
-        field, minp = self._last
-        values = np.ascontiguousarray(self._array, dtype=np.float64)
-        construction = "V" if self._from_vertices else "T"
-        pairs, cycles = _gmap.persistence(
-            values, field=field, construction=construction, periodic=False, cycles=True, min_persistence=minp
-        ) if not any(self._periodic) else (None, None)
-        if pairs is None:
-            raise NotImplementedError("cycles of a periodic complex: not given (gmap.persistence(periodic=True, cycles=True) gives them when every axis wraps)")
+        pairs, _, _, cycles = self._pair_cells("cycles_of_persistence_pairs")
         shape = self.all_cells().shape
         out = []
-        for (dim, b, e), (cells, coef) in zip(pairs.tolist(), cycles):
-            flat = np.array([_flat_f(c, shape) for c in np.asarray(cells).tolist()], dtype=np.int64)
-            out.append(((int(dim), (float(b), float(e))), flat, np.asarray(coef, dtype=np.int64)))
-        del d
+        for (dim, b, e), chain in zip(pairs.tolist(), cycles):
+            flat = np.array([_flat_f(c, shape) for c, _ in chain], dtype=np.int64)
+            coef = np.array([k for _, k in chain], dtype=np.int64)
+            out.append(((int(dim), (float(b), float(e))), flat, coef))
         out.sort(key=lambda t: (-t[0][0], -(t[0][1][1] - t[0][1][0]), t[0][1][0]))
         return out
 
@@ -518,11 +510,11 @@ class SimplexTree:
         self._changed()
 
     # persistence
-    def _pairs(self, field: int, min_persistence: float, cells: bool) -> Tuple[np.ndarray, list, list]:
+    def _pairs(self, field: int, min_persistence: float, cells: bool) -> Tuple[np.ndarray, list, list, list]:
         simplices = list(self._f)
         values = [self._f[s] for s in simplices]
         if not simplices:
-            return np.empty((0, 3)), [], []
+            return np.empty((0, 3)), [], [], []
         return _gmap._simplex_pairs([list(s) for s in simplices], values, field, float(min_persistence), cells)
 
     def compute_persistence(
@@ -530,7 +522,7 @@ class SimplexTree:
     ) -> None:
         """The diagram over Z/homology_coeff_field; without persistence_dim_max the classes
         of the complex's top dimension are left out (GUDHI's default)."""
-        pairs, _, _ = self._pairs(homology_coeff_field, min_persistence, False)
+        pairs = self._pairs(homology_coeff_field, min_persistence, False)[0]
         top = self.dimension()
         if not persistence_dim_max and top > 0:
             pairs = pairs[pairs[:, 0] < top]
@@ -564,7 +556,7 @@ class SimplexTree:
         self._need("persistence_pairs")
         if self._cells is None:
             field, minp, dim_max = self._last
-            pairs, births, deaths = self._pairs(field, minp, True)
+            pairs, births, deaths, _ = self._pairs(field, minp, True)
             top = self.dimension()
             keep = [dim_max or top <= 0 or int(d) < top for d in pairs[:, 0].tolist()]
             self._cells = (pairs[np.array(keep, dtype=bool)] if len(keep) else pairs,

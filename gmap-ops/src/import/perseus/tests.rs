@@ -19,3 +19,20 @@ fn gudhis_one_sphere_and_the_refusals() {
     assert_eq!(e("1\n2\n1\nx\n"), "line 4: the value \"x\" is not a number");
     assert_eq!(e("1\n1\n1\n2\n"), "line 4: more lines after the 1 values: \"2\"");
 }
+
+#[test]
+fn a_simplicial_file_and_its_refusals() {
+    // Perseus's nmfsimtop: a hollow triangle's edges born at 1, 2, 3, its vertices at 0
+    let text = "1\n# vertices\n0 1 0\n0 2 0\n0 3 0\n1 1 2 1\n1 2 3 2\n1 1 3 3.5\n";
+    assert!(is_simplicial(text));
+    assert!(!is_simplicial("2\n3\n3\n0\n"));
+    let (s, v) = parse_perseus_simplicial(text).unwrap();
+    assert_eq!(s, vec![vec![1], vec![2], vec![3], vec![1, 2], vec![2, 3], vec![1, 3]]);
+    assert_eq!(v, vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.5]);
+    let e = |t: &str| parse_perseus_simplicial(t).unwrap_err().to_string();
+    assert_eq!(e("2\n0 1 0\n"), "line 1: a Perseus simplicial file begins with the line 1, not \"2\"");
+    assert_eq!(e("1\n1 1 0\n"), "line 2: a 1-simplex is its dimension, 2 labels and a birth: 4 numbers, not 3");
+    assert_eq!(e("1\n0 -1 0\n"), "line 2: the vertex label \"-1\" is not a non-negative integer");
+    assert_eq!(e("1\n0 1 x\n"), "line 2: the birth \"x\" is not a number");
+    assert!(matches!(parse_perseus_simplicial("1\n"), Err(ImportError::Empty)));
+}
