@@ -244,3 +244,31 @@ fn pictures_as_png() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains(".png"));
 }
+
+#[test]
+fn perseus_files_cubical_and_simplicial() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/persistence");
+    let run = |name: &str| {
+        let out = gmap(&["persistence", dir.join(name).to_str().unwrap(), "--json"]);
+        (
+            out.status.code(),
+            serde_json::from_slice::<Value>(&out.stdout).ok(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // GUDHI's CubicalOneSphere.txt (test_cubical_complex.py::test_dimension_file_constructor)
+    let (code, json, err) = run("one_sphere.txt");
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(sorted(&json.unwrap()["pairs"]), vec![r#"[0,0.0,"inf"]"#, "[1,0.0,100.0]"]);
+    // a simplicial file: the loop closes at 3.5, the vertices join at 1 and 2
+    let (code, json, err) = run("hollow_triangle.txt");
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        sorted(&json.unwrap()["pairs"]),
+        vec![r#"[0,0.0,"inf"]"#, "[0,0.0,1.0]", "[0,0.0,2.0]", r#"[1,3.5,"inf"]"#]
+    );
+    // a periodic one is refused with the reason (an image does not wrap)
+    let (code, _, err) = run("torus.txt");
+    assert_ne!(code, Some(0));
+    assert!(err.contains("periodic axes [true, true]") && err.contains("torus.txt"), "{err}");
+}

@@ -23,6 +23,7 @@
 //! | `.cel`, `.pbm` | cubical set | – | – |
 //! | `.npy`, `.complex` | image (memory-mapped) | an image | – |
 //! | `.pgm`, `.png` | image (grey values) | – | – |
+//! | `.txt` | image (Perseus cubical; a periodic one refused) | – | – |
 //! | `.lar.json` | – | a map's LAR matrices | – |
 //! | `.dot`, `.graphml` | – | any input's incidence graph | labels |
 
@@ -248,6 +249,14 @@ pub static FORMATS: &[Format] = &[
         keeps_labels: false,
         keeps_points: false,
         reader: Reader::Reads(Kind::Image, read::raster),
+        writer: Writer::None,
+    },
+    Format {
+        extension: "txt",
+        description: "Perseus cubical complexes (GUDHI's perseus_file): top-cell values, one a line",
+        keeps_labels: false,
+        keeps_points: false,
+        reader: Reader::Reads(Kind::Image, read::perseus),
         writer: Writer::None,
     },
     Format {

@@ -243,7 +243,8 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
 }
 
 /// Reads `path` and computes its diagram: images by content (`.npy`, `.complex`, `.pgm`,
-/// `.png`), `.facets` with values, anything else through [`crate::open`] and
+/// `.png`, Perseus cubical `.txt`), `.facets` with values, Perseus simplicial `.txt` (a
+/// value per simplex, a face taking the minimum of its cofaces' as GUDHI's `insert` does), anything else through [`crate::open`] and
 /// [`persistence`].
 pub fn persistence_file(path: &Path, opts: &PersistenceOptions) -> Result<Persistence> {
     read_and_compute(path, opts).map_err(|e| naming(e, path))
@@ -267,6 +268,13 @@ fn read_and_compute(path: &Path, opts: &PersistenceOptions) -> Result<Persistenc
         })?;
         let diagram = facet_persistence(&sc, &values, opts).map_err(|e| e.with_path(path))?;
         return Ok(Persistence { diagram, image: None, vertex_centred: false });
+    }
+    // a Perseus simplicial file's values per simplex are read with it (an opened complex has none)
+    if crate::formats::format_of(path).is_some_and(|f| f.extension == "txt") {
+        if let gmap_ops::import::perseus::Perseus::Simplicial(simplices, values) = perseus_file(path)? {
+            let diagram = given_facet_persistence(simplices, &values, opts).map_err(|e| e.with_path(path))?;
+            return Ok(Persistence { diagram, image: None, vertex_centred: false });
+        }
     }
     match crate::open(path)? {
         Input::Image(img) => image_file(&img, path, opts),
@@ -329,6 +337,120 @@ pub fn facet_persistence(sc: &SimplicialComplex, values: &[f64], opts: &Persiste
         ));
     }
     simplicial_diagram(sc, SimplexValues::PerSimplex(values), opts)
+}
+
+/// The diagram of the simplicial complex of `facets` with `values[k]` on `facets[k]`, in
+/// the order given (the complex puts its largest facets first: each value follows its
+/// facet, by the facet's place in the input); a face takes the minimum of its facets'
+/// values (GUDHI's `SimplexTree::insert`), with `opts.superlevel` the maximum. Refuses a
+/// count of values other than the facets', the errors of
+/// [`SimplicialComplex::from_facets`] (a repeated vertex or facet) and the options of
+/// images.
+pub fn given_facet_persistence(facets: Vec<Vec<u64>>, values: &[f64], opts: &PersistenceOptions) -> Result<Diagram> {
+    if values.len() != facets.len() {
+        return Err(Error::new(
+            ErrorKind::Usage,
+            format!("{} values for {} facets: give one value per facet", values.len(), facets.len()),
+        ));
+    }
+    let sc = SimplicialComplex::from_facets(facets).map_err(|e| Error::from_source(ErrorKind::Parse, e))?;
+    // facet k of the input is on line k + 1
+    let ordered: Vec<f64> = sc.facet_lines().map(|line| values[line - 1]).collect();
+    facet_persistence(&sc, &ordered, opts)
+}
+
+/// The diagram of the image of shape `shape` (the engine's order, the fastest axis last)
+/// whose axis `k` wraps when `periodic[k]` (GUDHI's `periodic_dimensions`), `opts.periodic`
+/// ignored. All axes alike go to [`image_persistence`]; otherwise each axis that does not
+/// wrap gets one more layer of cells valued `+inf` (`-inf` with `opts.superlevel`) and the
+/// whole box wraps: its sublevel sets at every finite value are those of the box with
+/// those axes open, so the pairs are the same, and a cycle's or a pair's cells keep their
+/// coordinates (the layer comes after the last cell of its axis and holds none of them: a
+/// cell of the layer enters at infinity). Refuses `periodic` of another length than
+/// `shape` and values other than one per pixel.
+pub fn axes_periodic_persistence(
+    shape: &[usize],
+    values: &[f64],
+    periodic: &[bool],
+    opts: &PersistenceOptions,
+) -> Result<Diagram> {
+    if periodic.len() != shape.len() {
+        return Err(Error::new(
+            ErrorKind::Usage,
+            format!("{} periodic flags for an image of {} axes: give one per axis", periodic.len(), shape.len()),
+        ));
+    }
+    if shape.iter().try_fold(1usize, |p, &s| p.checked_mul(s)) != Some(values.len()) {
+        return Err(Error::new(
+            ErrorKind::Usage,
+            format!("{} values for an image of shape {shape:?}: give one per pixel", values.len()),
+        ));
+    }
+    let mut o = opts.clone();
+    if periodic.iter().all(|&p| p) || periodic.iter().all(|&p| !p) {
+        o.periodic = periodic.first().copied().unwrap_or(false);
+        return image_persistence(shape, Pixels::Slice(values), &o);
+    }
+    o.periodic = true;
+    let padded: Vec<usize> = shape.iter().zip(periodic).map(|(&s, &p)| if p { s } else { s + 1 }).collect();
+    // a periodic box is computed whole: its estimate first, before the copy is made
+    check_image_memory(&padded, &o)?;
+    let wall = if opts.superlevel { f64::NEG_INFINITY } else { f64::INFINITY };
+    let n = padded.iter().try_fold(1usize, |p, &s| p.checked_mul(s));
+    let mut v = Vec::new();
+    if n.is_none_or(|n| v.try_reserve_exact(n).is_err()) {
+        return Err(Error::new(ErrorKind::Limit, format!("cannot hold the values of an image of shape {padded:?}")));
+    }
+    let mut at = vec![0usize; shape.len()];
+    let (mut src, total) = (0usize, n.unwrap_or(0));
+    for _ in 0..total {
+        if at.iter().zip(shape).all(|(&i, &s)| i < s) {
+            v.push(values[src]);
+            src += 1;
+        } else {
+            v.push(wall);
+        }
+        // the next index in C order (the last axis fastest)
+        for k in (0..at.len()).rev() {
+            at[k] += 1;
+            if at[k] < padded[k] {
+                break;
+            }
+            at[k] = 0;
+        }
+    }
+    image_persistence(&padded, Pixels::Slice(&v), &o)
+}
+
+/// Reads a Perseus file, cubical (GUDHI's `perseus_file`: the sizes, the first axis
+/// fastest, which axes wrap, the top cells' values in that order) or simplicial (each
+/// simplex with its birth value).
+pub fn perseus_file(path: &Path) -> Result<gmap_ops::import::perseus::Perseus> {
+    gmap_ops::import::perseus::read_perseus(path).map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))
+}
+
+/// Reads a Perseus cubical file ([`perseus_file`]); a simplicial one is refused.
+pub fn perseus_cubical(path: &Path) -> Result<gmap_ops::import::perseus::PerseusCubical> {
+    match perseus_file(path)? {
+        gmap_ops::import::perseus::Perseus::Cubical(p) => Ok(p),
+        _ => Err(Error::new(ErrorKind::Unsupported, "a Perseus simplicial file, not a cubical one").with_path(path)),
+    }
+}
+
+/// Keeps the pairs of `d` that live longer than `min` (death − birth > `min`, GUDHI's
+/// `min_persistence`; an essential pair always), with their cycles and cells.
+pub fn keep_persistent(d: &mut Diagram, min: f64) {
+    let keep: Vec<bool> = d.pairs.iter().map(|p| (p.death - p.birth).abs() > min).collect();
+    let mut k = keep.iter();
+    d.pairs.retain(|_| *k.next().unwrap_or(&true));
+    if !d.cycles.is_empty() {
+        let mut k = keep.iter();
+        d.cycles.retain(|_| *k.next().unwrap_or(&true));
+    }
+    if !d.cells.is_empty() {
+        let mut k = keep.iter();
+        d.cells.retain(|_| *k.next().unwrap_or(&true));
+    }
 }
 
 /// Values on the vertices of a simplicial complex, by label: the lower-star filtration

@@ -92,3 +92,36 @@ pub(crate) fn raster(path: &Path, opts: &OpenOptions) -> Result<Input> {
         import::raster::read_raster(path).map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))?;
     Ok(Input::Image(Source::file(path, opts).holding(img)))
 }
+
+/// `.txt`: a Perseus cubical file (GUDHI's `perseus_file`) as the image of its top cells,
+/// the first axis fastest. Refused: a file with a periodic axis (a negative size; an image
+/// has no periodicity to carry it, `gmap.gudhi.PeriodicCubicalComplex(perseus_file=…)` reads
+/// it) and a simplicial one (its values are what it holds: `crate::persistence_file`
+/// reads them).
+pub(crate) fn perseus(path: &Path, opts: &OpenOptions) -> Result<Input> {
+    let read =
+        import::perseus::read_perseus(path).map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path));
+    let p = match read? {
+        import::perseus::Perseus::Cubical(p) => p,
+        _ => {
+            return Err(Error::new(
+                ErrorKind::Unsupported,
+                "a Perseus simplicial file: a complex opened keeps no values; its diagram is `gmap persistence FILE` (gmap.persistence(path))",
+            )
+            .with_path(path))
+        }
+    };
+    if p.periodic.iter().any(|&w| w) {
+        return Err(Error::new(
+            ErrorKind::Unsupported,
+            format!(
+                "a Perseus file with periodic axes {:?} (negative sizes): an image does not wrap; gmap.gudhi.PeriodicCubicalComplex(perseus_file=...) reads it",
+                p.periodic
+            ),
+        )
+        .with_path(path));
+    }
+    let img = Image::from_values(&p.sizes, import::image::Order::Fortran, p.values)
+        .map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))?;
+    Ok(Input::Image(Source::file(path, opts).holding(img)))
+}

@@ -267,12 +267,15 @@ def persistence(
     label: str = "value",
     vertex_values: Union[None, Mapping[int, float], Sequence[float], npt.NDArray[Any]] = None,
     facet_values: Optional[Sequence[float]] = None,
+    min_persistence: float = 0.0,
 ) -> Union[npt.NDArray[np.float64], Tuple[npt.NDArray[np.float64], List[Cycle]]]:
     """The persistence diagram of `x` over Z/field: a (k, 3) float64 array of (dimension,
     birth, death), inf for essential classes; with cycles=True also a representative cycle
     per pair, (cells, coefficients) in the input's terms. A simplicial complex takes
     vertex_values (the lower-star filtration: {label: value} or a sequence indexed by label)
-    or facet_values (one per facet, in the order of its facets; a face takes the minimum).
+    or facet_values (one per facet, in the order given for a list of facets, in the order of
+    its facets for a SimplicialComplex; a face takes the minimum). Pairs living min_persistence or
+    less are left out; a float32 array gives float32 pairs.
     An image past the memory limit (set_max_memory) is computed from its lower stars, read
     in place (1 to 4 axes, neither periodic nor with cycles)."""
 
@@ -298,3 +301,11 @@ def _build_lens_space(p: int, q: int) -> GMap: ...
 def _build_solid_torus(k: int) -> GMap: ...
 def _build_surface(word: str) -> GMap: ...
 def _build_from_facets(facets: Facets) -> GMap: ...
+def _image_pairs(
+    values: npt.NDArray[np.float64], construction: str, periodic: Sequence[bool], field: int,
+    superlevel: bool, min_persistence: float, cells: bool,
+) -> Tuple[npt.NDArray[np.float64], List[Tuple[int, ...]], List[Optional[Tuple[int, ...]]]]: ...
+def _simplex_pairs(
+    simplices: Sequence[Sequence[int]], values: Sequence[float], field: int, min_persistence: float, cells: bool,
+) -> Tuple[npt.NDArray[np.float64], List[Tuple[int, ...]], List[Optional[Tuple[int, ...]]]]: ...
+def _perseus_cubical(path: PathLike) -> Tuple[npt.NDArray[np.float64], Tuple[int, ...], Tuple[bool, ...]]: ...

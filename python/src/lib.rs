@@ -22,6 +22,7 @@ use pyo3::types::{PyList, PyString, PyTuple};
 mod curves;
 mod errors;
 mod gmapobj;
+mod gudhi;
 mod objects;
 mod page;
 mod persist;
@@ -584,6 +585,9 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(curves::face_width, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
     m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
+    m.add_function(wrap_pyfunction!(gudhi::_image_pairs, m)?)?;
+    m.add_function(wrap_pyfunction!(gudhi::_simplex_pairs, m)?)?;
+    m.add_function(wrap_pyfunction!(gudhi::_perseus_cubical, m)?)?;
     m.add_function(wrap_pyfunction!(set_max_memory, m)?)?;
     m.add_function(wrap_pyfunction!(max_memory, m)?)?;
     m.add_function(wrap_pyfunction!(page::_page, m)?)?;

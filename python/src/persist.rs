@@ -72,9 +72,11 @@ macro_rules! grey_as_f64 {
 }
 grey_as_f64!(f32, u8, u16, u32, u64, i8, i16, i32, i64);
 
+/// A mask is the set of its True pixels, as in `homology(mask)` and `CubicalSet(mask)`:
+/// True is 0 (there from the start), False 1 (the persistence of `CubicalSet(mask)`).
 impl Grey for bool {
     fn grey(self) -> f64 {
-        f64::from(u8::from(self))
+        f64::from(u8::from(!self))
     }
 }
 
@@ -243,14 +245,21 @@ fn given_values_diagram(
             }
         }
         (None, Some(f)) => {
+            let values: Vec<f64> =
+                f.extract().map_err(|_| Failure::input("facet_values: a sequence of numbers, one per facet"))?;
+            if x.is_instance_of::<PyList>() || x.is_instance_of::<PyTuple>() {
+                // values in the order the facets are given
+                let facets = crate::objects::facets_from_py(x)?;
+                return Ok(py
+                    .allow_threads(|| gmap::persistence::given_facet_persistence(facets, &values, o))
+                    .map_err(Failure::from)?);
+            }
             let Some(Input::Simplicial(sc)) = complex.as_deref() else {
                 return Err(Failure::input(
                     "facet_values are for a simplicial complex (facets or a SimplicialComplex; a .facets file carries them as `: VALUE`)",
                 )
                 .into());
             };
-            let values: Vec<f64> =
-                f.extract().map_err(|_| Failure::input("facet_values: a sequence of numbers, one per facet"))?;
             Ok(py.allow_threads(|| gmap::persistence::facet_persistence(sc, &values, o)).map_err(Failure::from)?)
         }
         (None, None) => unreachable!("called with values"),
@@ -279,13 +288,17 @@ fn given_values_diagram(
 /// cycles; LimitError otherwise, or when its critical cells pass the limit).
 ///
 /// A simplicial complex, given as a SimplicialComplex, as facets (a list or tuple of
-/// sequences of vertex labels; a numpy array is an image) or as the path of one (`.facets`
+/// sequences of vertex labels, read as facets only with vertex_values or facet_values:
+/// without them a list is an image of numbers, as a numpy array is) or as the path of one (`.facets`
 /// without values, `.lex`), takes `vertex_values`: a mapping {label: value} or a sequence indexed by label; each simplex
 /// takes the largest value of its vertices (the lower-star filtration; every vertex needs
 /// a value, other labels are ignored). Facets or a SimplicialComplex take `facet_values`
-/// instead: one value per facet in the order of its `facets` (the order given, for pure
-/// complexes), a face taking the minimum of its
+/// instead: one value per facet, in the order given for facets and in the order of its
+/// `facets` for a SimplicialComplex (which lists its largest facets first), a face taking the minimum of its
 /// facets' values (GUDHI's SimplexTree convention).
+///
+/// Pairs that live `min_persistence` or less (death − birth, GUDHI's convention) are left
+/// out. A float32 array gives float32 pairs (the values are its own), anything else float64.
 ///
 /// With cycles=True the result is `(pairs, cycles)`: `cycles[i]` represents `pairs[i]` as
 /// `(cells, coefficients)` in the input's terms: for arrays and images an int64 array
@@ -295,7 +308,7 @@ fn given_values_diagram(
 /// dart of each), for architectural complexes a list of region ids; coefficients in
 /// 1..field as int64.
 #[pyfunction]
-#[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value", vertex_values = None, facet_values = None))]
+#[pyo3(signature = (x, *, field = 2, construction = "T", superlevel = false, periodic = false, cycles = false, label = "value", vertex_values = None, facet_values = None, min_persistence = 0.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn persistence<'py>(
     py: Python<'py>,
@@ -308,6 +321,7 @@ pub fn persistence<'py>(
     label: &str,
     vertex_values: Option<&Bound<'py, PyAny>>,
     facet_values: Option<&Bound<'py, PyAny>>,
+    min_persistence: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let construction: Construction = construction
         .parse()
@@ -315,7 +329,7 @@ pub fn persistence<'py>(
     let mut o = PersistenceOptions::default();
     (o.field, o.construction, o.superlevel, o.periodic, o.cycles) = (field, construction, superlevel, periodic, cycles);
     o.label = label.to_string();
-    let diagram = if vertex_values.is_some() || facet_values.is_some() {
+    let mut diagram = if vertex_values.is_some() || facet_values.is_some() {
         given_values_diagram(py, x, vertex_values, facet_values, &o)?
     } else if x.is_instance_of::<PyString>() || x.hasattr("__fspath__")? {
         let path: PathBuf = x.extract()?;
@@ -329,8 +343,24 @@ pub fn persistence<'py>(
     } else if let Ok(img) = x.downcast::<PyImage>() {
         let input = &img.get().input;
         py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
-    } else if let Some(input) = complex_of_py(x)? {
-        py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?
+    } else if let Ok(sc) = x.downcast::<PySimplicialComplex>() {
+        let input = &sc.get().input;
+        py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
+    } else if x.is_instance_of::<PyList>() || x.is_instance_of::<PyTuple>() {
+        // without values a nested list is an image of numbers (a complex would need values)
+        let np = py.import("numpy")?;
+        let arr = np.call_method1("asarray", (x,)).map_err(|e| {
+            Failure::input(format!(
+                "persistence of a list without vertex_values or facet_values: an image of numbers, and this list is not one ({e})"
+            ))
+        })?;
+        if arr.getattr("dtype")?.getattr("kind")?.extract::<String>()? == "O" {
+            return Err(Failure::input(
+                "persistence of a list without vertex_values or facet_values: an image of numbers, and this list is ragged (facets need values)",
+            )
+            .into());
+        }
+        array_diagram(py, &arr, &o)?
     } else if let Ok(a) = x.downcast::<PyArchComplex>() {
         let input = &a.get().input;
         py.allow_threads(|| gmap::persistence(input, &o)).map_err(Failure::from)?
@@ -343,7 +373,12 @@ pub fn persistence<'py>(
         ))
         .into());
     };
-    let pairs = pairs_array(py, &diagram)?;
+    gmap::persistence::keep_persistent(&mut diagram, min_persistence);
+    let mut pairs = pairs_array(py, &diagram)?;
+    if x.downcast::<numpy::PyArrayDyn<f32>>().is_ok() {
+        // float32 values give float32 pairs (every value of the diagram is one of them)
+        pairs = pairs.call_method1("astype", ("float32",))?;
+    }
     if !cycles {
         return Ok(pairs);
     }

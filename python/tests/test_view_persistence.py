@@ -379,8 +379,10 @@ def test_facets_given_as_lists_take_values():
     d = gmap.persistence(facets, facet_values=[0, 0, 1, 3])
     assert Counter(map(tuple, d.tolist())) == Counter({(0.0, 0.0, float("inf")): 1})
     assert np.array_equal(d, gmap.persistence(gmap.SimplicialComplex(facets), facet_values=[0, 0, 1, 3]))
-    with pytest.raises(gmap.GmapError, match="needs values"):
-        gmap.persistence(facets)
+    # without values a nested list is an image of numbers (python/README.md, "Lists and masks")
+    assert np.array_equal(gmap.persistence(facets), gmap.persistence(np.asarray(facets)))
+    with pytest.raises(gmap.InputError, match="an image of numbers"):
+        gmap.persistence([[0, 1], [1, 2, 3]])
     with pytest.raises(gmap.InputError, match="facet 1"):
         gmap.persistence([[0, 1], [2, -1]], vertex_values=[0, 0, 0])
 

@@ -84,21 +84,29 @@ pub struct Diagram {
     /// `cycles[i]` represents `pairs[i]` (empty unless cycles were asked for)
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub cycles: Vec<Chain>,
+    /// `cells[i]`: the cell whose entry gives `pairs[i]` its birth and, for a finite pair,
+    /// the cell whose entry kills it (filled alongside `cycles`, empty without them)
+    #[serde(skip)]
+    pub cells: Vec<(CellName, Option<CellName>)>,
 }
+
+/// A pair's representative cycle with the cells that give it its birth and death.
+pub(crate) type Named = (Chain, CellName, Option<CellName>);
 
 impl Diagram {
     pub(crate) fn new(field: u32) -> Self {
-        Diagram { field, pairs: Vec::new(), cycles: Vec::new() }
+        Diagram { field, pairs: Vec::new(), cycles: Vec::new(), cells: Vec::new() }
     }
 
     /// Records a pair from internal (sign-multiplied) values, unless of zero persistence.
-    pub(crate) fn push(&mut self, dim: usize, birth: f64, death: f64, sign: f64, cycle: Option<Chain>) {
+    pub(crate) fn push(&mut self, dim: usize, birth: f64, death: f64, sign: f64, cycle: Option<Named>) {
         if birth == death {
             return;
         }
         self.pairs.push(Pair { dim, birth: sign * birth, death: sign * death });
-        if let Some(c) = cycle {
+        if let Some((c, born, dies)) = cycle {
             self.cycles.push(c);
+            self.cells.push((born, dies));
         }
     }
 
@@ -108,9 +116,12 @@ impl Diagram {
         let order =
             |p: &Pair, q: &Pair| p.dim.cmp(&q.dim).then(p.birth.total_cmp(&q.birth)).then(p.death.total_cmp(&q.death));
         if self.cycles.len() == self.pairs.len() && !self.cycles.is_empty() {
-            let mut both: Vec<(Pair, Chain)> = self.pairs.drain(..).zip(self.cycles.drain(..)).collect();
-            both.sort_by(|(p, _), (q, _)| order(p, q));
-            (self.pairs, self.cycles) = both.into_iter().unzip();
+            let mut all: Vec<(Pair, (Chain, (CellName, Option<CellName>)))> =
+                self.pairs.drain(..).zip(self.cycles.drain(..).zip(self.cells.drain(..))).collect();
+            all.sort_by(|(p, _), (q, _)| order(p, q));
+            let (pairs, rest): (Vec<Pair>, Vec<_>) = all.into_iter().unzip();
+            self.pairs = pairs;
+            (self.cycles, self.cells) = rest.into_iter().unzip();
         } else {
             // pairs equal in the order are equal: an unstable sort gives the same list
             self.pairs.sort_unstable_by(order);

@@ -474,18 +474,18 @@ impl FilteredComplex {
                 cycles,
             );
             for &(row, col) in &r.pairs {
-                let c = cycles.then(|| chain(k - 1, &r.reduced[&col]));
+                let c = cycles.then(|| (chain(k - 1, &r.reduced[&col]), name(k - 1, row), Some(name(k, col))));
                 diagram.push(k - 1, val(k - 1, row), val(k, col), self.sign, c);
             }
             for &col in &r.zero {
-                let c = cycles.then(|| chain(k, &r.v[&col]));
+                let c = cycles.then(|| (chain(k, &r.v[&col]), name(k, col), None));
                 diagram.push(k, val(k, col), f64::INFINITY, self.sign, c);
             }
             claimed = r.claimed;
         }
         for j in 0..order[0].len() as u32 {
             if !claimed.get(j as usize).copied().unwrap_or(false) {
-                let c = cycles.then(|| vec![(name(0, j), 1)]);
+                let c = cycles.then(|| (vec![(name(0, j), 1)], name(0, j), None));
                 diagram.push(0, val(0, j), f64::INFINITY, self.sign, c);
             }
         }

@@ -201,15 +201,17 @@ impl CubicalFiltration {
                 for &(row, col) in &r.pairs {
                     let (b, e) = (lo[row as usize].1 as usize, hi[col as usize].1 as usize);
                     let cycle = opts.cycles.then(|| {
-                        r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize].1 as usize), c)).collect()
+                        let chain = r.reduced[&col].iter().map(|&(x, c)| (self.name(lo[x as usize].1 as usize), c));
+                        (chain.collect(), self.name(b), Some(self.name(e)))
                     });
                     diagram.push(k - 1, self.vals()[b], self.vals()[e], self.sign, cycle);
                 }
                 for &col in &r.zero {
                     let g = hi[col as usize].1 as usize;
-                    let cycle = opts
-                        .cycles
-                        .then(|| r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c)).collect());
+                    let cycle = opts.cycles.then(|| {
+                        let chain = r.v[&col].iter().map(|&(x, c)| (self.name(hi[x as usize].1 as usize), c));
+                        (chain.collect(), self.name(g), None)
+                    });
                     diagram.push(k, self.vals()[g], f64::INFINITY, self.sign, cycle);
                 }
                 claimed_below = Some(r.claimed);
@@ -221,7 +223,7 @@ impl CubicalFiltration {
             self.ensure(0, false);
             for (i, &(_, g)) in self.list(0).iter().enumerate() {
                 if !claimed.get(i).copied().unwrap_or(false) {
-                    let cycle = Some(vec![(self.name(g as usize), 1)]);
+                    let cycle = Some((vec![(self.name(g as usize), 1)], self.name(g as usize), None));
                     diagram.push(0, self.vals()[g as usize], f64::INFINITY, self.sign, cycle);
                 }
             }

@@ -19,7 +19,7 @@ impl std::str::FromStr for Construction {
     type Err = PersistenceError;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         match s {
-            "T" | "t" | "top" => Ok(Construction::T),
+            "T" | "t" | "top" | "top_dimensional_cells" => Ok(Construction::T),
             "V" | "v" | "vertex" | "vertices" => Ok(Construction::V),
             _ => Err(PersistenceError::BadOption(format!("construction {s:?} (want T or V)"))),
         }

@@ -12,6 +12,7 @@ pub mod cubical;
 pub mod image;
 pub mod msh;
 pub mod off;
+pub mod perseus;
 pub mod plane_graph;
 pub mod poset;
 pub mod raster;

@@ -89,6 +89,13 @@ impl SimplicialComplex {
         self.vertices.chunks_exact(self.dim + 1).chain(self.others.iter().map(|(_, f)| f.as_slice()))
     }
 
+    /// The input line of every facet, in the order of [`SimplicialComplex::facets`] (for
+    /// [`SimplicialComplex::from_facets`], facet `k` of the input is on line `k + 1`): how
+    /// values given in input order are matched to the facets, which put the n-facets first.
+    pub fn facet_lines(&self) -> impl Iterator<Item = usize> + '_ {
+        self.lines.iter().copied().chain(self.others.iter().map(|(l, _)| *l))
+    }
+
     /// Whether every facet has dimension n (only then is there a G-map).
     pub fn is_pure(&self) -> bool {
         self.smaller.is_none()
@@ -200,8 +207,8 @@ impl SimplicialComplex {
             // colons in comments only
             return Ok((sc, None));
         }
-        let lines = sc.lines.iter().copied().chain(sc.others.iter().map(|(l, _)| *l));
-        let vals = lines
+        let vals = sc
+            .facet_lines()
             .map(|line| {
                 values.get(&line).copied().ok_or_else(|| ImportError::Syntax {
                     line,
