@@ -80,11 +80,13 @@ pub(crate) fn simplicial(sc: &SimplicialComplex, m: &DenseMap) -> Option<Pinch> 
 pub(crate) fn keeping(input: &Input) -> Vec<&'static str> {
     FORMATS
         .iter()
-        .filter(|f| match (f.writer, input) {
-            (Writer::Graph(_), _) => true,
-            (Writer::Map { facets: Some(_), .. }, Input::Simplicial(_)) => true,
-            (Writer::Map { cubes: Some(_), .. } | Writer::Cubes(_), Input::Cubical(_)) => true,
-            _ => false,
+        .filter(|f| {
+            matches!(
+                (f.writer, input),
+                (Writer::Graph(_), _)
+                    | (Writer::Map { facets: Some(_), .. }, Input::Simplicial(_))
+                    | (Writer::Map { cubes: Some(_), .. } | Writer::Cubes(_), Input::Cubical(_))
+            )
         })
         .map(|f| f.extension)
         .collect()
