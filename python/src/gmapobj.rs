@@ -235,6 +235,9 @@ impl PyGMap {
     }
 }
 
+/// An incidence pair of `GMap.incidences`: ((i, a), (i + 1, b)).
+type Incidence = ((usize, u32), (usize, u32));
+
 /// The GMap behind a Python object for an edit or a snapshot, borrowed under the GIL for as
 /// long as the caller holds it (never across a release of the GIL: computations run on
 /// [`snapshot`]s). A GMap another borrow holds is refused with InputError, not a panic.
@@ -725,7 +728,7 @@ impl PyGMap {
 
     /// The incidence pairs of the map's cells: a list of ((i, a), (i + 1, b)) for each
     /// i-cell a on the boundary of the (i+1)-cell b (cells numbered as in `cells(i)`).
-    fn incidences(slf: &Bound<'_, Self>) -> PyResult<Vec<((usize, u32), (usize, u32))>> {
+    fn incidences(slf: &Bound<'_, Self>) -> PyResult<Vec<Incidence>> {
         let d = snapshot(slf)?;
         Ok(slf.py().allow_threads(|| {
             let parts: Vec<_> = (0..=d.dim()).map(|i| d.cells(i)).collect();
