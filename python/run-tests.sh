@@ -3,7 +3,8 @@
 #
 #   bash python/run-tests.sh            # from anywhere in the repository
 #
-# Steps: build the `gmap` binary (the tests compare with its --json output), make a new
+# Steps: build the `gmap` binary (the tests compare with its --json output; found in the
+# target folder `cargo metadata` names, so CARGO_TARGET_DIR is followed), make a new
 # venv in a temporary folder, install maturin numpy pytest hypothesis networkx
 # dask[distributed] (and gudhi, meshio and vtk when pip can get them), `pip install ./python`, run pytest
 # on python/tests. Exits non-zero when any step or test fails. GMAP_PYTHON picks the
@@ -17,7 +18,12 @@ python="${GMAP_PYTHON:-python3}"
 cd "$repo"
 echo "== building the gmap command (for the comparison with the package)"
 cargo build --profile test-release --bin gmap --quiet
-export GMAP_BIN="$repo/target/test-release/gmap"
+# where cargo put it: its target folder (CARGO_TARGET_DIR, a .cargo/config.toml's
+# build.target-dir, or target/ by default), as cargo itself reports it
+target_dir="$("$python" -c 'import json, sys; print(json.load(sys.stdin)["target_directory"])' \
+    < <(cargo metadata --format-version 1 --no-deps))"
+export GMAP_BIN="$target_dir/test-release/gmap"
+[ -x "$GMAP_BIN" ] || { echo "no gmap binary at $GMAP_BIN (cargo's target folder)" >&2; exit 1; }
 export GMAP_REQUIRE_CLI=1
 
 venv="${GMAP_VENV:-}"

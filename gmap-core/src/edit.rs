@@ -242,6 +242,15 @@ impl<A: Attributes> GMap<A> {
         self.darts.bound()
     }
 
+    /// Bytes an editable map of `darts` darts of dimension `dim` may take, with the frozen
+    /// copy a query makes of it: the dart store (involutions, handles, marks), the cell
+    /// attribute and point slots, and the dense map's involutions, ids and slot numbers. An
+    /// estimate for the memory policy ([`crate::resources::check_memory`]), taken before a
+    /// caller creates that many darts; `None` past `u64`.
+    pub fn memory_estimate(dim: usize, darts: u64) -> Option<u64> {
+        darts.checked_mul(12 * (dim as u64 + 1) + 96)
+    }
+
     /// Creates a dart free for every involution.
     pub fn create_dart(&mut self) -> DartId {
         let d = self.darts.insert();

@@ -92,6 +92,7 @@ pub mod input;
 mod open;
 mod options;
 pub mod persistence;
+mod pinch;
 pub mod progress;
 mod read;
 pub mod report;

@@ -587,7 +587,8 @@ fn write_picture(out: &Path, svg: impl FnOnce() -> String, raster: impl FnOnce()
         PictureFormat::Svg => svg().into_bytes(),
         PictureFormat::Png => png_bytes(&raster()).map_err(|e| e.with_path(out))?,
     };
-    gmap_core::io::write_atomic(out, &bytes).map_err(|e| Error::from_source(ErrorKind::Write, e).with_path(out))
+    // the error names the picture asked for, not the temporary file it is written through
+    gmap_core::io::write_atomic(out, &bytes).map_err(|e| crate::write::cannot_write(out, e).with_path(out))
 }
 
 /// Writes the diagram as a picture to `out`, SVG or PNG by its extension (other

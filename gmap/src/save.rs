@@ -32,27 +32,42 @@ pub struct SaveOptions {
     pub max_cells: Option<u64>,
     /// `.off` of a 3-map: write its boundary surface
     pub boundary: bool,
+    /// write an output that changes the space anyway (`gmap convert --lossy`, Python's
+    /// `save(lossy=True)`): the G-map of a complex or cubical set pinched at a cell, which
+    /// pulls the cell apart. Without it [`save`] refuses such an output naming the cell and
+    /// the formats that keep it.
+    pub lossy: bool,
 }
 
 impl SaveOptions {
     /// Options with a dart limit.
     pub fn max_darts(max_darts: Option<u64>) -> Self {
-        SaveOptions { max_darts, max_cells: None, boundary: false }
+        SaveOptions { max_darts, max_cells: None, boundary: false, lossy: false }
     }
 }
 
 /// Writes `input` to `output` in the format named by the output's extension (the writer of
 /// its row in [`crate::formats::FORMATS`]). Refuses to write over the file the input was
 /// read from, and a kind of input the format cannot hold.
+///
+/// An output written through a G-map that would be another space (a simplicial complex or
+/// cubical set pinched at a cell: two triangles sharing only a vertex) is refused naming the
+/// cell and the formats that keep it, unless `o.lossy` ([`write_checked`] says what it
+/// changes).
 pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<()> {
-    let output = output.as_ref();
+    save_noting(input, output.as_ref(), o, "write it anyway with --lossy (Python: save(lossy=True))").map(drop)
+}
+
+/// [`save`], returning what the output changes of the space when `o.lossy` let it through;
+/// `hint` ends a refusal of a change of space.
+fn save_noting(input: &Input, output: &Path, o: &SaveOptions, hint: &str) -> Result<Option<String>> {
     refuse_same_file(input.path(), output)?;
     if o.boundary {
-        return save_boundary(input, output);
+        return save_boundary(input, output).map(|()| None);
     }
     if let Input::Image(img) = input {
         return match format_of(output).map(|f| f.writer) {
-            Some(Writer::Image(write)) => write(img, output),
+            Some(Writer::Image(write)) => write(img, output).map(|()| None),
             _ => Err(err!(
                 Unsupported,
                 "{}: an image is written as .npy or .complex, not '.{}'",
@@ -62,12 +77,12 @@ pub fn save(input: &Input, output: impl AsRef<Path>, o: &SaveOptions) -> Result<
         };
     }
     match output_format(output)?.writer {
-        Writer::Graph(text) => write::text(output, &text(graph_of(input, output, o)?.as_ref())),
+        Writer::Graph(text) => write::text(output, &text(graph_of(input, output, o)?.as_ref())).map(|()| None),
         Writer::Map { map, labelled, cubes, facets } => {
-            save_through_map(input, output, o, (map, labelled, cubes, facets))
+            save_through_map(input, output, (o, hint), (map, labelled, cubes, facets))
         }
         Writer::Cubes(write) => match input {
-            Input::Cubical(set) => write(set, output),
+            Input::Cubical(set) => write(set, output).map(|()| None),
             other => Err(err!(
                 Unsupported,
                 "{}: '.{}' holds cubical sets, not a {}",
@@ -114,31 +129,37 @@ fn graph_of<'a>(input: &'a Input, output: &Path, o: &SaveOptions) -> Result<std:
 /// Writes any input in a map format: a map as it is (with its labels and points where the
 /// format has a writer for them), a simplicial complex through its G-map, an architectural
 /// complex through the G-map of its cells, a full cubical set as its cubes or the G-map of
-/// their union.
+/// their union. A G-map that would pull a pinched cell apart is refused without `o.lossy`;
+/// with it, what changes is returned.
 fn save_through_map(
     input: &Input,
     output: &Path,
-    o: &SaveOptions,
+    (o, hint): (&SaveOptions, &str),
     (map, labelled, cubes, facets): (
         write::MapFn,
         Option<write::LabelledFn>,
         Option<write::CubesFn>,
         Option<write::FacetsFn>,
     ),
-) -> Result<()> {
+) -> Result<Option<String>> {
+    let done = |r: Result<()>| r.map(|()| None);
     match input {
-        Input::Map(m) => match (labelled, m.labelled()) {
+        Input::Map(m) => done(match (labelled, m.labelled()) {
             (Some(write), Some(g)) => write(g?, output),
             _ => map(m.map(), output),
-        },
+        }),
         Input::Simplicial(sc) => match facets {
-            Some(write) => write(sc, output),
-            None => map(&sc.to_gmap_within(o.max_darts)?, output),
+            Some(write) => done(write(sc, output)),
+            None => {
+                let m = sc.to_gmap_within(o.max_darts)?;
+                let change = crate::pinch::check(crate::pinch::simplicial(sc, &m), input, output, o.lossy, hint)?;
+                map(&m, output).map(|()| change)
+            }
         },
-        Input::Arch(x) => match labelled {
+        Input::Arch(x) => done(match labelled {
             Some(write) => write(&arch_to_labelled(x, o.max_darts, x.path(), output)?, output),
             None => map(&arch_to_map(x, o.max_darts, x.path(), output)?, output),
-        },
+        }),
         // a .vtk of voxels and a G-map of d-cells hold the cubes only
         Input::Cubical(set) if !set.is_full() => {
             let what = if cubes.is_some() { ".vtk (voxels)" } else { "a G-map of its cubes" };
@@ -147,12 +168,20 @@ fn save_through_map(
                 .with_path(set.path()))
         }
         Input::Cubical(set) => match cubes {
-            Some(write) => write(set, output),
+            Some(write) => done(write(set, output)),
             None => {
+                let pinched = set.pinched_cell(false).map(|(cell, groups)| crate::pinch::Pinch {
+                    cell: format!("the cell {cell}"),
+                    item: None,
+                    groups,
+                    pieces: "cubes",
+                    shared: "facet",
+                });
+                let change = crate::pinch::check(pinched, input, output, o.lossy, hint)?;
                 let m = set
-                    .gmap_of_union(false)
+                    .gmap(false)
                     .map_err(|e| Error::from_source(ErrorKind::Limit, e).context(set.path().display().to_string()))?;
-                map(&m, output)
+                map(&m, output).map(|()| change)
             }
         },
         Input::Image(_) => {
@@ -246,14 +275,14 @@ pub fn save_file(input: impl AsRef<Path>, output: impl AsRef<Path>, o: &SaveOpti
     save(&opened, output, o)
 }
 
-/// [`save_file`] that first hands what the output drops ([`dropped`]) to `check`, which may
-/// refuse (`gmap convert` without `--lossy`).
+/// Reads `input` and writes it to `output` under the rule of [`write_checked`] (`gmap
+/// convert`): the output is checked not to be the input file before anything is read.
 pub fn save_checked(
     input: impl AsRef<Path>,
     output: impl AsRef<Path>,
     o: &SaveOptions,
-    check: impl FnOnce(&[&'static str]) -> Result<()>,
-) -> Result<()> {
+    hint: &str,
+) -> Result<Vec<String>> {
     let (input, output) = (input.as_ref(), output.as_ref());
     refuse_same_file(input, output)?;
     let opened = crate::open_with(input, &crate::input::OpenOptions::max_darts(o.max_darts))?;
@@ -261,8 +290,32 @@ pub fn save_checked(
     if let (Input::Arch(x), false) = (&opened, format_of(output).is_some_and(|f| f.is_graph())) {
         arch_to_map(x.get(), o.max_darts, input, output)?;
     }
-    check(&dropped(&opened, output, o))?;
-    save(&opened, output, o)
+    write_checked(&opened, output, o, hint)
+}
+
+/// The rule of every write of `gmap convert` and of the Python package's `save`: an output
+/// that drops what the input carries ([`dropped`]: its labels, its points) or that is
+/// another space (a G-map pulling a pinched cell apart, see [`save`]) is refused, naming
+/// what, unless `o.lossy`; `hint` says how to write it anyway in the caller's terms
+/// (`convert with --lossy to write it anyway`). Returns what the written output changes,
+/// one sentence each, for the caller to say (stderr, a Python warning).
+pub fn write_checked(input: &Input, output: &Path, o: &SaveOptions, hint: &str) -> Result<Vec<String>> {
+    let dropped = dropped(input, output, o);
+    let mut said = Vec::new();
+    if !dropped.is_empty() {
+        let source = match input.path().as_os_str().is_empty() {
+            true => format!("the {}", input.kind()),
+            false => input.path().display().to_string(),
+        };
+        let what = format!("{} drops {} of {source}", output.display(), dropped.join(", "));
+        if !o.lossy {
+            return Err(err!(Usage, "{what}; {hint}").with_path(output));
+        }
+        said.push(what);
+    }
+    refuse_same_file(input.path(), output)?;
+    said.extend(save_noting(input, output, o, hint)?);
+    Ok(said)
 }
 
 fn refuse_same_file(input: &Path, output: &Path) -> Result<()> {

@@ -44,8 +44,18 @@ pub(crate) fn labelled_gmap(g: &LabelledGMap, output: &Path) -> Result<()> {
     Ok(gmap_core::io::write_labelled_gmap(g, output)?)
 }
 
-/// `.moka`.
+/// `.moka`: a map of dimension at most 3 (Moka's 3G-maps); a higher one is refused before
+/// anything is written.
 pub(crate) fn moka(m: &DenseMap, output: &Path) -> Result<()> {
+    if m.dim() > 3 {
+        return Err(err!(
+            Unsupported,
+            "{}: .moka holds maps of dimension at most 3, this map has dimension {}; write .gmap",
+            output.display(),
+            m.dim()
+        )
+        .with_path(output));
+    }
     Ok(gmap_core::io::write_moka(m, output)?)
 }
 

@@ -235,6 +235,40 @@ impl PyGMap {
     }
 }
 
+/// An incidence pair of `GMap.incidences`: ((i, a), (i + 1, b)).
+type Incidence = ((usize, u32), (usize, u32));
+
+/// The GMap behind a Python object for an edit or a snapshot, borrowed under the GIL for as
+/// long as the caller holds it (never across a release of the GIL: computations run on
+/// [`snapshot`]s). A GMap another borrow holds is refused with InputError, not a panic.
+pub fn edit<'py>(slf: &Bound<'py, PyGMap>) -> PyResult<PyRefMut<'py, PyGMap>> {
+    slf.try_borrow_mut().map_err(|_| busy())
+}
+
+/// The GMap behind a Python object, read-only ([`edit`]'s rule).
+pub fn read<'py>(slf: &Bound<'py, PyGMap>) -> PyResult<PyRef<'py, PyGMap>> {
+    slf.try_borrow().map_err(|_| busy())
+}
+
+/// Refuses (LimitError) an editable map of `darts` darts past the memory policy, before
+/// they are made.
+fn check_darts_memory(dim: usize, darts: u64) -> PyResult<()> {
+    let what = format!("a map of dimension {dim} with {darts} darts");
+    gmap::core::resources::check_memory(&what, LabelledGMap::memory_estimate(dim, darts))
+        .map_err(|e| Failure::new(Kind::Limit, e.to_string()).into())
+}
+
+fn busy() -> PyErr {
+    Failure::input("the GMap is held by another call in progress (in another thread); retry when it returns").into()
+}
+
+/// The frozen map of a GMap, taken under a short borrow and released before the caller
+/// releases the GIL: many threads may compute on one map at once, and an edit meanwhile
+/// changes the map, not their snapshots.
+pub fn snapshot(slf: &Bound<'_, PyGMap>) -> PyResult<Arc<DenseMap>> {
+    Ok(edit(slf)?.dense())
+}
+
 fn label_to_py(py: Python<'_>, v: &LabelValue) -> PyObject {
     match v {
         LabelValue::Int(i) => i.into_pyobject(py).expect("int").into_any().unbind(),
@@ -249,6 +283,14 @@ fn label_from_py(v: &Bound<'_, PyAny>) -> PyResult<LabelValue> {
     }
     if let Ok(i) = v.extract::<i64>() {
         return Ok(LabelValue::Int(i));
+    }
+    // an int past 64 bits (Python's, numpy's uint64) is refused, not stored as a float
+    if v.is_instance_of::<pyo3::types::PyInt>() || v.hasattr("__index__")? {
+        let text = v.str().map(|t| t.to_string()).unwrap_or_default();
+        return Err(Failure::input(format!(
+            "the label value {text}: an int label holds 64 bits (from -2^63 to 2^63 - 1); give it as a str"
+        ))
+        .into());
     }
     if let Ok(x) = v.extract::<f64>() {
         if !x.is_finite() {
@@ -367,6 +409,7 @@ impl PyGMap {
             )
             .into());
         }
+        check_darts_memory(dim, darts as u64)?;
         let mut g = LabelledGMap::with_attributes(dim);
         for _ in 0..darts {
             g.create_dart();
@@ -455,9 +498,10 @@ impl PyGMap {
     #[pyo3(signature = (k = 1))]
     fn add_darts(&mut self, k: usize) -> PyResult<usize> {
         let first = self.ids.len();
-        if first + k >= u32::MAX as usize {
+        if first.checked_add(k).is_none_or(|n| n >= u32::MAX as usize) {
             return Err(Failure::new(Kind::Limit, "at most 2^32 - 2 darts").into());
         }
+        check_darts_memory(self.g.dim(), (first + k) as u64)?;
         for _ in 0..k {
             let h = self.g.create_dart();
             self.ids.push(h);
@@ -496,18 +540,23 @@ impl PyGMap {
 
     /// One dart per i-cell (the smallest), as a uint32 array, in the order cells are
     /// numbered everywhere (labels, points, generators).
-    fn cells<'py>(&mut self, py: Python<'py>, i: i64) -> PyResult<Bound<'py, PyArray1<u32>>> {
-        let i = self.dim_index(i, "cell dimension")?;
-        let d = self.dense();
+    fn cells<'py>(slf: &Bound<'py, Self>, i: i64) -> PyResult<Bound<'py, PyArray1<u32>>> {
+        let py = slf.py();
+        let (d, i) = {
+            let mut m = edit(slf)?;
+            let i = m.dim_index(i, "cell dimension")?;
+            (m.dense(), i)
+        };
         let p = py.allow_threads(|| d.cells(i));
         Ok(p.reps.iter().map(|r| r.index() as u32).collect::<Vec<_>>().to_pyarray(py))
     }
 
     /// One dart per connected component (the smallest), as a uint32 array.
-    fn components<'py>(&mut self, py: Python<'py>) -> Bound<'py, PyArray1<u32>> {
-        let d = self.dense();
+    fn components<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyArray1<u32>>> {
+        let py = slf.py();
+        let d = snapshot(slf)?;
         let p = py.allow_threads(|| d.components());
-        p.reps.iter().map(|r| r.index() as u32).collect::<Vec<_>>().to_pyarray(py)
+        Ok(p.reps.iter().map(|r| r.index() as u32).collect::<Vec<_>>().to_pyarray(py))
     }
 
     /// The orbit of d under the involutions listed in `dims`, as a uint32 array (d first).
@@ -522,9 +571,9 @@ impl PyGMap {
     }
 
     /// Whether the map is orientable.
-    fn is_orientable(&mut self, py: Python<'_>) -> bool {
-        let d = self.dense();
-        py.allow_threads(|| d.is_orientable())
+    fn is_orientable(slf: &Bound<'_, Self>) -> PyResult<bool> {
+        let d = snapshot(slf)?;
+        Ok(slf.py().allow_threads(|| d.is_orientable()))
     }
 
     /// The Euler characteristic: the alternating sum of the cell counts.
@@ -661,7 +710,7 @@ impl PyGMap {
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
         let f = slf.get_type().getattr("from_text")?;
-        let t = slf.borrow().to_text()?;
+        let t = read(slf)?.to_text()?;
         Ok((f, (t,)))
     }
 
@@ -672,15 +721,16 @@ impl PyGMap {
     /// labels or points is refused (InputError), as `gmap convert` refuses it without
     /// `--lossy`.
     #[pyo3(signature = (path, lossy = false))]
-    fn save(&self, py: Python<'_>, path: std::path::PathBuf, lossy: bool) -> PyResult<()> {
-        crate::save::save_input(py, &self.input(), &path, lossy)
+    fn save(slf: &Bound<'_, Self>, path: std::path::PathBuf, lossy: bool) -> PyResult<()> {
+        let input = read(slf)?.input();
+        crate::save::save_input(slf.py(), &input, &path, lossy)
     }
 
     /// The incidence pairs of the map's cells: a list of ((i, a), (i + 1, b)) for each
     /// i-cell a on the boundary of the (i+1)-cell b (cells numbered as in `cells(i)`).
-    fn incidences(&mut self, py: Python<'_>) -> Vec<((usize, u32), (usize, u32))> {
-        let d = self.dense();
-        py.allow_threads(|| {
+    fn incidences(slf: &Bound<'_, Self>) -> PyResult<Vec<Incidence>> {
+        let d = snapshot(slf)?;
+        Ok(slf.py().allow_threads(|| {
             let parts: Vec<_> = (0..=d.dim()).map(|i| d.cells(i)).collect();
             let mut out = Vec::new();
             for i in 0..d.dim() {
@@ -691,7 +741,7 @@ impl PyGMap {
                 out.extend(seen.into_iter().map(|(a, b)| ((i, a), (i + 1, b))));
             }
             out
-        })
+        }))
     }
 
     // --- Euler operators under CGAL's names (gmap::ops::euler::ops::cgal) ---

@@ -380,7 +380,7 @@ fn homology(
         return finish(py, r);
     }
     if let Ok(m) = x.downcast::<PyGMap>() {
-        let input = m.borrow_mut().homology_input()?;
+        let input = gmapobj::edit(m)?.homology_input()?;
         return facade(py, &input, &o);
     }
     if let Ok(s) = x.downcast::<PySimplicialComplex>() {
@@ -397,6 +397,7 @@ fn homology(
     }
     if let Ok(arr) = x.downcast::<numpy::PyUntypedArray>() {
         use numpy::PyUntypedArrayMethods;
+        objects::check_array(x)?;
         let kind = arr.dtype().kind();
         let facets = arr.ndim() == 2 && matches!(kind, b'i' | b'u') && arr.dtype().itemsize() > 1;
         if facets {

@@ -225,11 +225,32 @@ impl ArrayBytes<'_> {
     }
 }
 
+/// Refuses what a numpy array given as an input cannot be: a masked array (its mask would
+/// be ignored: refused, the caller chooses `a.filled(0)` or `a.data`), a dtype the `.npy`
+/// reader does not read (float16, complex, strings, objects: the reader's own rule and
+/// message).
+pub fn check_array(a: &Bound<'_, PyAny>) -> PyResult<()> {
+    let masked = a.py().import("numpy.ma")?.getattr("MaskedArray")?;
+    if a.is_instance(&masked)? {
+        return Err(Failure::input(
+            "a numpy masked array is refused (its mask would be ignored): give a.filled(0) to leave the masked cubes out, or a.data to take every value",
+        )
+        .into());
+    }
+    if let Ok(arr) = a.downcast::<numpy::PyUntypedArray>() {
+        // numpy's `dtype.str`, the `.npy` header's descr ('<f2'), not its name
+        let descr: String = arr.dtype().getattr("str")?.extract()?;
+        gmap::ops::import::image::check_dtype(&descr).map_err(Failure::in_memory)?;
+    }
+    Ok(())
+}
+
 /// The bytes of the cubical array `a` ([`ArrayBytes`]); anything but a numpy array of
 /// numbers or booleans is refused.
 pub fn array_bytes<'py>(a: &Bound<'py, PyAny>) -> PyResult<ArrayBytes<'py>> {
     let py = a.py();
     let arr = a.downcast::<numpy::PyUntypedArray>().map_err(|_| Failure::input("a cubical set is a numpy array"))?;
+    check_array(a)?;
     let kind = arr.dtype().kind();
     let one_byte = arr.dtype().itemsize() == 1 && matches!(kind, b'b' | b'u' | b'i');
     let contiguous = arr.is_c_contiguous() || arr.is_fortran_contiguous();

@@ -34,7 +34,7 @@ pub fn page(py: Python<'_>, input: &Input, generators: bool, color_by: Option<St
 /// The facade input of a package object (a GMap's is a copy of its map with its labels).
 fn with_input<T>(x: &Bound<'_, PyAny>, f: impl FnOnce(&Input) -> PyResult<T>) -> PyResult<T> {
     if let Ok(m) = x.downcast::<PyGMap>() {
-        let input = m.borrow().input();
+        let input = crate::gmapobj::read(m)?.input();
         return f(&input);
     }
     if let Ok(s) = x.downcast::<PySimplicialComplex>() {

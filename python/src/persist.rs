@@ -25,6 +25,7 @@ use crate::objects::{PyArchComplex, PyCubicalSet, PyImage, PySimplicialComplex};
 /// fits.
 fn array_diagram(py: Python<'_>, x: &Bound<'_, PyAny>, o: &PersistenceOptions) -> PyResult<Diagram> {
     let arr = x.downcast::<numpy::PyUntypedArray>()?;
+    crate::objects::check_array(x)?;
     let nd = arr.ndim();
     let most = gmap::ops::import::image::MAX_DIM;
     if !(1..=most).contains(&nd) {
@@ -335,7 +336,7 @@ pub fn persistence<'py>(
         let path: PathBuf = x.extract()?;
         py.allow_threads(|| gmap::persistence_file(&path, &o)).map_err(Failure::from)?.diagram
     } else if let Ok(m) = x.downcast::<PyGMap>() {
-        let input = m.borrow().input();
+        let input = crate::gmapobj::read(m)?.input();
         py.allow_threads(|| gmap::persistence(&input, &o)).map_err(Failure::from)?
     } else if let Ok(c) = x.downcast::<PyCubicalSet>() {
         let input = &c.get().input;

@@ -11,22 +11,20 @@ use gmap::Input;
 use crate::errors::Failure;
 
 /// Writes `input` by the extension of `path` (`gmap::save`, the writers of `gmap convert`),
-/// with the GIL released; without `lossy`, refuses (InputError) an output that would drop
-/// what the input carries, as `gmap convert` does without `--lossy` (`gmap::save::dropped`).
+/// with the GIL released, under the rule `gmap convert` follows (`gmap::save::write_checked`):
+/// without `lossy`, an output that would drop what the input carries or be another space is
+/// refused (InputError); with it, what the output changes is said as a `UserWarning`.
 pub fn save_input(py: Python<'_>, input: &Input, path: &Path, lossy: bool) -> PyResult<()> {
-    let o = gmap::SaveOptions::default();
-    py.allow_threads(|| {
-        let dropped = gmap::save::dropped(input, path, &o);
-        if !dropped.is_empty() && !lossy {
-            return Err(Failure::input(format!(
-                "{} drops {} of the {}; save with lossy=True to write it anyway",
-                path.display(),
-                dropped.join(", "),
-                input.kind()
-            ))
-            .at_path(path));
+    let mut o = gmap::SaveOptions::default();
+    o.lossy = lossy;
+    let said = py
+        .allow_threads(|| gmap::save::write_checked(input, path, &o, "save with lossy=True to write it anyway"))
+        .map_err(Failure::from)?;
+    if !said.is_empty() {
+        let warn = py.import("warnings")?.getattr("warn")?;
+        for s in said {
+            warn.call1((s,))?;
         }
-        gmap::save(input, path, &o).map_err(Failure::from)
-    })?;
+    }
     Ok(())
 }

@@ -18,6 +18,25 @@ def data_files():
     return sorted(p for p in DATA.rglob("*") if p.is_file() and p.suffix.lower() in INPUT_EXTENSIONS)
 
 
+def cargo_target_dir():
+    """The workspace's target folder as cargo reports it (`cargo metadata`: CARGO_TARGET_DIR
+    and a config's build.target-dir followed); the repository's target/ without cargo."""
+    import json
+    import subprocess
+
+    try:
+        out = subprocess.run(
+            ["cargo", "metadata", "--format-version", "1", "--no-deps"],
+            cwd=REPO,
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
+        return Path(json.loads(out.stdout)["target_directory"])
+    except (OSError, ValueError, KeyError, subprocess.SubprocessError):
+        return REPO / "target"
+
+
 def gmap_binary():
     """The `gmap` command: $GMAP_BIN, else a build in the repository's target folder, else
     one on the PATH; None when there is none."""
@@ -25,7 +44,7 @@ def gmap_binary():
     if env:
         return env
     for profile in ("release", "test-release", "debug"):
-        p = REPO / "target" / profile / "gmap"
+        p = cargo_target_dir() / profile / "gmap"
         if p.exists():
             return str(p)
     return shutil.which("gmap")

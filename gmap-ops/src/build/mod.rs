@@ -48,7 +48,7 @@ pub use schema::{nonorientable_surface_word, orientable_surface_word, schema};
 /// that is `n <= 11`.
 pub fn simplex(n: usize) -> Result<DenseMap, BuildError> {
     let what = || format!("the {n}-simplex");
-    let f = factorial(n + 1).ok_or_else(|| BuildError::TooManyDarts { what: what() })?;
+    let f = n.checked_add(1).and_then(factorial).ok_or_else(|| BuildError::TooManyDarts { what: what() })?;
     checked_darts(what, n, &[f])?;
     let sc = SimplicialComplex::from_facets(vec![(0..=n as u64).collect()]).expect("one facet of distinct vertices");
     sc.to_gmap(u64::MAX).map_err(|_| BuildError::TooManyDarts { what: what() })
@@ -59,6 +59,13 @@ pub fn simplex(n: usize) -> Result<DenseMap, BuildError> {
 pub fn cube(n: usize) -> Result<DenseMap, BuildError> {
     if n == 0 {
         return Ok(DenseMap::new(0, 1));
+    }
+    // the dimension first: the grid's side list is not made for a dimension past the maximum
+    if n > gmap_core::MAX_DIM {
+        return Err(BuildError::BadArgument(format!(
+            "the {n}-cube: a map has a dimension from 0 to {}",
+            gmap_core::MAX_DIM
+        )));
     }
     grid(&vec![1; n], &vec![false; n])
 }

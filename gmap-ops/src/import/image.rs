@@ -613,6 +613,18 @@ fn check_dim(d: usize) -> Result<(), ImportError> {
     Ok(())
 }
 
+/// Refuses an image with no pixels (a size 0 along an axis), one message for every command
+/// that reads it, the axes in the file's order.
+fn check_not_empty(shape: &[usize]) -> Result<(), ImportError> {
+    match shape.iter().position(|&s| s == 0) {
+        Some(axis) => Err(format(format!(
+            "an empty image: the shape {} has no pixels (size 0 along axis {axis})",
+            shape_text(shape)
+        ))),
+        None => Ok(()),
+    }
+}
+
 /// Maps a file read-only.
 fn map_file(path: &Path) -> Result<Storage, FileError> {
     let f = std::fs::File::open(path).map_err(|e| FileError::new(path, e.into()))?;
@@ -652,12 +664,12 @@ fn parse_npy(storage: Storage) -> Result<Image, ImportError> {
         Some(v) => (v[0], v[1]),
         None => return Err(format("a .npy file truncated in its preamble")),
     };
-    let (hlen, start) = match major {
-        1 => match bytes.get(8..10) {
+    let (hlen, start) = match (major, minor) {
+        (1, 0) => match bytes.get(8..10) {
             Some(b) => (u16::from_le_bytes([b[0], b[1]]) as usize, 10),
             None => return Err(format("a .npy file truncated in its preamble")),
         },
-        2 | 3 => match bytes.get(8..12) {
+        (2 | 3, 0) => match bytes.get(8..12) {
             Some(b) => (u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as usize, 12),
             None => return Err(format("a .npy file truncated in its preamble")),
         },
@@ -682,6 +694,7 @@ fn parse_npy(storage: Storage) -> Result<Image, ImportError> {
     let shape = h.shape.ok_or_else(|| format("the .npy header has no 'shape'"))?;
     let (dtype, big_endian) = parse_descr(&descr)?;
     check_dim(shape.len())?;
+    check_not_empty(&shape)?;
     let offset = start + hlen;
     let Some((len, need)) = checked_len(&shape, dtype.size()) else {
         return Err(format(format!("the shape {} overflows the address space", shape_text(&shape))));
@@ -695,6 +708,13 @@ fn parse_npy(storage: Storage) -> Result<Image, ImportError> {
         )));
     }
     Ok(Image { shape, order: if fortran { Order::Fortran } else { Order::C }, dtype, big_endian, storage, offset, len })
+}
+
+/// Refuses a numpy dtype (its `descr`, `'<f2'`) the `.npy` reader does not read, with the
+/// reader's message: the one rule for files and for arrays given in memory (the Python
+/// package).
+pub fn check_dtype(descr: &str) -> Result<(), ImportError> {
+    parse_descr(descr).map(drop)
 }
 
 fn parse_descr(descr: &str) -> Result<(Dtype, bool), ImportError> {
@@ -875,6 +895,7 @@ fn parse_dipha(storage: Storage) -> Result<Image, ImportError> {
         let s = usize::try_from(s).map_err(|_| format(format!("a DIPHA image with size {s} along axis {k}")))?;
         shape.push(s);
     }
+    check_not_empty(&shape)?;
     let Some((len, need)) = checked_len(&shape, 8) else {
         return Err(format(format!("the DIPHA shape {} overflows the address space", shape_text(&shape))));
     };
