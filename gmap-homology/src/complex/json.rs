@@ -600,12 +600,17 @@ fn read_json_slow(text: &str) -> Result<Parsed, JsonError> {
 /// The file is refused before it is read when the text and what is built from it (about
 /// four times its size) would exceed the memory limit ([`gmap_core::resources`]).
 pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    read_json_file_with(path, &JsonOptions::default()).map(|x| x.0)
+}
+
+/// [`read_json_file`] with options ([`read_json_with`]).
+pub fn read_json_file_with(path: &Path, o: &JsonOptions) -> Result<(ArchComplex, Vec<String>), JsonFileError> {
     let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
     gmap_core::resources::check_memory("the file and its complex", size.checked_mul(4))
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::MemoryLimit(e) })?;
     let text = std::fs::read_to_string(path)
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
-    read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
+    read_json_with(&text, o).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
 }
 
 /// A [`JsonError`] with the file it comes from.
