@@ -76,14 +76,15 @@ def _name(r: dict) -> str:
 
 def arch_incidence_graph(x: ArchComplex) -> Any:
     """The incidence graph of an ArchComplex as a ``networkx.DiGraph``: a node per region,
-    keyed by the file's id, with ``dim``, ``name`` and its labels; an edge per defined
+    keyed by the file's id, with its labels, ``dim`` and ``name`` (the id and the ``name``
+    label, as messages name it); an edge per defined
     entry from the higher region to the lower one, with its ``weight``."""
     import networkx as nx
 
     regions, incidence = _parsed(x)
     g = nx.DiGraph()
     for k, r in regions.items():
-        g.add_node(k, dim=r["dim"], name=_name(r), **r.get("labels", {}))
+        g.add_node(k, **{**r.get("labels", {}), "dim": r["dim"], "name": _name(r)})
     for e in incidence:
         g.add_edge(str(e["from"]), str(e["to"]), weight=e.get("weight", 0))
     return g
@@ -144,7 +145,7 @@ def room_graph(x: Union[ArchComplex, Path], via: str = "faces", exterior: str = 
     g = nx.Graph()
     for k, r in regions.items():
         if r["dim"] == top:
-            g.add_node(k, name=_name(r), **r.get("labels", {}))
+            g.add_node(k, **{**r.get("labels", {}), "name": _name(r)})
     if via == "exterior":
         g.add_node(exterior, name=exterior)
 

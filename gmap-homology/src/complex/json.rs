@@ -719,7 +719,7 @@ mod tests {
         assert!(back.region_labels(0).is_empty());
         // the tree-based reader (taken when the fast one fails) keeps them too
         assert_eq!(
-            build(read_json_slow(&text).unwrap()).unwrap().region_labels(2).get("count"),
+            build(read_json_slow(&text).unwrap(), &JsonOptions::default()).unwrap().0.region_labels(2).get("count"),
             Some(&LabelValue::Int(-7))
         );
     }

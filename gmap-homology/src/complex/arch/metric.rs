@@ -266,14 +266,14 @@ impl Shape {
             defects: Vec::new(),
             tol: 1e-8 * extent.max(1.0),
         };
-        for c in 0..n {
+        for (c, d) in down.iter().enumerate() {
             if s.dims[c] == 1 {
-                s.ends[c] = s.edge_ends(c, &down[c]);
+                s.ends[c] = s.edge_ends(c, d);
             }
         }
-        for c in 0..n {
+        for (c, d) in down.iter().enumerate() {
             if s.dims[c] == 2 {
-                s.faces[c] = s.face(c, &down[c]);
+                s.faces[c] = s.face(c, d);
             }
         }
         s

@@ -24,7 +24,7 @@ struct Plane {
 impl Plane {
     fn tail(&self, h: usize) -> usize {
         let (a, b) = self.edges[h / 2];
-        if h % 2 == 0 {
+        if h.is_multiple_of(2) {
             a
         } else {
             b
