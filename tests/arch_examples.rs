@@ -18,17 +18,18 @@ const ROOMS: &str = r#"homology of the region complex: (Z^2, 0, 0, 0)
 homology of the space (--topological): (Z, 0, 0, 0)
 TM model of dimension 3, cells (0..n) 20 29 13 2
 defects: 10
-  (7:6) the coboundary of 2-cell floor 1 is not a cocircuit: floor 1 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 2-cell ceiling 1 is not a cocircuit: ceiling 1 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 2-cell south 1 is not a cocircuit: south 1 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 2-cell north 1 is not a cocircuit: north 1 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 2-cell west wall is not a cocircuit: west wall occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 2-cell floor 2 is not a cocircuit: floor 2 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 2-cell ceiling 2 is not a cocircuit: ceiling 2 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 2-cell south 2 is not a cocircuit: south 2 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 2-cell north 2 is not a cocircuit: north 2 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 2-cell east wall is not a cocircuit: east wall occurs +1/-0 times in its coboundary
+  (7:6) the coboundary of 2-cell floor 1 is not a cocircuit: it lies on one 3-cell only (taken -1), a free face
+  (7:6) the coboundary of 2-cell ceiling 1 is not a cocircuit: it lies on one 3-cell only (taken +1), a free face
+  (7:6) the coboundary of 2-cell south 1 is not a cocircuit: it lies on one 3-cell only (taken +1), a free face
+  (7:6) the coboundary of 2-cell north 1 is not a cocircuit: it lies on one 3-cell only (taken -1), a free face
+  (7:6) the coboundary of 2-cell west wall is not a cocircuit: it lies on one 3-cell only (taken -1), a free face
+  (7:6) the coboundary of 2-cell floor 2 is not a cocircuit: it lies on one 3-cell only (taken -1), a free face
+  (7:6) the coboundary of 2-cell ceiling 2 is not a cocircuit: it lies on one 3-cell only (taken +1), a free face
+  (7:6) the coboundary of 2-cell south 2 is not a cocircuit: it lies on one 3-cell only (taken +1), a free face
+  (7:6) the coboundary of 2-cell north 2 is not a cocircuit: it lies on one 3-cell only (taken -1), a free face
+  (7:6) the coboundary of 2-cell east wall is not a cocircuit: it lies on one 3-cell only (taken +1), a free face
 closed by the exterior 3-cell: no defect (the defects above are its free faces)
+metrical edit (TM X, tolerance 8e-8): no defect
 passes the edit check
 views of the 2-cells (TM 7:1) and the 3-cells on their sides (TM 7:3):
   floor 1: near room 1 (kitchen), far nothing; boundary 6 1-cells, 6 0-cells
@@ -50,15 +51,16 @@ const FLOOR: &str = r#"homology of the region complex: (Z^2, Z, 0)
 homology of the space (--topological): (Z, Z, 0)
 TM model of dimension 2, cells (0..n) 8 8 1
 defects: 8
-  (7:6) the coboundary of 1-cell e0 is not a cocircuit: e0 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 1-cell e1 is not a cocircuit: e1 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 1-cell e2 is not a cocircuit: e2 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 1-cell e3 is not a cocircuit: e3 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 1-cell e4 is not a cocircuit: e4 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 1-cell e5 is not a cocircuit: e5 occurs +0/-1 times in its coboundary
-  (7:6) the coboundary of 1-cell e6 is not a cocircuit: e6 occurs +1/-0 times in its coboundary
-  (7:6) the coboundary of 1-cell e7 is not a cocircuit: e7 occurs +1/-0 times in its coboundary
+  (7:6) the coboundary of 1-cell e0 is not a cocircuit: it lies on one 2-cell only (taken +1), a free face
+  (7:6) the coboundary of 1-cell e1 is not a cocircuit: it lies on one 2-cell only (taken +1), a free face
+  (7:6) the coboundary of 1-cell e2 is not a cocircuit: it lies on one 2-cell only (taken -1), a free face
+  (7:6) the coboundary of 1-cell e3 is not a cocircuit: it lies on one 2-cell only (taken -1), a free face
+  (7:6) the coboundary of 1-cell e4 is not a cocircuit: it lies on one 2-cell only (taken -1), a free face
+  (7:6) the coboundary of 1-cell e5 is not a cocircuit: it lies on one 2-cell only (taken -1), a free face
+  (7:6) the coboundary of 1-cell e6 is not a cocircuit: it lies on one 2-cell only (taken +1), a free face
+  (7:6) the coboundary of 1-cell e7 is not a cocircuit: it lies on one 2-cell only (taken +1), a free face
 closed by the exterior 2-cell: no defect (the defects above are its free faces)
+metrical edit (TM X, tolerance 8e-8): no defect
 passes the edit check
 views of the 1-cells (TM 7:1) and the 2-cells on their sides (TM 7:3):
   e0: near nothing, far floor (ground floor); boundary 2 0-cells
@@ -137,7 +139,10 @@ fn tm_check_fails_with_the_cells_named() {
     assert_eq!(check.status.code(), Some(1), "{}", stdout(&check));
     let text = stdout(&check);
     assert!(text.contains("defects: 13\n"), "{text}");
-    assert!(text.contains("(7:6) the coboundary of 2-cell door is not a cocircuit: door occurs "), "{text}");
+    assert!(
+        text.contains("(7:6) the coboundary of 2-cell door is not a cocircuit: the 3-cells on it take it "),
+        "{text}"
+    );
     assert!(text.ends_with("fails the edit check\n"), "{text}");
     // a cubical set has no TM model
     let cub = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cubical");

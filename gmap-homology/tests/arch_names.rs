@@ -82,17 +82,18 @@ fn messages_name_regions_as_the_file_does() {
     assert_eq!(msg(unknown), "incidence entry 3 (beam) -> b names the unknown region b");
     let dup = r#"{"regions": [{"id": "a", "dim": 0}, {"id": "a", "dim": 1}], "incidence": []}"#;
     assert_eq!(msg(dup), "duplicate region id a");
-    // signs left out where the faces cannot cancel: a triangle missing an edge
+    // signs left out where the faces cannot cancel: a triangle missing an edge, refused for
+    // what it misses (not for its signs)
     let open = r#"{"regions": [{"id": "a", "dim": 0}, {"id": "b", "dim": 0}, {"id": "c", "dim": 0},
                     {"id": "ab", "dim": 1}, {"id": "bc", "dim": 1}, {"id": "room", "dim": 2}],
                    "incidence": [{"from": "ab", "to": "a"}, {"from": "ab", "to": "b"}, {"from": "bc", "to": "b"},
                     {"from": "bc", "to": "c"}, {"from": "room", "to": "ab"}, {"from": "room", "to": "bc"}]}"#;
     assert_eq!(
         msg(open),
-        "2-region room cannot be oriented: its faces do not cancel at region a; give the incidence weights"
+        "2-region room is not closed: its edges leave the vertices a, c on one of them only, so an edge is missing"
     );
     match read_json(open) {
-        Err(JsonError::Arch(ArchError::CannotOrient { id, dim: 2, .. }, names)) => assert_eq!(names.get(id), "room"),
+        Err(JsonError::Arch(ArchError::BoundaryOpen { id, dim: 2, .. }, names)) => assert_eq!(names.get(id), "room"),
         other => panic!("{other:?}"),
     }
     // some weights given and some left out

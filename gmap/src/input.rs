@@ -64,18 +64,27 @@ impl Kind {
 }
 
 /// Options of [`crate::open_with`].
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[non_exhaustive]
 pub struct OpenOptions {
     /// refuse a map with more darts than this (default: what the memory budget holds); for
     /// a simplicial complex, the limit of its G-map, made when a route asks for it
     pub max_darts: Option<u64>,
+    /// a `.json` complex with points: weld the points within this distance and split the
+    /// edges and faces at T-junctions before reading it (what was done is in
+    /// [`Input::notes`]); without it, a complex whose points do not conform is refused
+    pub snap: Option<f64>,
 }
 
 impl OpenOptions {
     /// Options with a dart limit.
     pub fn max_darts(max_darts: Option<u64>) -> Self {
-        OpenOptions { max_darts }
+        OpenOptions { max_darts, snap: None }
+    }
+
+    /// These options, snapping `.json` points within `eps` (`None`: no snapping).
+    pub fn with_snap(self, eps: Option<f64>) -> Self {
+        OpenOptions { snap: eps, ..self }
     }
 }
 
@@ -123,12 +132,19 @@ pub(crate) struct Source {
     path: PathBuf,
     max_darts: Option<u64>,
     labels_in_file: bool,
+    /// what reading changed (a snapped complex's welds and splits), one line each
+    notes: Vec<String>,
 }
 
 impl Source {
     /// The file `path` opened with `opts`.
     pub(crate) fn file(path: &Path, opts: &OpenOptions) -> Self {
-        Source { path: path.to_path_buf(), max_darts: opts.max_darts, labels_in_file: false }
+        Source { path: path.to_path_buf(), max_darts: opts.max_darts, labels_in_file: false, notes: Vec::new() }
+    }
+
+    /// This source, with what reading changed.
+    pub(crate) fn noting(self, notes: Vec<String>) -> Self {
+        Source { notes, ..self }
     }
 
     /// A `.gmap` file, whose labels are read when first asked for.
@@ -190,6 +206,18 @@ impl Input {
             Input::Cubical(c) => c.path(),
             Input::Image(i) => i.path(),
             Input::Arch(x) => x.path(),
+        }
+    }
+
+    /// What reading changed, one line each: the points welded and the cells split by
+    /// [`OpenOptions::snap`] (empty for anything else).
+    pub fn notes(&self) -> &[String] {
+        match self {
+            Input::Map(m) => &m.source.notes,
+            Input::Simplicial(s) => &s.source.notes,
+            Input::Cubical(c) => &c.source.notes,
+            Input::Image(i) => &i.source.notes,
+            Input::Arch(x) => &x.source.notes,
         }
     }
 

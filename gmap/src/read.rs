@@ -9,6 +9,7 @@ use gmap_ops::import::{self, Image};
 
 use crate::error::{err, Error, ErrorKind, Result};
 use crate::input::{split_lex_name, Input, OpenOptions, Source};
+use gmap_homology::json::JsonOptions;
 
 /// A reader of the registry.
 pub(crate) type ReadFn = fn(&Path, &OpenOptions) -> Result<Input>;
@@ -58,9 +59,9 @@ pub(crate) fn lex(path: &Path, opts: &OpenOptions) -> Result<Input> {
 
 /// `.json`: an architectural complex or incidence graph.
 pub(crate) fn json(path: &Path, opts: &OpenOptions) -> Result<Input> {
-    let x = gmap_homology::json::read_json_file(path)
+    let (x, notes) = gmap_homology::json::read_json_file_with(path, &JsonOptions::snap(opts.snap))
         .map_err(|e| Error::from_source(json_error_kind(&e.error), e).naming_path(path))?;
-    Ok(Input::Arch(Source::file(path, opts).holding(x)))
+    Ok(Input::Arch(Source::file(path, opts).noting(notes).holding(x)))
 }
 
 /// The kind of a `.json` reader's refusal: over the memory limit, or not the format.

@@ -223,12 +223,14 @@ pub struct ArchSpace {
     /// the regions that are not balls: their names (`region 7
     /// ("kitchen")`), ids and Betti numbers
     pub not_balls: Vec<(String, u64, Vec<usize>)>,
+    /// the file's id of each region of `not_balls`: its string id, or its number
+    pub not_ball_ids: Vec<serde_json::Value>,
 }
 
 impl ArchSpace {
     /// The statement for complex `x`. O(Σ closures of the regions).
     pub fn of(x: &gmap_homology::arch::ArchComplex, topological: bool) -> Self {
-        let not_balls = (0..x.regions().len())
+        let not_balls: Vec<(String, u64, Vec<usize>)> = (0..x.regions().len())
             .filter_map(|r| {
                 let betti = x.region_betti(r);
                 // an edge on two vertices is a ball (its boundary is two points), whatever
@@ -238,7 +240,14 @@ impl ArchSpace {
                 (!ball).then(|| (crate::arch_cells::region_name(x, r), x.region(r).id.0, betti))
             })
             .collect();
-        ArchSpace { topological, not_balls }
+        let not_ball_ids = not_balls
+            .iter()
+            .map(|(_, id, _)| {
+                let k = x.index_of(gmap_homology::arch::RegionId(*id));
+                k.and_then(|k| x.region_key(k)).map_or_else(|| json!(id), |key| json!(key))
+            })
+            .collect();
+        ArchSpace { topological, not_balls, not_ball_ids }
     }
 
     /// The lines `gmap homology` prints.
@@ -278,8 +287,12 @@ impl ArchSpace {
     fn add_json(&self, v: &mut serde_json::Value) {
         v["space"] = json!(if self.topological { "topological" } else { "region complex" });
         if !self.topological && !self.not_balls.is_empty() {
-            v["not_balls"] =
-                json!(self.not_balls.iter().map(|(_, id, b)| json!({"region": id, "betti": b})).collect::<Vec<_>>());
+            v["not_balls"] = json!(self
+                .not_balls
+                .iter()
+                .zip(&self.not_ball_ids)
+                .map(|((name, n, b), id)| json!({"region": id, "number": n, "name": name, "betti": b}))
+                .collect::<Vec<_>>());
             v["hint"] = json!("a region is not a ball: --topological gives the groups of the space the regions make");
         }
     }
@@ -608,13 +621,17 @@ fn space_from_json(space: &serde_json::Value, not_balls: Option<&serde_json::Val
             .as_array()?
             .iter()
             .map(|r| {
-                let id = r.get("region")?.as_u64()?;
+                let key = r.get("region")?.clone();
+                let id = r.get("number").and_then(|n| n.as_u64()).or_else(|| key.as_u64())?;
+                let name =
+                    r.get("name").and_then(|n| n.as_str()).map_or_else(|| format!("region {id}"), str::to_string);
                 let betti = r.get("betti")?.as_array()?.iter().map(json_usize).collect::<Option<Vec<_>>>()?;
-                Some((format!("region {id}"), id, betti))
+                Some(((name, id, betti), key))
             })
             .collect::<Option<Vec<_>>>()?,
     };
-    Some(ArchSpace { topological, not_balls })
+    let (not_balls, not_ball_ids) = not_balls.into_iter().unzip();
+    Some(ArchSpace { topological, not_balls, not_ball_ids })
 }
 
 /// A generator read back from its JSON object (`{"dim", "order", "chain"}`).

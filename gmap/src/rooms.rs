@@ -31,7 +31,8 @@ impl Rooms {
     pub fn to_text(&self) -> String {
         let [v, e, f] = self.counts;
         let mut s = format!("faces {f}, edges {e}, vertices {v}\n");
-        let _ = writeln!(s, "3-cells {}: {} rooms and the outer cell", self.rooms.len() + 1, self.rooms.len());
+        let n = self.rooms.len();
+        let _ = writeln!(s, "3-cells {}: {n} {} and the outer cell", n + 1, if n == 1 { "room" } else { "rooms" });
         for (name, faces, volume, next) in &self.rooms {
             let next = if next.is_empty() { "no other room".to_string() } else { next.join(", ") };
             let _ = writeln!(s, "{name}: {faces} faces, volume {volume}; next to {next}");
@@ -140,8 +141,38 @@ pub fn rooms_of(path: &Path) -> Result<Rooms> {
                 .map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
         }
     }
+    if let Some((x, regions)) = &source {
+        complex =
+            keep_names(complex, x, regions, &cells, counts).map_err(|e| Error::from_source(ErrorKind::Compute, e))?;
+    }
     let rooms = describe(&cells, &complex, counts);
     Ok(Rooms { complex, counts, rooms })
+}
+
+/// The rooms found keep the id and labels of the input's 3-region with the same faces, and
+/// the vertices the ids of the input's vertices (`regions`: the input region of each face).
+fn keep_names(
+    mut complex: ArchComplex,
+    x: &ArchComplex,
+    regions: &[usize],
+    cells: &Cells,
+    [nv, ne, nf]: [usize; 3],
+) -> std::result::Result<ArchComplex, gmap_homology::arch::ArchError> {
+    for (i, &v) in x.regions_of_dim(0).iter().enumerate() {
+        if let Some(key) = x.region_key(v as usize) {
+            complex = complex.with_region_key(RegionId(i as u64), key.to_string())?;
+        }
+    }
+    let given: Vec<(BTreeSet<usize>, usize)> =
+        x.regions_of_dim(3).iter().map(|&q| (x.down(q as usize).iter().map(|e| e.to).collect(), q as usize)).collect();
+    for (r, room) in cells.rooms().enumerate() {
+        let faces: BTreeSet<usize> = room.iter().map(|&(f, _)| regions[f]).collect();
+        let Some(&(_, q)) = given.iter().find(|g| g.0 == faces) else { continue };
+        let id = RegionId((nv + ne + nf + r) as u64);
+        let key = x.region_key(q).map_or_else(|| x.region(q).id.to_string(), str::to_string);
+        complex = complex.with_region_key(id, key)?.with_region_labels(id, x.region_labels(q).clone())?;
+    }
+    Ok(complex)
 }
 
 fn describe(cells: &Cells, x: &ArchComplex, [nv, ne, nf]: [usize; 3]) -> Vec<(String, usize, f64, Vec<String>)> {

@@ -14,6 +14,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use gmap_homology::arch::Shape;
+use gmap_homology::json;
 use gmap_homology::tm::{SignedSet, TmDefect, TmModel};
 
 use crate::error::{err, Error, ErrorKind, Result};
@@ -58,7 +60,7 @@ fn named(input: &Input) -> Result<Named> {
 }
 
 /// What [`tm_check`] found.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct TmCheck {
     /// the model's dimension n
@@ -70,18 +72,26 @@ pub struct TmCheck {
     /// when the model is open (free (n-1)-cells only): the defects left once the exterior
     /// n-cell closes it
     pub closed: Option<Vec<String>>,
+    /// the metrical edit (TM §X) of a model with points: its tolerance and every failed
+    /// continuity or non-intersection condition, cells by name; `None` without points
+    pub metric: Option<(f64, Vec<String>)>,
 }
 
 impl TmCheck {
     /// Whether the model passes the edit check, as given or once closed by its exterior.
     pub fn passes(&self) -> bool {
-        self.defects.is_empty() || self.closed.as_ref().is_some_and(Vec::is_empty)
+        let metric = self.metric.as_ref().is_none_or(|m| m.1.is_empty());
+        metric && (self.defects.is_empty() || self.closed.as_ref().is_some_and(Vec::is_empty))
     }
 
     /// The report, one line per defect.
     pub fn to_text(&self) -> String {
         let counts: Vec<String> = self.counts.iter().map(usize::to_string).collect();
-        let mut s = format!("TM model of dimension {}, cells (0..n) {}\n", self.dim, counts.join(" "));
+        let mut s = if counts.is_empty() {
+            "TM model: none (the file is not a complex)\n".to_string()
+        } else {
+            format!("TM model of dimension {}, cells (0..n) {}\n", self.dim, counts.join(" "))
+        };
         let _ = writeln!(s, "defects: {}", self.defects.len());
         for d in &self.defects {
             let _ = writeln!(s, "  {d}");
@@ -102,8 +112,30 @@ impl TmCheck {
             }
             None => {}
         }
+        if let Some((tol, m)) = &self.metric {
+            match m.len() {
+                0 => {
+                    let _ = writeln!(s, "metrical edit (TM X, tolerance {tol:e}): no defect");
+                }
+                k => {
+                    let _ = writeln!(s, "metrical edit (TM X, tolerance {tol:e}): {k} defects");
+                }
+            }
+            for d in m {
+                let _ = writeln!(s, "  {d}");
+            }
+        }
         s.push_str(if self.passes() { "passes the edit check\n" } else { "fails the edit check\n" });
         s
+    }
+}
+
+/// How the n-cells on a cell take it: `+1`, `-1`, `+2/-1`.
+fn taken(plus: u64, minus: u64) -> String {
+    match (plus, minus) {
+        (p, 0) => format!("+{p}"),
+        (0, m) => format!("-{m}"),
+        (p, m) => format!("+{p}/-{m}"),
     }
 }
 
@@ -116,10 +148,25 @@ fn describe(d: &TmDefect, t: &TmModel, names: &dyn Fn(usize) -> String) -> Strin
             name(cell),
             name(at)
         ),
-        TmDefect::CoboundaryNotCocircuit { cell, dim, at, plus, minus } => format!(
-            "(7:6) the coboundary of {dim}-cell {} is not a cocircuit: {} occurs +{plus}/-{minus} times in its coboundary",
+        TmDefect::CoboundaryNotCocircuit { cell, dim, at, plus, minus } if at == cell && plus + minus == 1 => {
+            format!(
+                "(7:6) the coboundary of {dim}-cell {} is not a cocircuit: it lies on one {}-cell only (taken {}), a free face",
+                name(cell),
+                dim + 1,
+                taken(plus, minus)
+            )
+        }
+        TmDefect::CoboundaryNotCocircuit { cell, dim, at, plus, minus } if at == cell => format!(
+            "(7:6) the coboundary of {dim}-cell {} is not a cocircuit: the {}-cells on it take it {}, not once each way",
             name(cell),
-            name(at)
+            dim + 1,
+            taken(plus, minus)
+        ),
+        TmDefect::CoboundaryNotCocircuit { cell, dim, at, plus, minus } => format!(
+            "(7:6) the coboundary of {dim}-cell {} is not a cocircuit: {} occurs {} times in the coboundary of its coboundary",
+            name(cell),
+            name(at),
+            taken(plus, minus)
         ),
         ref other => other.to_string(),
     }
@@ -151,12 +198,45 @@ pub fn tm_check(input: &Input) -> Result<TmCheck> {
     } else {
         None
     };
-    Ok(TmCheck { dim, counts, defects: text, closed })
+    let metric = match input {
+        Input::Arch(x) if (0..x.regions().len()).any(|k| x.region_point(k).is_some()) => {
+            let shape = Shape::of(x);
+            let names = x.region_names();
+            Some((shape.tolerance(), shape.defects().iter().map(|d| d.named(&names).to_string()).collect()))
+        }
+        _ => None,
+    };
+    Ok(TmCheck { dim, counts, defects: text, closed, metric })
 }
 
-/// [`tm_check`] of the file at `path`.
+/// [`tm_check`] of the file at `path`. A `.json` complex whose points do not conform is
+/// read all the same and its metrical defects listed (the reader refuses it); one that
+/// cannot be read as a complex at all has that as its one topological defect.
 pub fn tm_check_file(path: impl AsRef<Path>) -> Result<TmCheck> {
-    tm_check(&crate::open(path.as_ref())?)
+    let path = path.as_ref();
+    if path.extension().and_then(|e| e.to_str()) != Some("json") || !path.is_file() {
+        return tm_check(&crate::open(path)?);
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| err!(Parse, "{}: cannot read: {e}", path.display()))?;
+    let parse = |e: json::JsonError| Error::from_source(ErrorKind::Parse, e).context(path.display().to_string());
+    let (found, names, tol) = json::json_metric_defects(&text).map_err(parse)?;
+    let metric = (!names.is_empty() || !found.is_empty())
+        .then(|| (tol, found.iter().map(|d| d.named(&names).to_string()).collect()));
+    match json::read_json_with(&text, &json::JsonOptions::accepting_nonconforming()) {
+        Ok((x, _)) => {
+            let input = Input::Arch(crate::Sourced::new(x));
+            let mut c = tm_check(&input)?;
+            c.metric = c.metric.map(|m| (m.0, metric.map_or(m.1, |x| x.1)));
+            Ok(c)
+        }
+        Err(e) => Ok(TmCheck {
+            dim: 0,
+            counts: Vec::new(),
+            defects: vec![format!("the file is not a complex: {e}")],
+            closed: None,
+            metric,
+        }),
+    }
 }
 
 /// The signed occurrences of a cell, `+1`, `-1`, `+1/-1`.

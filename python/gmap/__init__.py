@@ -46,14 +46,24 @@ from ._gmap import (
     _page_frame,
     edge_width,
     face_width,
-    homology,
+    homology as _homology,
     max_memory,
-    open,
+    open as _open,
     persistence,
     set_max_memory,
     shortest_non_contractible_cycle,
 )
 from . import build, mesh
+from .arch import (
+    SnapWarning,
+    arch_homology as _arch_homology,
+    arch_incidence_graph as _arch_incidence_graph,
+    open_snapped as _open_snapped,
+    room_graph,
+    rooms,
+    tm_check,
+    tm_views,
+)
 
 # the bridges to meshio and pyvista (gmap.mesh), as methods of GMap where the type takes them
 try:
@@ -77,6 +87,7 @@ __all__ = [
     "ParseError",
     "PreconditionError",
     "SimplicialComplex",
+    "SnapWarning",
     "ValidityError",
     "bench",
     "build",
@@ -88,8 +99,12 @@ __all__ = [
     "mesh",
     "open",
     "persistence",
+    "room_graph",
+    "rooms",
     "set_max_memory",
     "shortest_non_contractible_cycle",
+    "tm_check",
+    "tm_views",
 ]
 
 __version__ = "0.1.0"
@@ -124,17 +139,49 @@ for _cls in (GMap, SimplicialComplex, CubicalSet, Image, ArchComplex):
 del _cls
 
 
-def incidence_graph(m: GMap) -> Any:
-    """The incidence graph of a map's cells as a ``networkx.Graph``.
+def open(path: Any, snap: "float | None" = None) -> Any:
+    """open(path, snap=None): what the file holds, in the class its format's kind names (a
+    GMap, SimplicialComplex, CubicalSet, Image or ArchComplex). ``snap=EPS`` (a ``.json``
+    complex with points): weld the points closer than EPS and split the edges and faces at
+    T-junctions, each weld and split issued as a ``SnapWarning``; without it such a complex
+    is refused naming the place (``gmap --snap EPS``)."""
+    if snap is None:
+        return _open(path)
+    return _open_snapped(path, snap)
 
-    Nodes are ``(i, c)`` for the i-cell numbered ``c`` (the order of ``m.cells(i)``), with
-    the attributes ``dim`` and ``dart`` (one of its darts); an edge joins an i-cell to each
-    (i+1)-cell it bounds. Needs networkx (``pip install networkx``).
+
+def homology(x: Any, *, topological: bool = False, **options: Any) -> Homology:
+    """homology(x, *, field=None, generators=False, method=None, periodic=False,
+    level=None, topological=False): the homology groups of ``x`` (see the compiled
+    ``homology``). ``topological=True`` (an ArchComplex or ``.json`` path): the groups of
+    the space the regions make, as ``gmap homology --topological``."""
+    if not topological:
+        return _homology(x, **options)
+    unknown = set(options) - {"generators", "field"}
+    if unknown:
+        raise TypeError(f"homology(topological=True) takes generators= and field= only, not {sorted(unknown)}")
+    return _arch_homology(x, True, bool(options.get("generators", False)), options.get("field"))
+
+
+homology.__doc__ = (homology.__doc__ or "") + "\n\n" + (_homology.__doc__ or "")
+
+
+def incidence_graph(m: Any) -> Any:
+    """The incidence graph of a map's cells as a ``networkx.Graph``, or of an ArchComplex's
+    regions as a ``networkx.DiGraph``.
+
+    For a map, nodes are ``(i, c)`` for the i-cell numbered ``c`` (the order of
+    ``m.cells(i)``), with the attributes ``dim`` and ``dart`` (one of its darts); an edge
+    joins an i-cell to each (i+1)-cell it bounds. For an ArchComplex, nodes are the file's
+    region ids with ``dim``, ``name`` and the labels, edges the defined entries with their
+    ``weight``. Needs networkx (``pip install networkx``).
     """
     try:
         import networkx as nx
     except ImportError as e:  # pragma: no cover - depends on the environment
         raise ImportError("gmap.incidence_graph needs networkx: pip install networkx") from e
+    if isinstance(m, ArchComplex):
+        return _arch_incidence_graph(m)
     g = nx.Graph()
     for i in range(m.dim + 1):
         for c, d in enumerate(m.cells(i).tolist()):
@@ -144,6 +191,7 @@ def incidence_graph(m: GMap) -> Any:
 
 
 GMap.incidence_graph = incidence_graph  # type: ignore[attr-defined]
+ArchComplex.incidence_graph = incidence_graph  # type: ignore[attr-defined]
 
 
 def _facets_of(path: str) -> "list[list[int]] | None":

@@ -19,6 +19,7 @@ use pyo3::prelude::*;
 use pyo3::sync::GILOnceCell;
 use pyo3::types::{PyList, PyString, PyTuple};
 
+mod arch;
 mod curves;
 mod errors;
 mod gmapobj;
@@ -174,6 +175,19 @@ fn chain_arrays(py: Python<'_>, chain: &Chain) -> PyResult<(PyObject, PyObject, 
         Some(CellName::Region(_)) => {
             let ids: Vec<u64> = chain.iter().map(|(c, _)| if let CellName::Region(r) = c { r } else { 0 }).collect();
             (ids.to_pyarray(py).into_any().unbind(), py.None())
+        }
+        // regions the file names: their string id (else their name label, else their number)
+        Some(CellName::NamedRegion { .. }) => {
+            let l = PyList::empty(py);
+            for (c, _) in chain.iter() {
+                match c {
+                    CellName::NamedRegion { key: Some(k), .. } => l.append(k)?,
+                    CellName::NamedRegion { name: Some(n), .. } => l.append(n)?,
+                    CellName::NamedRegion { id, .. } | CellName::Region(id) => l.append(id.to_string())?,
+                    _ => {}
+                }
+            }
+            (l.into_any().unbind(), py.None())
         }
         _ => {
             let l = PyList::empty(py);
@@ -602,6 +616,11 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_build_solid_torus, m)?)?;
     m.add_function(wrap_pyfunction!(_build_surface, m)?)?;
     m.add_function(wrap_pyfunction!(_build_from_facets, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_open_arch, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_arch_homology, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_tm_check, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_tm_views, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_rooms, m)?)?;
     Ok(())
 }
 

@@ -92,6 +92,26 @@ struct Limits {
     max_cells: Option<u64>,
 }
 
+/// Snapping a `.json` complex with points.
+#[derive(Args, Debug, Clone, Copy)]
+pub(crate) struct SnapArg {
+    /// a .json complex with points: weld the points closer than EPS and split the edges and
+    /// faces where a point or an edge lies inside them (T-junctions), printing on stderr
+    /// what was welded and split; without it such a complex is refused naming the place
+    #[arg(long, value_name = "EPS")]
+    snap: Option<f64>,
+}
+
+/// Opens `file` with the dart limit and the snapping asked for; says on stderr what
+/// snapping changed.
+pub(crate) fn open_snapped(file: &std::path::Path, max_darts: Option<u64>, snap: SnapArg) -> gmap::Result<gmap::Input> {
+    let input = gmap::open_with(file, &gmap::OpenOptions::max_darts(max_darts).with_snap(snap.snap))?;
+    for n in input.notes() {
+        eprintln!("snap: {n}");
+    }
+    Ok(input)
+}
+
 #[derive(Args, Debug)]
 struct InfoArgs {
     #[arg(help = input_help("the input file"))]
@@ -101,6 +121,8 @@ struct InfoArgs {
     json: bool,
     #[command(flatten)]
     limits: Limits,
+    #[command(flatten)]
+    snap: SnapArg,
     #[arg(long, help = format!("for a cubical set ({}): identify the opposite faces of its box", gmap::formats::extensions_of(&[gmap::Kind::Cubical, gmap::Kind::Image])))]
     periodic: bool,
     #[arg(long = "box", value_name = "BOX", value_parser = parse_cubical_box, help = box_help())]
@@ -138,6 +160,8 @@ struct HomologyArgs {
     topological: bool,
     #[command(flatten)]
     limits: Limits,
+    #[command(flatten)]
+    snap: SnapArg,
     /// simplicial complexes: direct (default: every face a cell) or gmap (through the G-map)
     #[arg(long, value_enum)]
     via: Option<Via>,
@@ -302,7 +326,7 @@ fn exit_after_error(e: &gmap::Error) -> ExitCode {
 fn info(a: InfoArgs, quiet: bool) -> gmap::Result<String> {
     let progress = gmap::Progress::stderr("gmap info", quiet);
     progress.stage("reading");
-    let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts))?;
+    let input = open_snapped(&a.file, a.limits.max_darts, a.snap)?;
     let mut o = gmap::InfoOptions::default();
     (o.max_darts, o.periodic, o.level, o.progress) = (a.limits.max_darts, a.periodic, a.level, progress.clone());
     o.max_cells = a.limits.max_cells;
@@ -329,14 +353,16 @@ fn homology(a: HomologyArgs, quiet: bool) -> gmap::Result<gmap::Report> {
     o.max_generator_cells = a.max_generator_cells;
     o.cubical_box = a.cubical_box;
     o.progress = gmap::Progress::stderr("gmap homology", quiet);
-    let report = if a.timings {
+    let report = if a.timings || a.snap.snap.is_some() {
         // the two stages apart: reading (an image: its header and a map) and homology
         let t = std::time::Instant::now();
-        let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts));
+        let input = open_snapped(&a.file, a.limits.max_darts, a.snap);
         let read = t.elapsed().as_secs_f64();
         let t = std::time::Instant::now();
         let report = input.and_then(|input| gmap::homology(&input, &o));
-        eprintln!("timings: read {read:.6} s, homology {:.6} s", t.elapsed().as_secs_f64());
+        if a.timings {
+            eprintln!("timings: read {read:.6} s, homology {:.6} s", t.elapsed().as_secs_f64());
+        }
         report
     } else {
         gmap::homology_file(&a.file, &o)

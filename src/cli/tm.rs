@@ -27,6 +27,8 @@ pub struct TmArgs {
 pub struct TmFile {
     /// the model: an architectural complex (.json) or a G-map (.gmap, .moka, .off, meshes)
     file: PathBuf,
+    #[command(flatten)]
+    snap: super::SnapArg,
 }
 
 #[derive(Args, Debug)]
@@ -36,13 +38,20 @@ pub struct TmViewsArgs {
     /// one cell, by its name, its string id or its number
     #[arg(long)]
     cell: Option<String>,
+    #[command(flatten)]
+    snap: super::SnapArg,
 }
 
 /// Runs `gmap tm …`: prints the report; the exit code is 1 for an error or a failed check.
 pub fn run(a: TmArgs) -> ExitCode {
     let done = match a.command {
+        TmCommand::Check(f) if f.snap.snap.is_some() => super::open_snapped(&f.file, None, f.snap)
+            .and_then(|i| gmap::tm_check(&i))
+            .map(|c| (c.to_text(), c.passes())),
         TmCommand::Check(f) => gmap::tm_check_file(&f.file).map(|c| (c.to_text(), c.passes())),
-        TmCommand::Views(v) => gmap::tm_views_file(&v.file, v.cell.as_deref()).map(|t| (t, true)),
+        TmCommand::Views(v) => super::open_snapped(&v.file, None, v.snap)
+            .and_then(|i| gmap::tm_views(&i, v.cell.as_deref()))
+            .map(|t| (t, true)),
     };
     match done {
         Ok((text, ok)) => {

@@ -24,12 +24,14 @@ pub(super) struct ViewArgs {
     color_by: Option<String>,
     #[command(flatten)]
     limits: Limits,
+    #[command(flatten)]
+    snap: super::SnapArg,
 }
 
 pub(super) fn view(a: ViewArgs, quiet: bool) -> gmap::Result<String> {
     let progress = gmap::Progress::stderr("gmap view", quiet);
     progress.stage("reading");
-    let input = gmap::open_with(&a.file, &gmap::OpenOptions::max_darts(a.limits.max_darts))?;
+    let input = super::open_snapped(&a.file, a.limits.max_darts, a.snap)?;
     let mut o = gmap::ViewOptions::default();
     (o.generators, o.color_by) = (a.generators, a.color_by);
     progress.stage("building the page");

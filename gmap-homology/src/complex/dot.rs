@@ -37,8 +37,9 @@ fn quote(s: &mut String, t: &str) {
     s.push('"');
 }
 
-/// The Graphviz text of the incidence graph; nodes are named `r<id>`, ranked by dimension
-/// (higher dimensions on top).
+/// The Graphviz text of the incidence graph; nodes are named `r<id>` (the region's number),
+/// ranked by dimension (higher dimensions on top), labelled by their `name` label or else
+/// their string id, and carry the string id as the attribute `"id"`.
 pub fn write_dot(x: &ArchComplex) -> String {
     let mut s = String::with_capacity(24 * (x.regions().len() + x.entries().len()) + 64);
     s.push_str("digraph incidence {\n  rankdir=TB;\n");
@@ -57,12 +58,18 @@ pub fn write_dot(x: &ArchComplex) -> String {
         let labels = x.region_labels(k);
         let _ = write!(s, "  r{} [label=", r.id);
         // the name, when there is one, on a line above the dimension
-        match labels.get("name") {
-            Some(LabelValue::Text(t)) => quote(&mut s, &format!("{t}\n{}", r.dim)),
-            Some(v) => quote(&mut s, &format!("{v}\n{}", r.dim)),
-            None => {
+        match (labels.get("name"), x.region_key(k)) {
+            (Some(LabelValue::Text(t)), _) => quote(&mut s, &format!("{t}\n{}", r.dim)),
+            (Some(v), _) => quote(&mut s, &format!("{v}\n{}", r.dim)),
+            (None, Some(key)) => quote(&mut s, &format!("{key}\n{}", r.dim)),
+            (None, None) => {
                 let _ = write!(s, "\"{}\"", r.dim);
             }
+        }
+        // the file's string id, which the node's name r<number> stands for
+        if let Some(key) = x.region_key(k) {
+            s.push_str(", \"id\"=");
+            quote(&mut s, key);
         }
         for (name, v) in labels.iter().filter(|(n, _)| *n != "name") {
             s.push_str(", ");

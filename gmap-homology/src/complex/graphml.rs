@@ -2,7 +2,8 @@
 //! networkx (`read_graphml`), Gephi, yEd and igraph read: one node per region (cell), one
 //! directed edge per defined entry, from the higher region to the lower one.
 //!
-//! A node's GraphML id is `r<id>` (the region's id) and it carries `dim` (its dimension);
+//! A node's GraphML id is `r<id>` (the region's number; an XML name token) and it carries
+//! `id` (the region's id in the file: its string id, or its number) and `dim` (its dimension);
 //! every edge carries `weight` (the signed incidence number). Each label name of the regions ([`ArchComplex::region_labels`]) is a node key
 //! of its own, typed by its values: `long` when every value given is an integer, `double`
 //! when every value is a number, else `string` (numbers then in their `.gmap` text form);
@@ -14,7 +15,7 @@
 //! use gmap_homology::graphml::write_graphml;
 //! let x = ArchComplex::try_from_ids(1, &[(0, 0), (1, 1)], &[(1, 0, -1)]).unwrap();
 //! let g = write_graphml(&x);
-//! assert!(g.contains(r#"<node id="r0"><data key="dim">0</data></node>"#));
+//! assert!(g.contains(r#"<node id="r0"><data key="id">0</data><data key="dim">0</data></node>"#));
 //! assert!(g.contains(r#"<edge source="r1" target="r0"><data key="weight">-1</data></edge>"#));
 //! ```
 //!
@@ -84,6 +85,7 @@ pub fn write_graphml(x: &ArchComplex) -> String {
     let mut s = String::with_capacity(64 * (x.regions().len() + x.entries().len()) + 512);
     s.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     s.push_str("<graphml xmlns=\"http://graphml.graphdrawing.org/xmlns\" xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xsi:schemaLocation=\"http://graphml.graphdrawing.org/xmlns http://graphml.graphdrawing.org/xmlns/1.0/graphml.xsd\">\n");
+    s.push_str("  <key id=\"id\" for=\"node\" attr.name=\"id\" attr.type=\"string\"/>\n");
     s.push_str("  <key id=\"dim\" for=\"node\" attr.name=\"dim\" attr.type=\"int\"/>\n");
     for (k, (name, t)) in keys.iter().enumerate() {
         let _ = write!(s, "  <key id=\"l{k}\" for=\"node\" attr.name=\"");
@@ -93,7 +95,14 @@ pub fn write_graphml(x: &ArchComplex) -> String {
     s.push_str("  <key id=\"weight\" for=\"edge\" attr.name=\"weight\" attr.type=\"long\"/>\n");
     s.push_str("  <graph id=\"incidence\" edgedefault=\"directed\">\n");
     for (k, r) in x.regions().iter().enumerate() {
-        let _ = write!(s, "    <node id=\"r{}\"><data key=\"dim\">{}</data>", r.id, r.dim);
+        let _ = write!(s, "    <node id=\"r{}\"><data key=\"id\">", r.id);
+        match x.region_key(k) {
+            Some(key) => escape(&mut s, key),
+            None => {
+                let _ = write!(s, "{}", r.id);
+            }
+        }
+        let _ = write!(s, "</data><data key=\"dim\">{}</data>", r.dim);
         for (name, v) in x.region_labels(k).iter() {
             let key = keys.iter().position(|(n, _)| n == name).expect("collected above");
             let _ = write!(s, "<data key=\"l{key}\">");

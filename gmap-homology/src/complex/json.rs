@@ -32,7 +32,15 @@
 //! assert_eq!(read_json(&write_json(&x)).unwrap(), x);
 //! ```
 //!
-//! Both directions are O(R + E) (plus the validation of Def. 3.1).
+//! Points (`"point": [x, y, z]` on 0-regions) make the complex metrical: the reader refuses
+//! one that does not conform ([`JsonError::NotConforming`]: the same point twice, a
+//! T-junction, crossing edges; [`crate::arch::Shape`], TM §X) naming the cells, unless
+//! [`JsonOptions::snap`] welds the points and splits the cells first
+//! ([`crate::arch::snap`]). Regions whose signs are left out and whose boundary is open (a
+//! room missing its roof or a party wall) are refused by [`ArchError::BoundaryOpen`].
+//!
+//! Both directions are O(R + E) (plus the validation of Def. 3.1 and the metrical check,
+//! near-linear with its spatial grid).
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -43,7 +51,9 @@ use thiserror::Error;
 
 use gmap_core::{LabelValue, Labels};
 
-use crate::complex::arch::{orient_entries, ArchComplex, ArchError, Region, RegionId, RegionNames};
+use crate::complex::arch::{
+    orient_entries, ArchComplex, ArchError, MetricDefect, Region, RegionId, RegionNames, Shape,
+};
 
 /// Why a `.json` text is not an architectural complex.
 #[derive(Debug, Error)]
@@ -87,6 +97,56 @@ pub enum JsonError {
     /// are the file's (its ids, strings or numbers, and `name` labels).
     #[error("{}", .0.named(.1))]
     Arch(ArchError, Box<RegionNames>),
+    /// The points do not make a conforming complex (TM §X): every defect found, within
+    /// the tolerance, cells named as the file names them.
+    #[error("{}", not_conforming(.defects, .names, *.tolerance))]
+    NotConforming {
+        /// what fails, in the order found
+        defects: Vec<MetricDefect>,
+        /// the file's names of the regions
+        names: Box<RegionNames>,
+        /// the tolerance of the decisions
+        tolerance: f64,
+    },
+    /// `snap` was asked for a complex that cannot be snapped (weights given, a split it
+    /// cannot make), or with a tolerance that is not a finite positive real.
+    #[error("cannot snap: {0}")]
+    Snap(String),
+}
+
+fn not_conforming(defects: &[MetricDefect], names: &RegionNames, tol: f64) -> String {
+    let mut s = format!("the points do not make a conforming complex (tolerance {tol:e}): ");
+    let list: Vec<String> = defects.iter().take(5).map(|d| d.named(names).to_string()).collect();
+    s.push_str(&list.join("; "));
+    if defects.len() > 5 {
+        let _ = write!(s, "; and {} more", defects.len() - 5);
+    }
+    s.push_str(" (snapping welds near points and splits the cells at T-junctions: `--snap EPS`, `snap=` in Python)");
+    s
+}
+
+/// How [`read_json_with`] reads a complex with points.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[non_exhaustive]
+pub struct JsonOptions {
+    /// weld the points within this distance and split edges and faces where a point or an
+    /// edge lies inside them ([`crate::arch::snap`]), before the metrical check
+    pub snap: Option<f64>,
+    /// read a complex whose points do not conform instead of refusing it (for the
+    /// metrical edit check, which lists every defect)
+    pub accept_nonconforming: bool,
+}
+
+impl JsonOptions {
+    /// Options that snap within `eps` (`None`: no snapping).
+    pub fn snap(eps: Option<f64>) -> Self {
+        JsonOptions { snap: eps, accept_nonconforming: false }
+    }
+
+    /// Options that read a complex whose points do not conform.
+    pub fn accepting_nonconforming() -> Self {
+        JsonOptions { snap: None, accept_nonconforming: true }
+    }
 }
 
 impl From<ArchError> for JsonError {
@@ -274,12 +334,18 @@ fn point(v: &[f64], index: usize) -> Result<[f64; 3], JsonError> {
 /// Well-formed input is deserialised straight into typed records (no intermediate tree);
 /// anything else is parsed again as a JSON tree to say exactly which field is wrong.
 pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
+    read_json_with(text, &JsonOptions::default()).map(|x| x.0)
+}
+
+/// [`read_json`] with options: snapping, or accepting a complex whose points do not
+/// conform. Returns the complex and, when snapped, one line per point welded and cell split.
+pub fn read_json_with(text: &str, o: &JsonOptions) -> Result<(ArchComplex, Vec<String>), JsonError> {
     if let Some(d) = crate::complex::unique_keys::find_duplicate(text) {
         return Err(JsonError::DuplicateKey { key: d.key, line: d.line, column: d.column });
     }
     let raw: Raw = match serde_json::from_str(text) {
         Ok(raw) => raw,
-        Err(_) => return build(read_json_slow(text)?),
+        Err(_) => return build(read_json_slow(text)?, o),
     };
     let mut p = Parsed {
         dim: match raw.dimension {
@@ -305,12 +371,22 @@ pub fn read_json(text: &str) -> Result<ArchComplex, JsonError> {
             p.points.push((index, point(v, index)?));
         }
     }
-    build(p)
+    build(p, o)
 }
 
 /// The complex of what the file says: string ids numbered after the largest number used,
 /// signs left out chosen, errors naming regions as the file does.
-fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
+/// The regions, names, entries and points of what the file says, ids numbered.
+struct Numbered {
+    regions: Vec<Region>,
+    names: RegionNames,
+    entries: Vec<(RegionId, RegionId, Option<i64>)>,
+    pts: std::collections::HashMap<RegionId, [f64; 3]>,
+    /// the first id not in use
+    next: u64,
+}
+
+fn number_all(p: &Parsed) -> Result<Numbered, JsonError> {
     let mut next = p
         .regions
         .iter()
@@ -358,10 +434,44 @@ fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
     for (f, t, w) in &p.entries {
         entries.push((number(f, &mut names)?, number(t, &mut names)?, *w));
     }
-    let wrap = |e: ArchError| JsonError::Arch(e, Box::new(names.clone()));
+    let pts = p.points.iter().map(|&(k, q)| (regions[k].id, q)).collect();
+    Ok(Numbered { regions, names, entries, pts, next })
+}
+
+/// The metrical defects of a `.json` text read without orienting or validating it (the
+/// metrical edit of `gmap tm check`, which must name the defects of a complex that the
+/// reader refuses), with the file's names and the tolerance.
+pub fn json_metric_defects(text: &str) -> Result<(Vec<MetricDefect>, RegionNames, f64), JsonError> {
+    if let Some(d) = crate::complex::unique_keys::find_duplicate(text) {
+        return Err(JsonError::DuplicateKey { key: d.key, line: d.line, column: d.column });
+    }
+    let n = number_all(&read_json_slow(text)?)?;
+    let shape = Shape::new(&n.regions, n.entries.iter().map(|e| (e.0, e.1)), &n.pts);
+    Ok((shape.defects(), n.names, shape.tolerance()))
+}
+
+fn build(mut p: Parsed, o: &JsonOptions) -> Result<(ArchComplex, Vec<String>), JsonError> {
+    let Numbered { mut regions, mut names, mut entries, mut pts, next } = number_all(&p)?;
     let dim = p.dim.unwrap_or_else(|| regions.iter().map(|r| r.dim).max().unwrap_or(0));
-    let pts: std::collections::HashMap<RegionId, [f64; 3]> =
-        p.points.iter().map(|&(k, q)| (regions[k].id, q)).collect();
+    let mut report = Vec::new();
+    if let Some(eps) = o.snap {
+        let s = crate::complex::arch::snap(eps, &regions, &entries, &pts, &names, next).map_err(JsonError::Snap)?;
+        report = s.report;
+        apply_snap(&mut p, &mut regions, &mut names, &s.removed, s.added);
+        (entries, pts) = (s.entries, s.points);
+    }
+    if !o.accept_nonconforming && !pts.is_empty() {
+        let defects = Shape::new(&regions, entries.iter().map(|e| (e.0, e.1)), &pts);
+        let list = defects.defects();
+        if !list.is_empty() {
+            return Err(JsonError::NotConforming {
+                defects: list,
+                names: Box::new(names),
+                tolerance: defects.tolerance(),
+            });
+        }
+    }
+    let wrap = |e: ArchError| JsonError::Arch(e, Box::new(names.clone()));
     let entries = if entries.iter().any(|e| e.2.is_none()) {
         orient_entries(dim, &regions, &entries, &pts).map_err(wrap)?
     } else {
@@ -375,15 +485,53 @@ fn build(p: Parsed) -> Result<ArchComplex, JsonError> {
     for (k, l) in p.labels {
         x = x.with_region_labels(ids[k], l).map_err(wrap)?;
     }
-    for (k, q) in p.points {
-        x = x.with_region_point(ids[k], q).map_err(wrap)?;
+    for (&id, &q) in &pts {
+        x = x.with_region_point(id, q).map_err(wrap)?;
     }
     for (k, (key, _)) in p.regions.into_iter().enumerate() {
         if let Key::Str(t) = key {
             x = x.with_region_key(ids[k], t).map_err(wrap)?;
         }
     }
-    Ok(x)
+    Ok((x, report))
+}
+
+/// The file's regions after snapping: the welded regions gone (with their Betti numbers,
+/// labels and points), the new pieces added with the labels of the cell they were cut from
+/// and keys `"<key>.<k>"`.
+fn apply_snap(
+    p: &mut Parsed,
+    regions: &mut Vec<Region>,
+    names: &mut RegionNames,
+    removed: &std::collections::HashSet<RegionId>,
+    added: Vec<(Region, RegionId, String)>,
+) {
+    let keep: Vec<bool> = regions.iter().map(|r| !removed.contains(&r.id)).collect();
+    let mut new_index = vec![usize::MAX; regions.len()];
+    let mut n = 0;
+    for (k, &kept) in keep.iter().enumerate() {
+        if kept {
+            new_index[k] = n;
+            n += 1;
+        }
+    }
+    let remap = |k: usize| (new_index[k] != usize::MAX).then_some(new_index[k]);
+    p.betti = std::mem::take(&mut p.betti).into_iter().filter_map(|(k, b)| Some((remap(k)?, b))).collect();
+    p.labels = std::mem::take(&mut p.labels).into_iter().filter_map(|(k, l)| Some((remap(k)?, l))).collect();
+    p.regions = std::mem::take(&mut p.regions).into_iter().zip(&keep).filter(|x| *x.1).map(|x| x.0).collect();
+    regions.retain(|r| !removed.contains(&r.id));
+    let index: std::collections::HashMap<RegionId, usize> =
+        regions.iter().enumerate().map(|(k, r)| (r.id, k)).collect();
+    for (r, from, key) in added.into_iter().filter(|a| !removed.contains(&a.0.id)) {
+        if let Some(&k) = index.get(&from) {
+            if let Some(l) = p.labels.iter().find(|x| x.0 == k).map(|x| x.1.clone()) {
+                p.labels.push((regions.len(), l));
+            }
+        }
+        names.insert(r.id, key.clone());
+        p.regions.push((Key::Str(key), r.dim));
+        regions.push(r);
+    }
 }
 
 /// The tree-based reader, for its precise messages on malformed input.
@@ -452,12 +600,17 @@ fn read_json_slow(text: &str) -> Result<Parsed, JsonError> {
 /// The file is refused before it is read when the text and what is built from it (about
 /// four times its size) would exceed the memory limit ([`gmap_core::resources`]).
 pub fn read_json_file(path: &Path) -> Result<ArchComplex, JsonFileError> {
+    read_json_file_with(path, &JsonOptions::default()).map(|x| x.0)
+}
+
+/// [`read_json_file`] with options ([`read_json_with`]).
+pub fn read_json_file_with(path: &Path, o: &JsonOptions) -> Result<(ArchComplex, Vec<String>), JsonFileError> {
     let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
     gmap_core::resources::check_memory("the file and its complex", size.checked_mul(4))
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::MemoryLimit(e) })?;
     let text = std::fs::read_to_string(path)
         .map_err(|e| JsonFileError { path: path.to_path_buf(), error: JsonError::Io(e.to_string()) })?;
-    read_json(&text).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
+    read_json_with(&text, o).map_err(|error| JsonFileError { path: path.to_path_buf(), error })
 }
 
 /// A [`JsonError`] with the file it comes from.
@@ -566,7 +719,7 @@ mod tests {
         assert!(back.region_labels(0).is_empty());
         // the tree-based reader (taken when the fast one fails) keeps them too
         assert_eq!(
-            build(read_json_slow(&text).unwrap()).unwrap().region_labels(2).get("count"),
+            build(read_json_slow(&text).unwrap(), &JsonOptions::default()).unwrap().0.region_labels(2).get("count"),
             Some(&LabelValue::Int(-7))
         );
     }

@@ -42,14 +42,18 @@
 //! check; stars and closures O(size of the result + its entries).
 
 mod from_map;
+mod metric;
 mod model;
 mod names;
 mod orient;
+mod snap;
 mod topological;
 mod topology;
 
 pub use from_map::{all_cell_incidences, cell_incidences, CellIncidence, FromMapError};
+pub use metric::{MetricDefect, NamedDefect, Shape};
 pub use model::{ArchComplex, ArchError, Entry, Region, RegionId};
 pub use names::{Named, RegionNames};
 pub use orient::orient_entries;
+pub use snap::{snap, Snapped};
 pub use topological::{AppliedOperator, Step, Topological, ZeroWeightRule};

@@ -165,6 +165,20 @@ pub enum ArchError {
         /// the region where it fails, if one
         at: Option<RegionId>,
     },
+    /// Incidence signs were left out and the boundary of a region is open: some
+    /// (k-2)-regions lie on an odd number of its (k-1)-faces (a room missing a wall or its
+    /// roof, a face missing an edge), so no choice of signs makes it a cycle.
+    BoundaryOpen {
+        /// the region
+        id: RegionId,
+        /// its dimension
+        dim: usize,
+        /// the (k-2)-regions where it is open, in index order
+        at: Vec<RegionId>,
+        /// another region of the same dimension open at one of the same places: the two
+        /// miss the face between them (a party wall)
+        with: Option<RegionId>,
+    },
     /// A region label whose value is a real that is not finite.
     LabelNotFinite {
         /// the region

@@ -79,6 +79,49 @@ fn join_counts(v: &[usize]) -> String {
     v.iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", ")
 }
 
+/// The names of `ids`, at most five and how many more.
+fn name_list(ids: &[RegionId], n: &dyn Fn(RegionId) -> String) -> String {
+    let mut v: Vec<String> = ids.iter().take(5).map(|&i| n(i)).collect();
+    if ids.len() > 5 {
+        v.push(format!("and {} more", ids.len() - 5));
+    }
+    v.join(", ")
+}
+
+/// [`ArchError::BoundaryOpen`]: where the region is open and what is missing.
+fn open_boundary(
+    f: &mut fmt::Formatter<'_>,
+    n: &dyn Fn(RegionId) -> String,
+    id: RegionId,
+    dim: usize,
+    at: &[RegionId],
+    with: Option<RegionId>,
+) -> fmt::Result {
+    let (faces, face, low) = match dim {
+        2 => ("edges", "an edge", "vertices"),
+        3 => ("faces", "a face", "edges"),
+        _ => ("faces", "a face", "regions"),
+    };
+    write!(
+        f,
+        "{dim}-region {} is not closed: its {faces} leave the {low} {} on one of them only, so {face} is missing",
+        n(id),
+        name_list(at, n)
+    )?;
+    match (with, dim) {
+        (Some(w), _) => write!(
+            f,
+            "; {} is open at the same place: the face between {} and {} is missing{}",
+            n(w),
+            n(id),
+            n(w),
+            if dim == 3 { " (a party wall)" } else { "" }
+        ),
+        (None, 3) => write!(f, " (a wall, a floor or a roof)"),
+        (None, _) => Ok(()),
+    }
+}
+
 /// An [`ArchError`] displayed with the file's names.
 pub struct Named<'a> {
     error: &'a ArchError,
@@ -150,6 +193,7 @@ impl fmt::Display for Named<'_> {
                 }
                 write!(f, "; give the incidence weights")
             }
+            ArchError::BoundaryOpen { id, dim, at, with } => open_boundary(f, &n, *id, *dim, at, *with),
             ArchError::LabelNotFinite { id, name } => {
                 write!(f, "region {}: the label `{name}` is not a finite real", n(*id))
             }

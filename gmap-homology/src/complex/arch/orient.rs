@@ -209,6 +209,9 @@ pub fn orient_entries(
     let mut inferred_top = Vec::new();
     for k in 1..=dim {
         let todo: Vec<usize> = (0..regions.len()).filter(|&c| regions[c].dim == k && !loose[c].is_empty()).collect();
+        if k >= 2 {
+            check_closed(&st, &todo, &loose, &given)?;
+        }
         for c in todo {
             if given[c] {
                 return Err(st.fail(c, "some of its incidence weights are given and some left out"));
@@ -267,6 +270,35 @@ pub fn orient_entries(
         out.extend(list.iter().map(|&(t, w)| (regions[c].id, regions[t].id, w)));
     }
     Ok(out)
+}
+
+/// The (k-2)-regions on an odd number of the faces `faces` (counted with their weights):
+/// where a boundary made of them is open, whatever the signs.
+fn open_at(st: &State<'_>, faces: &[usize]) -> Vec<usize> {
+    let mut count: BTreeMap<usize, i64> = BTreeMap::new();
+    for &f in faces {
+        for &(r, w) in &st.down[f] {
+            *count.entry(r).or_default() += w.abs();
+        }
+    }
+    count.into_iter().filter(|x| x.1 % 2 == 1).map(|x| x.0).collect()
+}
+
+/// Refuses the first of the k-regions `todo` (k ≥ 2, signs left out) whose faces leave a
+/// (k-2)-region on an odd number of them ([`ArchError::BoundaryOpen`]), naming another one
+/// open at one of the same places (the two miss the face between them). O(entries of the
+/// regions and of their faces).
+fn check_closed(st: &State<'_>, todo: &[usize], loose: &[Vec<usize>], given: &[bool]) -> Result<(), ArchError> {
+    let open: Vec<(usize, Vec<usize>)> =
+        todo.iter().filter(|&&c| !given[c]).map(|&c| (c, open_at(st, &loose[c]))).filter(|x| !x.1.is_empty()).collect();
+    let Some((c, at)) = open.first() else { return Ok(()) };
+    let with = open[1..].iter().find(|(_, o)| o.iter().any(|r| at.binary_search(r).is_ok())).map(|x| x.0);
+    Err(ArchError::BoundaryOpen {
+        id: st.regions[*c].id,
+        dim: st.regions[*c].dim,
+        at: at.iter().map(|&r| st.regions[r].id).collect(),
+        with: with.map(|d| st.regions[d].id),
+    })
 }
 
 /// Turns the top regions whose signs were chosen so that their orientations agree (module
