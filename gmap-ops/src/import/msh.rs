@@ -144,6 +144,7 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
     let mut element_index: FxHashMap<u64, usize> = FxHashMap::default();
     let mut entity_of: Vec<(i64, i64)> = Vec::new();
     let mut seen_format = false;
+    let (mut seen_nodes, mut seen_elements, mut seen_entities) = (false, false, false);
     let mut node_data: Vec<DataArray> = Vec::new();
     let mut element_data: Vec<(DataArray, usize)> = Vec::new();
     while let Some(head) = t.next() {
@@ -198,9 +199,11 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                         }
                     }
                 }
+                seen_entities = true;
                 t.skip_section(name)?;
             }
             "Nodes" => {
+                seen_nodes = true;
                 let blocks = t.count("the number of entity blocks", total, 4)?;
                 let n = t.count("the number of nodes", total, 4)?;
                 let _min: u64 = t.num("the smallest node tag")?;
@@ -236,6 +239,7 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                 t.skip_section(name)?;
             }
             "Elements" => {
+                seen_elements = true;
                 let blocks = t.count("the number of entity blocks", total, 4)?;
                 let _n = t.count("the number of elements", total, 2)?;
                 let _min: u64 = t.num("the smallest element tag")?;
@@ -249,6 +253,11 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
                     })?;
                     if kind.dim() as i64 != dim {
                         return Err(t.err(format!("element type {ty} has dimension {}, its entity {dim}", kind.dim())));
+                    }
+                    if seen_entities && !physicals.contains_key(&(dim, tag)) {
+                        return Err(t.err(format!(
+                            "an element block of entity {tag} (dimension {dim}), which $Entities does not list: its physical groups are unknown"
+                        )));
                     }
                     let k = t.count("a number of elements", total, 2)?;
                     let per = kind.points().expect("a fixed kind");
@@ -332,7 +341,15 @@ pub fn parse_msh(text: &str) -> Result<MshFile, ImportError> {
         }
     }
     if !seen_format {
-        return Err(ImportError::Empty);
+        return Err(ImportError::MissingSection { section: "$MeshFormat".into(), empty: false });
+    }
+    for (seen, section) in [(seen_nodes, "$Nodes"), (seen_elements, "$Elements")] {
+        if !seen {
+            return Err(ImportError::MissingSection { section: section.into(), empty: false });
+        }
+    }
+    if mesh.cells.is_empty() {
+        return Err(ImportError::MissingSection { section: "$Elements".into(), empty: true });
     }
     // tags as labels
     let n = mesh.cells.len();

@@ -497,8 +497,11 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     if !dataset {
         return Err(ImportError::Format("no DATASET UNSTRUCTURED_GRID".into()));
     }
-    mesh.points = points.unwrap_or_default();
-    let (types, tl) = types.unwrap_or_default();
+    mesh.points = points.ok_or(ImportError::MissingSection { section: "POINTS".into(), empty: false })?;
+    if conn.is_none() {
+        return Err(ImportError::MissingSection { section: "CELLS".into(), empty: false });
+    }
+    let (types, tl) = types.ok_or(ImportError::MissingSection { section: "CELL_TYPES".into(), empty: false })?;
     let kinds: Vec<CellKind> = types
         .iter()
         .enumerate()
@@ -523,6 +526,9 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
             cells_of(&list, offsets.as_deref(), &kinds, cl)?
         }
     };
+    if mesh.cells.is_empty() {
+        return Err(ImportError::MissingSection { section: "CELLS".into(), empty: true });
+    }
     check_data(&mesh)?;
     Ok(mesh)
 }

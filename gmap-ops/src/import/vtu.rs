@@ -214,6 +214,92 @@ fn child<'a, 'i>(node: roxmltree::Node<'a, 'i>, name: &str) -> Option<roxmltree:
     node.children().find(|c| c.has_tag_name(name))
 }
 
+/// The one child element `name` of `node`, refusing a second one.
+fn only_child<'a, 'i>(
+    node: roxmltree::Node<'a, 'i>,
+    name: &str,
+    line_of: &dyn Fn(roxmltree::Node) -> usize,
+) -> Result<Option<roxmltree::Node<'a, 'i>>, ImportError> {
+    let mut found = node.children().filter(|c| c.has_tag_name(name));
+    let first = found.next();
+    match found.next() {
+        Some(second) => Err(ImportError::Syntax {
+            line: line_of(second),
+            message: format!("a second {name} element in {}: it has one", node.tag_name().name()),
+        }),
+        None => Ok(first),
+    }
+}
+
+/// The value of `name="…"` in the text of a start tag.
+fn attribute_in<'t>(tag: &'t str, name: &str) -> Option<&'t str> {
+    let mut rest = tag;
+    while let Some(at) = rest.find(name) {
+        let before = rest[..at].chars().next_back();
+        let after = rest[at + name.len()..].trim_start();
+        if before.is_some_and(char::is_whitespace) {
+            if let Some(v) = after.strip_prefix('=') {
+                let v = v.trim_start();
+                let q = v.chars().next()?;
+                if q == '"' || q == '\'' {
+                    return v[1..].find(q).map(|end| &v[1..1 + end]);
+                }
+            }
+        }
+        rest = &rest[at + name.len()..];
+    }
+    None
+}
+
+/// Checks the XML declaration, when there is one, against XML 1.0 (§2.8): `version` first
+/// (`1.x`), then optionally `encoding` (UTF-8 here) and `standalone` (`yes`, `no`), quoted,
+/// closed by `?>`; a declaration anywhere but at the start is refused too.
+fn check_declaration(text: &str) -> Result<(), ImportError> {
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let bad = |m: String| ImportError::Syntax { line: 1, message: format!("XML declaration: {m}") };
+    if let Some(at) = body.get(1..).and_then(|b| b.find("<?xml")) {
+        let next = body[at + 6..].chars().next();
+        if next.is_none_or(|c| c.is_whitespace() || c == '?') {
+            let line = 1 + body[..at + 1].matches('\n').count();
+            return Err(ImportError::Syntax { line, message: "an XML declaration after the start of the file".into() });
+        }
+    }
+    let Some(rest) = body.strip_prefix("<?xml") else { return Ok(()) };
+    let end = rest.find("?>").ok_or_else(|| bad("not closed by '?>'".into()))?;
+    let mut attrs = rest[..end].trim_end();
+    if !attrs.starts_with(char::is_whitespace) {
+        return Err(bad("'<?xml' is not followed by a space".into()));
+    }
+    let mut names = Vec::new();
+    while !attrs.trim_start().is_empty() {
+        let a = attrs.trim_start();
+        let eq = a.find('=').ok_or_else(|| bad(format!("'{}' is not name=\"value\"", shorten(a.as_bytes(), 30))))?;
+        let name = a[..eq].trim_end();
+        let v = a[eq + 1..].trim_start();
+        let q = v.chars().next().filter(|&q| q == '"' || q == '\'').ok_or_else(|| bad(format!("{name}: the value is not quoted")))?;
+        let close = v[1..].find(q).ok_or_else(|| bad(format!("{name}: the quote is not closed")))?;
+        let value = &v[1..1 + close];
+        let ok = match name {
+            "version" => names.is_empty() && value.len() >= 3 && value.starts_with("1.") && value[2..].bytes().all(|b| b.is_ascii_digit()),
+            "encoding" => names == ["version"] && value.eq_ignore_ascii_case("utf-8"),
+            "standalone" => names.first() == Some(&"version") && !names.contains(&"standalone") && (value == "yes" || value == "no"),
+            _ => false,
+        };
+        if !ok {
+            return Err(bad(format!("{}=\"{}\" is not a version 1.x, an encoding UTF-8 and standalone yes or no, in that order", shorten(name.as_bytes(), 30), shorten(value.as_bytes(), 30))));
+        }
+        names.push(name);
+        attrs = &v[2 + close..];
+        if !(attrs.is_empty() || attrs.starts_with(char::is_whitespace)) {
+            return Err(bad(format!("no space after {name}")));
+        }
+    }
+    if names.first() != Some(&"version") {
+        return Err(bad("no version".into()));
+    }
+    Ok(())
+}
+
 fn attr_count(node: roxmltree::Node, name: &str, line: usize) -> Result<usize, ImportError> {
     node.attribute(name).and_then(|v| v.trim().parse().ok()).ok_or_else(|| ImportError::Syntax {
         line,
@@ -232,8 +318,24 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                     line,
                     message: "the AppendedData tag is not closed".into(),
                 })?;
+            if find(&bytes[at + 1..], b"<AppendedData").is_some() {
+                return Err(ImportError::Syntax { line, message: "a second AppendedData element: a file has one".into() });
+            }
             let tag = String::from_utf8_lossy(&bytes[at..tag_end]);
-            let base64 = !tag.contains("\"raw\"");
+            let base64 = match attribute_in(&tag, "encoding") {
+                Some("raw") => false,
+                Some("base64") => true,
+                Some(other) => {
+                    return Err(ImportError::Syntax {
+                        line,
+                        message: format!(
+                            "AppendedData encoding '{}' is not read (raw, base64)",
+                            shorten(other.as_bytes(), 40)
+                        ),
+                    })
+                }
+                None => return Err(ImportError::Syntax { line, message: "AppendedData needs an encoding (raw, base64)".into() }),
+            };
             let under = tag_end
                 + 1
                 + bytes[tag_end + 1..].iter().position(|&c| c == b'_').ok_or_else(|| ImportError::Syntax {
@@ -253,6 +355,7 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
         let line = 1 + xml_bytes[..at].iter().filter(|&&c| c == b'\n').count();
         ImportError::Syntax { line, message: format!("not UTF-8 text: invalid byte at offset {at}") }
     })?;
+    check_declaration(text)?;
     let doc = roxmltree::Document::parse(text)
         .map_err(|e| ImportError::Syntax { line: e.pos().row as usize, message: format!("XML: {e}") })?;
     let line_of = |n: roxmltree::Node| doc.text_pos_at(n.range().start).row as usize;
@@ -297,8 +400,14 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
         .ok_or_else(|| ImportError::Syntax { line: line_of(root), message: "no UnstructuredGrid element".into() })?;
     let mut mesh = Mesh::default();
     let pieces: Vec<_> = grid.children().filter(|c| c.has_tag_name("Piece")).collect();
+    if pieces.is_empty() {
+        return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: false });
+    }
     for piece in pieces {
         read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh)?;
+    }
+    if mesh.cells.is_empty() {
+        return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: true });
     }
     check_data(&mesh)?;
     Ok(mesh)
@@ -317,6 +426,9 @@ fn read_piece(
     let base = mesh.points.len();
     let (cells_before, points_before) = (mesh.cells.len(), mesh.points.len());
     let missing = |what: &str, line: usize| ImportError::Syntax { line, message: format!("no {what}") };
+    for name in ["Points", "Cells", "PointData", "CellData"] {
+        only_child(piece, name, line_of)?;
+    }
     if np > 0 {
         let pts = child(piece, "Points").ok_or_else(|| missing("Points element", pl))?;
         let da = child(pts, "DataArray").ok_or_else(|| missing("DataArray in Points", line_of(pts)))?;
@@ -401,7 +513,9 @@ fn read_piece(
         let Some(sec) = child(piece, section) else { continue };
         for da in sec.children().filter(|c| c.has_tag_name("DataArray")) {
             let line = line_of(da);
-            let name = da.attribute("Name").unwrap_or("").to_string();
+            let name = da.attribute("Name").filter(|n| !n.is_empty()).map(str::to_string).ok_or_else(|| {
+                ImportError::Syntax { line, message: format!("a DataArray of {section} without a Name: labels are named") }
+            })?;
             let comps = match da.attribute("NumberOfComponents") {
                 Some(c) => c.trim().parse::<usize>().ok().filter(|&c| c > 0).ok_or_else(|| ImportError::Syntax {
                     line,
