@@ -8,10 +8,15 @@
 //! the same names for several components, the same missing values). Data arrays may be
 //! `format="ascii"`, `"binary"` (base64 inline) or `"appended"` (in the `AppendedData`
 //! block, `encoding="raw"` or `"base64"`), uncompressed or compressed by
-//! `vtkZLibDataCompressor` (a header `[blocks, block size, last block size, compressed
-//! sizes…]` then one zlib stream per block), with `UInt32` or `UInt64` headers and either
-//! byte order. Other compressors, `String` arrays and other datasets are refused, naming
-//! them.
+//! `vtkZLibDataCompressor`, `vtkLZMADataCompressor` or `vtkLZ4DataCompressor` (a header
+//! `[blocks, block size, last block size, compressed sizes…]` then one zlib stream, xz
+//! stream or raw LZ4 block per block), with `UInt32` or `UInt64` headers and either byte
+//! order. Cells of higher order (VTK 21–37, 68–81) are read as their corner cells, their
+//! other points in the label [`HIGH_ORDER_LABEL`](super::high_order::HIGH_ORDER_LABEL).
+//! Other compressors, `String` arrays and other datasets are refused, naming them; so are
+//! a file without a `Piece` or a cell, a malformed XML declaration, a second
+//! `AppendedData`, a second `Points`, `Cells`, `PointData` or `CellData` in a `Piece`, an
+//! appended encoding other than `raw` and `base64`, and a data array without a `Name`.
 //!
 //! Errors name the file and the line of the XML element at fault. Sizes announced by
 //! headers are checked against the values the arrays must hold before anything is
@@ -23,9 +28,10 @@ use std::path::Path;
 
 use base64::Engine as _;
 use gmap_core::io::shorten;
-use gmap_core::LabelledGMap;
+use gmap_core::{LabelValue, LabelledGMap};
 
-use super::vtk::{check_data, data_arrays, points_of, polyhedron, Scalar, Value};
+use super::high_order::label_array;
+use super::vtk::{check_data, corners_of, data_arrays, points_of, polyhedron, vtk_kind, Scalar, Value};
 use super::{default_max_darts, FileError, ImportError};
 use crate::mesh::{CellKind, Mesh, MeshCell};
 
@@ -34,7 +40,57 @@ use crate::mesh::{CellKind, Mesh, MeshCell};
 struct Layout {
     big: bool,
     header: Scalar,
-    zlib: bool,
+    compressor: Option<Compressor>,
+}
+
+/// The compressors VTK writes (`vtkZLibDataCompressor`, `vtkLZMADataCompressor`, an xz
+/// stream per block, and `vtkLZ4DataCompressor`, a raw LZ4 block per block).
+#[derive(Clone, Copy)]
+enum Compressor {
+    Zlib,
+    Lzma,
+    Lz4,
+}
+
+/// A writer refusing more than `limit` bytes: a block cannot inflate past its header's size.
+struct Bounded {
+    out: Vec<u8>,
+    limit: usize,
+}
+
+impl std::io::Write for Bounded {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if self.out.len() + buf.len() > self.limit {
+            return Err(std::io::Error::other("more bytes than the header says"));
+        }
+        self.out.extend_from_slice(buf);
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Inflates one block of `size` bytes.
+fn inflate_block(c: Compressor, data: &[u8], size: usize, out: &mut Vec<u8>) -> Result<(), String> {
+    match c {
+        Compressor::Zlib => {
+            flate2::read::ZlibDecoder::new(data)
+                .take(size as u64 + 1)
+                .read_to_end(out)
+                .map_err(|e| format!("zlib: {e}"))?;
+        }
+        Compressor::Lzma => {
+            let mut w = Bounded { out: Vec::new(), limit: size };
+            lzma_rs::xz_decompress(&mut std::io::BufReader::new(data), &mut w).map_err(|e| format!("LZMA: {e}"))?;
+            out.extend_from_slice(&w.out);
+        }
+        Compressor::Lz4 => {
+            out.extend_from_slice(&lz4_flex::block::decompress(data, size).map_err(|e| format!("LZ4: {e}"))?);
+        }
+    }
+    Ok(())
 }
 
 /// The appended data: its bytes after the `_`, and whether they are base64 text.
@@ -91,10 +147,8 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
             at.checked_add(c).filter(|&e| e <= data.len()).ok_or_else(|| format!("block {b} runs past the data"))?;
         let size = if b + 1 == nb && last != 0 { last } else { bs };
         let before = out.len();
-        flate2::read::ZlibDecoder::new(&data[at..end])
-            .take(size as u64 + 1)
-            .read_to_end(&mut out)
-            .map_err(|e| format!("block {b}: zlib: {e}"))?;
+        let c = l.compressor.ok_or("no compressor")?;
+        inflate_block(c, &data[at..end], size, &mut out).map_err(|e| format!("block {b}: {e}"))?;
         if out.len() - before != size {
             return Err(format!("block {b} inflates to {} bytes, its header says {size}", out.len() - before));
         }
@@ -106,7 +160,7 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
 /// The bytes of a binary block given as raw bytes (starting at its header).
 fn raw_block(l: &Layout, b: &[u8], want: usize) -> Result<Vec<u8>, String> {
     let hs = l.header.size();
-    if l.zlib {
+    if l.compressor.is_some() {
         let nb = word(l, b, 0)?;
         let hlen = nb
             .checked_add(3)
@@ -127,7 +181,7 @@ fn raw_block(l: &Layout, b: &[u8], want: usize) -> Result<Vec<u8>, String> {
 fn b64_block(l: &Layout, t: &[u8], want: usize) -> Result<Vec<u8>, String> {
     let t: Vec<u8> = t.iter().copied().filter(|c| !c.is_ascii_whitespace()).collect();
     let hs = l.header.size();
-    if l.zlib {
+    if l.compressor.is_some() {
         let first = b64(t.get(..b64_len(3 * hs)).ok_or("the block header is cut short")?)?;
         let nb = word(l, &first, 0)?;
         let hlen = nb.checked_add(3).and_then(|w| w.checked_mul(hs)).ok_or("the block header is too long")?;
@@ -382,14 +436,16 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                 })
             }
         },
-        zlib: match root.attribute("compressor") {
-            None | Some("") => false,
-            Some("vtkZLibDataCompressor") => true,
+        compressor: match root.attribute("compressor") {
+            None | Some("") => None,
+            Some("vtkZLibDataCompressor") => Some(Compressor::Zlib),
+            Some("vtkLZMADataCompressor") => Some(Compressor::Lzma),
+            Some("vtkLZ4DataCompressor") => Some(Compressor::Lz4),
             Some(other) => {
                 return Err(ImportError::Syntax {
                     line: line_of(root),
                     message: format!(
-                        "compressor '{}' is not read (vtkZLibDataCompressor)",
+                        "compressor '{}' is not read (vtkZLibDataCompressor, vtkLZMADataCompressor, vtkLZ4DataCompressor)",
                         shorten(other.as_bytes(), 40)
                     ),
                 })
@@ -403,12 +459,15 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
     if pieces.is_empty() {
         return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: false });
     }
+    let mut extra = Vec::new();
     for piece in pieces {
-        read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh)?;
+        read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh, &mut extra)?;
     }
     if mesh.cells.is_empty() {
         return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: true });
     }
+    extra.resize(mesh.cells.len(), None);
+    mesh.cell_data.extend(label_array(extra));
     check_data(&mesh)?;
     Ok(mesh)
 }
@@ -419,6 +478,7 @@ fn read_piece(
     app: Option<&Appended>,
     line_of: &dyn Fn(roxmltree::Node) -> usize,
     mesh: &mut Mesh,
+    extra: &mut Vec<Option<LabelValue>>,
 ) -> Result<(), ImportError> {
     let pl = line_of(piece);
     let np = attr_count(piece, "NumberOfPoints", pl)?;
@@ -486,10 +546,7 @@ fn read_piece(
                     .ok_or_else(|| err("a point index that is not an index".into()))
             };
             let t = types[k].int().unwrap_or(-1);
-            let kind = CellKind::from_vtk(t).ok_or_else(|| ImportError::Syntax {
-                line: tl,
-                message: format!("cell {}: cell type {t} is not read (vertex 1, line 3, triangle 5, polygon 7, quad 9, tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42)", cells_before + k),
-            })?;
+            let (kind, higher) = vtk_kind(t, cells_before + k, tl)?;
             if kind == CellKind::Polyhedron {
                 let fe = faceoffsets.get(k).copied().unwrap_or(-1);
                 if fe < 0 {
@@ -504,7 +561,13 @@ fn read_piece(
                 face_start = fe;
             } else {
                 let nodes: Vec<u32> = conn[start..end].iter().map(&shift).collect::<Result<_, _>>()?;
-                mesh.cells.push(MeshCell { kind, nodes, faces: Vec::new() });
+                let mut cell = MeshCell { kind, nodes, faces: Vec::new() };
+                if let Some(h) = higher {
+                    let v = corners_of(&mut cell, &h, &mesh.points, cells_before + k).map_err(|m| ImportError::Syntax { line: tl, message: m })?;
+                    extra.resize(cells_before + k, None);
+                    extra.push(Some(v));
+                }
+                mesh.cells.push(cell);
             }
             start = end;
         }
