@@ -298,9 +298,18 @@ fn hostile_text_is_refused_with_the_line() {
         ("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", "line 2: version 3.0 is not read: only 2.2 and 4.1"),
         ("$MeshFormat\n4.1 1 4\n$EndMeshFormat\n", "line 2: binary .msh of data size 4 is not read: only 8"),
         ("$Nodes\n", "line 1: the file does not start with $MeshFormat"),
-        ("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n3 1 0 1\n1\n0 0 x\n$EndNodes\n", "line 8: z 'x' is not a valid number"),
-        ("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n1 1 1 1\n3 1 35 1\n1 1 2 3 4\n$EndElements\n", "line 6: element type 35 (a polyhedron) is not read: its faces are not listed"),
-        ("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n", "line 7: element 1: no node with tag 1"),
+        (
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n3 1 0 1\n1\n0 0 x\n$EndNodes\n",
+            "line 8: z 'x' is not a valid number",
+        ),
+        (
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n1 1 1 1\n3 1 35 1\n1 1 2 3 4\n$EndElements\n",
+            "line 6: element type 35 (a polyhedron) is not read: its faces are not listed",
+        ),
+        (
+            "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n",
+            "line 7: element 1: no node with tag 1",
+        ),
     ];
     for (text, want) in bad_msh {
         assert_eq!(parse_msh(text.as_bytes()).err().unwrap().to_string(), *want, "{text:?}");

@@ -80,7 +80,8 @@ fn vtk_header_only_or_without_cells_is_refused() {
     assert_eq!(refusal("m.vtk", &empty), "CELLS holds no cell: an empty mesh is not read");
 }
 
-const GRID_HEAD: &str = "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n";
+const GRID_HEAD: &str =
+    "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n";
 
 /// One vertex cell, with `cell_data` inside its `CellData`.
 fn one_vertex(decl: &str, cell_data: &str) -> String {

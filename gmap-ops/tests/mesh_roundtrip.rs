@@ -122,7 +122,10 @@ fn fuzz_findings() {
         points: vec![[0.0; 3]],
         cells: vec![gmap_ops::mesh::MeshCell { kind: gmap_ops::mesh::CellKind::Vertex, nodes: vec![0], faces: vec![] }],
         point_data: vec![],
-        cell_data: vec![gmap_ops::mesh::DataArray { name: String::new(), values: vec![Some(gmap_core::LabelValue::Int(1))] }],
+        cell_data: vec![gmap_ops::mesh::DataArray {
+            name: String::new(),
+            values: vec![Some(gmap_core::LabelValue::Int(1))],
+        }],
     };
     let g = mesh.to_gmap(10).unwrap();
     let (d, labels, _) = to_dense_labels(&g);

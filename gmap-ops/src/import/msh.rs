@@ -29,8 +29,8 @@ use gmap_core::io::shorten;
 use gmap_core::{LabelValue, LabelledGMap, Point};
 use rustc_hash::FxHashMap;
 
-use super::{default_max_darts, FileError, ImportError};
 use super::high_order::{gmsh_type, label_array, to_corners};
+use super::{default_max_darts, FileError, ImportError};
 use crate::mesh::{DataArray, Mesh, MeshCell, MeshError};
 
 /// The file read token by token (ASCII) or value by value (binary sections), with the
@@ -83,10 +83,7 @@ impl<'a> Input<'a> {
 
     /// `n` raw bytes of a binary section.
     fn raw<const N: usize>(&mut self, what: &str) -> Result<[u8; N], ImportError> {
-        let b = self
-            .b
-            .get(self.pos..self.pos + N)
-            .ok_or_else(|| self.err(format!("the file ends before {what}")))?;
+        let b = self.b.get(self.pos..self.pos + N).ok_or_else(|| self.err(format!("the file ends before {what}")))?;
         self.pos += N;
         let mut a = [0u8; N];
         a.copy_from_slice(b);
@@ -298,8 +295,7 @@ fn physical_names(t: &mut Input, st: &mut State) -> Result<(), ImportError> {
 }
 
 fn entities(t: &mut Input, st: &mut State) -> Result<(), ImportError> {
-    let counts: Vec<usize> =
-        (0..4).map(|_| t.count("a number of entities", 16, false)).collect::<Result<_, _>>()?;
+    let counts: Vec<usize> = (0..4).map(|_| t.count("a number of entities", 16, false)).collect::<Result<_, _>>()?;
     for (dim, &n) in counts.iter().enumerate() {
         for _ in 0..n {
             let tag = t.int("an entity tag")?;
@@ -335,11 +331,20 @@ impl State {
     }
 
     /// Adds an element of Gmsh type `ty` on the node tags `nodes`.
-    fn add_element(&mut self, t: &Input, et: u64, ty: i64, nodes: &[u64], entity: (i64, i64)) -> Result<(), ImportError> {
+    fn add_element(
+        &mut self,
+        t: &Input,
+        et: u64,
+        ty: i64,
+        nodes: &[u64],
+        entity: (i64, i64),
+    ) -> Result<(), ImportError> {
         let (kind, _) = gmsh_type(ty).map_err(|m| t.err(m))?;
         let nodes: Vec<u32> = nodes
             .iter()
-            .map(|nt| self.node_index.get(nt).copied().ok_or_else(|| t.err(format!("element {et}: no node with tag {nt}"))))
+            .map(|nt| {
+                self.node_index.get(nt).copied().ok_or_else(|| t.err(format!("element {et}: no node with tag {nt}")))
+            })
             .collect::<Result<_, _>>()?;
         if self.element_index.insert(et, self.mesh.cells.len()).is_some() {
             return Err(t.err(format!("element tag {et} appears twice")));
@@ -455,13 +460,18 @@ fn elements2(t: &mut Input, st: &mut State) -> Result<(), ImportError> {
         } else {
             (-1, 1, 0)
         };
-        let k = usize::try_from(k).ok().filter(|&k| k >= 1 && k <= n - read).ok_or_else(|| {
-            t.err(format!("an element block of {k} elements, {} left to read", n - read))
-        })?;
+        let k = usize::try_from(k)
+            .ok()
+            .filter(|&k| k >= 1 && k <= n - read)
+            .ok_or_else(|| t.err(format!("an element block of {k} elements, {} left to read", n - read)))?;
         for _ in 0..k {
             let et = t.int("an element tag")?;
-            let (ty, ntags) = if t.binary { (ty, ntags) } else { (t.int("an element type")?, t.int("a number of tags")?) };
-            let ntags = usize::try_from(ntags).ok().filter(|&x| x <= 64).ok_or_else(|| t.err(format!("element {et}: {ntags} tags")))?;
+            let (ty, ntags) =
+                if t.binary { (ty, ntags) } else { (t.int("an element type")?, t.int("a number of tags")?) };
+            let ntags = usize::try_from(ntags)
+                .ok()
+                .filter(|&x| x <= 64)
+                .ok_or_else(|| t.err(format!("element {et}: {ntags} tags")))?;
             let tags: Vec<i64> = (0..ntags).map(|_| t.int("a tag")).collect::<Result<_, _>>()?;
             let (kind, per) = gmsh_type(ty).map_err(|m| t.err(m))?;
             nodes.clear();
@@ -519,7 +529,8 @@ fn data(t: &mut Input, st: &mut State, nodes: bool) -> Result<(), ImportError> {
         let n = if nodes { st.node_tags.len() } else { st.mesh.cells.len() };
         let mut values = vec![None; n];
         for (tag, v) in a {
-            let at = if nodes { st.node_index.get(&tag).map(|&i| i as usize) } else { st.element_index.get(&tag).copied() };
+            let at =
+                if nodes { st.node_index.get(&tag).map(|&i| i as usize) } else { st.element_index.get(&tag).copied() };
             let at = at.ok_or_else(|| ImportError::Syntax {
                 line,
                 message: format!(
@@ -542,7 +553,21 @@ fn data(t: &mut Input, st: &mut State, nodes: bool) -> Result<(), ImportError> {
 
 /// Checks that the sections a mesh needs were met, and makes the labels.
 fn finish(st: State) -> Result<MshFile, ImportError> {
-    let State { version, names, physicals, mut mesh, node_tags, element_tags, entity_of, physical_of, high_order, node_data, element_data, seen, .. } = st;
+    let State {
+        version,
+        names,
+        physicals,
+        mut mesh,
+        node_tags,
+        element_tags,
+        entity_of,
+        physical_of,
+        high_order,
+        node_data,
+        element_data,
+        seen,
+        ..
+    } = st;
     for section in ["$MeshFormat", "$Nodes", "$Elements"] {
         if !seen.contains(&section) {
             return Err(ImportError::MissingSection { section: section.into(), empty: false });
@@ -561,7 +586,11 @@ fn finish(st: State) -> Result<MshFile, ImportError> {
         let own;
         let tags = if version == 2 {
             own = [physical_of[c]];
-            if own[0] == 0 { &[][..] } else { &own[..] }
+            if own[0] == 0 {
+                &[][..]
+            } else {
+                &own[..]
+            }
         } else {
             physicals.get(&(dim, tag)).map(Vec::as_slice).unwrap_or(&[])
         };

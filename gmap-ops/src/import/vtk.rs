@@ -505,11 +505,8 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
         return Err(ImportError::MissingSection { section: "CELLS".into(), empty: false });
     }
     let (types, tl) = types.ok_or(ImportError::MissingSection { section: "CELL_TYPES".into(), empty: false })?;
-    let typed: Vec<(CellKind, Option<HigherOrder>)> = types
-        .iter()
-        .enumerate()
-        .map(|(k, t)| vtk_kind(t.int().unwrap_or(-1), k, tl))
-        .collect::<Result<_, _>>()?;
+    let typed: Vec<(CellKind, Option<HigherOrder>)> =
+        types.iter().enumerate().map(|(k, t)| vtk_kind(t.int().unwrap_or(-1), k, tl)).collect::<Result<_, _>>()?;
     let kinds: Vec<CellKind> = typed.iter().map(|t| t.0).collect();
     mesh.cells = match conn {
         None if kinds.is_empty() => Vec::new(),
@@ -531,7 +528,9 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     let mut extra = Vec::with_capacity(mesh.cells.len());
     for (k, (cell, (_, higher))) in mesh.cells.iter_mut().zip(&typed).enumerate() {
         extra.push(match higher {
-            Some(h) => Some(corners_of(cell, h, &mesh.points, k).map_err(|m| ImportError::Syntax { line: tl, message: m })?),
+            Some(h) => {
+                Some(corners_of(cell, h, &mesh.points, k).map_err(|m| ImportError::Syntax { line: tl, message: m })?)
+            }
             None => None,
         });
     }
@@ -683,7 +682,12 @@ pub(crate) fn vtk_kind(t: i64, k: usize, line: usize) -> Result<(CellKind, Optio
 }
 
 /// Cuts higher-order cell `k` to its corners, returning the label of its other nodes.
-pub(crate) fn corners_of(cell: &mut MeshCell, h: &HigherOrder, points: &[Point], k: usize) -> Result<LabelValue, String> {
+pub(crate) fn corners_of(
+    cell: &mut MeshCell,
+    h: &HigherOrder,
+    points: &[Point],
+    k: usize,
+) -> Result<LabelValue, String> {
     if let Some(n) = h.0 {
         if cell.nodes.len() != n {
             return Err(format!("cell {k}: {} points, a {} has {n}", cell.nodes.len(), h.1));

@@ -330,17 +330,32 @@ fn check_declaration(text: &str) -> Result<(), ImportError> {
         let eq = a.find('=').ok_or_else(|| bad(format!("'{}' is not name=\"value\"", shorten(a.as_bytes(), 30))))?;
         let name = a[..eq].trim_end();
         let v = a[eq + 1..].trim_start();
-        let q = v.chars().next().filter(|&q| q == '"' || q == '\'').ok_or_else(|| bad(format!("{name}: the value is not quoted")))?;
+        let q = v
+            .chars()
+            .next()
+            .filter(|&q| q == '"' || q == '\'')
+            .ok_or_else(|| bad(format!("{name}: the value is not quoted")))?;
         let close = v[1..].find(q).ok_or_else(|| bad(format!("{name}: the quote is not closed")))?;
         let value = &v[1..1 + close];
         let ok = match name {
-            "version" => names.is_empty() && value.len() >= 3 && value.starts_with("1.") && value[2..].bytes().all(|b| b.is_ascii_digit()),
+            "version" => {
+                names.is_empty()
+                    && value.len() >= 3
+                    && value.starts_with("1.")
+                    && value[2..].bytes().all(|b| b.is_ascii_digit())
+            }
             "encoding" => names == ["version"] && value.eq_ignore_ascii_case("utf-8"),
-            "standalone" => names.first() == Some(&"version") && !names.contains(&"standalone") && (value == "yes" || value == "no"),
+            "standalone" => {
+                names.first() == Some(&"version") && !names.contains(&"standalone") && (value == "yes" || value == "no")
+            }
             _ => false,
         };
         if !ok {
-            return Err(bad(format!("{}=\"{}\" is not a version 1.x, an encoding UTF-8 and standalone yes or no, in that order", shorten(name.as_bytes(), 30), shorten(value.as_bytes(), 30))));
+            return Err(bad(format!(
+                "{}=\"{}\" is not a version 1.x, an encoding UTF-8 and standalone yes or no, in that order",
+                shorten(name.as_bytes(), 30),
+                shorten(value.as_bytes(), 30)
+            )));
         }
         names.push(name);
         attrs = &v[2 + close..];
@@ -373,7 +388,10 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                     message: "the AppendedData tag is not closed".into(),
                 })?;
             if find(&bytes[at + 1..], b"<AppendedData").is_some() {
-                return Err(ImportError::Syntax { line, message: "a second AppendedData element: a file has one".into() });
+                return Err(ImportError::Syntax {
+                    line,
+                    message: "a second AppendedData element: a file has one".into(),
+                });
             }
             let tag = String::from_utf8_lossy(&bytes[at..tag_end]);
             let base64 = match attribute_in(&tag, "encoding") {
@@ -388,7 +406,12 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                         ),
                     })
                 }
-                None => return Err(ImportError::Syntax { line, message: "AppendedData needs an encoding (raw, base64)".into() }),
+                None => {
+                    return Err(ImportError::Syntax {
+                        line,
+                        message: "AppendedData needs an encoding (raw, base64)".into(),
+                    })
+                }
             };
             let under = tag_end
                 + 1
@@ -445,9 +468,9 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                 return Err(ImportError::Syntax {
                     line: line_of(root),
                     message: format!(
-                        "compressor '{}' is not read (vtkZLibDataCompressor, vtkLZMADataCompressor, vtkLZ4DataCompressor)",
-                        shorten(other.as_bytes(), 40)
-                    ),
+                    "compressor '{}' is not read (vtkZLibDataCompressor, vtkLZMADataCompressor, vtkLZ4DataCompressor)",
+                    shorten(other.as_bytes(), 40)
+                ),
                 })
             }
         },
@@ -563,7 +586,8 @@ fn read_piece(
                 let nodes: Vec<u32> = conn[start..end].iter().map(&shift).collect::<Result<_, _>>()?;
                 let mut cell = MeshCell { kind, nodes, faces: Vec::new() };
                 if let Some(h) = higher {
-                    let v = corners_of(&mut cell, &h, &mesh.points, cells_before + k).map_err(|m| ImportError::Syntax { line: tl, message: m })?;
+                    let v = corners_of(&mut cell, &h, &mesh.points, cells_before + k)
+                        .map_err(|m| ImportError::Syntax { line: tl, message: m })?;
                     extra.resize(cells_before + k, None);
                     extra.push(Some(v));
                 }
@@ -577,7 +601,10 @@ fn read_piece(
         for da in sec.children().filter(|c| c.has_tag_name("DataArray")) {
             let line = line_of(da);
             let name = da.attribute("Name").filter(|n| !n.is_empty()).map(str::to_string).ok_or_else(|| {
-                ImportError::Syntax { line, message: format!("a DataArray of {section} without a Name: labels are named") }
+                ImportError::Syntax {
+                    line,
+                    message: format!("a DataArray of {section} without a Name: labels are named"),
+                }
             })?;
             let comps = match da.attribute("NumberOfComponents") {
                 Some(c) => c.trim().parse::<usize>().ok().filter(|&c| c > 0).ok_or_else(|| ImportError::Syntax {
