@@ -239,3 +239,21 @@ fn simplicial_complex_without_a_gmap() {
     assert_eq!(v["euler_characteristic"], 1);
     assert!(v["gmap"].is_null() && v["why"].as_str().unwrap().contains("mixed dimensions"), "{v}");
 }
+
+/// A quadratic mesh written by gmsh (tests/data/mesh/make.py): read as its corner cells,
+/// and `info` says so, naming the label that keeps the other nodes.
+#[test]
+fn higher_order_mesh_is_said_to_be_read_as_its_corners() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let p = root.join("tests/data/mesh/cube_o2_41.msh");
+    let out = gmap(&["info", p.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("cells (0..n)          45 186 242 100\n"), "{text}");
+    assert!(
+        text.contains(
+            "higher order          184 cells read as their corner cells; their other nodes are kept in the label high_order.nodes\n"
+        ),
+        "{text}"
+    );
+}

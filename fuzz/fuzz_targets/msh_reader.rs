@@ -9,7 +9,6 @@ use libfuzzer_sys::fuzz_target;
 mod shared;
 
 fuzz_target!(|data: &[u8]| {
-    let Ok(text) = std::str::from_utf8(data) else { return };
-    let Ok(file) = gmap_ops::import::parse_msh(text) else { return };
+    let Ok(file) = gmap_ops::import::parse_msh(data) else { return };
     shared::check_mesh(&file.mesh);
 });

@@ -399,7 +399,7 @@ fn map_lines(i: &MapInfo) -> Vec<(&'static str, String)> {
         None => yes(true),
         Some(why) => format!("no ({why})"),
     };
-    vec![
+    let mut lines = vec![
         ("dimension", i.dimension.to_string()),
         ("darts", i.darts.to_string()),
         ("cells (0..n)", list(&i.cells, " ")),
@@ -410,7 +410,14 @@ fn map_lines(i: &MapInfo) -> Vec<(&'static str, String)> {
         ("euler characteristic", i.euler_characteristic.to_string()),
         ("points", yes(i.points)),
         ("labels", labels_text(&i.labels)),
-    ]
+    ];
+    if let Some((name, k)) = i.labels.iter().find(|(n, _)| n == gmap_ops::import::high_order::HIGH_ORDER_LABEL) {
+        lines.push((
+            "higher order",
+            format!("{k} cells read as their corner cells; their other nodes are kept in the label {name}"),
+        ));
+    }
+    lines
 }
 
 /// The lines of an architectural complex after its file.

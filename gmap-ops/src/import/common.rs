@@ -106,6 +106,16 @@ pub enum ImportError {
     /// Cells that cannot be made into a map (a face in three cells, a non-conforming face…).
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
+    /// A file that ends before a section its format requires (`$Elements`, `CELLS`,
+    /// `<Piece>`…), or whose sections hold no cell: an empty or truncated mesh is not an
+    /// empty map.
+    #[error("{}", if *empty { format!("{section} holds no cell: an empty mesh is not read") } else { format!("the file ends before the {section} section it needs") })]
+    MissingSection {
+        /// the section, as the format names it
+        section: String,
+        /// `true` when the section is there but holds no cell
+        empty: bool,
+    },
     /// A file that does not fit its format as a whole (a `.pbm` header, a bounding box too big).
     #[error("{0}")]
     Format(String),

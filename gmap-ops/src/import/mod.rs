@@ -9,6 +9,7 @@
 
 mod common;
 pub mod cubical;
+pub mod high_order;
 pub mod image;
 pub mod msh;
 pub mod off;

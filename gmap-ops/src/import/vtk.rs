@@ -4,7 +4,9 @@
 //! ([`crate::mesh`]).
 //!
 //! Read: `POINTS`, `CELLS`, `CELL_TYPES` (vertex 1, line 3, triangle 5, polygon 7, quad 9,
-//! tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42 in versions up to 4.2),
+//! tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42 in versions up to 4.2; the
+//! higher-order types 21–37, Lagrange 68–74 and Bézier 75–81 as their corner cells, their
+//! other points in the label [`HIGH_ORDER_LABEL`](super::high_order::HIGH_ORDER_LABEL)),
 //! and in `POINT_DATA` / `CELL_DATA` the arrays of `SCALARS`, `VECTORS`, `NORMALS`,
 //! `TENSORS`, `TEXTURE_COORDINATES` and `FIELD` blocks, which become labels (an array of k
 //! components the names `name.0` … `name.{k-1}`); `COLOR_SCALARS`, `LOOKUP_TABLE` tables,
@@ -25,6 +27,7 @@ use std::path::Path;
 use gmap_core::io::shorten;
 use gmap_core::{LabelValue, LabelledGMap, Point};
 
+use super::high_order::{label_array, to_corners, vtk_type};
 use super::{default_max_darts, FileError, ImportError};
 use crate::mesh::{CellKind, DataArray, Mesh, MeshCell};
 
@@ -499,18 +502,14 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
     if !dataset {
         return Err(ImportError::Format("no DATASET UNSTRUCTURED_GRID".into()));
     }
-    mesh.points = points.unwrap_or_default();
-    let (types, tl) = types.unwrap_or_default();
-    let kinds: Vec<CellKind> = types
-        .iter()
-        .enumerate()
-        .map(|(k, t)| {
-            t.int().and_then(CellKind::from_vtk).ok_or_else(|| ImportError::Syntax {
-                line: tl,
-                message: format!("cell {k}: cell type {} is not read (vertex 1, line 3, triangle 5, polygon 7, quad 9, tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42)", t.int().map_or("?".into(), |i| i.to_string())),
-            })
-        })
-        .collect::<Result<_, _>>()?;
+    mesh.points = points.ok_or(ImportError::MissingSection { section: "POINTS".into(), empty: false })?;
+    if conn.is_none() {
+        return Err(ImportError::MissingSection { section: "CELLS".into(), empty: false });
+    }
+    let (types, tl) = types.ok_or(ImportError::MissingSection { section: "CELL_TYPES".into(), empty: false })?;
+    let typed: Vec<(CellKind, Option<HigherOrder>)> =
+        types.iter().enumerate().map(|(k, t)| vtk_kind(t.int().unwrap_or(-1), k, tl)).collect::<Result<_, _>>()?;
+    let kinds: Vec<CellKind> = typed.iter().map(|t| t.0).collect();
     mesh.cells = match conn {
         None if kinds.is_empty() => Vec::new(),
         None => return Err(ImportError::Format("CELL_TYPES without CELLS".into())),
@@ -525,6 +524,19 @@ pub fn parse_vtk(bytes: &[u8]) -> Result<Mesh, ImportError> {
             cells_of(&list, offsets.as_deref(), &kinds, cl)?
         }
     };
+    if mesh.cells.is_empty() {
+        return Err(ImportError::MissingSection { section: "CELLS".into(), empty: true });
+    }
+    let mut extra = Vec::with_capacity(mesh.cells.len());
+    for (k, (cell, (_, higher))) in mesh.cells.iter_mut().zip(&typed).enumerate() {
+        extra.push(match higher {
+            Some(h) => {
+                Some(corners_of(cell, h, &mesh.points, k).map_err(|m| ImportError::Syntax { line: tl, message: m })?)
+            }
+            None => None,
+        });
+    }
+    mesh.cell_data.extend(label_array(extra));
     crate::mesh::texts::apply_text_tables(&mut mesh.cell_data, &field_data).map_err(ImportError::Format)?;
     check_data(&mesh)?;
     Ok(mesh)
@@ -652,6 +664,39 @@ fn cells_of(
         }
     }
     Ok(cells)
+}
+
+/// A VTK higher-order cell type: its number of points when fixed, and its name.
+pub(crate) type HigherOrder = (Option<usize>, &'static str);
+
+/// The corner kind of VTK cell type `t` (cell `k`, listed on line `line`), with what makes
+/// it of higher order; unknown types are refused by number.
+pub(crate) fn vtk_kind(t: i64, k: usize, line: usize) -> Result<(CellKind, Option<HigherOrder>), ImportError> {
+    if let Some(kind) = CellKind::from_vtk(t) {
+        return Ok((kind, None));
+    }
+    match vtk_type(t) {
+        Some((kind, n, name)) => Ok((kind, Some((n, name)))),
+        None => Err(ImportError::Syntax {
+            line,
+            message: format!("cell {k}: cell type {t} is not read (vertex 1, line 3, triangle 5, polygon 7, quad 9, tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42, and the higher-order 21 to 37 and 68 to 81 as their corners)"),
+        }),
+    }
+}
+
+/// Cuts higher-order cell `k` to its corners, returning the label of its other nodes.
+pub(crate) fn corners_of(
+    cell: &mut MeshCell,
+    h: &HigherOrder,
+    points: &[Point],
+    k: usize,
+) -> Result<LabelValue, String> {
+    if let Some(n) = h.0 {
+        if cell.nodes.len() != n {
+            return Err(format!("cell {k}: {} points, a {} has {n}", cell.nodes.len(), h.1));
+        }
+    }
+    to_corners(cell, points).map_err(|m| format!("cell {k} ({}): {m}", h.1))
 }
 
 /// Checks that every data array has a value per point or per cell.

@@ -8,11 +8,16 @@
 //! the same names for several components, the same missing values). Data arrays may be
 //! `format="ascii"`, `"binary"` (base64 inline) or `"appended"` (in the `AppendedData`
 //! block, `encoding="raw"` or `"base64"`), uncompressed or compressed by
-//! `vtkZLibDataCompressor` (a header `[blocks, block size, last block size, compressed
-//! sizes…]` then one zlib stream per block), with `UInt32` or `UInt64` headers and either
-//! byte order. The grid's `FieldData` is read for the tables of texts of the mesh writers
-//! only (an integer column and a field-data table `gmap:texts:<name>`). Other compressors,
-//! `String` arrays and other datasets are refused, naming them.
+//! `vtkZLibDataCompressor`, `vtkLZMADataCompressor` or `vtkLZ4DataCompressor` (a header
+//! `[blocks, block size, last block size, compressed sizes…]` then one zlib stream, xz
+//! stream or raw LZ4 block per block), with `UInt32` or `UInt64` headers and either byte
+//! order. The grid's `FieldData` is read for the tables of texts of the mesh writers
+//! only (an integer column and a field-data table `gmap:texts:<name>`). Cells of higher order (VTK 21–37, 68–81) are read as their corner cells, their
+//! other points in the label [`HIGH_ORDER_LABEL`](super::high_order::HIGH_ORDER_LABEL).
+//! Other compressors, `String` arrays and other datasets are refused, naming them; so are
+//! a file without a `Piece` or a cell, a malformed XML declaration, a second
+//! `AppendedData`, a second `Points`, `Cells`, `PointData` or `CellData` in a `Piece`, an
+//! appended encoding other than `raw` and `base64`, and a data array without a `Name`.
 //!
 //! Errors name the file and the line of the XML element at fault. Sizes announced by
 //! headers are checked against the values the arrays must hold before anything is
@@ -24,9 +29,10 @@ use std::path::Path;
 
 use base64::Engine as _;
 use gmap_core::io::shorten;
-use gmap_core::LabelledGMap;
+use gmap_core::{LabelValue, LabelledGMap};
 
-use super::vtk::{check_data, data_arrays, points_of, polyhedron, Scalar, Value};
+use super::high_order::label_array;
+use super::vtk::{check_data, corners_of, data_arrays, points_of, polyhedron, vtk_kind, Scalar, Value};
 use super::{default_max_darts, FileError, ImportError};
 use crate::mesh::{CellKind, Mesh, MeshCell};
 
@@ -35,7 +41,57 @@ use crate::mesh::{CellKind, Mesh, MeshCell};
 struct Layout {
     big: bool,
     header: Scalar,
-    zlib: bool,
+    compressor: Option<Compressor>,
+}
+
+/// The compressors VTK writes (`vtkZLibDataCompressor`, `vtkLZMADataCompressor`, an xz
+/// stream per block, and `vtkLZ4DataCompressor`, a raw LZ4 block per block).
+#[derive(Clone, Copy)]
+enum Compressor {
+    Zlib,
+    Lzma,
+    Lz4,
+}
+
+/// A writer refusing more than `limit` bytes: a block cannot inflate past its header's size.
+struct Bounded {
+    out: Vec<u8>,
+    limit: usize,
+}
+
+impl std::io::Write for Bounded {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if self.out.len() + buf.len() > self.limit {
+            return Err(std::io::Error::other("more bytes than the header says"));
+        }
+        self.out.extend_from_slice(buf);
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Inflates one block of `size` bytes.
+fn inflate_block(c: Compressor, data: &[u8], size: usize, out: &mut Vec<u8>) -> Result<(), String> {
+    match c {
+        Compressor::Zlib => {
+            flate2::read::ZlibDecoder::new(data)
+                .take(size as u64 + 1)
+                .read_to_end(out)
+                .map_err(|e| format!("zlib: {e}"))?;
+        }
+        Compressor::Lzma => {
+            let mut w = Bounded { out: Vec::new(), limit: size };
+            lzma_rs::xz_decompress(&mut std::io::BufReader::new(data), &mut w).map_err(|e| format!("LZMA: {e}"))?;
+            out.extend_from_slice(&w.out);
+        }
+        Compressor::Lz4 => {
+            out.extend_from_slice(&lz4_flex::block::decompress(data, size).map_err(|e| format!("LZ4: {e}"))?);
+        }
+    }
+    Ok(())
 }
 
 /// The appended data: its bytes after the `_`, and whether they are base64 text.
@@ -92,10 +148,8 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
             at.checked_add(c).filter(|&e| e <= data.len()).ok_or_else(|| format!("block {b} runs past the data"))?;
         let size = if b + 1 == nb && last != 0 { last } else { bs };
         let before = out.len();
-        flate2::read::ZlibDecoder::new(&data[at..end])
-            .take(size as u64 + 1)
-            .read_to_end(&mut out)
-            .map_err(|e| format!("block {b}: zlib: {e}"))?;
+        let c = l.compressor.ok_or("no compressor")?;
+        inflate_block(c, &data[at..end], size, &mut out).map_err(|e| format!("block {b}: {e}"))?;
         if out.len() - before != size {
             return Err(format!("block {b} inflates to {} bytes, its header says {size}", out.len() - before));
         }
@@ -107,7 +161,7 @@ fn inflate(l: &Layout, header: &[u8], data: &[u8], want: usize) -> Result<Vec<u8
 /// The bytes of a binary block given as raw bytes (starting at its header).
 fn raw_block(l: &Layout, b: &[u8], want: usize) -> Result<Vec<u8>, String> {
     let hs = l.header.size();
-    if l.zlib {
+    if l.compressor.is_some() {
         let nb = word(l, b, 0)?;
         let hlen = nb
             .checked_add(3)
@@ -128,7 +182,7 @@ fn raw_block(l: &Layout, b: &[u8], want: usize) -> Result<Vec<u8>, String> {
 fn b64_block(l: &Layout, t: &[u8], want: usize) -> Result<Vec<u8>, String> {
     let t: Vec<u8> = t.iter().copied().filter(|c| !c.is_ascii_whitespace()).collect();
     let hs = l.header.size();
-    if l.zlib {
+    if l.compressor.is_some() {
         let first = b64(t.get(..b64_len(3 * hs)).ok_or("the block header is cut short")?)?;
         let nb = word(l, &first, 0)?;
         let hlen = nb.checked_add(3).and_then(|w| w.checked_mul(hs)).ok_or("the block header is too long")?;
@@ -215,6 +269,107 @@ fn child<'a, 'i>(node: roxmltree::Node<'a, 'i>, name: &str) -> Option<roxmltree:
     node.children().find(|c| c.has_tag_name(name))
 }
 
+/// The one child element `name` of `node`, refusing a second one.
+fn only_child<'a, 'i>(
+    node: roxmltree::Node<'a, 'i>,
+    name: &str,
+    line_of: &dyn Fn(roxmltree::Node) -> usize,
+) -> Result<Option<roxmltree::Node<'a, 'i>>, ImportError> {
+    let mut found = node.children().filter(|c| c.has_tag_name(name));
+    let first = found.next();
+    match found.next() {
+        Some(second) => Err(ImportError::Syntax {
+            line: line_of(second),
+            message: format!("a second {name} element in {}: it has one", node.tag_name().name()),
+        }),
+        None => Ok(first),
+    }
+}
+
+/// The value of `name="…"` in the text of a start tag.
+fn attribute_in<'t>(tag: &'t str, name: &str) -> Option<&'t str> {
+    let mut rest = tag;
+    while let Some(at) = rest.find(name) {
+        let before = rest[..at].chars().next_back();
+        let after = rest[at + name.len()..].trim_start();
+        if before.is_some_and(char::is_whitespace) {
+            if let Some(v) = after.strip_prefix('=') {
+                let v = v.trim_start();
+                let q = v.chars().next()?;
+                if q == '"' || q == '\'' {
+                    return v[1..].find(q).map(|end| &v[1..1 + end]);
+                }
+            }
+        }
+        rest = &rest[at + name.len()..];
+    }
+    None
+}
+
+/// Checks the XML declaration, when there is one, against XML 1.0 (§2.8): `version` first
+/// (`1.x`), then optionally `encoding` (UTF-8 here) and `standalone` (`yes`, `no`), quoted,
+/// closed by `?>`; a declaration anywhere but at the start is refused too.
+fn check_declaration(text: &str) -> Result<(), ImportError> {
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let bad = |m: String| ImportError::Syntax { line: 1, message: format!("XML declaration: {m}") };
+    if let Some(at) = body.get(1..).and_then(|b| b.find("<?xml")) {
+        let next = body[at + 6..].chars().next();
+        if next.is_none_or(|c| c.is_whitespace() || c == '?') {
+            let line = 1 + body[..at + 1].matches('\n').count();
+            return Err(ImportError::Syntax { line, message: "an XML declaration after the start of the file".into() });
+        }
+    }
+    let Some(rest) = body.strip_prefix("<?xml") else { return Ok(()) };
+    let end = rest.find("?>").ok_or_else(|| bad("not closed by '?>'".into()))?;
+    let mut attrs = rest[..end].trim_end();
+    if !attrs.starts_with(char::is_whitespace) {
+        return Err(bad("'<?xml' is not followed by a space".into()));
+    }
+    let mut names = Vec::new();
+    while !attrs.trim_start().is_empty() {
+        let a = attrs.trim_start();
+        let eq = a.find('=').ok_or_else(|| bad(format!("'{}' is not name=\"value\"", shorten(a.as_bytes(), 30))))?;
+        let name = a[..eq].trim_end();
+        let v = a[eq + 1..].trim_start();
+        let q = v
+            .chars()
+            .next()
+            .filter(|&q| q == '"' || q == '\'')
+            .ok_or_else(|| bad(format!("{name}: the value is not quoted")))?;
+        let close = v[1..].find(q).ok_or_else(|| bad(format!("{name}: the quote is not closed")))?;
+        let value = &v[1..1 + close];
+        let ok = match name {
+            "version" => {
+                names.is_empty()
+                    && value.len() >= 3
+                    && value.starts_with("1.")
+                    && value[2..].bytes().all(|b| b.is_ascii_digit())
+            }
+            "encoding" => names == ["version"] && value.eq_ignore_ascii_case("utf-8"),
+            "standalone" => {
+                names.first() == Some(&"version") && !names.contains(&"standalone") && (value == "yes" || value == "no")
+            }
+            _ => false,
+        };
+        if !ok {
+            return Err(bad(format!(
+                "{}=\"{}\" is not a version 1.x, an encoding UTF-8 and standalone yes or no, in that order",
+                shorten(name.as_bytes(), 30),
+                shorten(value.as_bytes(), 30)
+            )));
+        }
+        names.push(name);
+        attrs = &v[2 + close..];
+        if !(attrs.is_empty() || attrs.starts_with(char::is_whitespace)) {
+            return Err(bad(format!("no space after {name}")));
+        }
+    }
+    if names.first() != Some(&"version") {
+        return Err(bad("no version".into()));
+    }
+    Ok(())
+}
+
 fn attr_count(node: roxmltree::Node, name: &str, line: usize) -> Result<usize, ImportError> {
     node.attribute(name).and_then(|v| v.trim().parse().ok()).ok_or_else(|| ImportError::Syntax {
         line,
@@ -233,8 +388,32 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                     line,
                     message: "the AppendedData tag is not closed".into(),
                 })?;
+            if find(&bytes[at + 1..], b"<AppendedData").is_some() {
+                return Err(ImportError::Syntax {
+                    line,
+                    message: "a second AppendedData element: a file has one".into(),
+                });
+            }
             let tag = String::from_utf8_lossy(&bytes[at..tag_end]);
-            let base64 = !tag.contains("\"raw\"");
+            let base64 = match attribute_in(&tag, "encoding") {
+                Some("raw") => false,
+                Some("base64") => true,
+                Some(other) => {
+                    return Err(ImportError::Syntax {
+                        line,
+                        message: format!(
+                            "AppendedData encoding '{}' is not read (raw, base64)",
+                            shorten(other.as_bytes(), 40)
+                        ),
+                    })
+                }
+                None => {
+                    return Err(ImportError::Syntax {
+                        line,
+                        message: "AppendedData needs an encoding (raw, base64)".into(),
+                    })
+                }
+            };
             let under = tag_end
                 + 1
                 + bytes[tag_end + 1..].iter().position(|&c| c == b'_').ok_or_else(|| ImportError::Syntax {
@@ -254,6 +433,7 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
         let line = 1 + xml_bytes[..at].iter().filter(|&&c| c == b'\n').count();
         ImportError::Syntax { line, message: format!("not UTF-8 text: invalid byte at offset {at}") }
     })?;
+    check_declaration(text)?;
     let doc = roxmltree::Document::parse(text)
         .map_err(|e| ImportError::Syntax { line: e.pos().row as usize, message: format!("XML: {e}") })?;
     let line_of = |n: roxmltree::Node| doc.text_pos_at(n.range().start).row as usize;
@@ -280,16 +460,18 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
                 })
             }
         },
-        zlib: match root.attribute("compressor") {
-            None | Some("") => false,
-            Some("vtkZLibDataCompressor") => true,
+        compressor: match root.attribute("compressor") {
+            None | Some("") => None,
+            Some("vtkZLibDataCompressor") => Some(Compressor::Zlib),
+            Some("vtkLZMADataCompressor") => Some(Compressor::Lzma),
+            Some("vtkLZ4DataCompressor") => Some(Compressor::Lz4),
             Some(other) => {
                 return Err(ImportError::Syntax {
                     line: line_of(root),
                     message: format!(
-                        "compressor '{}' is not read (vtkZLibDataCompressor)",
-                        shorten(other.as_bytes(), 40)
-                    ),
+                    "compressor '{}' is not read (vtkZLibDataCompressor, vtkLZMADataCompressor, vtkLZ4DataCompressor)",
+                    shorten(other.as_bytes(), 40)
+                ),
                 })
             }
         },
@@ -298,9 +480,18 @@ pub fn parse_vtu(bytes: &[u8]) -> Result<Mesh, ImportError> {
         .ok_or_else(|| ImportError::Syntax { line: line_of(root), message: "no UnstructuredGrid element".into() })?;
     let mut mesh = Mesh::default();
     let pieces: Vec<_> = grid.children().filter(|c| c.has_tag_name("Piece")).collect();
-    for piece in pieces {
-        read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh)?;
+    if pieces.is_empty() {
+        return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: false });
     }
+    let mut extra = Vec::new();
+    for piece in pieces {
+        read_piece(piece, &layout, app.as_ref(), &line_of, &mut mesh, &mut extra)?;
+    }
+    if mesh.cells.is_empty() {
+        return Err(ImportError::MissingSection { section: "<Piece>".into(), empty: true });
+    }
+    extra.resize(mesh.cells.len(), None);
+    mesh.cell_data.extend(label_array(extra));
     let field_data = read_field_data(grid, &layout, app.as_ref(), &line_of)?;
     crate::mesh::texts::apply_text_tables(&mut mesh.cell_data, &field_data).map_err(ImportError::Format)?;
     check_data(&mesh)?;
@@ -336,6 +527,7 @@ fn read_piece(
     app: Option<&Appended>,
     line_of: &dyn Fn(roxmltree::Node) -> usize,
     mesh: &mut Mesh,
+    extra: &mut Vec<Option<LabelValue>>,
 ) -> Result<(), ImportError> {
     let pl = line_of(piece);
     let np = attr_count(piece, "NumberOfPoints", pl)?;
@@ -343,6 +535,9 @@ fn read_piece(
     let base = mesh.points.len();
     let (cells_before, points_before) = (mesh.cells.len(), mesh.points.len());
     let missing = |what: &str, line: usize| ImportError::Syntax { line, message: format!("no {what}") };
+    for name in ["Points", "Cells", "PointData", "CellData"] {
+        only_child(piece, name, line_of)?;
+    }
     if np > 0 {
         let pts = child(piece, "Points").ok_or_else(|| missing("Points element", pl))?;
         let da = child(pts, "DataArray").ok_or_else(|| missing("DataArray in Points", line_of(pts)))?;
@@ -400,10 +595,7 @@ fn read_piece(
                     .ok_or_else(|| err("a point index that is not an index".into()))
             };
             let t = types[k].int().unwrap_or(-1);
-            let kind = CellKind::from_vtk(t).ok_or_else(|| ImportError::Syntax {
-                line: tl,
-                message: format!("cell {}: cell type {t} is not read (vertex 1, line 3, triangle 5, polygon 7, quad 9, tetra 10, hexahedron 12, wedge 13, pyramid 14, polyhedron 42)", cells_before + k),
-            })?;
+            let (kind, higher) = vtk_kind(t, cells_before + k, tl)?;
             if kind == CellKind::Polyhedron {
                 let fe = faceoffsets.get(k).copied().unwrap_or(-1);
                 if fe < 0 {
@@ -418,7 +610,14 @@ fn read_piece(
                 face_start = fe;
             } else {
                 let nodes: Vec<u32> = conn[start..end].iter().map(&shift).collect::<Result<_, _>>()?;
-                mesh.cells.push(MeshCell { kind, nodes, faces: Vec::new() });
+                let mut cell = MeshCell { kind, nodes, faces: Vec::new() };
+                if let Some(h) = higher {
+                    let v = corners_of(&mut cell, &h, &mesh.points, cells_before + k)
+                        .map_err(|m| ImportError::Syntax { line: tl, message: m })?;
+                    extra.resize(cells_before + k, None);
+                    extra.push(Some(v));
+                }
+                mesh.cells.push(cell);
             }
             start = end;
         }
@@ -427,7 +626,12 @@ fn read_piece(
         let Some(sec) = child(piece, section) else { continue };
         for da in sec.children().filter(|c| c.has_tag_name("DataArray")) {
             let line = line_of(da);
-            let name = da.attribute("Name").unwrap_or("").to_string();
+            let name = da.attribute("Name").filter(|n| !n.is_empty()).map(str::to_string).ok_or_else(|| {
+                ImportError::Syntax {
+                    line,
+                    message: format!("a DataArray of {section} without a Name: labels are named"),
+                }
+            })?;
             let comps = match da.attribute("NumberOfComponents") {
                 Some(c) => c.trim().parse::<usize>().ok().filter(|&c| c > 0).ok_or_else(|| ImportError::Syntax {
                     line,

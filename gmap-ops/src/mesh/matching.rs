@@ -163,12 +163,29 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
         return Ok(());
     }
     let entries: Vec<&Entry<D>> = m.facets().collect();
+    // Two faces sharing two edges or more without being one face: two triangles sharing two
+    // edges have the same three vertices, hence one key and one entry, so one of the two has
+    // four corners or more, and the edges shared are edges of it. Only the edges of such
+    // faces are looked at (none in a tetrahedral mesh).
+    let edge = |c: &SmallVec<[u32; 4]>, j: usize| {
+        let (a, b) = (c[j], c[(j + 1) % c.len()]);
+        (a.min(b), a.max(b))
+    };
+    let mut polygon_edges: rustc_hash::FxHashSet<(u32, u32)> = rustc_hash::FxHashSet::default();
+    for e in entries.iter().filter(|e| e.first.cycle.len() > 3) {
+        polygon_edges.extend((0..e.first.cycle.len()).map(|j| edge(&e.first.cycle, j)));
+    }
+    if polygon_edges.is_empty() {
+        return Ok(());
+    }
     let mut around: FxHashMap<(u32, u32), SmallVec<[u32; 4]>> = FxHashMap::default();
     for (k, e) in entries.iter().enumerate() {
         let c = &e.first.cycle;
         for j in 0..c.len() {
-            let (a, b) = (c[j], c[(j + 1) % c.len()]);
-            around.entry((a.min(b), a.max(b))).or_default().push(k as u32);
+            let key = edge(c, j);
+            if polygon_edges.contains(&key) {
+                around.entry(key).or_default().push(k as u32);
+            }
         }
     }
     let owners = |e: &Entry<D>| -> SmallVec<[usize; 2]> {
