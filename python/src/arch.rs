@@ -17,7 +17,8 @@ fn input_of(py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Option<Input>> {
     if x.downcast::<PyArchComplex>().is_ok() {
         return Ok(None);
     }
-    let path: PathBuf = x.extract().map_err(|_| Failure::input("expected an ArchComplex or a path to a .json or map file"))?;
+    let path: PathBuf =
+        x.extract().map_err(|_| Failure::input("expected an ArchComplex or a path to a .json or map file"))?;
     Ok(Some(py.allow_threads(|| gmap::open(&path)).map_err(Failure::from)?))
 }
 
@@ -29,7 +30,9 @@ pub fn _open_arch(py: Python<'_>, path: PathBuf, snap: f64) -> PyResult<(PyArchC
     let o = gmap::OpenOptions::max_darts(None).with_snap(Some(snap));
     let input = py.allow_threads(|| gmap::open_with(&path, &o)).map_err(Failure::from)?;
     if !matches!(input, Input::Arch(_)) {
-        return Err(Failure::input(format!("{}: snap= applies to a .json architectural complex", path.display())).into());
+        return Err(
+            Failure::input(format!("{}: snap= applies to a .json architectural complex", path.display())).into()
+        );
     }
     let notes = input.notes().to_vec();
     Ok((PyArchComplex { input }, notes))
