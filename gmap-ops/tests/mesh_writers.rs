@@ -98,7 +98,7 @@ fn every_volume_is_written_with_a_positive_volume() {
         let mut read = vec![vtk, vtu];
         if kind != CellKind::Polyhedron {
             let msh = msh_bytes_with_labels(&m, &l, false).unwrap();
-            read.push(parse_msh(std::str::from_utf8(&msh).unwrap()).unwrap().mesh);
+            read.push(parse_msh(&msh).unwrap().mesh);
         }
         for mesh in read {
             let v = volumes(&mesh);
@@ -184,7 +184,7 @@ fn names_are_integer_columns_with_a_table_of_texts() {
     }
     let msh = String::from_utf8(msh_bytes_with_labels(&m, &l, false).unwrap()).unwrap();
     assert!(msh.contains("$PhysicalNames\n2\n3 7 \"left\"\n3 8 \"right side\"\n$EndPhysicalNames\n"), "{msh}");
-    let back = parse_msh(&msh).unwrap().mesh;
+    let back = parse_msh(msh.as_bytes()).unwrap().mesh;
     let w = back.cell_data.iter().find(|a| a.name == "w").unwrap();
     assert_eq!(w.values.iter().flatten().collect::<Vec<_>>(), vec![&LabelValue::Real(0.25)]);
     // a text other than a physical name has no place in .msh
@@ -248,7 +248,7 @@ fn every_writer_reads_back(m: &DenseMap, l: &DenseLabels) -> usize {
     let outputs: Vec<(&str, Result<Mesh, ExportError>)> = vec![
         (".vtk", vtk_string_with_labels(m, l).map(|t| parse_vtk(t.as_bytes()).unwrap())),
         (".vtu", vtu_bytes_with_labels(m, l).map(|b| parse_vtu(&b).unwrap())),
-        (".msh", msh_bytes_with_labels(m, l, false).map(|b| parse_msh(std::str::from_utf8(&b).unwrap()).unwrap().mesh)),
+        (".msh", msh_bytes_with_labels(m, l, false).map(|b| parse_msh(&b).unwrap().mesh)),
     ];
     for (format, out) in outputs {
         let mesh = match out {

@@ -398,7 +398,7 @@ pub fn msh_bytes_with_labels(map: &DenseMap, labels: &DenseLabels, binary: bool)
     let ascii = serialise(&m, false);
     super::readback::check(map, labels, ".msh", Labelling::Gmsh, || {
         let text = std::str::from_utf8(&ascii).map_err(|e| crate::import::ImportError::Format(e.to_string()))?;
-        crate::import::parse_msh(text).map(|f| f.mesh)
+        crate::import::parse_msh(text.as_bytes()).map(|f| f.mesh)
     })?;
     Ok(if binary { serialise(&m, true) } else { ascii })
 }
