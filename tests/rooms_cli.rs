@@ -105,7 +105,7 @@ fn gmap_rooms_writes_a_three_map_whose_volumes_are_the_rooms() {
     let from = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/arch/rooms_door_window.json");
     let o = gmap(&["rooms", p(&from), p(&json)]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert_eq!(stdout(&o), "faces 13, edges 29, vertices 20\n3-cells 3: 2 rooms and the outer cell\nroom 1: 8 faces, volume 72; next to room 2\nroom 2: 8 faces, volume 72; next to room 1\n");
+    assert_eq!(stdout(&o), "faces 13, edges 29, vertices 20\n3-cells 3: 2 rooms and the outer cell\nroom 1 (kitchen): 8 faces, volume 72; next to room 2 (living)\nroom 2 (living): 8 faces, volume 72; next to room 1 (kitchen)\n");
     let written = std::fs::read_to_string(&json).unwrap();
     assert!(written.contains(r#"{"id": "window", "dim": 2, "labels": {"kind": "window"}}"#), "{written}");
     // .gmap: the faces' labels and ids on the 2-cells (the wall with the window cut in two

@@ -112,8 +112,19 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1000.0
 }
 
+/// A `.txt` file that does not open as a Perseus file does (its first line a lone
+/// dimension): a folder's notes and read-me files, left out of a folder's listing.
+fn plain_text(f: &std::path::Path) -> bool {
+    let txt = f.extension().is_some_and(|e| e.eq_ignore_ascii_case("txt"));
+    let mut head = [0u8; 64];
+    let n = std::fs::File::open(f).and_then(|mut h| std::io::Read::read(&mut h, &mut head)).unwrap_or(0);
+    let first = String::from_utf8_lossy(&head[..n]).lines().next().unwrap_or("").trim().to_string();
+    txt && first.parse::<u32>().is_err()
+}
+
 /// The files named by `inputs`: a file as given, a folder as its supported files sorted by
-/// name (not recursive), each with whether it was found in a folder. A folder with no
+/// name (not recursive; a `.txt` only when it starts as a Perseus file), each with whether
+/// it was found in a folder. A folder with no
 /// supported file is an error.
 pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
     let mut files = Vec::new();
@@ -125,7 +136,7 @@ pub fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, bool)>> {
                         .context(format!("{}: cannot read the folder", p.display()))
                 })?
                 .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|f| f.is_file() && crate::formats::kind_of(f).is_some())
+                .filter(|f| f.is_file() && crate::formats::kind_of(f).is_some() && !plain_text(f))
                 .collect();
             if found.is_empty() {
                 return Err(err!(

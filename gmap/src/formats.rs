@@ -473,7 +473,7 @@ mod tests {
 
     #[test]
     fn help_lists_every_kind() {
-        assert_eq!(extensions_of(&[Kind::Cubical, Kind::Image]), ".cub, .cel, .pbm, .npy, .complex, .pgm, .png");
+        assert_eq!(extensions_of(&[Kind::Cubical, Kind::Image]), ".cub, .cel, .pbm, .npy, .complex, .pgm, .png, .txt");
         assert!(input_help().contains(".lex[#name]"));
         assert!(output_help().ends_with("or the incidence graph as .json, .dot, .graphml"));
     }

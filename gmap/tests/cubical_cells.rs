@@ -176,7 +176,7 @@ fn a_gmap_of_cubes_pinched_at_a_cell_is_refused() {
     std::fs::write(&src, "(0,0)\n(1,1)\n").unwrap();
     let out = dir.path().join("corner.gmap");
     let e = gmap::save_file(&src, &out, &gmap::SaveOptions::default()).unwrap_err().to_string();
-    assert!(e.starts_with(&src.display().to_string()) && e.contains("cell 1x1"), "{e}");
+    assert!(e.contains(&src.display().to_string()) && e.contains("cell 1x1"), "{e}");
     assert!(!out.exists());
 }
 
