@@ -74,6 +74,9 @@ pub struct Pair {
 /// A chain with coefficients in `Z/p` (`1..p`) on named cells.
 pub type Chain = Vec<(CellName, u32)>;
 
+/// The birth cell and, for a finite pair, the death cell of a pair.
+type PairCells = (CellName, Option<CellName>);
+
 /// A persistence diagram over `Z/p`, with a representative cycle per pair if asked for.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Diagram {
@@ -116,7 +119,7 @@ impl Diagram {
         let order =
             |p: &Pair, q: &Pair| p.dim.cmp(&q.dim).then(p.birth.total_cmp(&q.birth)).then(p.death.total_cmp(&q.death));
         if self.cycles.len() == self.pairs.len() && !self.cycles.is_empty() {
-            let mut all: Vec<(Pair, (Chain, (CellName, Option<CellName>)))> =
+            let mut all: Vec<(Pair, (Chain, PairCells))> =
                 self.pairs.drain(..).zip(self.cycles.drain(..).zip(self.cells.drain(..))).collect();
             all.sort_by(|(p, _), (q, _)| order(p, q));
             let (pairs, rest): (Vec<Pair>, Vec<_>) = all.into_iter().unzip();
