@@ -122,7 +122,31 @@ def _read_perseus_cubical(path: str) -> Tuple[np.ndarray, List[bool]]:
     return np.asarray(values, dtype=np.float64).reshape(shape, order="F"), list(periodic)
 
 
-class CubicalComplex:
+class _Queries:
+    """What GUDHI's complexes answer from their last diagram, shared by the cubical
+    complexes and the simplex tree."""
+
+    _diagram: Optional[_Diagram]
+
+    def _need(self, what: str) -> _Diagram:
+        if self._diagram is None:
+            raise RuntimeError(f"compute_persistence() must be called before {what}()")
+        return self._diagram
+
+    def betti_numbers(self) -> List[int]:
+        """The number of essential classes per dimension, 0 to the number of axes."""
+        return self._need("betti_numbers").betti()
+
+    def persistent_betti_numbers(self, from_value: float, to_value: float) -> List[int]:
+        """Per dimension, the pairs born at or before from_value that die after to_value."""
+        return self._need("persistent_betti_numbers").persistent_betti(from_value, to_value)
+
+    def persistence_intervals_in_dimension(self, dimension: int) -> np.ndarray:
+        """The (n, 2) array of (birth, death) of dimension ``dimension``."""
+        return self._need("persistence_intervals_in_dimension").intervals(dimension)
+
+
+class CubicalComplex(_Queries):
     """GUDHI's ``CubicalComplex``: values on the top-dimensional cells (a face takes the
     minimum of its cofaces') or on the vertices (a cell takes the maximum of its
     vertices'), from an array, from a flat list with ``dimensions`` (Fortran order), or
@@ -230,23 +254,6 @@ class CubicalComplex:
         assert self._diagram is not None
         return _gudhi_order(self._diagram.pairs)
 
-    def _need(self, what: str) -> _Diagram:
-        if self._diagram is None:
-            raise RuntimeError(f"compute_persistence() must be called before {what}()")
-        return self._diagram
-
-    def betti_numbers(self) -> List[int]:
-        """The number of essential classes per dimension, 0 to the number of axes."""
-        return self._need("betti_numbers").betti()
-
-    def persistent_betti_numbers(self, from_value: float, to_value: float) -> List[int]:
-        """Per dimension, the pairs born at or before from_value that die after to_value."""
-        return self._need("persistent_betti_numbers").persistent_betti(from_value, to_value)
-
-    def persistence_intervals_in_dimension(self, dimension: int) -> np.ndarray:
-        """The (n, 2) array of (birth, death) of dimension ``dimension``."""
-        return self._need("persistence_intervals_in_dimension").intervals(dimension)
-
     def _pair_cells(self, what: str) -> Tuple[np.ndarray, list, list, list]:
         self._need(what)
         field, minp = self._last
@@ -321,7 +328,7 @@ class PeriodicCubicalComplex(CubicalComplex):
     _periodic_class = True
 
 
-class SimplexTree:
+class SimplexTree(_Queries):
     """GUDHI's ``SimplexTree``: simplices with a filtration value each, a face never above
     its cofaces (``insert`` lowers faces, ``make_filtration_non_decreasing`` raises
     cofaces). Persistence goes to gmap with every simplex and its value."""
@@ -537,20 +544,6 @@ class SimplexTree:
         self.compute_persistence(homology_coeff_field, min_persistence, persistence_dim_max)
         assert self._diagram is not None
         return _gudhi_order(self._diagram.pairs)
-
-    def _need(self, what: str) -> _Diagram:
-        if self._diagram is None:
-            raise RuntimeError(f"compute_persistence() must be called before {what}()")
-        return self._diagram
-
-    def betti_numbers(self) -> List[int]:
-        return self._need("betti_numbers").betti()
-
-    def persistent_betti_numbers(self, from_value: float, to_value: float) -> List[int]:
-        return self._need("persistent_betti_numbers").persistent_betti(from_value, to_value)
-
-    def persistence_intervals_in_dimension(self, dimension: int) -> np.ndarray:
-        return self._need("persistence_intervals_in_dimension").intervals(dimension)
 
     def _with_cells(self) -> Tuple[np.ndarray, list, list]:
         self._need("persistence_pairs")
