@@ -97,6 +97,28 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
                 why: "would leave a merged cell without darts (both far ends are missing)",
             });
         }
+        if remove {
+            // two open cells (with darts free for an involution of the cell) re-linked
+            // around the removed cell may fall into two cells, not one; and above edges,
+            // an open side cell's count says nothing of the space (its pieces are not
+            // balls), so both sides must be closed. Open edges (EO's incomplete edges,
+            // missing an end) merge into one open edge.
+            if i > 0 {
+                if let Some(y) = sides.iter().copied().find(|&y| (0..nb).any(|j| g.is_free(y, j))) {
+                    return Err(EulerError::WouldChangeTopology {
+                        dim: i,
+                        dart: y,
+                        why: "merges cells that are not closed (a dart free inside a side cell)",
+                    });
+                }
+            } else if !merges_into_one(g, &cell, &sides, i, nb) {
+                return Err(EulerError::WouldChangeTopology {
+                    dim: i,
+                    dart: d,
+                    why: "would split the merged edge in two (its sides are open edges)",
+                });
+            }
+        }
         if !remove {
             // both end cells interior: no free dart in the cell or at its ends
             for &x in &cell {
@@ -135,6 +157,52 @@ fn check_collapse<A: Attributes>(g: &GMap<A>, d: DartId, i: usize, kind: Move) -
         dart: d,
         why: if remove { "has the same cell on both sides" } else { "has the same cell at both ends" },
     })
+}
+
+/// Whether the darts of `sides` outside `cell`, with `alpha_i` re-linked around the cell as
+/// [`collapse`] will re-link it, form one orbit of every involution but `alpha_nb`: the two
+/// `nb`-cells become one. Two closed cells always do; open ones (darts free for an
+/// involution of the cell) may fall apart. O(size of the sides · n).
+fn merges_into_one<A: Attributes>(g: &GMap<A>, cell: &[DartId], sides: &HashSet<DartId>, i: usize, nb: usize) -> bool {
+    let set: HashSet<DartId> = cell.iter().copied().collect();
+    let mut relinked: HashMap<DartId, DartId> = HashMap::default();
+    for &x in cell {
+        let y = g.alpha(x, i);
+        if set.contains(&y) {
+            continue;
+        }
+        let target = relink_target(g, &set, x, i, nb);
+        relinked.insert(y, target.unwrap_or(y));
+    }
+    let rest: Vec<DartId> = sides.iter().copied().filter(|x| !set.contains(x)).collect();
+    let Some(&start) = rest.first() else { return true };
+    let mut seen: HashSet<DartId> = HashSet::default();
+    seen.insert(start);
+    let mut stack = vec![start];
+    while let Some(x) = stack.pop() {
+        for j in (0..=g.dim()).filter(|&j| j != nb) {
+            let y = if j == i { relinked.get(&x).copied().unwrap_or_else(|| g.alpha(x, i)) } else { g.alpha(x, j) };
+            if !set.contains(&y) && seen.insert(y) {
+                stack.push(y);
+            }
+        }
+    }
+    seen.len() == rest.len()
+}
+
+/// The dart outside `set` that `alpha_i` of `alpha_i(x)` reaches once the cell `set` is gone
+/// (alternating `alpha_nb`, `alpha_i` from `x`), or `None` when the walk stays in the cell
+/// (`alpha_i(x)` becomes i-free).
+fn relink_target<A: Attributes>(g: &GMap<A>, set: &HashSet<DartId>, x: DartId, i: usize, nb: usize) -> Option<DartId> {
+    let mut w = g.alpha(x, nb);
+    let mut z = g.alpha(w, i);
+    let mut steps = 0;
+    while set.contains(&z) && z != w && steps <= set.len() {
+        w = g.alpha(z, nb);
+        z = g.alpha(w, i);
+        steps += 1;
+    }
+    (!set.contains(&z)).then_some(z)
 }
 
 /// The corner test: in every k-cell (k other than i and nb) that the cell meets, its
@@ -213,16 +281,8 @@ pub(super) fn collapse<A: Attributes>(g: &mut GMap<A>, cell: &[DartId], i: usize
         if set.contains(&y) {
             continue;
         }
-        let mut w = g.alpha(x, nb);
-        let mut z = g.alpha(w, i);
-        let mut steps = 0;
-        while set.contains(&z) && z != w && steps <= cell.len() {
-            w = g.alpha(z, nb);
-            z = g.alpha(w, i);
-            steps += 1;
-        }
-        let target = if set.contains(&z) { y } else { z };
-        links.push((y, target));
+        let target = relink_target(g, &set, x, i, nb);
+        links.push((y, target.unwrap_or(y)));
     }
     for &x in cell {
         g.remove_dart(x);
@@ -264,7 +324,9 @@ fn collapse_counted<A: Attributes>(g: &mut GMap<A>, d: DartId, i: usize, kind: M
 /// ```
 /// Precondition ([`is_removable_keeping_homology`]): `i < n`; the cell has degree 2 (CGAL's condition:
 /// `alpha_{i+1} alpha_{i+2}` is an involution on its darts); no dart is (i+1)-free; its
-/// darts meet exactly two distinct (i+1)-cells, and in every other cell it touches its
+/// darts meet exactly two distinct (i+1)-cells, closed (no dart of theirs free for
+/// `alpha_0` … `alpha_i`) for `i > 0`, and for a vertex two edges that make one edge once
+/// re-linked (open edges, missing an end, may), and in every other cell it touches its
 /// appearances join distinct corners without a cycle (else that cell would fall apart) —
 /// or, for `i = 1`, the edge is dangling. This
 /// is stricter than CGAL's [`remove_cell`](super::try_remove_cell), which also removes
