@@ -45,7 +45,15 @@ impl PyGMap {
     /// Wraps a dense map (no labels).
     pub fn from_dense(m: &DenseMap) -> Self {
         let (g, ids) = LabelledGMap::from_dense_with_attributes(m);
-        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None, source: None, marks: Vec::new(), info: Default::default() };
+        let mut m = PyGMap {
+            g,
+            ids,
+            slot_index: Vec::new(),
+            dense: None,
+            source: None,
+            marks: Vec::new(),
+            info: Default::default(),
+        };
         m.index_slots();
         m
     }

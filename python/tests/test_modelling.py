@@ -570,3 +570,17 @@ def test_random_operations_keep_the_map_valid_and_chi_as_documented(steps):
             assert chi(m) == before + m.cell_counts()[2] - faces and free >= 0
         m.check()
         assert len(m.infos(2)) == m.cell_counts()[2] if len(m) else True
+
+
+def test_every_gmap_method_has_a_stub():
+    import re
+
+    from conftest import REPO
+
+    text = (REPO / "python" / "gmap" / "_gmap.pyi").read_text()
+    body = text[text.index("class GMap:") :]
+    body = body[: body.index("\nclass ", 1)]
+    stubbed = set(re.findall(r"def (\w+)\(", body))
+    public = {n for n in dir(gmap.GMap) if not n.startswith("_")}
+    # the mesh bridges are set on the class by gmap/mesh.py, typed there
+    assert public - stubbed == {"to_meshio", "to_pyvista", "from_meshio"}

@@ -154,7 +154,8 @@ fn strip_dim<const I: usize>(g: &mut LabelledGMap)
 where
     L6: AttributeAt<I, Value = Labels>,
 {
-    let ids: Vec<(AttrId, usize)> = g.attributes::<I>().filter(|(_, l)| key(l).is_some()).map(|(id, l)| (id, l.len())).collect();
+    let ids: Vec<(AttrId, usize)> =
+        g.attributes::<I>().filter(|(_, l)| key(l).is_some()).map(|(id, l)| (id, l.len())).collect();
     for (id, len) in ids {
         if len == 1 {
             if let Some(d) = g.attribute_dart::<I>(id) {
@@ -289,10 +290,10 @@ fn point_of(p: &Bound<'_, PyAny>) -> Res<[f64; 3]> {
 
 /// Points from Python: a sequence of points or an array of shape (k, 2) or (k, 3).
 fn points_of(p: &Bound<'_, PyAny>) -> Res<Vec<[f64; 3]>> {
-    let items: Vec<Bound<'_, PyAny>> =
-        p.try_iter()
-            .and_then(|it| it.collect::<PyResult<_>>())
-            .map_err(|_| Failure::input("points are a sequence of points"))?;
+    let items: Vec<Bound<'_, PyAny>> = p
+        .try_iter()
+        .and_then(|it| it.collect::<PyResult<_>>())
+        .map_err(|_| Failure::input("points are a sequence of points"))?;
     items.iter().map(point_of).collect()
 }
 
@@ -322,7 +323,9 @@ impl PyGMap {
             ConstructError::NotFree { dart, alpha } => {
                 (Kind::Precondition, format!("{} is not {alpha}-free", d(*dart)), Some(*dart))
             }
-            ConstructError::NoPoint(h) => (Kind::Precondition, format!("the vertex of {} has no point", d(*h)), Some(*h)),
+            ConstructError::NoPoint(h) => {
+                (Kind::Precondition, format!("the vertex of {} has no point", d(*h)), Some(*h))
+            }
             ConstructError::TooFewSteps { .. } | ConstructError::BadAxis(_) | ConstructError::BadParameter { .. } => {
                 (Kind::Input, e.to_string(), None)
             }
@@ -410,7 +413,12 @@ impl PyGMap {
     }
 
     /// LCC's make_triangle(p0, p1, p2): an isolated triangle; returns the dart at p0.
-    fn make_triangle(&mut self, p0: &Bound<'_, PyAny>, p1: &Bound<'_, PyAny>, p2: &Bound<'_, PyAny>) -> PyResult<usize> {
+    fn make_triangle(
+        &mut self,
+        p0: &Bound<'_, PyAny>,
+        p1: &Bound<'_, PyAny>,
+        p2: &Bound<'_, PyAny>,
+    ) -> PyResult<usize> {
         let p = [point_of(p0)?, point_of(p1)?, point_of(p2)?];
         self.made(6, |g| g.try_make_polygon(&p))
     }
@@ -549,9 +557,9 @@ impl PyGMap {
         if m.is_callable() && !m.hasattr("shape")? {
             return self.transform_by_callable(m, d, i);
         }
-        let rows: Vec<Vec<f64>> = m.extract().map_err(|_| {
-            Failure::input("transform takes a (3, 3), (3, 4) or (4, 4) matrix of floats or a callable")
-        })?;
+        let rows: Vec<Vec<f64>> = m
+            .extract()
+            .map_err(|_| Failure::input("transform takes a (3, 3), (3, 4) or (4, 4) matrix of floats or a callable"))?;
         let shape = (rows.len(), rows.first().map_or(0, |r| r.len()));
         if rows.iter().any(|r| r.len() != shape.1) || !matches!(shape, (3, 3) | (3, 4) | (4, 4)) {
             return Err(Failure::input(format!(
@@ -563,8 +571,11 @@ impl PyGMap {
             return Err(Failure::input("a transform matrix has finite entries").into());
         }
         if shape.0 == 4 && rows[3] != [0.0, 0.0, 0.0, 1.0] {
-            return Err(Failure::input(format!("the last row of a (4, 4) affine matrix is 0 0 0 1, not {:?}", rows[3]))
-                .into());
+            return Err(Failure::input(format!(
+                "the last row of a (4, 4) affine matrix is 0 0 0 1, not {:?}",
+                rows[3]
+            ))
+            .into());
         }
         let mut a = [[0.0; 4]; 3];
         for r in 0..3 {
@@ -1098,7 +1109,10 @@ impl PyGMap {
         match e {
             G::Edit(x) => self.edit_failure(x),
             G::Boundary { dart, alpha } => self.with_dart(
-                Failure::new(Kind::Precondition, format!("{} is {alpha}-free: the map has a boundary and no dual", self.dart_text(*dart))),
+                Failure::new(
+                    Kind::Precondition,
+                    format!("{} is {alpha}-free: the map has a boundary and no dual", self.dart_text(*dart)),
+                ),
                 Some(*dart),
             ),
             G::NoPoint(h) => self.with_dart(
@@ -1128,7 +1142,10 @@ impl PyGMap {
             (Some(d), Some(i)) => {
                 let h = self.handle(d)?;
                 let i = usize::try_from(i).ok().filter(|&i| i <= self.g.dim() + 1).ok_or_else(|| {
-                    Failure::input(format!("cell dimension {i}: from 0 to {} (dim + 1: the component)", self.g.dim() + 1))
+                    Failure::input(format!(
+                        "cell dimension {i}: from 0 to {} (dim + 1: the component)",
+                        self.g.dim() + 1
+                    ))
                 })?;
                 self.g.try_transform_cell(h, i, f).map_err(|e| self.edit_failure(&e))?;
             }
@@ -1146,7 +1163,10 @@ impl PyGMap {
             (Some(d), Some(i)) => {
                 let h = self.handle(d)?;
                 let i = usize::try_from(i).ok().filter(|&i| i <= self.g.dim() + 1).ok_or_else(|| {
-                    Failure::input(format!("cell dimension {i}: from 0 to {} (dim + 1: the component)", self.g.dim() + 1))
+                    Failure::input(format!(
+                        "cell dimension {i}: from 0 to {} (dim + 1: the component)",
+                        self.g.dim() + 1
+                    ))
                 })?;
                 if i == self.g.dim() + 1 {
                     self.g.orbit(h, gmap::core::AlphaSet::all(self.g.dim()))
