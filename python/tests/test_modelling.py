@@ -584,3 +584,31 @@ def test_every_gmap_method_has_a_stub():
     public = {n for n in dir(gmap.GMap) if not n.startswith("_")}
     # the mesh bridges are set on the class by gmap/mesh.py, typed there
     assert public - stubbed == {"to_meshio", "to_pyvista", "from_meshio"}
+
+
+def test_splits_chamfer_edge_and_extrusion_along_a_path():
+    h = gmap.GMap(3)
+    v = h.make_hexahedron((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 1, 1), (0, 0, 1), (1, 0, 1), (1, 1, 1))
+    # the loop of the four edges of a face: the volume cut by a new face along it
+    path = [v, h.next(v), h.next(h.next(v)), h.previous(v)]
+    assert h.can_split_volume(path) and h.can_split_cell(path, 3)
+    a, b = h.copy(), h.copy()
+    a.split_volume(path)
+    assert a.cell_counts() == [8, 12, 7, 2] and a.euler_characteristic() == 1
+    # the same cut through the general split: one more face and one more volume
+    assert b.split_cell(path, 3) == [0, 0, 1, 1] and b.cell_counts() == a.cell_counts()
+    assert not h.can_split_volume(path[:2])
+    # an edge bevelled: a new face, χ kept
+    assert h.can_chamfer_edge(v, 0.25) and not h.can_chamfer_edge(v, 0.0)
+    h.chamfer_edge(v, 0.25)
+    assert h.cell_counts() == [10, 15, 7, 1] and h.euler_characteristic() == 1
+    # a square extruded along a segment of the map: as along the segment's vector
+    s, t = gmap.GMap(3), gmap.GMap(3)
+    for m in (s, t):
+        m.make_quadrangle((0, 0), (1, 0), (1, 1), (0, 1))
+        m.make_segment((5, 5, 0), (5, 5, 1))
+    assert s.can_extrude_cell_along_path(0, 2, [8])
+    steps = s.extrude_cell_along_path(0, 2, [8])
+    t.extrude_cell(0, 2, (0, 0, 1))
+    assert len(steps) == 1 and s.cell_counts() == t.cell_counts() == [10, 13, 7, 3]
+    assert s.bounding_box() == t.bounding_box()
