@@ -160,6 +160,12 @@ def test_lcc_3_edge_contraction_steps():
     assert m.is_contractible(d, 1)
     m.contract_cell(d, 1)
     counts_3(m, (0, 0, 0, 0, 0), 278)
+    # :281-284: a loop (a half-edge 1-sewn to its other orientation)
+    d = m.make_edge()
+    m.set_point(d, (0, 0, 0))
+    m.sew(d, m.other_orientation(d), 1)
+    m.contract_cell(d, 1)
+    counts_3(m, (0, 0, 0, 0, 0), 284)
     # :286-290: an open segment
     m.contract_cell(m.make_segment((0, 0, 0), (1, 0, 0)), 1)
     counts_3(m, (0, 0, 0, 0, 0), 290)
@@ -187,6 +193,63 @@ def test_lcc_3_edge_contraction_steps():
     # :321-323
     m.contract_cell(dart(m, "dh3"), 1)
     counts_3(m, (0, 0, 0, 0, 0), 323)
+
+
+def two_triangles(m, sew):
+    """The two triangles of Linear_cell_complex_3_test.h:327-328 (and :349-350, :381-382),
+    sewn by `sew`; tags dh1, dh2 as CGAL names them."""
+    tag(m, m.make_triangle((5, 5, 3), (7, 5, 3), (6, 6, 3)), "dh1")
+    tag(m, m.make_triangle((5, 4, 3), (7, 4, 3), (6, 3, 3)), "dh2")
+    m.sew(dart(m, "dh1"), dart(m, "dh2"), sew)
+
+
+def retag(m, name, d):
+    m.set_info(dart(m, name), None)
+    tag(m, d, name)
+
+
+def test_lcc_3_contractions_of_sewn_triangles():
+    m = gmap.GMap(3)
+    # Linear_cell_complex_3_test.h:326-345: two triangles 3-sewn, contracted edge by edge
+    two_triangles(m, 3)
+    retag(m, "dh2", m.previous(dart(m, "dh1")))
+    tag(m, m.next(dart(m, "dh1")), "dh3")
+    m.contract_cell(dart(m, "dh1"), 1)
+    counts_3(m, (2, 2, 1, 2, 1), 333)
+    assert m.is_face_combinatorial_polygon(dart(m, "dh2"), 2)
+    m.contract_cell(dart(m, "dh2"), 1)
+    counts_3(m, (1, 1, 1, 2, 1), 339)
+    assert m.is_face_combinatorial_polygon(dart(m, "dh3"), 1)
+    m.contract_cell(dart(m, "dh3"), 1)
+    counts_3(m, (0, 0, 0, 0, 0), 345)
+    # :348-377: two triangles 2-sewn; the sewn edge first
+    two_triangles(m, 2)
+    retag(m, "dh2", m.next(dart(m, "dh2")))
+    tag(m, m.next(dart(m, "dh1")), "dh3")
+    m.contract_cell(dart(m, "dh1"), 1)
+    counts_3(m, (4, 4, 2, 2, 2), 357)
+    m.contract_cell(m.next(dart(m, "dh2")), 1)
+    counts_3(m, (3, 3, 2, 2, 2), 362)
+    m.contract_cell(dart(m, "dh2"), 1)
+    counts_3(m, (2, 2, 1, 1, 1), 367)
+    m.contract_cell(m.next(dart(m, "dh3")), 1)
+    counts_3(m, (1, 1, 1, 1, 1), 372)
+    m.contract_cell(dart(m, "dh3"), 1)
+    counts_3(m, (0, 0, 0, 0, 0), 377)
+    # :380-409: the same triangles, the sewn edge last
+    two_triangles(m, 2)
+    retag(m, "dh2", m.next(dart(m, "dh2")))
+    tag(m, m.next(dart(m, "dh1")), "dh3")
+    m.contract_cell(m.next(dart(m, "dh2")), 1)
+    counts_3(m, (3, 4, 2, 1, 1), 389)
+    m.contract_cell(m.next(dart(m, "dh3")), 1)
+    counts_3(m, (2, 3, 2, 1, 1), 394)
+    m.contract_cell(dart(m, "dh2"), 1)
+    counts_3(m, (1, 2, 2, 1, 1), 399)
+    m.contract_cell(dart(m, "dh3"), 1)
+    counts_3(m, (1, 1, 2, 1, 1), 404)
+    m.contract_cell(dart(m, "dh1"), 1)
+    counts_3(m, (0, 0, 0, 0, 0), 409)
 
 
 def test_lcc_3_normals():
@@ -519,7 +582,8 @@ def test_new_methods_refuse_hostile_values(v, pos):
 # --- hypothesis: random operations keep the map valid and change χ as CGAL documents ---
 
 OPS = ["insert_cell_0_in_cell_1", "insert_cell_1_in_cell_2", "remove_cell_0", "remove_cell_1",
-       "contract_cell_1", "remove_keeping_1", "triangulate_fan", "close"]  # fmt: skip
+       "contract_cell_1", "remove_keeping_1", "triangulate_fan", "close", "insert_cell_0_in_cell_2",
+       "insert_dangling_cell_1_in_cell_2", "contract_keeping_1"]  # fmt: skip
 
 
 def chi(m):
@@ -561,6 +625,20 @@ def test_random_operations_keep_the_map_valid_and_chi_as_documented(steps):
         elif op == "triangulate_fan" and m.can_triangulate_face_fan(d):
             # k - 3 edges and as many faces: χ unchanged
             m.triangulate_face_fan(d)
+            assert chi(m) == before
+        elif op == "insert_cell_0_in_cell_2" and m.is_insertable_cell_0_in_cell_2(d):
+            # a vertex joined to the k corners of a face (a dangling edge has two): +1 vertex,
+            # +k edges, +k-1 faces
+            k = len(m.darts_of_cell(d, 2)) // 2
+            m.insert_cell_0_in_cell_2(d, (0.5, 0.5, 0.0))
+            assert chi(m) == before and m.cell_counts()[2] == counts[2] + k - 1
+        elif op == "insert_dangling_cell_1_in_cell_2" and m.is_insertable_dangling_cell_1_in_cell_2(d):
+            # an edge hanging into a face: +1 vertex, +1 edge
+            m.insert_dangling_cell_1_in_cell_2(d, (0.25, 0.25, 0.0))
+            assert m.cell_counts() == [counts[0] + 1, counts[1] + 1, counts[2]]
+        elif op == "contract_keeping_1" and m.is_contractible_keeping_homology(d, 1):
+            # two distinct vertices joined: -1 vertex, -1 edge
+            m.contract_cell_keeping_homology(d, 1)
             assert chi(m) == before
         elif op == "close" and m.can_close(2):
             # a face per boundary cycle: χ grows by the number of cycles
