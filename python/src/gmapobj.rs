@@ -882,7 +882,7 @@ impl PyGMap {
         self.after_insert(r)
     }
 
-    /// CGAL's remove_cell<i>(d): removes the i-cell of d, 0 <= i <= dim, on the boundary or
+    /// CGAL's `remove_cell<i>(d)`: removes the i-cell of d, 0 <= i <= dim, on the boundary or
     /// not (the (i+1)-cells around it merge; a face of a 2-map, a volume of a 3-map goes
     /// with its darts); may change the space (`remove_cell_keeping_homology` never does).
     /// Returns the number of darts removed, as CGAL.
@@ -895,12 +895,12 @@ impl PyGMap {
         Ok(n)
     }
 
-    /// CGAL's is_removable<i>(d): i <= dim and, for i <= dim - 2, the cell has degree 2.
+    /// CGAL's `is_removable<i>(d)`: i <= dim and, for i <= dim - 2, the cell has degree 2.
     fn is_removable(&self, d: i64, i: i64) -> PyResult<bool> {
         Ok(eops::is_removable(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }
 
-    /// CGAL's contract_cell<i>(d): contracts the i-cell of d, 1 <= i <= dim (the
+    /// CGAL's `contract_cell<i>(d)`: contracts the i-cell of d, 1 <= i <= dim (the
     /// (i-1)-cells at its ends merge; a loop or a lone dart vanishes); may change the space
     /// (`contract_cell_keeping_homology` never does). Returns the number of darts removed.
     fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
@@ -912,7 +912,7 @@ impl PyGMap {
         Ok(n)
     }
 
-    /// CGAL's is_contractible<i>(d): 1 <= i <= dim and, for i >= 2, dual degree 2.
+    /// CGAL's `is_contractible<i>(d)`: 1 <= i <= dim and, for i >= 2, dual degree 2.
     fn is_contractible(&self, d: i64, i: i64) -> PyResult<bool> {
         Ok(eops::is_contractible(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }

@@ -436,7 +436,7 @@ impl PyGMap {
     }
 
     /// make_polygon(points): an isolated polygon on the points in order (k >= 1 corners,
-    /// 2k darts); returns the dart at points[0].
+    /// 2k darts); returns the dart at `points[0]`.
     fn make_polygon(&mut self, points: &Bound<'_, PyAny>) -> PyResult<usize> {
         let p = points_of(points)?;
         self.made(2 * p.len() as u64, |g| g.try_make_polygon(&p))
@@ -482,8 +482,8 @@ impl PyGMap {
         self.made(48, |g| g.try_make_hexahedron(p))
     }
 
-    /// make_prism(bottom, top): the prism over a k-gon, top[j] above bottom[j] (k >= 3;
-    /// k = 3 is LCC's make_triangular_prism); returns the dart at bottom[0].
+    /// make_prism(bottom, top): the prism over a k-gon, `top[j]` above `bottom[j]` (k >= 3;
+    /// k = 3 is LCC's make_triangular_prism); returns the dart at `bottom[0]`.
     fn make_prism(&mut self, bottom: &Bound<'_, PyAny>, top: &Bound<'_, PyAny>) -> PyResult<usize> {
         let (b, t) = (points_of(bottom)?, points_of(top)?);
         self.made(12 * b.len() as u64, |g| g.try_make_prism(&b, &t))
@@ -524,7 +524,7 @@ impl PyGMap {
         Ok(PyArray1::from_vec(py, v).reshape([n, 3])?.into_any())
     }
 
-    /// LCC's barycenter<i>(d): the mean of the points of the vertices of the i-cell of d,
+    /// LCC's `barycenter<i>(d)`: the mean of the points of the vertices of the i-cell of d,
     /// or None when one has no point.
     fn barycenter(&self, py: Python<'_>, d: i64, i: i64) -> PyResult<Option<PyObject>> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
@@ -628,7 +628,7 @@ impl PyGMap {
         Ok(self.number(h))
     }
 
-    /// CGAL's opposite<i>(d): alpha_0(alpha_i(d)), the dart on the other side of the
+    /// CGAL's `opposite<i>(d)`: alpha_0(alpha_i(d)), the dart on the other side of the
     /// i-sew with the same orientation.
     fn opposite(&self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "alpha")?);
@@ -676,7 +676,7 @@ impl PyGMap {
         Ok(self.g.darts().all(|x| dims.iter().all(|&i| !self.g.is_free(x, i))))
     }
 
-    /// The darts of the i-cell of d (CGAL's darts_of_cell<i>), d first, as a uint32 array.
+    /// The darts of the i-cell of d (CGAL's `darts_of_cell<i>`), d first, as a uint32 array.
     fn darts_of_cell<'py>(&self, py: Python<'py>, d: i64, i: i64) -> PyResult<Bound<'py, PyArray1<u32>>> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let v: Vec<u32> = self.g.cell_darts(h, i).into_iter().map(|x| self.number(x) as u32).collect();
@@ -732,7 +732,7 @@ impl PyGMap {
         Ok(self.g.is_marked(self.mark_id(m)?, self.handle(d)?))
     }
 
-    /// CGAL's mark_cell<i>(d, m): marks every dart of the i-cell of d.
+    /// CGAL's `mark_cell<i>(d, m)`: marks every dart of the i-cell of d.
     fn mark_cell(&mut self, d: i64, i: i64, m: i64) -> PyResult<()> {
         let (h, i, id) = (self.handle(d)?, self.dim_index(i, "cell dimension")?, self.mark_id(m)?);
         for x in self.g.cell_darts(h, i) {
@@ -807,7 +807,7 @@ impl PyGMap {
 
     // --- Python values on darts and cells (CGAL's info) ---
 
-    /// info(d, i=None): the Python value of the i-cell of d (CGAL's info<i>(d)), or of the
+    /// info(d, i=None): the Python value of the i-cell of d (CGAL's `info<i>(d)`), or of the
     /// dart d when i is None (CGAL's info(d)); None when it has none.
     #[pyo3(signature = (d, i = None))]
     fn info(&self, py: Python<'_>, d: i64, i: Option<i64>) -> PyResult<PyObject> {
@@ -924,7 +924,7 @@ impl PyGMap {
         Ok(eops::can_split_cell(&self.g, &self.handles(&seeds)?, self.dim_index(i, "cell dimension")?))
     }
 
-    /// CGAL's close<i>(): every i-free dart gets a new partner bounding new i-cells;
+    /// CGAL's `close<i>()`: every i-free dart gets a new partner bounding new i-cells;
     /// returns the number of darts added.
     fn close(&mut self, i: i64) -> PyResult<usize> {
         let i = self.dim_index(i, "alpha")?;
