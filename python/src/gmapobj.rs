@@ -21,6 +21,8 @@ use gmap::{Input, MapInput, Sourced};
 
 use crate::errors::{Failure, Kind, Res};
 
+mod modelling;
+
 /// An editable generalized map of dimension `dim` (CGAL's `Generalized_map`): darts
 /// `0..len(m)`, involutions `alpha_0..alpha_dim`, a point per vertex, labels per cell.
 #[pyclass(name = "GMap", module = "gmap")]
@@ -33,20 +35,40 @@ pub struct PyGMap {
     /// the simplicial complex the map was built from (`build.from_facets`), while no edit
     /// changed its darts: generators are then named by the complex's vertex labels
     source: Option<Arc<Sourced<SimplicialComplex>>>,
+    /// the marks reserved from Python (`get_new_mark`), by number; `None` once freed
+    marks: Vec<Option<gmap::core::MarkId>>,
+    /// the Python values of darts and cells (CGAL's `info`), see [`modelling`]
+    info: modelling::Info,
 }
 
 impl PyGMap {
     /// Wraps a dense map (no labels).
     pub fn from_dense(m: &DenseMap) -> Self {
         let (g, ids) = LabelledGMap::from_dense_with_attributes(m);
-        let mut m = PyGMap { g, ids, slot_index: Vec::new(), dense: None, source: None };
+        let mut m = PyGMap {
+            g,
+            ids,
+            slot_index: Vec::new(),
+            dense: None,
+            source: None,
+            marks: Vec::new(),
+            info: Default::default(),
+        };
         m.index_slots();
         m
     }
 
     /// Wraps a labelled map.
     pub fn from_labelled(g: LabelledGMap) -> Self {
-        let mut m = PyGMap { g, ids: Vec::new(), slot_index: Vec::new(), dense: None, source: None };
+        let mut m = PyGMap {
+            g,
+            ids: Vec::new(),
+            slot_index: Vec::new(),
+            dense: None,
+            source: None,
+            marks: Vec::new(),
+            info: Default::default(),
+        };
         m.refresh();
         m
     }
@@ -59,9 +81,10 @@ impl PyGMap {
         g
     }
 
-    /// The map with its points and labels as a facade input (a copy).
+    /// The map with its points and labels as a facade input (a copy, without the Python
+    /// values of [`modelling`], which no file holds).
     pub fn input(&self) -> Input {
-        Input::Map(MapInput::from_labelled(self.g.clone()))
+        Input::Map(MapInput::from_labelled(modelling::without_info(&self.g)))
     }
 
     /// The map as the facade's homology takes it (a copy of its darts): the G-map of the
@@ -78,6 +101,7 @@ impl PyGMap {
     fn refresh(&mut self) {
         self.source = None;
         self.freeze();
+        self.info.prune(&self.g);
     }
 
     /// Makes the frozen map and numbers the darts in storage order.
@@ -224,7 +248,11 @@ impl PyGMap {
 
     fn after_insert(&mut self, r: Result<DartId, EulerError>) -> PyResult<usize> {
         match r {
-            Ok(h) => Ok(self.index_of(h)),
+            Ok(h) => {
+                let k = self.index_of(h);
+                self.info.raise_hook_error()?;
+                Ok(k)
+            }
             Err(e) => {
                 // the darts named in the numbering the caller used, then renumbered
                 let f = self.euler_failure(&e);
@@ -522,7 +550,7 @@ impl PyGMap {
         let (d, e, i) = (self.handle(d)?, self.handle(e)?, self.dim_index(i, "alpha")?);
         self.g.try_sew(d, e, i).map_err(|e| self.edit_failure(&e))?;
         self.touched();
-        Ok(())
+        self.info.raise_hook_error()
     }
 
     /// i-unsews d (and its orbit), CGAL's `unsew<i>`.
@@ -530,7 +558,7 @@ impl PyGMap {
         let (d, i) = (self.handle(d)?, self.dim_index(i, "alpha")?);
         self.g.try_unsew(d, i).map_err(|e| self.edit_failure(&e))?;
         self.touched();
-        Ok(())
+        self.info.raise_hook_error()
     }
 
     /// The number of i-cells for i = 0..dim.
@@ -648,7 +676,7 @@ impl PyGMap {
         let out = PyList::empty(py);
         for c in 0..n {
             let d = PyDict::new(py);
-            for (k, v) in labels.get(i, c).iter() {
+            for (k, v) in labels.get(i, c).iter().filter(|(k, _)| *k != modelling::INFO_KEY) {
                 d.set_item(k, label_to_py(py, v))?;
             }
             out.append(d)?;
@@ -663,6 +691,9 @@ impl PyGMap {
             return Err(Failure::input(format!("cells of dimension {i} have no labels (at most 5)")).into());
         }
         let h = self.handle(d)?;
+        if name.starts_with(modelling::INFO_KEY) {
+            return Err(Failure::input(format!("the label name {name:?} is reserved (it starts with \\u0001)")).into());
+        }
         let v = label_from_py(value)?;
         let done = with_labels_mut!(self.g, i, h, |l| {
             l.set(name, v.clone());
@@ -675,9 +706,10 @@ impl PyGMap {
         Ok(())
     }
 
-    /// A copy of the map.
+    /// A copy of the map, with its points, labels and Python values (`info`, the same
+    /// objects: a shallow copy) and their functors; marks are not copied.
     fn copy(&mut self) -> Self {
-        let (d, labels, _) = gmap::core::to_dense_labels(&self.g);
+        let (d, labels, old) = gmap::core::to_dense_labels(&self.g);
         let mut m = PyGMap::from_dense(&d);
         for (i, per) in labels.of.iter().enumerate() {
             let reps = d.cells(i).reps;
@@ -688,6 +720,8 @@ impl PyGMap {
                 }
             }
         }
+        let info = self.info.copy_to(&mut m.g, &old, &m.ids);
+        m.info = info;
         m
     }
 
@@ -848,35 +882,75 @@ impl PyGMap {
         self.after_insert(r)
     }
 
-    /// CGAL's remove_cell<i>(d): removes the i-cell of d, merging the two (i+1)-cells
-    /// around it (never changes the space); returns the number of darts removed.
+    /// CGAL's `remove_cell<i>(d)`: removes the i-cell of d, 0 <= i <= dim, on the boundary or
+    /// not (the (i+1)-cells around it merge; a face of a 2-map, a volume of a 3-map goes
+    /// with its darts); may change the space (`remove_cell_keeping_homology` never does).
+    /// Returns the number of darts removed, as CGAL.
     fn remove_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let r = eops::try_remove_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
+        self.refresh();
+        let n = r?;
+        self.info.raise_hook_error()?;
+        Ok(n)
+    }
+
+    /// CGAL's `is_removable<i>(d)`: i <= dim and, for i <= dim - 2, the cell has degree 2.
+    fn is_removable(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(eops::is_removable(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+    }
+
+    /// CGAL's `contract_cell<i>(d)`: contracts the i-cell of d, 1 <= i <= dim (the
+    /// (i-1)-cells at its ends merge; a loop or a lone dart vanishes); may change the space
+    /// (`contract_cell_keeping_homology` never does). Returns the number of darts removed.
+    fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+        let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
+        let r = eops::try_contract_cell(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
+        self.refresh();
+        let n = r?;
+        self.info.raise_hook_error()?;
+        Ok(n)
+    }
+
+    /// CGAL's `is_contractible<i>(d)`: 1 <= i <= dim and, for i >= 2, dual degree 2.
+    fn is_contractible(&self, d: i64, i: i64) -> PyResult<bool> {
+        Ok(eops::is_contractible(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
+    }
+
+    /// remove_cell_keeping_homology(d, i): removes the i-cell of d only when the space
+    /// stays the same (degree 2, two distinct interior (i+1)-cells merge, nothing falls
+    /// apart; or a dangling edge); PreconditionError naming why otherwise. Returns the
+    /// number of darts removed.
+    fn remove_cell_keeping_homology(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
         let r = eops::try_remove_cell_keeping_homology(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
         r?;
+        self.info.raise_hook_error()?;
         Ok(before - self.g.dart_count())
     }
 
-    /// Whether remove_cell(d, i) applies (degree 2, two distinct (i+1)-cells).
-    fn is_removable(&self, d: i64, i: i64) -> PyResult<bool> {
+    /// Whether remove_cell_keeping_homology(d, i) applies.
+    fn is_removable_keeping_homology(&self, d: i64, i: i64) -> PyResult<bool> {
         Ok(eops::is_removable_keeping_homology(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }
 
-    /// CGAL's contract_cell<i>(d): contracts the i-cell of d; returns the number of darts
-    /// removed.
-    fn contract_cell(&mut self, d: i64, i: i64) -> PyResult<usize> {
+    /// contract_cell_keeping_homology(d, i): contracts the i-cell of d only when the space
+    /// stays the same (two distinct interior (i-1)-cells at its ends, nothing falls apart);
+    /// returns the number of darts removed.
+    fn contract_cell_keeping_homology(&mut self, d: i64, i: i64) -> PyResult<usize> {
         let (h, i) = (self.handle(d)?, self.dim_index(i, "cell dimension")?);
         let before = self.g.dart_count();
         let r = eops::try_contract_cell_keeping_homology(&mut self.g, h, i).map_err(|e| self.euler_failure(&e));
         self.refresh();
         r?;
+        self.info.raise_hook_error()?;
         Ok(before - self.g.dart_count())
     }
 
-    /// Whether contract_cell(d, i) applies.
-    fn is_contractible(&self, d: i64, i: i64) -> PyResult<bool> {
+    /// Whether contract_cell_keeping_homology(d, i) applies.
+    fn is_contractible_keeping_homology(&self, d: i64, i: i64) -> PyResult<bool> {
         Ok(eops::is_contractible_keeping_homology(&self.g, self.handle(d)?, self.dim_index(i, "cell dimension")?))
     }
 

@@ -161,8 +161,12 @@ def test_euler_operators_cgal_names():
     assert m.is_removable(e, 1)
     m.remove_cell(e, 1)
     assert m.cell_counts() == [4, 4, 1]
+    # the face of a 2-map: CGAL's remove_cell<2> takes it with its darts; the
+    # homology-keeping removal refuses (a face is not between two cells)
     with pytest.raises(gmap.PreconditionError):
-        m.remove_cell(0, 2)
+        m.remove_cell_keeping_homology(0, 2)
+    assert not m.is_removable_keeping_homology(0, 2) and m.is_removable(0, 2)
+    assert m.remove_cell(0, 2) == 8 and len(m) == 0
     h = gmap.GMap(3)
     h.make_combinatorial_hexahedron()
     assert h.cell_counts() == [8, 12, 6, 1]

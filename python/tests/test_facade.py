@@ -176,11 +176,11 @@ def test_an_edit_names_the_users_darts():
     assert "DartId" not in str(e.value) and "v1" not in str(e.value)
     sq = gmap.build.polygon(4)
     with pytest.raises(gmap.PreconditionError) as e:
-        sq.remove_cell(0, 2)
+        sq.remove_cell_keeping_homology(0, 2)
     assert "DartId" not in str(e.value)
     # an Euler operator refused on a boundary: the dart named is one of the map's
     with pytest.raises(gmap.PreconditionError) as e:
-        sq.contract_cell(0, 1)
+        sq.contract_cell_keeping_homology(0, 1)
     assert "DartId" not in str(e.value)
     assert e.value.item is None or 0 <= e.value.item < len(sq)
 
