@@ -154,3 +154,21 @@ fn bad_kinds_and_formats_are_refused() {
     assert!(stderr(&o).contains("a room graph is written as .graphml, .dot or .json, not '.off'"), "{}", stderr(&o));
     assert!(!out.exists());
 }
+
+#[test]
+fn an_ifc_file_is_pointed_to_the_python_package() {
+    let dir = tempfile::tempdir().unwrap();
+    let ifc = dir.path().join("house.ifc");
+    std::fs::write(&ifc, "ISO-10303-21;\nEND-ISO-10303-21;\n").unwrap();
+    for args in [vec!["info", p(&ifc)], vec!["graph", p(&ifc), "--dual", "faces"]] {
+        let o = gmap(&args);
+        assert_eq!(o.status.code(), Some(1));
+        let e = stderr(&o);
+        assert!(
+            e.contains("IFC is read through the Python package and IfcOpenShell: pip install './python[ifc]'"),
+            "{e}"
+        );
+        assert!(e.contains("gmap.ifc.open(path)"), "{e}");
+        assert!(!e.contains("unsupported input format"), "{e}");
+    }
+}
