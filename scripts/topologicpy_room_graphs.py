@@ -1,9 +1,9 @@
 # TopologicPy's room graphs of the six buildings of scripts/arch_buildings.py, recorded in
-# tests/data/arch/topologicpy_room_graphs.json so that gmap's are checked against them
+# tests/data/arch/buildings/topologicpy/room_graphs.json so that gmap's are checked against them
 # where TopologicPy is not installed (tests/room_graph_cli.rs, python/tests/test_room_graph.py).
 #
 #   pip install topologicpy topologic-core     # TopologicPy 0.9.87 was used
-#   python3 scripts/topologicpy_room_graphs.py tests/data/arch/topologicpy_room_graphs.json
+#   python3 scripts/topologicpy_room_graphs.py tests/data/arch/buildings/topologicpy/room_graphs.json
 #
 # Each room is TopologicPy's own cell: Cell.ByFaces of its prism (floor, roof, one face per
 # side of its polygon), the building CellComplex.ByCells of them (TopologicPy splits and

@@ -2,7 +2,7 @@
 //! of issue 45 (`tests/data/arch/buildings`, made by `scripts/arch_buildings.py`) equal
 //! TopologicPy's `Graph.ByTopology` answers (`direct`, `viaSharedApertures`,
 //! `toExteriorTopologies`) recorded by `scripts/topologicpy_room_graphs.py` in
-//! `tests/data/arch/topologicpy_room_graphs.json`; the GraphML, DOT and JSON outputs keep the
+//! `tests/data/arch/buildings/topologicpy/room_graphs.json`; the GraphML, DOT and JSON outputs keep the
 //! file's ids and names; bad kinds and formats are refused.
 
 mod common;
@@ -86,7 +86,8 @@ fn answers(file: &Path) -> Value {
 #[test]
 fn the_six_buildings_give_topologicpys_room_graphs() {
     let recorded: Value =
-        serde_json::from_str(&std::fs::read_to_string(arch("topologicpy_room_graphs.json")).unwrap()).unwrap();
+        serde_json::from_str(&std::fs::read_to_string(arch("buildings/topologicpy/room_graphs.json")).unwrap())
+            .unwrap();
     assert_eq!(recorded["topologicpy"], "0.9.87");
     let buildings = recorded["buildings"].as_object().unwrap();
     let names: Vec<&str> = buildings.keys().map(String::as_str).collect();

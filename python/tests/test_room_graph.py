@@ -5,7 +5,7 @@ shared face (``direct``) with its area, through apertures (``viaSharedApertures`
 apertures' ids, and to the exterior (``toExteriorTopologies``) with the number of
 exterior faces (apertures apart: TopologicPy hosts them in a face, gmap has them as faces of
 their own) and their area. The answers recorded in
-tests/data/arch/topologicpy_room_graphs.json are checked always; TopologicPy's live answers
+tests/data/arch/buildings/topologicpy/room_graphs.json are checked always; TopologicPy's live answers
 too where it imports."""
 
 import importlib.util
@@ -19,7 +19,7 @@ from conftest import DATA, REPO
 nx = pytest.importorskip("networkx")
 
 BUILDINGS = DATA / "arch" / "buildings"
-RECORDED = json.loads((DATA / "arch" / "topologicpy_room_graphs.json").read_text())["buildings"]
+RECORDED = json.loads((DATA / "arch" / "buildings" / "topologicpy" / "room_graphs.json").read_text())["buildings"]
 NAMES = sorted(RECORDED)
 
 
