@@ -6,7 +6,7 @@
 # Steps: build the `gmap` binary (the tests compare with its --json output; found in the
 # target folder `cargo metadata` names, so CARGO_TARGET_DIR is followed), make a new
 # venv in a temporary folder, install maturin numpy pytest hypothesis networkx
-# dask[distributed] (and gudhi, meshio and vtk when pip can get them), `pip install ./python`, run pytest
+# dask[distributed] (and gudhi, meshio, vtk, ifcopenshell and topologicpy when pip can get them), `pip install ./python`, run pytest
 # on python/tests. Exits non-zero when any step or test fails. GMAP_PYTHON picks the
 # interpreter (default python3); GMAP_VENV keeps the venv in a given folder instead.
 set -euo pipefail
@@ -41,6 +41,9 @@ pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 "${pip[@]}" install gudhi || echo "(gudhi not installed: its comparisons are skipped)"
 "${pip[@]}" install meshio || echo "(meshio not installed: the mesh files' comparisons are skipped)"
 "${pip[@]}" install vtk || echo "(vtk not installed: VTK's checks of the mesh files are skipped)"
+"${pip[@]}" install ifcopenshell || echo "(ifcopenshell not installed: the IFC tests are skipped)"
+"${pip[@]}" install topologicpy topologic-core \
+    || echo "(topologicpy not installed: the room graphs are checked against its recorded answers only)"
 
 echo "== pip install ./python"
 "${pip[@]}" install ./python

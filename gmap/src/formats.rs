@@ -361,9 +361,15 @@ fn written_only(path: &Path, f: &Format, why: &str) -> Error {
     err!(Unsupported, "{}: {what} {why}", path.display()).naming_path(path)
 }
 
-/// The refusal of a path whose extension names no format read.
+/// The refusal of a path whose extension names no format read; an IFC file is pointed to
+/// the Python package, which reads it through IfcOpenShell.
 pub(crate) fn unknown_input(path: &Path) -> Error {
     match extension(path).as_str() {
+        "ifc" => err!(
+            Unsupported,
+            "{}: IFC is read through the Python package and IfcOpenShell: pip install './python[ifc]' (from the gmap repository), then in Python gmap.ifc.open(path) gives its architectural complex (rooms, walls, doors, windows), which .save(\"model.json\") writes for the command line",
+            path.display()
+        ),
         "" => err!(
             Unsupported,
             "{}: the file name has no extension, which names the format: one of .{}",

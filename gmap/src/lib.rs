@@ -52,6 +52,8 @@
 //! * [`view()`] ([`mod@view`]) writes one self-contained HTML page to look at the input (darts,
 //!   cells coloured by a label, generators, or the faces of a simplicial complex without a
 //!   G-map) in a browser;
+//! * [`room_graph`] ([`mod@dual`]) gives the dual graphs of the rooms (through faces,
+//!   apertures, to the exterior), as TopologicPy's `Graph.ByTopology`;
 //! * [`persistence()`] ([`mod@persistence`]) computes persistence diagrams of images,
 //!   valued complexes and labelled maps;
 //! * [`simplify_if_safe`] reduces a map by removals and contractions where that keeps the
@@ -84,6 +86,7 @@ pub mod cubes;
 pub mod curves;
 pub mod demo;
 pub mod distributed;
+pub mod dual;
 mod error;
 pub mod formats;
 mod graph;
@@ -106,6 +109,7 @@ mod write;
 pub use bench::{routes, RouteRun, Times};
 pub use chains::{check_simplicial_size, face_complex_within, simplify_if_safe};
 pub use cubes::CubesRef;
+pub use dual::{room_graph, room_graph_of, Dual, RoomEdge, RoomGraph, RoomNode};
 pub use error::{Error, ErrorKind, Item, Result};
 pub use formats::{Format, FORMATS};
 pub use info::{info, Info, InfoOptions};

@@ -101,6 +101,13 @@ fn save_noting(input: &Input, output: &Path, o: &SaveOptions, hint: &str) -> Res
     }
 }
 
+/// The incidence graph of any input ([`graph_of`]), its failures naming the input (room
+/// graphs, [`crate::dual`]).
+pub(crate) fn incidence_graph(input: &Input, max_cells: Option<u64>) -> Result<std::borrow::Cow<'_, ArchComplex>> {
+    let o = SaveOptions { max_cells, ..SaveOptions::default() };
+    graph_of(input, input.path(), &o)
+}
+
 /// The incidence graph of any input: a map's cells (with the labels of a labelled file), a
 /// complex's face poset, an architectural complex itself.
 fn graph_of<'a>(input: &'a Input, output: &Path, o: &SaveOptions) -> Result<std::borrow::Cow<'a, ArchComplex>> {

@@ -204,9 +204,51 @@ pub fn tm_check(input: &Input) -> Result<TmCheck> {
             let names = x.region_names();
             Some((shape.tolerance(), shape.defects().iter().map(|d| d.named(&names).to_string()).collect()))
         }
+        Input::Map(m) if m.map().has_points() => map_metric(m.map(), &n.names),
         _ => None,
     };
     Ok(TmCheck { dim, counts, defects: text, closed, metric })
+}
+
+/// The metrical edit (TM §X) of a G-map with points: its cells numbered as the TM model
+/// numbers them (the 0-cells first, each dimension in the order of `DenseMap::cells`), each
+/// 0-cell at the point of its vertex, the cells adjacent in consecutive dimensions, the
+/// defects named as the topological ones (`2-cell 7`). `None` when the cells' incidences
+/// cannot be counted (the topological check says why). O(Shape's check) after the cells.
+fn map_metric(map: &gmap_core::DenseMap, names: &[String]) -> Option<(f64, Vec<String>)> {
+    use gmap_homology::arch::{Region, RegionId, RegionNames};
+    let n = map.dim();
+    let counts = map.cell_counts();
+    let mut offset = vec![0u64; n + 2];
+    for k in 0..=n {
+        offset[k + 1] = offset[k] + counts[k] as u64;
+    }
+    let regions: Vec<Region> = (0..=n)
+        .flat_map(|k| {
+            let start = offset[k];
+            (0..counts[k] as u64).map(move |j| Region { id: RegionId(start + j), dim: k })
+        })
+        .collect();
+    let incidences = gmap_homology::arch::all_cell_incidences(map).ok()?;
+    let entries: Vec<(RegionId, RegionId)> = incidences
+        .iter()
+        .enumerate()
+        .flat_map(|(k, list)| {
+            let (up, low) = (offset[k + 1], offset[k]);
+            list.iter().map(move |c| (RegionId(up + c.upper as u64), RegionId(low + c.lower as u64)))
+        })
+        .collect();
+    let vertices = map.cells(0);
+    let points: std::collections::HashMap<RegionId, [f64; 3]> = vertices
+        .cell_ids()
+        .filter_map(|v| map.vertex_point(vertices.rep(v)).map(|p| (RegionId(u64::from(u32::from(v))), p)))
+        .collect();
+    let shape = Shape::new(&regions, entries.into_iter(), &points);
+    let mut region_names = RegionNames::new();
+    for (k, name) in names.iter().enumerate() {
+        region_names.insert(RegionId(k as u64), name.clone());
+    }
+    Some((shape.tolerance(), shape.defects().iter().map(|d| d.named(&region_names).to_string()).collect()))
 }
 
 /// [`tm_check`] of the file at `path`. A `.json` complex whose points do not conform is

@@ -53,7 +53,7 @@ from ._gmap import (
     set_max_memory,
     shortest_non_contractible_cycle,
 )
-from . import build, mesh
+from . import build, ifc, mesh
 from .arch import (
     SnapWarning,
     arch_homology as _arch_homology,
@@ -96,6 +96,7 @@ __all__ = [
     "homology",
     "incidence_graph",
     "max_memory",
+    "ifc",
     "mesh",
     "open",
     "persistence",

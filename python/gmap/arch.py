@@ -12,7 +12,6 @@ exterior) as networkx graphs with names and areas on the edges.
 from __future__ import annotations
 
 import json
-import math
 import os
 import warnings
 from typing import Any, Dict, List, Optional, Tuple, Union
@@ -90,77 +89,29 @@ def arch_incidence_graph(x: ArchComplex) -> Any:
     return g
 
 
-def _areas(regions: Dict[str, dict], incidence: List[dict]) -> Dict[str, float]:
-    """The area of each face with points: half the norm of its vector area."""
-    down: Dict[str, List[Tuple[str, int]]] = {}
-    for e in incidence:
-        down.setdefault(str(e["from"]), []).append((str(e["to"]), e.get("weight", 0)))
-    areas = {}
-    for f, r in regions.items():
-        if r["dim"] != 2:
-            continue
-        a = [0.0, 0.0, 0.0]
-        ok = True
-        for e, w in down.get(f, []):
-            ends = down.get(e, [])
-            frm = [v for v, s in ends if s < 0]
-            to = [v for v, s in ends if s > 0]
-            if not frm or not to or "point" not in regions[frm[0]] or "point" not in regions[to[0]]:
-                ok = False
-                break
-            p, q = (list(regions[v]["point"]) + [0.0] * 3 for v in (frm[0], to[0]))
-            c = (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
-            a = [a[i] + w * c[i] for i in range(3)]
-        if ok and down.get(f):
-            areas[f] = 0.5 * math.sqrt(sum(v * v for v in a))
-    return areas
-
-
-APERTURE_KINDS = ("door", "window", "aperture", "opening")
-
-
-def room_graph(x: Union[ArchComplex, Path], via: str = "faces", exterior: str = "exterior") -> Any:
+def room_graph(x: Union[ArchComplex, Path], via: str = "faces") -> Any:
     """The dual graph of the rooms (the top regions) as a ``networkx.Graph``, as
-    TopologicPy's ``Graph.ByTopology``: ``via="faces"`` (``direct``) joins two rooms with a
-    face in common; ``via="apertures"`` (``viaSharedApertures``) two rooms with a common face
-    whose ``kind`` label is a door, window or aperture; ``via="exterior"``
-    (``toExteriorTopologies``) each room to the node ``exterior`` through its faces on no
-    other room. Nodes are the rooms' ids with ``name`` and their labels; edges carry
-    ``faces`` (the faces' ids) and ``area`` (their total area, when the faces have points).
+    TopologicPy's ``Graph.ByTopology`` and ``gmap graph FILE --dual VIA`` (one
+    implementation, the facade's ``gmap::room_graph``): ``via="faces"`` (``direct``) joins
+    two rooms with a face in common; ``via="apertures"`` (``viaSharedApertures``) two rooms
+    with a common face whose ``kind`` label is a door, window, aperture or opening;
+    ``via="exterior"`` (``toExteriorTopologies``) each room to the node ``exterior`` through
+    its faces on no other room. ``x`` is an ArchComplex or a path to any input with an
+    incidence graph. Nodes are the rooms' ids (the file's string ids, else their numbers)
+    with ``name`` and their labels; edges carry ``faces`` (the faces' ids), ``face_names``,
+    ``kinds`` (their ``kind`` labels) and ``area`` (their total area; None when a face has
+    no points).
     """
     import networkx as nx
 
     if via not in ("faces", "apertures", "exterior"):
         raise ValueError(f"via={via!r}: one of 'faces', 'apertures', 'exterior'")
-    if not isinstance(x, ArchComplex):
-        x = _gmap.open(os.fspath(x))
-    regions, incidence = _parsed(x)
-    top = max((r["dim"] for r in regions.values()), default=0)
-    on: Dict[str, List[str]] = {}
-    for e in incidence:
-        f, t = str(e["from"]), str(e["to"])
-        if regions[f]["dim"] == top and regions[t]["dim"] == top - 1:
-            on.setdefault(t, []).append(f)
-    areas = _areas(regions, incidence) if top == 3 else {}
-    g = nx.Graph()
-    for k, r in regions.items():
-        if r["dim"] == top:
-            g.add_node(k, **{**r.get("labels", {}), "name": _name(r)})
-    if via == "exterior":
-        g.add_node(exterior, name=exterior)
-
-    def link(a: str, b: str, face: str) -> None:
-        if not g.has_edge(a, b):
-            g.add_edge(a, b, faces=[], area=0.0)
-        g.edges[a, b]["faces"].append(face)
-        g.edges[a, b]["area"] += areas.get(face, 0.0)
-
-    for face in sorted(on, key=lambda f: list(regions).index(f)):
-        rs = on[face]
-        kind = str(regions[face].get("labels", {}).get("kind", "")).lower()
-        if via == "exterior":
-            if len(rs) == 1:
-                link(rs[0], exterior, face)
-        elif len(rs) == 2 and rs[0] != rs[1] and (via == "faces" or kind in APERTURE_KINDS):
-            link(rs[0], rs[1], face)
+    d = json.loads(_gmap._room_graph(x if isinstance(x, ArchComplex) else os.fspath(x), via))
+    g = nx.Graph(dual=d["dual"])
+    for n in d["nodes"]:
+        g.add_node(n["id"], **{**n["labels"], "name": n["name"]})
+    for e in d["edges"]:
+        g.add_edge(
+            e["source"], e["target"], faces=e["faces"], face_names=e["face_names"], kinds=e["kinds"], area=e["area"]
+        )
     return g

@@ -108,3 +108,19 @@ pub fn _rooms<'py>(py: Python<'py>, path: PathBuf) -> PyResult<(PyArchComplex, B
     let input = Input::Arch(gmap::input::Sourced::new(r.complex));
     Ok((PyArchComplex { input }, rooms))
 }
+
+/// _room_graph(x, via): the room graph (`gmap graph --dual VIA`, facade `gmap::room_graph`)
+/// of an ArchComplex or a file, as its JSON text (`nodes`, `edges`; `gmap/arch.py` makes the
+/// networkx graph of it). `via` is `faces`, `apertures` or `exterior`.
+#[pyfunction]
+pub fn _room_graph(py: Python<'_>, x: &Bound<'_, PyAny>, via: &str) -> PyResult<String> {
+    let dual = gmap::Dual::parse(via).map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))?;
+    let g = match input_of(py, x)? {
+        Some(input) => py.allow_threads(|| gmap::room_graph(&input, dual, None)),
+        None => {
+            let input = &x.downcast::<PyArchComplex>()?.get().input;
+            py.allow_threads(|| gmap::room_graph(input, dual, None))
+        }
+    };
+    Ok(g.map_err(Failure::from)?.to_json())
+}

@@ -621,6 +621,7 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(arch::_tm_check, m)?)?;
     m.add_function(wrap_pyfunction!(arch::_tm_views, m)?)?;
     m.add_function(wrap_pyfunction!(arch::_rooms, m)?)?;
+    m.add_function(wrap_pyfunction!(arch::_room_graph, m)?)?;
     Ok(())
 }
 

@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod curves;
+mod graph;
 mod persistence;
 mod tm;
 mod view;
@@ -234,6 +235,9 @@ enum Command {
     /// Rooms from walls: the 3-cells of faces in space (.off polygon soup, .json 2-complex
     /// with points), written as a 3-complex whose volumes are the rooms (docs/LAR.md).
     Rooms(RoomsArgs),
+    /// Room graphs: rooms joined through shared faces, through apertures (doors, windows),
+    /// or to the exterior, named by the file's ids, faces and areas on the edges.
+    Graph(graph::GraphArgs),
 }
 
 #[derive(Args, Debug)]
@@ -298,6 +302,7 @@ pub fn run() -> ExitCode {
         Command::Curves(a) => curves::run(a),
         Command::Rooms(a) => gmap::rooms_file(&a.input, &a.output, a.limits.max_darts).map(|r| r.to_text()),
         Command::Convert(a) => convert(a, quiet),
+        Command::Graph(a) => graph::run(a),
     };
     match text {
         Ok(text) => exit_after_writing(std::io::stdout().lock().write_all(text.as_bytes())),
