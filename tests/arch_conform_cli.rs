@@ -46,7 +46,7 @@ fn tm_check_names_the_metrical_defects() {
     assert_eq!(o.status.code(), Some(1));
     let out = stdout(&o);
     assert!(
-        out.contains("metrical edit (TM X, tolerance 8e-8): 1 defects\n  points p400 and p400 copy are 1.00e-9 apart: the same point twice\nfails the edit check\n"),
+        out.contains("metrical edit (TM X, tolerance 8e-8): 1 defect\n  points p400 and p400 copy are 1.00e-9 apart: the same point twice\nfails the edit check\n"),
         "{out}"
     );
     let o = gmap(&["tm", "check", p(&arch("t_junction.json"))]);

@@ -105,7 +105,13 @@ impl TmCheck {
                 );
             }
             Some(c) => {
-                let _ = writeln!(s, "closed by the exterior {}-cell: {} defects", self.dim, c.len());
+                let _ = writeln!(
+                    s,
+                    "closed by the exterior {}-cell: {} defect{}",
+                    self.dim,
+                    c.len(),
+                    if c.len() == 1 { "" } else { "s" }
+                );
                 for d in c {
                     let _ = writeln!(s, "  {d}");
                 }
@@ -118,7 +124,11 @@ impl TmCheck {
                     let _ = writeln!(s, "metrical edit (TM X, tolerance {tol:e}): no defect");
                 }
                 k => {
-                    let _ = writeln!(s, "metrical edit (TM X, tolerance {tol:e}): {k} defects");
+                    let _ = writeln!(
+                        s,
+                        "metrical edit (TM X, tolerance {tol:e}): {k} defect{}",
+                        if k == 1 { "" } else { "s" }
+                    );
                 }
             }
             for d in m {
