@@ -107,7 +107,9 @@ fn homology_through_the_gmap_of_a_pinched_complex_is_refused_naming_the_cell() {
     let direct = gmap(&["homology", p(&bowtie)]);
     assert_eq!(direct.status.code(), Some(0), "{}", stderr(&direct));
     assert!(common::stdout(&direct).contains("H_0 = Z\n"), "{}", common::stdout(&direct));
-    for args in [&["--via", "gmap"][..], &["--method", "simplicial"], &["--simplify"], &["--via", "gmap", "--generators"]] {
+    for args in
+        [&["--via", "gmap"][..], &["--method", "simplicial"], &["--simplify"], &["--via", "gmap", "--generators"]]
+    {
         let mut cmd = vec!["homology", p(&bowtie)];
         cmd.extend_from_slice(args);
         let o = gmap(&cmd);
