@@ -323,3 +323,15 @@ def test_a_sparse_terabyte_npy_is_refused_as_the_command_refuses_it(tmp_path, gm
     with pytest.raises(gmap.LimitError) as e:
         gmap.homology(img)
     assert "would take an estimated 14405760576 bytes" in str(e.value)
+
+
+def test_homology_through_the_gmap_of_a_bowtie_is_refused_naming_the_vertex():
+    """Two triangles sharing the vertex 0 only: H_0 = Z directly; through the G-map (which
+    splits the vertex) a PreconditionError naming it, not the groups of another space."""
+    bowtie = [[0, 1, 2], [0, 3, 4]]
+    assert gmap.homology(bowtie).betti == [1, 0, 0]
+    for method in ("gmap", "simplicial"):
+        with pytest.raises(gmap.PreconditionError) as e:
+            gmap.homology(bowtie, method=method)
+        assert "the facets around the vertex 0 fall into 2 groups" in str(e.value)
+        assert "so the vertex 0 becomes 2 cells" in str(e.value)
