@@ -206,6 +206,9 @@ def _targets():
 
 
 TARGETS = _targets()
+# called with small values only: gmap.gudhi's SimplexTree.expansion(max_dim) loops once per
+# dimension up to max_dim, so a hostile 2**63 runs for ever (not a panic; issue 47's report)
+SMALL_ONLY = {"SimplexTree.expansion"}
 # what the run met: calls, and each outcome's count (returned, or the exception's type)
 COUNTS = collections.Counter()
 PER_TARGET = collections.Counter()
@@ -236,6 +239,8 @@ def _call(tid, compiled, f, args, kwargs, also=()):
             warnings.simplefilter("ignore")
             f(*args, **kwargs)
         COUNTS["returned"] += 1
+    except KeyboardInterrupt:
+        raise
     except BaseException as e:  # noqa: BLE001 - a PanicException is a BaseException
         kind = type(e).__name__
         COUNTS[kind] += 1
@@ -300,11 +305,12 @@ def test_every_callable_survives_hostile_arguments(target, data):
     params = _parameters(f)
     n = len(params) if params is not None else 3
     k = data.draw(st.integers(0, n + 1), label="positional")
-    args = tuple(data.draw(VALUES, label=f"arg{i}") for i in range(k))
+    values = SMALL if tid in SMALL_ONLY else VALUES
+    args = tuple(data.draw(values, label=f"arg{i}") for i in range(k))
     kwargs = {}
     for p in (params or [])[k:]:
         if data.draw(st.booleans(), label=f"give {p.name}"):
-            kwargs[p.name] = data.draw(VALUES, label=p.name)
+            kwargs[p.name] = data.draw(values, label=p.name)
     _call(tid, compiled, f, args, kwargs)
     if obj is not None:
         # the object after the call is still one the package can read, or refuses with an
