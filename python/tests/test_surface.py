@@ -186,7 +186,9 @@ def _targets():
     """(id, object name or None, attribute): a module function, a class (its constructor)
     or a method or property of a fresh object."""
     t = _module_functions(gmap._gmap, "gmap._gmap")
-    t += [x for x in _module_functions(gmap, "gmap") if not hasattr(gmap._gmap, x[2])]
+    # the Python layer's public functions (its private helpers take what the package hands
+    # them: `_gudhi_time` passes facets to GUDHI itself, which crashes on a negative vertex)
+    t += [x for x in _module_functions(gmap, "gmap") if not hasattr(gmap._gmap, x[2]) and not x[2].startswith("_")]
     t += _module_functions(gmap.build, "gmap.build")
     t += [x for x in _module_functions(gmap.gudhi, "gmap.gudhi") if not x[2].startswith("_")]
     # the calls below are the classes' constructors
