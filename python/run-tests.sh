@@ -9,6 +9,9 @@
 # dask[distributed] (and gudhi, meshio, vtk, ifcopenshell and topologicpy when pip can get them), `pip install ./python`, run pytest
 # on python/tests. Exits non-zero when any step or test fails. GMAP_PYTHON picks the
 # interpreter (default python3); GMAP_VENV keeps the venv in a given folder instead.
+#
+#   bash python/run-tests.sh --where    # prints the path of the gmap binary the tests use
+#                                       # (nothing built, nothing installed)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -16,12 +19,16 @@ repo="$(cd "$here/.." && pwd)"
 python="${GMAP_PYTHON:-python3}"
 
 cd "$repo"
-echo "== building the gmap command (for the comparison with the package)"
-cargo build --profile test-release --bin gmap --quiet
-# where cargo put it: its target folder (CARGO_TARGET_DIR, a .cargo/config.toml's
-# build.target-dir, or target/ by default), as cargo itself reports it
+# where cargo puts the binary: its target folder (CARGO_TARGET_DIR, CARGO_BUILD_TARGET_DIR,
+# a .cargo/config.toml's build.target-dir, or target/ by default), as cargo itself reports it
 target_dir="$("$python" -c 'import json, sys; print(json.load(sys.stdin)["target_directory"])' \
     < <(cargo metadata --format-version 1 --no-deps))"
+if [ "${1:-}" = "--where" ]; then
+    echo "$target_dir/test-release/gmap"
+    exit 0
+fi
+echo "== building the gmap command (for the comparison with the package)"
+cargo build --profile test-release --bin gmap --quiet
 export GMAP_BIN="$target_dir/test-release/gmap"
 [ -x "$GMAP_BIN" ] || { echo "no gmap binary at $GMAP_BIN (cargo's target folder)" >&2; exit 1; }
 export GMAP_REQUIRE_CLI=1

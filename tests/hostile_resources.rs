@@ -416,3 +416,46 @@ fn one_dart_maps_by_the_simplicial_method() {
         stdout(&o)
     );
 }
+
+/// A sparse 1 TB `.npy` (a header declaring 10000³ = 10^12 `u1` voxels, then a hole): every
+/// command refuses it at once with its estimate and the file's name, before reading a
+/// value — `info`, `view` and `homology --generators` with the whole cubical set's (what
+/// they build), `homology` with the layers its one pass over the file would hold.
+#[test]
+fn a_sparse_terabyte_npy_is_refused_with_an_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.npy");
+    let dict = "{'descr': '|u1', 'fortran_order': False, 'shape': (10000, 10000, 10000), }";
+    let mut header = format!("{dict}{}\n", " ".repeat((64 - (10 + dict.len() + 1) % 64) % 64)).into_bytes();
+    let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
+    bytes.extend_from_slice(&(header.len() as u16).to_le_bytes());
+    bytes.append(&mut header);
+    std::fs::write(&path, &bytes).unwrap();
+    let f = std::fs::OpenOptions::new().write(true).open(&path).unwrap();
+    f.set_len(bytes.len() as u64 + 1_000_000_000_000).unwrap();
+    drop(f);
+    let limit = ", over the memory limit of 8589934592 bytes (--max-memory)";
+    let whole = format!(
+        "error: {}: the cubical set on the bounding box 10000 × 10000 × 10000 would take an estimated 73010800540009 bytes{limit}",
+        path.display()
+    );
+    let layers = format!(
+        "error: {}: the layers of the one-pass cubical homology would take an estimated 14405760576 bytes{limit}",
+        path.display()
+    );
+    for (args, want) in [
+        (vec!["info"], &whole),
+        (vec!["view"], &whole),
+        (vec!["homology", "--generators"], &whole),
+        (vec!["homology"], &layers),
+        (vec!["homology", "--level", "0"], &layers),
+    ] {
+        let mut cmd = args.clone();
+        cmd.extend_from_slice(&[p(&path), "--max-memory", "8G"]);
+        let t = Instant::now();
+        let o = common::gmap(&cmd);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+        assert_eq!(stderr(&o).trim_end(), want.as_str(), "{args:?}");
+        assert!(t.elapsed() < Duration::from_secs(60), "{args:?} took {:?}", t.elapsed());
+    }
+}

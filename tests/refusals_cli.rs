@@ -96,3 +96,67 @@ fn a_4_map_is_refused_as_moka_before_anything_is_written() {
     assert!(stderr(&o).contains(".moka holds maps of dimension at most 3, this map has dimension 4"), "{}", stderr(&o));
     assert!(!out.exists());
 }
+
+#[test]
+fn homology_through_the_gmap_of_a_pinched_complex_is_refused_naming_the_cell() {
+    // the bowtie: two triangles sharing the vertex 0 only, H_0 = Z; its G-map splits the
+    // vertex (H_0 = Z^2), so every route through the G-map must refuse, naming the vertex
+    let dir = tempfile::tempdir().unwrap();
+    let bowtie = dir.path().join("bowtie.facets");
+    std::fs::write(&bowtie, "0 1 2\n0 3 4\n").unwrap();
+    let direct = gmap(&["homology", p(&bowtie)]);
+    assert_eq!(direct.status.code(), Some(0), "{}", stderr(&direct));
+    assert!(common::stdout(&direct).contains("H_0 = Z\n"), "{}", common::stdout(&direct));
+    for args in
+        [&["--via", "gmap"][..], &["--method", "simplicial"], &["--simplify"], &["--via", "gmap", "--generators"]]
+    {
+        let mut cmd = vec!["homology", p(&bowtie)];
+        cmd.extend_from_slice(args);
+        let o = gmap(&cmd);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
+        assert!(common::stdout(&o).is_empty(), "{args:?}: {}", common::stdout(&o));
+        let err = stderr(&o);
+        assert!(err.contains("bowtie.facets: the G-map of this complex is another space"), "{args:?}: {err}");
+        assert!(
+            err.contains("the facets around the vertex 0 fall into 2 groups that share no ridge there"),
+            "{args:?}: {err}"
+        );
+        assert!(err.contains("so the vertex 0 becomes 2 cells"), "{args:?}: {err}");
+        assert!(err.contains("--via direct computes those"), "{args:?}: {err}");
+    }
+    // two tetrahedra sharing an edge: pinched along the edge, named before its vertices
+    let edge = dir.path().join("edge.facets");
+    std::fs::write(&edge, "0 1 2 3\n0 1 4 5\n").unwrap();
+    let o = gmap(&["homology", p(&edge), "--via", "gmap"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("the facets around the edge {0, 1} fall into 2 groups"), "{}", stderr(&o));
+    // a complex whose G-map keeps every face goes through as before: the octahedron
+    let octa = dir.path().join("octa.facets");
+    std::fs::write(&octa, "0 2 4\n0 2 5\n0 3 4\n0 3 5\n1 2 4\n1 2 5\n1 3 4\n1 3 5\n").unwrap();
+    let o = gmap(&["homology", p(&octa), "--via", "gmap"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(common::stdout(&o).contains("H_2 = Z"), "{}", common::stdout(&o));
+}
+
+#[test]
+fn bench_gives_no_gmap_groups_for_a_pinched_complex() {
+    let dir = tempfile::tempdir().unwrap();
+    let bowtie = dir.path().join("bowtie.facets");
+    std::fs::write(&bowtie, "0 1 2\n0 3 4\n").unwrap();
+    let o = gmap(&["bench", p(&bowtie), "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out: serde_json::Value = serde_json::from_str(&common::stdout(&o)).unwrap();
+    let rows = out["rows"].as_array().unwrap();
+    // the direct route answers the complex's groups; the G-map's two routes do not apply
+    let direct: Vec<_> = rows.iter().filter(|r| r["route"] == "direct").collect();
+    assert_eq!(direct.len(), 1, "{out}");
+    assert_eq!(direct[0]["betti"], serde_json::json!([1, 0, 0]), "{out}");
+    let mapped: Vec<_> = rows.iter().filter(|r| r["route"] == "cellular" || r["route"] == "simplicial").collect();
+    assert_eq!(mapped.len(), 2, "{out}");
+    for r in mapped {
+        let e = r["error"].as_str().unwrap_or_default();
+        assert!(e.contains("the G-map of this complex is another space"), "{out}");
+        assert!(e.contains("the vertex 0 becomes 2 cells"), "{out}");
+    }
+    assert!(rows.iter().all(|r| r["agree"] == true), "{out}");
+}

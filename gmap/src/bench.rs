@@ -236,7 +236,12 @@ fn routes_timed(input: &Input, read: f64, o: &BenchOptions, mark: &PeakMark) -> 
             (Route::Gmap(method), Input::Simplicial(sc)) => {
                 let (map_read, map) = gmap.get_or_insert_with(|| {
                     let t = Instant::now();
-                    let m = sc.to_gmap_within(o.max_darts).map_err(|e| format!("does not apply: {e}"));
+                    // a G-map that pulls a face apart is another space: its routes do not apply
+                    let m = sc.to_gmap_within(o.max_darts).and_then(|m| {
+                        crate::pinch::check_route(sc, &m, &name)?;
+                        Ok(m)
+                    });
+                    let m = m.map_err(|e| format!("does not apply: {e}"));
                     (read + ms(t), m)
                 });
                 match map {

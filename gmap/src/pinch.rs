@@ -31,6 +31,33 @@ pub(crate) struct Pinch {
     pub shared: &'static str,
 }
 
+impl Pinch {
+    /// What the G-map does to the cell: `the facets around the vertex 0 fall into 2 groups
+    /// that share no ridge there, and a G-map sews facets along ridges only, so the vertex 0
+    /// becomes 2 cells`.
+    fn what_changes(&self) -> String {
+        let Pinch { cell, groups, pieces, shared, .. } = self;
+        format!(
+            "the {pieces} around {cell} fall into {groups} groups that share no {shared} there, and a G-map sews {pieces} along {shared}s only, so {cell} becomes {groups} cells"
+        )
+    }
+}
+
+/// The refusal of a homology route through the G-map of a simplicial complex that `m`
+/// pulls apart at a cell (`--via gmap`, `--method simplicial`, `--simplify`): the groups of
+/// the map are another space's, so none is given; the direct route computes the complex's.
+/// `None` when `m` keeps every face of `sc` one cell. The rule of [`simplicial`], as
+/// [`check`] applies it to a write.
+pub(crate) fn check_route(sc: &SimplicialComplex, m: &DenseMap, file: &str) -> Result<()> {
+    let Some(p) = simplicial(sc, m) else { return Ok(()) };
+    Err(err!(
+        Precondition,
+        "{file}: the G-map of this complex is another space: {}; its groups are not the complex's, --via direct computes those (--method simplicial and --simplify work on the G-map)",
+        p.what_changes()
+    )
+    .with_item(p.item))
+}
+
 /// The name of a face of a simplicial complex by its vertex labels.
 fn face_name(face: &[u64]) -> String {
     let labels: Vec<String> = face.iter().map(u64::to_string).collect();
@@ -101,18 +128,7 @@ pub(crate) fn check(p: Option<Pinch>, input: &Input, output: &Path, lossy: bool,
         true => format!("the {}", input.kind()),
         false => input.path().display().to_string(),
     };
-    let change = format!(
-        "{} is another space than {source}: the {} around {} fall into {} groups that share no {} there, and a G-map sews {} along {}s only, so {} becomes {} cells",
-        output.display(),
-        p.pieces,
-        p.cell,
-        p.groups,
-        p.shared,
-        p.pieces,
-        p.shared,
-        p.cell,
-        p.groups
-    );
+    let change = format!("{} is another space than {source}: {}", output.display(), p.what_changes());
     if lossy {
         return Ok(Some(change));
     }

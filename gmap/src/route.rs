@@ -244,6 +244,8 @@ fn run_complex(route: Route, input: &Input, o: &HomologyOptions, file: &str) -> 
         (Route::Direct, Input::Simplicial(sc)) => (sc.dim(), chains::direct(sc, o, file)?),
         (Route::Gmap(method), Input::Simplicial(sc)) => {
             let map = sc.to_gmap_within(o.max_darts)?;
+            // a map that pulls a face apart is another space: its groups are not the complex's
+            crate::pinch::check_route(sc, &map, file)?;
             let (map, names) = if o.simplify {
                 let (m, n) = chains::simplify_if_safe(map, &o.progress);
                 note = n;

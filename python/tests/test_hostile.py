@@ -298,3 +298,40 @@ def test_a_write_racing_a_read_is_a_gmap_error_at_most():
             t.join()
     assert errors == []
     assert len(m) == base + 2 * written
+
+
+def test_a_sparse_terabyte_npy_is_refused_as_the_command_refuses_it(tmp_path, gmap_bin):
+    """A header declaring 10000**3 = 10**12 voxels, then a 1 TB hole: gmap.homology(path)
+    refuses it at once with the estimate and message of `gmap homology`, gmap.open(path)
+    opens it (memory-mapped, nothing read) and its homology is refused the same way."""
+    d = b"{'descr': '|u1', 'fortran_order': False, 'shape': (10000, 10000, 10000), }"
+    d += b" " * ((64 - (10 + len(d) + 1) % 64) % 64) + b"\n"
+    path = tmp_path / "huge.npy"
+    with open(path, "wb") as f:
+        f.write(b"\x93NUMPY\x01\x00" + len(d).to_bytes(2, "little") + d)
+        f.truncate(f.tell() + 10**12)
+    cli = subprocess.run([gmap_bin, "homology", str(path), "--max-memory", "8G"], capture_output=True, text=True)
+    assert cli.returncode == 1
+    message = cli.stderr.strip().removeprefix("error: ")
+    assert "the layers of the one-pass cubical homology would take an estimated 14405760576 bytes" in message
+    gmap.set_max_memory(8 * 2**30)
+    with pytest.raises(gmap.LimitError) as e:
+        gmap.homology(str(path))
+    assert str(e.value) == message
+    img = gmap.open(str(path))
+    assert img.shape == [10000, 10000, 10000]
+    with pytest.raises(gmap.LimitError) as e:
+        gmap.homology(img)
+    assert "would take an estimated 14405760576 bytes" in str(e.value)
+
+
+def test_homology_through_the_gmap_of_a_bowtie_is_refused_naming_the_vertex():
+    """Two triangles sharing the vertex 0 only: H_0 = Z directly; through the G-map (which
+    splits the vertex) a PreconditionError naming it, not the groups of another space."""
+    bowtie = [[0, 1, 2], [0, 3, 4]]
+    assert gmap.homology(bowtie).betti == [1, 0, 0]
+    for method in ("gmap", "simplicial"):
+        with pytest.raises(gmap.PreconditionError) as e:
+            gmap.homology(bowtie, method=method)
+        assert "the facets around the vertex 0 fall into 2 groups" in str(e.value)
+        assert "so the vertex 0 becomes 2 cells" in str(e.value)

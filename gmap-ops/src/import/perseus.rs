@@ -106,13 +106,14 @@ pub fn parse_perseus_simplicial(text: &str) -> Result<(Vec<Vec<u64>>, Vec<f64>),
     for (line, l) in lines {
         let t: Vec<&str> = l.split_whitespace().collect();
         let k: usize = t[0].parse().map_err(|_| syntax(line, format!("the dimension {:?} is not an integer", t[0])))?;
-        if t.len() != k + 3 {
+        // compared without forming k + 3, which overflows for k near usize::MAX
+        if t.len().checked_sub(3) != Some(k) {
             return Err(syntax(
                 line,
                 format!(
                     "a {k}-simplex is its dimension, {} labels and a birth: {} numbers, not {}",
-                    k + 1,
-                    k + 3,
+                    k as u128 + 1,
+                    k as u128 + 3,
                     t.len()
                 ),
             ));

@@ -138,7 +138,19 @@ pub fn parse_png(bytes: &[u8]) -> Result<Image, ImportError> {
     if color != png::ColorType::Grayscale {
         return Err(format(format!("PNG: a {color:?} image; only grey images (no alpha) are read")));
     }
-    let mut buf = vec![0; reader.output_buffer_size()];
+    // the declared size, checked before the pixels are allocated: deflate packs at most
+    // 1032 bytes into one, and expanding 1-bit grey to 8 bits multiplies by 8 (a file of a
+    // few bytes declaring millions of pixels cannot hold them); then the memory policy
+    let size = reader.output_buffer_size();
+    let (w, h) = (reader.info().width, reader.info().height);
+    if size as u64 > (bytes.len() as u64).saturating_mul(1032 * 8) {
+        return Err(format(format!(
+            "PNG: {w} x {h} pixels take {size} bytes, more than the {} bytes of the file can hold compressed",
+            bytes.len()
+        )));
+    }
+    gmap_core::resources::check_memory(&format!("the pixels of a {w} x {h} PNG"), Some(size as u64))?;
+    let mut buf = vec![0; size];
     let info = reader.next_frame(&mut buf).map_err(|e| format(format!("PNG: {e}")))?;
     let (w, h) = (info.width as usize, info.height as usize);
     let data = &buf[..info.buffer_size()];
@@ -181,6 +193,35 @@ mod tests {
         let e = parse_pgm(b"P2 x").unwrap_err().to_string();
         assert!(e.contains("the width"), "{e}");
         assert!(parse_pgm(b"P5 1 1 70000\n\x00\x00").is_err());
+    }
+
+    #[test]
+    fn png_declaring_more_pixels_than_it_can_hold_is_refused() {
+        // the fuzzer's input (png_reader), its header's CRC made right (a fuzzing build
+        // skips the check): 47 bytes declaring 768 x 50331648 grey 4-bit pixels, whose
+        // buffer of 38654705664 bytes was allocated (an abort) before decoding
+        let ihdr = b"IHDR\x00\x00\x03\x00\x03\x00\x00\x00\x04\x00\x00\x00\x00";
+        let mut bytes = b"\x89PNG\r\n\x1a\n\x00\x00\x00\x0d".to_vec();
+        bytes.extend_from_slice(ihdr);
+        bytes.extend_from_slice(&crc32(ihdr).to_be_bytes());
+        bytes.extend_from_slice(b"\x00\x00\xb0\x11IDAT\x4a\x00\x00\x0a\x00\x1a");
+        assert_eq!(bytes.len(), 47);
+        assert_eq!(
+            parse_png(&bytes).unwrap_err().to_string(),
+            "PNG: 768 x 50331648 pixels take 38654705664 bytes, more than the 47 bytes of the file can hold compressed"
+        );
+    }
+
+    /// The CRC of a PNG chunk's type and data (ISO 3309), bit by bit.
+    fn crc32(data: &[u8]) -> u32 {
+        let mut c = 0xffff_ffffu32;
+        for &b in data {
+            c ^= b as u32;
+            for _ in 0..8 {
+                c = if c & 1 == 1 { 0xedb8_8320 ^ (c >> 1) } else { c >> 1 };
+            }
+        }
+        !c
     }
 
     #[test]

@@ -35,4 +35,11 @@ fn a_simplicial_file_and_its_refusals() {
     assert_eq!(e("1\n0 -1 0\n"), "line 2: the vertex label \"-1\" is not a non-negative integer");
     assert_eq!(e("1\n0 1 x\n"), "line 2: the birth \"x\" is not a number");
     assert!(matches!(parse_perseus_simplicial("1\n"), Err(ImportError::Empty)));
+    // the fuzzer's input (perseus_reader): a dimension of usize::MAX overflowed k + 3
+    assert_eq!(
+        e("1\n18446744073709551615 1.0\n"),
+        "line 2: a 18446744073709551615-simplex is its dimension, 18446744073709551616 labels and a birth: 18446744073709551618 numbers, not 2"
+    );
+    let fuzzed = "\x0b\x0b1\n0000000000000018446744073709551615\x0b\x0b#1.00\n \n11111";
+    assert!(parse_perseus_simplicial(fuzzed).is_err());
 }
