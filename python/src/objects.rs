@@ -88,6 +88,9 @@ impl PyArchComplex {
 /// What `__reduce__` gives pickle: a constructor and its arguments.
 type Reduced<'py, A> = PyResult<(Bound<'py, PyAny>, A)>;
 
+/// `SimplicialComplex`'s constructor arguments: the facets and their values, if any.
+type ComplexArgs = (Vec<Vec<u64>>, Option<Vec<f64>>);
+
 /// Facets from a Python sequence of sequences of ints or a 2-D integer array.
 pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
     if let Ok(a) = x.downcast::<numpy::PyArray2<i64>>() {
@@ -213,7 +216,7 @@ impl PySimplicialComplex {
         Ok(format!("<gmap.SimplicialComplex dim={} facets={}>", sc.dim(), sc.total_facet_count()))
     }
 
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, (Vec<Vec<u64>>, Option<Vec<f64>>)> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, ComplexArgs> {
         Ok((slf.get_type().into_any(), (slf.get().facets()?, slf.get().facet_values()?)))
     }
 
