@@ -6,14 +6,15 @@
     /tmp/gmap-venv/bin/python benches/anchors/persistence_bench.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
 
 Each input is a `.npy` array written once into --out (default target/bench-data/persistence):
-random floats (seeded) of 1000², 2000², 4000², 128³ and 256³, and scikit-image's sample
+random floats (seeded) of 1000², 2000², 4000², 128³ and 256³, smooth fields of 128³ and
+256³ (seeded normal noise blurred by a Gaussian of 4 voxels, `smooth`), and scikit-image's sample
 images at full size. Each tool runs in its own Python process (the interpreter running
 this script: a venv with the `gmap` package and, by --system-site-packages, gudhi and
 cripser) on the same file and the same construction, one after the other, `reps` times:
 
 * gmap: `gmap.persistence(arr, construction=C)` (the package, Z/2);
-* CubicalRipser: `cripser.computePH(arr)` for V (its default), `cripser.computePH_T(arr)`
-  for T;
+* CubicalRipser: `cripser.computePH(arr, n_threads=N)` for V (its default),
+  `cripser.computePH_T(arr, n_threads=N)` for T, once per N of --cripser-threads (default 1);
 * GUDHI: `CubicalComplex(vertices=arr)` for V, `(top_dimensional_cells=arr)` for T,
   `persistence(homology_coeff_field=2)`, building included.
 
@@ -43,7 +44,7 @@ GMAP = (
 CRIPSER = (
     "import sys, time, numpy as np, cripser; a = np.load(sys.argv[1]).astype(np.float64);"
     "c, t = time.process_time(), time.perf_counter();"
-    "r = cripser.computePH(a) if sys.argv[2] == 'V' else cripser.computePH_T(a);"
+    "n = int(sys.argv[3]); r = cripser.computePH(a, n_threads=n) if sys.argv[2] == 'V' else cripser.computePH_T(a, n_threads=n);"
     "print('seconds', time.process_time() - c, time.perf_counter() - t, len(r))"
 )
 GUDHI = (
@@ -76,6 +77,21 @@ def run(cmd):
     return wall, ru.ru_utime + ru.ru_stime, seconds(out), kb / 1024.0
 
 
+def smooth(shape, sigma=4.0, seed=20261202):
+    """A smooth field: seeded standard normal noise blurred by a Gaussian of `sigma` voxels
+    (periodic, through the FFT), float64. Many fewer critical cells than random noise."""
+    rng = np.random.default_rng(seed)
+    f = np.fft.rfftn(rng.standard_normal(shape))
+    k2 = np.zeros(f.shape)
+    for axis, n in enumerate(shape):
+        k = np.fft.rfftfreq(n) if axis == len(shape) - 1 else np.fft.fftfreq(n)
+        view = [1] * len(shape)
+        view[axis] = k.size
+        k2 = k2 + (k ** 2).reshape(view)
+    f *= np.exp(-2.0 * np.pi ** 2 * sigma ** 2 * k2)
+    return np.ascontiguousarray(np.fft.irfftn(f, s=shape), dtype=np.float64)
+
+
 def inputs(out):
     rng = np.random.default_rng(20261125)
     files = []
@@ -86,7 +102,17 @@ def inputs(out):
         if not os.path.exists(path):
             np.save(path, arr)
         files.append((name, path, s))
-    import skimage.data as data
+    for s in [(128, 128, 128), (256, 256, 256)]:
+        name = "smooth_" + "x".join(map(str, s))
+        path = os.path.join(out, name + ".npy")
+        if not os.path.exists(path):
+            np.save(path, smooth(s))
+        files.append((name, path, s))
+    try:
+        import skimage.data as data
+    except ImportError:
+        print("(scikit-image not installed: its sample images are left out)")
+        return files
 
     for name in ["camera", "coins", "moon", "page", "text", "clock", "brick", "grass", "gravel"]:
         path = os.path.join(out, name + ".npy")
@@ -104,6 +130,8 @@ def options():
     ap.add_argument("--only", default="", help="comma-separated input names")
     ap.add_argument("--constructions", default="V,T")
     ap.add_argument("--gudhi-max", type=int, default=4_200_000)
+    ap.add_argument("--cripser-threads", default="1",
+                    help="comma-separated values of CubicalRipser's n_threads, one column each")
     ap.add_argument("--out", default=os.path.join(ROOT, "target", "bench-data", "persistence"))
     return ap
 
@@ -120,19 +148,24 @@ def main():
     ap = options()
     ap.add_argument("--tools", default="gmap,cripser,gudhi", help="which sides to run")
     args = ap.parse_args()
-    print("| input | constr. | gmap wall / CPU / in-process CPU s | MB | CubicalRipser wall / CPU / in-process CPU s "
-          "| MB | ratio CPU / in-process | GUDHI wall / CPU / in-process CPU s | MB | ratio CPU / in-process |")
-    print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    threads = args.cripser_threads.split(",")
+    print("| input | constr. | gmap wall / CPU / in-process CPU s | MB | "
+          + "".join(f"CubicalRipser n_threads={t} wall / CPU / in-process CPU s | MB | ratio CPU / in-process | "
+                    for t in threads)
+          + "GUDHI wall / CPU / in-process CPU s | MB | ratio CPU / in-process |")
+    print("| --- | --- | ---: | ---: | " + "---: | ---: | ---: | " * len(threads) + "---: | ---: | ---: |")
     for name, path, shape in selected(args):
         n = int(np.prod(shape))
         for cons in args.constructions.split(","):
             tools = {
                 "gmap": ([sys.executable, "-c", GMAP, path, cons], args.reps),
-                "cripser": ([sys.executable, "-c", CRIPSER, path, cons], args.reps),
             }
+            for t in args.cripser_threads.split(","):
+                tools[f"cripser{t}"] = ([sys.executable, "-c", CRIPSER, path, cons, t], args.reps)
             if n <= args.gudhi_max:
                 tools["gudhi"] = ([sys.executable, "-c", GUDHI, path, cons], 1)
-            tools = {k: v for k, v in tools.items() if k in args.tools.split(",")}
+            # `cripser` names every thread setting's run
+            tools = {k: v for k, v in tools.items() if k.rstrip("0123456789") in args.tools.split(",")}
             best, mem = {}, {}
             for rep in range(args.reps):
                 for k, (cmd, reps) in tools.items():
@@ -152,8 +185,9 @@ def main():
                         f"{b[1] / g[1]:.1f}× / {b[2] / g[2]:.1f}×")
 
             shape_s = "×".join(map(str, shape))
+            crs = "".join(cell(f"cripser{t}") + " | " for t in args.cripser_threads.split(","))
             print(f"| {name} {shape_s} | {cons} | {g[0]:.2f} / {g[1]:.2f} / {g[2]:.3f} | {mem.get('gmap', 0):.0f} | "
-                  f"{cell('cripser')} | {cell('gudhi')} |", flush=True)
+                  f"{crs}{cell('gudhi')} |", flush=True)
     print("load average after:", open("/proc/loadavg").read().split()[:3])
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Persistence of images in one Python process: gmap's package against GUDHI and CubicalRipser.
 
-    /tmp/gmap-venv/bin/python benches/anchors/persistence_inprocess.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000]
+    /tmp/gmap-venv/bin/python benches/anchors/persistence_inprocess.py [--only NAME,…] [--reps 3] [--gudhi-max 4200000] [--cripser-threads 1,2]
 
 Needs the `gmap` package (`cd python && maturin build --release`, then pip install the wheel
 into a venv made with --system-site-packages, where gudhi and cripser are), and the `.npy`
@@ -12,8 +12,10 @@ For each input and construction, one process loads the array once and calls, in 
 `reps` rounds of:
 
 * gmap: `gmap.persistence(arr, construction=C)` (Z/2);
-* CubicalRipser: `cripser.computePH(arr)` for V (its default), `cripser.computePH_T(arr)`
-  for T (`computePH(top_dim=True)` computes something else: only the top dimension);
+* CubicalRipser: `cripser.computePH(arr, n_threads=N)` for V (its default),
+  `cripser.computePH_T(arr, n_threads=N)` for T (`computePH(top_dim=True)` computes
+  something else: only the top dimension), once per N of --cripser-threads (default 1;
+  `1,2`: a column each);
 * GUDHI: `gudhi.CubicalComplex(vertices=arr)` or `(top_dimensional_cells=arr)` then
   `.persistence(homology_coeff_field=2, min_persistence=0)`, building the complex included;
   once, and only on inputs of at most --gudhi-max cells.
@@ -47,17 +49,18 @@ def main():
     import gudhi
 
     args = options().parse_args()
-    print("| input | constr. | gmap CPU / wall s | CubicalRipser CPU / wall s | ratio CPU / wall "
-          "| GUDHI CPU / wall s | ratio CPU / wall | pairs gmap / CR / GUDHI |")
-    print("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |")
+    threads = [int(t) for t in args.cripser_threads.split(",")]
+    print("| input | constr. | gmap CPU / wall s | "
+          + "".join(f"CubicalRipser n_threads={t} CPU / wall s | ratio CPU / wall | " for t in threads)
+          + "GUDHI CPU / wall s | ratio CPU / wall | pairs gmap / CR / GUDHI |")
+    print("| --- | --- | ---: | " + "---: | ---: | " * len(threads) + "---: | ---: | ---: |")
     for name, path, shape in selected(args):
         arr = np.ascontiguousarray(np.load(path), dtype=np.float64)
         for cons in args.constructions.split(","):
-            tools = {
-                "gmap": (lambda: len(gmap.persistence(arr, construction=cons)), args.reps),
-                "cripser": ((lambda: finite(cripser.computePH(arr))) if cons == "V"
-                            else (lambda: finite(cripser.computePH_T(arr))), args.reps),
-            }
+            tools = {"gmap": (lambda: len(gmap.persistence(arr, construction=cons)), args.reps)}
+            for t in threads:
+                tools[f"cripser{t}"] = ((lambda t=t: finite(cripser.computePH(arr, n_threads=t))) if cons == "V"
+                                        else (lambda t=t: finite(cripser.computePH_T(arr, n_threads=t))), args.reps)
             if arr.size <= args.gudhi_max:
                 key = "vertices" if cons == "V" else "top_dimensional_cells"
                 tools["gudhi"] = (lambda: len(gudhi.CubicalComplex(**{key: arr}).persistence(
@@ -79,10 +82,12 @@ def main():
                 b = best[k]
                 return f"{b[0]:.3f} / {b[1]:.3f} | {b[0] / g[0]:.1f}× / {b[1] / g[1]:.1f}×"
 
-            counts = " / ".join(str(count.get(k, "–")) for k in ["gmap", "cripser", "gudhi"])
+            cr = "/".join(str(count.get(f"cripser{t}", "–")) for t in threads)
+            counts = " / ".join([str(count["gmap"]), cr, str(count.get("gudhi", "–"))])
             shape_s = "×".join(map(str, shape))
-            print(f"| {name} {shape_s} | {cons} | {g[0]:.3f} / {g[1]:.3f} | {cell('cripser')} | "
-                  f"{cell('gudhi')} | {counts} |", flush=True)
+            print(f"| {name} {shape_s} | {cons} | {g[0]:.3f} / {g[1]:.3f} | "
+                  + "".join(cell(f"cripser{t}") + " | " for t in threads)
+                  + f"{cell('gudhi')} | {counts} |", flush=True)
     print("load average after:", open("/proc/loadavg").read().split()[:3])
 
 

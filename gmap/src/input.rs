@@ -134,12 +134,26 @@ pub(crate) struct Source {
     labels_in_file: bool,
     /// what reading changed (a snapped complex's welds and splits), one line each
     notes: Vec<String>,
+    /// the values a `.facets` file gives its facets (`: VALUE`), in the complex's facet
+    /// order: a filtration, which [`crate::persistence()`] reads
+    facet_values: Option<std::sync::Arc<[f64]>>,
 }
 
 impl Source {
     /// The file `path` opened with `opts`.
     pub(crate) fn file(path: &Path, opts: &OpenOptions) -> Self {
-        Source { path: path.to_path_buf(), max_darts: opts.max_darts, labels_in_file: false, notes: Vec::new() }
+        Source {
+            path: path.to_path_buf(),
+            max_darts: opts.max_darts,
+            labels_in_file: false,
+            notes: Vec::new(),
+            facet_values: None,
+        }
+    }
+
+    /// This source, with the values its file gives the facets of its complex.
+    pub(crate) fn valued(self, facet_values: Option<Vec<f64>>) -> Self {
+        Source { facet_values: facet_values.map(Into::into), ..self }
     }
 
     /// This source, with what reading changed.
@@ -347,6 +361,26 @@ impl<T> std::ops::Deref for Sourced<T> {
 }
 
 impl Sourced<SimplicialComplex> {
+    /// A complex built in memory with a value per facet (in the order of its facets) as
+    /// its filtration; refuses a count of values other than the facets'.
+    pub fn with_facet_values(sc: SimplicialComplex, values: Vec<f64>) -> Result<Self> {
+        let facets = sc.facets().count();
+        if values.len() != facets {
+            return Err(Error::new(
+                crate::error::ErrorKind::Usage,
+                format!("{} values for {facets} facets: give one value per facet", values.len()),
+            ));
+        }
+        Ok(Source::default().valued(Some(values)).holding(sc))
+    }
+
+    /// The values the complex's file gives its facets (`: VALUE` after each facet of a
+    /// `.facets` file), in the order of [`SimplicialComplex::facets`]; `None` for a file
+    /// without values. [`crate::persistence()`] filters the complex by them.
+    pub fn facet_values(&self) -> Option<&[f64]> {
+        self.source.facet_values.as_deref()
+    }
+
     /// The G-map of the facets (a pure pseudo-manifold), refused past the dart limit the
     /// input was opened with (default: what the memory budget holds) and with the reason
     /// when the complex has none (a ridge in three facets, mixed dimensions).

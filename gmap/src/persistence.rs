@@ -187,8 +187,10 @@ fn complex_options(opts: &PersistenceOptions, what: &str) -> Result<()> {
 /// The diagram of an opened input: a G-map by the label `opts.label` of its cells (a
 /// `.gmap` file), an architectural complex (`.json`) by the label `opts.label` of its
 /// regions (the chain complex `gmap homology` computes for it), a cubical set as the image
-/// with 0 on its cubes and 1 elsewhere. A simplicial complex carries no values once
-/// opened: [`persistence_file`] reads them, or [`lower_star`] takes them per vertex. With
+/// with 0 on its cubes and 1 elsewhere, a simplicial complex by the values its `.facets`
+/// file gives its facets ([`Sourced::facet_values`](crate::Sourced::facet_values), as
+/// [`persistence_file`] reads them; without them it is refused: [`lower_star`] takes
+/// values per vertex). With
 /// `opts.superlevel` a G-map or an architectural complex is filtered from the largest value
 /// down (a cell lowered to its faces' minimum); both refuse the options only images take
 /// (periodic, the V-construction).
@@ -225,11 +227,15 @@ pub fn persistence(input: &Input, opts: &PersistenceOptions) -> Result<Diagram> 
             let value = |i: usize| img.value(i);
             image_persistence(&shape, Pixels::Read(&value), opts).map_err(|e| e.with_path(img.path()))
         }
-        Input::Simplicial(s) => Err(Error::new(
-            ErrorKind::Unsupported,
-            "a simplicial complex needs values: a .facets file with `: VALUE` after each facet, or a value per vertex (--vertex-values, vertex_values=)",
-        )
-        .with_path(s.path())),
+        // a `.facets` file's values per facet are the filtration it was opened with
+        Input::Simplicial(s) => match s.facet_values() {
+            Some(values) => facet_persistence(s, values, opts).map_err(|e| e.with_path(s.path())),
+            None => Err(Error::new(
+                ErrorKind::Unsupported,
+                "a simplicial complex needs values: a .facets file with `: VALUE` after each facet, or a value per vertex (--vertex-values, vertex_values=)",
+            )
+            .with_path(s.path())),
+        },
         Input::Arch(a) => {
             complex_options(opts, "an architectural complex").map_err(|e| e.with_path(a.path()))?;
             let f = if opts.superlevel {
@@ -513,6 +519,11 @@ pub fn lower_star_complex(sc: &SimplicialComplex, values: &VertexValues, opts: &
 /// `.lex`); a G-map takes its vertex values as labels ([`persistence`]).
 pub fn lower_star(input: &Input, values: &VertexValues, opts: &PersistenceOptions) -> Result<Diagram> {
     match input {
+        Input::Simplicial(s) if s.facet_values().is_some() => Err(Error::new(
+            ErrorKind::Unsupported,
+            "the facets have values (`: VALUE`) and the vertices too: give one filtration",
+        )
+        .with_path(s.path())),
         Input::Simplicial(s) => lower_star_complex(s, values, opts).map_err(|e| e.with_path(s.path())),
         Input::Map(m) => Err(Error::new(
             ErrorKind::Unsupported,

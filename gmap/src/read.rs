@@ -43,7 +43,9 @@ pub(crate) fn mesh(path: &Path, opts: &OpenOptions) -> Result<Input> {
 
 /// `.facets`.
 pub(crate) fn facets(path: &Path, opts: &OpenOptions) -> Result<Input> {
-    Ok(Input::Simplicial(Source::file(path, opts).holding(import::read_facets_complex(path)?)))
+    // facets may carry values (`: VALUE`): the complex's filtration, kept with it
+    let (sc, values) = import::simplicial::read_valued_facets(path)?;
+    Ok(Input::Simplicial(Source::file(path, opts).valued(values).holding(sc)))
 }
 
 /// `.lex`, or `FILE.lex#name` for one complex of the file.

@@ -69,3 +69,31 @@ proptest! {
         prop_assert_eq!(triples(&f2, &v2), want);
     }
 }
+
+#[test]
+fn an_opened_valued_facets_file_keeps_its_values() {
+    // the list above as a file: `gmap::open` reads the values with the complex (the
+    // triangle first, each value with its own line), and its diagram is the file's
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("valued.facets");
+    std::fs::write(&path, "0 1 : 0\n2 4 : 0\n0 2 3 : 1\n").unwrap();
+    let input = gmap::open(&path).unwrap();
+    assert_eq!(input.input_kind(), gmap::Kind::Simplicial);
+    let gmap::Input::Simplicial(sc) = &input else { panic!("a .facets file is a simplicial complex") };
+    assert_eq!(sc.facets().map(<[u64]>::to_vec).collect::<Vec<_>>(), vec![vec![0, 2, 3], vec![0, 1], vec![2, 4]]);
+    assert_eq!(sc.facet_values(), Some(&[1.0, 0.0, 0.0][..]));
+    let opts = PersistenceOptions::default();
+    let d = gmap::persistence(&input, &opts).unwrap();
+    let got: Vec<_> = d.pairs.iter().map(|p| (p.dim, p.birth, p.death)).collect();
+    assert_eq!(got, vec![(0, 0.0, 1.0), (0, 0.0, f64::INFINITY)]);
+    let file = gmap::persistence_file(&path, &opts).unwrap().diagram;
+    assert_eq!(file.pairs.iter().map(|p| (p.dim, p.birth, p.death)).collect::<Vec<_>>(), got);
+    // a file without values opens with none, and its diagram asks for them
+    let plain = dir.path().join("plain.facets");
+    std::fs::write(&plain, "0 1\n1 2\n").unwrap();
+    let input = gmap::open(&plain).unwrap();
+    let gmap::Input::Simplicial(sc) = &input else { panic!("a .facets file is a simplicial complex") };
+    assert_eq!(sc.facet_values(), None);
+    let e = gmap::persistence(&input, &opts).unwrap_err();
+    assert!(e.to_string().contains("needs values"), "{e}");
+}

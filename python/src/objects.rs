@@ -88,6 +88,9 @@ impl PyArchComplex {
 /// What `__reduce__` gives pickle: a constructor and its arguments.
 type Reduced<'py, A> = PyResult<(Bound<'py, PyAny>, A)>;
 
+/// `SimplicialComplex`'s constructor arguments: the facets and their values, if any.
+type ComplexArgs = (Vec<Vec<u64>>, Option<Vec<f64>>);
+
 /// Facets from a Python sequence of sequences of ints or a 2-D integer array.
 pub fn facets_from_py(x: &Bound<'_, PyAny>) -> PyResult<Vec<Vec<u64>>> {
     if let Ok(a) = x.downcast::<numpy::PyArray2<i64>>() {
@@ -147,15 +150,48 @@ pub fn complex_of(facets: Vec<Vec<u64>>) -> Res<Input> {
     Ok(Input::Simplicial(Sourced::new(sc)))
 }
 
+/// A simplicial complex from facets with a value per facet (the order given), as a facade
+/// input: the reader's refusals, and a count of values other than the facets'.
+pub fn valued_complex_of(facets: Vec<Vec<u64>>, values: Vec<f64>) -> Res<Input> {
+    if let Some(f) = values.iter().position(|v| v.is_nan()) {
+        return Err(Failure::input(format!("facet_values[{f}] is NaN: a filtration value is a number")).with_facet(f));
+    }
+    if values.len() != facets.len() {
+        return Err(Failure::input(format!(
+            "{} facet_values for {} facets: give one value per facet",
+            values.len(),
+            facets.len()
+        )));
+    }
+    let sc = SimplicialComplex::from_facets(facets).map_err(Failure::in_memory)?;
+    // the complex lists its top-dimensional facets first: each value goes with its facet,
+    // found by its place in the input (facet k is line k + 1)
+    let values = sc.facet_lines().map(|line| values[line - 1]).collect();
+    Ok(Input::Simplicial(Sourced::with_facet_values(sc, values).map_err(Failure::from)?))
+}
+
 #[pymethods]
 impl PySimplicialComplex {
-    /// SimplicialComplex(facets): facets as a sequence of sequences of non-negative ints or
-    /// a 2-D integer array (one facet a row).
+    /// SimplicialComplex(facets, facet_values=None): facets as a sequence of sequences of
+    /// non-negative ints or a 2-D integer array (one facet a row); `facet_values`, one
+    /// number per facet in the order given, is the complex's filtration (what a `.facets`
+    /// file's `: VALUE` gives), which `gmap.persistence` reads.
     #[new]
-    fn py_new(py: Python<'_>, facets: &Bound<'_, PyAny>) -> PyResult<Self> {
+    #[pyo3(signature = (facets, facet_values = None))]
+    fn py_new(py: Python<'_>, facets: &Bound<'_, PyAny>, facet_values: Option<Vec<f64>>) -> PyResult<Self> {
         let f = facets_from_py(facets)?;
-        let input = py.allow_threads(|| complex_of(f))?;
+        let input = match facet_values {
+            None => py.allow_threads(|| complex_of(f))?,
+            Some(values) => py.allow_threads(|| valued_complex_of(f, values))?,
+        };
         Ok(PySimplicialComplex { input })
+    }
+
+    /// The values given to the facets (in the order of `facets`), or None: a `.facets`
+    /// file's `: VALUE`, or the constructor's `facet_values`.
+    #[getter]
+    fn facet_values(&self) -> PyResult<Option<Vec<f64>>> {
+        Ok(self.sc()?.facet_values().map(<[f64]>::to_vec))
     }
 
     /// The dimension of the largest facets.
@@ -180,8 +216,8 @@ impl PySimplicialComplex {
         Ok(format!("<gmap.SimplicialComplex dim={} facets={}>", sc.dim(), sc.total_facet_count()))
     }
 
-    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, (Vec<Vec<u64>>,)> {
-        Ok((slf.get_type().into_any(), (slf.get().facets()?,)))
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> Reduced<'py, ComplexArgs> {
+        Ok((slf.get_type().into_any(), (slf.get().facets()?, slf.get().facet_values()?)))
     }
 
     /// Whether every facet has the top dimension.

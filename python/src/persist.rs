@@ -261,6 +261,12 @@ fn given_values_diagram(
                 )
                 .into());
             };
+            if sc.facet_values().is_some() {
+                return Err(Failure::input(
+                    "this SimplicialComplex has facet_values already (its file's `: VALUE` or its constructor's): give one filtration",
+                )
+                .into());
+            }
             Ok(py.allow_threads(|| gmap::persistence::facet_persistence(sc, &values, o)).map_err(Failure::from)?)
         }
         (None, None) => unreachable!("called with values"),

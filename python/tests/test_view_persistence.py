@@ -414,6 +414,65 @@ def test_lower_star_cycles_and_refusals(tmp_path):
         gmap.persistence(p, vertex_values={1: 0, 2: 0, 3: 0})
 
 
+def test_open_a_valued_facets_file(tmp_path):
+    # mixed dimensions, the edge first: the complex lists the triangle first, and each value
+    # stays with its own facet (the file's lines)
+    p = tmp_path / "valued.facets"
+    p.write_text("# a path and a triangle\n0 1 : 0\n2 4 : 0\n0 2 3 : 1\n")
+    sc = gmap.open(p)
+    # the registry's class for a .facets file, valued or not
+    assert type(sc) is gmap.SimplicialComplex
+    assert sc.facets == [[0, 2, 3], [0, 1], [2, 4]]
+    assert sc.facet_values == [1.0, 0.0, 0.0]
+    # GUDHI's SimplexTree of these facets and values (insert: a face takes the minimum):
+    # the vertices 0, 1, 2, 4 and the edges 01, 24 at 0, vertex 3 and the rest at 1; two
+    # components at 0, joined at 1
+    want = Counter({(0, 0.0, float("inf")): 1, (0, 0.0, 1.0): 1})
+    assert ours(sc) == want
+    assert ours(p) == want
+    assert ours([[0, 1], [2, 4], [0, 2, 3]], facet_values=[0, 0, 1]) == want
+    assert gudhi_or(want, [[0, 1], [2, 4], [0, 2, 3]], [0, 0, 1]) == want
+    # its groups are the complex's (one component, no loop)
+    assert gmap.homology(sc).betti == [1, 0, 0]
+    # the values go along: the constructor takes them in the order given, pickle keeps them
+    made = gmap.SimplicialComplex([[0, 1], [2, 4], [0, 2, 3]], facet_values=[0, 0, 1])
+    assert made.facet_values == [1.0, 0.0, 0.0]
+    assert ours(made) == want
+    import pickle
+
+    again = pickle.loads(pickle.dumps(sc))
+    assert again.facets == sc.facets and again.facet_values == sc.facet_values
+    # without values the file opens as before, and persistence asks for values
+    q = tmp_path / "plain.facets"
+    q.write_text("0 1\n1 2\n")
+    assert gmap.open(q).facet_values is None
+    with pytest.raises(gmap.GmapError, match="needs values"):
+        gmap.persistence(gmap.open(q))
+    # one filtration at a time; a count of values other than the facets' is refused
+    with pytest.raises(gmap.GmapError, match="give one filtration"):
+        gmap.persistence(sc, facet_values=[0, 0, 0])
+    with pytest.raises(gmap.GmapError, match="give one filtration"):
+        gmap.persistence(sc, vertex_values={v: 0.0 for v in range(5)})
+    with pytest.raises(gmap.InputError, match="2 facet_values for 3 facets"):
+        gmap.SimplicialComplex([[0, 1], [2, 4], [0, 2, 3]], facet_values=[0, 0])
+    with pytest.raises(gmap.InputError, match="NaN"):
+        gmap.SimplicialComplex([[0, 1]], facet_values=[float("nan")])
+    # a facet without a value in a valued file: the reader names its line
+    r = tmp_path / "half.facets"
+    r.write_text("0 1 : 0\n1 2\n")
+    with pytest.raises(gmap.GmapError, match="line 2"):
+        gmap.open(r)
+
+
+def gudhi_or(want, facets, values):
+    """GUDHI's diagram of `facets` with `values` when GUDHI is installed, else `want`."""
+    try:
+        import gudhi  # noqa: F401
+    except ImportError:
+        return want
+    return gudhi_simplex_tree(facets, 2, facet_values=values)
+
+
 def test_persistence_of_an_architectural_complex_by_its_labels():
     path = DATA / "persistence" / "court_valued.json"
     x = gmap.open(path)
