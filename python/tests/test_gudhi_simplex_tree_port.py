@@ -203,3 +203,14 @@ def test_integer_homology_with_torsion():
     h = st.integer_homology()
     assert h.betti[:2] == [1, 0]
     assert list(h.torsion[1]) == [2]
+
+
+def test_expansion_to_a_huge_dimension_ends_at_once():
+    # a hostile max_dim (issue 47's hostile run): the flag complex of a triangle and a
+    # pendant edge has dimension 2 whatever the bound
+    st = SimplexTree()
+    for s in ([0, 1], [1, 2], [0, 2], [2, 3]):
+        st.insert(s)
+    st.expansion(2**63)
+    assert st.dimension() == 2
+    assert st.num_simplices() == 9

@@ -436,7 +436,11 @@ class SimplexTree(_Queries):
 
         # dimension by dimension: every clique's faces are there before it
         level = [s for s in self._f if len(s) == 2]
-        for _ in range(2, max_dim + 1):
+        # a clique has at most one vertex per vertex of the graph: past that, or once a
+        # dimension adds nothing, no larger simplex can come (a huge max_dim ends at once)
+        for _ in range(2, min(max_dim, len(adj)) + 1):
+            if not level:
+                break
             nxt = []
             for s in sorted(level):
                 common = set.intersection(*(adj.get(v, set()) for v in s))
