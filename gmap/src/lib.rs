@@ -87,6 +87,7 @@ pub mod distributed;
 mod error;
 pub mod formats;
 mod graph;
+pub mod homotopy;
 pub mod info;
 pub mod input;
 mod open;
