@@ -271,3 +271,111 @@ fn not_a_path_is_refused() {
     let cube = gmap::ops::build::cube(3).unwrap();
     assert!(Paths::new(&Input::Map(MapInput::new(cube))).is_err());
 }
+
+mod props {
+    use super::*;
+    use gmap::core::{Dart, GMap};
+    use gmap::ops::euler::random::{random_steps, Operator};
+    use gmap::ops::rng::SplitMix64;
+    use proptest::prelude::*;
+
+    /// A random dart at the vertex of `d`.
+    fn at_vertex(map: &DenseMap, d: Dart, rng: &mut SplitMix64) -> Dart {
+        let ds = map.cell_darts(d, 0);
+        ds[(rng.next_u64() % ds.len() as u64) as usize]
+    }
+
+    /// A random walk of `len` steps from the vertex of `d`.
+    fn walk(map: &DenseMap, d: Dart, len: usize, rng: &mut SplitMix64) -> Vec<Dart> {
+        let mut w = Vec::new();
+        let mut at = d;
+        for _ in 0..len {
+            let x = at_vertex(map, at, rng);
+            w.push(x);
+            at = map.alpha(x, 0);
+        }
+        w
+    }
+
+    /// The walk back: each step reversed, last first.
+    fn reverse(map: &DenseMap, w: &[Dart]) -> Vec<Dart> {
+        w.iter().rev().map(|&x| map.alpha(x, 0)).collect()
+    }
+
+    /// h ∂f h⁻¹ from the vertex of `d`: a walk, the boundary of a face at its end, back.
+    fn lasso(map: &DenseMap, d: Dart, len: usize, rng: &mut SplitMix64) -> Vec<Dart> {
+        let h = walk(map, d, len, rng);
+        let end = h.last().map_or(d, |&x| map.alpha(x, 0));
+        let y0 = at_vertex(map, end, rng);
+        let mut l = h.clone();
+        let mut y = y0;
+        loop {
+            l.push(y);
+            y = map.alpha(map.alpha(y, 0), 1);
+            if y == y0 {
+                break;
+            }
+        }
+        l.extend(reverse(map, &h));
+        l
+    }
+
+    fn ids(w: &[Dart]) -> PathSpec {
+        PathSpec::Darts(w.iter().map(|d| u64::from(d.get())).collect())
+    }
+
+    /// The surfaces: a torus, a Klein bottle, CGAL's double torus, each after `steps`
+    /// random Euler operators that keep the surface (vertex and edge insertions, removals
+    /// and contractions keeping homology).
+    fn surface(which: usize, steps: usize, seed: u64) -> DenseMap {
+        let base = match which {
+            0 => gmap::ops::build::grid(&[5, 4], &[true, true]).unwrap(),
+            1 => gmap::core::examples::klein_bottle(),
+            _ => gmap::open(data("double-torus-example.off")).unwrap().to_map().unwrap().into_owned(),
+        };
+        let (mut g, _) = GMap::from_dense(&base);
+        let mut rng = SplitMix64::new(seed);
+        let ops = [Operator::InsertVertex, Operator::InsertEdge, Operator::RemoveCell, Operator::ContractCell];
+        random_steps(&mut g, steps, &ops, &mut rng);
+        g.to_dense_with_ids().0
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+        /// The shortest non-contractible cycle c is not contractible; c times a lasso is
+        /// homotopic to c with fixed ends and not contractible; a lasso, twice, and a walk
+        /// there and back are contractible; c rotated is never found not freely homotopic
+        /// to c (it is, or the answer is refused).
+        #[test]
+        fn homotopic_paths_found_so(which in 0usize..3, steps in 0usize..30, seed in any::<u64>(), len in 0usize..12) {
+            let map = surface(which, steps, seed);
+            let Ok(paths) = Paths::new(&Input::Map(MapInput::new(map.clone()))) else {
+                return Err(TestCaseError::reject("not a surface after the operators"));
+            };
+            let s = gmap::algebra::curves::Surface::of_map(&map, &gmap::algebra::curves::Weights::Unit).unwrap();
+            let c = gmap::algebra::curves::shortest_non_contractible_cycle(&s).unwrap().unwrap();
+            let c = c.darts(&s, &map);
+            let mut rng = SplitMix64::new(seed ^ 0x48);
+            prop_assert!(!paths.is_contractible(&ids(&c)).unwrap());
+            let l = lasso(&map, c[0], len, &mut rng);
+            prop_assert!(paths.is_contractible(&ids(&l)).unwrap());
+            let mut ll = l.clone();
+            ll.extend_from_slice(&l);
+            prop_assert!(paths.is_contractible(&ids(&ll)).unwrap());
+            let mut cl = c.clone();
+            cl.extend_from_slice(&l);
+            prop_assert!(!paths.is_contractible(&ids(&cl)).unwrap());
+            prop_assert!(paths.are_homotopic_with_fixed_endpoints(&ids(&cl), &ids(&c)).unwrap());
+            let w = walk(&map, c[0], len + 1, &mut rng);
+            let mut back = w.clone();
+            back.extend(reverse(&map, &w));
+            prop_assert!(paths.is_contractible(&ids(&back)).unwrap());
+            let k = (seed as usize) % c.len();
+            let mut rot = c[k..].to_vec();
+            rot.extend_from_slice(&c[..k]);
+            prop_assert!(paths.are_freely_homotopic(&ids(&c), &ids(&rot)).unwrap_or(true));
+            prop_assert!(paths.are_freely_homotopic(&ids(&cl), &ids(&c)).unwrap_or(true));
+        }
+    }
+}
