@@ -340,9 +340,13 @@ impl From<gmap_homology::curves::CurveError> for Error {
             C::OpenCell { dart, .. } => (ErrorKind::Precondition, Some(Item::Dart(u64::from(*dart)))),
             C::Boundary { dart, .. } => (ErrorKind::Precondition, Some(Item::Cell { dim: 1, dart: u64::from(*dart) })),
             C::NotAPath { dart, .. } => (ErrorKind::Usage, Some(Item::Dart(u64::from(*dart)))),
-            C::WeightCount { .. } | C::BadWeight { .. } | C::NoSuchVertex { .. } | C::NoPoint { .. } => {
-                (ErrorKind::Usage, None)
-            }
+            C::WeightCount { .. }
+            | C::BadWeight { .. }
+            | C::NoSuchVertex { .. }
+            | C::NoPoint { .. }
+            | C::NoEdge { .. }
+            | C::NotClosed { .. }
+            | C::EndsDiffer { .. } => (ErrorKind::Usage, None),
             C::TooLarge { .. } => (ErrorKind::Limit, None),
             _ => (ErrorKind::Precondition, None),
         };

@@ -90,6 +90,7 @@ pub mod dual;
 mod error;
 pub mod formats;
 mod graph;
+pub mod homotopy;
 pub mod info;
 pub mod input;
 mod open;

@@ -362,6 +362,24 @@ def edge_width(x: Union[GMap, str, "os.PathLike[str]"]) -> Optional[Dict[str, An
 def face_width(x: Union[GMap, str, "os.PathLike[str]"]) -> Optional[Dict[str, Any]]:
     """The face width of a closed surface: `width`, `face_darts`, `vertex_darts`."""
 
+def is_contractible(x: Union[GMap, str, "os.PathLike[str]"], path: Sequence[int], *, vertices: bool = False) -> bool:
+    """Whether a closed path (darts, or vertices with vertices=True) is contractible."""
+
+def are_freely_homotopic(
+    x: Union[GMap, str, "os.PathLike[str]"], p: Sequence[int], q: Sequence[int], *, vertices: bool = False
+) -> bool:
+    """Whether two closed paths are freely homotopic (PreconditionError where undecided)."""
+
+def are_homotopic_with_fixed_endpoints(
+    x: Union[GMap, str, "os.PathLike[str]"], p: Sequence[int], q: Sequence[int], *, vertices: bool = False
+) -> bool:
+    """Whether two paths with the same ends are homotopic with their ends fixed."""
+
+def is_homotopic_to_simple_cycle(
+    x: Union[GMap, str, "os.PathLike[str]"], path: Sequence[int], *, vertices: bool = False
+) -> bool:
+    """Whether a closed path is homotopic to a simple closed curve (PreconditionError where undecided)."""
+
 Cycle = Tuple[Union[npt.NDArray[np.int64], List[Tuple[int, ...]]], npt.NDArray[np.int64]]
 
 def persistence(

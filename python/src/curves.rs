@@ -113,3 +113,83 @@ pub fn face_width<'py>(py: Python<'py>, x: &Bound<'py, PyAny>) -> PyResult<Optio
     d.set_item("vertex_darts", w.vertices.clone())?;
     Ok(Some(d))
 }
+
+/// A path given as a list of numbers: darts, or vertices when `vertices`.
+fn path_spec(p: Vec<u64>, vertices: bool) -> gmap::homotopy::PathSpec {
+    if vertices {
+        gmap::homotopy::PathSpec::Vertices(p)
+    } else {
+        gmap::homotopy::PathSpec::Darts(p)
+    }
+}
+
+/// The surface `x` preprocessed for homotopy tests.
+fn paths_of(py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<gmap::homotopy::Paths> {
+    let input = input_of(x)?;
+    Ok(py.allow_threads(|| gmap::homotopy::Paths::new(&input)).map_err(Failure::from)?)
+}
+
+/// is_contractible(x, path, *, vertices=False)
+///
+/// Whether the closed path `path` on the surface `x` (a GMap of dimension 2, or the path of
+/// a file of one) is contractible. `path`: for each step, a dart of its edge at the vertex
+/// it leaves; or, with vertices=True, the vertices passed (numbered as the map numbers
+/// them), consecutive ones joined by exactly one edge. A sequence that is not a path, or a
+/// path that is not closed, raises naming the step.
+#[pyfunction]
+#[pyo3(signature = (x, path, *, vertices = false))]
+pub fn is_contractible(py: Python<'_>, x: &Bound<'_, PyAny>, path: Vec<u64>, vertices: bool) -> PyResult<bool> {
+    let s = paths_of(py, x)?;
+    Ok(s.is_contractible(&path_spec(path, vertices)).map_err(Failure::from)?)
+}
+
+/// are_freely_homotopic(x, p, q, *, vertices=False)
+///
+/// Whether the closed paths `p` and `q` (as for is_contractible) are freely homotopic.
+/// Raises PreconditionError where this implementation cannot decide (docs/CURVES.md).
+#[pyfunction]
+#[pyo3(signature = (x, p, q, *, vertices = false))]
+pub fn are_freely_homotopic(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    p: Vec<u64>,
+    q: Vec<u64>,
+    vertices: bool,
+) -> PyResult<bool> {
+    let s = paths_of(py, x)?;
+    Ok(s.are_freely_homotopic(&path_spec(p, vertices), &path_spec(q, vertices)).map_err(Failure::from)?)
+}
+
+/// are_homotopic_with_fixed_endpoints(x, p, q, *, vertices=False)
+///
+/// Whether the paths `p` and `q`, with the same start and end, are homotopic with their
+/// ends fixed.
+#[pyfunction]
+#[pyo3(signature = (x, p, q, *, vertices = false))]
+pub fn are_homotopic_with_fixed_endpoints(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    p: Vec<u64>,
+    q: Vec<u64>,
+    vertices: bool,
+) -> PyResult<bool> {
+    let s = paths_of(py, x)?;
+    Ok(s.are_homotopic_with_fixed_endpoints(&path_spec(p, vertices), &path_spec(q, vertices)).map_err(Failure::from)?)
+}
+
+/// is_homotopic_to_simple_cycle(x, path, *, vertices=False)
+///
+/// Whether the closed path `path` is homotopic to a simple closed curve; decided on the
+/// sphere, the projective plane, the torus and for contractible paths, raises
+/// PreconditionError otherwise.
+#[pyfunction]
+#[pyo3(signature = (x, path, *, vertices = false))]
+pub fn is_homotopic_to_simple_cycle(
+    py: Python<'_>,
+    x: &Bound<'_, PyAny>,
+    path: Vec<u64>,
+    vertices: bool,
+) -> PyResult<bool> {
+    let s = paths_of(py, x)?;
+    Ok(s.is_homotopic_to_simple_cycle(&path_spec(path, vertices)).map_err(Failure::from)?)
+}

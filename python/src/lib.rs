@@ -598,6 +598,10 @@ fn _gmap(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(curves::shortest_non_contractible_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(curves::edge_width, m)?)?;
     m.add_function(wrap_pyfunction!(curves::face_width, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::is_contractible, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::are_freely_homotopic, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::are_homotopic_with_fixed_endpoints, m)?)?;
+    m.add_function(wrap_pyfunction!(curves::is_homotopic_to_simple_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(open, m)?)?;
     m.add_function(wrap_pyfunction!(persist::persistence, m)?)?;
     m.add_function(wrap_pyfunction!(gudhi::_image_pairs, m)?)?;

@@ -46,3 +46,32 @@ def test_torus_grids(a, b):
     assert lengths == sorted([a, b])
     today = sorted(len(g.cells) for g in gmap.homology(t, field=2, generators=True).generators if g.dim == 1)
     assert all(s <= x for s, x in zip(lengths, today))
+
+
+def test_homotopy_of_paths_on_cgals_three_torus():
+    # the edge width's cycle is not contractible, twice neither; a rotation of it is freely
+    # homotopic to it but, based elsewhere, not comparable with its ends fixed
+    f = os.path.join(DATA, "3torus.off")
+    c = gmap.edge_width(f)["darts"]
+    assert gmap.is_contractible(f, c) is False
+    assert gmap.is_contractible(f, c + c) is False
+    assert gmap.are_freely_homotopic(f, c, c[1:] + c[:1]) is True
+    assert gmap.are_homotopic_with_fixed_endpoints(f, c, c) is True
+    with pytest.raises(gmap.InputError):
+        gmap.are_homotopic_with_fixed_endpoints(f, c, c[1:] + c[:1])
+    # genus 3: simplicity of a non-contractible path is not decided here
+    with pytest.raises(gmap.PreconditionError):
+        gmap.is_homotopic_to_simple_cycle(f, c)
+    # not a path: the step is named
+    with pytest.raises(gmap.InputError, match="step 1"):
+        gmap.is_contractible(f, [c[0], c[0]])
+
+
+def test_homotopy_on_a_torus_by_vertices():
+    t = gmap.build.grid((4, 3), periodic=[True, True])
+    c = gmap.edge_width(t)
+    loop = c["darts"]
+    assert gmap.is_contractible(t, loop) is False
+    assert gmap.is_homotopic_to_simple_cycle(t, loop) is True
+    assert gmap.is_homotopic_to_simple_cycle(t, loop + loop) is False
+    assert gmap.is_contractible(t, []) is True

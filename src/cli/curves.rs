@@ -1,9 +1,14 @@
 //! `gmap curves shortest|edge-width|face-width FILE`: curves on a surface (facade
-//! `gmap::curves`).
+//! `gmap::curves`); `contractible|freely-homotopic|homotopic|simple FILE PATH…`: homotopy
+//! tests of paths (facade `gmap::homotopy`, in `curves_paths.rs`).
 
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
+
+#[path = "curves_paths.rs"]
+mod paths;
+use paths::{OnePath, Question, TwoPaths};
 
 /// What `gmap curves` computes.
 #[derive(Subcommand, Debug)]
@@ -15,6 +20,14 @@ pub enum CurvesCommand {
     /// The face width of a closed surface: the fewest faces a non-contractible closed curve
     /// meets, passing the graph at vertices only.
     FaceWidth(CurvesFile),
+    /// Whether a closed path is contractible.
+    Contractible(OnePath),
+    /// Whether two closed paths are freely homotopic.
+    FreelyHomotopic(TwoPaths),
+    /// Whether two paths with the same ends are homotopic with their ends fixed.
+    Homotopic(TwoPaths),
+    /// Whether a closed path is homotopic to a simple closed curve.
+    Simple(OnePath),
 }
 
 #[derive(Args, Debug)]
@@ -79,6 +92,10 @@ pub fn run(a: CurvesArgs) -> gmap::Result<String> {
             let c = gmap::curves::edge_width(&open(&f)?)?;
             Ok(curve_text(c.as_ref(), f.json).unwrap_or_else(|| none(f.json, "edge width")))
         }
+        CurvesCommand::Contractible(p) => paths::one(Question::Contractible, &p),
+        CurvesCommand::Simple(p) => paths::one(Question::Simple, &p),
+        CurvesCommand::FreelyHomotopic(p) => paths::two(Question::Free, &p),
+        CurvesCommand::Homotopic(p) => paths::two(Question::Fixed, &p),
         CurvesCommand::FaceWidth(f) => Ok(match gmap::curves::face_width(&open(&f)?)? {
             Some(w) if f.json => format!("{}\n", w.to_json()),
             Some(w) => w.to_text(),

@@ -100,4 +100,56 @@ pub enum CurveError {
         /// why it does not follow
         reason: &'static str,
     },
+    /// A map of several components (or none) where one connected surface is needed.
+    #[error("the map has {components} components: homotopy tests need one connected surface")]
+    Disconnected {
+        /// the number of components
+        components: usize,
+    },
+    /// A path that does not come back to its start where a closed path is needed.
+    #[error(
+        "the path starts at vertex {start} and ends at vertex {end} (by their smallest darts): a closed path is needed"
+    )]
+    NotClosed {
+        /// the start vertex's smallest dart
+        start: u32,
+        /// the end vertex's smallest dart
+        end: u32,
+    },
+    /// Two paths whose ends differ, compared with their ends fixed.
+    #[error("the paths run from vertex {} to {} and from {} to {} (by their smallest darts): homotopy with fixed ends needs the same ends", p[0], p[1], q[0], q[1])]
+    EndsDiffer {
+        /// the first path's start and end vertices
+        p: [u32; 2],
+        /// the second path's
+        q: [u32; 2],
+    },
+    /// Two vertices of a path joined by no edge or by several.
+    #[error("step {step}: {edges} edges join vertex {from} to vertex {to}; a step by vertices needs exactly one (give darts)")]
+    NoEdge {
+        /// the index of the step
+        step: usize,
+        /// its start vertex (index)
+        from: u32,
+        /// its end vertex (index)
+        to: u32,
+        /// the number of edges joining them
+        edges: usize,
+    },
+    /// A question this implementation cannot settle on this input, refused rather than
+    /// guessed.
+    #[error("{what}: not decided here ({reason})")]
+    Undecided {
+        /// the question
+        what: &'static str,
+        /// why
+        reason: String,
+    },
+    /// The fundamental group's presentation came out other than the surface's topology
+    /// says (a defect, reported rather than used).
+    #[error("the presentation of the fundamental group is inconsistent: {reason}")]
+    Presentation {
+        /// what was found
+        reason: String,
+    },
 }

@@ -8,6 +8,9 @@
 //!   non-orientable surfaces, with or without boundary.
 //! * [`basis`]: a shortest basis of `H_1` over `Z/2` of any chain complex whose 1-cells
 //!   are edges (annotations, Horton candidates, greedy), in any dimension.
+//! * [`homotopy`]: homotopy tests of paths ([`Homotopy`], [`SurfacePath`]) on the
+//!   fundamental group's tree–cotree presentation, with [`words`]: free reduction, Dehn's
+//!   algorithm.
 //!
 //! ```
 //! use gmap_homology::curves::{edge_width, face_width};
@@ -20,13 +23,16 @@
 pub mod basis;
 pub mod cycles;
 pub mod error;
+pub mod homotopy;
 pub mod surface;
 pub mod tree;
+pub mod words;
 
 pub use basis::{annotations, shortest_basis, Annotations, BasisCycle};
 pub use cycles::{
     edge_width, face_width, shortest_non_contractible_cycle, shortest_non_contractible_cycle_through, Cycle, FaceWidth,
 };
 pub use error::CurveError;
+pub use homotopy::{Homotopy, SurfaceKind, SurfacePath};
 pub use surface::{Surface, Weights};
 pub use tree::{Graph, Tree};
