@@ -411,6 +411,15 @@ pub enum AttributeDefect {
         /// a dart of another cell holding it
         other: DartId,
     },
+    /// Values given in bulk ([`GMap::set_attributes_by_ids`](crate::GMap::set_attributes_by_ids),
+    /// [`GMap::set_points_by_ids`](crate::GMap::set_points_by_ids)) that cannot be set as given.
+    #[error("{dim}-cell values by dart: {reason}")]
+    BadIds {
+        /// the dimension
+        dim: usize,
+        /// what is wrong
+        reason: String,
+    },
     /// A dart holds a handle to a freed value.
     #[error("dart {dart:?} holds a freed {dim}-attribute")]
     Dangling {

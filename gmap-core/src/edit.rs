@@ -943,6 +943,7 @@ impl<A: Attributes> MapView for GMap<A> {
 }
 
 mod attributes;
+mod bulk;
 mod marking;
 
 #[cfg(test)]
