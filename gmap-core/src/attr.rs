@@ -226,6 +226,12 @@ impl<T> Cells<T> {
             .filter_map(|(k, e)| e.value.as_ref().map(|v| (AttrId { index: k as u32, generation: e.generation }, v)))
     }
 
+    /// The number of slab entries: every handle is below it.
+    #[inline]
+    pub(crate) fn slab_len(&self) -> usize {
+        self.entries.len()
+    }
+
     /// The handle held by dart index `k` (`NONE` when it has none).
     #[inline]
     pub(crate) fn handle(&self, k: usize) -> u32 {
