@@ -23,9 +23,9 @@ pub use crate::darts::DartId;
 use crate::darts::{dart_index, DartStore};
 use crate::dense::{DenseMap, Partition};
 use crate::error::{BoundaryDefect, OrientationConflict};
-use crate::ids::Point;
 #[cfg(test)]
 use crate::ids::Dart;
+use crate::ids::Point;
 use crate::map_view::MapView;
 use crate::marks::{MarkId, Marks};
 use bitvec::vec::BitVec;

@@ -240,9 +240,7 @@ impl Mesh {
         let mut total = 0u64;
         for c in self.cells.iter().filter(|c| c.kind.dim() == top) {
             let darts = match top {
-                3 if c.kind != CellKind::Polyhedron => {
-                    c.kind.faces().iter().map(|f| 2 * f.len() as u64).sum::<u64>()
-                }
+                3 if c.kind != CellKind::Polyhedron => c.kind.faces().iter().map(|f| 2 * f.len() as u64).sum::<u64>(),
                 3 => volume_faces(c).iter().try_fold(0u64, |a, f| a.checked_add(2 * f.len() as u64))?,
                 2 => 2 * c.nodes.len() as u64,
                 1 => 2,
@@ -278,7 +276,8 @@ impl Mesh {
             for (t, &i) in tops.iter().enumerate() {
                 cell_dart[i] = map.dart_at(first[t] as usize);
             }
-            let face_of = |vs: &[u32]| volumes::face(self, &tops, &first, &faces, vs).map(|(c, d)| (c, FaceDart::Index(d)));
+            let face_of =
+                |vs: &[u32]| volumes::face(self, &tops, &first, &faces, vs).map(|(c, d)| (c, FaceDart::Index(d)));
             self.label(&mut map, &vertex, top, &mut cell_dart, &face_of, Some((&tops, &first)))?;
             return Ok(map);
         }
@@ -459,7 +458,8 @@ impl Mesh {
         if let (Some((tops, first)), 3) = (blocks, top) {
             // the top cells' labels by one id per dart: top cell t holds the darts from
             // first[t] up to first[t + 1]
-            let values: Vec<Option<Labels>> = tops.iter().map(|&i| Some(labels_of(i)).filter(|l| !l.is_empty())).collect();
+            let values: Vec<Option<Labels>> =
+                tops.iter().map(|&i| Some(labels_of(i)).filter(|l| !l.is_empty())).collect();
             if values.iter().any(Option::is_some) {
                 let mut ids = vec![u32::MAX; g.index_bound()];
                 for t in 0..tops.len() {
