@@ -478,9 +478,9 @@ mod tests {
         let (_, labels, _) = to_dense_labels(&g);
         let by_dim = labels_by_dimension(&g);
         assert_eq!(by_dim.len(), 3);
-        for i in 0..=2 {
+        for (i, got) in by_dim.iter().enumerate() {
             let want: Vec<&Labels> = labels.of[i].iter().filter(|l| !l.is_empty()).collect();
-            assert_eq!(by_dim[i], want, "dimension {i}");
+            assert_eq!(*got, want, "dimension {i}");
         }
         assert_eq!(by_dim[1].len(), 2);
         assert_eq!(by_dim[1][0].get("name"), Some(&LabelValue::Text("first".into())));

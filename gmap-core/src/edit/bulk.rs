@@ -150,7 +150,8 @@ mod tests {
             "1-cell values by dart: 4 ids for 9 dart indices"
         );
         assert_eq!(h.attribute_count::<1>(), 0);
-        let mut v: GMap<((), Cells<u8>, Cells<u8>, Cells<u8>)> = GMap::from_dense_rows(&m);
+        type Volumes = ((), Cells<u8>, Cells<u8>, Cells<u8>);
+        let mut v: GMap<Volumes> = GMap::from_dense_rows(&m);
         assert_eq!(
             v.set_attributes_by_ids::<3>(&face, vec![Some(1)]).unwrap_err().to_string(),
             "3-cell values by dart: there are no 3-cells in a map of dimension 2"

@@ -372,7 +372,7 @@ impl Mesh {
         vertex: &[u32],
         top: usize,
         cell_dart: &mut [Option<DartId>],
-        face_of: &dyn Fn(&[u32]) -> Option<(SmallVec<[u32; 4]>, FaceDart)>,
+        face_of: &FaceLookup<'_>,
         blocks: Option<(&[usize], &[u32])>,
     ) -> Result<(), MeshError> {
         // the map's dart of each point and of each edge, by their points
@@ -495,6 +495,9 @@ impl Mesh {
         Ok(())
     }
 }
+
+/// Finds a face of the top cells by its vertices: its cycle and its dart.
+type FaceLookup<'a> = dyn Fn(&[u32]) -> Option<(SmallVec<[u32; 4]>, FaceDart)> + 'a;
 
 /// The dart of a face found by its vertices: a handle, or a dart index.
 pub(crate) enum FaceDart {
