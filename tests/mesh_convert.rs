@@ -220,3 +220,35 @@ fn a_digon_face_is_refused_not_written() {
         assert!(stderr(&o).contains("a face of 2 corners"), "{}", stderr(&o));
     }
 }
+
+#[test]
+fn convert_binary_writes_a_binary_msh_that_reads_back_the_same() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["tet_cube.msh", "mixed.vtu", "hex_hollow.vtu"] {
+        let src = data(name);
+        let (m, l) = read(&src, dir.path());
+        let (text, bin) = (dir.path().join("a.msh"), dir.path().join("b.msh"));
+        convert(&src, &text);
+        let o = gmap(&["convert", "--binary", p(&src), p(&bin)]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let bytes = std::fs::read(&bin).unwrap();
+        // Gmsh's binary header: version 4.1, file type 1, data size 8, then the binary 1
+        assert!(bytes.starts_with(b"$MeshFormat\n4.1 1 8\n\x01\0\0\0"), "{name}: {:?}", &bytes[..24.min(bytes.len())]);
+        assert!(std::str::from_utf8(&bytes).is_err(), "{name}: binary data");
+        assert_ne!(bytes, std::fs::read(&text).unwrap());
+        let (m2, l2) = read(&bin, dir.path());
+        assert_eq!(m2.cell_counts(), m.cell_counts(), "{name}");
+        assert!(gmap_ops::iso::are_isomorphic(&m, &m2), "{name}");
+        let had_geometrical = l.of.iter().flatten().any(|x| x.get("gmsh:geometrical").is_some());
+        assert_eq!(label_sets(&l2, true, had_geometrical), label_sets(&l, true, had_geometrical), "{name}");
+        // the binary file is the text file's mesh: both read back as the same labels
+        let (_, l3) = read(&text, dir.path());
+        assert_eq!(label_sets(&l2, true, true), label_sets(&l3, true, true), "{name}");
+    }
+    // other formats have no binary form here: refused, nothing written
+    let out = dir.path().join("c.vtu");
+    let o = gmap(&["convert", "--binary", p(&data("tet_cube.msh")), p(&out)]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("--binary writes .msh only, not '.vtu'"), "{}", stderr(&o));
+    assert!(!out.exists());
+}

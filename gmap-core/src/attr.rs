@@ -226,6 +226,12 @@ impl<T> Cells<T> {
             .filter_map(|(k, e)| e.value.as_ref().map(|v| (AttrId { index: k as u32, generation: e.generation }, v)))
     }
 
+    /// The number of slab entries: every handle is below it.
+    #[inline]
+    pub(crate) fn slab_len(&self) -> usize {
+        self.entries.len()
+    }
+
     /// The handle held by dart index `k` (`NONE` when it has none).
     #[inline]
     pub(crate) fn handle(&self, k: usize) -> u32 {
@@ -410,6 +416,15 @@ pub enum AttributeDefect {
         dart: DartId,
         /// a dart of another cell holding it
         other: DartId,
+    },
+    /// Values given in bulk ([`GMap::set_attributes_by_ids`](crate::GMap::set_attributes_by_ids),
+    /// [`GMap::set_points_by_ids`](crate::GMap::set_points_by_ids)) that cannot be set as given.
+    #[error("{dim}-cell values by dart: {reason}")]
+    BadIds {
+        /// the dimension
+        dim: usize,
+        /// what is wrong
+        reason: String,
     },
     /// A dart holds a handle to a freed value.
     #[error("dart {dart:?} holds a freed {dim}-attribute")]

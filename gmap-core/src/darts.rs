@@ -135,6 +135,18 @@ impl DartStore {
         first
     }
 
+    /// Whether slot `k` (below [`DartStore::bound`]) holds a live dart.
+    #[inline]
+    pub(crate) fn slot_live(&self, k: usize) -> bool {
+        self.rows[k * self.stride] & 1 == 1
+    }
+
+    /// Sets `alpha_i` of slot `k` to slot `e` (one side only), by slot number.
+    #[inline]
+    pub(crate) fn set_slot_alpha(&mut self, k: usize, i: usize, e: usize) {
+        self.rows[k * self.stride + 1 + i] = e as u32;
+    }
+
     /// Links slots `a` and `b` by `alpha_i` (both sides), by slot number.
     #[inline]
     pub(crate) fn link_slots(&mut self, a: usize, b: usize, i: usize) {

@@ -104,8 +104,15 @@ pub struct OrientedCells3d {
 pub struct DenseMap {
     dim: usize,
     alpha: Vec<u32>,
-    points: Vec<Option<Point>>,
+    /// the index in `table` of each dart's point (`NO_POINT`: none); empty while no dart
+    /// has a point. Darts of one vertex share an index when the map is made from a
+    /// [`crate::GMap`]: 4 bytes a dart and 24 a vertex, not 32 bytes a dart.
+    points: Vec<u32>,
+    table: Vec<Point>,
 }
+
+/// The point index of a dart without a point.
+const NO_POINT: u32 = u32::MAX;
 
 /// Two maps are equal when they have the same dimension, the same involutions dart by dart
 /// and the same point on every dart (a map without points equals one whose points are all
@@ -141,7 +148,7 @@ impl DenseMap {
         for d in 0..darts {
             alpha.extend(std::iter::repeat_n(d as u32, w));
         }
-        Ok(DenseMap { dim, alpha, points: Vec::new() })
+        Ok(DenseMap { dim, alpha, points: Vec::new(), table: Vec::new() })
     }
 
     /// A map from its rows, `alpha[d * (dim + 1) + i] = alpha_i(d)`, validated (BO Def. 1).
@@ -167,7 +174,7 @@ impl DenseMap {
         if darts >= u32::MAX as usize {
             return Err(ValidityError::TooManyDarts(darts));
         }
-        Ok(DenseMap { dim, alpha, points: Vec::new() })
+        Ok(DenseMap { dim, alpha, points: Vec::new(), table: Vec::new() })
     }
 
     /// The dimension n.
@@ -300,7 +307,7 @@ impl DenseMap {
             }
         }
         if !self.points.is_empty() {
-            self.points.resize(first + k, None);
+            self.points.resize(first + k, NO_POINT);
         }
         Ok(Dart::new(first as u32))
     }
@@ -362,12 +369,12 @@ impl DenseMap {
 
     /// Whether any dart carries a point.
     pub fn has_points(&self) -> bool {
-        self.points.iter().any(Option::is_some)
+        self.points.iter().any(|&k| k != NO_POINT)
     }
 
     /// The point attached to dart `d`, if any.
     pub fn point(&self, d: Dart) -> Option<Point> {
-        self.points.get(d.index()).copied().flatten()
+        self.points.get(d.index()).and_then(|&k| self.table.get(k as usize)).copied()
     }
 
     /// Attaches a point to dart `d` (the position of its 0-cell).
@@ -383,9 +390,24 @@ impl DenseMap {
             if p.is_none() {
                 return;
             }
-            self.points.resize(self.dart_count(), None);
+            self.points.resize(self.dart_count(), NO_POINT);
         }
-        self.points[d.index()] = p;
+        self.points[d.index()] = match p {
+            Some(p) => {
+                self.table.push(p);
+                (self.table.len() - 1) as u32
+            }
+            None => NO_POINT,
+        };
+    }
+
+    /// Gives the darts their points from a table: the dart `d` takes `table[index[d]]`
+    /// (`u32::MAX`: no point); darts may share an index. Crate-internal: the indices are the
+    /// caller's (in range, one per dart).
+    pub(crate) fn set_point_table(&mut self, index: Vec<u32>, table: Vec<Point>) {
+        debug_assert_eq!(index.len(), self.dart_count());
+        self.points = index;
+        self.table = table;
     }
 
     /// The point of the 0-cell of `d`: the first point found on a dart of that vertex.
@@ -781,7 +803,7 @@ impl DenseMap {
         for row in self.alpha.chunks_exact(w) {
             alpha.extend(row.iter().rev());
         }
-        DenseMap { dim: self.dim, alpha, points: Vec::new() }
+        DenseMap { dim: self.dim, alpha, points: Vec::new(), table: Vec::new() }
     }
 
     /// The same map seen in dimension `dim >= self.dim()`: every new involution
@@ -798,7 +820,7 @@ impl DenseMap {
             alpha.extend_from_slice(row);
             alpha.extend(std::iter::repeat_n(d as u32, dim - self.dim));
         }
-        Some(DenseMap { dim, alpha, points: self.points.clone() })
+        Some(DenseMap { dim, alpha, points: self.points.clone(), table: self.table.clone() })
     }
 
     /// Renumbers the darts: dart `d` becomes `perm[d]`. `perm` must be a permutation of `0..N`.
@@ -815,11 +837,11 @@ impl DenseMap {
         }
         let mut points = Vec::new();
         if !self.points.is_empty() {
-            points = vec![None; n];
+            points = vec![NO_POINT; n];
             for d in 0..n {
                 points[perm[d] as usize] = self.points[d];
             }
         }
-        DenseMap { dim: self.dim, alpha, points }
+        DenseMap { dim: self.dim, alpha, points, table: self.table.clone() }
     }
 }

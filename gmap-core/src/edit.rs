@@ -23,7 +23,9 @@ pub use crate::darts::DartId;
 use crate::darts::{dart_index, DartStore};
 use crate::dense::{DenseMap, Partition};
 use crate::error::{BoundaryDefect, OrientationConflict};
-use crate::ids::{Dart, Point};
+#[cfg(test)]
+use crate::ids::Dart;
+use crate::ids::Point;
 use crate::map_view::MapView;
 use crate::marks::{MarkId, Marks};
 use bitvec::vec::BitVec;
@@ -804,6 +806,17 @@ impl<A: Attributes> GMap<A> {
     /// dart `k` is `ids[k]`. O(N n).
     pub fn to_dense_with_ids(&self) -> (DenseMap, Vec<DartId>) {
         let ids: Vec<DartId> = self.darts.keys().collect();
+        let first = ids.first().map_or(0, |&d| dart_index(d));
+        if ids.iter().enumerate().all(|(k, &d)| dart_index(d) == first + k) {
+            // consecutive slots: the rows shifted, no index map
+            let first = first as u32;
+            let mut flat = Vec::with_capacity(ids.len() * (self.dim + 1));
+            for (_, row) in self.darts.live_rows() {
+                flat.extend(row.iter().map(|&x| x - first));
+            }
+            let dense = self.dense_with_points(flat, ids.iter().copied());
+            return (dense, ids);
+        }
         let mut index: slotmap::SecondaryMap<DartId, u32> = slotmap::SecondaryMap::with_capacity(ids.len());
         for (k, &d) in ids.iter().enumerate() {
             index.insert(d, k as u32);
@@ -823,11 +836,25 @@ impl<A: Attributes> GMap<A> {
     fn dense_with_points(&self, flat: Vec<u32>, ids: impl Iterator<Item = DartId>) -> DenseMap {
         let mut dense = DenseMap::from_flat_unchecked(self.dim, flat).expect("sizes checked on creation");
         if self.points.active() {
-            for (k, d) in ids.enumerate() {
-                if let Some(&p) = self.points.get_at(dart_index(d)) {
-                    dense.set_point(Dart::new(k as u32), Some(p));
-                }
+            // one table entry per vertex value: the darts of a vertex share it
+            let mut index = Vec::with_capacity(dense.dart_count());
+            let mut table = Vec::with_capacity(self.points.len());
+            let mut entry_of = vec![u32::MAX; self.points.slab_len()];
+            for d in ids {
+                let k = dart_index(d);
+                index.push(match self.points.get_at(k) {
+                    Some(&p) => {
+                        let e = &mut entry_of[self.points.handle(k) as usize];
+                        if *e == u32::MAX {
+                            table.push(p);
+                            *e = (table.len() - 1) as u32;
+                        }
+                        *e
+                    }
+                    None => u32::MAX,
+                });
             }
+            dense.set_point_table(index, table);
         }
         dense
     }
@@ -943,6 +970,7 @@ impl<A: Attributes> MapView for GMap<A> {
 }
 
 mod attributes;
+mod bulk;
 mod marking;
 
 #[cfg(test)]

@@ -153,6 +153,39 @@ pub fn to_dense_labels(g: &LabelledGMap) -> (DenseMap, DenseLabels, Vec<DartId>)
     (dense, DenseLabels { of }, ids)
 }
 
+/// The labels of the cells of each dimension `0..=min(n, 5)` that carry some, each cell in
+/// the order of its first dart ([`GMap::darts`]): the order of [`to_dense_labels`], without
+/// its dense copy of the map or its partitions (one pass over the darts a dimension, a bit a
+/// value). For counts of names (`gmap info`).
+pub fn labels_by_dimension(g: &LabelledGMap) -> Vec<Vec<&Labels>> {
+    fn one<const I: usize>(g: &LabelledGMap) -> Vec<&Labels>
+    where
+        (Cells<Labels>, Cells<Labels>, Cells<Labels>, Cells<Labels>, Cells<Labels>, Cells<Labels>):
+            crate::attr::AttributeAt<I, Value = Labels>,
+    {
+        let mut seen: Vec<bool> = Vec::new();
+        let mut out = Vec::new();
+        if g.attribute_count::<I>() == 0 {
+            return out;
+        }
+        for d in g.darts() {
+            if let Some(id) = g.attribute_id::<I>(d) {
+                let k = id.index();
+                if seen.len() <= k {
+                    seen.resize((k + 1).max(2 * seen.len()), false);
+                }
+                if !seen[k] {
+                    seen[k] = true;
+                    out.extend(g.attribute_by_id::<I>(id));
+                }
+            }
+        }
+        out
+    }
+    let f: [fn(&LabelledGMap) -> Vec<&Labels>; 6] = [one::<0>, one::<1>, one::<2>, one::<3>, one::<4>, one::<5>];
+    f.iter().take(g.dim().min(MAX_LABELLED_DIM) + 1).map(|f| f(g)).collect()
+}
+
 /// Whether `name` can be written bare: `[A-Za-z_][A-Za-z0-9_.-]*`.
 pub(crate) fn is_bare_name(name: &str) -> bool {
     let mut c = name.chars();
@@ -430,5 +463,27 @@ mod tests {
         assert!(labels.get(3, 0).is_empty() && labels.get(0, 1000).is_empty());
         assert!(!labels.is_empty() && DenseLabels::default().is_empty());
         assert_eq!(cell_labels(&g, 3, ids[0]), None);
+    }
+
+    #[test]
+    fn labels_by_dimension_are_those_of_to_dense_labels_in_their_order() {
+        let (mut g, ids) = LabelledGMap::from_dense_with_attributes(&crate::examples::torus());
+        let named = |n: &str| -> Labels { [("name", LabelValue::Text(n.into()))].into_iter().collect() };
+        // set out of dart order: the order is the cells' first darts', not the setting's
+        let edges = crate::examples::torus().cells(1);
+        let other = (0..ids.len()).rev().find(|&k| edges.of[k] != edges.of[0]).expect("two edges");
+        g.set_attribute::<1>(ids[other], named("late"));
+        g.set_attribute::<1>(ids[0], named("first"));
+        g.set_attribute::<2>(ids[3], named("face"));
+        let (_, labels, _) = to_dense_labels(&g);
+        let by_dim = labels_by_dimension(&g);
+        assert_eq!(by_dim.len(), 3);
+        for (i, got) in by_dim.iter().enumerate() {
+            let want: Vec<&Labels> = labels.of[i].iter().filter(|l| !l.is_empty()).collect();
+            assert_eq!(*got, want, "dimension {i}");
+        }
+        assert_eq!(by_dim[1].len(), 2);
+        assert_eq!(by_dim[1][0].get("name"), Some(&LabelValue::Text("first".into())));
+        assert!(by_dim[0].is_empty());
     }
 }

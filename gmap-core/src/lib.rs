@@ -112,4 +112,4 @@ pub use marks::{MarkId, Marks};
 pub use points::{Affine, IntoPoint, MakeError};
 
 // labels numbered like the cells of a dense map
-pub use labels::{cell_labels, to_dense_labels, DenseLabels};
+pub use labels::{cell_labels, labels_by_dimension, to_dense_labels, DenseLabels};

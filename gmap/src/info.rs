@@ -221,8 +221,8 @@ pub fn info(input: &Input, o: &InfoOptions) -> Result<Info> {
     Ok(match input {
         Input::Map(m) => {
             let mut i = map_info(m.map());
-            if let Some(Ok((_, l))) = m.dense_labels() {
-                i.labels = label_names(l.of.iter().flatten());
+            if let Some(Ok(g)) = m.labelled() {
+                i.labels = label_names(gmap_core::labels_by_dimension(g).into_iter().flatten());
             }
             Info::Map(i)
         }

@@ -37,12 +37,15 @@ pub struct SaveOptions {
     /// pulls the cell apart. Without it [`save`] refuses such an output naming the cell and
     /// the formats that keep it.
     pub lossy: bool,
+    /// write the binary form of the output's format (`gmap convert --binary`): Gmsh's
+    /// binary `.msh` 4.1; refused for other formats
+    pub binary: bool,
 }
 
 impl SaveOptions {
     /// Options with a dart limit.
     pub fn max_darts(max_darts: Option<u64>) -> Self {
-        SaveOptions { max_darts, max_cells: None, boundary: false, lossy: false }
+        SaveOptions { max_darts, max_cells: None, boundary: false, lossy: false, binary: false }
     }
 }
 
@@ -76,7 +79,25 @@ fn save_noting(input: &Input, output: &Path, o: &SaveOptions, hint: &str) -> Res
             )),
         };
     }
-    match output_format(output)?.writer {
+    let writer = output_format(output)?.writer;
+    if o.binary {
+        // the formats with a binary form: .msh
+        return match writer {
+            Writer::Map { cubes, facets, .. } if extension(output).eq_ignore_ascii_case("msh") => save_through_map(
+                input,
+                output,
+                (o, hint),
+                (write::msh_binary, Some(write::labelled_msh_binary), cubes, facets),
+            ),
+            _ => Err(err!(
+                Usage,
+                "{}: --binary writes .msh only, not '.{}'",
+                output.display(),
+                gmap_core::io::shorten(extension(output).as_bytes(), 40)
+            )),
+        };
+    }
+    match writer {
         Writer::Graph(text) => write::text(output, &text(graph_of(input, output, o)?.as_ref())).map(|()| None),
         Writer::Map { map, labelled, cubes, facets } => {
             save_through_map(input, output, (o, hint), (map, labelled, cubes, facets))

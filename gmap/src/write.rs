@@ -154,6 +154,18 @@ pub(crate) fn labelled_msh(g: &LabelledGMap, output: &Path) -> Result<()> {
     gmap_ops::export::write_msh_with_labels(&m, &labels, false, output).map_err(|e| cannot_write(output, e))
 }
 
+/// `.msh` (Gmsh 4.1, binary) of a map with points.
+pub(crate) fn msh_binary(m: &DenseMap, output: &Path) -> Result<()> {
+    let labels = gmap_core::DenseLabels::default();
+    gmap_ops::export::write_msh_with_labels(m, &labels, true, output).map_err(|e| cannot_write(output, e))
+}
+
+/// `.msh` (Gmsh 4.1, binary) of a map with points and its labels, as [`labelled_msh`].
+pub(crate) fn labelled_msh_binary(g: &LabelledGMap, output: &Path) -> Result<()> {
+    let (m, labels, _) = gmap_core::to_dense_labels(g);
+    gmap_ops::export::write_msh_with_labels(&m, &labels, true, output).map_err(|e| cannot_write(output, e))
+}
+
 /// `.vtk` of a full cubical set: its cubes as voxels.
 pub(crate) fn voxels_vtk(set: &CubicalSet, output: &Path) -> Result<()> {
     gmap_ops::export::write_cubical_vtk(set, output).map_err(|e| cannot_write(output, e))

@@ -209,6 +209,9 @@ struct ConvertArgs {
     /// .off of a 3-map: write its boundary surface
     #[arg(long)]
     boundary: bool,
+    /// .msh: write Gmsh's binary form (format 4.1, data size 8) rather than its text
+    #[arg(long)]
+    binary: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -399,7 +402,7 @@ fn convert(a: ConvertArgs, quiet: bool) -> gmap::Result<String> {
     progress.stage(&format!("converting {} to {}", a.input.display(), a.output.display()));
     let mut o = gmap::SaveOptions::max_darts(a.limits.max_darts);
     (o.max_cells, o.boundary) = (a.limits.max_cells, a.boundary);
-    o.lossy = a.lossy;
+    (o.lossy, o.binary) = (a.lossy, a.binary);
     let done = gmap::save::save_checked(&a.input, &a.output, &o, "convert with --lossy to write it anyway");
     for change in done.iter().flatten() {
         eprintln!("gmap convert: {change}");

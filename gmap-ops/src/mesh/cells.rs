@@ -8,6 +8,7 @@ use smallvec::SmallVec;
 
 use super::error::MeshError;
 use super::matching::{check_conforming, Facet, FacetMatcher, Offer};
+use super::volumes;
 use crate::build::IncrementalBuilder;
 
 /// The linear cell types of VTK and Gmsh that a mesh holds.
@@ -79,7 +80,7 @@ impl CellKind {
     }
 
     /// The faces of a volume of a fixed kind, as corner numbers.
-    fn faces(self) -> &'static [&'static [usize]] {
+    pub(crate) fn faces(self) -> &'static [&'static [usize]] {
         match self {
             CellKind::Tetra => &[&[0, 1, 2], &[0, 3, 1], &[1, 3, 2], &[2, 3, 0]],
             CellKind::Hexahedron => {
@@ -181,7 +182,7 @@ impl Mesh {
 
     /// Checks every cell on its own: point indices in range, the right number of points,
     /// no point twice, polygons of 3 corners or more, polyhedra whose faces close.
-    fn check_cells(&self) -> Result<(), MeshError> {
+    pub(crate) fn check_cells(&self) -> Result<(), MeshError> {
         let n = self.points.len();
         for (i, c) in self.cells.iter().enumerate() {
             let bad = |reason: String| MeshError::BadCell { cell: i, kind: c.kind.to_string(), reason };
@@ -197,7 +198,7 @@ impl Mesh {
                 return Err(bad(format!("{} points, a polygon needs 3 or more", c.nodes.len())));
             }
             let twice = |xs: &[u32]| -> Option<u32> {
-                let mut s = xs.to_vec();
+                let mut s: SmallVec<[u32; 8]> = xs.iter().copied().collect();
                 s.sort_unstable();
                 s.windows(2).find(|w| w[0] == w[1]).map(|w| w[0])
             };
@@ -239,6 +240,7 @@ impl Mesh {
         let mut total = 0u64;
         for c in self.cells.iter().filter(|c| c.kind.dim() == top) {
             let darts = match top {
+                3 if c.kind != CellKind::Polyhedron => c.kind.faces().iter().map(|f| 2 * f.len() as u64).sum::<u64>(),
                 3 => volume_faces(c).iter().try_fold(0u64, |a, f| a.checked_add(2 * f.len() as u64))?,
                 2 => 2 * c.nodes.len() as u64,
                 1 => 2,
@@ -262,18 +264,33 @@ impl Mesh {
         if darts.is_none_or(|d| d > max_darts) {
             return Err(MeshError::TooManyDarts { cells: self.cells.len(), darts, limit: max_darts });
         }
+        let tops: Vec<usize> = (0..self.cells.len()).filter(|&i| self.cells[i].kind.dim() == top).collect();
+        let renumber = |e: MeshError| e.renumber(|k| tops.get(k).copied().unwrap_or(k));
+        if top == 3 && volumes::applies(self, &tops) {
+            // the volumes of fixed kinds written directly (see `volumes`)
+            if darts.is_none_or(|d| d >= u32::MAX as u64 - 1) {
+                return Err(MeshError::TooManyDarts { cells: self.cells.len(), darts, limit: u32::MAX as u64 - 2 });
+            }
+            let volumes::Built { mut map, vertex, first, faces } = volumes::build(self, &tops).map_err(renumber)?;
+            let mut cell_dart: Vec<Option<DartId>> = vec![None; self.cells.len()];
+            for (t, &i) in tops.iter().enumerate() {
+                cell_dart[i] = map.dart_at(first[t] as usize);
+            }
+            let face_of =
+                |vs: &[u32]| volumes::face(self, &tops, &first, &faces, vs).map(|(c, d)| (c, FaceDart::Index(d)));
+            self.label(&mut map, &vertex, top, &mut cell_dart, &face_of, Some((&tops, &first)))?;
+            return Ok(map);
+        }
         let mut g = LabelledGMap::with_attributes(top);
         // the map's dart of each top cell, and the point of each dart (by dart index)
         let mut cell_dart: Vec<Option<DartId>> = vec![None; self.cells.len()];
         let mut vertex: Vec<u32> = Vec::new();
-        let tops: Vec<usize> = (0..self.cells.len()).filter(|&i| self.cells[i].kind.dim() == top).collect();
         let mut faces_of_top: Option<FacetMatcher<DartId>> = None;
         if top >= 2 {
             let mut b = IncrementalBuilder::new(&mut g).expect("dimension 2 or 3");
             for p in &self.points {
                 b.add_vertex(*p);
             }
-            let renumber = |e: MeshError| e.renumber(|k| tops.get(k).copied().unwrap_or(k));
             if top == 3 {
                 for &i in &tops {
                     b.begin_surface().map_err(renumber)?;
@@ -333,34 +350,47 @@ impl Mesh {
         }
         let (dense, ids) = g.to_dense_with_ids();
         let vert: Vec<u32> = ids.iter().map(|&d| vertex[g.dart_index(d)]).collect();
+        drop(ids);
         check_pinched(&dense, &vert, top)?;
-        self.label(&mut g, &ids, &vertex, top, &mut cell_dart, faces_of_top.as_ref())?;
+        drop(dense);
+        let face_of = |vs: &[u32]| -> Option<(SmallVec<[u32; 4]>, FaceDart)> {
+            let e = faces_of_top.as_ref()?.get(vs)?;
+            Some((e.first.cycle.clone(), FaceDart::Id(e.first.dart)))
+        };
+        self.label(&mut g, &vertex, top, &mut cell_dart, &face_of, None)?;
         Ok(g)
     }
 
     /// Finds the lower cells in the map and sets the labels of every cell and point.
+    /// `face_of` finds a face of the top cells by its vertices (its cycle and its dart at
+    /// corner 0 towards corner 1); `blocks`, the top cells and the index of the first dart
+    /// of each when every top cell's darts are consecutive (the labels of the top cells are
+    /// then set in one pass).
     fn label(
         &self,
         g: &mut LabelledGMap,
-        ids: &[DartId],
         vertex: &[u32],
         top: usize,
         cell_dart: &mut [Option<DartId>],
-        faces: Option<&FacetMatcher<DartId>>,
+        face_of: &FaceLookup<'_>,
+        blocks: Option<(&[usize], &[u32])>,
     ) -> Result<(), MeshError> {
         // the map's dart of each point and of each edge, by their points
         let mut point_dart: Vec<Option<DartId>> = vec![None; self.points.len()];
         let mut edge_dart: FxHashMap<(u32, u32), DartId> = FxHashMap::default();
         let need_edges = top >= 2 && self.cells.iter().any(|c| c.kind == CellKind::Line);
-        for &d in ids {
-            let v = vertex[g.dart_index(d)];
-            if v == u32::MAX {
-                continue;
-            }
-            point_dart[v as usize].get_or_insert(d);
-            if need_edges {
-                let w = vertex[g.dart_index(g.alpha(d, 0))];
-                edge_dart.entry((v.min(w), v.max(w))).or_insert(d);
+        let need_points = !self.point_data.is_empty() || self.cells.iter().any(|c| c.kind.dim() < top);
+        if need_points {
+            for d in g.darts() {
+                let v = vertex[g.dart_index(d)];
+                if v == u32::MAX {
+                    continue;
+                }
+                point_dart[v as usize].get_or_insert(d);
+                if need_edges {
+                    let w = vertex[g.dart_index(g.alpha(d, 0))];
+                    edge_dart.entry((v.min(w), v.max(w))).or_insert(d);
+                }
             }
         }
         let mut lower_seen: FxHashMap<(usize, SmallVec<[u32; 4]>), usize> = FxHashMap::default();
@@ -381,14 +411,20 @@ impl Mesh {
                     let (a, b) = (c.nodes[0], c.nodes[1]);
                     edge_dart.get(&(a.min(b), a.max(b))).copied()
                 }
-                _ => faces.and_then(|m| m.get(&c.nodes)).and_then(|e| {
-                    let same = e.first.cycle.len() == c.nodes.len()
+                _ => face_of(&c.nodes).and_then(|(cycle, d)| {
+                    let same = cycle.len() == c.nodes.len()
                         && (0..c.nodes.len()).any(|r| {
                             let k = c.nodes.len();
-                            (0..k).all(|j| c.nodes[(r + j) % k] == e.first.cycle[j])
-                                || (0..k).all(|j| c.nodes[(r + k - j) % k] == e.first.cycle[j])
+                            (0..k).all(|j| c.nodes[(r + j) % k] == cycle[j])
+                                || (0..k).all(|j| c.nodes[(r + k - j) % k] == cycle[j])
                         });
-                    same.then_some(e.first.dart)
+                    if !same {
+                        return None;
+                    }
+                    match d {
+                        FaceDart::Id(d) => Some(d),
+                        FaceDart::Index(k) => g.dart_at(k),
+                    }
                 }),
             };
             let d = d.ok_or_else(loose)?;
@@ -415,11 +451,30 @@ impl Mesh {
             })
         };
         let columns: Vec<&DataArray> = self.cell_data.iter().filter(|a| !skip(a)).collect();
+        let labels_of = |i: usize| -> Labels {
+            columns.iter().filter_map(|a| a.values.get(i).cloned().flatten().map(|v| (a.name.clone(), v))).collect()
+        };
+        let mut top_done = false;
+        if let (Some((tops, first)), 3) = (blocks, top) {
+            // the top cells' labels by one id per dart: top cell t holds the darts from
+            // first[t] up to first[t + 1]
+            let values: Vec<Option<Labels>> =
+                tops.iter().map(|&i| Some(labels_of(i)).filter(|l| !l.is_empty())).collect();
+            if values.iter().any(Option::is_some) {
+                let mut ids = vec![u32::MAX; g.index_bound()];
+                for t in 0..tops.len() {
+                    let end = first.get(t + 1).map_or(ids.len(), |&e| e as usize);
+                    ids[first[t] as usize..end].fill(t as u32);
+                }
+                g.set_attributes_by_ids::<3>(&ids, values).map_err(|e| MeshError::Map(e.to_string()))?;
+            }
+            top_done = true;
+        }
         for (i, c) in self.cells.iter().enumerate() {
-            let l: Labels = columns
-                .iter()
-                .filter_map(|a| a.values.get(i).cloned().flatten().map(|v| (a.name.clone(), v)))
-                .collect();
+            if top_done && c.kind.dim() == top {
+                continue;
+            }
+            let l = labels_of(i);
             if !l.is_empty() {
                 if let Some(d) = cell_dart[i] {
                     set_labels(g, c.kind.dim(), d, l);
@@ -441,9 +496,20 @@ impl Mesh {
     }
 }
 
+/// Finds a face of the top cells by its vertices: its cycle and its dart.
+type FaceLookup<'a> = dyn Fn(&[u32]) -> Option<(SmallVec<[u32; 4]>, FaceDart)> + 'a;
+
+/// The dart of a face found by its vertices: a handle, or a dart index.
+pub(crate) enum FaceDart {
+    /// a handle
+    Id(DartId),
+    /// an index ([`gmap_core::GMap::dart_index`])
+    Index(usize),
+}
+
 /// Refuses a point that is two 0-cells or more of the map, and (in dimension 3) an edge that
 /// is two 1-cells or more: the cells around them meet only there. O(N n).
-fn check_pinched(dense: &DenseMap, vert: &[u32], top: usize) -> Result<(), MeshError> {
+pub(crate) fn check_pinched(dense: &DenseMap, vert: &[u32], top: usize) -> Result<(), MeshError> {
     let check = |i: usize, what: &'static str| -> Result<(), MeshError> {
         let cells = dense.cells(i);
         let mut count: FxHashMap<(u32, u32), usize> = FxHashMap::default();

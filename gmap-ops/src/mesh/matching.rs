@@ -83,7 +83,7 @@ fn key_of(cycle: &[u32]) -> Key {
 
 /// Where `b` is `a` up to rotation and reversal: `Some((r, reversed))` with
 /// `b[(r ± j) mod k] = a[j]`. Both cycles have distinct entries. O(k).
-fn align(a: &[u32], b: &[u32]) -> Option<(usize, bool)> {
+pub(crate) fn align(a: &[u32], b: &[u32]) -> Option<(usize, bool)> {
     let k = a.len();
     if b.len() != k || k == 0 {
         return None;
@@ -153,6 +153,18 @@ impl<D: Copy> FacetMatcher<D> {
     }
 }
 
+/// One face of a mesh for [`check_conforming_faces`]: its cycle and the one or two cells
+/// it bounds.
+#[derive(Clone, Debug)]
+pub(crate) struct FaceRecord {
+    /// the vertex cycle (of the first cell that has it)
+    pub cycle: SmallVec<[u32; 4]>,
+    /// the first cell that has it
+    pub owner: usize,
+    /// the second, when two share it
+    pub second: Option<usize>,
+}
+
 /// Refuses non-conforming faces: two faces of different cells, not the same face, that share
 /// two edges or more (a triangle on half of a quadrangle, a quadrangle split in two on the
 /// other side). Faces are the matcher's entries. Hanging vertices in the middle of an edge
@@ -162,7 +174,15 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
     if m.dim < 3 {
         return Ok(());
     }
-    let entries: Vec<&Entry<D>> = m.facets().collect();
+    let faces: Vec<FaceRecord> = m
+        .facets()
+        .map(|e| FaceRecord { cycle: e.first.cycle.clone(), owner: e.first.owner, second: e.second })
+        .collect();
+    check_conforming_faces(&faces)
+}
+
+/// [`check_conforming`] on a list of faces, each face once (in any order).
+pub(crate) fn check_conforming_faces(entries: &[FaceRecord]) -> Result<(), MeshError> {
     // Two faces sharing two edges or more without being one face: two triangles sharing two
     // edges have the same three vertices, hence one key and one entry, so one of the two has
     // four corners or more, and the edges shared are edges of it. Only the edges of such
@@ -172,15 +192,15 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
         (a.min(b), a.max(b))
     };
     let mut polygon_edges: rustc_hash::FxHashSet<(u32, u32)> = rustc_hash::FxHashSet::default();
-    for e in entries.iter().filter(|e| e.first.cycle.len() > 3) {
-        polygon_edges.extend((0..e.first.cycle.len()).map(|j| edge(&e.first.cycle, j)));
+    for e in entries.iter().filter(|e| e.cycle.len() > 3) {
+        polygon_edges.extend((0..e.cycle.len()).map(|j| edge(&e.cycle, j)));
     }
     if polygon_edges.is_empty() {
         return Ok(());
     }
     let mut around: FxHashMap<(u32, u32), SmallVec<[u32; 4]>> = FxHashMap::default();
     for (k, e) in entries.iter().enumerate() {
-        let c = &e.first.cycle;
+        let c = &e.cycle;
         for j in 0..c.len() {
             let key = edge(c, j);
             if polygon_edges.contains(&key) {
@@ -188,9 +208,9 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
             }
         }
     }
-    let owners = |e: &Entry<D>| -> SmallVec<[usize; 2]> {
+    let owners = |e: &FaceRecord| -> SmallVec<[usize; 2]> {
         let mut o: SmallVec<[usize; 2]> = SmallVec::new();
-        o.push(e.first.owner);
+        o.push(e.owner);
         if let Some(s) = &e.second {
             o.push(*s);
         }
@@ -210,21 +230,25 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
     let worst = shared
         .iter()
         .filter(|&(&(f, g), &n)| {
-            let (of, og) = (owners(entries[f as usize]), owners(entries[g as usize]));
+            let (of, og) = (owners(&entries[f as usize]), owners(&entries[g as usize]));
             n >= 2 && !of.iter().any(|c| og.contains(c))
         })
         .map(|(&fg, _)| {
-            let cells = |k: u32| owners(entries[k as usize]).into_iter().min().unwrap_or(0);
-            ((cells(fg.0).min(cells(fg.1)), cells(fg.0).max(cells(fg.1))), fg)
+            let cells = |k: u32| owners(&entries[k as usize]).into_iter().min().unwrap_or(0);
+            // the pair of cells first, then the cycles: the same pair whatever the order of
+            // the entries
+            let (x, y) = (&entries[fg.0 as usize].cycle, &entries[fg.1 as usize].cycle);
+            let cyc = if x <= y { (x.clone(), y.clone()) } else { (y.clone(), x.clone()) };
+            ((cells(fg.0).min(cells(fg.1)), cells(fg.0).max(cells(fg.1))), cyc, fg)
         })
         .min();
-    if let Some((_, (f, g))) = worst {
-        let (mut ef, mut eg) = (entries[f as usize], entries[g as usize]);
+    if let Some((_, _, (f, g))) = worst {
+        let (mut ef, mut eg) = (&entries[f as usize], &entries[g as usize]);
         if owners(ef).into_iter().min() > owners(eg).into_iter().min() {
             std::mem::swap(&mut ef, &mut eg);
         }
-        let edges_of = |e: &Entry<D>| -> Vec<[u64; 2]> {
-            let c = &e.first.cycle;
+        let edges_of = |e: &FaceRecord| -> Vec<[u64; 2]> {
+            let c = &e.cycle;
             (0..c.len())
                 .map(|j| {
                     let (a, b) = (c[j] as u64, c[(j + 1) % c.len()] as u64);
@@ -245,8 +269,8 @@ pub(crate) fn check_conforming<D: Copy>(m: &FacetMatcher<D>) -> Result<(), MeshE
     Ok(())
 }
 
-fn cyc<D>(e: &Entry<D>) -> Vec<u64> {
-    e.first.cycle.iter().map(|&v| v as u64).collect()
+fn cyc(e: &FaceRecord) -> Vec<u64> {
+    e.cycle.iter().map(|&v| v as u64).collect()
 }
 
 #[cfg(test)]
