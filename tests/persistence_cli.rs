@@ -272,3 +272,23 @@ fn perseus_files_cubical_and_simplicial() {
     assert_ne!(code, Some(0));
     assert!(err.contains("periodic axes [true, true]") && err.contains("torus.txt"), "{err}");
 }
+
+#[test]
+fn a_valued_complex_converted_says_it_drops_the_values() {
+    // no writer keeps a facet's filtration value: convert refuses, naming them, and with
+    // --lossy writes the facets and says what went
+    let dir = tempfile::tempdir().unwrap();
+    let valued = dir.path().join("valued.facets");
+    std::fs::write(&valued, "1 2 : 0\n2 3 : 1\n").unwrap();
+    let out_path = dir.path().join("plain.facets");
+    let (v, o) = (valued.to_str().unwrap(), out_path.to_str().unwrap());
+    let out = gmap(&["convert", v, o]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("drops the facet values"), "{err}");
+    assert!(!out_path.exists());
+    let out = gmap(&["convert", v, o, "--lossy"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("drops the facet values"));
+    assert_eq!(gmap(&["homology", o]).status.code(), Some(0));
+}

@@ -11,12 +11,17 @@
 //! ```
 //! use gmap::homotopy::{PathSpec, Paths};
 //! let torus = gmap::ops::build::grid(&[4, 3], &[true, true]).unwrap();
-//! let paths = Paths::new(&gmap::Input::Map(gmap::MapInput::new(torus))).unwrap();
-//! // a loop round the torus is not contractible; run twice, it is not simple
-//! let round = paths.vertices_path(&[0, 1, 2, 3, 0]).unwrap();
-//! assert!(!paths.is_contractible(&PathSpec::Vertices(round.clone())).unwrap());
-//! let twice: Vec<u64> = [0, 1, 2, 3, 0, 1, 2, 3, 0].to_vec();
-//! assert!(!paths.is_homotopic_to_simple_cycle(&PathSpec::Vertices(twice)).unwrap());
+//! let input = gmap::Input::Map(gmap::MapInput::new(torus));
+//! let paths = Paths::new(&input).unwrap();
+//! // the shortest loop round the torus is not contractible and is a simple cycle; run
+//! // twice, it is not simple
+//! let c = gmap::curves::edge_width(&input).unwrap().unwrap();
+//! let once = PathSpec::Darts(c.darts.clone());
+//! assert!(!paths.is_contractible(&once).unwrap());
+//! assert!(paths.is_homotopic_to_simple_cycle(&once).unwrap());
+//! let twice = PathSpec::Darts([c.darts.clone(), c.darts].concat());
+//! assert!(!paths.is_homotopic_to_simple_cycle(&twice).unwrap());
+//! assert!(!paths.are_freely_homotopic(&once, &twice).unwrap());
 //! ```
 
 use gmap_core::{Dart, DenseMap};

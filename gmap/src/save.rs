@@ -287,6 +287,10 @@ pub fn dropped(input: &Input, output: &Path, o: &SaveOptions) -> Vec<&'static st
     if points {
         out.push("the points");
     }
+    // the filtration values a valued .facets file gives its facets: no writer keeps them
+    if matches!(input, Input::Simplicial(s) if s.facet_values().is_some()) {
+        out.push("the facet values");
+    }
     // an .off that cannot hold the map is refused for that, first
     if f.extension == "off" && !o.boundary && input.dim() != 2 {
         out.clear();

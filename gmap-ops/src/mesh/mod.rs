@@ -44,6 +44,7 @@ pub(crate) mod cells;
 pub(crate) mod error;
 pub(crate) mod matching;
 pub(crate) mod texts;
+pub(crate) mod to_map;
 pub(crate) mod volumes;
 
 pub use cells::{CellKind, DataArray, Mesh, MeshCell};
