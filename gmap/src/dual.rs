@@ -21,6 +21,7 @@ use std::fmt::Write as _;
 
 use gmap_core::{LabelValue, Labels};
 use gmap_homology::arch::ArchComplex;
+use gmap_homology::complex::{dot::quote, graphml::escape};
 
 use crate::error::{err, Result};
 use crate::input::Input;
@@ -222,38 +223,6 @@ pub fn room_graph_of(x: &ArchComplex, dual: Dual) -> RoomGraph {
     RoomGraph { dual, dim: top, nodes, edges }
 }
 
-/// Writes `t` escaped for XML text and attribute values (characters XML 1.0 cannot hold as
-/// U+FFFD).
-fn xml(s: &mut String, t: &str) {
-    for c in t.chars() {
-        match c {
-            '&' => s.push_str("&amp;"),
-            '<' => s.push_str("&lt;"),
-            '>' => s.push_str("&gt;"),
-            '"' => s.push_str("&quot;"),
-            '\'' => s.push_str("&apos;"),
-            '\t' | '\n' | '\r' => s.push(c),
-            c if (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}' => s.push('\u{FFFD}'),
-            c => s.push(c),
-        }
-    }
-}
-
-/// Writes `t` as a Graphviz quoted string.
-fn quote(s: &mut String, t: &str) {
-    s.push('"');
-    for c in t.chars() {
-        match c {
-            '"' => s.push_str("\\\""),
-            '\\' => s.push_str("\\\\"),
-            '\n' => s.push_str("\\n"),
-            '\r' => {}
-            c => s.push(c),
-        }
-    }
-    s.push('"');
-}
-
 /// A label's value as text (numbers in their `.gmap` text form).
 fn label_text(v: &LabelValue) -> String {
     match v {
@@ -290,7 +259,7 @@ impl RoomGraph {
         s.push_str("  <key id=\"name\" for=\"node\" attr.name=\"name\" attr.type=\"string\"/>\n");
         for (k, name) in keys.iter().enumerate() {
             let _ = write!(s, "  <key id=\"l{k}\" for=\"node\" attr.name=\"");
-            xml(&mut s, name);
+            escape(&mut s, name);
             s.push_str("\" attr.type=\"string\"/>\n");
         }
         s.push_str("  <key id=\"faces\" for=\"edge\" attr.name=\"faces\" attr.type=\"string\"/>\n");
@@ -300,14 +269,14 @@ impl RoomGraph {
         let _ = writeln!(s, "  <graph id=\"{}\" edgedefault=\"undirected\">", self.dual.name());
         for (k, n) in self.nodes.iter().enumerate() {
             let _ = write!(s, "    <node id=\"{}\"><data key=\"id\">", self.xml_id(k));
-            xml(&mut s, &n.id);
+            escape(&mut s, &n.id);
             s.push_str("</data><data key=\"name\">");
-            xml(&mut s, &n.name);
+            escape(&mut s, &n.name);
             s.push_str("</data>");
             for (name, v) in n.labels.iter() {
                 if let Some(i) = keys.iter().position(|k| k == name) {
                     let _ = write!(s, "<data key=\"l{i}\">");
-                    xml(&mut s, &label_text(v));
+                    escape(&mut s, &label_text(v));
                     s.push_str("</data>");
                 }
             }
@@ -320,9 +289,9 @@ impl RoomGraph {
                 self.xml_id(e.nodes.0),
                 self.xml_id(e.nodes.1)
             );
-            xml(&mut s, &e.faces.join("; "));
+            escape(&mut s, &e.faces.join("; "));
             s.push_str("</data><data key=\"face_names\">");
-            xml(&mut s, &e.face_names.join("; "));
+            escape(&mut s, &e.face_names.join("; "));
             let _ = write!(s, "</data><data key=\"count\">{}</data>", e.faces.len());
             if let Some(a) = e.area {
                 let _ = write!(s, "<data key=\"area\">{a:?}</data>");

@@ -22,8 +22,9 @@ use gmap_core::LabelValue;
 
 use crate::complex::arch::ArchComplex;
 
-/// Writes `t` as a Graphviz quoted string (`"` and `\` escaped, line breaks as `\n`).
-fn quote(s: &mut String, t: &str) {
+/// Writes `t` as a Graphviz quoted string (`"` and `\` escaped, line breaks as `\n`);
+/// shared by every DOT writer.
+pub fn quote(s: &mut String, t: &str) {
     s.push('"');
     for c in t.chars() {
         match c {

@@ -27,8 +27,9 @@ use gmap_core::LabelValue;
 
 use crate::complex::arch::ArchComplex;
 
-/// Writes `t` escaped for XML text and attribute values.
-fn escape(s: &mut String, t: &str) {
+/// Writes `t` escaped for XML text and attribute values (characters XML 1.0 cannot hold
+/// as U+FFFD); shared by every GraphML writer.
+pub fn escape(s: &mut String, t: &str) {
     for c in t.chars() {
         match c {
             '&' => s.push_str("&amp;"),
