@@ -4,9 +4,8 @@
 //! same values; on small images the cubical set of the non-zero pixels has agreeing routes.
 #![no_main]
 
-use gmap_ops::import::image::{Dtype, Image, Order};
+use gmap_ops::import::image::{Image, Order};
 use gmap_ops::import::raster::parse_pgm;
-use gmap_ops::import::Level;
 use libfuzzer_sys::fuzz_target;
 
 #[path = "shared/mod.rs"]
@@ -14,18 +13,7 @@ mod shared;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(img) = parse_pgm(data) else { return };
-    let (h, w) = match img.shape() {
-        &[h, w] => (h, w),
-        s => panic!("a PGM image of shape {s:?}"),
-    };
-    assert!(h > 0 && w > 0);
-    assert_eq!(img.order(), Order::C);
-    let sixteen = match img.dtype() {
-        Dtype::U8 => false,
-        Dtype::U16 => true,
-        d => panic!("a PGM image of {d:?}"),
-    };
-    assert_eq!(img.len(), h * w);
+    let (h, w, sixteen) = shared::check_grey_raster(&img, "PGM");
     let maxval = if sixteen { 65535 } else { 255 };
     let values: Vec<u16> = (0..img.len()).map(|i| img.value(i) as u16).collect();
     // P2: decimal tokens; P5: one byte or two big-endian bytes a pixel
@@ -45,11 +33,6 @@ fuzz_target!(|data: &[u8]| {
         assert_eq!(back.dtype(), img.dtype());
         assert_eq!(back.raw(), img.raw());
     }
-    if img.len() <= 1 << 10 {
-        if let Ok(set) = img.to_cubical_set(Level::Nonzero) {
-            shared::check_set(&set);
-            shared::check_cubical_routes(&set);
-        }
-    }
+    shared::check_small_raster_routes(&img);
     let _ = Image::from_values(&[h, w], Order::C, values);
 });

@@ -4,9 +4,7 @@
 //! images the cubical set of the non-zero pixels has agreeing routes.
 #![no_main]
 
-use gmap_ops::import::image::{Dtype, Order};
 use gmap_ops::import::raster::parse_png;
-use gmap_ops::import::Level;
 use libfuzzer_sys::fuzz_target;
 
 #[path = "shared/mod.rs"]
@@ -14,18 +12,7 @@ mod shared;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(img) = parse_png(data) else { return };
-    let (h, w) = match img.shape() {
-        &[h, w] => (h, w),
-        s => panic!("a PNG image of shape {s:?}"),
-    };
-    assert!(h > 0 && w > 0);
-    assert_eq!(img.order(), Order::C);
-    let sixteen = match img.dtype() {
-        Dtype::U8 => false,
-        Dtype::U16 => true,
-        d => panic!("a PNG image of {d:?}"),
-    };
-    assert_eq!(img.len(), h * w);
+    let (h, w, sixteen) = shared::check_grey_raster(&img, "PNG");
     let mut pixels = Vec::with_capacity(img.len() * if sixteen { 2 } else { 1 });
     for i in 0..img.len() {
         let v = img.value(i) as u16;
@@ -47,10 +34,5 @@ fuzz_target!(|data: &[u8]| {
     assert_eq!(back.shape(), img.shape());
     assert_eq!(back.dtype(), img.dtype());
     assert_eq!(back.raw(), img.raw());
-    if img.len() <= 1 << 10 {
-        if let Ok(set) = img.to_cubical_set(Level::Nonzero) {
-            shared::check_set(&set);
-            shared::check_cubical_routes(&set);
-        }
-    }
+    shared::check_small_raster_routes(&img);
 });

@@ -227,3 +227,33 @@ pub fn check_mesh(mesh: &gmap_ops::mesh::Mesh) {
         assert_eq!(a, b, "the .vtk round trip keeps the labels of dimension {i}");
     }
 }
+
+/// What every grey raster reader's image must be: 2-D, rows × columns with none empty, in C
+/// order, `u8` or `u16` values. Returns the rows, the columns and whether it has 16 bits.
+pub fn check_grey_raster(img: &gmap_ops::import::image::Image, format: &str) -> (usize, usize, bool) {
+    use gmap_ops::import::image::{Dtype, Order};
+    let (h, w) = match img.shape() {
+        &[h, w] => (h, w),
+        s => panic!("a {format} image of shape {s:?}"),
+    };
+    assert!(h > 0 && w > 0);
+    assert_eq!(img.order(), Order::C);
+    let sixteen = match img.dtype() {
+        Dtype::U8 => false,
+        Dtype::U16 => true,
+        d => panic!("a {format} image of {d:?}"),
+    };
+    assert_eq!(img.len(), h * w);
+    (h, w, sixteen)
+}
+
+/// On a small image (at most 2^10 pixels), the cubical set of its non-zero pixels has
+/// agreeing routes.
+pub fn check_small_raster_routes(img: &gmap_ops::import::image::Image) {
+    if img.len() <= 1 << 10 {
+        if let Ok(set) = img.to_cubical_set(gmap_ops::import::Level::Nonzero) {
+            check_set(&set);
+            check_cubical_routes(&set);
+        }
+    }
+}
