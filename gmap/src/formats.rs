@@ -11,6 +11,7 @@
 //! | extension | reads | writes | keeps |
 //! |---|---|---|---|
 //! | `.gmap` | map | any input through its G-map | points, labels |
+//! | `.cgal.xml` | map (CGAL's generalized maps) | a map with its vertex points | points |
 //! | `.moka` | map | a map of dimension ≤ 3 | points |
 //! | `.off` | map | a 2-map with points (`--boundary`: a 3-map's boundary) | points |
 //! | `.vtk` | map (unstructured grid) | a map of dimension ≤ 3 with points, a full cubical set as voxels | points, labels |
@@ -125,6 +126,14 @@ pub static FORMATS: &[Format] = &[
         keeps_points: true,
         reader: Reader::Reads(Kind::Map, read::gmap),
         writer: Writer::Map { map: write::gmap, labelled: Some(write::labelled_gmap), cubes: None, facets: None },
+    },
+    Format {
+        extension: "cgal.xml",
+        description: "CGAL's XML generalized maps (save_generalized_map) with vertex points",
+        keeps_labels: false,
+        keeps_points: true,
+        reader: Reader::Reads(Kind::Map, read::cgal_xml),
+        writer: Writer::Map { map: write::cgal_xml, labelled: None, cubes: None, facets: None },
     },
     Format {
         extension: "moka",

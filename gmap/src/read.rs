@@ -128,3 +128,8 @@ pub(crate) fn perseus(path: &Path, opts: &OpenOptions) -> Result<Input> {
         .map_err(|e| Error::from_source(ErrorKind::Parse, e).naming_path(path))?;
     Ok(Input::Image(Source::file(path, opts).holding(img)))
 }
+
+/// `.cgal.xml`: CGAL's XML generalized maps, vertex points kept.
+pub(crate) fn cgal_xml(path: &Path, opts: &OpenOptions) -> Result<Input> {
+    Ok(Input::map_from(import::read_cgal_xml(path, opts.max_darts)?, Source::file(path, opts)))
+}

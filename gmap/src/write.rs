@@ -201,3 +201,8 @@ pub(crate) fn npy(img: &Image, output: &Path) -> Result<()> {
 pub(crate) fn dipha(img: &Image, output: &Path) -> Result<()> {
     img.write_dipha(output).map_err(|e| err!(Write, "{}: {e}", output.display()).with_path(output))
 }
+
+/// `.cgal.xml`: darts, alpha links and vertex points as CGAL's `load_generalized_map` reads them.
+pub(crate) fn cgal_xml(m: &DenseMap, output: &Path) -> Result<()> {
+    text(output, &gmap_ops::import::format_cgal_xml(m))
+}

@@ -7,6 +7,7 @@
 //! with checked arithmetic, and refuses an input over the limit before allocating the map
 //! (see [`default_max_darts`]).
 
+pub mod cgal_xml;
 mod common;
 pub mod cubical;
 pub mod high_order;
@@ -21,6 +22,7 @@ pub mod simplicial;
 pub mod vtk;
 pub mod vtu;
 
+pub use cgal_xml::{format_cgal_xml, parse_cgal_xml, read_cgal_xml};
 pub use common::{bytes_per_dart, default_max_darts, default_max_faces, FileError, ImportError};
 pub use cubical::{parse_box, read_cub, read_pbm, CubicalSet};
 pub use image::{Image, Level};
