@@ -18,8 +18,8 @@
 //! CGAL's file does not record the map's dimension: the reader takes the `dimension`
 //! attribute of `<darts>` when present (this writer puts it there; CGAL's reader ignores
 //! it), else the largest alpha index linked. Points of 0-attributes (2D points get z = 0)
-//! are kept, on the dart named; the values (`<v>`) of other attributes and of darts are
-//! read past and dropped. A combinatorial map's file (`<b>` links) is refused, naming it.
+//! are kept, on the dart named; a file holding values (`<v>`) of attributes or darts is
+//! refused naming the line, since this reader would drop them. A combinatorial map's file (`<b>` links) is refused, naming it.
 //! Errors name the file and the XML line; the dart count is checked against the dart limit
 //! and the memory to be had before the alpha table is allocated.
 
@@ -55,6 +55,14 @@ pub fn parse_cgal_xml(text: &str, max_darts: Option<u64>) -> Result<DenseMap, Im
     let Some(darts) = data.children().find(|n| n.has_tag_name("darts")) else {
         return Err(syntax(&doc, data, "<data> without <darts>".into()));
     };
+    if let Some(v) = doc.descendants().find(|n| n.has_tag_name("v")) {
+        return Err(syntax(
+            &doc,
+            v,
+            "an attribute or dart value <v>: values are not read, and reading the map without them would drop them"
+                .into(),
+        ));
+    }
     let dart_nodes: Vec<_> = darts.children().filter(|n| n.has_tag_name("d")).collect();
     let count = dart_nodes.len() as u64;
     if count == 0 {
@@ -244,6 +252,8 @@ mod tests {
         assert!(e("<map/>").contains("expected <data>"));
         assert!(e("<data><darts><d><a i=\"0\">3</a></d></darts></data>").contains("not a dart in 1..=1"));
         assert!(e("<data><darts><d><b i=\"1\">1</b></d></darts></data>").contains("combinatorial map"));
+        // a value CGAL writes for an enabled attribute with information is refused, not dropped
+        assert!(e("<data><darts><d><v>7</v></d></darts></data>").contains("values are not read"));
         // alpha_0 not an involution: 1->2 but 2 free
         assert!(!e("<data><darts><d><a i=\"0\">2</a></d><d/></darts></data>").is_empty());
         assert!(parse_cgal_xml("<data><darts><d/><d/></darts></data>", Some(1))
