@@ -162,7 +162,7 @@ pub fn parse_cgal_xml(text: &str, max_darts: Option<u64>) -> Result<DenseMap, Im
 }
 
 /// The CGAL XML text of a map: its darts and alpha links, and one 0-attribute with its
-/// point per vertex that has a dart carrying a point (the first such dart of the vertex).
+/// point per vertex that has a point ([`DenseMap::vertex_point`]), named by its smallest dart.
 pub fn format_cgal_xml(map: &DenseMap) -> String {
     let n = map.dim();
     let mut out = String::with_capacity(64 + map.dart_count() * 40);
@@ -178,34 +178,11 @@ pub fn format_cgal_xml(map: &DenseMap) -> String {
         out.push_str("</d>");
     }
     out.push_str("</darts><attributes>");
-    // vertices: orbits of alpha_1..alpha_n
-    let total = map.dart_count();
-    let mut seen = vec![false; total];
+    // one 0-attribute per vertex with a point, on the vertex's smallest dart
     let mut body = String::new();
-    let mut stack = Vec::new();
-    for d0 in 0..total {
-        if seen[d0] {
-            continue;
-        }
-        seen[d0] = true;
-        stack.push(d0 as u32);
-        let mut carrier = None;
-        while let Some(d) = stack.pop() {
-            let dart = Dart::new(d);
-            if carrier.is_none() {
-                if let Some(p) = map.point(dart) {
-                    carrier = Some((d, p));
-                }
-            }
-            for &t in &map.row(dart)[1..] {
-                if !seen[t as usize] {
-                    seen[t as usize] = true;
-                    stack.push(t);
-                }
-            }
-        }
-        if let Some((d, [x, y, z])) = carrier {
-            let _ = write!(body, "<a><d>{}</d><p><x>{x:?}</x><y>{y:?}</y><z>{z:?}</z></p></a>", d as u64 + 1);
+    for &d in &map.cells(0).reps {
+        if let Some([x, y, z]) = map.vertex_point(d) {
+            let _ = write!(body, "<a><d>{}</d><p><x>{x:?}</x><y>{y:?}</y><z>{z:?}</z></p></a>", d.get() as u64 + 1);
         }
     }
     if !body.is_empty() {
