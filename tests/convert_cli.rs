@@ -173,3 +173,40 @@ fn gmap_to_gmap_keeps_points_and_labels() {
         stderr(&o)
     );
 }
+
+/// `.off` → `.cgal.xml` → `.off` keeps the map (isomorphic) and its points; a labelled map is
+/// refused without `--lossy`; an empty or truncated `.cgal.xml` is an error, not an empty map.
+#[test]
+fn cgal_xml_round_trip_through_the_binary() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let src = data.join("cgal/3torus.off");
+    let xml = dir.path().join("3torus.cgal.xml");
+    let o = gmap(&["convert", p(&src), p(&xml)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let back = dir.path().join("back.off");
+    let o = gmap(&["convert", p(&xml), p(&back)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let a = gmap_ops::import::read_off(&src).unwrap();
+    let b = gmap_ops::import::read_cgal_xml(&xml, None).unwrap();
+    assert_eq!((b.dart_count(), b.cell_counts()), (184, vec![19, 46, 23]));
+    assert!(iso::are_isomorphic(&a, &b));
+    assert!(iso::are_isomorphic(&a, &gmap_ops::import::read_off(&back).unwrap()));
+    for d in a.darts() {
+        assert_eq!(a.vertex_point(d), b.vertex_point(d), "dart {d:?}");
+    }
+    // labels: CGAL's XML holds none here, so the write is refused without --lossy
+    let labelled = data.join("labelled_segment.gmap");
+    let o = gmap(&["convert", p(&labelled), p(&dir.path().join("seg.cgal.xml"))]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("seg.cgal.xml drops the labels of"), "{}", stderr(&o));
+    // empty and truncated files are refused
+    let text = std::fs::read_to_string(&xml).unwrap();
+    for (name, body) in [("empty.cgal.xml", ""), ("cut.cgal.xml", &text[..text.len() / 2])] {
+        let f = dir.path().join(name);
+        std::fs::write(&f, body).unwrap();
+        let o = gmap(&["info", p(&f)]);
+        assert!(!o.status.success(), "{name} was read");
+        assert!(stderr(&o).contains(name), "{}", stderr(&o));
+    }
+}
